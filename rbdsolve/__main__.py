@@ -1,0 +1,3 @@
+from rbdsolve.cli import main
+
+main()

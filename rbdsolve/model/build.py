@@ -1,0 +1,168 @@
+"""Problem -> Model: the scene's kinematics in sympy, built only as far as asked.
+
+The model is 3D underneath: a point is a 3-vector (a planar [x, y] gets z = 0) and a
+planar ``angle`` is a rotation about z. Energies are computed on demand
+(:mod:`rbdsolve.model.energy`), so a question that needs only V never builds T.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.inertia import explicit_inertia, shape_inertia
+from rbdsolve.model.symbols import Symbols, t
+from rbdsolve.problem.schema import Body, CoordinateKind, Problem, Spring
+
+
+@dataclass(frozen=True)
+class RigidBody:
+    """A body's mass, centre of mass, orientation and inertia, as sympy objects.
+
+    ``rotation`` maps body axes to scene axes; ``inertia`` is J_G in body axes.
+    """
+
+    name: str
+    mass: sp.Expr
+    position: sp.Matrix  # r_G, scene axes
+    rotation: sp.Matrix
+    angle: sp.Expr | None  # planar rotation about z (None: no rotation)
+    inertia: sp.Matrix
+    source: Body
+
+    def angular_velocity(self) -> sp.Matrix:
+        """ω in scene axes. A planar body turning by angle α(q, t) has ω = α̇ e_z."""
+        if self.angle is None:
+            return sp.zeros(3, 1)
+        return sp.Matrix([0, 0, sp.diff(self.angle, t)])
+
+    def inertia_in_scene(self) -> sp.Matrix:
+        """J_G in scene axes: R J Rᵀ."""
+        return self.rotation * self.inertia * self.rotation.T
+
+
+@dataclass(frozen=True)
+class SpringModel:
+    name: str
+    stiffness: sp.Expr
+    stretch: sp.Expr  # |r_a − r_b| − l₀ for a linear spring, α − α₀ for a torsional one
+    source: Spring
+
+
+@dataclass(frozen=True)
+class Model:
+    problem: Problem
+    symbols: Symbols
+    q: tuple[sp.Expr, ...]  # generalized coordinates q_i(t)
+    angles: frozenset[sp.Expr]  # the coordinates that are periodic angles
+    points: Mapping[str, sp.Matrix]
+    bodies: tuple[RigidBody, ...]
+    springs: tuple[SpringModel, ...]
+    gravity: sp.Matrix | None
+    values: Mapping[sp.Symbol, sp.Rational]
+
+    @property
+    def qd(self) -> tuple[sp.Expr, ...]:
+        return tuple(sp.Derivative(q, t) for q in self.q)
+
+    @property
+    def qdd(self) -> tuple[sp.Expr, ...]:
+        return tuple(sp.Derivative(q, (t, 2)) for q in self.q)
+
+    def coordinate_names(self) -> list[str]:
+        return [c.name for c in self.problem.coordinates]
+
+    def with_values(self, values: Mapping[str, Fraction]) -> Model:
+        """The same model with numeric parameter values (``--set`` beats ``values:``)."""
+        table = dict(self.values)
+        for name, value in values.items():
+            table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
+        return Model(self.problem, self.symbols, self.q, self.angles, self.points,
+                     self.bodies, self.springs, self.gravity, table)  # fmt: skip
+
+
+def build_model(problem: Problem) -> Model:
+    """Turn a validated Problem into sympy objects."""
+    names = Symbols.of(problem)
+    points: dict[str, sp.Matrix] = {}
+    for point in problem.points:  # dependency order: each names only earlier points
+        points[point.name] = names.with_points(points).vector(point.position)
+    names = names.with_points(points)
+    q = tuple(names.coordinates[c.name] for c in problem.coordinates)
+    bodies = tuple(_body(b, names) for b in problem.bodies)
+    springs = tuple(_spring(s, names) for s in problem.springs)
+    gravity = names.vector(problem.gravity) if problem.gravity else None
+    values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
+    model = Model(problem, names, q, frozenset(), points, bodies, springs, gravity, values)
+    angles = frozenset(qi for c, qi in zip(problem.coordinates, q) if _is_angle(c.kind, qi, model))
+    return Model(problem, names, q, angles, points, bodies, springs, gravity, values)
+
+
+def _body(body: Body, names: Symbols) -> RigidBody:
+    mass = names.scalar(body.mass)
+    if mass.is_nonpositive:
+        raise InputError(f"a mass must be positive, found {body.mass.text}", body.mass.loc)
+    if body.inertia is not None:
+        inertia = explicit_inertia([names.scalar(e) for e in body.inertia.entries])
+    else:
+        dims = {k: names.scalar(v) for k, v in body.dimensions}
+        for key, value in dims.items():
+            if value.is_nonpositive:
+                expr = body.dimension(key)
+                raise InputError(f"a {key} must be positive, found {expr.text}", expr.loc)
+        inertia = shape_inertia(body.shape, mass, dims, body.axis)
+    angle = names.scalar(body.angle) if body.angle is not None else None
+    rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
+    return RigidBody(body.name, mass, names.vector(body.at), rotation, angle, inertia, body)
+
+
+def _spring(spring: Spring, names: Symbols) -> SpringModel:
+    k = names.scalar(spring.stiffness)
+    if spring.ends is not None:
+        a, b = (names.vector(e) for e in spring.ends)
+        d = a - b
+        length = sp.sqrt(d.dot(d))
+        rest = names.scalar(spring.natural_length) if spring.natural_length else sp.Integer(0)
+        stretch = length - rest
+    else:
+        rest = names.scalar(spring.rest) if spring.rest else sp.Integer(0)
+        stretch = names.scalar(spring.angle) - rest
+    return SpringModel(spring.name, k, stretch, spring)
+
+
+def _is_angle(kind: CoordinateKind, q: sp.Expr, model: Model) -> bool:
+    """Is ``q`` a periodic angle? Declared, or (AUTO) q enters the scene only through
+    sin/cos of integer multiples of q, so the scene repeats after one turn."""
+    if kind is not CoordinateKind.AUTO:
+        return kind is CoordinateKind.ANGLE
+    exprs = [*model.points.values(), *(b.position for b in model.bodies)]
+    exprs += [b.rotation for b in model.bodies]  # ω = α̇ is periodic whatever α is
+    exprs += [s.stretch for s in model.springs]
+    found = False
+    for e in exprs:
+        for item in (e if isinstance(e, sp.MatrixBase) else [e]):
+            ok, seen = _only_periodic(sp.sympify(item), q)
+            if not ok:
+                return False
+            found = found or seen
+    return found
+
+
+def _only_periodic(expr: sp.Expr, q: sp.Expr) -> tuple[bool, bool]:
+    """(every q in expr sits inside sin/cos with an integer multiple of q, q occurs)."""
+    if expr == q:
+        return False, True
+    if isinstance(expr, (sp.sin, sp.cos)) and expr.has(q):
+        coeff = sp.diff(expr.args[0], q)
+        return (coeff.is_integer is True and not coeff.has(q)), True
+    if isinstance(expr, sp.Derivative):
+        return (not expr.has(q)), expr.has(q)
+    ok, seen = True, False
+    for arg in expr.args:
+        a, s = _only_periodic(arg, q)
+        ok, seen = ok and a, seen or s
+    return ok, seen

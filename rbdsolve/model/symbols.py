@@ -1,0 +1,96 @@
+"""The sympy names of a problem, and the fold from checked expression trees to sympy.
+
+Parameters are positive symbols unless declared otherwise; generalized coordinates are
+real functions of time ``t``, so ``theta`` in a file becomes ``theta(t)`` here and
+``dot(theta)`` becomes ``Derivative(theta(t), t)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import Problem
+
+t = sp.Symbol("t", real=True)
+
+_FUNCTIONS = {
+    "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+    "asin": sp.asin, "acos": sp.acos, "atan": sp.atan, "atan2": sp.atan2,
+    "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
+    "exp": sp.exp, "log": sp.log, "sqrt": sp.sqrt, "abs": sp.Abs,
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Symbols:
+    """Every name a problem declares, as sympy objects."""
+
+    parameters: Mapping[str, sp.Symbol]
+    coordinates: Mapping[str, sp.Expr]  # name -> q(t)
+    points: Mapping[str, sp.Matrix]
+
+    @staticmethod
+    def of(problem: Problem) -> Symbols:
+        params = {
+            p.name: sp.Symbol(p.name, positive=True) if p.positive else sp.Symbol(p.name, real=True)
+            for p in problem.parameters
+        }
+        coords = {c.name: sp.Function(c.name, real=True)(t) for c in problem.coordinates}
+        return Symbols(params, coords, {})
+
+    def with_points(self, points: Mapping[str, sp.Matrix]) -> Symbols:
+        return Symbols(self.parameters, self.coordinates, {**self.points, **points})
+
+    def scalar(self, expr: ex.Expr) -> sp.Expr:
+        return to_sympy(expr.tree, self)
+
+    def vector(self, expr: ex.Expr) -> sp.Matrix:
+        value = to_sympy(expr.tree, self)
+        return value
+
+
+def to_sympy(tree: ex.Tree, names: Symbols):
+    """Fold a checked tree into a sympy scalar or a 3x1 column vector."""
+    if isinstance(tree, ex.Num):
+        return sp.Rational(tree.value.numerator, tree.value.denominator)
+    if isinstance(tree, ex.Const):
+        return sp.pi
+    if isinstance(tree, ex.Name):
+        if tree.id == "t":
+            return t
+        for table in (names.parameters, names.coordinates, names.points):
+            if tree.id in table:
+                return table[tree.id]
+        raise KeyError(tree.id)  # the loader checked every name
+    if isinstance(tree, ex.Derivative):
+        return sp.Derivative(names.coordinates[tree.name], (t, tree.order))
+    if isinstance(tree, ex.Neg):
+        return -to_sympy(tree.operand, names)
+    if isinstance(tree, ex.Vec):
+        items = [to_sympy(item, names) for item in tree.items]
+        return sp.Matrix(items + [sp.Integer(0)] * (3 - len(items)))
+    if isinstance(tree, ex.BinOp):
+        a, b = to_sympy(tree.left, names), to_sympy(tree.right, names)
+        if tree.op == "+":
+            return a + b
+        if tree.op == "-":
+            return a - b
+        if tree.op == "*":
+            return a * b
+        if tree.op == "/":
+            return a / b
+        return a**b
+    if isinstance(tree, ex.Call):
+        args = [to_sympy(a, names) for a in tree.args]
+        if tree.func == "cross":
+            return args[0].cross(args[1])
+        if tree.func == "inner":
+            return args[0].dot(args[1])
+        if tree.func == "norm":
+            return sp.sqrt(args[0].dot(args[0]))
+        return _FUNCTIONS[tree.func](*args)
+    raise TypeError(f"unexpected expression node {tree!r}")  # pragma: no cover

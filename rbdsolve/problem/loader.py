@@ -1,0 +1,433 @@
+"""Located nodes -> Problem. The schema is written out here, section by section.
+
+Every error names file:line:column, the key path, what was expected and what was found.
+"""
+
+from __future__ import annotations
+
+import keyword
+from fractions import Fraction
+from pathlib import Path
+
+from rbdsolve.errors import InputError, Location, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import (
+    SHAPE_ALIASES,
+    Body,
+    Coordinate,
+    CoordinateKind,
+    Inertia,
+    Parameter,
+    Point,
+    Problem,
+    Question,
+    QuestionKind,
+    Shape,
+    Spring,
+)
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
+
+TOP_KEYS = ("title", "source", "statement", "parameters", "coordinates", "points",
+            "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
+RESERVED = {"t", "pi", "e", "E", "I", "oo", "inf", "nan"} | set(ex.SCALAR_FUNCTIONS) | set(
+    ex.DERIVATIVE_FUNCTIONS
+) | ex.VECTOR_FUNCTIONS
+
+
+def load_file(path: str | Path) -> Problem:
+    """Read and validate one problem file."""
+    name = str(path)
+    try:
+        data = Path(path).read_bytes()
+    except FileNotFoundError:
+        raise InputError(f"no such file: {name}") from None
+    except IsADirectoryError:
+        raise InputError(f"{name} is a folder; give a problem file") from None
+    except OSError as exc:
+        raise InputError(f"cannot read {name}: {exc.strerror}") from None
+    return load_text(read_text(name, data), name)
+
+
+def load_text(text: str, name: str = "<string>") -> Problem:
+    return _Loader(name).problem(parse_yaml(text, name))
+
+
+# --- small readers ---------------------------------------------------------------------
+
+
+def _mapping(node: Node, what: str) -> Map:
+    if isinstance(node, Map):
+        return node
+    raise InputError(f"expected {what} (a mapping), found {_found(node)}", node.loc)
+
+
+def _scalar(node: Node, what: str) -> Scalar:
+    if isinstance(node, Scalar) and not node.null:
+        return node
+    raise InputError(f"expected {what}, found {_found(node)}", node.loc)
+
+
+def _found(node: Node) -> str:
+    if isinstance(node, Scalar):
+        return "nothing" if node.null else f"'{node.text}'"
+    return node.kind_name
+
+
+def _check_keys(node: Map, required: tuple[str, ...], optional: tuple[str, ...], what: str) -> None:
+    allowed = (*required, *optional)
+    for key, _ in node.entries:
+        if key.text not in allowed:
+            hint = did_you_mean(key.text, allowed) or f" (expected one of: {', '.join(allowed)})"
+            raise InputError(f"unknown key '{key.text}' in {what}{hint}", key.loc)
+    for key in required:
+        if node.get(key) is None:
+            raise InputError(f"missing required key '{key}' in {what}", node.loc)
+
+
+def _identifier(key: Scalar, what: str) -> str:
+    name = key.text
+    if not name.isidentifier() or keyword.iskeyword(name):
+        raise InputError(f"'{name}' is not a valid {what} name (letters, digits, _)", key.loc)
+    if name.startswith("__"):
+        raise InputError(f"names starting with '__' are not allowed", key.loc)
+    if name in RESERVED:
+        raise InputError(f"'{name}' is reserved (a function, a constant or time t)", key.loc)
+    return name
+
+
+def _names_list(node: Node, what: str) -> list[tuple[Scalar, Node | None]]:
+    """A list of names, or a mapping name -> options; returns (name node, options)."""
+    if isinstance(node, Seq):
+        return [(_scalar(item, f"a {what} name"), None) for item in node.items]
+    if isinstance(node, Map):
+        return [(k, None if isinstance(v, Scalar) and v.null else v) for k, v in node.entries]
+    raise InputError(f"expected a list or mapping of {what}s, found {_found(node)}", node.loc)
+
+
+def _bool(node: Node, what: str) -> bool:
+    text = _scalar(node, what).text.lower()
+    if text in ("true", "yes", "on"):
+        return True
+    if text in ("false", "no", "off"):
+        return False
+    raise InputError(f"expected true or false, found '{node.text}'", node.loc)
+
+
+class _Loader:
+    def __init__(self, file: str):
+        self.file = file
+        self.scope = ex.Scope()
+        self.taken: dict[str, str] = {}  # name -> what declared it
+
+    # --- expressions -------------------------------------------------------------------
+
+    def expr(self, node: Node, kind: ex.Kind, what: str) -> ex.Expr:
+        if isinstance(node, Seq):  # a YAML list of components is a vector literal
+            return self._vector_from_list(node, what)
+        scalar = _scalar(node, what)
+        if kind == ex.Kind.VECTOR:
+            self._check_point_name(scalar)
+        parsed = ex.parse(scalar.text, scalar.loc, self.scope, scalar.plain)
+        if parsed.kind != kind:
+            raise InputError(f"expected {what}, found a {parsed.kind.value} '{parsed.text}'", scalar.loc)
+        return parsed
+
+    def _check_point_name(self, node: Scalar) -> None:
+        name = node.text.strip()
+        if name.isidentifier() and name not in self.scope.all_names() and name not in ex.CONSTANTS:
+            hint = did_you_mean(name, sorted(self.scope.vectors))
+            raise InputError(f"unknown point '{name}'{hint}", node.loc)
+
+    def _vector_from_list(self, node: Seq, what: str) -> ex.Expr:
+        if len(node.items) not in (2, 3):
+            raise InputError(f"a vector has 2 or 3 components, found {len(node.items)}", node.loc)
+        parts = [self.expr(item, ex.Kind.SCALAR, "a number or scalar expression") for item in node.items]
+        text = "[" + ", ".join(p.text for p in parts) + "]"
+        return ex.Expr(ex.Vec(tuple(p.tree for p in parts)), ex.Kind.VECTOR, text, node.loc)
+
+    def declare(self, key: Scalar, what: str) -> str:
+        name = _identifier(key, what)
+        if name in self.taken:
+            raise InputError(f"'{name}' is already declared as a {self.taken[name]}", key.loc)
+        self.taken[name] = what
+        return name
+
+    # --- sections ----------------------------------------------------------------------
+
+    def problem(self, root: Map) -> Problem:
+        _check_keys(root, ("questions",), TOP_KEYS, "the problem")
+        get = root.get
+        parameters = self.parameters(get("parameters"))
+        coordinates = self.coordinates(get("coordinates"))
+        self.scope = ex.Scope(
+            scalars=frozenset({p.name for p in parameters} | {c.name for c in coordinates} | {"t"}),
+            functions_of_time=frozenset(c.name for c in coordinates),
+        )
+        points = self.points(get("points"))
+        return Problem(
+            file=self.file,
+            title=self.text(get("title"), "a title") or Path(self.file).stem,
+            source=self.text(get("source"), "a source"),
+            statement=self.text(get("statement"), "a statement"),
+            parameters=parameters,
+            coordinates=coordinates,
+            points=points,
+            bodies=self.bodies(get("bodies")),
+            springs=self.springs(get("springs")),
+            gravity=self.optional_expr(get("gravity"), ex.Kind.VECTOR, "a gravity vector such as [0, -g]"),
+            values=self.values(get("values"), parameters),
+            questions=self.questions(get("questions"), coordinates),
+        )
+
+    def text(self, node: Node | None, what: str) -> str:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ""
+        return _scalar(node, what).text.strip()
+
+    def optional_expr(self, node: Node | None, kind: ex.Kind, what: str) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        return self.expr(node, kind, what)
+
+    def parameters(self, node: Node | None) -> tuple[Parameter, ...]:
+        if node is None:
+            return ()
+        out = []
+        for key, options in _names_list(node, "parameter"):
+            name = self.declare(key, "parameter")
+            description, positive = "", True
+            if isinstance(options, Scalar):
+                description = options.text
+            elif options is not None:
+                opts = _mapping(options, "parameter options")
+                _check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
+                description = self.text(opts.get("description"), "a description")
+                if opts.get("positive") is not None:
+                    positive = _bool(opts.get("positive"), "true or false")
+            out.append(Parameter(name, description, positive, key.loc))
+        return tuple(out)
+
+    def coordinates(self, node: Node | None) -> tuple[Coordinate, ...]:
+        if node is None:
+            return ()
+        out = []
+        for key, options in _names_list(node, "coordinate"):
+            name = self.declare(key, "coordinate")
+            kind = CoordinateKind.AUTO
+            if options is not None:
+                word = _scalar(options, "a coordinate kind ('angle' or 'length')")
+                try:
+                    kind = CoordinateKind(word.text)
+                except ValueError:
+                    raise InputError(
+                        f"unknown coordinate kind '{word.text}' (expected angle or length)"
+                        f"{did_you_mean(word.text, ['angle', 'length'])}",
+                        word.loc,
+                    ) from None
+            out.append(Coordinate(name, kind, key.loc))
+        return tuple(out)
+
+    def points(self, node: Node | None) -> tuple[Point, ...]:
+        if node is None:
+            return ()
+        table = _mapping(node, "points: name -> position vector")
+        names = [self.declare(key, "point") for key, _ in table.entries]
+        self.scope = ex.Scope(self.scope.scalars, frozenset(names), self.scope.functions_of_time)
+        parsed = {
+            key.text: self.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' (a vector)")
+            for key, value in table.entries
+        }
+        return tuple(Point(name, parsed[name]) for name in _dependency_order(parsed))
+
+    def bodies(self, node: Node | None) -> tuple[Body, ...]:
+        if node is None:
+            return ()
+        table = _mapping(node, "bodies: name -> body")
+        return tuple(self.body(self.declare(k, "body"), v) for k, v in table.entries)
+
+    def body(self, name: str, node: Node) -> Body:
+        spec = _mapping(node, f"body '{name}'")
+        what = f"body '{name}'"
+        shape = self.shape(spec, what)
+        dims = shape.dimensions if shape else ()
+        _check_keys(spec, ("mass", "at", *dims), ("shape", "angle", "axis", "inertia"), what)
+        mass = self.expr(spec.get("mass"), ex.Kind.SCALAR, "a mass (a scalar expression)")
+        _refuse_negative(mass, "mass")
+        dimensions = []
+        for dim in dims:
+            value = self.expr(spec.get(dim), ex.Kind.SCALAR, f"a {dim} (a scalar expression)")
+            _refuse_negative(value, dim)
+            dimensions.append((dim, value))
+        axis_node = spec.get("axis")
+        axis = "x" if shape is Shape.ROD else "z"
+        if axis_node is not None:
+            axis = _scalar(axis_node, "an axis: x, y or z").text
+            if axis not in ("x", "y", "z"):
+                raise InputError(f"expected an axis x, y or z, found '{axis}'", axis_node.loc)
+        return Body(
+            name=name,
+            shape=shape,
+            mass=mass,
+            dimensions=tuple(dimensions),
+            at=self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector"),
+            angle=self.optional_expr(spec.get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"),
+            axis=axis,
+            inertia=self.inertia(spec.get("inertia")),
+            loc=spec.loc,
+        )
+
+    def shape(self, spec: Map, what: str) -> Shape | None:
+        node = spec.get("shape")
+        if node is None:
+            if spec.get("inertia") is None:
+                raise InputError(f"{what} needs a 'shape' (or an explicit 'inertia')", spec.loc)
+            return None
+        if spec.get("inertia") is not None:
+            raise InputError(f"{what}: give either 'shape' or 'inertia', not both", node.loc)
+        word = _scalar(node, "a shape name").text
+        names = [s.value for s in Shape] + list(SHAPE_ALIASES)
+        if word in SHAPE_ALIASES:
+            return SHAPE_ALIASES[word]
+        try:
+            return Shape(word)
+        except ValueError:
+            hint = did_you_mean(word, names) or f" (shapes: {', '.join(s.value for s in Shape)})"
+            raise InputError(f"unknown shape '{word}'{hint}", node.loc) from None
+
+    def inertia(self, node: Node | None) -> Inertia | None:
+        if node is None:
+            return None
+        if isinstance(node, Scalar):
+            return Inertia((self.expr(node, ex.Kind.SCALAR, "a moment of inertia"),), node.loc)
+        if isinstance(node, Seq) and len(node.items) == 3 and all(isinstance(i, Seq) for i in node.items):
+            rows = [row for row in node.items]
+            if any(len(r.items) != 3 for r in rows):
+                raise InputError("an inertia matrix is 3x3", node.loc)
+            entries = [self.expr(x, ex.Kind.SCALAR, "a matrix entry") for r in rows for x in r.items]
+            return Inertia(tuple(entries), node.loc)
+        if isinstance(node, Seq) and len(node.items) == 3:
+            return Inertia(tuple(self.expr(x, ex.Kind.SCALAR, "a principal moment") for x in node.items), node.loc)
+        raise InputError(
+            "expected an inertia: J (planar), [J1, J2, J3] or a 3x3 matrix", node.loc
+        )
+
+    def springs(self, node: Node | None) -> tuple[Spring, ...]:
+        if node is None:
+            return ()
+        table = _mapping(node, "springs: name -> spring")
+        return tuple(self.spring(self.declare(k, "spring"), v) for k, v in table.entries)
+
+    def spring(self, name: str, node: Node) -> Spring:
+        what = f"spring '{name}'"
+        spec = _mapping(node, what)
+        _check_keys(spec, ("stiffness",), ("between", "natural_length", "angle", "rest"), what)
+        between, angle = spec.get("between"), spec.get("angle")
+        if (between is None) == (angle is None):
+            raise InputError(f"{what} needs either 'between: [A, B]' (linear) or 'angle:' (torsional)", spec.loc)
+        stiffness = self.expr(spec.get("stiffness"), ex.Kind.SCALAR, "a stiffness")
+        _refuse_negative(stiffness, "stiffness")
+        ends = None
+        if between is not None:
+            if not isinstance(between, Seq) or len(between.items) != 2:
+                raise InputError(f"expected two ends [A, B], found {_found(between)}", between.loc)
+            ends = tuple(self.expr(e, ex.Kind.VECTOR, "a point name or position vector") for e in between.items)
+        elif spec.get("natural_length") is not None:
+            raise InputError("'natural_length' belongs to a linear spring; use 'rest' with 'angle'", spec.get("natural_length").loc)
+        if between is not None and spec.get("rest") is not None:
+            raise InputError("'rest' belongs to a torsional spring; use 'natural_length' with 'between'", spec.get("rest").loc)
+        return Spring(
+            name=name,
+            stiffness=stiffness,
+            ends=ends,
+            natural_length=self.optional_expr(spec.get("natural_length"), ex.Kind.SCALAR, "a length"),
+            angle=self.optional_expr(angle, ex.Kind.SCALAR, "an angle expression"),
+            rest=self.optional_expr(spec.get("rest"), ex.Kind.SCALAR, "an angle"),
+            loc=spec.loc,
+        )
+
+    def values(self, node: Node | None, parameters: tuple[Parameter, ...]) -> tuple[tuple[str, Fraction], ...]:
+        if node is None:
+            return ()
+        table = _mapping(node, "values: parameter -> number")
+        known = [p.name for p in parameters]
+        out = []
+        for key, value in table.entries:
+            if key.text not in known:
+                raise InputError(f"'{key.text}' is not a parameter{did_you_mean(key.text, known)}", key.loc)
+            scalar = _scalar(value, "a number")
+            number = ex.parse_number(scalar.text, scalar.loc, scalar.plain)
+            param = next(p for p in parameters if p.name == key.text)
+            if param.positive and number <= 0:
+                raise InputError(f"'{key.text}' is declared positive, found {scalar.text}", scalar.loc)
+            out.append((key.text, number))
+        return tuple(out)
+
+    def questions(self, node: Node, coordinates: tuple[Coordinate, ...]) -> tuple[Question, ...]:
+        if not isinstance(node, Seq) or not node.items:
+            raise InputError(f"expected a list of questions, found {_found(node)}", node.loc)
+        return tuple(self.question(item, coordinates) for item in node.items)
+
+    def question(self, node: Node, coordinates: tuple[Coordinate, ...]) -> Question:
+        if isinstance(node, Map) and len(node.entries) == 1:
+            key, options = node.entries[0]
+        elif isinstance(node, Scalar) and not node.null:
+            key, options = node, None
+        else:
+            raise InputError(f"expected a question such as 'modes' or '{{modes: {{...}}}}', found {_found(node)}", node.loc)
+        kinds = [k.value for k in QuestionKind]
+        try:
+            kind = QuestionKind(key.text)
+        except ValueError:
+            hint = did_you_mean(key.text, kinds) or f" (questions: {', '.join(kinds)})"
+            raise InputError(f"unknown question '{key.text}'{hint}", key.loc) from None
+        if kind in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES) and not coordinates:
+            raise InputError(f"'{kind.value}' needs generalized coordinates: add 'coordinates:'", key.loc)
+        about = None
+        if options is not None and not (isinstance(options, Scalar) and options.null):
+            opts = _mapping(options, f"options of '{kind.value}'")
+            allowed = ("about",) if kind is QuestionKind.MODES else ()
+            _check_keys(opts, (), allowed, f"question '{kind.value}'")
+            if opts.get("about") is not None:
+                about = self.about(opts.get("about"), coordinates)
+        return Question(kind, about, key.loc)
+
+    def about(self, node: Node, coordinates: tuple[Coordinate, ...]) -> tuple[tuple[str, ex.Expr], ...]:
+        table = _mapping(node, "an equilibrium: coordinate -> value")
+        names = [c.name for c in coordinates]
+        given = {}
+        for key, value in table.entries:
+            if key.text not in names:
+                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
+            given[key.text] = self.expr(value, ex.Kind.SCALAR, "a coordinate value")
+        missing = [n for n in names if n not in given]
+        if missing:
+            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
+        return tuple((n, given[n]) for n in names)
+
+
+def _refuse_negative(value: ex.Expr, what: str) -> None:
+    number = ex.constant_value(value.tree)
+    if number is not None and number < 0:
+        raise InputError(f"a {what} must not be negative, found {value.text}", value.loc)
+
+
+def _dependency_order(points: dict[str, ex.Expr]) -> list[str]:
+    """Points sorted so each one only names points before it; cycles are errors."""
+    order: list[str] = []
+    state: dict[str, str] = {}
+
+    def visit(name: str, trail: list[str]) -> None:
+        if state.get(name) == "done":
+            return
+        if state.get(name) == "active":
+            cycle = trail[trail.index(name):] + [name]
+            raise InputError(f"cyclic point definitions: {' -> '.join(cycle)}", points[name].loc)
+        state[name] = "active"
+        for other in sorted(points[name].names() & points.keys()):
+            visit(other, [*trail, name])
+        state[name] = "done"
+        order.append(name)
+
+    for name in points:
+        visit(name, [])
+    return order

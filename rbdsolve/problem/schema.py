@@ -1,0 +1,142 @@
+"""The Problem: what a problem file says, validated, located, and still free of sympy.
+
+Every expression is a :class:`~rbdsolve.problem.expr.Expr` (a checked tree plus the
+place it came from), so later stages can point back at the file when a value turns out
+to be wrong (a negative length, a singular mass matrix).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from fractions import Fraction
+
+from rbdsolve.errors import Location
+from rbdsolve.problem.expr import Expr
+
+
+class Shape(Enum):
+    """The shape library. Each shape lists its dimensions; its axes are documented in
+    docs/format.md and its inertia formula lives in :mod:`rbdsolve.model.inertia`."""
+
+    PARTICLE = "particle"
+    ROD = "rod"
+    RING = "ring"
+    DISK = "disk"
+    PLATE = "plate"
+
+    @property
+    def dimensions(self) -> tuple[str, ...]:
+        return _DIMENSIONS[self]
+
+
+_DIMENSIONS = {
+    Shape.PARTICLE: (),
+    Shape.ROD: ("length",),
+    Shape.RING: ("radius",),
+    Shape.DISK: ("radius",),
+    Shape.PLATE: ("width", "height"),
+}
+
+SHAPE_ALIASES = {"point": Shape.PARTICLE, "hoop": Shape.RING, "slender_rod": Shape.ROD,
+                 "rectangle": Shape.PLATE}  # fmt: skip
+
+
+class CoordinateKind(Enum):
+    ANGLE = "angle"  # periodic: equilibria are reported modulo one turn
+    LENGTH = "length"
+    AUTO = "auto"  # decided from how the coordinate enters the energies
+
+
+class QuestionKind(Enum):
+    EOM = "eom"
+    EQUILIBRIA = "equilibria"
+    MODES = "modes"
+
+
+@dataclass(frozen=True)
+class Parameter:
+    name: str
+    description: str
+    positive: bool
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    name: str
+    kind: CoordinateKind
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Point:
+    name: str
+    position: Expr  # a vector; may name other points
+
+
+@dataclass(frozen=True)
+class Inertia:
+    """An explicit inertia about the centre of mass in body axes: a planar moment J_zz,
+    three principal moments, or a full symmetric 3x3 matrix (row-major, 9 entries)."""
+
+    entries: tuple[Expr, ...]
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Body:
+    name: str
+    shape: Shape | None  # None when ``inertia`` is given instead
+    mass: Expr
+    dimensions: tuple[tuple[str, Expr], ...]
+    at: Expr  # position of the centre of mass (vector)
+    angle: Expr | None  # planar orientation: rotation about z
+    axis: str  # body axis the shape's own axis points along: 'x', 'y' or 'z'
+    inertia: Inertia | None
+    loc: Location
+
+    def dimension(self, name: str) -> Expr:
+        return dict(self.dimensions)[name]
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A linear spring between two points, or a torsional spring on an angle.
+
+    V = k/2 (|r_a - r_b| - natural_length)^2   or   V = k/2 (angle - rest)^2
+    """
+
+    name: str
+    stiffness: Expr
+    ends: tuple[Expr, Expr] | None
+    natural_length: Expr | None
+    angle: Expr | None
+    rest: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Question:
+    kind: QuestionKind
+    about: tuple[tuple[str, Expr], ...] | None  # modes: the equilibrium to expand about
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Problem:
+    file: str
+    title: str
+    source: str
+    statement: str
+    parameters: tuple[Parameter, ...]
+    coordinates: tuple[Coordinate, ...]
+    points: tuple[Point, ...]  # in dependency order: a point only names earlier ones
+    bodies: tuple[Body, ...]
+    springs: tuple[Spring, ...]
+    gravity: Expr | None
+    values: tuple[tuple[str, Fraction], ...]  # numeric parameter values
+    questions: tuple[Question, ...]
+
+    def value_map(self) -> dict[str, Fraction]:
+        return dict(self.values)

@@ -1,0 +1,163 @@
+"""YAML text -> a tree of located nodes.
+
+PyYAML's composer gives nodes with marks but builds no Python objects, so an alias
+bomb is never expanded: we walk the node graph ourselves, counting what we visit.
+Every scalar stays text; typing it (number, name, expression) is the schema's job,
+so ``mass: 3`` and ``mass: 3*m`` go through the same expression parser.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import yaml
+
+from rbdsolve.errors import InputError, Location
+
+MAX_FILE_BYTES = 256 * 1024
+MAX_NODES = 20_000
+MAX_DEPTH = 40
+
+
+@dataclass(frozen=True)
+class Scalar:
+    text: str
+    loc: Location
+    plain: bool  # unquoted, single line: columns inside the text map to the file
+    null: bool = False
+
+    kind_name = "a scalar"
+
+
+@dataclass(frozen=True)
+class Seq:
+    items: tuple[Node, ...]
+    loc: Location
+
+    kind_name = "a list"
+
+
+@dataclass(frozen=True)
+class Map:
+    entries: tuple[tuple[Scalar, Node], ...]
+    loc: Location
+
+    kind_name = "a mapping"
+
+    def keys(self) -> list[str]:
+        return [k.text for k, _ in self.entries]
+
+    def get(self, key: str) -> Node | None:
+        for k, v in self.entries:
+            if k.text == key:
+                return v
+        return None
+
+
+Node = Scalar | Seq | Map
+
+
+def read_text(path: str, data: bytes) -> str:
+    """Decode a problem file, refusing what is not reasonable UTF-8 text."""
+    where = Location(path, 1, 1)
+    if len(data) > MAX_FILE_BYTES:
+        raise InputError(
+            f"file is {len(data)} bytes; the limit is {MAX_FILE_BYTES} bytes", where
+        )
+    if b"\x00" in data:
+        raise InputError("this is a binary file, not a YAML problem file", where)
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        col = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
+        raise InputError(
+            f"the file is not UTF-8 text (byte 0x{data[exc.start]:02x})",
+            Location(path, line, col),
+        ) from None
+    if not text.strip():
+        raise InputError("the file is empty: expected a YAML mapping with a 'questions' key", where)
+    return text
+
+
+def parse_yaml(text: str, path: str) -> Map:
+    """Compose the single YAML document in ``text`` into located nodes."""
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as exc:
+        raise _yaml_error(exc, path) from None
+    except yaml.YAMLError as exc:  # unmarked: rare, but say it in one line
+        raise InputError(f"YAML error: {exc}", Location(path, 1, 1)) from None
+    except RecursionError:
+        raise InputError("the YAML is nested too deeply", Location(path, 1, 1)) from None
+    if root is None:
+        raise InputError("the file holds no YAML document", Location(path, 1, 1))
+    tree = _Converter(path).convert(root, (), 0)
+    if not isinstance(tree, Map):
+        raise InputError(
+            f"expected a mapping at the top of the file, found {tree.kind_name}", tree.loc
+        )
+    return tree
+
+
+def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
+    mark = exc.problem_mark or exc.context_mark
+    loc = Location(path, mark.line + 1, mark.column + 1) if mark else Location(path, 1, 1)
+    problem = exc.problem or "invalid YAML"
+    if "'\\t'" in problem or "tab" in problem.lower():
+        problem = "a tab character: YAML indents with spaces only"
+    else:
+        problem = f"YAML syntax error: {problem}"
+        if exc.context:
+            problem += f" ({exc.context})"
+    return InputError(problem, loc)
+
+
+class _Converter:
+    def __init__(self, path: str):
+        self.path = path
+        self.count = 0
+
+    def convert(self, node: yaml.Node, keypath: tuple, depth: int) -> Node:
+        loc = Location(self.path, node.start_mark.line + 1, node.start_mark.column + 1, keypath)
+        self.count += 1
+        if self.count > MAX_NODES:
+            raise InputError(
+                f"the document has more than {MAX_NODES} nodes (aliases count each time "
+                "they are used); refusing to expand it",
+                loc,
+            )
+        if depth > MAX_DEPTH:
+            raise InputError(f"nesting deeper than {MAX_DEPTH} levels", loc)
+        if isinstance(node, yaml.ScalarNode):
+            one_line = node.start_mark.line == node.end_mark.line
+            null = node.tag == "tag:yaml.org,2002:null" and node.style is None
+            return Scalar(node.value, loc, plain=node.style is None and one_line, null=null)
+        if isinstance(node, yaml.SequenceNode):
+            items = tuple(
+                self.convert(item, (*keypath, i), depth + 1) for i, item in enumerate(node.value)
+            )
+            return Seq(items, loc)
+        if isinstance(node, yaml.MappingNode):
+            return self._mapping(node, keypath, loc, depth)
+        raise InputError("unsupported YAML node", loc)  # pragma: no cover
+
+    def _mapping(self, node: yaml.MappingNode, keypath: tuple, loc: Location, depth: int) -> Map:
+        entries: list[tuple[Scalar, Node]] = []
+        seen: dict[str, Location] = {}
+        for key_node, value_node in node.value:
+            key = self.convert(key_node, keypath, depth + 1)
+            if not isinstance(key, Scalar) or key.null:
+                raise InputError("mapping keys must be plain names", key.loc)
+            if key.text == "<<":
+                raise InputError("YAML merge keys ('<<') are not supported", key.loc)
+            key_loc = Location(self.path, key.loc.line, key.loc.column, (*keypath, key.text))
+            if key.text in seen:
+                first = seen[key.text]
+                raise InputError(
+                    f"duplicate key '{key.text}' (first defined at line {first.line})", key_loc
+                )
+            seen[key.text] = key_loc
+            value = self.convert(value_node, (*keypath, key.text), depth + 1)
+            entries.append((Scalar(key.text, key_loc, key.plain), value))
+        return Map(tuple(entries), loc)

@@ -1,0 +1,41 @@
+"""Display values: how an exact result is laid out, without changing what it is.
+
+``Scaled(m*r**2, Terms(...))`` prints as ``m r² [7/8 θ̇² + …]``, the way an exam
+solution pulls the common scale out of an energy or a matrix; ``value()`` gives back
+the plain sympy object for checks and JSON.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class Terms:
+    """A sum shown in the given order (sympy would reorder it)."""
+
+    items: tuple[Math, ...]
+
+    def value(self) -> sp.Expr:
+        return sp.Add(*[plain(item) for item in self.items])
+
+
+@dataclass(frozen=True)
+class Scaled:
+    """factor × [inner]: a common scale pulled out of an expression or a matrix."""
+
+    factor: sp.Expr
+    inner: Math
+
+    def value(self):
+        return self.factor * plain(self.inner)
+
+
+Math = sp.Basic | sp.MatrixBase | Terms | Scaled | str
+
+
+def plain(value: Math):
+    """The sympy object a display value stands for."""
+    return value.value() if isinstance(value, (Terms, Scaled)) else value

@@ -1,0 +1,116 @@
+"""Steps and solutions.
+
+A solution reads as a list of typed steps, the way a good exam solution does: what is
+given, what is defined, the equations, what is substituted, the results, and notes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import Enum
+from typing import Mapping
+
+from rbdsolve.report.math import Math
+
+
+class StepKind(Enum):
+    GIVEN = "given"
+    DEFINITION = "definition"
+    EQUATION = "equation"
+    SUBSTITUTION = "substitution"
+    RESULT = "result"
+    NOTE = "note"
+
+
+class Route(Enum):
+    EXACT = "exact"
+    NUMERIC = "numeric"
+
+
+@dataclass(frozen=True)
+class Relation:
+    """lhs op rhs [= more …], e.g. T = T₁ + T₂ = m r² […]; op may be '⇒' as in
+    det(K − λM) = 0 ⇒ 25/48 μ² − 37/24 μ + 1 = 0."""
+
+    lhs: Math
+    rhs: Math
+    op: str = "="
+    more: tuple[Math, ...] = ()
+
+
+@dataclass(frozen=True)
+class Step:
+    kind: StepKind
+    text: str = ""
+    math: tuple[Relation, ...] = ()
+
+
+def given(text: str, *math: Relation) -> Step:
+    return Step(StepKind.GIVEN, text, math)
+
+
+def definition(text: str, *math: Relation) -> Step:
+    return Step(StepKind.DEFINITION, text, math)
+
+
+def equation(text: str, *math: Relation) -> Step:
+    return Step(StepKind.EQUATION, text, math)
+
+
+def substitution(text: str, *math: Relation) -> Step:
+    return Step(StepKind.SUBSTITUTION, text, math)
+
+
+def result(text: str, *math: Relation) -> Step:
+    return Step(StepKind.RESULT, text, math)
+
+
+def note(text: str, *math: Relation) -> Step:
+    return Step(StepKind.NOTE, text, math)
+
+
+@dataclass(frozen=True)
+class Solution:
+    """One question's answer: exact answers (a frozen dataclass per question kind),
+    their numeric values where parameter values are known, and the steps.
+
+    ``error`` is set, and ``answers`` is None, when the question could not be answered.
+    """
+
+    question: str
+    route: Route
+    answers: object | None
+    steps: tuple[Step, ...]
+    values: Mapping[str, object] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    seconds: float = 0.0
+    error: str | None = None
+
+    @property
+    def solved(self) -> bool:
+        return self.error is None
+
+
+@dataclass(frozen=True)
+class ModelSummary:
+    """What the model section of a report shows: q, T and V, term by term."""
+
+    coordinates: tuple[object, ...]
+    T: object | None
+    V: object | None
+    steps: tuple[Step, ...]
+
+
+@dataclass(frozen=True)
+class ProblemReport:
+    file: str
+    title: str
+    source: str
+    statement: str
+    model: ModelSummary
+    solutions: tuple[Solution, ...]
+    values: Mapping[str, object] = field(default_factory=dict)  # parameter values used
+
+    @property
+    def solved(self) -> bool:
+        return all(s.solved for s in self.solutions)

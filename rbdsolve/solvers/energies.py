@@ -1,0 +1,50 @@
+"""The model section of a report: coordinates, T and V, term by term, as in the seed's
+problem 1: T₁, T₂, then T = T₁ + T₂ with its common scale pulled out."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import Energy, kinetic_energy, potential_energy
+from rbdsolve.model.tidy import collect_in
+from rbdsolve.report import steps as st
+from rbdsolve.report.math import Math
+from rbdsolve.report.steps import ModelSummary, Relation
+from rbdsolve.solvers.common import ordered_sum, scaled_sum
+
+
+def present(expr: sp.Expr, model: Model) -> Math:
+    """An energy or an equation's left side, ordered and with its scale pulled out."""
+    generators = [*model.qdd, *model.qd]
+    parts = collect_in(expr, generators)
+    return scaled_sum(ordered_sum(parts, generators), set(model.symbols.parameters.values()))
+
+
+def summarize_model(model: Model) -> ModelSummary:
+    if not model.q:
+        return ModelSummary((), None, None, ())
+    T, V = kinetic_energy(model), potential_energy(model)
+    coords = ", ".join(model.coordinate_names())
+    steps = [st.given(f"Generalized coordinates: {coords}.")]
+    steps += _energy_steps("Kinetic energy (½ m v_G·v_G + ½ ω·J_G ω per body)", "T", T, model)
+    steps += _energy_steps("Potential energy (gravity −m g·r_G, springs ½ k s²)", "V", V, model)
+    return ModelSummary(model.q, T.total, V.total, tuple(steps))
+
+
+def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:
+    if not energy.terms:
+        return [st.definition(text, Relation(sp.Symbol(name), sp.Integer(0)))]
+    parts = [
+        Relation(sp.Symbol(f"{name}_{i}"), present(term.value, model))
+        for i, term in enumerate(energy.terms, start=1)
+    ]
+    legend = ", ".join(f"{name}_{i}: {term.name}" for i, term in enumerate(energy.terms, start=1))
+    total = present(energy.total, model)
+    if len(parts) == 1:
+        return [st.definition(f"{text}; {legend}.", Relation(sp.Symbol(name), total))]
+    sum_name = sp.Add(*[p.lhs for p in parts], evaluate=False)
+    return [
+        st.definition(f"{text}; {legend}.", *parts),
+        st.result("", Relation(sp.Symbol(name), sum_name, more=(total,))),
+    ]

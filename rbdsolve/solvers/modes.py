@@ -1,0 +1,211 @@
+"""Small oscillations about an equilibrium: normal modes.
+
+With q = q₀ + u and u small, Lagrange's equations linearize to
+
+    M ü + K u = 0,   M = ∂²T/∂q̇∂q̇ |_(q₀),   K = ∂²V/∂q∂q |_(q₀)
+
+(e.g. Goldstein, ch. 6). M comes from the velocity Jacobians at q₀ and K from the
+Hessian of V at q₀: the nonlinear equations of motion are never built. Trying
+u = a cos(ωt) gives det(K − λM) = 0 with λ = ω². When M = s_M M̂ and K = s_K K̂ with
+rational M̂, K̂ (the usual case: s_M = m r², s_K = m g r), the characteristic
+polynomial is taken over the rationals in the dimensionless μ = λ s_M / s_K, which is
+fast and exact; otherwise over the parameters.
+
+λ > 0: oscillation at ω = √λ; λ < 0: exponential growth at rate √−λ; λ = 0: neutral.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from typing import Mapping
+
+import sympy as sp
+from sympy.polys.matrices import DomainMatrix
+
+from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.tidy import tidy
+from rbdsolve.problem.schema import Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.math import Scaled
+from rbdsolve.report.steps import Relation, Route, Solution
+from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
+from rbdsolve.solvers.equilibria import Stability, classify, find_equilibria, gradient
+
+
+class Motion(Enum):
+    OSCILLATION = "oscillation"
+    GROWTH = "growth"
+    NEUTRAL = "neutral"
+
+
+@dataclass(frozen=True)
+class ModesAnswers:
+    about: Mapping[str, sp.Expr]
+    M: sp.ImmutableMatrix
+    K: sp.ImmutableMatrix
+    characteristic: sp.Expr  # det(K − λM), a polynomial in λ
+    eigenvalues: tuple[sp.Expr, ...]  # λ, ascending, repeated by multiplicity
+    frequencies: tuple[sp.Expr | None, ...]  # ω = √λ where λ > 0
+    motions: tuple[Motion, ...]
+    shapes: tuple[tuple[sp.Expr, ...], ...]  # one amplitude vector per eigenvalue
+
+
+LAMBDA = sp.Symbol("lambda")
+MU = sp.Symbol("mu")
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    at, chosen = _equilibrium(question, model)
+    M = sp.ImmutableMatrix(mass_matrix(model, at))
+    K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    symbols = set(model.symbols.parameters.values())
+    if M.det() == 0:
+        raise UnsolvedError("the mass matrix is singular at this configuration: "
+                            "a coordinate carries no inertia")
+    s_M, s_K = common_scale(list(M), symbols), common_scale(list(K), symbols)
+    scale = s_K / s_M
+    M_hat, K_hat = M / s_M, K / s_K
+    if _rational(M_hat) and _rational(K_hat):
+        poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
+        mu_roots = _roots(poly, MU)
+        eigenvalues = [tidy(scale * mu) for mu in mu_roots]
+        char_step = Relation(sp.Symbol("det(K - lambda*M)"), sp.Integer(0), "⇒",
+                             more=(sp.Eq(poly.as_expr(), 0),))
+        definition_mu = Relation(MU, tidy(LAMBDA / scale))
+    else:
+        poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
+        eigenvalues = [tidy(x) for x in _roots(poly, LAMBDA)]
+        char_step, definition_mu = Relation(sp.Symbol("det(K - lambda*M)"), poly.as_expr()), None
+    eigenvalues = _ascending(eigenvalues, model)
+    motions = tuple(_motion(lam, model) for lam in eigenvalues)
+    frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
+                        for lam, mo in zip(eigenvalues, motions))
+    shapes = _shapes(K, M, eigenvalues)
+    characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
+    answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
+    steps = _steps(model, answers, symbols, char_step, definition_mu)
+    return Solution("modes", Route.EXACT, answers, steps)
+
+
+def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
+    names = model.coordinate_names()
+    if question.about is not None:
+        symbols = model.symbols
+        at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, question.about)}
+        residual = [tidy(g.subs(at)) for g in gradient(model)]
+        for (name, expr), r in zip(question.about, residual):
+            if sp.simplify(r) != 0:
+                raise InputError(f"not an equilibrium: ∂V/∂{name} = {sp.sstr(r)} there", expr.loc)
+        return at, {n: at[q] for n, q in zip(names, model.q)}
+    solutions, _ = find_equilibria(model)
+    stable = [s for s in solutions if classify(model, s).stability is Stability.STABLE]
+    if not stable:
+        raise UnsolvedError("no stable equilibrium found; choose one with "
+                            "'modes: {about: {...}}'")
+    return stable[0], {n: stable[0][q] for n, q in zip(names, model.q)}
+
+
+def _rational(matrix: sp.Matrix) -> bool:
+    return all(x.is_Rational for x in matrix)
+
+
+def _charpoly_rational(K_hat: sp.Matrix, M_hat: sp.Matrix) -> sp.Poly:
+    """det(K̂ − μ M̂) with exact rational arithmetic (DomainMatrix over QQ[μ])."""
+    A = DomainMatrix.from_Matrix(sp.Matrix(K_hat - MU * M_hat)).convert_to(sp.QQ[MU])
+    return sp.Poly(A.det().as_expr(), MU)
+
+
+def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
+    """All roots with multiplicity, in closed form where one exists (else CRootOf)."""
+    found = sp.roots(poly, x)
+    if sum(found.values()) == poly.degree():
+        return [r for r, k in found.items() for _ in range(k)]
+    if all(c.is_Rational for c in poly.all_coeffs()):
+        return list(sp.Poly(poly, x).all_roots())  # exact CRootOf for the rest
+    raise UnsolvedError(f"no closed form for the roots of the degree-{poly.degree()} "
+                        "characteristic polynomial")
+
+
+def _ascending(values: list[sp.Expr], model: Model) -> list[sp.Expr]:
+    def key(v: sp.Expr):
+        number = v.xreplace({s: 1 for s in v.free_symbols}) if v.free_symbols else v
+        try:
+            return (0, float(sp.N(number)), sp.default_sort_key(v))
+        except TypeError:
+            return (1, 0.0, sp.default_sort_key(v))
+
+    return sorted(values, key=key)
+
+
+def _motion(lam: sp.Expr, model: Model) -> Motion:
+    if lam.is_zero:
+        return Motion.NEUTRAL
+    if lam.is_positive:
+        return Motion.OSCILLATION
+    if lam.is_negative:
+        return Motion.GROWTH
+    if model.values:
+        number = sp.N(lam.xreplace(model.values))
+        if number.is_number:
+            return Motion.OSCILLATION if number > 0 else Motion.GROWTH if number < 0 else Motion.NEUTRAL
+    raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters; "
+                        "give values to decide")
+
+
+def _shapes(K: sp.Matrix, M: sp.Matrix, eigenvalues: list[sp.Expr]) -> tuple:
+    """An amplitude vector for each λ: the null space of K − λM, scaled so the first
+    nonzero entry is 1; a repeated λ takes the next vector of its mode space's basis."""
+    bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
+    used: dict[sp.Expr, int] = {}
+    out = []
+    for lam in eigenvalues:
+        if lam not in bases:
+            null = (K - lam * M).applyfunc(tidy).nullspace(simplify=True)
+            bases[lam] = [_normalize(v) for v in null]
+        k = used.get(lam, 0)
+        used[lam] = k + 1
+        out.append(bases[lam][k] if k < len(bases[lam]) else ())
+    return tuple(out)
+
+
+def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
+    first = next(x for x in v if x != 0)
+    return tuple(tidy(x / first) for x in v)
+
+
+def _steps(model: Model, a: ModesAnswers, symbols, char_step, definition_mu) -> tuple:
+    steps = [
+        st.given("Small motions about the equilibrium, q = q₀ + u:",
+                 *[Relation(sp.Symbol(n), v) for n, v in a.about.items()]),
+        st.equation(
+            "Linearized equations M ü + K u = 0, with M = ∂²T/∂q̇∂q̇ and K = ∂²V/∂q∂q "
+            "at the equilibrium:",
+            Relation(sp.Symbol("M"), scaled_matrix(a.M, symbols)),
+            Relation(sp.Symbol("K"), scaled_matrix(a.K, symbols)),
+        ),
+    ]
+    text = "u = a cos(ωt) gives the eigenvalue problem (K − λM) a = 0, λ = ω²:"
+    if definition_mu is not None:
+        steps.append(st.equation(text, char_step, definition_mu))
+    else:
+        steps.append(st.equation(text, char_step))
+    steps.append(st.result("Eigenvalues:", *[
+        Relation(sp.Symbol(f"lambda_{i}"), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
+    for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
+        vector = sp.ImmutableMatrix(shape) if shape else None
+        if motion is Motion.OSCILLATION:
+            rel = [Relation(sp.Symbol(f"omega_{i}"), w)]
+            text = f"Mode {i}: λ_{i} > 0, an oscillation at ω_{i} = √λ_{i}; amplitudes a_{i}:"
+        elif motion is Motion.GROWTH:
+            rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
+            text = f"Mode {i}: λ_{i} < 0, exponential growth at rate γ_{i} = √(−λ_{i}): unstable:"
+        else:
+            rel = []
+            text = f"Mode {i}: λ_{i} = 0, neutral (no restoring force along this mode):"
+        if vector is not None:
+            rel.append(Relation(sp.Symbol(f"a_{i}"), vector))
+        steps.append(st.result(text, *rel))
+    return tuple(steps)
