@@ -15,7 +15,8 @@ import sympy as sp
 
 from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import explicit_inertia, shape_inertia
-from rbdsolve.model.symbols import Symbols, t
+from rbdsolve.model.state import State
+from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, CoordinateKind, Problem, Spring
 
 
@@ -34,11 +35,11 @@ class RigidBody:
     inertia: sp.Matrix
     source: Body
 
-    def angular_velocity(self) -> sp.Matrix:
+    def angular_velocity(self, state: State) -> sp.Matrix:
         """ω in scene axes. A planar body turning by angle α(q, t) has ω = α̇ e_z."""
         if self.angle is None:
             return sp.zeros(3, 1)
-        return sp.Matrix([0, 0, sp.diff(self.angle, t)])
+        return sp.Matrix([0, 0, state.d_dt(self.angle)])
 
     def inertia_in_scene(self) -> sp.Matrix:
         """J_G in scene axes: R J Rᵀ."""
@@ -53,12 +54,11 @@ class SpringModel:
     source: Spring
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # identity equality: energies are memoized per model
 class Model:
     problem: Problem
     symbols: Symbols
-    q: tuple[sp.Expr, ...]  # generalized coordinates q_i(t)
-    angles: frozenset[sp.Expr]  # the coordinates that are periodic angles
+    angles: frozenset[sp.Symbol]  # the coordinates that are periodic angles
     points: Mapping[str, sp.Matrix]
     bodies: tuple[RigidBody, ...]
     springs: tuple[SpringModel, ...]
@@ -66,22 +66,33 @@ class Model:
     values: Mapping[sp.Symbol, sp.Rational]
 
     @property
-    def qd(self) -> tuple[sp.Expr, ...]:
-        return tuple(sp.Derivative(q, t) for q in self.q)
+    def state(self) -> State:
+        return self.symbols.state
 
     @property
-    def qdd(self) -> tuple[sp.Expr, ...]:
-        return tuple(sp.Derivative(q, (t, 2)) for q in self.q)
+    def q(self) -> tuple[sp.Symbol, ...]:
+        return self.state.q
+
+    @property
+    def qd(self) -> tuple[sp.Symbol, ...]:
+        return self.state.qd
+
+    @property
+    def qdd(self) -> tuple[sp.Symbol, ...]:
+        return self.state.qdd
 
     def coordinate_names(self) -> list[str]:
-        return [c.name for c in self.problem.coordinates]
+        return list(self.state.names)
+
+    def to_time(self, expr):
+        return self.state.to_time(expr)
 
     def with_values(self, values: Mapping[str, Fraction]) -> Model:
         """The same model with numeric parameter values (``--set`` beats ``values:``)."""
         table = dict(self.values)
         for name, value in values.items():
             table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
-        return Model(self.problem, self.symbols, self.q, self.angles, self.points,
+        return Model(self.problem, self.symbols, self.angles, self.points,
                      self.bodies, self.springs, self.gravity, table)  # fmt: skip
 
 
@@ -92,14 +103,14 @@ def build_model(problem: Problem) -> Model:
     for point in problem.points:  # dependency order: each names only earlier points
         points[point.name] = names.with_points(points).vector(point.position)
     names = names.with_points(points)
-    q = tuple(names.coordinates[c.name] for c in problem.coordinates)
+    q = names.state.q
     bodies = tuple(_body(b, names) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
-    model = Model(problem, names, q, frozenset(), points, bodies, springs, gravity, values)
+    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q) if _is_angle(c.kind, qi, model))
-    return Model(problem, names, q, angles, points, bodies, springs, gravity, values)
+    return Model(problem, names, angles, points, bodies, springs, gravity, values)
 
 
 def _body(body: Body, names: Symbols) -> RigidBody:
@@ -159,8 +170,6 @@ def _only_periodic(expr: sp.Expr, q: sp.Expr) -> tuple[bool, bool]:
     if isinstance(expr, (sp.sin, sp.cos)) and expr.has(q):
         coeff = sp.diff(expr.args[0], q)
         return (coeff.is_integer is True and not coeff.has(q)), True
-    if isinstance(expr, sp.Derivative):
-        return (not expr.has(q)), expr.has(q)
     ok, seen = True, False
     for arg in expr.args:
         a, s = _only_periodic(arg, q)

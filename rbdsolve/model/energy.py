@@ -13,13 +13,15 @@ with v_G = J_v q̇ + ∂r_G/∂t and ω = J_ω q̇ + ω_t,
 
 from __future__ import annotations
 
+import functools
+import weakref
 from dataclasses import dataclass
 
 import sympy as sp
 
 from rbdsolve.model.build import Model, RigidBody
-from rbdsolve.model.symbols import t
-from rbdsolve.model.tidy import tidy, tidy_matrix
+from rbdsolve.model.state import State
+from rbdsolve.model.tidy import collect_in, tidy, tidy_matrix
 
 
 @dataclass(frozen=True)
@@ -36,27 +38,38 @@ class Energy:
     total: sp.Expr
 
 
-def velocity(model: Model, position: sp.Matrix) -> sp.Matrix:
-    """v = dr/dt, with coordinates as functions of t."""
-    return sp.diff(position, t)
-
-
-def body_kinetic_energy(body: RigidBody) -> sp.Expr:
+def body_kinetic_energy(body: RigidBody, state: State) -> sp.Expr:
     """T_body = ½ m v_G·v_G + ½ ω·(R J_G Rᵀ) ω."""
-    v = sp.diff(body.position, t)
-    omega = body.angular_velocity()
+    v = state.d_dt(body.position)
+    omega = body.angular_velocity(state)
     T_translation = body.mass * v.dot(v) / 2
     T_rotation = (omega.T * body.inertia_in_scene() * omega)[0, 0] / 2 if omega != sp.zeros(3, 1) else 0
     return T_translation + T_rotation
 
 
+def _memoized(compute):
+    """Compute an energy once per model object (solvers ask for T and V repeatedly)."""
+    cache: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+    @functools.wraps(compute)
+    def wrapper(model: Model) -> Energy:
+        if model not in cache:
+            cache[model] = compute(model)
+        return cache[model]
+
+    return wrapper
+
+
+@_memoized
 def kinetic_energy(model: Model) -> Energy:
     terms = tuple(
-        EnergyTerm(b.name, tidy_quadratic(body_kinetic_energy(b), model.qd)) for b in model.bodies
+        EnergyTerm(b.name, tidy_quadratic(body_kinetic_energy(b, model.state), model.qd))
+        for b in model.bodies
     )
     return Energy(terms, tidy_quadratic(sum((x.value for x in terms), sp.Integer(0)), model.qd))
 
 
+@_memoized
 def potential_energy(model: Model) -> Energy:
     terms: list[EnergyTerm] = []
     if model.gravity is not None:
@@ -72,8 +85,6 @@ def potential_energy(model: Model) -> Energy:
 
 def tidy_quadratic(T: sp.Expr, qd: tuple[sp.Expr, ...]) -> sp.Expr:
     """T written as Σ c_ij q̇_i q̇_j with each coefficient tidied on its own."""
-    from rbdsolve.model.tidy import collect_in
-
     return sp.Add(*[mono * coeff for mono, coeff in collect_in(T, list(qd)).items()])
 
 
@@ -84,21 +95,24 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
     modes question never builds M(q) for general q.
     """
     n = len(model.q)
-    qd = list(model.qd)
     M = sp.zeros(n, n)
     for body in model.bodies:
-        J_v = sp.diff(body.position, t).jacobian(qd)
-        J_w = body.angular_velocity().jacobian(qd)
+        J_v = body.position.jacobian(model.q)  # ∂v/∂q̇ = ∂r/∂q
+        J_w = body.angular_velocity(model.state).jacobian(model.qd)
         J_G = body.inertia_in_scene()
         if at:
-            J_v, J_w, J_G = (x.subs(at) for x in (J_v, J_w, J_G))
+            J_v, J_w, J_G = (x.xreplace(at) for x in (J_v, J_w, J_G))
         M += body.mass * J_v.T * J_v + J_w.T * J_G * J_w
     return tidy_matrix(M)
 
 
 def stiffness_matrix(V: sp.Expr, q: tuple[sp.Expr, ...], at: dict[sp.Expr, sp.Expr]) -> sp.Matrix:
     """K = ∂²V/∂q∂q evaluated at the configuration ``at``."""
-    n = len(q)
+    return tidy_matrix(hessian(V, q).xreplace(at))
+
+
+@functools.lru_cache(maxsize=64)
+def hessian(V: sp.Expr, q: tuple[sp.Expr, ...]) -> sp.ImmutableMatrix:
+    """∂²V/∂q_i∂q_j (cached: every equilibrium of a model uses the same one)."""
     grad = [sp.diff(V, qi) for qi in q]
-    K = sp.Matrix(n, n, lambda i, j: sp.diff(grad[i], q[j]).subs(at))
-    return tidy_matrix(K)
+    return sp.ImmutableMatrix(len(q), len(q), lambda i, j: sp.diff(grad[i], q[j]))

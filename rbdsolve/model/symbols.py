@@ -1,8 +1,8 @@
 """The sympy names of a problem, and the fold from checked expression trees to sympy.
 
-Parameters are positive symbols unless declared otherwise; generalized coordinates are
-real functions of time ``t``, so ``theta`` in a file becomes ``theta(t)`` here and
-``dot(theta)`` becomes ``Derivative(theta(t), t)``.
+Parameters are positive symbols unless declared otherwise; a generalized coordinate
+and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
+``theta`` and ``dot(theta)`` in a file become q and q̇ here.
 """
 
 from __future__ import annotations
@@ -12,10 +12,10 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.model.state import State, t
+
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
-
-t = sp.Symbol("t", real=True)
 
 _FUNCTIONS = {
     "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
@@ -30,7 +30,7 @@ class Symbols:
     """Every name a problem declares, as sympy objects."""
 
     parameters: Mapping[str, sp.Symbol]
-    coordinates: Mapping[str, sp.Expr]  # name -> q(t)
+    state: State
     points: Mapping[str, sp.Matrix]
 
     @staticmethod
@@ -39,18 +39,21 @@ class Symbols:
             p.name: sp.Symbol(p.name, positive=True) if p.positive else sp.Symbol(p.name, real=True)
             for p in problem.parameters
         }
-        coords = {c.name: sp.Function(c.name, real=True)(t) for c in problem.coordinates}
-        return Symbols(params, coords, {})
+        state = State.of(tuple(c.name for c in problem.coordinates))
+        return Symbols(params, state, {})
+
+    @property
+    def coordinates(self) -> Mapping[str, sp.Symbol]:
+        return dict(zip(self.state.names, self.state.q))
 
     def with_points(self, points: Mapping[str, sp.Matrix]) -> Symbols:
-        return Symbols(self.parameters, self.coordinates, {**self.points, **points})
+        return Symbols(self.parameters, self.state, {**self.points, **points})
 
     def scalar(self, expr: ex.Expr) -> sp.Expr:
         return to_sympy(expr.tree, self)
 
     def vector(self, expr: ex.Expr) -> sp.Matrix:
-        value = to_sympy(expr.tree, self)
-        return value
+        return to_sympy(expr.tree, self)
 
 
 def to_sympy(tree: ex.Tree, names: Symbols):
@@ -67,7 +70,8 @@ def to_sympy(tree: ex.Tree, names: Symbols):
                 return table[tree.id]
         raise KeyError(tree.id)  # the loader checked every name
     if isinstance(tree, ex.Derivative):
-        return sp.Derivative(names.coordinates[tree.name], (t, tree.order))
+        index = names.state.names.index(tree.name)
+        return (names.state.qd if tree.order == 1 else names.state.qdd)[index]
     if isinstance(tree, ex.Neg):
         return -to_sympy(tree.operand, names)
     if isinstance(tree, ex.Vec):

@@ -9,7 +9,7 @@ import keyword
 from fractions import Fraction
 from pathlib import Path
 
-from rbdsolve.errors import InputError, Location, did_you_mean
+from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import (
     SHAPE_ALIASES,
@@ -74,7 +74,7 @@ def _found(node: Node) -> str:
 
 
 def _check_keys(node: Map, required: tuple[str, ...], optional: tuple[str, ...], what: str) -> None:
-    allowed = (*required, *optional)
+    allowed = tuple(dict.fromkeys((*required, *optional)))
     for key, _ in node.entries:
         if key.text not in allowed:
             hint = did_you_mean(key.text, allowed) or f" (expected one of: {', '.join(allowed)})"
@@ -89,7 +89,7 @@ def _identifier(key: Scalar, what: str) -> str:
     if not name.isidentifier() or keyword.iskeyword(name):
         raise InputError(f"'{name}' is not a valid {what} name (letters, digits, _)", key.loc)
     if name.startswith("__"):
-        raise InputError(f"names starting with '__' are not allowed", key.loc)
+        raise InputError("names starting with '__' are not allowed", key.loc)
     if name in RESERVED:
         raise InputError(f"'{name}' is reserved (a function, a constant or time t)", key.loc)
     return name

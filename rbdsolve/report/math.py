@@ -23,6 +23,17 @@ class Terms:
 
 
 @dataclass(frozen=True)
+class Product:
+    """coefficient × factors, shown in that order: 1/4 cos(φ − θ) θ̇ φ̇."""
+
+    coefficient: sp.Expr
+    factors: tuple[sp.Expr, ...]
+
+    def value(self) -> sp.Expr:
+        return sp.Mul(self.coefficient, *self.factors)
+
+
+@dataclass(frozen=True)
 class Scaled:
     """factor × [inner]: a common scale pulled out of an expression or a matrix."""
 
@@ -33,9 +44,9 @@ class Scaled:
         return self.factor * plain(self.inner)
 
 
-Math = sp.Basic | sp.MatrixBase | Terms | Scaled | str
+Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | str
 
 
 def plain(value: Math):
     """The sympy object a display value stands for."""
-    return value.value() if isinstance(value, (Terms, Scaled)) else value
+    return value.value() if isinstance(value, (Terms, Product, Scaled)) else value

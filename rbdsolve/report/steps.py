@@ -29,13 +29,14 @@ class Route(Enum):
 
 @dataclass(frozen=True)
 class Relation:
-    """lhs op rhs [= more …], e.g. T = T₁ + T₂ = m r² […]; op may be '⇒' as in
-    det(K − λM) = 0 ⇒ 25/48 μ² − 37/24 μ + 1 = 0."""
+    """[lead] lhs op rhs [= more …], e.g. T = T₁ + T₂ = m r² […], or, following the
+    previous relation, ⇒ 25/48 μ² − 37/24 μ + 1 = 0 (lead '⇒')."""
 
     lhs: Math
     rhs: Math
     op: str = "="
     more: tuple[Math, ...] = ()
+    lead: str = ""
 
 
 @dataclass(frozen=True)

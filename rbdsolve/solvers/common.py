@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -11,7 +10,8 @@ from typing import Mapping
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rbdsolve.report.math import Scaled, Terms
+from rbdsolve.report.tree import map_leaves
+from rbdsolve.report.math import Math, Product, Scaled, Terms
 
 
 @dataclass(frozen=True)
@@ -51,13 +51,15 @@ def common_scale(exprs: list[sp.Expr], symbols: set[sp.Symbol]) -> sp.Expr:
     return scale
 
 
-def scaled_sum(terms: list[sp.Expr], symbols: set[sp.Symbol]) -> Scaled | Terms | sp.Expr:
-    """terms, in their order, with their common parameter scale pulled out."""
-    terms = [x for x in terms if x != 0]
-    if len(terms) <= 1:
-        return terms[0] if terms else sp.Integer(0)
-    scale = common_scale(terms, symbols)
-    inner = Terms(tuple(sp.expand(x / scale) for x in terms))
+def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp.Symbol]) -> Math:
+    """Σ coefficient × monomial, in the given order, with the coefficients' common
+    parameter scale pulled out: m r² [7/8 θ̇² + 1/4 cos(φ − θ) θ̇ φ̇ + 1/6 φ̇²]."""
+    terms = [(c, m) for c, m in terms if c != 0]
+    if not terms:
+        return sp.Integer(0)
+    scale = common_scale([c for c, _ in terms], symbols) if len(terms) > 1 else sp.Integer(1)
+    items = tuple(Product(sp.expand(c / scale), factors) for c, factors in terms)
+    inner = Terms(items) if len(items) > 1 else items[0]
     return inner if scale == 1 else Scaled(scale, inner)
 
 
@@ -80,9 +82,26 @@ def monomial_order(monomials: list[sp.Expr], generators: list[sp.Expr]) -> list[
     return sorted(monomials, key=key)
 
 
-def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr]) -> list[sp.Expr]:
-    """{monomial: coefficient} -> the terms coefficient*monomial, in exam order."""
-    return [parts[m] * m for m in monomial_order(list(parts), generators)]
+def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
+                coordinates: list[sp.Expr]) -> list[tuple[sp.Expr, tuple[sp.Expr, ...]]]:
+    """{monomial: coefficient} -> (coefficient, monomial factors) in exam order: factors
+    in generator order (θ̇ φ̇), and the part free of generators split into its terms,
+    ordered by the first coordinate in each."""
+    out = []
+    for mono in monomial_order(list(parts), generators):
+        if mono != 1:
+            powers = mono.as_powers_dict()
+            out.append((parts[mono], tuple(g**powers[g] for g in generators if g in powers)))
+            continue
+        rest = sp.Add.make_args(sp.expand(parts[mono]))
+        rank = {q: i for i, q in enumerate(coordinates)}
+
+        def first_coordinate(term: sp.Expr) -> tuple:
+            present = [rank[q] for q in coordinates if term.has(q)]
+            return (min(present) if present else len(coordinates), sp.default_sort_key(term))
+
+        out += [(term, ()) for term in sorted(rest, key=first_coordinate)]
+    return out
 
 
 # --- numeric values --------------------------------------------------------------------
@@ -94,26 +113,22 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     Expressions become floats (or [re, im] when complex), matrices nested lists;
     anything that still holds a free symbol or a function of time becomes None.
     """
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        return {f.name: numeric(getattr(value, f.name), subs) for f in dataclasses.fields(value)}
-    if isinstance(value, Mapping):
-        return {str(k): numeric(v, subs) for k, v in value.items()}
-    if isinstance(value, sp.MatrixBase):
-        return [[numeric(x, subs) for x in row] for row in value.tolist()]
-    if isinstance(value, (list, tuple)):
-        return [numeric(v, subs) for v in value]
-    if isinstance(value, sp.Basic):
-        number = value.xreplace(subs)
-        if number.free_symbols or number.atoms(AppliedUndef) or number.has(sp.Derivative):
-            return None
-        try:
-            z = complex(sp.N(number, 17))
-        except (TypeError, ValueError):
-            return None
-        if not (math.isfinite(z.real) and math.isfinite(z.imag)):
-            return None
-        return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
-    return None  # enums, text: not numbers
+    return map_leaves(value, lambda leaf: _number(leaf, subs))
+
+
+def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | None:
+    if not isinstance(value, sp.Basic):
+        return None  # enums, text: not numbers
+    number = value.xreplace(subs)
+    if number.free_symbols or number.atoms(AppliedUndef) or number.has(sp.Derivative):
+        return None
+    try:
+        z = complex(sp.N(number, 17))
+    except (TypeError, ValueError):
+        return None
+    if not (math.isfinite(z.real) and math.isfinite(z.imag)):
+        return None
+    return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
 
 
 def has_numbers(tree: object) -> bool:

@@ -15,21 +15,25 @@ from rbdsolve.solvers.common import ordered_sum, scaled_sum
 
 
 def present(expr: sp.Expr, model: Model) -> Math:
-    """An energy or an equation's left side, ordered and with its scale pulled out."""
+    """An energy or an equation's left side (in the model's plain symbols), ordered, with
+    its scale pulled out, as functions of time for display."""
     generators = [*model.qdd, *model.qd]
     parts = collect_in(expr, generators)
-    return scaled_sum(ordered_sum(parts, generators), set(model.symbols.parameters.values()))
+    terms = [(model.to_time(c), tuple(model.to_time(f) for f in factors))
+             for c, factors in ordered_sum(parts, generators, list(model.q))]
+    return scaled_sum(terms, set(model.symbols.parameters.values()))
 
 
 def summarize_model(model: Model) -> ModelSummary:
     if not model.q:
         return ModelSummary((), None, None, ())
     T, V = kinetic_energy(model), potential_energy(model)
-    coords = ", ".join(model.coordinate_names())
-    steps = [st.given(f"Generalized coordinates: {coords}.")]
+    q = sp.ImmutableMatrix([model.state.functions()])
+    steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q))]
     steps += _energy_steps("Kinetic energy (½ m v_G·v_G + ½ ω·J_G ω per body)", "T", T, model)
     steps += _energy_steps("Potential energy (gravity −m g·r_G, springs ½ k s²)", "V", V, model)
-    return ModelSummary(model.q, T.total, V.total, tuple(steps))
+    return ModelSummary(model.state.functions(), model.to_time(T.total), model.to_time(V.total),
+                        tuple(steps))
 
 
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:

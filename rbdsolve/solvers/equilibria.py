@@ -27,7 +27,7 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import potential_energy
+from rbdsolve.model.energy import hessian, potential_energy
 from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
@@ -65,7 +65,7 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     equations = [e for e in gradient(model) if e != 0]
     free = [q for q in model.q if not any(e.has(q) for e in equations)]
     if free:
-        warnings = [f"V does not depend on {', '.join(str(q.func) for q in free)}: "
+        warnings = [f"V does not depend on {', '.join(q.name for q in free)}: "
                     "every value is an equilibrium; it is shown as 0"]
     else:
         warnings = []
@@ -84,15 +84,14 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
 
 
 def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
-    s = {q: sp.Dummy(f"s_{q.func}", real=True) for q in unknowns if q in angles}
-    c = {q: sp.Dummy(f"c_{q.func}", real=True) for q in unknowns if q in angles}
-    plain = {q: sp.Dummy(str(q.func), real=True) for q in unknowns if q not in angles}
+    s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in unknowns if q in angles}
+    c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in unknowns if q in angles}
+    plain = {q: q for q in unknowns if q not in angles}
     system = []
     for e in equations:
         poly = sp.expand_trig(sp.expand(e))
         poly = poly.xreplace({sp.sin(q): s[q] for q in s} | {sp.cos(q): c[q] for q in c})
-        poly = poly.xreplace(plain)
-        if any(poly.has(q) for q in unknowns):
+        if any(poly.has(q) for q in s):
             return None
         numerator = sp.numer(sp.together(poly))
         if not numerator.is_polynomial(*s.values(), *c.values(), *plain.values()):
@@ -102,7 +101,7 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
     symbols = [*s.values(), *c.values(), *plain.values()]
     if not symbols:
         return [{}]
-    roots = sp.solve(system, symbols, dict=True)
+    roots = sp.solve(system, symbols, dict=True, check=False)  # polynomial: nothing to check
     out = []
     for root in roots:
         if any(sp.sympify(v).is_real is False for v in root.values()):
@@ -133,21 +132,18 @@ def _solve_general(equations, unknowns) -> list[dict]:
 
 def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
-    H = sp.ImmutableMatrix(
-        len(model.q), len(model.q), lambda i, j: tidy(sp.diff(V, model.q[i], model.q[j]).subs(at))
-    )
-    positive, zero, negative, undecided = eigenvalue_signs(H, model)
+    H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
-    if undecided:
+    inertia = matrix_inertia(H, model.values)
+    if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
-                           f"the sign of {undecided} depends on the parameters")
-    if negative:
-        return Equilibrium(where, Stability.UNSTABLE, H,
-                           f"the Hessian of V has {negative} negative eigenvalue(s)")
-    if zero:
+                           f"the sign of {sp.sstr(inertia.expr)} depends on the parameters")
+    if inertia.negative:
+        return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
+    if inertia.zero:
         flat = [q for q in model.q if not V.has(q)]
-        if len(flat) == zero:
+        if len(flat) == inertia.zero:
             return Equilibrium(where, Stability.NEUTRAL, H,
                                "V does not depend on " + ", ".join(names[q] for q in flat))
         return Equilibrium(where, Stability.UNDETERMINED, H,
@@ -155,42 +151,69 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")
 
 
-def eigenvalue_signs(H: sp.Matrix, model: Model) -> tuple[int, int, int, sp.Expr | None]:
-    """(positive, zero, negative, undecided coefficient) eigenvalue counts of symmetric H.
+@dataclass(frozen=True)
+class Undecided:
+    expr: sp.Expr  # the quantity whose sign could not be decided
 
-    Descartes' rule of signs is exact for a polynomial with only real roots. Parameter
-    values, when given, decide signs that assumptions alone cannot.
+
+@dataclass(frozen=True)
+class Inertia:
+    """Eigenvalue sign counts of a symmetric matrix. ``negative`` may be a lower bound
+    (≥ 1) when a negative eigenvalue is proven without counting them all."""
+
+    positive: int
+    zero: int
+    negative: int
+
+
+def matrix_inertia(H: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> Inertia | Undecided:
+    """Eigenvalue sign counts of a symmetric matrix, decided exactly.
+
+    Cheap exact tests first: a diagonal matrix shows its eigenvalues; positive leading
+    principal minors prove positive definiteness (Sylvester's criterion); a negative
+    diagonal entry eᵢᵀHeᵢ < 0 proves a negative eigenvalue. Otherwise Descartes' rule of
+    signs on det(λI − H), exact because a symmetric matrix has real eigenvalues only.
+    Parameter values, when given, decide signs the parameters' assumptions cannot.
     """
+    n = H.rows
+    if H.is_diagonal():
+        signs = [sign_of(H[i, i], values) for i in range(n)]
+        undecided = [x for x in signs if isinstance(x, Undecided)]
+        if undecided and -1 not in signs:
+            return undecided[0]
+        return Inertia(signs.count(1), signs.count(0), max(signs.count(-1), 1) if undecided else signs.count(-1))
+    if all(sign_of(tidy(H[:k, :k].det()), values) == 1 for k in range(1, n + 1)):
+        return Inertia(n, 0, 0)
+    if any(sign_of(H[i, i], values) == -1 for i in range(n)):
+        return Inertia(0, 0, 1)
     lam = sp.Dummy("lambda")
-    coeffs = [tidy(c) for c in H.charpoly(lam).all_coeffs()]  # leading coefficient 1
-    signs = []
-    for c in coeffs:
-        sign = _sign(c, model)
-        if sign is None:
-            return 0, 0, 0, c
-        signs.append(sign)
-    n = len(coeffs) - 1
+    signs = [sign_of(tidy(c), values) for c in H.charpoly(lam).all_coeffs()]  # leading 1
+    undecided = [x for x in signs if isinstance(x, Undecided)]
+    if undecided:
+        return undecided[0]
     zero = 0
     while signs and signs[-1] == 0:
         signs.pop()
         zero += 1
     nonzero = [x for x in signs if x != 0]
     positive = sum(1 for a, b in zip(nonzero, nonzero[1:]) if a != b)
-    return positive, zero, n - positive - zero, None
+    return Inertia(positive, zero, n - positive - zero)
 
 
-def _sign(value: sp.Expr, model: Model) -> int | None:
-    if value.is_zero:
-        return 0
-    if value.is_positive:
-        return 1
-    if value.is_negative:
-        return -1
-    if model.values:
-        number = value.xreplace(model.values)
+def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undecided:
+    """−1, 0 or 1 if the parameters' assumptions (or their given values) decide it."""
+    for form in (value, sp.factor(value)):
+        if form.is_zero:
+            return 0
+        if form.is_positive:
+            return 1
+        if form.is_negative:
+            return -1
+    if values:
+        number = value.xreplace(values)
         if number.is_number:
             return int(sp.sign(sp.N(number, 30)))
-    return None
+    return Undecided(value)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -204,8 +227,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         st.equation(
             "Equilibria are constant solutions q(t) = q₀; with q̇ = q̈ = 0 Lagrange's "
             "equations reduce to ∂V/∂q = 0:",
-            *[Relation(sp.Derivative(sp.Symbol("V"), sp.Symbol(n)), g)
-              for n, g in zip(model.coordinate_names(), grad)],
+            *[Relation(sp.Derivative(sp.Symbol("V"), q), model.to_time(g))
+              for q, g in zip(model.state.functions(), grad)],
         ),
         st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'} "
                   "(angles in (−π, π]):"),

@@ -29,10 +29,19 @@ from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matri
 from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
-from rbdsolve.report.math import Scaled
+from rbdsolve.report.math import Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
-from rbdsolve.solvers.equilibria import Stability, classify, find_equilibria, gradient
+from rbdsolve.solvers.equilibria import (
+    Inertia,
+    Stability,
+    Undecided,
+    classify,
+    find_equilibria,
+    gradient,
+    matrix_inertia,
+    sign_of,
+)
 
 
 class Motion(Enum):
@@ -55,6 +64,15 @@ class ModesAnswers:
 
 LAMBDA = sp.Symbol("lambda")
 MU = sp.Symbol("mu")
+# det(K − λM) as it is written, in that order (non-commutative symbols keep it)
+DET = sp.Function("det")(sp.Symbol("K", commutative=False)
+                         - sp.Symbol("lambda", commutative=False) * sp.Symbol("M", commutative=False))
+
+
+def _descending(poly: sp.Poly) -> Terms:
+    """25/48 μ² − 37/24 μ + 1: highest power first, as an exam solution writes it."""
+    x = poly.gens[0]
+    return Terms(tuple(Product(c, (x**k,) if k else ()) for (k,), c in poly.terms()))
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -72,21 +90,20 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
         mu_roots = _roots(poly, MU)
         eigenvalues = [tidy(scale * mu) for mu in mu_roots]
-        char_step = Relation(sp.Symbol("det(K - lambda*M)"), sp.Integer(0), "⇒",
-                             more=(sp.Eq(poly.as_expr(), 0),))
-        definition_mu = Relation(MU, tidy(LAMBDA / scale))
+        char_steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"),
+                      Relation(MU, tidy(LAMBDA / scale)))
     else:
         poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
-        eigenvalues = [tidy(x) for x in _roots(poly, LAMBDA)]
-        char_step, definition_mu = Relation(sp.Symbol("det(K - lambda*M)"), poly.as_expr()), None
+        eigenvalues = [sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA)]
+        char_steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"))
     eigenvalues = _ascending(eigenvalues, model)
-    motions = tuple(_motion(lam, model) for lam in eigenvalues)
+    motions = _motions(eigenvalues, K, model)
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(K, M, eigenvalues)
     characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
     answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
-    steps = _steps(model, answers, symbols, char_step, definition_mu)
+    steps = _steps(answers, symbols, char_steps)
     return Solution("modes", Route.EXACT, answers, steps)
 
 
@@ -95,7 +112,7 @@ def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.E
     if question.about is not None:
         symbols = model.symbols
         at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, question.about)}
-        residual = [tidy(g.subs(at)) for g in gradient(model)]
+        residual = [tidy(g.xreplace(at)) for g in gradient(model)]
         for (name, expr), r in zip(question.about, residual):
             if sp.simplify(r) != 0:
                 raise InputError(f"not an equilibrium: ∂V/∂{name} = {sp.sstr(r)} there", expr.loc)
@@ -140,19 +157,23 @@ def _ascending(values: list[sp.Expr], model: Model) -> list[sp.Expr]:
     return sorted(values, key=key)
 
 
-def _motion(lam: sp.Expr, model: Model) -> Motion:
-    if lam.is_zero:
-        return Motion.NEUTRAL
-    if lam.is_positive:
-        return Motion.OSCILLATION
-    if lam.is_negative:
-        return Motion.GROWTH
-    if model.values:
-        number = sp.N(lam.xreplace(model.values))
-        if number.is_number:
-            return Motion.OSCILLATION if number > 0 else Motion.GROWTH if number < 0 else Motion.NEUTRAL
-    raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters; "
-                        "give values to decide")
+def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Motion, ...]:
+    """Oscillation, growth or neutral for each λ. When a λ's sign is not decided by
+    itself, Sylvester's law of inertia decides it: with M positive definite, K a = λ M a
+    has as many positive, zero and negative λ as K has eigenvalues of each sign, so a
+    positive definite K (a stable equilibrium) makes every λ positive."""
+    counts = matrix_inertia(K, model.values)
+    out = []
+    for lam in eigenvalues:
+        sign = sign_of(lam, model.values)
+        if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
+                and counts.positive + counts.zero + counts.negative == len(eigenvalues):
+            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
+        if isinstance(sign, Undecided):
+            raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the "
+                                "parameters; give values to decide")
+        out.append({1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}[sign])
+    return tuple(out)
 
 
 def _shapes(K: sp.Matrix, M: sp.Matrix, eigenvalues: list[sp.Expr]) -> tuple:
@@ -176,7 +197,7 @@ def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
     return tuple(tidy(x / first) for x in v)
 
 
-def _steps(model: Model, a: ModesAnswers, symbols, char_step, definition_mu) -> tuple:
+def _steps(a: ModesAnswers, symbols, char_steps: tuple[Relation, ...]) -> tuple:
     steps = [
         st.given("Small motions about the equilibrium, q = q₀ + u:",
                  *[Relation(sp.Symbol(n), v) for n, v in a.about.items()]),
@@ -187,24 +208,21 @@ def _steps(model: Model, a: ModesAnswers, symbols, char_step, definition_mu) -> 
             Relation(sp.Symbol("K"), scaled_matrix(a.K, symbols)),
         ),
     ]
-    text = "u = a cos(ωt) gives the eigenvalue problem (K − λM) a = 0, λ = ω²:"
-    if definition_mu is not None:
-        steps.append(st.equation(text, char_step, definition_mu))
-    else:
-        steps.append(st.equation(text, char_step))
+    steps.append(st.equation("u = a cos(ωt) gives the eigenvalue problem (K − λM) a = 0, "
+                             "λ = ω², solvable when", *char_steps))
     steps.append(st.result("Eigenvalues:", *[
         Relation(sp.Symbol(f"lambda_{i}"), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
     for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
-        vector = sp.ImmutableMatrix(shape) if shape else None
+        vector = sp.ImmutableMatrix([shape]) if shape else None
         if motion is Motion.OSCILLATION:
-            rel = [Relation(sp.Symbol(f"omega_{i}"), w)]
-            text = f"Mode {i}: λ_{i} > 0, an oscillation at ω_{i} = √λ_{i}; amplitudes a_{i}:"
+            rel = [Relation(sp.Symbol(f"omega_{i}"), sp.Pow(lam, sp.S.Half, evaluate=False), more=(w,))]
+            text = f"Mode {i}: λ > 0, an oscillation at ω = √λ with amplitudes a:"
         elif motion is Motion.GROWTH:
             rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
-            text = f"Mode {i}: λ_{i} < 0, exponential growth at rate γ_{i} = √(−λ_{i}): unstable:"
+            text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
         else:
             rel = []
-            text = f"Mode {i}: λ_{i} = 0, neutral (no restoring force along this mode):"
+            text = f"Mode {i}: λ = 0, neutral (no restoring force along this mode):"
         if vector is not None:
             rel.append(Relation(sp.Symbol(f"a_{i}"), vector))
         steps.append(st.result(text, *rel))

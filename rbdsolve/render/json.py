@@ -1,0 +1,101 @@
+"""JSON Lines: one object per problem file (the contract in docs/json.md).
+
+Exact answers are ``str()`` of sympy objects, which ``sympy.sympify`` reads back;
+coordinates appear as ``theta(t)``; matrices are nested lists of strings. The
+conversion is generic over the answers dataclasses, so a new solver family needs no
+code here.
+"""
+
+from __future__ import annotations
+
+import json
+from enum import Enum
+import sympy as sp
+
+from rbdsolve.errors import InputError
+from rbdsolve.render.mathtext import to_latex
+from rbdsolve.report.math import Math, plain
+from rbdsolve.report.tree import map_leaves
+from rbdsolve.report.steps import ProblemReport, Relation, Solution, Step
+
+SCHEMA_VERSION = 1
+
+
+def exact(value: object) -> object:
+    """An answers tree as JSON data: sympy -> str, enums -> their value."""
+    return map_leaves(value, _exact_leaf)
+
+
+def _exact_leaf(value: object) -> object:
+    if isinstance(value, Enum):
+        return value.value
+    if isinstance(value, sp.Basic):
+        return str(value)
+    return value
+
+
+def _math(value: Math) -> object:
+    return exact(plain(value))
+
+
+def relation(rel: Relation) -> dict:
+    out = {"lhs": _math(rel.lhs), "op": rel.op, "rhs": _math(rel.rhs)}
+    if rel.more:
+        out["more"] = [_math(m) for m in rel.more]
+    if rel.lead:
+        out["lead"] = rel.lead
+    out["latex"] = " ".join(
+        filter(None, [rel.lead and "\\Rightarrow", to_latex(rel.lhs), rel.op, to_latex(rel.rhs),
+                      *[f"= {to_latex(m)}" for m in rel.more]])
+    ).replace("⇒", "\\Rightarrow")
+    return out
+
+
+def step(s: Step) -> dict:
+    return {"kind": s.kind.value, "text": s.text, "math": [relation(r) for r in s.math]}
+
+
+def solution(s: Solution) -> dict:
+    return {
+        "question": s.question,
+        "ok": s.solved,
+        "route": s.route.value,
+        "seconds": round(s.seconds, 6),
+        "answers": exact(s.answers) if s.answers is not None else None,
+        "values": s.values,
+        "warnings": list(s.warnings),
+        "error": s.error,
+        "steps": [step(x) for x in s.steps],
+    }
+
+
+def report_object(report: ProblemReport) -> dict:
+    model = report.model
+    return {
+        "schema": SCHEMA_VERSION,
+        "file": report.file,
+        "title": report.title,
+        "source": report.source,
+        "ok": report.solved,
+        "parameters": report.values,
+        "model": {
+            "coordinates": [str(q) for q in model.coordinates],
+            "T": exact(model.T) if model.T is not None else None,
+            "V": exact(model.V) if model.V is not None else None,
+            "steps": [step(x) for x in model.steps],
+        },
+        "results": [solution(s) for s in report.solutions],
+    }
+
+
+def render_report(report: ProblemReport) -> str:
+    return json.dumps(report_object(report), ensure_ascii=False) + "\n"
+
+
+def render_error(file: str, error: InputError) -> str:
+    """The JSON line for a file that could not be read: scripts still get one line."""
+    loc = error.location
+    where = {"line": loc.line, "column": loc.column, "path": loc.key_path()} if loc else {}
+    body = {"schema": SCHEMA_VERSION, "file": file, "ok": False,
+            "error": {"message": error.message, **where}, "exit_code": int(error.exit_code)}
+    return json.dumps(body, ensure_ascii=False) + "\n"

@@ -1,0 +1,100 @@
+"""A complete LaTeX document (article, amsmath): compiles with pdflatex."""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from rbdsolve.render.markdown import relation_latex
+from rbdsolve.render.mathtext import GREEK
+from rbdsolve.render.terminal import numeric_lines
+from rbdsolve.report.steps import ProblemReport, Step, StepKind
+
+PREAMBLE = r"""\documentclass[11pt]{article}
+\usepackage[utf8]{inputenc}
+\usepackage[T1]{fontenc}
+\usepackage{amsmath,amssymb}
+\usepackage[margin=2.5cm]{geometry}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5em}
+\allowdisplaybreaks
+"""
+
+_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
+            "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\^{}"}  # fmt: skip
+_MATH_CHARS = {
+    "½": r"\tfrac12", "·": r"\cdot", "∂": r"\partial", "−": "-", "⇒": r"\Rightarrow",
+    "√": r"\surd", "ü": r"\ddot{u}", "∈": r"\in", "≤": r"\le", "≥": r"\ge", "×": r"\times",
+    "²": "^2", "³": "^3", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3", "ᵀ": "^T",
+}  # fmt: skip
+_GREEK_CHARS = {v: "\\" + ("varphi" if k == "phi" else k) for k, v in GREEK.items()}
+
+
+def text(value: str) -> str:
+    """Prose with unicode math symbols -> LaTeX text with inline math."""
+    out = []
+    chars = list(unicodedata.normalize("NFD", value))
+    i = 0
+    while i < len(chars):
+        ch = chars[i]
+        nxt = chars[i + 1] if i + 1 < len(chars) else ""
+        if nxt in ("\u0307", "\u0308"):  # combining dot(s): q̇, q̈
+            base = _GREEK_CHARS.get(ch, ch)
+            out.append(f"\\ensuremath{{\\{'dot' if nxt == chr(0x307) else 'ddot'}{{{base}}}}}")
+            i += 2
+            continue
+        if ch in _SPECIAL:
+            out.append(_SPECIAL[ch])
+        elif ch in _GREEK_CHARS:
+            out.append(f"\\ensuremath{{{_GREEK_CHARS[ch]}}}")
+        elif ch in _MATH_CHARS:
+            out.append(f"\\ensuremath{{{_MATH_CHARS[ch]}}}")
+        else:
+            out.append(ch)
+        i += 1
+    return re.sub(r"\\ensuremath\{([^{}]*)\}\\ensuremath\{", r"\\ensuremath{\1", "".join(out))
+
+
+def _step(step: Step) -> list[str]:
+    out = []
+    if step.text:
+        out.append(f"\\emph{{{text(step.text)}}}" if step.kind is StepKind.NOTE else text(step.text))
+    for rel in step.math:
+        math = relation_latex(rel)
+        out.append(f"\\[ \\boxed{{{math}}} \\]" if step.kind is StepKind.RESULT else f"\\[ {math} \\]")
+    return out + [""]
+
+
+def body(report: ProblemReport) -> list[str]:
+    lines = [f"\\section*{{{text(report.title)}}}"]
+    if report.source:
+        lines.append(f"\\emph{{{text(report.source)}}}\\par")
+    if report.statement:
+        lines += [text(report.statement), ""]
+    if report.values:
+        lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()) + ".")
+    if report.model.steps:
+        lines += ["\\subsection*{Model}"]
+        for step in report.model.steps:
+            lines += _step(step)
+    for number, s in enumerate(report.solutions, start=1):
+        lines.append(f"\\subsection*{{Question {number}: {text(s.question)}}}")
+        for step in s.steps:
+            lines += _step(step)
+        lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
+        if s.error:
+            lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
+        if s.values:
+            lines.append("Numeric values: \\begin{itemize}")
+            lines += [f"\\item \\texttt{{{text(line)}}}" for line in numeric_lines(s.values)]
+            lines.append("\\end{itemize}")
+    return lines
+
+
+def render_document(reports: list[ProblemReport]) -> str:
+    title = reports[0].title if len(reports) == 1 else "Solutions"
+    lines = [PREAMBLE, f"\\title{{{text(title)}}}", "\\date{}", "\\begin{document}"]
+    for report in reports:
+        lines += body(report)
+    lines.append("\\end{document}")
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,47 @@
+"""Markdown with $…$ LaTeX math: one section per problem, one per question."""
+
+from __future__ import annotations
+
+from rbdsolve.render.mathtext import to_latex
+from rbdsolve.render.terminal import numeric_lines
+from rbdsolve.report.steps import ProblemReport, Relation, Step, StepKind
+
+
+def relation_latex(rel: Relation) -> str:
+    parts = ["\\Rightarrow" if rel.lead else "", to_latex(rel.lhs), rel.op, to_latex(rel.rhs)]
+    parts += [f"= {to_latex(m)}" for m in rel.more]
+    return " ".join(p for p in parts if p)
+
+
+def _step(step: Step) -> list[str]:
+    out = []
+    if step.text:
+        out.append(f"*{step.text}*" if step.kind is StepKind.NOTE else step.text)
+    for rel in step.math:
+        math = relation_latex(rel)
+        out.append(f"$$\\boxed{{{math}}}$$" if step.kind is StepKind.RESULT else f"$${math}$$")
+    return out + [""]
+
+
+def render(report: ProblemReport) -> str:
+    lines = [f"# {report.title}", ""]
+    if report.source:
+        lines += [f"*{report.source}* — `{report.file}`", ""]
+    if report.statement:
+        lines += [report.statement, ""]
+    if report.values:
+        lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()), ""]
+    if report.model.steps:
+        lines += ["## Model", ""]
+        for step in report.model.steps:
+            lines += _step(step)
+    for number, s in enumerate(report.solutions, start=1):
+        lines += [f"## Question {number}: {s.question}", "", f"*Route: {s.route.value}, {s.seconds:.2f} s.*", ""]
+        for step in s.steps:
+            lines += _step(step)
+        lines += [f"> **Warning:** {w}" for w in s.warnings]
+        if s.error:
+            lines += [f"> **Could not answer:** {s.error}", ""]
+        if s.values:
+            lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numeric_lines(s.values)] + [""]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,82 @@
+"""Terminal output with rich: a heading per problem and per question, prose in plain
+text, math on indented lines in readable unicode, results in bold."""
+
+from __future__ import annotations
+
+from rich.console import Group
+from rich.padding import Padding
+from rich.rule import Rule
+from rich.text import Text
+
+from rbdsolve.render.mathtext import to_unicode
+from rbdsolve.report.steps import ProblemReport, Relation, Solution, Step, StepKind
+
+_STYLE = {
+    StepKind.GIVEN: "",
+    StepKind.DEFINITION: "",
+    StepKind.EQUATION: "",
+    StepKind.SUBSTITUTION: "",
+    StepKind.RESULT: "bold green",
+    StepKind.NOTE: "italic",
+}
+
+
+def relation_text(rel: Relation) -> str:
+    parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]
+    parts += [f"= {to_unicode(m)}" for m in rel.more]
+    return " ".join(p for p in parts if p)
+
+
+def step_lines(step: Step) -> list[Text]:
+    lines = [Text(step.text, style="italic" if step.kind is StepKind.NOTE else "")] if step.text else []
+    lines += [Text("    " + relation_text(r), style=_STYLE[step.kind]) for r in step.math]
+    return lines
+
+
+def render(report: ProblemReport) -> Group:
+    parts: list = [Rule(Text(report.title, style="bold"), align="left")]
+    parts.append(Text(" · ".join(x for x in (report.source, report.file) if x), style="dim"))
+    if report.statement:
+        parts.append(Padding(Text(report.statement), (1, 0, 0, 0)))
+    if report.values:
+        given = ", ".join(f"{k} = {v:g}" for k, v in report.values.items())
+        parts.append(Text(f"Parameter values: {given}", style="dim"))
+    if report.model.steps:
+        parts.append(Padding(Text("Model", style="bold underline"), (1, 0, 0, 0)))
+        for step in report.model.steps:
+            parts += step_lines(step)
+    for number, solution in enumerate(report.solutions, start=1):
+        parts += _solution(number, solution)
+    parts.append(Text(""))
+    return Group(*parts)
+
+
+def _solution(number: int, s: Solution) -> list:
+    head = Text(f"Question {number}: {s.question}", style="bold underline")
+    head.append(f"   ({s.route.value}, {s.seconds:.2f} s)", style="dim")
+    out: list = [Padding(head, (1, 0, 0, 0))]
+    for step in s.steps:
+        out += step_lines(step)
+    for warning in s.warnings:
+        out.append(Text(f"warning: {warning}", style="yellow"))
+    if s.error:
+        out.append(Text(f"could not answer: {s.error}", style="bold red"))
+    if s.values:
+        out += [Text("Numeric values:", style="")]
+        out += [Text("    " + line, style="cyan") for line in numeric_lines(s.values)]
+    return out
+
+
+def numeric_lines(values: object, prefix: str = "") -> list[str]:
+    """Flatten a numeric values tree into 'name = value' lines, skipping the empty."""
+    if isinstance(values, dict):
+        return [line for k, v in values.items() for line in numeric_lines(v, f"{prefix}{k}" if not prefix else f"{prefix}.{k}")]
+    if isinstance(values, list) and values and all(isinstance(v, float) or v is None for v in values):
+        if all(v is None for v in values):
+            return []
+        return [f"{prefix} = [" + ", ".join("—" if v is None else f"{v:.6g}" for v in values) + "]"]
+    if isinstance(values, list):
+        return [line for i, v in enumerate(values, 1) for line in numeric_lines(v, f"{prefix}[{i}]")]
+    if isinstance(values, float):
+        return [f"{prefix} = {values:.6g}"]
+    return []

@@ -1,0 +1,49 @@
+"""Shared helpers for the test suite."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+ROOT = Path(__file__).resolve().parents[1]
+PROBLEMS = ROOT / "problems"
+
+
+def read_back(text: str, names: dict[str, sp.Symbol] | None = None) -> sp.Expr:
+    """Read an exact answer string the way a script would: sympify, with parameters as
+    positive symbols (as declared in the problem files) so that sqrt(g/r) = sqrt(g)/sqrt(r)."""
+    expr = sp.sympify(text, locals=names or {})
+    return expr
+
+
+def positive_names(*texts: str) -> dict[str, sp.Symbol]:
+    """Positive symbols for every free name in these strings, except t."""
+    out: dict[str, sp.Symbol] = {}
+    for text in texts:
+        for s in sp.sympify(text).free_symbols:
+            if s.name != "t":
+                out[s.name] = sp.Symbol(s.name, positive=True)
+    out["t"] = sp.Symbol("t", real=True)
+    return out
+
+
+def same(a: str, b: str) -> bool:
+    """Exact equality of two answer strings: simplify(a − b) == 0, after writing every
+    radicand in factored form (so √((m1+m2)(…)) and √(m1+m2)·√(expanded …) meet)."""
+    names = positive_names(a, b)
+    x, y = sp.sympify(a, locals=names), sp.sympify(b, locals=names)
+    return sp.simplify(_canonical_radicands(x - y)) == 0
+
+
+def _canonical_radicands(expr: sp.Expr) -> sp.Expr:
+    return expr.replace(
+        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
+        lambda e: sp.Pow(sp.factor(sp.expand(e.base)), e.exp),
+    )
+
+
+@pytest.fixture
+def problems_dir() -> Path:
+    return PROBLEMS

@@ -1,0 +1,75 @@
+"""Golden cases: every problem file with a NAME.expected.yaml beside it is solved and its
+JSON output compared with the expected answers, exactly (simplify(a − b) == 0).
+
+Expected answers come from independent derivations (the exam's worked solutions, or by
+hand), noted in each file's ``derivation``. Only the keys an expected file gives are
+checked; equilibria are matched by their coordinates, in any order.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import yaml
+
+from conftest import PROBLEMS, same
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_file
+from rbdsolve.render.json import report_object
+from rbdsolve.solvers import solve_problem
+
+CASES = sorted(PROBLEMS.rglob("*.expected.yaml"))
+
+
+def _problem_for(expected: Path) -> Path:
+    return expected.with_name(expected.name.replace(".expected.yaml", ".yaml"))
+
+
+@pytest.mark.parametrize("expected_file", CASES, ids=lambda p: str(p.relative_to(PROBLEMS)))
+def test_golden(expected_file: Path) -> None:
+    expected = yaml.safe_load(expected_file.read_text(encoding="utf-8"))
+    report = solve_problem(build_model(load_file(_problem_for(expected_file))))
+    got = json.loads(json.dumps(report_object(report)))  # exactly what scripts see
+    for key, value in expected.get("model", {}).items():
+        assert same(got["model"][key], value), f"model.{key}: {got['model'][key]} != {value}"
+    results = got["results"]
+    assert [r["question"] for r in results] == [e["question"] for e in expected["results"]]
+    for result, want in zip(results, expected["results"]):
+        assert result["ok"], f"{result['question']}: {result['error']}"
+        compare(result["answers"], want["answers"], result["question"])
+
+
+def compare(got, want, where: str) -> None:
+    if isinstance(want, dict):
+        for key, value in want.items():
+            assert key in got, f"{where}: missing key {key}"
+            if key == "equilibria":
+                compare_equilibria(got[key], value, f"{where}.{key}")
+            else:
+                compare(got[key], value, f"{where}.{key}")
+    elif isinstance(want, list):
+        assert isinstance(got, list) and len(got) == len(want), f"{where}: {got} != {want}"
+        for i, (g, w) in enumerate(zip(got, want)):
+            compare(g, w, f"{where}[{i}]")
+    elif isinstance(want, bool) or want in ("stable", "unstable", "neutral", "undetermined"):
+        assert got == want, f"{where}: {got} != {want}"
+    else:
+        assert same(str(got), str(want)), f"{where}: {got} != {want}"
+
+
+def compare_equilibria(got: list, want: list, where: str) -> None:
+    assert len(got) == len(want), f"{where}: {len(got)} equilibria, expected {len(want)}"
+    for w in want:
+        match = [g for g in got if all(same(g["at"][k], str(v)) for k, v in w["at"].items())]
+        assert match, f"{where}: no equilibrium at {w['at']}"
+        compare(match[0], {k: v for k, v in w.items() if k != "at"}, f"{where}{w['at']}")
+
+
+def test_every_example_has_expected_answers() -> None:
+    """A problem file without golden answers is untested: keep the corpus complete."""
+    problems = [p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml")]
+    missing = [str(p.relative_to(PROBLEMS)) for p in problems
+               if not (p.parent / p.name.replace(".yaml", ".expected.yaml")).exists()]
+    assert not missing, f"problem files without expected answers: {missing}"
