@@ -287,8 +287,11 @@ class _Checker:
 
     def visit_Call(self, node: ast.Call) -> tuple[Tree, Kind]:
         if not isinstance(node.func, ast.Name):
-            raise self.fail(node, "only plain function names can be called, like sin(x)")
+            raise self.fail(node.func, f"{_describe(node.func)} is not allowed in an expression; "
+                            "only plain function names can be called, like sin(x)")
         func = node.func.id
+        if func.startswith("__"):
+            raise self.fail(node, f"the name '{func}' is not allowed")
         if node.keywords or any(isinstance(a, ast.Starred) for a in node.args):
             raise self.fail(node, f"{func}() takes plain arguments only")
         if func in DERIVATIVE_FUNCTIONS:

@@ -123,6 +123,8 @@ class _Loader:
 
     def expr(self, node: Node, kind: ex.Kind, what: str) -> ex.Expr:
         if isinstance(node, Seq):  # a YAML list of components is a vector literal
+            if kind != ex.Kind.VECTOR:
+                raise InputError(f"expected {what}, found a list", node.loc)
             return self._vector_from_list(node, what)
         scalar = _scalar(node, what)
         if kind == ex.Kind.VECTOR:

@@ -125,6 +125,8 @@ class UnicodePrinter(StrPrinter):
         return f"{expr.p}/{expr.q}"
 
     def _print_ImmutableDenseMatrix(self, expr):
+        if expr.shape == (1, 1):
+            return self._print(expr[0, 0])
         if 1 in expr.shape:  # a vector
             return "(" + ", ".join(self._print(x) for x in expr) + ")"
         rows = ["[" + ", ".join(self._print(x) for x in row) + "]" for row in expr.tolist()]
@@ -242,6 +244,8 @@ def to_latex(value: Math) -> str:
         return out
     if isinstance(value, Product):
         return " ".join(_product_parts(value, to_latex)).replace("- ", "-", 1)
+    if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
+        return to_latex(value[0, 0])
     if isinstance(value, sp.MatrixBase) and 1 in value.shape:
         items = " \\\\ ".join(_TEX.doprint(x) for x in value)
         return f"\\begin{{pmatrix}} {items} \\end{{pmatrix}}"

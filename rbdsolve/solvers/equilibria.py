@@ -63,6 +63,8 @@ def gradient(model: Model) -> list[sp.Expr]:
 def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:
     """Every solution of ∂V/∂q = 0, angles in (−π, π]; and warnings, if any."""
     equations = [e for e in gradient(model) if e != 0]
+    if any(not e.has(*model.q) for e in equations):  # e.g. ∂V/∂x = m g sin α ≠ 0
+        return [], []
     free = [q for q in model.q if not any(e.has(q) for e in equations)]
     if free:
         warnings = [f"V does not depend on {', '.join(q.name for q in free)}: "

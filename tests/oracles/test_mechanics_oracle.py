@@ -17,8 +17,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import importlib.util
-import sys
 from pathlib import Path
 
 import pytest
@@ -34,10 +32,6 @@ from sympy.physics.mechanics import (
     inertia,
 )
 
-ROOT = Path(__file__).resolve().parents[2]
-if importlib.util.find_spec("rbdsolve") is None:  # e.g. plain `pytest` without an install
-    sys.path.insert(0, str(ROOT))
-
 from rbdsolve.model.build import build_model
 from rbdsolve.model.energy import (
     kinetic_energy,
@@ -48,6 +42,8 @@ from rbdsolve.model.energy import (
 from rbdsolve.problem import load_file
 from rbdsolve.problem.schema import QuestionKind
 from rbdsolve.solvers import solve_problem
+
+ROOT = Path(__file__).resolve().parents[2]
 
 P1 = ROOT / "problems" / "sg2150-2015-10-29" / "p1-two-rods.yaml"
 DOUBLE_PENDULUM = ROOT / "problems" / "examples" / "double-pendulum.yaml"

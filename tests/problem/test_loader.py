@@ -1,0 +1,141 @@
+"""The loader: valid scenes load; every bad input gets one located message."""
+
+from __future__ import annotations
+
+import textwrap
+
+import pytest
+
+from rbdsolve.errors import InputError
+from rbdsolve.problem import load_file, load_text
+from rbdsolve.problem.schema import CoordinateKind, QuestionKind, Shape
+
+GOOD = """\
+title: Pendulum
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - modes: {about: {theta: 0}}
+"""
+
+
+def load(text: str):
+    return load_text(textwrap.dedent(text), "p.yaml")
+
+
+def error(text: str) -> InputError:
+    with pytest.raises(InputError) as info:
+        load(text)
+    return info.value
+
+
+def test_good_scene_loads() -> None:
+    problem = load(GOOD)
+    assert [p.name for p in problem.parameters] == ["m", "l", "g"]
+    assert problem.coordinates[0].kind is CoordinateKind.AUTO
+    assert problem.bodies[0].shape is Shape.PARTICLE
+    assert problem.questions[0].kind is QuestionKind.MODES
+    assert problem.questions[0].about[0][0] == "theta"
+
+
+def test_about_is_read_in_coordinate_order() -> None:
+    text = GOOD.replace("coordinates: [theta]", "coordinates: [theta, x]").replace(
+        "{about: {theta: 0}}", "{about: {x: 1, theta: 0}}"
+    )
+    assert [name for name, _ in load(text).questions[0].about] == ["theta", "x"]
+
+
+def test_points_are_ordered_by_dependency() -> None:
+    text = GOOD.replace("  P: l * [sin(theta), -cos(theta)]", "  Q: P + [0, 1]\n  P: [l, 0]")
+    assert [p.name for p in load(text).points] == ["P", "Q"]
+
+
+CASES = [
+    # (replace this, with this, line, column, key path, words)
+    ("mass: m,", "mass: M,", 8, 32, "bodies.bob.mass", "unknown symbol 'M' (did you mean 'm'?)"),
+    ("at: P}", "at: Q}", 8, 39, "bodies.bob.at", "unknown point 'Q'"),
+    ("shape: particle", "shape: partcle", 8, 16, "bodies.bob.shape", "unknown shape 'partcle' (did you mean 'particle'?)"),
+    ("shape: particle, ", "", 8, 8, "bodies.bob", "needs a 'shape'"),
+    ("mass: m, ", "", 8, 8, "bodies.bob", "missing required key 'mass'"),
+    ("mass: m,", "mass: m, colour: red,", 8, 35, "bodies.bob.colour", "unknown key 'colour'"),
+    ("mass: m,", "mass: -2,", 8, 32, "bodies.bob.mass", "must not be negative"),
+    ("mass: m,", "mass: [1, 2],", 8, 32, "bodies.bob.mass", "expected a mass (a scalar expression), found a list"),
+    ("gravity: [0, -g]", "gravity: [0, -g, 1, 2]", 4, 10, "gravity", "2 or 3 components"),
+    ("gravity: [0, -g]", "gravty: [0, -g]", 4, 1, "gravty", "unknown key 'gravty' in the problem (did you mean 'gravity'?)"),
+    ("gravity: [0, -g]", "gravity: -g", 4, 10, "gravity", "expected a gravity vector"),
+    ("  - modes: {about: {theta: 0}}", "  - mode", 10, 5, "questions[0]", "unknown question 'mode' (did you mean 'modes'?)"),
+    ("{about: {theta: 0}}", "{about: {thta: 0}}", 10, 21, "questions[0].modes.about.thta", "'thta' is not a coordinate (did you mean 'theta'?)"),
+    ("{about: {theta: 0}}", "{abut: {theta: 0}}", 10, 13, "questions[0].modes.abut", "unknown key 'abut' in question 'modes' (did you mean 'about'?)"),
+    ("parameters: {m: mass, l: length, g: gravity}", "parameters: {m: mass, l: length, g: gravity, m: again}", 2, 46, "parameters.m", "duplicate key 'm'"),
+    ("parameters: {m: mass,", "parameters: {sin: mass, m: mass,", 2, 14, "parameters.sin", "reserved"),
+    ("coordinates: [theta]", "coordinates: [theta, m]", 3, 22, "coordinates[1]", "already declared as a parameter"),
+    ("  P: l * [sin(theta), -cos(theta)]", "  P: Q + [1, 0]\n  Q: P + [0, 1]", 6, 6, "points.P", "cyclic point definitions: P -> Q -> P"),
+    ("  P: l * [sin(theta), -cos(theta)]", "  P: l * [sin(theta), -cos(theta)] + 1", 6, 6, "points.P", "cannot add a vector and a scalar"),
+    ("title: Pendulum", "title: Pendulum\nvalues: {m: heavy}", 2, 13, "values.m", "unknown symbol 'heavy'"),
+    ("title: Pendulum", "title: Pendulum\nvalues: {M: 1}", 2, 10, "values.M", "'M' is not a parameter (did you mean 'm'?)"),
+    ("title: Pendulum", "title: Pendulum\nvalues: {m: -1}", 2, 13, "values.m", "declared positive"),
+]
+
+
+@pytest.mark.parametrize("old, new, line, column, path, words", CASES, ids=[c[-1][:40] for c in CASES])
+def test_bad_input_is_located(old, new, line, column, path, words) -> None:
+    assert old in GOOD
+    err = error(GOOD.replace(old, new, 1))
+    assert words in err.message
+    assert err.location.key_path() == path
+    assert (err.location.line, err.location.column) == (line, column)
+
+
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        ("", "empty"),
+        ("   \n", "empty"),
+        ("- a\n- b\n", "expected a mapping at the top"),
+        ("title: x\n", "missing required key 'questions'"),
+        ("questions: [eom]\n", "needs generalized coordinates"),
+        ("title: [unclosed\n", "YAML syntax error"),
+        ("title: x\n\tquestions: [eom]\n", "tab"),
+        ("a: &a [1, *a]\nquestions: [eom]\n", "nesting deeper than"),
+    ],
+)
+def test_bad_documents(text: str, words: str) -> None:
+    with pytest.raises(InputError) as info:
+        load_text(text, "p.yaml") if text.strip() else load_file_text(text)
+    assert words in info.value.message
+
+
+def load_file_text(text: str):
+    from rbdsolve.problem.yamlnodes import read_text
+
+    return load_text(read_text("p.yaml", text.encode()), "p.yaml")
+
+
+def test_alias_bomb_is_refused_quickly() -> None:
+    lines = ['a0: &a0 ["x", "x", "x", "x", "x", "x", "x", "x", "x"]']
+    for i in range(1, 10):
+        lines.append(f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 9)}]")
+    with pytest.raises(InputError, match="refusing to expand"):
+        load_text("\n".join(lines) + "\nquestions: [eom]\n", "bomb.yaml")
+
+
+def test_binary_and_non_utf8_files(tmp_path) -> None:
+    binary = tmp_path / "b.yaml"
+    binary.write_bytes(b"\x00\x01\x02questions")
+    with pytest.raises(InputError, match="binary"):
+        load_file(binary)
+    latin = tmp_path / "l.yaml"
+    latin.write_bytes("title: caf\xe9\nquestions: [eom]\n".encode("latin-1"))
+    with pytest.raises(InputError, match="not UTF-8") as info:
+        load_file(latin)
+    assert (info.value.location.line, info.value.location.column) == (1, 11)
+
+
+def test_missing_file() -> None:
+    with pytest.raises(InputError, match="no such file"):
+        load_file("does/not/exist.yaml")

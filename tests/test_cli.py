@@ -1,0 +1,140 @@
+"""The command line, through click's CliRunner: exit codes, formats and messages."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from conftest import PROBLEMS, same
+from rbdsolve.cli import main
+
+P1 = str(PROBLEMS / "sg2150-2015-10-29" / "p1-two-rods.yaml")
+PENDULUM = str(PROBLEMS / "examples" / "pendulum.yaml")
+
+
+def run(*args: str, input: str | None = None):
+    return CliRunner().invoke(main, list(args), input=input)
+
+
+def test_solve_terminal_reads_like_the_exam() -> None:
+    result = run("solve", P1)
+    assert result.exit_code == 0, result.output
+    out = result.output
+    assert "T = T₁ + T₂ = m r² [7/8 θ̇² + 1/4 cos(φ − θ) θ̇ φ̇ + 1/6 φ̇²]" in out
+    assert "M = m r² [[7/4, 1/4], [1/4, 1/3]]" in out
+    assert "⇒ 25/48 μ² − 37/24 μ + 1 = 0" in out
+    assert "λ₁ = 24 g/(25 r)" in out and "λ₂ = 2 g/r" in out
+
+
+def test_solve_json_lines_contract() -> None:
+    result = run("solve", P1, PENDULUM, "--format", "json")
+    assert result.exit_code == 0
+    lines = result.output.splitlines()
+    assert len(lines) == 2
+    first = json.loads(lines[0])
+    assert {"file", "title", "model", "results"} <= first.keys()
+    assert first["model"]["coordinates"] == ["theta(t)", "phi(t)"]
+    modes = first["results"][2]
+    assert {"question", "route", "seconds", "answers", "values", "steps"} <= modes.keys()
+    assert modes["route"] == "exact"
+    assert [same(a, b) for a, b in zip(modes["answers"]["eigenvalues"], ["24*g/(25*r)", "2*g/r"])] == [True, True]
+
+
+def test_folder_is_solved_in_file_order() -> None:
+    result = run("solve", str(PROBLEMS / "examples"), "-f", "json")
+    assert result.exit_code == 0
+    files = [json.loads(line)["file"] for line in result.output.splitlines()]
+    assert [f.rsplit("/", 1)[1] for f in files] == ["double-pendulum.yaml", "pendulum.yaml", "rod-in-bowl.yaml"]
+
+
+def test_set_gives_numeric_values() -> None:
+    result = run("solve", P1, "-f", "json", "--set", "m=1", "--set", "r=0.5", "--set", "g=9.81")
+    assert result.exit_code == 0
+    modes = json.loads(result.output)["results"][2]
+    assert modes["values"]["eigenvalues"] == pytest.approx([24 * 9.81 / 12.5, 2 * 9.81 / 0.5], rel=1e-12)
+    assert modes["values"]["frequencies"][1] == pytest.approx((2 * 9.81 / 0.5) ** 0.5, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (("--set", "M=1"), "has no parameter 'M' (did you mean 'm'?)"),
+        (("--set", "m"), "--set expects NAME=VALUE"),
+        (("--set", "m=heavy"), "unknown symbol 'heavy'"),
+        (("--set", "m=-1"), "the parameter is positive"),
+        (("--format", "pdf"), "Invalid value"),
+    ],
+)
+def test_bad_options_exit_2(args, words) -> None:
+    result = run("solve", P1, *args)
+    assert result.exit_code == 2
+    assert words in result.output
+
+
+def test_bad_file_exit_2_with_location(tmp_path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("parameters: {m: mass}\ncoordinates: [x]\nbodies:\n  b: {shape: particle, mass: M, at: [x, 0]}\nquestions: [eom]\n")
+    result = run("solve", str(bad))
+    assert result.exit_code == 2
+    assert f"{bad}:4:30: bodies.b.mass: unknown symbol 'M' (did you mean 'm'?)" in result.output
+    assert "Traceback" not in result.output
+
+
+def test_json_keeps_one_line_per_file_even_for_bad_input(tmp_path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("questions: [eom]\n")
+    result = CliRunner().invoke(main, ["solve", str(bad), PENDULUM, "-f", "json"])
+    assert result.exit_code == 2
+    lines = [json.loads(x) for x in result.stdout.splitlines()]
+    assert lines[0]["ok"] is False and "coordinates" in lines[0]["error"]["message"]
+    assert lines[1]["ok"] is True
+
+
+def test_unanswerable_question_exits_1(tmp_path) -> None:
+    sliding = tmp_path / "slide.yaml"
+    sliding.write_text("parameters: {m: mass, g: gravity}\ncoordinates: [x]\ngravity: [0, -g]\n"
+                       "bodies:\n  b: {shape: particle, mass: m, at: [x, x]}\nquestions: [equilibria]\n")
+    result = run("solve", str(sliding))
+    assert result.exit_code == 1
+    assert "could not answer" in result.output and "no equilibrium" in result.output
+
+
+def test_internal_error_exits_3(monkeypatch) -> None:
+    from rbdsolve import solvers
+    from rbdsolve.problem.schema import QuestionKind
+
+    def broken(*args):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setitem(solvers.SOLVERS, QuestionKind.EOM, broken)
+    result = run("solve", PENDULUM)
+    assert result.exit_code == 3
+    assert "internal error: ZeroDivisionError: boom (run with --debug" in result.output
+    assert "Traceback" not in result.output
+    assert "Traceback" in run("solve", PENDULUM, "--debug").output
+
+
+def test_check_validates_without_solving(tmp_path) -> None:
+    result = run("check", str(PROBLEMS / "sg2150-2015-10-29"))
+    assert result.exit_code == 0
+    assert "p1-two-rods.yaml: ok (eom, equilibria, modes)" in result.output
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("title: [\n")
+    assert run("check", str(bad)).exit_code == 2
+
+
+@pytest.mark.parametrize("fmt, marker", [("markdown", "$$"), ("latex", "\\begin{document}")])
+def test_document_formats(fmt, marker, tmp_path) -> None:
+    out = tmp_path / f"p1.{fmt}"
+    result = run("solve", P1, "-f", fmt, "-o", str(out))
+    assert result.exit_code == 0
+    text = out.read_text(encoding="utf-8")
+    assert marker in text
+    assert "\\frac{25}{48}" in text or "frac{25}{48}" in text
+
+
+def test_help_has_examples() -> None:
+    assert "Examples:" in run("solve", "--help").output
+    assert run("--help").exit_code == 0
