@@ -1,5 +1,6 @@
 """Golden cases: every problem file with a NAME.expected.yaml beside it is solved and its
-JSON output compared with the expected answers, exactly (simplify(a − b) == 0).
+JSON output compared with the expected answers, exactly (simplify(a − b) == 0), and
+with the expected numeric values, if given, to a relative tolerance of 1e-10.
 
 Expected answers come from independent derivations (the exam's worked solutions, or by
 hand), noted in each file's ``derivation``. Only the keys an expected file gives are
@@ -39,6 +40,7 @@ def test_golden(expected_file: Path) -> None:
     for result, want in zip(results, expected["results"]):
         assert result["ok"], f"{result['question']}: {result['error']}"
         compare(result["answers"], want["answers"], result["question"])
+        compare_numbers(result["values"], want.get("values", {}), result["question"])
 
 
 def compare(got, want, where: str) -> None:
@@ -57,6 +59,19 @@ def compare(got, want, where: str) -> None:
         assert got == want, f"{where}: {got} != {want}"
     else:
         assert same(str(got), str(want)), f"{where}: {got} != {want}"
+
+
+def compare_numbers(got, want, where: str) -> None:
+    """Numeric values: relative tolerance 1e-10 (the expected ones are hand-computed)."""
+    if isinstance(want, dict):
+        for key, value in want.items():
+            compare_numbers(got[key], value, f"{where}.{key}")
+    elif isinstance(want, list):
+        assert len(got) == len(want), f"{where}: {got} != {want}"
+        for i, (g, w) in enumerate(zip(got, want)):
+            compare_numbers(g, w, f"{where}[{i}]")
+    else:
+        assert got == pytest.approx(want, rel=1e-10), f"{where}: {got} != {want}"
 
 
 def compare_equilibria(got: list, want: list, where: str) -> None:

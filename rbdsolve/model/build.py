@@ -87,6 +87,10 @@ class Model:
     def to_time(self, expr):
         return self.state.to_time(expr)
 
+    def readable(self, expr):
+        """Coordinates as plain named symbols, for messages: 2*c*theta + …"""
+        return expr.xreplace({q: sp.Symbol(n) for q, n in zip(self.q, self.coordinate_names())})
+
     def with_values(self, values: Mapping[str, Fraction]) -> Model:
         """The same model with numeric parameter values (``--set`` beats ``values:``)."""
         table = dict(self.values)

@@ -64,6 +64,8 @@ def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp
 
 
 def scaled_matrix(matrix: sp.Matrix, symbols: set[sp.Symbol]) -> Scaled | sp.Matrix:
+    if matrix.shape == (1, 1):
+        return sp.ImmutableMatrix(matrix)
     scale = common_scale(list(matrix), symbols)
     scale = abs(scale) if scale.could_extract_minus_sign() else scale
     if scale == 1:

@@ -50,5 +50,5 @@ def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st
     sum_name = sp.Add(*[p.lhs for p in parts], evaluate=False)
     return [
         st.definition(f"{text}; {legend}.", *parts),
-        st.result("", Relation(sp.Symbol(name), sum_name, more=(total,))),
+        st.equation("", Relation(sp.Symbol(name), sum_name, more=(total,))),
     ]

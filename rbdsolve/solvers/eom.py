@@ -46,11 +46,10 @@ def lagrange_equations(model: Model) -> tuple[sp.Expr, ...]:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     equations = lagrange_equations(model)
-    names = ", ".join(model.coordinate_names())
     steps = (
-        st.definition(
-            "Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, "
-            f"one for each coordinate ({names}):",
+        st.result(
+            "Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, one for each "
+            "coordinate in turn:",
             *[Relation(_present(E, model), sp.Integer(0)) for E in equations],
         ),
     )

@@ -74,7 +74,7 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     unknowns = [q for q in model.q if q not in free]
     solutions = _solve_trig_polynomial(equations, unknowns, model.angles)
     if solutions is None:
-        solutions = _solve_general(equations, unknowns)
+        solutions = _solve_general(equations, unknowns, model)
         warnings.append("the equilibrium equations are not polynomial in sin, cos and the "
                         "coordinates; sympy's solve was used and may miss solutions")
     out = []
@@ -127,9 +127,26 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
     return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
 
 
-def _solve_general(equations, unknowns) -> list[dict]:
-    roots = sp.solve(equations, unknowns, dict=True)
+def _solve_general(equations, unknowns, model: Model) -> list[dict]:
+    shown = "; ".join(f"{sp.sstr(model.readable(e))} = 0" for e in equations)
+    refusal = UnsolvedError(
+        f"the equilibrium equations are transcendental ({shown}) and the exact route "
+        "cannot solve them; for modes, give the equilibrium with 'modes: {about: {...}}'"
+    )
+    if any(_mixed(e, q) for e in equations for q in unknowns):
+        raise refusal  # q both inside and outside sin/cos, as in θ = k sin θ: no closed form
+    try:
+        roots = sp.solve(equations, unknowns, dict=True)
+    except NotImplementedError:
+        raise refusal from None
     return [r for r in roots if all(sp.sympify(v).is_real is not False for v in r.values())]
+
+
+def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q occur both inside a trigonometric function and outside every one?"""
+    inside = any(f.has(q) for f in expr.atoms(sp.sin, sp.cos, sp.tan))
+    outside = expr.xreplace({f: sp.Integer(0) for f in expr.atoms(sp.sin, sp.cos, sp.tan)}).has(q)
+    return inside and outside
 
 
 def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:

@@ -1,0 +1,100 @@
+"""Solver behaviour at the edges, on small scenes whose answers are known by hand."""
+
+from __future__ import annotations
+
+import sympy as sp
+import pytest
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+ROD = """
+parameters: {m: mass, l: length, g: gravity, c: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: l/2 * [sin(theta), -cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta}
+"""
+
+
+def solve(text: str):
+    return solve_problem(build_model(load_text(text, "scene.yaml")))
+
+
+def test_transcendental_equilibria_are_refused_with_the_reason() -> None:
+    scene = ROD + "springs:\n  s: {stiffness: c, angle: theta}\nquestions: [equilibria]\n"
+    result = solve(scene).solutions[0]
+    assert not result.solved
+    assert "transcendental" in result.error and "theta" in result.error
+
+
+def test_modes_about_the_upside_down_rod_grow() -> None:
+    # About θ = π: M = m l²/3, K = −m g l/2, so λ = −3g/(2l): growth at √(3g/(2l)).
+    result = solve(ROD + "questions:\n  - modes: {about: {theta: pi}}\n").solutions[0]
+    g, l = sp.symbols("g l", positive=True)
+    assert result.answers.motions[0].value == "growth"
+    assert sp.simplify(result.answers.eigenvalues[0] + 3 * g / (2 * l)) == 0
+    assert result.answers.frequencies == (None,)
+
+
+def test_about_a_point_that_is_not_an_equilibrium_is_a_located_error() -> None:
+    with pytest.raises(InputError) as info:
+        solve(ROD + "questions:\n  - modes: {about: {theta: pi/2}}\n")
+    assert "not an equilibrium" in info.value.message
+    assert info.value.location.key_path() == "questions[0].modes.about.theta"
+
+
+def test_a_coordinate_that_v_ignores_is_neutral() -> None:
+    # A cart (x) carrying a pendulum (θ): V depends on θ only; x is a neutral direction.
+    scene = """
+parameters: {m: mass, M: cart mass, l: length, g: gravity}
+coordinates: [x, theta]
+gravity: [0, -g]
+points:
+  C: [x, 0]
+  P: C + l * [sin(theta), -cos(theta)]
+bodies:
+  cart: {shape: particle, mass: M, at: C}
+  bob: {shape: particle, mass: m, at: P}
+questions: [equilibria, modes]
+"""
+    report = solve(scene)
+    equilibria = report.solutions[0]
+    stable = [e for e in equilibria.answers.equilibria if e.at["theta"] == 0]
+    assert stable[0].stability.value == "neutral"
+    assert any("does not depend on x" in w for w in equilibria.warnings)
+    # Modes: λ = 0 (the cart drifts) and λ = (M + m) g/(M l) (by hand: K = diag(0, m g l),
+    # M = [[M + m, m l], [m l, m l²]], det(K − λM) = λ (λ M m l² − (M + m) m g l)).
+    # With no stable equilibrium (only neutral ones) the default 'modes' refuses.
+    assert not report.solutions[1].solved
+    assert "no stable equilibrium" in report.solutions[1].error
+
+
+def test_modes_with_a_neutral_direction() -> None:
+    scene = """
+parameters: {m: mass, M: cart mass, l: length, g: gravity}
+coordinates: [x, theta]
+gravity: [0, -g]
+points:
+  C: [x, 0]
+  P: C + l * [sin(theta), -cos(theta)]
+bodies:
+  cart: {shape: particle, mass: M, at: C}
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - modes: {about: {x: 0, theta: 0}}
+"""
+    answers = solve(scene).solutions[0].answers
+    m, M, l, g = sp.symbols("m M l g", positive=True)
+    # By hand: det(K − λM) = λ (λ M m l² − (M + m) m g l) → λ = 0, (M + m) g/(M l).
+    assert answers.eigenvalues[0] == 0
+    assert sp.simplify(answers.eigenvalues[1] - (M + m) * g / (M * l)) == 0
+    assert [x.value for x in answers.motions] == ["neutral", "oscillation"]
+    # Neutral mode: the whole system drifts, a = (1, 0); the oscillation keeps the centre
+    # of mass still: (M + m) x + m l θ = 0, so a = (1, −(M + m)/(m l)).
+    assert answers.shapes[0] == (1, 0)
+    assert sp.simplify(answers.shapes[1][1] + (M + m) / (m * l)) == 0
