@@ -199,9 +199,17 @@ def _write(fmt: str, reports, chunks: list[str], output: str | None) -> None:
         _write_terminal(reports, output)
         return
     if output:
-        Path(output).write_text(text, encoding="utf-8")
+        with _open_output(output) as handle:
+            handle.write(text)
     else:
         click.echo(text, nl=False)
+
+
+def _open_output(output: str):
+    try:
+        return open(output, "w", encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot write {output}: {exc.strerror}") from None
 
 
 def _write_terminal(reports, output: str | None) -> None:
@@ -210,7 +218,7 @@ def _write_terminal(reports, output: str | None) -> None:
     from rbdsolve.render.terminal import render
 
     if output:
-        with open(output, "w", encoding="utf-8") as handle:
+        with _open_output(output) as handle:
             console = Console(file=handle, color_system=None, width=100, highlight=False)
             for report in reports:
                 console.print(render(report))

@@ -84,9 +84,10 @@ def body(report: ProblemReport) -> list[str]:
         lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
         if s.error:
             lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
-        if s.values:
+        numbers = numeric_lines(s.values)
+        if numbers:
             lines.append("Numeric values: \\begin{itemize}")
-            lines += [f"\\item \\texttt{{{text(line)}}}" for line in numeric_lines(s.values)]
+            lines += [f"\\item \\texttt{{{text(line)}}}" for line in numbers]
             lines.append("\\end{itemize}")
     return lines
 

@@ -42,6 +42,7 @@ def render(report: ProblemReport) -> str:
         lines += [f"> **Warning:** {w}" for w in s.warnings]
         if s.error:
             lines += [f"> **Could not answer:** {s.error}", ""]
-        if s.values:
-            lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numeric_lines(s.values)] + [""]
+        numbers = numeric_lines(s.values)
+        if numbers:
+            lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numbers] + [""]
     return "\n".join(lines) + "\n"

@@ -61,9 +61,10 @@ def _solution(number: int, s: Solution) -> list:
         out.append(Text(f"warning: {warning}", style="yellow"))
     if s.error:
         out.append(Text(f"could not answer: {s.error}", style="bold red"))
-    if s.values:
-        out += [Text("Numeric values:", style="")]
-        out += [Text("    " + line, style="cyan") for line in numeric_lines(s.values)]
+    numbers = numeric_lines(s.values)
+    if numbers:
+        out += [Text("Numeric values:")]
+        out += [Text("    " + line, style="cyan") for line in numbers]
     return out
 
 

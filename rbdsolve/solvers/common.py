@@ -12,6 +12,7 @@ from sympy.core.function import AppliedUndef
 
 from rbdsolve.report.tree import map_leaves
 from rbdsolve.report.math import Math, Product, Scaled, Terms
+from rbdsolve.report.steps import Relation
 
 
 @dataclass(frozen=True)
@@ -104,6 +105,16 @@ def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
 
         out += [(term, ()) for term in sorted(rest, key=first_coordinate)]
     return out
+
+
+def configuration(coordinates: tuple[sp.Expr, ...], values: list[sp.Expr]) -> Relation:
+    """(θ, φ) = (0, π): a configuration on one line (θ = 0 for one coordinate)."""
+    return Relation(sp.ImmutableMatrix([list(coordinates)]), sp.ImmutableMatrix([list(values)]))
+
+
+def subscript(i: int) -> str:
+    """1 -> '₁': for names in prose (T₁, λ₂)."""
+    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
 # --- numeric values --------------------------------------------------------------------

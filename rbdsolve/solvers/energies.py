@@ -11,7 +11,7 @@ from rbdsolve.model.tidy import collect_in
 from rbdsolve.report import steps as st
 from rbdsolve.report.math import Math
 from rbdsolve.report.steps import ModelSummary, Relation
-from rbdsolve.solvers.common import ordered_sum, scaled_sum
+from rbdsolve.solvers.common import ordered_sum, scaled_sum, subscript
 
 
 def present(expr: sp.Expr, model: Model) -> Math:
@@ -30,8 +30,10 @@ def summarize_model(model: Model) -> ModelSummary:
     T, V = kinetic_energy(model), potential_energy(model)
     q = sp.ImmutableMatrix([model.state.functions()])
     steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q))]
-    steps += _energy_steps("Kinetic energy (½ m v_G·v_G + ½ ω·J_G ω per body)", "T", T, model)
-    steps += _energy_steps("Potential energy (gravity −m g·r_G, springs ½ k s²)", "V", V, model)
+    steps += _energy_steps("Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of "
+                           "mass)", "T", T, model)
+    steps += _energy_steps("Potential energy, −m g·r per body in gravity and ½ k s² per spring of "
+                           "stretch s", "V", V, model)
     return ModelSummary(model.state.functions(), model.to_time(T.total), model.to_time(V.total),
                         tuple(steps))
 
@@ -43,7 +45,7 @@ def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st
         Relation(sp.Symbol(f"{name}_{i}"), present(term.value, model))
         for i, term in enumerate(energy.terms, start=1)
     ]
-    legend = ", ".join(f"{name}_{i}: {term.name}" for i, term in enumerate(energy.terms, start=1))
+    legend = ", ".join(f"{name}{subscript(i)} {term.name}" for i, term in enumerate(energy.terms, start=1))
     total = present(energy.total, model)
     if len(parts) == 1:
         return [st.definition(f"{text}; {legend}.", Relation(sp.Symbol(name), total))]

@@ -32,7 +32,7 @@ from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options, scaled_matrix
+from rbdsolve.solvers.common import Options, configuration, scaled_matrix
 
 
 class Stability(Enum):
@@ -82,7 +82,13 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
         full = {q: sol.get(q, sp.Integer(0)) for q in model.q}
         if full not in out:
             out.append(full)
-    return out, warnings
+    return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
+
+
+def _order(value: sp.Expr) -> tuple:
+    """Sort key: by numeric value (parameters set to 1), then by the expression."""
+    number = value.xreplace({s: 1 for s in value.free_symbols}).evalf()
+    return (float(number) if number.is_real else 0.0, sp.default_sort_key(value))
 
 
 def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
@@ -252,10 +258,11 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'} "
                   "(angles in (−π, π]):"),
     ]
-    for eq in equilibria:
-        steps.append(st.result(
-            f"{eq.stability.value}: {eq.reason}.",
-            *[Relation(sp.Symbol(n), v) for n, v in eq.at.items()],
+    coordinates = model.state.functions()
+    for number, eq in enumerate(equilibria, start=1):
+        steps.append(st.result(f"Equilibrium {number}:", configuration(coordinates, list(eq.at.values()))))
+        steps.append(st.equation(
+            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
             Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
         ))
     return Solution("equilibria", Route.EXACT, EquilibriaAnswers(equilibria), tuple(steps),

@@ -31,7 +31,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.math import Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
+from rbdsolve.solvers.common import Options, common_scale, configuration, scaled_matrix
 from rbdsolve.solvers.equilibria import (
     Inertia,
     Stability,
@@ -103,7 +103,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     shapes = _shapes(K, M, eigenvalues)
     characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
     answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
-    steps = _steps(answers, symbols, char_steps)
+    steps = _steps(answers, model, char_steps)
     return Solution("modes", Route.EXACT, answers, steps)
 
 
@@ -197,10 +197,11 @@ def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
     return tuple(tidy(x / first) for x in v)
 
 
-def _steps(a: ModesAnswers, symbols, char_steps: tuple[Relation, ...]) -> tuple:
+def _steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> tuple:
+    symbols = set(model.symbols.parameters.values())
     steps = [
-        st.given("Small motions about the equilibrium, q = q₀ + u:",
-                 *[Relation(sp.Symbol(n), v) for n, v in a.about.items()]),
+        st.given("Small motions q = q₀ + u about the equilibrium",
+                 configuration(model.state.functions(), list(a.about.values()))),
         st.equation(
             "Linearized equations M ü + K u = 0, with M = ∂²T/∂q̇∂q̇ and K = ∂²V/∂q∂q "
             "at the equilibrium:",
