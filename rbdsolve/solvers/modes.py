@@ -100,7 +100,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     motions = _motions(eigenvalues, K, model)
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
                         for lam, mo in zip(eigenvalues, motions))
-    shapes = _shapes(K, M, eigenvalues)
+    shapes = _shapes(K, M, eigenvalues, model.values)
     characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
     answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
     steps = _steps(answers, model, char_steps)
@@ -176,20 +176,55 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Mo
     return tuple(out)
 
 
-def _shapes(K: sp.Matrix, M: sp.Matrix, eigenvalues: list[sp.Expr]) -> tuple:
-    """An amplitude vector for each λ: the null space of K − λM, scaled so the first
-    nonzero entry is 1; a repeated λ takes the next vector of its mode space's basis."""
+def _shapes(K: sp.Matrix, M: sp.Matrix, eigenvalues: list[sp.Expr],
+            values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
+    """An amplitude vector a for each λ, (K − λM) a = 0, scaled so its first nonzero
+    entry is 1; a repeated λ takes the next vector of a basis of its mode space.
+
+    For a simple λ with symbolic entries, adj(K − λM) has rank one and its nonzero
+    columns are a (the cofactor method). The ratios a_k/a_first = adj_kj/adj_first,j are
+    reduced modulo the characteristic polynomial p(λ), to polynomials of degree < n in
+    λ, before the root is substituted: exact algebra with no radical simplification.
+    Otherwise (numbers only, or a repeated λ) the null space of K − λM is used.
+    """
+    counts = {lam: eigenvalues.count(lam) for lam in eigenvalues}
     bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
     used: dict[sp.Expr, int] = {}
     out = []
     for lam in eigenvalues:
         if lam not in bases:
-            null = (K - lam * M).applyfunc(tidy).nullspace(simplify=True)
-            bases[lam] = [_normalize(v) for v in null]
+            vector = None
+            if counts[lam] == 1 and lam.free_symbols:
+                vector = _shape_by_adjugate(K, M, lam, values)
+            if vector is not None:
+                bases[lam] = [vector]
+            else:
+                null = (K - lam * M).applyfunc(tidy).nullspace(simplify=True)
+                bases[lam] = [_normalize(v) for v in null]
         k = used.get(lam, 0)
         used[lam] = k + 1
         out.append(bases[lam][k] if k < len(bases[lam]) else ())
     return tuple(out)
+
+
+def _shape_by_adjugate(K: sp.Matrix, M: sp.Matrix, lam: sp.Expr,
+                       values: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...] | None:
+    A = K - LAMBDA * M
+    p = sp.expand(A.det(method="berkowitz"))
+    adjugate = A.adjugate(method="berkowitz").applyfunc(sp.expand)
+    sample = {s: values.get(s, 1) for s in adjugate.free_symbols | lam.free_symbols if s != LAMBDA}
+    at_root = adjugate.xreplace({LAMBDA: lam}).xreplace(sample).evalf()
+    sizes = [sum(abs(x) for x in at_root[:, j]) for j in range(A.cols)]
+    j = max(range(A.cols), key=lambda c: sizes[c])
+    if sizes[j] == 0:
+        return None
+    first = next(i for i in range(A.rows) if abs(at_root[i, j]) > 1e-9 * sizes[j])
+    try:
+        inverse = sp.invert(adjugate[first, j], p, LAMBDA)
+    except sp.polys.polyerrors.NotInvertible:
+        return None
+    ratios = [sp.rem(sp.expand(adjugate[k, j] * inverse), p, LAMBDA) for k in range(A.rows)]
+    return tuple(sp.factor_terms(sp.together(sp.expand(r.xreplace({LAMBDA: lam})))) for r in ratios)
 
 
 def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
