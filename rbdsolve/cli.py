@@ -45,12 +45,12 @@ def main() -> None:
 
 
 def expand_paths(paths: tuple[str, ...]) -> list[Path]:
-    """Files as given; a folder gives its *.yaml files in name order."""
+    """Files as given; a folder gives the *.yaml files below it, in path order."""
     out: list[Path] = []
     for raw in paths:
         path = Path(raw)
         if path.is_dir():
-            found = sorted(p for p in path.iterdir() if _is_problem(p))
+            found = sorted(p for p in path.rglob("*") if p.is_file() and _is_problem(p))
             if not found:
                 raise InputError(f"{raw}: no problem files (*.yaml) in this folder")
             out += found

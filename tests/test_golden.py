@@ -55,7 +55,10 @@ def compare(got, want, where: str) -> None:
         assert isinstance(got, list) and len(got) == len(want), f"{where}: {got} != {want}"
         for i, (g, w) in enumerate(zip(got, want)):
             compare(g, w, f"{where}[{i}]")
-    elif isinstance(want, bool) or want in ("stable", "unstable", "neutral", "undetermined"):
+    elif want is None:
+        assert got is None, f"{where}: {got} != None"
+    elif isinstance(want, bool) or want in ("stable", "unstable", "neutral", "undetermined",
+                                            "oscillation", "growth"):
         assert got == want, f"{where}: {got} != {want}"
     else:
         assert same(str(got), str(want)), f"{where}: {got} != {want}"

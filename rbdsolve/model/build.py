@@ -15,7 +15,7 @@ import sympy as sp
 
 from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import explicit_inertia, shape_inertia
-from rbdsolve.model.state import State
+from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, CoordinateKind, Problem, Spring
 
@@ -87,6 +87,12 @@ class Model:
     def to_time(self, expr):
         return self.state.to_time(expr)
 
+    def depends_on_time(self) -> bool:
+        """Does the scene move by itself (t in a position, an angle or a spring)?"""
+        parts = [*self.points.values(), *(b.position for b in self.bodies), *(b.rotation for b in self.bodies),
+                 *(s.stretch for s in self.springs)]
+        return any(sp.sympify(p).has(t) for p in parts)
+
     def readable(self, expr):
         """Coordinates as plain named symbols, for messages: 2*c*theta + …"""
         return expr.xreplace({q: sp.Symbol(n) for q, n in zip(self.q, self.coordinate_names())})
@@ -117,31 +123,50 @@ def build_model(problem: Problem) -> Model:
     return Model(problem, names, angles, points, bodies, springs, gravity, values)
 
 
+def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
+    """A physical constant with the sign it needs, as far as the parameters' signs tell."""
+    wrong = value.is_negative if zero_ok else value.is_nonpositive
+    if wrong:
+        need = "negative" if zero_ok else "zero or negative"
+        raise InputError(f"{what} must not be {need}, found {expr.text}", expr.loc)
+    return value
+
+
 def _body(body: Body, names: Symbols) -> RigidBody:
-    mass = names.scalar(body.mass)
-    if mass.is_nonpositive:
-        raise InputError(f"a mass must be positive, found {body.mass.text}", body.mass.loc)
+    mass = _require(names.scalar(body.mass), body.mass, "a mass")
     if body.inertia is not None:
-        inertia = explicit_inertia([names.scalar(e) for e in body.inertia.entries])
+        inertia = _explicit(body, names)
     else:
-        dims = {k: names.scalar(v) for k, v in body.dimensions}
-        for key, value in dims.items():
-            if value.is_nonpositive:
-                expr = body.dimension(key)
-                raise InputError(f"a {key} must be positive, found {expr.text}", expr.loc)
+        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in body.dimensions}
         inertia = shape_inertia(body.shape, mass, dims, body.axis)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     return RigidBody(body.name, mass, names.vector(body.at), rotation, angle, inertia, body)
 
 
+def _explicit(body: Body, names: Symbols) -> sp.Matrix:
+    entries = body.inertia.entries
+    values = [names.scalar(e) for e in entries]
+    diagonal = values if len(values) < 9 else [values[0], values[4], values[8]]
+    where = entries if len(values) < 9 else [entries[0], entries[4], entries[8]]
+    for value, expr in zip(diagonal, where):
+        _require(value, expr, "a moment of inertia", zero_ok=True)
+    inertia = explicit_inertia(values)
+    if sp.expand(inertia - inertia.T) != sp.zeros(3, 3):
+        raise InputError("an inertia matrix must be symmetric (J_xy = J_yx, …)", body.inertia.loc)
+    return inertia
+
+
 def _spring(spring: Spring, names: Symbols) -> SpringModel:
-    k = names.scalar(spring.stiffness)
+    k = _require(names.scalar(spring.stiffness), spring.stiffness, "a stiffness", zero_ok=True)
     if spring.ends is not None:
         a, b = (names.vector(e) for e in spring.ends)
         d = a - b
         length = sp.sqrt(d.dot(d))
-        rest = names.scalar(spring.natural_length) if spring.natural_length else sp.Integer(0)
+        rest = sp.Integer(0)
+        if spring.natural_length:
+            rest = _require(names.scalar(spring.natural_length), spring.natural_length,
+                            "a natural length", zero_ok=True)
         stretch = length - rest
     else:
         rest = names.scalar(spring.rest) if spring.rest else sp.Integer(0)

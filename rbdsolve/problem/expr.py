@@ -151,9 +151,17 @@ class Scope:
     scalars: frozenset[str] = frozenset()
     vectors: frozenset[str] = frozenset()
     functions_of_time: frozenset[str] = frozenset()  # names dot()/ddot() accept
+    refused: tuple[tuple[str, str], ...] = ()  # declared names not allowed here, and why
 
     def all_names(self) -> set[str]:
         return set(self.scalars) | set(self.vectors)
+
+    def constants(self, why: str) -> Scope:
+        """Only parameters (scalars other than coordinates and t): for masses, lengths,
+        stiffnesses, values. Coordinates, t and points are refused with ``why``."""
+        varying = (self.scalars & self.functions_of_time) | {"t"} | self.vectors
+        return Scope(self.scalars - varying, frozenset(), frozenset(),
+                     tuple((n, why) for n in sorted(varying & (self.all_names() | {"t"}))))
 
 
 def parse(text: str, loc: Location, scope: Scope, plain: bool = True) -> Expr:
@@ -234,6 +242,9 @@ class _Checker:
             return Name(name), Kind.SCALAR
         if name in self.scope.vectors:
             return Name(name), Kind.VECTOR
+        for refused, why in self.scope.refused:
+            if name == refused:
+                raise self.fail(node, f"'{name}' cannot appear here: {why}")
         if name.startswith("__"):
             raise self.fail(node, f"the name '{name}' is not allowed")
         if name in SCALAR_FUNCTIONS or name in DERIVATIVE_FUNCTIONS or name in VECTOR_FUNCTIONS:
@@ -323,6 +334,8 @@ class _Checker:
         if len(node.args) != 1 or not isinstance(node.args[0], ast.Name):
             raise self.fail(node, f"{func}() takes the name of a coordinate, as in {func}(x)")
         name = node.args[0].id
+        if not self.scope.functions_of_time:
+            raise self.fail(node, f"rates such as {func}({name}) are not allowed here")
         if name not in self.scope.functions_of_time:
             known = sorted(self.scope.functions_of_time)
             hint = did_you_mean(name, known)
@@ -386,6 +399,14 @@ def _describe(node: ast.AST) -> str:
     if kind == "Constant":
         return f"the literal {ast.unparse(node)[:30]}"
     return names.get(kind, f"'{kind}'")
+
+
+def is_number_text(text: str) -> bool:
+    try:
+        Fraction(text.strip())
+    except (ValueError, ZeroDivisionError):
+        return False
+    return True
 
 
 def parse_number(text: str, loc: Location, plain: bool = True) -> Fraction:

@@ -29,7 +29,8 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "coordinates", "points",
             "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
-RESERVED = {"t", "pi", "e", "E", "I", "oo", "inf", "nan"} | set(ex.SCALAR_FUNCTIONS) | set(
+# t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
+RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
     ex.DERIVATIVE_FUNCTIONS
 ) | ex.VECTOR_FUNCTIONS
 
@@ -86,8 +87,11 @@ def _check_keys(node: Map, required: tuple[str, ...], optional: tuple[str, ...],
 
 def _identifier(key: Scalar, what: str) -> str:
     name = key.text
-    if not name.isidentifier() or keyword.iskeyword(name):
-        raise InputError(f"'{name}' is not a valid {what} name (letters, digits, _)", key.loc)
+    if keyword.iskeyword(name):
+        raise InputError(f"'{name}' is a Python keyword and cannot be a name; try '{name}_'", key.loc)
+    if not (name.isascii() and name.isidentifier()):
+        raise InputError(f"'{name}' is not a valid {what} name (ASCII letters, digits and _, "
+                         "not starting with a digit; Greek letters are spelled: theta)", key.loc)
     if name.startswith("__"):
         raise InputError("names starting with '__' are not allowed", key.loc)
     if name in RESERVED:
@@ -117,19 +121,25 @@ class _Loader:
     def __init__(self, file: str):
         self.file = file
         self.scope = ex.Scope()
+        self.positions = ex.Scope()
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
 
-    def expr(self, node: Node, kind: ex.Kind, what: str) -> ex.Expr:
+    def constant(self, node: Node, what: str) -> ex.Expr:
+        """A scalar that must not change with the motion: parameters and numbers only."""
+        scope = self.scope.constants(f"{what} must be constant (parameters and numbers only)")
+        return self.expr(node, ex.Kind.SCALAR, what, scope)
+
+    def expr(self, node: Node, kind: ex.Kind, what: str, scope: ex.Scope | None = None) -> ex.Expr:
         if isinstance(node, Seq):  # a YAML list of components is a vector literal
             if kind != ex.Kind.VECTOR:
                 raise InputError(f"expected {what}, found a list", node.loc)
-            return self._vector_from_list(node, what)
+            return self._vector_from_list(node, what, scope)
         scalar = _scalar(node, what)
         if kind == ex.Kind.VECTOR:
             self._check_point_name(scalar)
-        parsed = ex.parse(scalar.text, scalar.loc, self.scope, scalar.plain)
+        parsed = ex.parse(scalar.text, scalar.loc, scope or self.positions, scalar.plain)
         if parsed.kind != kind:
             raise InputError(f"expected {what}, found a {parsed.kind.value} '{parsed.text}'", scalar.loc)
         return parsed
@@ -140,10 +150,11 @@ class _Loader:
             hint = did_you_mean(name, sorted(self.scope.vectors))
             raise InputError(f"unknown point '{name}'{hint}", node.loc)
 
-    def _vector_from_list(self, node: Seq, what: str) -> ex.Expr:
+    def _vector_from_list(self, node: Seq, what: str, scope: ex.Scope | None) -> ex.Expr:
         if len(node.items) not in (2, 3):
             raise InputError(f"a vector has 2 or 3 components, found {len(node.items)}", node.loc)
-        parts = [self.expr(item, ex.Kind.SCALAR, "a number or scalar expression") for item in node.items]
+        parts = [self.expr(item, ex.Kind.SCALAR, "a number or scalar expression", scope)
+                 for item in node.items]
         text = "[" + ", ".join(p.text for p in parts) + "]"
         return ex.Expr(ex.Vec(tuple(p.tree for p in parts)), ex.Kind.VECTOR, text, node.loc)
 
@@ -161,10 +172,13 @@ class _Loader:
         get = root.get
         parameters = self.parameters(get("parameters"))
         coordinates = self.coordinates(get("coordinates"))
+        # Positions and angles may use coordinates and time t; rates (dot, ddot) are for
+        # questions that need velocities, and none does yet.
         self.scope = ex.Scope(
             scalars=frozenset({p.name for p in parameters} | {c.name for c in coordinates} | {"t"}),
             functions_of_time=frozenset(c.name for c in coordinates),
         )
+        self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
         points = self.points(get("points"))
         return Problem(
             file=self.file,
@@ -176,7 +190,7 @@ class _Loader:
             points=points,
             bodies=self.bodies(get("bodies")),
             springs=self.springs(get("springs")),
-            gravity=self.optional_expr(get("gravity"), ex.Kind.VECTOR, "a gravity vector such as [0, -g]"),
+            gravity=self.gravity(get("gravity")),
             values=self.values(get("values"), parameters),
             questions=self.questions(get("questions"), coordinates),
         )
@@ -189,7 +203,18 @@ class _Loader:
     def optional_expr(self, node: Node | None, kind: ex.Kind, what: str) -> ex.Expr | None:
         if node is None or (isinstance(node, Scalar) and node.null):
             return None
-        return self.expr(node, kind, what)
+        return self.expr(node, kind, what, self.positions)
+
+    def optional_constant(self, node: Node | None, what: str) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        return self.constant(node, what)
+
+    def gravity(self, node: Node | None) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        scope = self.scope.constants("gravity must be constant (parameters and numbers only)")
+        return self.expr(node, ex.Kind.VECTOR, "a gravity vector such as [0, -g]", scope)
 
     def parameters(self, node: Node | None) -> tuple[Parameter, ...]:
         if node is None:
@@ -200,6 +225,9 @@ class _Loader:
             description, positive = "", True
             if isinstance(options, Scalar):
                 description = options.text
+                if ex.is_number_text(description):
+                    raise InputError(f"a parameter's description is text; to give {name} a value "
+                                     f"write 'values: {{{name}: {description}}}'", options.loc)
             elif options is not None:
                 opts = _mapping(options, "parameter options")
                 _check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
@@ -235,8 +263,10 @@ class _Loader:
         table = _mapping(node, "points: name -> position vector")
         names = [self.declare(key, "point") for key, _ in table.entries]
         self.scope = ex.Scope(self.scope.scalars, frozenset(names), self.scope.functions_of_time)
+        self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
         parsed = {
-            key.text: self.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' (a vector)")
+            key.text: self.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' (a vector)",
+                                self.positions)
             for key, value in table.entries
         }
         return tuple(Point(name, parsed[name]) for name in _dependency_order(parsed))
@@ -252,16 +282,20 @@ class _Loader:
         what = f"body '{name}'"
         shape = self.shape(spec, what)
         dims = shape.dimensions if shape else ()
+        _check_dimensions(spec, shape, what)
         _check_keys(spec, ("mass", "at", *dims), ("shape", "angle", "axis", "inertia"), what)
-        mass = self.expr(spec.get("mass"), ex.Kind.SCALAR, "a mass (a scalar expression)")
+        mass = self.constant(spec.get("mass"), "a mass")
         _refuse_negative(mass, "mass")
         dimensions = []
         for dim in dims:
-            value = self.expr(spec.get(dim), ex.Kind.SCALAR, f"a {dim} (a scalar expression)")
+            value = self.constant(spec.get(dim), f"a {dim}")
             _refuse_negative(value, dim)
             dimensions.append((dim, value))
         axis_node = spec.get("axis")
         axis = "x" if shape is Shape.ROD else "z"
+        if axis_node is not None and shape is None:
+            raise InputError("'axis' orients a shape; an explicit inertia is already in body axes",
+                             axis_node.loc)
         if axis_node is not None:
             axis = _scalar(axis_node, "an axis: x, y or z").text
             if axis not in ("x", "y", "z"):
@@ -271,7 +305,7 @@ class _Loader:
             shape=shape,
             mass=mass,
             dimensions=tuple(dimensions),
-            at=self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector"),
+            at=self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector", self.positions),
             angle=self.optional_expr(spec.get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"),
             axis=axis,
             inertia=self.inertia(spec.get("inertia")),
@@ -300,15 +334,15 @@ class _Loader:
         if node is None:
             return None
         if isinstance(node, Scalar):
-            return Inertia((self.expr(node, ex.Kind.SCALAR, "a moment of inertia"),), node.loc)
+            return Inertia((self.constant(node, "a moment of inertia"),), node.loc)
         if isinstance(node, Seq) and len(node.items) == 3 and all(isinstance(i, Seq) for i in node.items):
             rows = [row for row in node.items]
             if any(len(r.items) != 3 for r in rows):
                 raise InputError("an inertia matrix is 3x3", node.loc)
-            entries = [self.expr(x, ex.Kind.SCALAR, "a matrix entry") for r in rows for x in r.items]
+            entries = [self.constant(x, "an inertia matrix entry") for r in rows for x in r.items]
             return Inertia(tuple(entries), node.loc)
         if isinstance(node, Seq) and len(node.items) == 3:
-            return Inertia(tuple(self.expr(x, ex.Kind.SCALAR, "a principal moment") for x in node.items), node.loc)
+            return Inertia(tuple(self.constant(x, "a principal moment") for x in node.items), node.loc)
         raise InputError(
             "expected an inertia: J (planar), [J1, J2, J3] or a 3x3 matrix", node.loc
         )
@@ -326,13 +360,14 @@ class _Loader:
         between, angle = spec.get("between"), spec.get("angle")
         if (between is None) == (angle is None):
             raise InputError(f"{what} needs either 'between: [A, B]' (linear) or 'angle:' (torsional)", spec.loc)
-        stiffness = self.expr(spec.get("stiffness"), ex.Kind.SCALAR, "a stiffness")
+        stiffness = self.constant(spec.get("stiffness"), "a stiffness")
         _refuse_negative(stiffness, "stiffness")
         ends = None
         if between is not None:
             if not isinstance(between, Seq) or len(between.items) != 2:
                 raise InputError(f"expected two ends [A, B], found {_found(between)}", between.loc)
-            ends = tuple(self.expr(e, ex.Kind.VECTOR, "a point name or position vector") for e in between.items)
+            ends = tuple(self.expr(e, ex.Kind.VECTOR, "a point name or position vector", self.positions)
+                         for e in between.items)
         elif spec.get("natural_length") is not None:
             raise InputError("'natural_length' belongs to a linear spring; use 'rest' with 'angle'", spec.get("natural_length").loc)
         if between is not None and spec.get("rest") is not None:
@@ -341,9 +376,9 @@ class _Loader:
             name=name,
             stiffness=stiffness,
             ends=ends,
-            natural_length=self.optional_expr(spec.get("natural_length"), ex.Kind.SCALAR, "a length"),
+            natural_length=self.optional_constant(spec.get("natural_length"), "a natural length"),
             angle=self.optional_expr(angle, ex.Kind.SCALAR, "an angle expression"),
-            rest=self.optional_expr(spec.get("rest"), ex.Kind.SCALAR, "an angle"),
+            rest=self.optional_constant(spec.get("rest"), "a rest angle"),
             loc=spec.loc,
         )
 
@@ -366,7 +401,8 @@ class _Loader:
 
     def questions(self, node: Node, coordinates: tuple[Coordinate, ...]) -> tuple[Question, ...]:
         if not isinstance(node, Seq) or not node.items:
-            raise InputError(f"expected a list of questions, found {_found(node)}", node.loc)
+            found = "an empty list" if isinstance(node, Seq) else _found(node)
+            raise InputError(f"expected a list of questions, found {found}", node.loc)
         return tuple(self.question(item, coordinates) for item in node.items)
 
     def question(self, node: Node, coordinates: tuple[Coordinate, ...]) -> Question:
@@ -388,6 +424,8 @@ class _Loader:
         if options is not None and not (isinstance(options, Scalar) and options.null):
             opts = _mapping(options, f"options of '{kind.value}'")
             allowed = ("about",) if kind is QuestionKind.MODES else ()
+            if not allowed:
+                raise InputError(f"'{kind.value}' takes no options", options.loc)
             _check_keys(opts, (), allowed, f"question '{kind.value}'")
             if opts.get("about") is not None:
                 about = self.about(opts.get("about"), coordinates)
@@ -400,11 +438,22 @@ class _Loader:
         for key, value in table.entries:
             if key.text not in names:
                 raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
-            given[key.text] = self.expr(value, ex.Kind.SCALAR, "a coordinate value")
+            given[key.text] = self.constant(value, "a coordinate's value at the equilibrium")
         missing = [n for n in names if n not in given]
         if missing:
             raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
         return tuple((n, given[n]) for n in names)
+
+
+def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
+    """A dimension that belongs to other shapes: say which ones this shape takes."""
+    others = {d for s in Shape for d in s.dimensions}
+    mine = shape.dimensions if shape else ()
+    for key, _ in spec.entries:
+        if key.text in others and key.text not in mine:
+            takes = ", ".join(mine) if mine else "no dimensions"
+            kind = f"a {shape.value}" if shape else "a body with an explicit inertia"
+            raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
 
 
 def _refuse_negative(value: ex.Expr, what: str) -> None:

@@ -77,6 +77,7 @@ def report_object(report: ProblemReport) -> dict:
         "title": report.title,
         "source": report.source,
         "ok": report.solved,
+        "symbols": list(report.symbols),
         "parameters": report.values,
         "model": {
             "coordinates": [str(q) for q in model.coordinates],

@@ -100,6 +100,10 @@ class UnicodePrinter(StrPrinter):
         if found and found[1] <= 3:
             name, order = found
             text = unicode_name(name)
+            base = GREEK.get(split_name(name)[0], split_name(name)[0])
+            if len(base) > 1:  # no dot over a word: d(name)/dt
+                power = "" if order == 1 else str(order).translate(_SUP)
+                return f"d{power}{text}/dt{power}"
             mark = {1: "\u0307", 2: "\u0308", 3: "\u20db"}[order]
             return text[0] + mark + text[1:]  # the dot sits over the base letter
         return super()._print_Derivative(expr)

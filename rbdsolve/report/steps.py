@@ -111,6 +111,7 @@ class ProblemReport:
     model: ModelSummary
     solutions: tuple[Solution, ...]
     values: Mapping[str, object] = field(default_factory=dict)  # parameter values used
+    symbols: tuple[str, ...] = ()  # parameter names, to read answers back (docs/json.md)
 
     @property
     def solved(self) -> bool:

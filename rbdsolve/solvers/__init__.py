@@ -45,8 +45,9 @@ def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
     summary = summarize_model(model)
     solutions = tuple(solve_question(q, model, options) for q in problem.questions)
     values = {str(k): float(v) for k, v in model.values.items()}
+    symbols = tuple(p.name for p in problem.parameters)
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
-                         summary, solutions, values)
+                         summary, solutions, values, symbols)
 
 
 __all__ = ["Options", "SOLVERS", "solve_problem", "solve_question", "sp"]

@@ -79,10 +79,19 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
                         "coordinates; sympy's solve was used and may miss solutions")
     out = []
     for sol in solutions:
-        full = {q: sol.get(q, sp.Integer(0)) for q in model.q}
+        full = {q: _turn(sol.get(q, sp.Integer(0))) if q in model.angles else sol.get(q, sp.Integer(0))
+                for q in model.q}
         if full not in out:
             out.append(full)
     return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
+
+
+def _turn(angle: sp.Expr) -> sp.Expr:
+    """A numeric angle brought into (−π, π]."""
+    if not angle.is_number:
+        return angle
+    turned = angle - 2 * sp.pi * sp.ceiling((angle - sp.pi) / (2 * sp.pi))
+    return sp.nsimplify(turned) if turned.is_rational else turned
 
 
 def _order(value: sp.Expr) -> tuple:
@@ -241,7 +250,16 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
     return Undecided(value)
 
 
+def require_static(model: Model, what: str) -> None:
+    """Equilibria and small oscillations of a scene that moves by itself (t appears in
+    it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
+    if model.depends_on_time():
+        raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
+                            "do not apply (accelerated and rotating frames are not supported yet)")
+
+
 def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_static(model, "the equilibria")
     grad = gradient(model)
     solutions, warnings = find_equilibria(model)
     if not solutions:
@@ -255,8 +273,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
             *[Relation(sp.Derivative(sp.Symbol("V"), q), model.to_time(g))
               for q, g in zip(model.state.functions(), grad)],
         ),
-        st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'} "
-                  "(angles in (−π, π]):"),
+        st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'}"
+                  + (" (angles in (−π, π])" if model.angles else "") + ":"),
     ]
     coordinates = model.state.functions()
     for number, eq in enumerate(equilibria, start=1):

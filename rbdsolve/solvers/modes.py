@@ -40,6 +40,7 @@ from rbdsolve.solvers.equilibria import (
     find_equilibria,
     gradient,
     matrix_inertia,
+    require_static,
     sign_of,
 )
 
@@ -76,6 +77,7 @@ def _descending(poly: sp.Poly) -> Terms:
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_static(model, "small oscillations")
     at, chosen = _equilibrium(question, model)
     M = sp.ImmutableMatrix(mass_matrix(model, at))
     K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))

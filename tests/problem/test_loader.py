@@ -64,7 +64,7 @@ CASES = [
     ("mass: m, ", "", 8, 8, "bodies.bob", "missing required key 'mass'"),
     ("mass: m,", "mass: m, colour: red,", 8, 35, "bodies.bob.colour", "unknown key 'colour'"),
     ("mass: m,", "mass: -2,", 8, 32, "bodies.bob.mass", "must not be negative"),
-    ("mass: m,", "mass: [1, 2],", 8, 32, "bodies.bob.mass", "expected a mass (a scalar expression), found a list"),
+    ("mass: m,", "mass: [1, 2],", 8, 32, "bodies.bob.mass", "expected a mass, found a list"),
     ("gravity: [0, -g]", "gravity: [0, -g, 1, 2]", 4, 10, "gravity", "2 or 3 components"),
     ("gravity: [0, -g]", "gravty: [0, -g]", 4, 1, "gravty", "unknown key 'gravty' in the problem (did you mean 'gravity'?)"),
     ("gravity: [0, -g]", "gravity: -g", 4, 10, "gravity", "expected a gravity vector"),
@@ -79,6 +79,20 @@ CASES = [
     ("title: Pendulum", "title: Pendulum\nvalues: {m: heavy}", 2, 13, "values.m", "unknown symbol 'heavy'"),
     ("title: Pendulum", "title: Pendulum\nvalues: {M: 1}", 2, 10, "values.M", "'M' is not a parameter (did you mean 'm'?)"),
     ("title: Pendulum", "title: Pendulum\nvalues: {m: -1}", 2, 13, "values.m", "declared positive"),
+    # constants stay constant; rates are not allowed in a scene
+    ("mass: m,", "mass: dot(theta),", 8, 32, "bodies.bob.mass", "rates such as dot(theta) are not allowed here"),
+    ("mass: m,", "mass: m*t,", 8, 34, "bodies.bob.mass", "'t' cannot appear here: a mass must be constant"),
+    ("mass: m,", "mass: m*theta,", 8, 34, "bodies.bob.mass", "'theta' cannot appear here"),
+    ("gravity: [0, -g]", "gravity: [0, -g*theta]", 4, 17, "gravity[1]", "'theta' cannot appear here: gravity must be constant"),
+    ("  P: l * [sin(theta), -cos(theta)]", "  P: l * [dot(theta), 0]", 6, 11, "points.P", "rates such as dot(theta)"),
+    ("{about: {theta: 0}}", "{about: {theta: t}}", 10, 28, "questions[0].modes.about.theta", "'t' cannot appear here"),
+    # names and messages
+    ("parameters: {m: mass,", "parameters: {lambda: mass, m: mass,", 2, 14, "parameters.lambda", "Python keyword"),
+    ("parameters: {m: mass,", "parameters: {ℓ: mass, m: mass,", 2, 14, "parameters.ℓ", "Greek letters are spelled"),
+    ("{m: mass, l: length,", "{m: 3, l: length,", 2, 17, "parameters.m", "write 'values: {m: 3}'"),
+    ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 10, "questions[0].eom", "'eom' takes no options"),
+    ("questions:\n  - modes: {about: {theta: 0}}", "questions: []", 9, 12, "questions", "found an empty list"),
+    ("shape: particle, ", "shape: rod, length: l, radius: l, ", 8, 32, "bodies.bob.radius", "a rod takes length, not 'radius'"),
 ]
 
 

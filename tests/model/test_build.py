@@ -1,0 +1,81 @@
+"""The model stage: signs of physical constants, explicit inertia, time dependence."""
+
+from __future__ import annotations
+
+import pytest
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+BASE = """
+parameters: {m: mass, l: length, k: stiffness, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions: [eom, equilibria, modes]
+"""
+
+
+def model_error(extra: str) -> InputError:
+    with pytest.raises(InputError) as info:
+        build_model(load_text(BASE + extra, "scene.yaml"))
+    return info.value
+
+
+@pytest.mark.parametrize(
+    "extra, path, words",
+    [
+        ("springs:\n  s: {stiffness: -k, angle: theta}\n", "springs.s.stiffness", "a stiffness must not be negative"),
+        ("springs:\n  s: {stiffness: k, between: [P, [0, 0]], natural_length: -l}\n",
+         "springs.s.natural_length", "a natural length must not be negative"),
+    ],
+)
+def test_signs_of_physical_constants(extra: str, path: str, words: str) -> None:
+    err = model_error(extra)
+    assert words in err.message
+    assert err.location.key_path() == path
+
+
+def test_a_symbolic_negative_dimension_is_refused() -> None:
+    scene = BASE.replace("bob: {shape: particle, mass: m, at: P}",
+                         "bob: {shape: disk, mass: m, radius: -l, at: P, angle: theta}")
+    with pytest.raises(InputError) as info:
+        build_model(load_text(scene, "s.yaml"))
+    assert "a radius must not be zero or negative, found -l" in info.value.message
+    assert info.value.location.key_path() == "bodies.bob.radius"
+
+
+def test_explicit_inertia_must_be_symmetric_and_not_negative() -> None:
+    scene = BASE.replace("bob: {shape: particle, mass: m, at: P}",
+                         "bob: {inertia: [[1, 5, 0], [0, 1, 0], [0, 0, 1]], mass: m, at: P, angle: theta}")
+    with pytest.raises(InputError, match="symmetric"):
+        build_model(load_text(scene, "s.yaml"))
+    scene = BASE.replace("bob: {shape: particle, mass: m, at: P}",
+                         "bob: {inertia: -2*m*l**2, mass: m, at: P, angle: theta}")
+    with pytest.raises(InputError, match="moment of inertia must not be negative"):
+        build_model(load_text(scene, "s.yaml"))
+
+
+def test_a_scene_that_moves_by_itself_has_no_equilibria() -> None:
+    # A pendulum whose pivot oscillates: eom is fine, ∂V/∂q = 0 would be wrong.
+    scene = BASE.replace("  P: l * [sin(theta), -cos(theta)]",
+                         "  O: [l*cos(3*t), 0]\n  P: O + l * [sin(theta), -cos(theta)]")
+    report = solve_problem(build_model(load_text(scene, "s.yaml")))
+    eom, equilibria, modes = report.solutions
+    assert eom.solved
+    for result in (equilibria, modes):
+        assert not result.solved and "depends explicitly on time" in result.error
+
+
+def test_angles_are_reported_in_one_turn() -> None:
+    # θ enters as θ/2, declared an angle: sympy's solve gives θ = 2π, shown as 0.
+    scene = BASE.replace("coordinates: [theta]", "coordinates: {theta: angle}").replace(
+        "l * [sin(theta), -cos(theta)]", "l * [sin(theta/2), -cos(theta/2)]")
+    report = solve_problem(build_model(load_text(scene, "s.yaml")))
+    values = [eq.at["theta"] for eq in report.solutions[1].answers.equilibria]
+    assert all(v.is_number and -3.1416 < float(v) <= 3.1416 for v in values)
