@@ -55,15 +55,17 @@ def tidy_matrix(matrix: sp.Matrix) -> sp.Matrix:
     return matrix.applyfunc(tidy)
 
 
-def collect_in(expr: sp.Expr, generators: list[sp.Symbol]) -> dict[sp.Expr, sp.Expr]:
+def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False) -> dict[sp.Expr, sp.Expr]:
     """Split ``expr`` into monomials in the symbols ``generators`` (q̇, q̈), each with its
-    coefficient tidied. Returns {monomial: coefficient}; monomial 1 holds the rest."""
+    coefficient tidied (skipped when ``expr`` was built from tidied coefficients already).
+    Returns {monomial: coefficient}; monomial 1 holds the rest."""
+    finish = (lambda c: sp.factor_terms(c)) if tidied else tidy
     if not generators:
-        return {sp.Integer(1): tidy(expr)}
+        return {sp.Integer(1): finish(expr)}
     poly = sp.Poly(sp.expand(expr), *generators)
     out: dict[sp.Expr, sp.Expr] = {}
     for powers, coeff in poly.terms():
-        value = tidy(coeff)
+        value = finish(coeff)
         if value != 0:
             out[sp.Mul(*[g**p for g, p in zip(generators, powers)])] = value
     return out

@@ -15,10 +15,11 @@ from rbdsolve.solvers.common import ordered_sum, scaled_sum, subscript
 
 
 def present(expr: sp.Expr, model: Model) -> Math:
-    """An energy or an equation's left side (in the model's plain symbols), ordered, with
-    its scale pulled out, as functions of time for display."""
+    """An energy or an equation's left side (in the model's plain symbols, its
+    coefficients tidied already), ordered, with its scale pulled out, as functions of
+    time for display."""
     generators = [*model.qdd, *model.qd]
-    parts = collect_in(expr, generators)
+    parts = collect_in(expr, generators, tidied=True)
     terms = [(model.to_time(c), tuple(model.to_time(f) for f in factors))
              for c, factors in ordered_sum(parts, generators, list(model.q))]
     return scaled_sum(terms, set(model.symbols.parameters.values()))

@@ -59,7 +59,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 
 def _present(E: sp.Expr, model: Model):
     """Inertia terms (with q̈ or q̇) and the rest, each with its own scale pulled out."""
-    parts = collect_in(E, [*model.qdd, *model.qd])
+    parts = collect_in(E, [*model.qdd, *model.qd], tidied=True)
     moving = sp.Add(*[c * m for m, c in parts.items() if m != 1])
     still = parts.get(sp.Integer(1), sp.Integer(0))
     groups = [present(g, model) for g in (moving, still) if g != 0]

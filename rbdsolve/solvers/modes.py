@@ -81,32 +81,45 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     at, chosen = _equilibrium(question, model)
     M = sp.ImmutableMatrix(mass_matrix(model, at))
     K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
-    symbols = set(model.symbols.parameters.values())
     if M.det() == 0:
         raise UnsolvedError("the mass matrix is singular at this configuration: "
                             "a coordinate carries no inertia")
-    s_M, s_K = common_scale(list(M), symbols), common_scale(list(K), symbols)
-    scale = s_K / s_M
-    M_hat, K_hat = M / s_M, K / s_K
-    if _rational(M_hat) and _rational(K_hat):
-        poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
-        mu_roots = _roots(poly, MU)
-        eigenvalues = [tidy(scale * mu) for mu in mu_roots]
-        char_steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"),
-                      Relation(MU, tidy(LAMBDA / scale)))
-    else:
-        poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
-        eigenvalues = [sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA)]
-        char_steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"))
-    eigenvalues = _ascending(eigenvalues, model)
+    spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
+    eigenvalues = [lam for lam, _ in spectrum.pairs]
     motions = _motions(eigenvalues, K, model)
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
                         for lam, mo in zip(eigenvalues, motions))
-    shapes = _shapes(K, M, eigenvalues, model.values)
+    shapes = _shapes(spectrum.K, spectrum.M, [root for _, root in spectrum.pairs], model.values)
     characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
     answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
-    steps = _steps(answers, model, char_steps)
-    return Solution("modes", Route.EXACT, answers, steps)
+    return Solution("modes", Route.EXACT, answers, _steps(answers, model, spectrum.steps))
+
+
+@dataclass(frozen=True)
+class _Spectrum:
+    """The eigenvalues λ, ascending, each with the root of the eigenproblem actually
+    solved: (K̂ − μ M̂) a = 0 in the scaled form, or (K − λM) a = 0 itself."""
+
+    K: sp.Matrix
+    M: sp.Matrix
+    pairs: list[tuple[sp.Expr, sp.Expr]]  # (λ, root of det(K − root M) = 0)
+    steps: tuple[Relation, ...]
+
+
+def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectrum:
+    s_M, s_K = common_scale(list(M), symbols), common_scale(list(K), symbols)
+    scale = s_K / s_M  # λ = scale · μ
+    M_hat, K_hat = M / s_M, K / s_K
+    if _rational(M_hat) and _rational(K_hat):
+        poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
+        pairs = [(tidy(scale * mu), mu) for mu in _roots(poly, MU)]
+        steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"),
+                 Relation(MU, tidy(LAMBDA / scale)))
+        return _Spectrum(K_hat, M_hat, _ascending(pairs, model), steps)
+    poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
+    pairs = [(lam, lam) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
+    steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"))
+    return _Spectrum(K, M, _ascending(pairs, model), steps)
 
 
 def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
@@ -148,15 +161,18 @@ def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
                         "characteristic polynomial")
 
 
-def _ascending(values: list[sp.Expr], model: Model) -> list[sp.Expr]:
-    def key(v: sp.Expr):
-        number = v.xreplace({s: 1 for s in v.free_symbols}) if v.free_symbols else v
-        try:
-            return (0, float(sp.N(number)), sp.default_sort_key(v))
-        except TypeError:
-            return (1, 0.0, sp.default_sort_key(v))
+def _ascending(pairs: list[tuple[sp.Expr, sp.Expr]], model: Model) -> list:
+    """Sorted by λ: at the given parameter values, or with every parameter 1."""
 
-    return sorted(values, key=key)
+    def key(pair):
+        lam = pair[0]
+        sample = {s: model.values.get(s, 1) for s in lam.free_symbols}
+        try:
+            return (0, float(sp.N(lam.xreplace(sample))), sp.default_sort_key(lam))
+        except TypeError:
+            return (1, 0.0, sp.default_sort_key(lam))
+
+    return sorted(pairs, key=key)
 
 
 def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Motion, ...]:
