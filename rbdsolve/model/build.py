@@ -14,7 +14,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError
-from rbdsolve.model.inertia import explicit_inertia, shape_inertia
+from rbdsolve.model.inertia import OWN_AXIS, body_properties, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, CoordinateKind, Problem, Spring
@@ -133,15 +133,27 @@ def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
 
 
 def _body(body: Body, names: Symbols) -> RigidBody:
+    """The body's centre of mass is its origin (``at``) plus the shape's centre offset,
+    turned with the body: r_G = r_at + R c."""
     mass = _require(names.scalar(body.mass), body.mass, "a mass")
-    if body.inertia is not None:
-        inertia = _explicit(body, names)
-    else:
-        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in body.dimensions}
-        inertia = shape_inertia(body.shape, mass, dims, body.axis)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
-    return RigidBody(body.name, mass, names.vector(body.at), rotation, angle, inertia, body)
+    if body.inertia is not None:
+        inertia, centre = _explicit(body, names), sp.zeros(3, 1)
+    else:
+        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in body.dimensions}
+        _check_tube(body, dims)
+        axis = names.vector(body.axis) if body.axis is not None else OWN_AXIS.get(body.shape, sp.Matrix([0, 0, 1]))
+        props = body_properties(body.shape, mass, dims, axis)
+        inertia, centre = props.inertia, props.centre
+    position = names.vector(body.at) + rotation * centre
+    return RigidBody(body.name, mass, position, rotation, angle, inertia, body)
+
+
+def _check_tube(body: Body, dims: dict[str, sp.Expr]) -> None:
+    if "inner_radius" in dims and (dims["outer_radius"] - dims["inner_radius"]).is_negative:
+        expr = body.dimension("inner_radius")
+        raise InputError("a tube's inner_radius must not exceed its outer_radius", expr.loc)
 
 
 def _explicit(body: Body, names: Symbols) -> sp.Matrix:

@@ -1,55 +1,139 @@
-"""The shape library: inertia tensors about the centre of mass, in the shape's own axes.
+"""The shape library: mass distribution of each shape, in the shape's own axes.
 
-Table formulas (any dynamics text, e.g. Meriam & Kraige, Appendix B). Each shape has a
-symmetry axis ("its axis"): a rod lies along its axis; a ring and a disk have their axis
-normal to their plane; a plate of ``width`` (along x) and ``height`` (along y) has its
-normal along z. ``axis:`` in a problem file says which body axis the shape's axis
-points along; the tensor is permuted accordingly.
+For each shape: its **origin** (the point a problem file places with ``at:``), the
+**centre of mass** relative to that origin, and the **inertia tensor about the centre of
+mass**. Table formulas, e.g. Meriam & Kraige, *Engineering Mechanics: Dynamics*,
+Appendix B; each is checked in tests/model/test_shape_library.py against numeric
+integration of the shape's density.
 
-Products of inertia follow the convention J_xy = -∫ x y dm (the tensor's off-diagonal
-entries), as in the SG2150 course.
+Own axes: an axisymmetric shape has its axis along its own z (a rod along its own x);
+a plate lies in its own xy-plane (``width`` along x, ``height`` along y); a box has
+``width``, ``depth``, ``height`` along x, y, z; a triangle lies in its xy-plane with
+vertices (0, 0), (base, 0), (apex, height).
+
+Products of inertia follow the tensor convention J_xy = −∫ x y dm, as in SG2150.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import sympy as sp
 
 from rbdsolve.problem.schema import Shape
 
-# The shape's own axis is its local z for a ring, disk or plate, and its local x for a
-# rod. Rotating that axis to a body axis is a cyclic permutation of the coordinates.
-_OWN_AXIS = {Shape.ROD: "x"}
-_ORDER = "xyz"
+# The shape's own symmetry axis ("its axis"): what ``axis:`` in a problem file points.
+OWN_AXIS = {Shape.ROD: sp.Matrix([1, 0, 0])}
+_Z = sp.Matrix([0, 0, 1])
 
 
-def shape_inertia(shape: Shape, mass: sp.Expr, dims: dict[str, sp.Expr], axis: str) -> sp.Matrix:
-    """J_G of ``shape`` in body axes, with the shape's axis along body ``axis``."""
-    own = _moments(shape, mass, dims)
-    shift = (_ORDER.index(axis) - _ORDER.index(_OWN_AXIS.get(shape, "z"))) % 3
-    # Local axis i ends up on body axis (i + shift) mod 3.
-    moments = [sp.Integer(0)] * 3
-    for i, value in enumerate(own):
-        moments[(i + shift) % 3] = value
-    return sp.diag(*moments)
+@dataclass(frozen=True)
+class MassProperties:
+    """Mass, centre of mass (from the shape's origin) and J about the centre of mass."""
+
+    mass: sp.Expr
+    centre: sp.Matrix
+    inertia: sp.Matrix
 
 
-def _moments(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+def own_properties(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr]) -> MassProperties:
+    """The shape's mass properties in its own axes."""
+    centre = sp.zeros(3, 1)
+    if shape is Shape.HEMISPHERE:
+        centre = sp.Matrix([0, 0, 3 * dims["radius"] / 8])
+    elif shape is Shape.CONE:
+        centre = sp.Matrix([0, 0, dims["height"] / 4])
+    elif shape is Shape.TRIANGLE:
+        centre = sp.Matrix([(dims["base"] + dims["apex"]) / 3, dims["height"] / 3, 0])
+    if shape is Shape.TRIANGLE:
+        return MassProperties(m, centre, _triangle(m, dims))
+    return MassProperties(m, centre, sp.diag(*_moments(shape, m, dims)))
+
+
+def _moments(shape: Shape, m: sp.Expr, d: dict[str, sp.Expr]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """Principal moments (J_x, J_y, J_z) about the centre of mass, in the shape's axes."""
+    r, h = d.get("radius"), d.get("height")
     if shape is Shape.PARTICLE:
         return (sp.Integer(0),) * 3
-    if shape is Shape.ROD:  # slender rod along x: J = m L²/12 about any normal axis
-        L = dims["length"]
+    if shape is Shape.ROD:  # slender, along x
+        L = d["length"]
         return sp.Integer(0), m * L**2 / 12, m * L**2 / 12
-    if shape is Shape.RING:  # thin ring in the xy-plane: J_z = m r², J_x = J_y = m r²/2
-        r = dims["radius"]
+    if shape is Shape.RING:  # thin hoop in the xy-plane
         return m * r**2 / 2, m * r**2 / 2, m * r**2
-    if shape is Shape.DISK:  # uniform disk in the xy-plane: J_z = m r²/2, J_x = J_y = m r²/4
-        r = dims["radius"]
+    if shape is Shape.DISK:  # uniform thin disk in the xy-plane
         return m * r**2 / 4, m * r**2 / 4, m * r**2 / 2
-    if shape is Shape.PLATE:  # rectangle a (x) by b (y): J_x = m b²/12, J_y = m a²/12
-        a, b = dims["width"], dims["height"]
+    if shape is Shape.CYLINDRICAL_SHELL:  # thin open shell: a stack of rings (seed problem 4)
+        return (m * r**2 / 2 + m * h**2 / 12,) * 2 + (m * r**2,)
+    if shape is Shape.CYLINDER:  # solid: a stack of disks
+        return (m * (3 * r**2 + h**2) / 12,) * 2 + (m * r**2 / 2,)
+    if shape is Shape.TUBE:  # thick-walled: cylinder of radius b minus cylinder of radius a
+        a, b = d["inner_radius"], d["outer_radius"]
+        return (m * (3 * (a**2 + b**2) + h**2) / 12,) * 2 + (m * (a**2 + b**2) / 2,)
+    if shape is Shape.SPHERICAL_SHELL:
+        return (2 * m * r**2 / 3,) * 3
+    if shape is Shape.SPHERE:
+        return (2 * m * r**2 / 5,) * 3
+    if shape is Shape.HEMISPHERE:  # about its centre of mass, 3r/8 from the flat face
+        return (83 * m * r**2 / 320,) * 2 + (2 * m * r**2 / 5,)
+    if shape is Shape.CONE:  # about its centre of mass, h/4 above the base
+        return (3 * m * r**2 / 20 + 3 * m * h**2 / 80,) * 2 + (3 * m * r**2 / 10,)
+    if shape is Shape.BOX:
+        a, b, c = d["width"], d["depth"], d["height"]
+        return m * (b**2 + c**2) / 12, m * (a**2 + c**2) / 12, m * (a**2 + b**2) / 12
+    if shape is Shape.PLATE:  # a (x) by b (y)
+        a, b = d["width"], d["height"]
         return m * b**2 / 12, m * a**2 / 12, m * (a**2 + b**2) / 12
     raise ValueError(f"no inertia formula for {shape}")  # pragma: no cover
+
+
+def _triangle(m: sp.Expr, d: dict[str, sp.Expr]) -> sp.Matrix:
+    """A triangular lamina: with vertices vᵢ measured from the centroid, its second
+    moment is S = ∫ r rᵀ dm = (m/12) Σ vᵢ vᵢᵀ, and J = tr(S) 1 − S."""
+    b, h, a = d["base"], d["height"], d["apex"]
+    centroid = sp.Matrix([(b + a) / 3, h / 3, 0])
+    vertices = [sp.Matrix([0, 0, 0]), sp.Matrix([b, 0, 0]), sp.Matrix([a, h, 0])]
+    S = sum(((v - centroid) * (v - centroid).T for v in vertices), sp.zeros(3, 3)) * m / 12
+    return (S.trace() * sp.eye(3) - S).applyfunc(sp.factor)
+
+
+def rotation_to(axis: sp.Matrix, own: sp.Matrix) -> sp.Matrix:
+    """The rotation taking the unit vector ``own`` to the direction of ``axis``
+    (Rodrigues, about own × axis; a half turn about x or y when they are opposite)."""
+    d = axis / sp.sqrt(axis.dot(axis))
+    d = d.applyfunc(sp.radsimp)
+    c = own.dot(d)
+    if c == 1:
+        return sp.eye(3)
+    if c == -1:
+        flip = sp.Matrix([0, 1, 0]) if own[2] != 0 else sp.Matrix([0, 0, 1])
+        return 2 * flip * flip.T - sp.eye(3)
+    k = own.cross(d)
+    K = sp.Matrix([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return (sp.eye(3) + K + K * K / (1 + c)).applyfunc(sp.radsimp)
+
+
+def body_properties(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr], axis: sp.Matrix) -> MassProperties:
+    """Mass properties in body axes, with the shape's own axis along ``axis``:
+    J_body = Q J_own Qᵀ and centre_body = Q centre_own."""
+    own = own_properties(shape, m, dims)
+    Q = rotation_to(axis, OWN_AXIS.get(shape, _Z))
+    return MassProperties(m, Q * own.centre, (Q * own.inertia * Q.T).applyfunc(sp.expand))
+
+
+def parallel_axis(m: sp.Expr, d: sp.Matrix) -> sp.Matrix:
+    """The shift of an inertia tensor by d (Steiner): m (|d|² 1 − d dᵀ)."""
+    return m * (d.dot(d) * sp.eye(3) - d * d.T)
+
+
+def combine(parts: list[tuple[MassProperties, sp.Matrix]]) -> MassProperties:
+    """A composite body from parts (properties, position of each centre of mass);
+    a hole is a part of negative mass. J_C = Σ [J_i + m_i (|d_i|² 1 − d_i d_iᵀ)],
+    d_i = c_i − C, about the composite's centre of mass C = Σ m_i c_i / Σ m_i."""
+    mass = sum((p.mass for p, _ in parts), sp.Integer(0))
+    centre = sum((p.mass * c for p, c in parts), sp.zeros(3, 1)) / mass
+    centre = centre.applyfunc(sp.factor)
+    J = sum((p.inertia + parallel_axis(p.mass, c - centre) for p, c in parts), sp.zeros(3, 3))
+    return MassProperties(sp.factor(mass), centre, J.applyfunc(sp.factor))
 
 
 def explicit_inertia(entries: list[sp.Expr]) -> sp.Matrix:

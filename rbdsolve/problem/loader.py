@@ -292,14 +292,10 @@ class _Loader:
             _refuse_negative(value, dim)
             dimensions.append((dim, value))
         axis_node = spec.get("axis")
-        axis = "x" if shape is Shape.ROD else "z"
         if axis_node is not None and shape is None:
             raise InputError("'axis' orients a shape; an explicit inertia is already in body axes",
                              axis_node.loc)
-        if axis_node is not None:
-            axis = _scalar(axis_node, "an axis: x, y or z").text
-            if axis not in ("x", "y", "z"):
-                raise InputError(f"expected an axis x, y or z, found '{axis}'", axis_node.loc)
+        axis = self.axis(axis_node) if axis_node is not None else None
         return Body(
             name=name,
             shape=shape,
@@ -311,6 +307,18 @@ class _Loader:
             inertia=self.inertia(spec.get("inertia")),
             loc=spec.loc,
         )
+
+    def axis(self, node: Node) -> ex.Expr:
+        """x, y, z (or -x, …) or a direction vector in body axes."""
+        if isinstance(node, Scalar) and node.text.strip() in _AXES:
+            text = node.text.strip()
+            tree = ex.Vec(tuple(ex.Num(Fraction(v)) for v in _AXES[text]))
+            return ex.Expr(tree, ex.Kind.VECTOR, text, node.loc)
+        scope = self.scope.constants("an axis must be constant (parameters and numbers only)")
+        value = self.expr(node, ex.Kind.VECTOR, "an axis: x, y, z or a direction vector", scope)
+        if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
+            raise InputError("an axis direction must not be the zero vector", value.loc)
+        return value
 
     def shape(self, spec: Map, what: str) -> Shape | None:
         node = spec.get("shape")
@@ -443,6 +451,10 @@ class _Loader:
         if missing:
             raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
         return tuple((n, given[n]) for n in names)
+
+
+_AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1),
+         "-x": (-1, 0, 0), "-y": (0, -1, 0), "-z": (0, 0, -1)}
 
 
 def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:

@@ -23,7 +23,16 @@ class Shape(Enum):
     ROD = "rod"
     RING = "ring"
     DISK = "disk"
+    CYLINDRICAL_SHELL = "cylindrical_shell"
+    CYLINDER = "cylinder"
+    TUBE = "tube"
+    SPHERICAL_SHELL = "spherical_shell"
+    SPHERE = "sphere"
+    HEMISPHERE = "hemisphere"
+    CONE = "cone"
+    BOX = "box"
     PLATE = "plate"
+    TRIANGLE = "triangle"
 
     @property
     def dimensions(self) -> tuple[str, ...]:
@@ -35,11 +44,21 @@ _DIMENSIONS = {
     Shape.ROD: ("length",),
     Shape.RING: ("radius",),
     Shape.DISK: ("radius",),
+    Shape.CYLINDRICAL_SHELL: ("radius", "height"),
+    Shape.CYLINDER: ("radius", "height"),
+    Shape.TUBE: ("inner_radius", "outer_radius", "height"),
+    Shape.SPHERICAL_SHELL: ("radius",),
+    Shape.SPHERE: ("radius",),
+    Shape.HEMISPHERE: ("radius",),
+    Shape.CONE: ("radius", "height"),
+    Shape.BOX: ("width", "depth", "height"),
     Shape.PLATE: ("width", "height"),
+    Shape.TRIANGLE: ("base", "height", "apex"),
 }
 
 SHAPE_ALIASES = {"point": Shape.PARTICLE, "hoop": Shape.RING, "slender_rod": Shape.ROD,
-                 "rectangle": Shape.PLATE}  # fmt: skip
+                 "rectangle": Shape.PLATE, "shell": Shape.CYLINDRICAL_SHELL,
+                 "ball": Shape.SPHERE, "cuboid": Shape.BOX}  # fmt: skip
 
 
 class CoordinateKind(Enum):
@@ -90,9 +109,9 @@ class Body:
     shape: Shape | None  # None when ``inertia`` is given instead
     mass: Expr
     dimensions: tuple[tuple[str, Expr], ...]
-    at: Expr  # position of the centre of mass (vector)
+    at: Expr  # position of the shape's origin (its centre, unless the shape says otherwise)
     angle: Expr | None  # planar orientation: rotation about z
-    axis: str  # body axis the shape's own axis points along: 'x', 'y' or 'z'
+    axis: Expr | None  # direction, in body axes, of the shape's own axis (None: its default)
     inertia: Inertia | None
     loc: Location
 
