@@ -14,10 +14,10 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError
-from rbdsolve.model.inertia import OWN_AXIS, body_properties, explicit_inertia
+from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.schema import Body, CoordinateKind, Problem, Spring
+from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
 
 @dataclass(frozen=True)
@@ -133,31 +133,40 @@ def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
 
 
 def _body(body: Body, names: Symbols) -> RigidBody:
-    """The body's centre of mass is its origin (``at``) plus the shape's centre offset,
-    turned with the body: r_G = r_at + R c."""
-    mass = _require(names.scalar(body.mass), body.mass, "a mass")
+    """A body's mass properties combined from its parts; its centre of mass is its
+    origin plus the parts' combined centre, turned with the body: r_G = r_at + R c."""
+    props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
+    _require(props.mass, body.parts[0].mass, "a body's total mass")
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
-    if body.inertia is not None:
-        inertia, centre = _explicit(body, names), sp.zeros(3, 1)
+    position = names.vector(body.at) + rotation * props.centre
+    return RigidBody(body.name, props.mass, position, rotation, angle, props.inertia, body)
+
+
+def part_properties(part: Part, names: Symbols) -> MassProperties:
+    """A part's mass, centre (from the body's origin) and J about that centre, in body
+    axes; a hole's mass and inertia count negative."""
+    mass = _require(names.scalar(part.mass), part.mass, "a mass")
+    if part.inertia is not None:
+        props = MassProperties(mass, sp.zeros(3, 1), _explicit(part, names))
     else:
-        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in body.dimensions}
-        _check_tube(body, dims)
-        axis = names.vector(body.axis) if body.axis is not None else OWN_AXIS.get(body.shape, sp.Matrix([0, 0, 1]))
-        props = body_properties(body.shape, mass, dims, axis)
-        inertia, centre = props.inertia, props.centre
-    position = names.vector(body.at) + rotation * centre
-    return RigidBody(body.name, mass, position, rotation, angle, inertia, body)
+        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in part.dimensions}
+        _check_tube(part, dims)
+        axis = names.vector(part.axis) if part.axis is not None else OWN_AXIS.get(part.shape, sp.Matrix([0, 0, 1]))
+        props = body_properties(part.shape, mass, dims, axis)
+    offset = names.vector(part.at) if part.at is not None else sp.zeros(3, 1)
+    sign = -1 if part.hole else 1
+    return MassProperties(sign * props.mass, props.centre + offset, sign * props.inertia)
 
 
-def _check_tube(body: Body, dims: dict[str, sp.Expr]) -> None:
+def _check_tube(part: Part, dims: dict[str, sp.Expr]) -> None:
     if "inner_radius" in dims and (dims["outer_radius"] - dims["inner_radius"]).is_negative:
-        expr = body.dimension("inner_radius")
+        expr = part.dimension("inner_radius")
         raise InputError("a tube's inner_radius must not exceed its outer_radius", expr.loc)
 
 
-def _explicit(body: Body, names: Symbols) -> sp.Matrix:
-    entries = body.inertia.entries
+def _explicit(part: Part, names: Symbols) -> sp.Matrix:
+    entries = part.inertia.entries
     values = [names.scalar(e) for e in entries]
     diagonal = values if len(values) < 9 else [values[0], values[4], values[8]]
     where = entries if len(values) < 9 else [entries[0], entries[4], entries[8]]
@@ -165,7 +174,7 @@ def _explicit(body: Body, names: Symbols) -> sp.Matrix:
         _require(value, expr, "a moment of inertia", zero_ok=True)
     inertia = explicit_inertia(values)
     if sp.expand(inertia - inertia.T) != sp.zeros(3, 3):
-        raise InputError("an inertia matrix must be symmetric (J_xy = J_yx, …)", body.inertia.loc)
+        raise InputError("an inertia matrix must be symmetric (J_xy = J_yx, …)", part.inertia.loc)
     return inertia
 
 

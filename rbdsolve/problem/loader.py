@@ -18,13 +18,15 @@ from rbdsolve.problem.schema import (
     CoordinateKind,
     Inertia,
     Parameter,
+    Part,
     Point,
     Problem,
     Question,
-    QuestionKind,
     Shape,
     Spring,
 )
+from rbdsolve.problem.questions import QuestionReader
+from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "coordinates", "points",
@@ -53,38 +55,6 @@ def load_text(text: str, name: str = "<string>") -> Problem:
     return _Loader(name).problem(parse_yaml(text, name))
 
 
-# --- small readers ---------------------------------------------------------------------
-
-
-def _mapping(node: Node, what: str) -> Map:
-    if isinstance(node, Map):
-        return node
-    raise InputError(f"expected {what} (a mapping), found {_found(node)}", node.loc)
-
-
-def _scalar(node: Node, what: str) -> Scalar:
-    if isinstance(node, Scalar) and not node.null:
-        return node
-    raise InputError(f"expected {what}, found {_found(node)}", node.loc)
-
-
-def _found(node: Node) -> str:
-    if isinstance(node, Scalar):
-        return "nothing" if node.null else f"'{node.text}'"
-    return node.kind_name
-
-
-def _check_keys(node: Map, required: tuple[str, ...], optional: tuple[str, ...], what: str) -> None:
-    allowed = tuple(dict.fromkeys((*required, *optional)))
-    for key, _ in node.entries:
-        if key.text not in allowed:
-            hint = did_you_mean(key.text, allowed) or f" (expected one of: {', '.join(allowed)})"
-            raise InputError(f"unknown key '{key.text}' in {what}{hint}", key.loc)
-    for key in required:
-        if node.get(key) is None:
-            raise InputError(f"missing required key '{key}' in {what}", node.loc)
-
-
 def _identifier(key: Scalar, what: str) -> str:
     name = key.text
     if keyword.iskeyword(name):
@@ -102,19 +72,10 @@ def _identifier(key: Scalar, what: str) -> str:
 def _names_list(node: Node, what: str) -> list[tuple[Scalar, Node | None]]:
     """A list of names, or a mapping name -> options; returns (name node, options)."""
     if isinstance(node, Seq):
-        return [(_scalar(item, f"a {what} name"), None) for item in node.items]
+        return [(expect_scalar(item, f"a {what} name"), None) for item in node.items]
     if isinstance(node, Map):
         return [(k, None if isinstance(v, Scalar) and v.null else v) for k, v in node.entries]
-    raise InputError(f"expected a list or mapping of {what}s, found {_found(node)}", node.loc)
-
-
-def _bool(node: Node, what: str) -> bool:
-    text = _scalar(node, what).text.lower()
-    if text in ("true", "yes", "on"):
-        return True
-    if text in ("false", "no", "off"):
-        return False
-    raise InputError(f"expected true or false, found '{node.text}'", node.loc)
+    raise InputError(f"expected a list or mapping of {what}s, found {describe(node)}", node.loc)
 
 
 class _Loader:
@@ -136,7 +97,7 @@ class _Loader:
             if kind != ex.Kind.VECTOR:
                 raise InputError(f"expected {what}, found a list", node.loc)
             return self._vector_from_list(node, what, scope)
-        scalar = _scalar(node, what)
+        scalar = expect_scalar(node, what)
         if kind == ex.Kind.VECTOR:
             self._check_point_name(scalar)
         parsed = ex.parse(scalar.text, scalar.loc, scope or self.positions, scalar.plain)
@@ -168,7 +129,7 @@ class _Loader:
     # --- sections ----------------------------------------------------------------------
 
     def problem(self, root: Map) -> Problem:
-        _check_keys(root, ("questions",), TOP_KEYS, "the problem")
+        check_keys(root, ("questions",), TOP_KEYS, "the problem")
         get = root.get
         parameters = self.parameters(get("parameters"))
         coordinates = self.coordinates(get("coordinates"))
@@ -180,6 +141,7 @@ class _Loader:
         )
         self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
         points = self.points(get("points"))
+        bodies = self.bodies(get("bodies"))
         return Problem(
             file=self.file,
             title=self.text(get("title"), "a title") or Path(self.file).stem,
@@ -188,17 +150,17 @@ class _Loader:
             parameters=parameters,
             coordinates=coordinates,
             points=points,
-            bodies=self.bodies(get("bodies")),
+            bodies=bodies,
             springs=self.springs(get("springs")),
             gravity=self.gravity(get("gravity")),
             values=self.values(get("values"), parameters),
-            questions=self.questions(get("questions"), coordinates),
+            questions=self.questions(get("questions"), coordinates, bodies),
         )
 
     def text(self, node: Node | None, what: str) -> str:
         if node is None or (isinstance(node, Scalar) and node.null):
             return ""
-        return _scalar(node, what).text.strip()
+        return expect_scalar(node, what).text.strip()
 
     def optional_expr(self, node: Node | None, kind: ex.Kind, what: str) -> ex.Expr | None:
         if node is None or (isinstance(node, Scalar) and node.null):
@@ -229,11 +191,11 @@ class _Loader:
                     raise InputError(f"a parameter's description is text; to give {name} a value "
                                      f"write 'values: {{{name}: {description}}}'", options.loc)
             elif options is not None:
-                opts = _mapping(options, "parameter options")
-                _check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
+                opts = expect_mapping(options, "parameter options")
+                check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
                 description = self.text(opts.get("description"), "a description")
                 if opts.get("positive") is not None:
-                    positive = _bool(opts.get("positive"), "true or false")
+                    positive = read_bool(opts.get("positive"), "true or false")
             out.append(Parameter(name, description, positive, key.loc))
         return tuple(out)
 
@@ -245,7 +207,7 @@ class _Loader:
             name = self.declare(key, "coordinate")
             kind = CoordinateKind.AUTO
             if options is not None:
-                word = _scalar(options, "a coordinate kind ('angle' or 'length')")
+                word = expect_scalar(options, "a coordinate kind ('angle' or 'length')")
                 try:
                     kind = CoordinateKind(word.text)
                 except ValueError:
@@ -260,7 +222,7 @@ class _Loader:
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:
             return ()
-        table = _mapping(node, "points: name -> position vector")
+        table = expect_mapping(node, "points: name -> position vector")
         names = [self.declare(key, "point") for key, _ in table.entries]
         self.scope = ex.Scope(self.scope.scalars, frozenset(names), self.scope.functions_of_time)
         self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
@@ -274,16 +236,34 @@ class _Loader:
     def bodies(self, node: Node | None) -> tuple[Body, ...]:
         if node is None:
             return ()
-        table = _mapping(node, "bodies: name -> body")
+        table = expect_mapping(node, "bodies: name -> body")
         return tuple(self.body(self.declare(k, "body"), v) for k, v in table.entries)
 
     def body(self, name: str, node: Node) -> Body:
-        spec = _mapping(node, f"body '{name}'")
+        spec = expect_mapping(node, f"body '{name}'")
         what = f"body '{name}'"
+        at = self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector", self.positions) \
+            if spec.get("at") is not None else None
+        angle = self.optional_expr(spec.get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)")
+        if spec.get("parts") is None:
+            part = self.part(name, spec, what, ("angle",), simple=True)
+            return Body(name, (part,), at, angle, spec.loc)
+        check_keys(spec, ("parts", "at"), ("angle",), what)
+        table = expect_mapping(spec.get("parts"), "parts: name -> part")
+        if not table.entries:
+            raise InputError(f"{what} has no parts", table.loc)
+        parts = tuple(self.part(k.text, expect_mapping(v, f"part '{k.text}'"), f"part '{k.text}' of {what}", (),
+                                simple=False) for k, v in table.entries)
+        if all(p.hole for p in parts):
+            raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
+        return Body(name, parts, at, angle, spec.loc)
+
+    def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool) -> Part:
         shape = self.shape(spec, what)
         dims = shape.dimensions if shape else ()
         _check_dimensions(spec, shape, what)
-        _check_keys(spec, ("mass", "at", *dims), ("shape", "angle", "axis", "inertia"), what)
+        required = ("mass", "at", *dims) if simple else ("mass", *dims)
+        check_keys(spec, required, ("shape", "axis", "inertia", *extra, *(() if simple else ("at", "hole"))), what)
         mass = self.constant(spec.get("mass"), "a mass")
         _refuse_negative(mass, "mass")
         dimensions = []
@@ -295,18 +275,14 @@ class _Loader:
         if axis_node is not None and shape is None:
             raise InputError("'axis' orients a shape; an explicit inertia is already in body axes",
                              axis_node.loc)
-        axis = self.axis(axis_node) if axis_node is not None else None
-        return Body(
-            name=name,
-            shape=shape,
-            mass=mass,
-            dimensions=tuple(dimensions),
-            at=self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector", self.positions),
-            angle=self.optional_expr(spec.get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"),
-            axis=axis,
-            inertia=self.inertia(spec.get("inertia")),
-            loc=spec.loc,
-        )
+        at = None
+        if not simple and spec.get("at") is not None:
+            scope = self.scope.constants("a part's position in its body must be constant")
+            at = self.expr(spec.get("at"), ex.Kind.VECTOR, "a position in the body (a vector)", scope)
+        hole = read_bool(spec.get("hole"), "true or false") if spec.get("hole") is not None else False
+        return Part(name, shape, mass, tuple(dimensions), at,
+                    self.axis(axis_node) if axis_node is not None else None,
+                    self.inertia(spec.get("inertia")), hole, spec.loc)
 
     def axis(self, node: Node) -> ex.Expr:
         """x, y, z (or -x, …) or a direction vector in body axes."""
@@ -328,7 +304,7 @@ class _Loader:
             return None
         if spec.get("inertia") is not None:
             raise InputError(f"{what}: give either 'shape' or 'inertia', not both", node.loc)
-        word = _scalar(node, "a shape name").text
+        word = expect_scalar(node, "a shape name").text
         names = [s.value for s in Shape] + list(SHAPE_ALIASES)
         if word in SHAPE_ALIASES:
             return SHAPE_ALIASES[word]
@@ -358,13 +334,13 @@ class _Loader:
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
             return ()
-        table = _mapping(node, "springs: name -> spring")
+        table = expect_mapping(node, "springs: name -> spring")
         return tuple(self.spring(self.declare(k, "spring"), v) for k, v in table.entries)
 
     def spring(self, name: str, node: Node) -> Spring:
         what = f"spring '{name}'"
-        spec = _mapping(node, what)
-        _check_keys(spec, ("stiffness",), ("between", "natural_length", "angle", "rest"), what)
+        spec = expect_mapping(node, what)
+        check_keys(spec, ("stiffness",), ("between", "natural_length", "angle", "rest"), what)
         between, angle = spec.get("between"), spec.get("angle")
         if (between is None) == (angle is None):
             raise InputError(f"{what} needs either 'between: [A, B]' (linear) or 'angle:' (torsional)", spec.loc)
@@ -373,7 +349,7 @@ class _Loader:
         ends = None
         if between is not None:
             if not isinstance(between, Seq) or len(between.items) != 2:
-                raise InputError(f"expected two ends [A, B], found {_found(between)}", between.loc)
+                raise InputError(f"expected two ends [A, B], found {describe(between)}", between.loc)
             ends = tuple(self.expr(e, ex.Kind.VECTOR, "a point name or position vector", self.positions)
                          for e in between.items)
         elif spec.get("natural_length") is not None:
@@ -393,13 +369,13 @@ class _Loader:
     def values(self, node: Node | None, parameters: tuple[Parameter, ...]) -> tuple[tuple[str, Fraction], ...]:
         if node is None:
             return ()
-        table = _mapping(node, "values: parameter -> number")
+        table = expect_mapping(node, "values: parameter -> number")
         known = [p.name for p in parameters]
         out = []
         for key, value in table.entries:
             if key.text not in known:
                 raise InputError(f"'{key.text}' is not a parameter{did_you_mean(key.text, known)}", key.loc)
-            scalar = _scalar(value, "a number")
+            scalar = expect_scalar(value, "a number")
             number = ex.parse_number(scalar.text, scalar.loc, scalar.plain)
             param = next(p for p in parameters if p.name == key.text)
             if param.positive and number <= 0:
@@ -407,50 +383,13 @@ class _Loader:
             out.append((key.text, number))
         return tuple(out)
 
-    def questions(self, node: Node, coordinates: tuple[Coordinate, ...]) -> tuple[Question, ...]:
+    def questions(self, node: Node, coordinates: tuple[Coordinate, ...],
+                  bodies: tuple[Body, ...]) -> tuple[Question, ...]:
         if not isinstance(node, Seq) or not node.items:
-            found = "an empty list" if isinstance(node, Seq) else _found(node)
+            found = "an empty list" if isinstance(node, Seq) else describe(node)
             raise InputError(f"expected a list of questions, found {found}", node.loc)
-        return tuple(self.question(item, coordinates) for item in node.items)
-
-    def question(self, node: Node, coordinates: tuple[Coordinate, ...]) -> Question:
-        if isinstance(node, Map) and len(node.entries) == 1:
-            key, options = node.entries[0]
-        elif isinstance(node, Scalar) and not node.null:
-            key, options = node, None
-        else:
-            raise InputError(f"expected a question such as 'modes' or '{{modes: {{...}}}}', found {_found(node)}", node.loc)
-        kinds = [k.value for k in QuestionKind]
-        try:
-            kind = QuestionKind(key.text)
-        except ValueError:
-            hint = did_you_mean(key.text, kinds) or f" (questions: {', '.join(kinds)})"
-            raise InputError(f"unknown question '{key.text}'{hint}", key.loc) from None
-        if kind in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES) and not coordinates:
-            raise InputError(f"'{kind.value}' needs generalized coordinates: add 'coordinates:'", key.loc)
-        about = None
-        if options is not None and not (isinstance(options, Scalar) and options.null):
-            opts = _mapping(options, f"options of '{kind.value}'")
-            allowed = ("about",) if kind is QuestionKind.MODES else ()
-            if not allowed:
-                raise InputError(f"'{kind.value}' takes no options", options.loc)
-            _check_keys(opts, (), allowed, f"question '{kind.value}'")
-            if opts.get("about") is not None:
-                about = self.about(opts.get("about"), coordinates)
-        return Question(kind, about, key.loc)
-
-    def about(self, node: Node, coordinates: tuple[Coordinate, ...]) -> tuple[tuple[str, ex.Expr], ...]:
-        table = _mapping(node, "an equilibrium: coordinate -> value")
-        names = [c.name for c in coordinates]
-        given = {}
-        for key, value in table.entries:
-            if key.text not in names:
-                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
-            given[key.text] = self.constant(value, "a coordinate's value at the equilibrium")
-        missing = [n for n in names if n not in given]
-        if missing:
-            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
-        return tuple((n, given[n]) for n in names)
+        reader = QuestionReader(self, coordinates, bodies)
+        return tuple(reader.question(item) for item in node.items)
 
 
 _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1),

@@ -71,6 +71,11 @@ class QuestionKind(Enum):
     EOM = "eom"
     EQUILIBRIA = "equilibria"
     MODES = "modes"
+    INERTIA = "inertia"
+
+    @property
+    def needs_coordinates(self) -> bool:
+        return self is not QuestionKind.INERTIA
 
 
 @dataclass(frozen=True)
@@ -104,19 +109,34 @@ class Inertia:
 
 
 @dataclass(frozen=True)
-class Body:
+class Part:
+    """A piece of a body: a shape with its mass and dimensions (or an explicit inertia),
+    its origin at ``at`` from the body's origin in body axes, its own axis along
+    ``axis``. A hole is a part whose mass is removed."""
+
     name: str
     shape: Shape | None  # None when ``inertia`` is given instead
     mass: Expr
     dimensions: tuple[tuple[str, Expr], ...]
-    at: Expr  # position of the shape's origin (its centre, unless the shape says otherwise)
-    angle: Expr | None  # planar orientation: rotation about z
+    at: Expr | None  # None: at the body's origin
     axis: Expr | None  # direction, in body axes, of the shape's own axis (None: its default)
     inertia: Inertia | None
+    hole: bool
     loc: Location
 
     def dimension(self, name: str) -> Expr:
         return dict(self.dimensions)[name]
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body: one part (a shape placed at ``at``) or several (``parts:``)."""
+
+    name: str
+    parts: tuple[Part, ...]
+    at: Expr  # position of the body's origin (a simple body: the shape's origin)
+    angle: Expr | None  # planar orientation: rotation about z
+    loc: Location
 
 
 @dataclass(frozen=True)
@@ -136,9 +156,21 @@ class Spring:
 
 
 @dataclass(frozen=True)
+class ModesOptions:
+    about: tuple[tuple[str, Expr], ...] | None  # the equilibrium; None: the stable one
+
+
+@dataclass(frozen=True)
+class InertiaOptions:
+    body: str  # the body asked about
+    about: Expr | None  # a point (vector); None: the centre of mass only
+    axes: tuple[Expr, Expr, Expr] | None  # unit vectors of a rotated frame; None: scene axes
+
+
+@dataclass(frozen=True)
 class Question:
     kind: QuestionKind
-    about: tuple[tuple[str, Expr], ...] | None  # modes: the equilibrium to expand about
+    options: ModesOptions | InertiaOptions | None
     loc: Location
 
 

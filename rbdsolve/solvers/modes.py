@@ -124,11 +124,12 @@ def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectr
 
 def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
     names = model.coordinate_names()
-    if question.about is not None:
+    about = question.options.about
+    if about is not None:
         symbols = model.symbols
-        at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, question.about)}
+        at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
         residual = [tidy(g.xreplace(at)) for g in gradient(model)]
-        for (name, expr), r in zip(question.about, residual):
+        for (name, expr), r in zip(about, residual):
             if sp.simplify(r) != 0:
                 raise InputError(f"not an equilibrium: ∂V/∂{name} = {sp.sstr(r)} there", expr.loc)
         return at, {n: at[q] for n, q in zip(names, model.q)}

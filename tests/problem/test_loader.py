@@ -38,16 +38,16 @@ def test_good_scene_loads() -> None:
     problem = load(GOOD)
     assert [p.name for p in problem.parameters] == ["m", "l", "g"]
     assert problem.coordinates[0].kind is CoordinateKind.AUTO
-    assert problem.bodies[0].shape is Shape.PARTICLE
+    assert problem.bodies[0].parts[0].shape is Shape.PARTICLE
     assert problem.questions[0].kind is QuestionKind.MODES
-    assert problem.questions[0].about[0][0] == "theta"
+    assert problem.questions[0].options.about[0][0] == "theta"
 
 
 def test_about_is_read_in_coordinate_order() -> None:
     text = GOOD.replace("coordinates: [theta]", "coordinates: [theta, x]").replace(
         "{about: {theta: 0}}", "{about: {x: 1, theta: 0}}"
     )
-    assert [name for name, _ in load(text).questions[0].about] == ["theta", "x"]
+    assert [name for name, _ in load(text).questions[0].options.about] == ["theta", "x"]
 
 
 def test_points_are_ordered_by_dependency() -> None:

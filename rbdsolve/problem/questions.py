@@ -1,0 +1,111 @@
+"""The ``questions:`` section: each question's kind and its options, validated.
+
+A question is a name (``- eom``) or a one-key mapping with options
+(``- modes: {about: {theta: 0}}``). Options are checked against what the question
+knows about the scene: coordinates for ``modes``, bodies and points for ``inertia``.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import (
+    Body,
+    Coordinate,
+    InertiaOptions,
+    ModesOptions,
+    Question,
+    QuestionKind,
+)
+from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.loader import _Loader
+
+OPTIONS = {
+    QuestionKind.EOM: (),
+    QuestionKind.EQUILIBRIA: (),
+    QuestionKind.MODES: ("about",),
+    QuestionKind.INERTIA: ("body", "about", "axes"),
+}
+
+
+class QuestionReader:
+    def __init__(self, loader: _Loader, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...]):
+        self.loader = loader
+        self.coordinates = coordinates
+        self.bodies = bodies
+
+    def question(self, node: Node) -> Question:
+        if isinstance(node, Map) and len(node.entries) == 1:
+            key, options = node.entries[0]
+        elif isinstance(node, Scalar) and not node.null:
+            key, options = node, None
+        else:
+            raise InputError("expected a question such as 'modes' or '{modes: {...}}', "
+                             f"found {describe(node)}", node.loc)
+        kinds = [k.value for k in QuestionKind]
+        try:
+            kind = QuestionKind(key.text)
+        except ValueError:
+            hint = did_you_mean(key.text, kinds) or f" (questions: {', '.join(kinds)})"
+            raise InputError(f"unknown question '{key.text}'{hint}", key.loc) from None
+        if kind.needs_coordinates and not self.coordinates:
+            raise InputError(f"'{kind.value}' needs generalized coordinates: add 'coordinates:'", key.loc)
+        opts = None
+        if options is not None and not (isinstance(options, Scalar) and options.null):
+            if not OPTIONS[kind]:
+                raise InputError(f"'{kind.value}' takes no options", options.loc)
+            opts = expect_mapping(options, f"options of '{kind.value}'")
+            check_keys(opts, (), OPTIONS[kind], f"question '{kind.value}'")
+        if kind is QuestionKind.MODES:
+            about = opts.get("about") if opts else None
+            return Question(kind, ModesOptions(self.equilibrium(about) if about else None), key.loc)
+        if kind is QuestionKind.INERTIA:
+            return Question(kind, self.inertia(opts, key), key.loc)
+        return Question(kind, None, key.loc)
+
+    def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
+        table = expect_mapping(node, "an equilibrium: coordinate -> value")
+        names = [c.name for c in self.coordinates]
+        given = {}
+        for key, value in table.entries:
+            if key.text not in names:
+                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
+            given[key.text] = self.loader.constant(value, "a coordinate's value at the equilibrium")
+        missing = [n for n in names if n not in given]
+        if missing:
+            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
+        return tuple((n, given[n]) for n in names)
+
+    def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
+        names = [b.name for b in self.bodies]
+        body_node = opts.get("body") if opts else None
+        if body_node is None:
+            if len(names) != 1:
+                found = "no bodies" if not names else f"{len(names)} bodies ({', '.join(names)})"
+                raise InputError(f"'inertia' needs 'body: NAME' when the scene has {found}", key.loc)
+            body = names[0]
+        else:
+            body = expect_scalar(body_node, "a body name").text
+            if body not in names:
+                raise InputError(f"no body '{body}'{did_you_mean(body, names)}", body_node.loc)
+        about = opts.get("about") if opts else None
+        axes = opts.get("axes") if opts else None
+        return InertiaOptions(body, self.point(about) if about is not None else None,
+                              self.axes(axes) if axes is not None else None)
+
+    def point(self, node: Node) -> ex.Expr:
+        """A point to take moments about: a point name or a constant position vector."""
+        return self.loader.expr(node, ex.Kind.VECTOR, "a point name or position vector")
+
+    def axes(self, node: Node) -> tuple[ex.Expr, ex.Expr, ex.Expr]:
+        if not isinstance(node, Seq) or len(node.items) != 3:
+            raise InputError("expected three axis vectors [e1, e2, e3] (unit vectors of the "
+                             "frame, in scene axes)", node.loc)
+        scope = self.loader.scope.constants("a frame's axes must be constant")
+        vectors = [self.loader.expr(item, ex.Kind.VECTOR, "an axis vector", scope) for item in node.items]
+        return vectors[0], vectors[1], vectors[2]
