@@ -23,7 +23,7 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     cos(φ − θ) (``fu.TR10i``), then pull out common factors.
     """
     expr = sp.expand(expr)
-    if expr.is_number:
+    if expr.is_Rational:
         return expr
     if expr.count_ops() > MAX_OPS:
         return expr
@@ -32,7 +32,25 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         folded = TR10i(expr)
         if sp.count_ops(folded) <= sp.count_ops(expr):
             expr = folded
-    return sp.factor_terms(expr)
+    elif _has_denominator(expr):
+        expr = sp.cancel(sp.together(expr))  # one fraction, common factors cancelled
+    return _leading_plus(sp.factor_terms(expr))
+
+
+def _has_denominator(expr: sp.Expr) -> bool:
+    """Does a sum appear in a denominator (a rational function worth cancelling)?"""
+    return any(p.exp.is_negative and p.base.is_Add for p in expr.atoms(sp.Pow))
+
+
+def _leading_plus(expr: sp.Expr) -> sp.Expr:
+    """−1/4 a² σ (π − 16) → 1/4 a² σ (16 − π): a negative factor moved into a sum."""
+    if not expr.is_Mul:
+        return expr
+    coeff, rest = expr.as_coeff_Mul()
+    sums = [f for f in sp.Mul.make_args(rest) if f.is_Add]
+    if coeff.is_negative and len(sums) == 1:
+        return sp.Mul(-coeff, *[(-f if f is sums[0] else f) for f in sp.Mul.make_args(rest)])
+    return expr
 
 
 def _pythagoras(expr: sp.Expr) -> sp.Expr:

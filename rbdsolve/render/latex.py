@@ -26,6 +26,8 @@ _MATH_CHARS = {
     "½": r"\tfrac12", "·": r"\cdot", "∂": r"\partial", "−": "-", "⇒": r"\Rightarrow",
     "√": r"\surd", "ü": r"\ddot{u}", "∈": r"\in", "≤": r"\le", "≥": r"\ge", "×": r"\times",
     "²": "^2", "³": "^3", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3", "ᵀ": "^T",
+    "∫": r"\int", "±": r"\pm", "∓": r"\mp", "≈": r"\approx", "≠": r"\neq", "∝": r"\propto",
+    "°": r"^\circ", "→": r"\to", "∞": r"\infty", "⁴": "^4",
 }  # fmt: skip
 _GREEK_CHARS = {v: "\\" + ("varphi" if k == "phi" else k) for k, v in GREEK.items()}
 
@@ -49,6 +51,8 @@ def text(value: str) -> str:
             out.append(f"\\ensuremath{{{_GREEK_CHARS[ch]}}}")
         elif ch in _MATH_CHARS:
             out.append(f"\\ensuremath{{{_MATH_CHARS[ch]}}}")
+        elif ord(ch) > 0xFF and not unicodedata.combining(ch):
+            out.append(f"[U+{ord(ch):04X}]")  # not in pdflatex's fonts: say what it was
         else:
             out.append(ch)
         i += 1

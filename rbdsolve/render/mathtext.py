@@ -14,7 +14,7 @@ from sympy.core.function import AppliedUndef
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from rbdsolve.report.math import Math, Product, Scaled, Terms
+from rbdsolve.report.math import Label, Math, Product, Scaled, Terms
 
 GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -44,7 +44,7 @@ def unicode_name(name: str) -> str:
     if not sub:
         return base
     sub_text = GREEK.get(sub, sub)
-    if set(sub_text) <= _SUBSCRIPTABLE:
+    if set(sub_text) <= _SUBSCRIPTABLE and (len(sub_text) <= 2 or sub_text.isdigit()):
         return base + sub_text.translate(_SUB)
     return f"{base}_{sub_text}"
 
@@ -110,9 +110,10 @@ class UnicodePrinter(StrPrinter):
 
     def _print_Pow(self, expr, rational=False):
         base, exp = expr.as_base_exp()
-        if exp == sp.Rational(1, 2):
+        if exp in (sp.Rational(1, 2), sp.Rational(-1, 2)):
             inner = self._print(base)
-            return f"√{inner}" if base.is_Atom else f"√({inner})"
+            root = f"√{inner}" if base.is_Atom else f"√({inner})"
+            return root if exp > 0 else f"1/{root}"
         if exp.is_Integer and exp > 0:
             text = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Pow"])
             return text + str(exp).translate(_SUP)
@@ -122,7 +123,8 @@ class UnicodePrinter(StrPrinter):
         coeff, rest = expr.as_coeff_Mul()
         if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
             sign = "-" if coeff < 0 else ""
-            return f"{sign}{abs(coeff.p)}/{coeff.q} {self._print(rest)}"
+            inner = f"({self._print(rest)})" if rest.is_Add else self._print(rest)
+            return f"{sign}{abs(coeff.p)}/{coeff.q} {inner}"
         return super()._print_Mul(expr)
 
     def _print_Rational(self, expr):
@@ -180,7 +182,8 @@ class TexPrinter(LatexPrinter):
         coeff, rest = expr.as_coeff_Mul()
         if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
             sign = "- " if coeff < 0 else ""
-            return f"{sign}\\frac{{{abs(coeff.p)}}}{{{coeff.q}}} {self._print(rest)}"
+            inner = f"\\left({self._print(rest)}\\right)" if rest.is_Add else self._print(rest)
+            return f"{sign}\\frac{{{abs(coeff.p)}}}{{{coeff.q}}} {inner}"
         return super()._print_Mul(expr)
 
 
@@ -203,9 +206,12 @@ def _product_parts(value: Product, printer) -> list[str]:
 def to_unicode(value: Math) -> str:
     if isinstance(value, str):
         return value
+    if isinstance(value, Label):
+        return value.text
     if isinstance(value, Scaled):
         inner = to_unicode(value.inner)
-        bracket = isinstance(value.inner, Terms) or isinstance(value.inner, sp.MatrixBase)
+        bracket = isinstance(value.inner, Terms) or (
+            isinstance(value.inner, sp.MatrixBase) and 1 not in value.inner.shape)
         return f"{to_unicode(value.factor)} {inner}" if bracket and inner.startswith("[") else (
             f"{to_unicode(value.factor)} [{inner}]" if bracket else f"{to_unicode(value.factor)} {inner}"
         )
@@ -229,8 +235,10 @@ def _join(parts) -> str:
 
 
 def to_latex(value: Math) -> str:
+    if isinstance(value, Label):
+        return value.latex
     if isinstance(value, str):
-        return f"\\text{{{value}}}"
+        return f"\\text{{{value.encode('ascii', 'replace').decode()}}}"
     if isinstance(value, Scaled):
         inner = to_latex(value.inner)
         if isinstance(value.inner, Terms):

@@ -44,9 +44,20 @@ class Scaled:
         return self.factor * plain(self.inner)
 
 
-Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | str
+@dataclass(frozen=True)
+class Label:
+    """A name that is not a symbol, spelled for each medium: m (|d|² 1 − d dᵀ)."""
+
+    text: str
+    latex: str
+
+    def value(self) -> str:
+        return self.text
+
+
+Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | Label | str
 
 
 def plain(value: Math):
-    """The sympy object a display value stands for."""
-    return value.value() if isinstance(value, (Terms, Product, Scaled)) else value
+    """The sympy object a display value stands for (a label: its text)."""
+    return value.value() if isinstance(value, (Terms, Product, Scaled, Label)) else value

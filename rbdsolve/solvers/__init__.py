@@ -16,7 +16,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
-from rbdsolve.solvers import eom, equilibria, modes
+from rbdsolve.solvers import eom, equilibria, inertia, modes
 from rbdsolve.solvers.common import Options, numeric
 from rbdsolve.solvers.energies import summarize_model
 
@@ -24,6 +24,7 @@ SOLVERS = {
     QuestionKind.EOM: eom.solve,
     QuestionKind.EQUILIBRIA: equilibria.solve,
     QuestionKind.MODES: modes.solve,
+    QuestionKind.INERTIA: inertia.solve,
 }
 
 

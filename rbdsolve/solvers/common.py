@@ -10,6 +10,7 @@ from typing import Mapping
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rbdsolve.model.tidy import tidy
 from rbdsolve.report.tree import map_leaves
 from rbdsolve.report.math import Math, Product, Scaled, Terms
 from rbdsolve.report.steps import Relation
@@ -71,7 +72,7 @@ def scaled_matrix(matrix: sp.Matrix, symbols: set[sp.Symbol]) -> Scaled | sp.Mat
     scale = abs(scale) if scale.could_extract_minus_sign() else scale
     if scale == 1:
         return sp.ImmutableMatrix(matrix)
-    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(lambda x: sp.expand(x / scale))))
+    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(lambda x: tidy(x / scale))))
 
 
 def monomial_order(monomials: list[sp.Expr], generators: list[sp.Expr]) -> list[sp.Expr]:

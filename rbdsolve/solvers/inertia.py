@@ -1,0 +1,245 @@
+"""Inertia tensors, the parallel axis theorem, principal moments and axes.
+
+About the centre of mass G, a body made of parts i (holes: negative mass) has
+
+    J_G = Σ_i [J_i + m_i (|d_i|² 1 − d_i d_iᵀ)],   d_i = r_i − r_G,
+
+and about any point P (Steiner, the parallel axis theorem)
+
+    J_P = J_G + m (|d|² 1 − d dᵀ),   d = r_G − r_P.
+
+In a rotated frame whose unit vectors are the rows of A, J' = A J Aᵀ. Principal moments
+are the roots of det(J − λ1) = 0 (closed forms: a common scale m r² is pulled out and
+the cubic solved over the rationals, in trigonometric form when it has three real
+irrational roots); principal axes are unit vectors spanning each null space of J − λ1,
+an orthonormal basis of the plane when a moment is repeated. Products of inertia are
+the tensor's off-diagonal entries, J_xy = −∫ x y dm, as in SG2150.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.model.build import Model, RigidBody, part_properties
+from rbdsolve.model.inertia import parallel_axis
+from rbdsolve.model.tidy import tidy
+from rbdsolve.problem.schema import InertiaOptions, Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.math import Label
+from rbdsolve.report.steps import Relation, Route, Solution
+from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
+
+LAMBDA = sp.Symbol("lambda")
+STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
+CONVENTION = ("Products of inertia are the tensor's off-diagonal entries, J_xy = −∫ x y dm "
+              "(the SG2150 convention).")
+
+
+@dataclass(frozen=True)
+class InertiaAnswers:
+    mass: sp.Expr
+    centre: tuple[sp.Expr, ...]  # r_G, scene axes
+    about: tuple[sp.Expr, ...] | None  # the point P, or None
+    J_G: sp.ImmutableMatrix  # about G, in the requested axes
+    J: sp.ImmutableMatrix  # about P (J_G when no point is given)
+    principal_moments: tuple[sp.Expr, ...]  # ascending, repeated by multiplicity
+    principal_axes: tuple[tuple[sp.Expr, ...], ...]  # unit vectors, one per moment
+    repeated: tuple[sp.Expr, ...]  # moments of multiplicity > 1 (their axes: any in a plane)
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    opts: InertiaOptions = question.options
+    body = next(b for b in model.bodies if b.name == opts.body)
+    symbols = set(model.symbols.parameters.values())
+    steps: list[st.Step] = list(_centre_steps(body, model, symbols))
+    J_G = body.inertia_in_scene().applyfunc(tidy)
+    if body.rotation != sp.eye(3):
+        steps.append(st.equation("In scene axes, J_G = R J_G,body Rᵀ:", _show("J_G", J_G, symbols)))
+    J, about = J_G, None
+    if opts.about is not None:
+        about = model.symbols.with_points(model.points).vector(opts.about)
+        label = opts.about.text if opts.about.text.isidentifier() else "P"
+        J, shift_steps = _shift(body, J_G, about, label, symbols)
+        steps += shift_steps
+    if opts.axes is not None:
+        A = _frame(opts, model)
+        J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
+        steps.append(st.equation("In the frame with unit vectors (rows of A), J' = A J Aᵀ:",
+                                 Relation(sp.Symbol("A"), sp.ImmutableMatrix(A)),
+                                 _show("J'", J, symbols)))
+    moments, axes, repeated, principal_steps = principal(J, symbols, model)
+    steps += principal_steps
+    steps.append(st.note(CONVENTION))
+    answers = InertiaAnswers(
+        body.mass, tuple(tidy(x) for x in body.position),
+        tuple(about) if about is not None else None,
+        sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), moments, axes, repeated,
+    )
+    return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps))
+
+
+def _show(name: str, J: sp.Matrix, symbols: set) -> Relation:
+    return Relation(sp.Symbol(name), scaled_matrix(J, symbols))
+
+
+def _centre_steps(body: RigidBody, model: Model, symbols: set) -> list[st.Step]:
+    """J_G from the shape table (one part), or from the parts by the parallel axis
+    theorem (a composite body)."""
+    parts = body.source.parts
+    if len(parts) == 1 and not parts[0].hole:
+        part = parts[0]
+        what = f"a {part.shape.value.replace('_', ' ')}" if part.shape else "the given inertia"
+        return [st.definition(f"{body.name}: J about its centre of mass G, from the table for {what} "
+                              "(body axes):", _show("J_G", body.inertia, symbols))]
+    names = model.symbols.with_points(model.points)
+    props = [part_properties(p, names) for p in parts]
+    centre = body.rotation.T * (body.position - names.vector(body.source.at))
+    steps = [st.definition(
+        f"{body.name} is made of {len(parts)} parts (holes count with negative mass); its mass "
+        "and centre of mass from its origin:",
+        Relation(sp.Symbol("m"), tidy(body.mass)),
+        Relation(sp.Symbol("r_G"), sp.ImmutableMatrix(centre.applyfunc(tidy)).T),
+    )]
+    for part, p in zip(parts, props):
+        d = (p.centre - centre).applyfunc(tidy)
+        label = part.name if not part.hole or "hole" in part.name else f"{part.name} (a hole)"
+        steps.append(st.equation(
+            f"{label}: J about its own centre, then shifted by d = r_{part.name} − r_G:",
+            _show(f"J_{part.name}", p.inertia, symbols),
+            Relation(sp.Symbol("d"), sp.ImmutableMatrix(d).T),
+            _show(f"J_{part.name},G", (p.inertia + parallel_axis(p.mass, d)).applyfunc(tidy), symbols),
+        ))
+    steps.append(st.result("Summing the parts:", _show("J_G", body.inertia, symbols)))
+    return steps
+
+
+def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: set):
+    """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P."""
+    d = (body.position - P).applyfunc(tidy)
+    term = parallel_axis(body.mass, d).applyfunc(tidy)
+    J = (J_G + term).applyfunc(tidy)
+    steps = [
+        st.given(f"The centre of mass G relative to {label}:", Relation(sp.Symbol("d"), sp.ImmutableMatrix(d).T)),
+        st.equation(f"Parallel axis theorem, J_{label} = J_G + m (|d|² 1 − d dᵀ), with",
+                    Relation(STEINER, scaled_matrix(term, symbols))),
+        st.result(f"About {label}:", Relation(sp.Symbol(f"J_{label}"), _sum(J_G, term, symbols),
+                                               more=(scaled_matrix(J, symbols),))),
+    ]
+    return J, steps
+
+
+def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
+    from rbdsolve.report.math import Terms
+
+    return Terms((scaled_matrix(a, symbols), scaled_matrix(b, symbols)))
+
+
+def _frame(opts: InertiaOptions, model: Model) -> sp.Matrix:
+    names = model.symbols.with_points(model.points)
+    rows = [names.vector(e).applyfunc(tidy) for e in opts.axes]
+    A = sp.Matrix.hstack(*rows).T
+    if (A * A.T - sp.eye(3)).applyfunc(lambda x: sp.simplify(x)) != sp.zeros(3, 3):
+        raise InputError("the axes must be orthonormal unit vectors (A Aᵀ = 1)", opts.axes[0].loc)
+    return A
+
+
+def principal(J: sp.Matrix, symbols: set, model: Model):
+    """Principal moments (ascending) and unit principal axes of a symmetric tensor."""
+    scale = common_scale(list(J), symbols)
+    scale = -scale if scale.could_extract_minus_sign() else scale
+    J_hat = (J / scale).applyfunc(tidy)
+    poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
+    found = sp.roots(poly, LAMBDA, trig=True) if J_hat.is_diagonal() is False else {}
+    if J_hat.is_diagonal():
+        found = {}
+        for i in range(3):
+            found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
+    if sum(found.values()) != 3:
+        raise UnsolvedError("no closed form for the principal moments of this tensor")
+    roots = sorted(((tidy(r), k) for r, k in found.items()), key=lambda rk: _size(rk[0], model))
+    moments, axes, repeated = [], [], []
+    for root, multiplicity in roots:
+        moments += [tidy(scale * root)] * multiplicity
+        axes += _unit_axes(J_hat, root, multiplicity)
+        if multiplicity > 1:
+            repeated.append(tidy(scale * root))
+    steps = [st.equation("Principal moments: det(λ1 − J) = 0; with λ = s κ, s the common scale:",
+                         Relation(sp.Symbol("s"), scale),
+                         Relation(_cubic(poly), sp.Integer(0)))]
+    for i, (moment, axis) in enumerate(zip(moments, axes), start=1):
+        steps.append(st.result(f"Principal moment {i} and its axis (a unit vector):",
+                               Relation(sp.Symbol(f"J_{i}"), moment),
+                               Relation(sp.Symbol(f"e_{i}"), _unit_display(axis))))
+    units = tuple(tuple(tidy(x / sp.sqrt(sp.expand(d.dot(d)))) for x in d) for d in axes)
+    for value in repeated:
+        steps.append(st.note("A repeated moment: every axis in the plane of its two axes above is "
+                             "a principal axis,", Relation(sp.Symbol("J"), value)))
+    return tuple(moments), units, tuple(repeated), steps
+
+
+def _unit_display(direction: sp.Matrix):
+    """1/√(290 − 2√145) (0, 12, √145 − 1): a unit vector as its direction over its length."""
+    from rbdsolve.report.math import Scaled
+
+    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    vector = sp.ImmutableMatrix([list(direction)])
+    return vector if length == 1 else Scaled(1 / length, vector)
+
+
+def _cubic(poly: sp.Poly):
+    from rbdsolve.report.math import Product, Terms
+
+    kappa = sp.Symbol("kappa")
+    return Terms(tuple(Product(c, (kappa**k,) if k else ()) for (k,), c in poly.terms()))
+
+
+def _size(value: sp.Expr, model: Model) -> float:
+    sample = {s: model.values.get(s, 1) for s in value.free_symbols}
+    return float(sp.re(sp.N(value.xreplace(sample))))
+
+
+def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Matrix]:
+    """Directions spanning the null space of Ĵ − κ1, cleared of denominators, first
+    nonzero entry positive: (0, 12, √145 − 1). A repeated moment's plane gets an
+    orthogonal pair (Gram–Schmidt). Divide by the length for unit vectors."""
+    null = (J_hat - root * sp.eye(3)).applyfunc(tidy).nullspace(simplify=True)
+    if len(null) != multiplicity:
+        raise UnsolvedError(f"could not find the principal axes for the moment {sp.sstr(root)}")
+    directions: list[sp.Matrix] = []
+    for v in null:
+        for u in directions:
+            v = v - (u.dot(v) / u.dot(u)) * u
+        first = next(x for x in v if tidy(x) != 0)
+        directions.append(_first_positive(_integral((v / first).applyfunc(tidy))))
+    return directions
+
+
+def _integral(v: sp.Matrix) -> sp.Matrix:
+    """The direction of v with its rational denominators cleared."""
+    denominators = [sp.fraction(sp.together(x))[1] for x in v]
+    scale = sp.lcm([d for d in denominators if d.is_Integer] or [1])
+    return (v * scale).applyfunc(sp.expand)
+
+
+def _first_positive(v: sp.Matrix) -> sp.Matrix:
+    """The sign convention: the first nonzero component is positive."""
+    first = next(x for x in v if x != 0)
+    return -v if first.could_extract_minus_sign() else v
+
+
+def _to_time(answers: InertiaAnswers, model: Model) -> InertiaAnswers:
+    """Answers that depend on the configuration show coordinates as functions of t."""
+    if not model.q:
+        return answers
+    convert = model.to_time
+    return InertiaAnswers(
+        convert(answers.mass), tuple(convert(x) for x in answers.centre),
+        tuple(convert(x) for x in answers.about) if answers.about is not None else None,
+        convert(answers.J_G), convert(answers.J),
+        tuple(convert(x) for x in answers.principal_moments),
+        tuple(tuple(convert(x) for x in v) for v in answers.principal_axes),
+        tuple(convert(x) for x in answers.repeated),
+    )

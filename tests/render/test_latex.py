@@ -1,0 +1,37 @@
+"""LaTeX output: plain ASCII-safe text for pdflatex, and, where a TeX engine is
+installed, the whole corpus compiles."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import PROBLEMS
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_file
+from rbdsolve.render.latex import render_document, text
+from rbdsolve.solvers import solve_problem
+
+
+def test_prose_becomes_latex_text() -> None:
+    assert text("λ₁ > 0, J_xy = −∫ x y dm, ½ m v·v") == (
+        "\\ensuremath{\\lambda_1} > 0, J\\_xy = \\ensuremath{-\\int} x y dm, "
+        "\\ensuremath{\\tfrac12} m v\\ensuremath{\\cdot}v"
+    )
+    assert text("θ̇ and φ̈") == "\\ensuremath{\\dot{\\theta}} and \\ensuremath{\\ddot{\\varphi}}"
+    assert text("50% & #1") == "50\\% \\& \\#1"
+    assert text("☃") == "[U+2603]"
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="no TeX engine installed")
+def test_the_corpus_compiles(tmp_path) -> None:
+    files = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
+    reports = [solve_problem(build_model(load_file(p))) for p in files]
+    source = tmp_path / "all.tex"
+    source.write_text(render_document(reports), encoding="utf-8")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", source.name],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+    assert (tmp_path / "all.pdf").stat().st_size > 10_000
