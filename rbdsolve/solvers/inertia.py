@@ -70,15 +70,15 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         steps.append(st.equation("In the frame with unit vectors (rows of A), J' = A J Aᵀ:",
                                  Relation(sp.Symbol("A"), sp.ImmutableMatrix(A)),
                                  _show("J'", J, symbols)))
-    moments, axes, repeated, principal_steps = principal(J, symbols, model)
-    steps += principal_steps
-    steps.append(st.note(CONVENTION))
+    found = principal(J, symbols, model)
+    steps += [*found.steps, st.note(CONVENTION)]
     answers = InertiaAnswers(
         body.mass, tuple(tidy(x) for x in body.position),
         tuple(about) if about is not None else None,
-        sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), moments, axes, repeated,
+        sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), found.moments, found.axes, found.repeated,
     )
-    return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps))
+    return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps),
+                    warnings=found.warnings)
 
 
 def _show(name: str, J: sp.Matrix, symbols: set) -> Relation:
@@ -146,19 +146,34 @@ def _frame(opts: InertiaOptions, model: Model) -> sp.Matrix:
     return A
 
 
-def principal(J: sp.Matrix, symbols: set, model: Model):
-    """Principal moments (ascending) and unit principal axes of a symmetric tensor."""
+@dataclass(frozen=True)
+class Principal:
+    moments: tuple[sp.Expr, ...]
+    axes: tuple[tuple[sp.Expr, ...], ...]
+    repeated: tuple[sp.Expr, ...]
+    steps: tuple[st.Step, ...]
+    warnings: tuple[str, ...]
+
+
+MAX_ROOT_OPS = 40  # a closed form longer than this is no help to a reader
+
+
+def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
+    """Principal moments (ascending) and unit principal axes of a symmetric tensor:
+    closed forms when they are compact; for a tensor that is numeric apart from its
+    scale, numpy's symmetric eigensolver otherwise (and a warning says so)."""
     scale = common_scale(list(J), symbols)
     scale = -scale if scale.could_extract_minus_sign() else scale
     J_hat = (J / scale).applyfunc(tidy)
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
-    found = sp.roots(poly, LAMBDA, trig=True) if J_hat.is_diagonal() is False else {}
-    if J_hat.is_diagonal():
-        found = {}
-        for i in range(3):
-            found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
-    if sum(found.values()) != 3:
-        raise UnsolvedError("no closed form for the principal moments of this tensor")
+    steps = [st.equation("Principal moments: det(λ1 − J) = 0; with λ = s κ, s the common scale:",
+                         Relation(sp.Symbol("s"), scale), Relation(_cubic(poly), sp.Integer(0)))]
+    found = _closed_form(J_hat, poly)
+    if found is None:
+        if J_hat.free_symbols:
+            raise UnsolvedError("the principal moments have no compact closed form here; give "
+                                "parameter values for numeric ones")
+        return _numeric_principal(J_hat, scale, steps)
     roots = sorted(((tidy(r), k) for r, k in found.items()), key=lambda rk: _size(rk[0], model))
     moments, axes, repeated = [], [], []
     for root, multiplicity in roots:
@@ -166,18 +181,50 @@ def principal(J: sp.Matrix, symbols: set, model: Model):
         axes += _unit_axes(J_hat, root, multiplicity)
         if multiplicity > 1:
             repeated.append(tidy(scale * root))
-    steps = [st.equation("Principal moments: det(λ1 − J) = 0; with λ = s κ, s the common scale:",
-                         Relation(sp.Symbol("s"), scale),
-                         Relation(_cubic(poly), sp.Integer(0)))]
     for i, (moment, axis) in enumerate(zip(moments, axes), start=1):
         steps.append(st.result(f"Principal moment {i} and its axis (a unit vector):",
                                Relation(sp.Symbol(f"J_{i}"), moment),
                                Relation(sp.Symbol(f"e_{i}"), _unit_display(axis))))
-    units = tuple(tuple(tidy(x / sp.sqrt(sp.expand(d.dot(d)))) for x in d) for d in axes)
     for value in repeated:
         steps.append(st.note("A repeated moment: every axis in the plane of its two axes above is "
                              "a principal axis,", Relation(sp.Symbol("J"), value)))
-    return tuple(moments), units, tuple(repeated), steps
+    return Principal(tuple(moments), tuple(_unit(d) for d in axes), tuple(repeated), tuple(steps), ())
+
+
+def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
+    """{root: multiplicity} in closed form, or None when no compact real form is found
+    (an irreducible cubic with irrational coefficients gives Cardano's formula in i)."""
+    if J_hat.is_diagonal():
+        found: dict[sp.Expr, int] = {}
+        for i in range(3):
+            found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
+        return found
+    found = sp.roots(poly, LAMBDA, trig=True)
+    if sum(found.values()) != 3:
+        return None
+    if any(r.has(sp.I) or sp.count_ops(r) > MAX_ROOT_OPS for r in found):
+        return None
+    return found
+
+
+def _numeric_principal(J_hat: sp.Matrix, scale: sp.Expr, steps: list[st.Step]) -> Principal:
+    """numpy.linalg.eigh on Ĵ: ascending moments, orthonormal axes, to about 1e-15."""
+    import numpy as np
+
+    values, vectors = np.linalg.eigh(np.array(J_hat.evalf(20).tolist(), dtype=float))
+    moments = tuple(scale * sp.Float(v, 15) for v in values)
+    axes = []
+    for k in range(3):
+        v = vectors[:, k]
+        first = next(x for x in v if abs(x) > 1e-12)
+        axes.append(tuple(sp.Float(x if first > 0 else -x, 15) for x in v))
+    note = ("No compact closed form for these roots: the principal moments and axes are "
+            "numeric (numpy's symmetric eigensolver, relative error about 1e-15).")
+    for i, (moment, axis) in enumerate(zip(moments, axes), start=1):
+        steps.append(st.result(f"Principal moment {i} and its axis (numeric):",
+                               Relation(sp.Symbol(f"J_{i}"), moment),
+                               Relation(sp.Symbol(f"e_{i}"), sp.ImmutableMatrix([list(axis)]))))
+    return Principal(moments, tuple(axes), (), tuple(steps), (note,))
 
 
 def _unit_display(direction: sp.Matrix):
@@ -205,6 +252,8 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
     """Directions spanning the null space of Ĵ − κ1, cleared of denominators, first
     nonzero entry positive: (0, 12, √145 − 1). A repeated moment's plane gets an
     orthogonal pair (Gram–Schmidt). Divide by the length for unit vectors."""
+    if multiplicity == 1 and not _surd(root):
+        return [_first_positive(_adjugate_column(J_hat, root))]
     null = (J_hat - root * sp.eye(3)).applyfunc(tidy).nullspace(simplify=True)
     if len(null) != multiplicity:
         raise UnsolvedError(f"could not find the principal axes for the moment {sp.sstr(root)}")
@@ -215,6 +264,30 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
         first = next(x for x in v if tidy(x) != 0)
         directions.append(_first_positive(_integral((v / first).applyfunc(tidy))))
     return directions
+
+
+def _unit(direction: sp.Matrix) -> tuple[sp.Expr, ...]:
+    """direction/|direction|; tidied when it is made of surds (else left as it is: a
+    trigonometric cubic root does not shorten, and expanding it is slow)."""
+    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    unit = [x / length for x in direction]
+    return tuple(tidy(x) if _surd(x) else x for x in unit)
+
+
+def _surd(value: sp.Expr) -> bool:
+    """Rational, or built from rationals with square roots only (nullspace stays fast)."""
+    return all(p.exp.is_Rational and p.exp.q in (1, 2) for p in value.atoms(sp.Pow)) and not value.atoms(
+        sp.Function)
+
+
+def _adjugate_column(J_hat: sp.Matrix, root: sp.Expr) -> sp.Matrix:
+    """For a simple root κ, adj(κ1 − Ĵ) has rank one: its largest column is the axis
+    (the cofactor method; no symbolic elimination on the cubic's trigonometric roots)."""
+    kappa = sp.Dummy("kappa")
+    adjugate = (kappa * sp.eye(3) - J_hat).adjugate().applyfunc(sp.expand)
+    columns = [adjugate[:, j].xreplace({kappa: root}) for j in range(3)]
+    size = [sum(abs(complex(sp.N(x.xreplace({s: 1 for s in x.free_symbols})))) for x in c) for c in columns]
+    return columns[max(range(3), key=lambda j: size[j])].applyfunc(sp.expand)
 
 
 def _integral(v: sp.Matrix) -> sp.Matrix:
