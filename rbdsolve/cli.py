@@ -14,7 +14,7 @@ from pathlib import Path
 import click
 
 from rbdsolve import __version__
-from rbdsolve.errors import ExitCode, InputError, RbdError
+from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError
 
 FORMATS = ("terminal", "markdown", "latex", "json")
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
@@ -88,7 +88,7 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
 @click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")
 def solve(paths, fmt, output, sets, debug):
     """Solve problem files and print their step-by-step solutions."""
-    code = _guard(debug, lambda: _solve(paths, fmt, output, sets))
+    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug))
     sys.exit(int(code))
 solve.help = (solve.help or "") + SOLVE_EXAMPLES
 
@@ -140,7 +140,7 @@ def _check(paths) -> ExitCode:
     return worst
 
 
-def _solve(paths, fmt: str, output: str | None, sets) -> ExitCode:
+def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False) -> ExitCode:
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_file
     from rbdsolve.solvers import Options, solve_problem
@@ -153,12 +153,14 @@ def _solve(paths, fmt: str, output: str | None, sets) -> ExitCode:
             _check_sets(values, problem, path)
             report = solve_problem(build_model(problem), Options(values=values))
         except InputError as exc:
-            click.echo(str(exc), err=True)
-            worst = max(worst, exc.exit_code)
-            if fmt == "json":
-                from rbdsolve.render.json import render_error
-
-                chunks.append(render_error(str(path), exc))
+            worst = max(worst, _file_failed(str(path), exc, str(exc), fmt, chunks))
+            continue
+        except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others
+            if debug:
+                traceback.print_exc()
+            message = (f"{path}: rbdsolve: internal error: {type(exc).__name__}: {exc} "
+                       "(run with --debug for the traceback)")
+            worst = max(worst, _file_failed(str(path), InternalError(str(exc)), message, fmt, chunks))
             continue
         reports.append(report)
         if not report.solved:
@@ -169,6 +171,15 @@ def _solve(paths, fmt: str, output: str | None, sets) -> ExitCode:
             chunks.append(render_report(report))
     _write(fmt, reports, chunks, output)
     return worst
+
+
+def _file_failed(path: str, exc, message: str, fmt: str, chunks: list[str]) -> ExitCode:
+    click.echo(message, err=True)
+    if fmt == "json":
+        from rbdsolve.render.json import render_error
+
+        chunks.append(render_error(path, exc))
+    return exc.exit_code
 
 
 def _check_sets(values: dict[str, Fraction], problem, path: Path) -> None:

@@ -71,6 +71,17 @@ class InputError(RbdError):
         return f"{self.location}: {self.message}" if self.location else self.message
 
 
+class InternalError(RbdError):
+    """A bug: reported in one line with exit code 3 (the traceback with --debug)."""
+
+    exit_code = ExitCode.INTERNAL
+
+    def __init__(self, message: str):
+        self.message = message
+        self.location = None
+        super().__init__(message)
+
+
 class UnsolvedError(RbdError):
     """A well-formed question that rbdsolve could not answer. Exit code 1."""
 

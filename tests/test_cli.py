@@ -140,3 +140,20 @@ def test_document_formats(fmt, marker, tmp_path) -> None:
 def test_help_has_examples() -> None:
     assert "Examples:" in run("solve", "--help").output
     assert run("--help").exit_code == 0
+
+
+def test_one_internal_error_does_not_lose_the_other_files(monkeypatch) -> None:
+    from rbdsolve import solvers
+
+    real = solvers.solve_problem
+
+    def flaky(model, options=solvers.Options()):
+        if model.problem.title == "Pendulum (uniform rod)" or "pendulum.yaml" in model.problem.file:
+            raise ZeroDivisionError("boom")
+        return real(model, options)
+
+    monkeypatch.setattr(solvers, "solve_problem", flaky)
+    result = CliRunner().invoke(main, ["solve", P1, PENDULUM, "-f", "json"])
+    assert result.exit_code == 3
+    lines = [json.loads(x) for x in result.stdout.splitlines()]
+    assert lines[0]["ok"] is True and lines[1]["ok"] is False and lines[1]["exit_code"] == 3

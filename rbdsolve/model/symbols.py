@@ -12,6 +12,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.errors import InputError
 from rbdsolve.model.state import State, t
 
 from rbdsolve.problem import expr as ex
@@ -50,10 +51,18 @@ class Symbols:
         return Symbols(self.parameters, self.state, {**self.points, **points})
 
     def scalar(self, expr: ex.Expr) -> sp.Expr:
-        return to_sympy(expr.tree, self)
+        return _real(to_sympy(expr.tree, self), expr)
 
     def vector(self, expr: ex.Expr) -> sp.Matrix:
-        return to_sympy(expr.tree, self)
+        return _real(to_sympy(expr.tree, self), expr)
+
+
+def _real(value, expr: ex.Expr):
+    """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show."""
+    for item in (value if isinstance(value, sp.MatrixBase) else [value]):
+        if item.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or item.has(sp.I) or item.is_real is False:
+            raise InputError(f"'{expr.text}' is not a real number here ({sp.sstr(item)})", expr.loc)
+    return value
 
 
 def to_sympy(tree: ex.Tree, names: Symbols):

@@ -267,6 +267,8 @@ class _Checker:
         left, lk = self.visit(node.left)
         right, rk = self.visit(node.right)
         kind = self._combine(node, op, lk, rk)
+        if op == "/" and constant_value(right) == 0:
+            raise self.fail(node, "division by zero")
         if op == "**":
             self._check_power(node, left, right)
         return BinOp(op, left, right), kind
@@ -293,6 +295,8 @@ class _Checker:
         value = constant_value(exponent)
         if value is not None and abs(value) > MAX_EXPONENT:
             raise self.fail(node, f"exponent {value} is too large (the limit is {MAX_EXPONENT})")
+        if value is not None and value < 0 and constant_value(base) == 0:
+            raise self.fail(node, "division by zero (0 to a negative power)")
         if value is None and constant_value(base) is not None and _has_power(exponent):
             raise self.fail(node, "a number raised to a power tower is refused")
 
@@ -415,6 +419,8 @@ def parse_number(text: str, loc: Location, plain: bool = True) -> Fraction:
     value = constant_value(expr.tree)
     if value is None:
         raise InputError(f"expected a number, found '{text.strip()}'", loc)
+    if abs(value) > 10**300:
+        raise InputError(f"the number {text.strip()} is too large (the limit is 1e300)", loc)
     return value
 
 

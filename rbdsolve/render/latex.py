@@ -24,18 +24,21 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
             "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\^{}"}  # fmt: skip
 _MATH_CHARS = {
     "½": r"\tfrac12", "·": r"\cdot", "∂": r"\partial", "−": "-", "⇒": r"\Rightarrow",
-    "√": r"\surd", "ü": r"\ddot{u}", "∈": r"\in", "≤": r"\le", "≥": r"\ge", "×": r"\times",
+    "√": r"\surd", "∈": r"\in", "≤": r"\le", "≥": r"\ge", "×": r"\times",
     "²": "^2", "³": "^3", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3", "ᵀ": "^T",
     "∫": r"\int", "±": r"\pm", "∓": r"\mp", "≈": r"\approx", "≠": r"\neq", "∝": r"\propto",
     "°": r"^\circ", "→": r"\to", "∞": r"\infty", "⁴": "^4",
 }  # fmt: skip
-_GREEK_CHARS = {v: "\\" + ("varphi" if k == "phi" else k) for k, v in GREEK.items()}
+_GREEK_CHARS = {v: "\\" + ("varphi" if k == "phi" else k) for k, v in GREEK.items()
+                if k not in ("lamda", "varphi")}
 
 
 def text(value: str) -> str:
-    """Prose with unicode math symbols -> LaTeX text with inline math."""
+    """Prose with unicode math symbols -> LaTeX text with inline math. A letter followed by
+    a combining dot (U+0307) or diaeresis (U+0308) is a time derivative, q̇ or q̈;
+    precomposed letters (ä, é, å) are text and pass through."""
     out = []
-    chars = list(unicodedata.normalize("NFD", value))
+    chars = list(value)
     i = 0
     while i < len(chars):
         ch = chars[i]

@@ -18,7 +18,7 @@ from rbdsolve.report.math import Label, Math, Product, Scaled, Terms
 
 GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
-    "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "mu": "μ",
+    "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "lamda": "λ", "mu": "μ",
     "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
     "phi": "φ", "varphi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
     "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
@@ -52,8 +52,7 @@ def unicode_name(name: str) -> str:
 def latex_name(name: str) -> str:
     base, sub = split_name(name)
     base = "\\" + base if base in GREEK else (base if len(base) == 1 else f"\\mathrm{{{base}}}")
-    if base == "\\phi":
-        base = "\\varphi"
+    base = {"\\phi": "\\varphi", "\\lamda": "\\lambda"}.get(base, base)
     if not sub:
         return base
     sub_tex = "\\" + sub if sub in GREEK else sub.replace("_", "\\_")

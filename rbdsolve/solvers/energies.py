@@ -35,8 +35,22 @@ def summarize_model(model: Model) -> ModelSummary:
                            "mass)", "T", T, model)
     steps += _energy_steps("Potential energy, −m g·r per body in gravity and ½ k s² per spring of "
                            "stretch s", "V", V, model)
+    steps += _unturned(model)
     return ModelSummary(model.state.functions(), model.to_time(T.total), model.to_time(V.total),
                         tuple(steps))
+
+
+def _unturned(model: Model) -> list[st.Step]:
+    """A body with rotational inertia that moves with an angle but has no ``angle`` does
+    not turn, and its rotational energy is zero: say so, in case that was not meant."""
+    out = []
+    for body in model.bodies:
+        moves = [n for q, n in zip(model.q, model.coordinate_names())
+                 if q in model.angles and body.position.has(q)]
+        if body.angle is None and moves and body.inertia != sp.zeros(3, 3):
+            out.append(st.note(f"Note: {body.name} has no 'angle', so it moves with {', '.join(moves)} "
+                               "without turning (no rotational energy). If it turns, give its angle."))
+    return out
 
 
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:

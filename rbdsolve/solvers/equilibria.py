@@ -19,7 +19,7 @@ entries are symbolic:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 from typing import Mapping
 
@@ -48,6 +48,7 @@ class Equilibrium:
     stability: Stability
     hessian: sp.ImmutableMatrix
     reason: str  # why this stability: the eigenvalue signs, or what is undecided
+    conditions: tuple[sp.Expr, ...] = ()  # it exists only where each is ≥ 0
 
 
 @dataclass(frozen=True)
@@ -81,15 +82,16 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     for sol in solutions:
         full = {q: _turn(sol.get(q, sp.Integer(0))) if q in model.angles else sol.get(q, sp.Integer(0))
                 for q in model.q}
-        if full not in out:
+        if full not in out and existence(full, model) is not None:
             out.append(full)
     return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
 
 
 def _turn(angle: sp.Expr) -> sp.Expr:
-    """A numeric angle brought into (−π, π]."""
+    """An angle brought into (−π, π]: numbers exactly; c + 2πk by dropping the turns."""
     if not angle.is_number:
-        return angle
+        turns = [t for t in sp.Add.make_args(angle) if (t / (2 * sp.pi)).is_integer]
+        return angle - sp.Add(*turns)
     turned = angle - 2 * sp.pi * sp.ceiling((angle - sp.pi) / (2 * sp.pi))
     return sp.nsimplify(turned) if turned.is_rational else turned
 
@@ -132,13 +134,37 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
     return out
 
 
+def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
+    """Where an equilibrium exists: None if it is not real at the given parameter values,
+    else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
+    needed = set()
+    for value in at.values():
+        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
+    conditions = []
+    for condition in sorted(needed, key=sp.default_sort_key):
+        sign = sign_of(tidy(condition), model.values)
+        if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
+            return None  # not real for these parameter values
+        if isinstance(sign, Undecided):
+            conditions.append(tidy(condition))
+    return tuple(conditions)
+
+
+def _numeric(expr: sp.Expr, model: Model) -> bool:
+    """Does the expression become a number once the given values are put in?"""
+    return not expr.xreplace(model.values).free_symbols
+
+
 def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
-    """The angle in (−π, π] with this sine and cosine."""
+    """The angle in (−π, π] with this sine and cosine; ±acos(c) when s = ±√(1 − c²)."""
     angle = sp.atan2(sin_value, cos_value)
     if angle.is_number:
         return sp.nsimplify(angle) if angle.is_rational else angle
     if sin_value.is_zero:
         return sp.Integer(0) if cos_value.is_positive else sp.pi
+    if sp.expand(sin_value**2 - (1 - cos_value**2)) == 0:
+        return -sp.acos(cos_value) if sin_value.could_extract_minus_sign() else sp.acos(cos_value)
     return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
 
 
@@ -165,6 +191,12 @@ def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
 
 
 def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
+    """The equilibrium's stability from the Hessian of V, and where it exists."""
+    found = _classify(model, at)
+    return replace(found, conditions=existence(at, model) or ())
+
+
+def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
     H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
@@ -246,7 +278,10 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
     if values:
         number = value.xreplace(values)
         if number.is_number:
-            return int(sp.sign(sp.N(number, 30)))
+            z = complex(sp.N(number, 30))
+            if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+                return Undecided(value)  # not real at these values
+            return 0 if z.real == 0 else (1 if z.real > 0 else -1)
     return Undecided(value)
 
 
@@ -278,7 +313,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     ]
     coordinates = model.state.functions()
     for number, eq in enumerate(equilibria, start=1):
-        steps.append(st.result(f"Equilibrium {number}:", configuration(coordinates, list(eq.at.values()))))
+        exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
+        steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
+                               *[Relation(c, sp.Integer(0), "≥") for c in eq.conditions]))
         steps.append(st.equation(
             f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
             Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.model.tidy import tidy
@@ -32,7 +32,7 @@ from rbdsolve.report.math import Label
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
 
-LAMBDA = sp.Symbol("lambda")
+LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
 CONVENTION = ("Products of inertia are the tensor's off-diagonal entries, J_xy = −∫ x y dm "
               "(the SG2150 convention).")
@@ -142,7 +142,7 @@ def _frame(opts: InertiaOptions, model: Model) -> sp.Matrix:
     rows = [names.vector(e).applyfunc(tidy) for e in opts.axes]
     A = sp.Matrix.hstack(*rows).T
     if (A * A.T - sp.eye(3)).applyfunc(lambda x: sp.simplify(x)) != sp.zeros(3, 3):
-        raise InputError("the axes must be orthonormal unit vectors (A Aᵀ = 1)", opts.axes[0].loc)
+        raise UnsolvedError(f"{opts.axes[0].loc}: the axes must be orthonormal unit vectors (A Aᵀ = 1)")
     return A
 
 

@@ -23,7 +23,7 @@ from typing import Mapping
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
 from rbdsolve.model.tidy import tidy
@@ -63,11 +63,11 @@ class ModesAnswers:
     shapes: tuple[tuple[sp.Expr, ...], ...]  # one amplitude vector per eigenvalue
 
 
-LAMBDA = sp.Symbol("lambda")
+LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 MU = sp.Symbol("mu")
 # det(K − λM) as it is written, in that order (non-commutative symbols keep it)
 DET = sp.Function("det")(sp.Symbol("K", commutative=False)
-                         - sp.Symbol("lambda", commutative=False) * sp.Symbol("M", commutative=False))
+                         - sp.Symbol("lamda", commutative=False) * sp.Symbol("M", commutative=False))
 
 
 def _descending(poly: sp.Poly) -> Terms:
@@ -131,7 +131,8 @@ def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.E
         residual = [tidy(g.xreplace(at)) for g in gradient(model)]
         for (name, expr), r in zip(about, residual):
             if sp.simplify(r) != 0:
-                raise InputError(f"not an equilibrium: ∂V/∂{name} = {sp.sstr(r)} there", expr.loc)
+                raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = "
+                                    f"{sp.sstr(model.readable(r))} there")
         return at, {n: at[q] for n, q in zip(names, model.q)}
     solutions, _ = find_equilibria(model)
     stable = [s for s in solutions if classify(model, s).stability is Stability.STABLE]
@@ -257,7 +258,7 @@ def _steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> t
         st.given("Small motions q = q₀ + u about the equilibrium",
                  configuration(model.state.functions(), list(a.about.values()))),
         st.equation(
-            "Linearized equations M ü + K u = 0, with M = ∂²T/∂q̇∂q̇ and K = ∂²V/∂q∂q "
+            "Linearized equations M u\u0308 + K u = 0, with M = ∂²T/∂q̇∂q̇ and K = ∂²V/∂q∂q "
             "at the equilibrium:",
             Relation(sp.Symbol("M"), scaled_matrix(a.M, symbols)),
             Relation(sp.Symbol("K"), scaled_matrix(a.K, symbols)),

@@ -79,3 +79,18 @@ def test_angles_are_reported_in_one_turn() -> None:
     report = solve_problem(build_model(load_text(scene, "s.yaml")))
     values = [eq.at["theta"] for eq in report.solutions[1].answers.equilibria]
     assert all(v.is_number and -3.1416 < float(v) <= 3.1416 for v in values)
+
+
+@pytest.mark.parametrize("position, words", [("[1/0, 0]", "division by zero"),
+                                             ("[sqrt(-1)*l, 0]", "is not a real number"),
+                                             ("[log(0)*l, 0]", "is not a real number")])
+def test_values_that_are_not_real_numbers(position: str, words: str) -> None:
+    scene = BASE.replace("l * [sin(theta), -cos(theta)]", f"'{position}'")
+    with pytest.raises(InputError, match=words.replace("(", r"\(")):
+        build_model(load_text(scene, "s.yaml"))
+
+
+def test_a_body_that_should_turn_gets_a_note() -> None:
+    scene = BASE.replace("bob: {shape: particle, mass: m, at: P}", "rod: {shape: rod, mass: m, length: l, at: P}")
+    report = solve_problem(build_model(load_text(scene, "s.yaml")))
+    assert any("rod has no 'angle'" in s.text for s in report.model.steps)

@@ -35,3 +35,8 @@ def test_the_corpus_compiles(tmp_path) -> None:
                          cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout[-2000:]
     assert (tmp_path / "all.pdf").stat().st_size > 10_000
+
+
+def test_accented_text_passes_through() -> None:
+    assert text("Müller, café, Å, ö") == "Müller, café, Å, ö"
+    assert text("M u\u0308 + K u = 0") == "M \\ensuremath{\\ddot{u}} + K u = 0"

@@ -3,9 +3,7 @@
 from __future__ import annotations
 
 import sympy as sp
-import pytest
 
-from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -41,11 +39,12 @@ def test_modes_about_the_upside_down_rod_grow() -> None:
     assert result.answers.frequencies == (None,)
 
 
-def test_about_a_point_that_is_not_an_equilibrium_is_a_located_error() -> None:
-    with pytest.raises(InputError) as info:
-        solve(ROD + "questions:\n  - modes: {about: {theta: pi/2}}\n")
-    assert "not an equilibrium" in info.value.message
-    assert info.value.location.key_path() == "questions[0].modes.about.theta"
+def test_about_a_point_that_is_not_an_equilibrium_fails_only_that_question() -> None:
+    report = solve(ROD + "questions:\n  - eom\n  - modes: {about: {theta: pi/2}}\n")
+    eom, modes = report.solutions
+    assert eom.solved and not modes.solved
+    assert "not an equilibrium: ∂V/∂theta = g*l*m/2 there" in modes.error
+    assert "questions[1].modes.about.theta" in modes.error
 
 
 def test_a_coordinate_that_v_ignores_is_neutral() -> None:
@@ -98,3 +97,33 @@ questions:
     # of mass still: (M + m) x + m l θ = 0, so a = (1, −(M + m)/(m l)).
     assert answers.shapes[0] == (1, 0)
     assert sp.simplify(answers.shapes[1][1] + (M + m) / (m * l)) == 0
+
+
+COND = """
+parameters: {m: mass, l: length, g: gravity, k: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+  A: [0, -l*cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, A]}
+questions: [equilibria]
+"""
+
+
+def test_equilibria_that_exist_only_for_some_parameters() -> None:
+    # By hand: ∂V/∂θ = l (m g + k l cos θ) sin θ: θ = 0, π, and cos θ = −m g/(k l),
+    # which exists only when k l ≥ m g.
+    found = solve(COND).solutions[0].answers.equilibria
+    assert len(found) == 4
+    conditional = [e for e in found if e.conditions]
+    assert len(conditional) == 2
+    g, m, k, l = sp.symbols("g m k l", positive=True)
+    assert sp.simplify(conditional[0].conditions[0] - (1 - (m * g / (k * l)) ** 2)) == 0
+    low = solve(COND + "values: {m: 1, l: 1, g: 10, k: 1}\n").solutions[0].answers.equilibria
+    assert sorted(float(e.at["theta"]) for e in low) == [0.0, float(sp.pi)]
+    high = solve(COND + "values: {m: 1, l: 1, g: 10, k: 20}\n").solutions[0].answers.equilibria
+    assert len(high) == 4

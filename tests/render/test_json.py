@@ -1,0 +1,44 @@
+"""The JSON contract: every exact answer of every problem reads back with sympify."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+
+from conftest import PROBLEMS
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_file
+from rbdsolve.render.json import render_report
+from rbdsolve.solvers import solve_problem
+
+FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
+
+
+PROSE = {"reason", "stability", "motions"}  # words, not expressions
+
+
+def strings(tree):
+    if isinstance(tree, str):
+        yield tree
+    elif isinstance(tree, dict):
+        for key, value in tree.items():
+            if key not in PROSE:
+                yield from strings(value)
+    elif isinstance(tree, list):
+        for value in tree:
+            yield from strings(value)
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
+def test_answers_read_back(path) -> None:
+    line = json.loads(render_report(solve_problem(build_model(load_file(path)))))
+    names = {n: sp.Symbol(n, positive=True) for n in line["symbols"]}
+    for text in [line["model"]["T"], line["model"]["V"]]:
+        if text is not None:
+            sp.sympify(text, locals=names)
+    for result in line["results"]:
+        for text in strings(result["answers"] or {}):
+            expr = sp.sympify(text, locals=names)  # raises if not readable
+            assert isinstance(expr, sp.Basic), text
