@@ -85,13 +85,12 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError("the mass matrix is singular at this configuration: "
                             "a coordinate carries no inertia")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
-    eigenvalues = [lam for lam, _ in spectrum.pairs]
+    eigenvalues = [lam for lam, _, _ in spectrum.pairs]
     motions = _motions(eigenvalues, K, model)
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
                         for lam, mo in zip(eigenvalues, motions))
-    shapes = _shapes(spectrum.K, spectrum.M, [root for _, root in spectrum.pairs], model.values)
-    characteristic = tidy((K - LAMBDA * M).det(method="berkowitz"))
-    answers = ModesAnswers(chosen, M, K, characteristic, tuple(eigenvalues), frequencies, motions, shapes)
+    shapes = _shapes(spectrum, model.values)
+    answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes)
     return Solution("modes", Route.EXACT, answers, _steps(answers, model, spectrum.steps))
 
 
@@ -102,8 +101,10 @@ class _Spectrum:
 
     K: sp.Matrix
     M: sp.Matrix
-    pairs: list[tuple[sp.Expr, sp.Expr]]  # (λ, root of det(K − root M) = 0)
+    x: sp.Symbol  # the variable of the eigenproblem solved: μ (scaled) or λ
+    pairs: list[tuple[sp.Expr, sp.Expr, sp.Poly]]  # (λ, root, the irreducible factor it solves)
     steps: tuple[Relation, ...]
+    characteristic: sp.Expr  # det(K − λM)
 
 
 def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectrum:
@@ -112,14 +113,16 @@ def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectr
     M_hat, K_hat = M / s_M, K / s_K
     if _rational(M_hat) and _rational(K_hat):
         poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
-        pairs = [(tidy(scale * mu), mu) for mu in _roots(poly, MU)]
+        pairs = [(tidy(scale * mu), mu, f) for mu, f in _rational_roots(poly)]
         steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"),
                  Relation(MU, tidy(LAMBDA / scale)))
-        return _Spectrum(K_hat, M_hat, _ascending(pairs, model), steps)
+        # det(K − λM) = s_Kⁿ det(K̂ − μM̂) with μ = λ s_M/s_K
+        characteristic = tidy(s_K ** K.rows * poly.as_expr().subs(MU, LAMBDA * s_M / s_K))
+        return _Spectrum(K_hat, M_hat, MU, _ascending(pairs, model), steps, characteristic)
     poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
-    pairs = [(lam, lam) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
+    pairs = [(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
     steps = (Relation(DET, sp.Integer(0)), Relation(_descending(poly), sp.Integer(0), lead="⇒"))
-    return _Spectrum(K, M, _ascending(pairs, model), steps)
+    return _Spectrum(K, M, LAMBDA, _ascending(pairs, model), steps, tidy(poly.as_expr()))
 
 
 def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
@@ -152,6 +155,27 @@ def _charpoly_rational(K_hat: sp.Matrix, M_hat: sp.Matrix) -> sp.Poly:
     return sp.Poly(A.det().as_expr(), MU)
 
 
+MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CRootOf
+
+
+def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
+    """Every root of a polynomial over QQ, with the irreducible factor it belongs to:
+    closed forms for factors of degree ≤ 2 and for cubics with a compact real
+    (trigonometric) form; exact CRootOf(f, k) otherwise. No Ferrari quartics."""
+    out = []
+    for factor, multiplicity in poly.factor_list()[1]:
+        roots = None
+        if factor.degree() <= 3:
+            found = sp.roots(factor, trig=True)
+            if sum(found.values()) == factor.degree() and all(
+                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found):
+                roots = list(found)
+        if roots is None:
+            roots = factor.all_roots()
+        out += [(r, factor) for r in roots for _ in range(multiplicity)]
+    return out
+
+
 def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
     """All roots with multiplicity, in closed form where one exists (else CRootOf)."""
     found = sp.roots(poly, x)
@@ -163,7 +187,7 @@ def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
                         "characteristic polynomial")
 
 
-def _ascending(pairs: list[tuple[sp.Expr, sp.Expr]], model: Model) -> list:
+def _ascending(pairs: list[tuple], model: Model) -> list:
     """Sorted by λ: at the given parameter values, or with every parameter 1."""
 
     def key(pair):
@@ -196,55 +220,57 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Mo
     return tuple(out)
 
 
-def _shapes(K: sp.Matrix, M: sp.Matrix, eigenvalues: list[sp.Expr],
-            values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
+def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
     """An amplitude vector a for each λ, (K − λM) a = 0, scaled so its first nonzero
     entry is 1; a repeated λ takes the next vector of a basis of its mode space.
 
-    For a simple λ with symbolic entries, adj(K − λM) has rank one and its nonzero
-    columns are a (the cofactor method). The ratios a_k/a_first = adj_kj/adj_first,j are
-    reduced modulo the characteristic polynomial p(λ), to polynomials of degree < n in
-    λ, before the root is substituted: exact algebra with no radical simplification.
-    Otherwise (numbers only, or a repeated λ) the null space of K − λM is used.
+    For a simple irrational or symbolic root of an irreducible factor f, adj(K − xM) has
+    rank one there and its nonzero columns are a (the cofactor method). The ratios
+    a_k/a_first = adj_kj/adj_first,j are reduced modulo f to polynomials of degree
+    < deg f before the root is put in: exact algebra, no radical simplification.
+    Rational roots and repeated ones use the null space.
     """
-    counts = {lam: eigenvalues.count(lam) for lam in eigenvalues}
+    K, M, x = spectrum.K, spectrum.M, spectrum.x
+    roots = [root for _, root, _ in spectrum.pairs]
+    counts = {root: roots.count(root) for root in roots}
+    adjugate = None
     bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
     used: dict[sp.Expr, int] = {}
     out = []
-    for lam in eigenvalues:
-        if lam not in bases:
+    for _, root, factor in spectrum.pairs:
+        if root not in bases:
             vector = None
-            if counts[lam] == 1 and lam.free_symbols:
-                vector = _shape_by_adjugate(K, M, lam, values)
+            if counts[root] == 1 and not root.is_Rational:
+                if adjugate is None:
+                    adjugate = (K - x * M).adjugate(method="berkowitz").applyfunc(sp.expand)
+                vector = _shape_mod(adjugate, x, factor.as_expr(), root, values)
             if vector is not None:
-                bases[lam] = [vector]
+                bases[root] = [vector]
             else:
-                null = (K - lam * M).applyfunc(tidy).nullspace(simplify=True)
-                bases[lam] = [_normalize(v) for v in null]
-        k = used.get(lam, 0)
-        used[lam] = k + 1
-        out.append(bases[lam][k] if k < len(bases[lam]) else ())
+                null = (K - root * M).applyfunc(tidy).nullspace(simplify=True)
+                bases[root] = [_normalize(v) for v in null]
+        k = used.get(root, 0)
+        used[root] = k + 1
+        out.append(bases[root][k] if k < len(bases[root]) else ())
     return tuple(out)
 
 
-def _shape_by_adjugate(K: sp.Matrix, M: sp.Matrix, lam: sp.Expr,
-                       values: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...] | None:
-    A = K - LAMBDA * M
-    p = sp.expand(A.det(method="berkowitz"))
-    adjugate = A.adjugate(method="berkowitz").applyfunc(sp.expand)
-    sample = {s: values.get(s, 1) for s in adjugate.free_symbols | lam.free_symbols if s != LAMBDA}
-    at_root = adjugate.xreplace({LAMBDA: lam}).xreplace(sample).evalf()
-    sizes = [sum(abs(x) for x in at_root[:, j]) for j in range(A.cols)]
-    j = max(range(A.cols), key=lambda c: sizes[c])
+def _shape_mod(adjugate: sp.Matrix, x: sp.Symbol, f: sp.Expr, root: sp.Expr,
+               values: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...] | None:
+    """The mode shape at a simple root of f from the adjugate, reduced modulo f."""
+    sample = {s: values.get(s, 1) for s in adjugate.free_symbols | root.free_symbols if s != x}
+    at_root = adjugate.xreplace({x: root}).xreplace(sample).evalf()
+    sizes = [sum(abs(v) for v in at_root[:, j]) for j in range(adjugate.cols)]
+    j = max(range(adjugate.cols), key=lambda c: sizes[c])
     if sizes[j] == 0:
         return None
-    first = next(i for i in range(A.rows) if abs(at_root[i, j]) > 1e-9 * sizes[j])
+    first = next(i for i in range(adjugate.rows) if abs(at_root[i, j]) > 1e-9 * sizes[j])
     try:
-        inverse = sp.invert(adjugate[first, j], p, LAMBDA)
+        inverse = sp.invert(adjugate[first, j], f, x)
     except sp.polys.polyerrors.NotInvertible:
         return None
-    ratios = [sp.rem(sp.expand(adjugate[k, j] * inverse), p, LAMBDA) for k in range(A.rows)]
-    return tuple(sp.factor_terms(sp.together(sp.expand(r.xreplace({LAMBDA: lam})))) for r in ratios)
+    ratios = [sp.rem(sp.expand(adjugate[k, j] * inverse), f, x) for k in range(adjugate.rows)]
+    return tuple(sp.factor_terms(sp.together(sp.expand(r.xreplace({x: root})))) for r in ratios)
 
 
 def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:

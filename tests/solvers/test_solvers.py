@@ -127,3 +127,32 @@ def test_equilibria_that_exist_only_for_some_parameters() -> None:
     assert sorted(float(e.at["theta"]) for e in low) == [0.0, float(sp.pi)]
     high = solve(COND + "values: {m: 1, l: 1, g: 10, k: 20}\n").solutions[0].answers.equilibria
     assert len(high) == 4
+
+
+def test_four_rod_chain_against_a_hand_derivation() -> None:
+    """n equal uniform rods hanging in a chain, about the hanging position. By hand
+    (1-based i, j; rods below a joint carry its motion): M_ij = m l² (n − max(i, j) + ½)
+    for i ≠ j, M_ii = m l² (n − i + ⅓), K = m g l diag(n − i + ½). Eigenvalues from
+    scipy's generalized symmetric solver; mode shapes must satisfy K a = λ M a."""
+    import numpy as np
+    from scipy.linalg import eigh
+
+    n = 4
+    points = ["  P0: [0, 0]"] + [f"  P{i}: P{i - 1} + l*[sin(q{i}), -cos(q{i})]" for i in range(1, n + 1)]
+    bodies = [f"  r{i}: {{shape: rod, mass: m, length: l, at: (P{i - 1} + P{i})/2, angle: q{i}}}"
+              for i in range(1, n + 1)]
+    about = ", ".join(f"q{i}: 0" for i in range(1, n + 1))
+    text = "\n".join(["parameters: {m: mass, l: length, g: gravity}",
+                      f"coordinates: [{', '.join(f'q{i}' for i in range(1, n + 1))}]",
+                      "gravity: [0, -g]", "points:", *points, "bodies:", *bodies,
+                      "values: {m: 1, l: 1, g: 1}", "questions:", f"  - modes: {{about: {{{about}}}}}"])
+    result = solve(text).solutions[0]
+    assert result.solved, result.error
+    M = np.array([[(n - max(i, j) + 0.5) if i != j else (n - i + 1 / 3) for j in range(1, n + 1)]
+                  for i in range(1, n + 1)])
+    K = np.diag([n - i + 0.5 for i in range(1, n + 1)])
+    expected = eigh(K, M, eigvals_only=True)
+    assert np.allclose(result.values["eigenvalues"], expected, rtol=1e-12)
+    for lam, shape in zip(result.values["eigenvalues"], result.values["shapes"]):
+        a = np.array(shape, dtype=float)
+        assert np.abs(K @ a - lam * M @ a).max() < 1e-9 * np.abs(a).max()
