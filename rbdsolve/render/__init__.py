@@ -1,13 +1,4 @@
 """Renderers: one per output format, each a function of reports only.
 
-Only this package (and the CLI) knows about rich.
+Only this package (and the CLI) knows about rich, and only the terminal renderer uses it.
 """
-
-from enum import Enum
-
-
-class Format(Enum):
-    TERMINAL = "terminal"
-    MARKDOWN = "markdown"
-    LATEX = "latex"
-    JSON = "json"

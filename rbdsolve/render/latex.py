@@ -7,7 +7,7 @@ import unicodedata
 
 from rbdsolve.render.markdown import relation_latex
 from rbdsolve.render.mathtext import GREEK
-from rbdsolve.render.terminal import numeric_lines
+from rbdsolve.render.numbers import numeric_lines
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
 
 PREAMBLE = r"""\documentclass[11pt]{article}

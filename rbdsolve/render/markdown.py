@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.render.mathtext import to_latex
-from rbdsolve.render.terminal import numeric_lines
+from rbdsolve.render.numbers import numeric_lines
 from rbdsolve.report.steps import ProblemReport, Relation, Step, StepKind
 
 

@@ -10,8 +10,6 @@ from __future__ import annotations
 import time
 from dataclasses import replace
 
-import sympy as sp
-
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, QuestionKind
@@ -51,4 +49,4 @@ def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
                          summary, solutions, values, symbols)
 
 
-__all__ = ["Options", "SOLVERS", "solve_problem", "solve_question", "sp"]
+__all__ = ["Options", "SOLVERS", "solve_problem", "solve_question"]

@@ -28,7 +28,7 @@ from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report import steps as st
-from rbdsolve.report.math import Label
+from rbdsolve.report.math import Label, Product, Scaled, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
 
@@ -132,8 +132,6 @@ def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: s
 
 
 def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
-    from rbdsolve.report.math import Terms
-
     return Terms((scaled_matrix(a, symbols), scaled_matrix(b, symbols)))
 
 
@@ -229,16 +227,12 @@ def _numeric_principal(J_hat: sp.Matrix, scale: sp.Expr, steps: list[st.Step]) -
 
 def _unit_display(direction: sp.Matrix):
     """1/√(290 − 2√145) (0, 12, √145 − 1): a unit vector as its direction over its length."""
-    from rbdsolve.report.math import Scaled
-
     length = sp.sqrt(sp.expand(direction.dot(direction)))
     vector = sp.ImmutableMatrix([list(direction)])
     return vector if length == 1 else Scaled(1 / length, vector)
 
 
 def _cubic(poly: sp.Poly):
-    from rbdsolve.report.math import Product, Terms
-
     kappa = sp.Symbol("kappa")
     return Terms(tuple(Product(c, (kappa**k,) if k else ()) for (k,), c in poly.terms()))
 
