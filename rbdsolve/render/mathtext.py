@@ -119,12 +119,12 @@ class UnicodePrinter(StrPrinter):
         return super()._print_Pow(expr, rational)
 
     def _print_Mul(self, expr):
-        coeff, rest = expr.as_coeff_Mul()
-        if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
-            sign = "-" if coeff < 0 else ""
-            inner = f"({self._print(rest)})" if rest.is_Add else self._print(rest)
-            return f"{sign}{abs(coeff.p)}/{coeff.q} {inner}"
-        return super()._print_Mul(expr)
+        lead = _rational_lead(expr)
+        if lead is None:
+            return super()._print_Mul(expr)
+        sign, coeff, rest = lead
+        inner = f"({self._print(rest)})" if rest.is_Add else self._print(rest)
+        return f"{sign}{coeff.p}/{coeff.q} {inner}"
 
     def _print_Rational(self, expr):
         return f"{expr.p}/{expr.q}"
@@ -141,6 +141,14 @@ class UnicodePrinter(StrPrinter):
 
     def _print_Equality(self, expr):
         return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
+
+
+def _rational_lead(expr: sp.Mul) -> tuple[str, sp.Rational, sp.Expr] | None:
+    """(sign, |c|, rest) for c·rest with a proper fraction c written first: 7/8 θ̇²."""
+    coeff, rest = expr.as_coeff_Mul()
+    if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
+        return ("-" if coeff < 0 else ""), abs(coeff), rest
+    return None
 
 
 def _has_denominator(expr: sp.Expr) -> bool:
@@ -178,12 +186,12 @@ class TexPrinter(LatexPrinter):
         return super()._print_Derivative(expr)
 
     def _print_Mul(self, expr):
-        coeff, rest = expr.as_coeff_Mul()
-        if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
-            sign = "- " if coeff < 0 else ""
-            inner = f"\\left({self._print(rest)}\\right)" if rest.is_Add else self._print(rest)
-            return f"{sign}\\frac{{{abs(coeff.p)}}}{{{coeff.q}}} {inner}"
-        return super()._print_Mul(expr)
+        lead = _rational_lead(expr)
+        if lead is None:
+            return super()._print_Mul(expr)
+        sign, coeff, rest = lead
+        inner = f"\\left({self._print(rest)}\\right)" if rest.is_Add else self._print(rest)
+        return f"{sign and '- '}\\frac{{{coeff.p}}}{{{coeff.q}}} {inner}"
 
 
 _UNICODE = UnicodePrinter()

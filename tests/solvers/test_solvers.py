@@ -19,6 +19,20 @@ bodies:
 """
 
 
+# A cart (x) carrying a pendulum (θ).
+CART = """
+parameters: {m: mass, M: cart mass, l: length, g: gravity}
+coordinates: [x, theta]
+gravity: [0, -g]
+points:
+  C: [x, 0]
+  P: C + l * [sin(theta), -cos(theta)]
+bodies:
+  cart: {shape: particle, mass: M, at: C}
+  bob: {shape: particle, mass: m, at: P}
+"""
+
+
 def solve(text: str):
     return solve_problem(build_model(load_text(text, "scene.yaml")))
 
@@ -49,19 +63,7 @@ def test_about_a_point_that_is_not_an_equilibrium_fails_only_that_question() -> 
 
 def test_a_coordinate_that_v_ignores_is_neutral() -> None:
     # A cart (x) carrying a pendulum (θ): V depends on θ only; x is a neutral direction.
-    scene = """
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
-questions: [equilibria, modes]
-"""
-    report = solve(scene)
+    report = solve(CART + "questions: [equilibria, modes]\n")
     equilibria = report.solutions[0]
     stable = [e for e in equilibria.answers.equilibria if e.at["theta"] == 0]
     assert stable[0].stability.value == "neutral"
@@ -74,20 +76,7 @@ questions: [equilibria, modes]
 
 
 def test_modes_with_a_neutral_direction() -> None:
-    scene = """
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
-questions:
-  - modes: {about: {x: 0, theta: 0}}
-"""
-    answers = solve(scene).solutions[0].answers
+    answers = solve(CART + "questions:\n  - modes: {about: {x: 0, theta: 0}}\n").solutions[0].answers
     m, M, l, g = sp.symbols("m M l g", positive=True)
     # By hand: det(K − λM) = λ (λ M m l² − (M + m) m g l) → λ = 0, (M + m) g/(M l).
     assert answers.eigenvalues[0] == 0
