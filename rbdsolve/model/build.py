@@ -17,6 +17,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
+from rbdsolve.problem.loader import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
 
@@ -136,7 +137,9 @@ def _body(body: Body, names: Symbols) -> RigidBody:
     """A body's mass properties combined from its parts; its centre of mass is its
     origin plus the parts' combined centre, turned with the body: r_G = r_at + R c."""
     props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
-    _require(props.mass, body.parts[0].mass, "a body's total mass")
+    if props.mass.is_nonpositive:
+        raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
+                         "weigh as much as the parts or more", body.loc)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     position = names.vector(body.at) + rotation * props.centre
@@ -150,13 +153,18 @@ def part_properties(part: Part, names: Symbols) -> MassProperties:
     if part.inertia is not None:
         props = MassProperties(mass, sp.zeros(3, 1), _explicit(part, names))
     else:
-        dims = {k: _require(names.scalar(v), v, f"a {k}") for k, v in part.dimensions}
+        dims = {k: names.scalar(v) if k in POSITIONS else _require(names.scalar(v), v, _article(k))
+                for k, v in part.dimensions}
         _check_tube(part, dims)
         axis = names.vector(part.axis) if part.axis is not None else OWN_AXIS.get(part.shape, sp.Matrix([0, 0, 1]))
         props = body_properties(part.shape, mass, dims, axis)
     offset = names.vector(part.at) if part.at is not None else sp.zeros(3, 1)
     sign = -1 if part.hole else 1
     return MassProperties(sign * props.mass, props.centre + offset, sign * props.inertia)
+
+
+def _article(noun: str) -> str:
+    return f"{'an' if noun[0] in 'aeiou' else 'a'} {noun.replace('_', ' ')}"
 
 
 def _check_tube(part: Part, dims: dict[str, sp.Expr]) -> None:

@@ -269,7 +269,8 @@ class _Loader:
         dimensions = []
         for dim in dims:
             value = self.constant(spec.get(dim), f"a {dim}")
-            _refuse_negative(value, dim)
+            if dim not in POSITIONS:
+                _refuse_negative(value, dim)
             dimensions.append((dim, value))
         axis_node = spec.get("axis")
         if axis_node is not None and shape is None:
@@ -290,6 +291,9 @@ class _Loader:
             text = node.text.strip()
             tree = ex.Vec(tuple(ex.Num(Fraction(v)) for v in _AXES[text]))
             return ex.Expr(tree, ex.Kind.VECTOR, text, node.loc)
+        if isinstance(node, Scalar) and node.text.strip().lstrip("-").isidentifier():
+            raise InputError(f"expected an axis x, y, z, -x, -y, -z or a direction vector, "
+                             f"found '{node.text.strip()}'", node.loc)
         scope = self.scope.constants("an axis must be constant (parameters and numbers only)")
         value = self.expr(node, ex.Kind.VECTOR, "an axis: x, y, z or a direction vector", scope)
         if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
@@ -405,6 +409,10 @@ def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
             takes = ", ".join(mine) if mine else "no dimensions"
             kind = f"a {shape.value}" if shape else "a body with an explicit inertia"
             raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
+
+
+# Shape dimensions that are positions, not sizes: any sign is fine.
+POSITIONS = {"apex"}
 
 
 def _refuse_negative(value: ex.Expr, what: str) -> None:

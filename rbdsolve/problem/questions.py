@@ -106,6 +106,5 @@ class QuestionReader:
         if not isinstance(node, Seq) or len(node.items) != 3:
             raise InputError("expected three axis vectors [e1, e2, e3] (unit vectors of the "
                              "frame, in scene axes)", node.loc)
-        scope = self.loader.scope.constants("a frame's axes must be constant")
-        vectors = [self.loader.expr(item, ex.Kind.VECTOR, "an axis vector", scope) for item in node.items]
+        vectors = [self.loader.axis(item) for item in node.items]  # x, -y, … or vectors
         return vectors[0], vectors[1], vectors[2]

@@ -164,8 +164,8 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     scale = -scale if scale.could_extract_minus_sign() else scale
     J_hat = (J / scale).applyfunc(tidy)
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
-    steps = [st.equation("Principal moments: det(λ1 − J) = 0; with λ = s κ, s the common scale:",
-                         Relation(sp.Symbol("s"), scale), Relation(_cubic(poly), sp.Integer(0)))]
+    steps = [st.equation("Principal moments: det(λ1 − J) = 0; with λ = J₀ κ, J₀ the common scale:",
+                         Relation(sp.Symbol("J_0"), scale), Relation(_cubic(poly), sp.Integer(0)))]
     found = _closed_form(J_hat, poly)
     if found is None:
         if J_hat.free_symbols:
@@ -184,8 +184,9 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
                                Relation(sp.Symbol(f"J_{i}"), moment),
                                Relation(sp.Symbol(f"e_{i}"), _unit_display(axis))))
     for value in repeated:
-        steps.append(st.note("A repeated moment: every axis in the plane of its two axes above is "
-                             "a principal axis,", Relation(sp.Symbol("J"), value)))
+        where = ("every axis is a principal axis" if moments.count(value) == 3 else
+                 "every axis in the plane of its two axes above is a principal axis")
+        steps.append(st.note(f"A repeated moment: {where},", Relation(sp.Symbol("J"), value)))
     return Principal(tuple(moments), tuple(_unit(d) for d in axes), tuple(repeated), tuple(steps), ())
 
 
