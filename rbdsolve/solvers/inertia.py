@@ -286,9 +286,9 @@ def _adjugate_column(J_hat: sp.Matrix, root: sp.Expr) -> sp.Matrix:
 
 
 def _integral(v: sp.Matrix) -> sp.Matrix:
-    """The direction of v with its rational denominators cleared."""
-    denominators = [sp.fraction(sp.together(x))[1] for x in v]
-    scale = sp.lcm([d for d in denominators if d.is_Integer] or [1])
+    """The direction of v with its rational denominators cleared: (0, 1, (√145 − 1)/12)
+    becomes (0, 12, √145 − 1)."""
+    scale = sp.lcm([r.q for x in v for r in x.atoms(sp.Rational)] or [1])
     return (v * scale).applyfunc(sp.expand)
 
 
