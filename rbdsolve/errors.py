@@ -88,10 +88,6 @@ class UnsolvedError(RbdError):
     exit_code = ExitCode.UNSOLVED
 
 
-class BudgetExceeded(UnsolvedError):
-    """A computation ran past its time budget."""
-
-
 def did_you_mean(word: str, choices: object) -> str:
     """A ' (did you mean 'x'?)' suffix naming the closest choice, or ''."""
     close = difflib.get_close_matches(word, [str(c) for c in choices], n=1, cutoff=0.6)

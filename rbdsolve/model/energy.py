@@ -47,12 +47,12 @@ def body_kinetic_energy(body: RigidBody, state: State) -> sp.Expr:
     return T_translation + T_rotation
 
 
-def _memoized(compute):
-    """Compute an energy once per model object (solvers ask for T and V repeatedly)."""
+def memoized(compute):
+    """Compute once per model object (solvers ask for T, V and ∂V/∂q repeatedly)."""
     cache: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
     @functools.wraps(compute)
-    def wrapper(model: Model) -> Energy:
+    def wrapper(model: Model):
         if model not in cache:
             cache[model] = compute(model)
         return cache[model]
@@ -60,7 +60,7 @@ def _memoized(compute):
     return wrapper
 
 
-@_memoized
+@memoized
 def kinetic_energy(model: Model) -> Energy:
     terms = tuple(
         EnergyTerm(b.name, tidy_quadratic(body_kinetic_energy(b, model.state), model.qd))
@@ -69,7 +69,7 @@ def kinetic_energy(model: Model) -> Energy:
     return Energy(terms, tidy_quadratic(sum((x.value for x in terms), sp.Integer(0)), model.qd))
 
 
-@_memoized
+@memoized
 def potential_energy(model: Model) -> Energy:
     terms: list[EnergyTerm] = []
     if model.gravity is not None:

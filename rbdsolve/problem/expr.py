@@ -15,7 +15,6 @@ import ast
 from dataclasses import dataclass
 from enum import Enum
 from fractions import Fraction
-from typing import Mapping
 
 from rbdsolve.errors import InputError, Location, did_you_mean
 
@@ -422,18 +421,3 @@ def parse_number(text: str, loc: Location, plain: bool = True) -> Fraction:
     if abs(value) > 10**300:
         raise InputError(f"the number {text.strip()} is too large (the limit is 1e300)", loc)
     return value
-
-
-def substitute_names(tree: Tree, mapping: Mapping[str, Tree]) -> Tree:
-    """Replace names by trees (used to inline point definitions)."""
-    if isinstance(tree, Name):
-        return mapping.get(tree.id, tree)
-    if isinstance(tree, BinOp):
-        return BinOp(tree.op, substitute_names(tree.left, mapping), substitute_names(tree.right, mapping))
-    if isinstance(tree, Neg):
-        return Neg(substitute_names(tree.operand, mapping))
-    if isinstance(tree, Call):
-        return Call(tree.func, tuple(substitute_names(a, mapping) for a in tree.args))
-    if isinstance(tree, Vec):
-        return Vec(tuple(substitute_names(a, mapping) for a in tree.items))
-    return tree

@@ -118,6 +118,12 @@ def subscript(i: int) -> str:
     return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
+def sample(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> complex:
+    """The value at the given parameter values, every other symbol set to 1: used to
+    order symbolic results (eigenvalues, moments, equilibria) as they are at a sample."""
+    return complex(sp.N(value.xreplace({s: values.get(s, 1) for s in value.free_symbols})))
+
+
 # --- numeric values --------------------------------------------------------------------
 
 
@@ -143,13 +149,3 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | 
     if not (math.isfinite(z.real) and math.isfinite(z.imag)):
         return None
     return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
-
-
-def has_numbers(tree: object) -> bool:
-    if isinstance(tree, float):
-        return True
-    if isinstance(tree, dict):
-        return any(has_numbers(v) for v in tree.values())
-    if isinstance(tree, list):
-        return any(has_numbers(v) for v in tree)
-    return False

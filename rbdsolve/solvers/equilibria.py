@@ -27,12 +27,12 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import hessian, potential_energy
+from rbdsolve.model.energy import hessian, memoized, potential_energy
 from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options, configuration, scaled_matrix
+from rbdsolve.solvers.common import Options, configuration, sample, scaled_matrix
 
 
 class Stability(Enum):
@@ -56,9 +56,10 @@ class EquilibriaAnswers:
     equilibria: tuple[Equilibrium, ...]
 
 
-def gradient(model: Model) -> list[sp.Expr]:
+@memoized
+def gradient(model: Model) -> tuple[sp.Expr, ...]:
     V = potential_energy(model).total
-    return [tidy(sp.diff(V, q)) for q in model.q]
+    return tuple(tidy(sp.diff(V, q)) for q in model.q)
 
 
 def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:
@@ -98,14 +99,14 @@ def _turn(angle: sp.Expr) -> sp.Expr:
 
 def _order(value: sp.Expr) -> tuple:
     """Sort key: by numeric value (parameters set to 1), then by the expression."""
-    number = value.xreplace({s: 1 for s in value.free_symbols}).evalf()
-    return (float(number) if number.is_real else 0.0, sp.default_sort_key(value))
+    number = sample(value, {})
+    return (number.real if number.imag == 0 else 0.0, sp.default_sort_key(value))
 
 
 def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
     s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in unknowns if q in angles}
     c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in unknowns if q in angles}
-    plain = {q: q for q in unknowns if q not in angles}
+    plain = [q for q in unknowns if q not in angles]
     system = []
     for e in equations:
         poly = sp.expand_trig(sp.expand(e))
@@ -113,11 +114,11 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
         if any(poly.has(q) for q in s):
             return None
         numerator = sp.numer(sp.together(poly))
-        if not numerator.is_polynomial(*s.values(), *c.values(), *plain.values()):
+        if not numerator.is_polynomial(*s.values(), *c.values(), *plain):
             return None
         system.append(numerator)
     system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
-    symbols = [*s.values(), *c.values(), *plain.values()]
+    symbols = [*s.values(), *c.values(), *plain]
     if not symbols:
         return [{}]
     roots = sp.solve(system, symbols, dict=True, check=False)  # polynomial: nothing to check
@@ -129,7 +130,7 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
             raise UnsolvedError("the equilibria form a continuum (V is flat along a curve); "
                                 "rbdsolve reports isolated equilibria only")
         sol = {q: _angle(root[s[q]], root[c[q]]) for q in s}
-        sol |= {q: tidy(root[plain[q]]) for q in plain}
+        sol |= {q: tidy(root[q]) for q in plain}
         out.append(sol)
     return out
 

@@ -30,7 +30,7 @@ from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.math import Label, Product, Scaled, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options, common_scale, scaled_matrix
+from rbdsolve.solvers.common import Options, common_scale, sample, scaled_matrix
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
@@ -239,8 +239,7 @@ def _cubic(poly: sp.Poly):
 
 
 def _size(value: sp.Expr, model: Model) -> float:
-    sample = {s: model.values.get(s, 1) for s in value.free_symbols}
-    return float(sp.re(sp.N(value.xreplace(sample))))
+    return sample(value, model.values).real
 
 
 def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Matrix]:

@@ -31,7 +31,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.math import Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options, common_scale, configuration, scaled_matrix
+from rbdsolve.solvers.common import Options, common_scale, configuration, sample, scaled_matrix
 from rbdsolve.solvers.equilibria import (
     Inertia,
     Stability,
@@ -192,11 +192,10 @@ def _ascending(pairs: list[tuple], model: Model) -> list:
 
     def key(pair):
         lam = pair[0]
-        sample = {s: model.values.get(s, 1) for s in lam.free_symbols}
-        try:
-            return (0, float(sp.N(lam.xreplace(sample))), sp.default_sort_key(lam))
-        except TypeError:
+        number = sample(lam, model.values)
+        if number.imag != 0:
             return (1, 0.0, sp.default_sort_key(lam))
+        return (0, number.real, sp.default_sort_key(lam))
 
     return sorted(pairs, key=key)
 
