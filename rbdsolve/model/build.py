@@ -7,7 +7,7 @@ planar ``angle`` is a rotation about z. Energies are computed on demand
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Mapping
 
@@ -17,7 +17,8 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.loader import POSITIONS
+from rbdsolve.problem.expr import Kind
+from rbdsolve.problem.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
 
@@ -25,19 +26,30 @@ from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 class RigidBody:
     """A body's mass, centre of mass, orientation and inertia, as sympy objects.
 
-    ``rotation`` maps body axes to scene axes; ``inertia`` is J_G in body axes.
+    ``rotation`` maps body axes to scene axes; ``inertia`` is J_G in body axes. A body
+    in a scene at one instant has no position: its velocities are given instead.
     """
 
     name: str
     mass: sp.Expr
-    position: sp.Matrix  # r_G, scene axes
+    position: sp.Matrix | None  # r_G, scene axes
     rotation: sp.Matrix
     angle: sp.Expr | None  # planar rotation about z (None: no rotation)
     inertia: sp.Matrix
     source: Body
+    given_velocity: sp.Matrix | None = None  # v_G at the instant, linear in q̇
+    given_angular_velocity: sp.Matrix | None = None
+
+    def velocity(self, state: State) -> sp.Matrix:
+        """v_G in scene axes: given, or dr_G/dt."""
+        if self.position is None:
+            return self.given_velocity
+        return state.d_dt(self.position)
 
     def angular_velocity(self, state: State) -> sp.Matrix:
-        """ω in scene axes. A planar body turning by angle α(q, t) has ω = α̇ e_z."""
+        """ω in scene axes: given, or, for a planar body turning by angle α(q, t), α̇ e_z."""
+        if self.given_angular_velocity is not None:
+            return self.given_angular_velocity
         if self.angle is None:
             return sp.zeros(3, 1)
         return sp.Matrix([0, 0, state.d_dt(self.angle)])
@@ -65,6 +77,18 @@ class Model:
     springs: tuple[SpringModel, ...]
     gravity: sp.Matrix | None
     values: Mapping[sp.Symbol, sp.Rational]
+    velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
+
+    @property
+    def instant(self) -> bool:
+        """A scene at one instant: some velocities are given, not positions."""
+        return bool(self.velocities) or any(b.position is None for b in self.bodies)
+
+    def point_velocity(self, name: str) -> sp.Matrix:
+        """v_P: given, or dr_P/dt."""
+        if name in self.velocities:
+            return self.velocities[name]
+        return self.state.d_dt(self.points[name])
 
     @property
     def state(self) -> State:
@@ -90,9 +114,12 @@ class Model:
 
     def depends_on_time(self) -> bool:
         """Does the scene move by itself (t in a position, an angle or a spring)?"""
-        parts = [*self.points.values(), *(b.position for b in self.bodies), *(b.rotation for b in self.bodies),
+        parts = [*self.points.values(), *self._positions(), *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs)]
         return any(sp.sympify(p).has(t) for p in parts)
+
+    def _positions(self) -> list[sp.Matrix]:
+        return [b.position for b in self.bodies if b.position is not None]
 
     def readable(self, expr):
         """Coordinates as plain named symbols, for messages: 2*c*theta + …"""
@@ -103,25 +130,39 @@ class Model:
         table = dict(self.values)
         for name, value in values.items():
             table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
-        return Model(self.problem, self.symbols, self.angles, self.points,
-                     self.bodies, self.springs, self.gravity, table)  # fmt: skip
+        return replace(self, values=table)
 
 
 def build_model(problem: Problem) -> Model:
     """Turn a validated Problem into sympy objects."""
     names = Symbols.of(problem)
     points: dict[str, sp.Matrix] = {}
+    velocities: dict[str, sp.Matrix] = {}
+    symbols = names
     for point in problem.points:  # dependency order: each names only earlier points
-        points[point.name] = names.with_points(points).vector(point.position)
-    names = names.with_points(points)
+        if point.position is not None:
+            points[point.name] = symbols.with_points(points).vector(point.position)
+        else:
+            velocities[point.name] = _linear_in_rates(symbols.with_points(velocities).vector(point.velocity),
+                                                      point.velocity, symbols)
+    names = symbols.with_points(points)
     q = names.state.q
-    bodies = tuple(_body(b, names) for b in problem.bodies)
+    bodies = tuple(_body(b, names, symbols.with_points(velocities)) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
-    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values)
+    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q) if _is_angle(c.kind, qi, model))
-    return Model(problem, names, angles, points, bodies, springs, gravity, values)
+    return replace(model, angles=angles)
+
+
+def _linear_in_rates(value: sp.Matrix, expr, names: Symbols) -> sp.Matrix:
+    """A velocity at an instant is affine in the rates q̇: a + Σ b_j q̇_j."""
+    qd = names.state.qd
+    for item in value:
+        if any(sp.diff(item, a, b) != 0 for a in qd for b in qd if item.has(a)):
+            raise InputError(f"a velocity must be linear in the rates dot(q), found {expr.text}", expr.loc)
+    return value
 
 
 def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
@@ -133,13 +174,20 @@ def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
     return value
 
 
-def _body(body: Body, names: Symbols) -> RigidBody:
+def _body(body: Body, names: Symbols, rates: Symbols) -> RigidBody:
     """A body's mass properties combined from its parts; its centre of mass is its
-    origin plus the parts' combined centre, turned with the body: r_G = r_at + R c."""
+    origin plus the parts' combined centre, turned with the body: r_G = r_at + R c.
+    A body at an instant has v_G and ω given instead (a scalar ω turns about z)."""
     props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
     if props.mass.is_nonpositive:
         raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
                          "weigh as much as the parts or more", body.loc)
+    if body.velocity is not None:
+        velocity = _linear_in_rates(rates.vector(body.velocity), body.velocity, rates)
+        w = body.angular_velocity
+        omega = rates.vector(w) if w.kind is Kind.VECTOR else sp.Matrix([0, 0, rates.scalar(w)])
+        omega = _linear_in_rates(omega, w, rates)
+        return RigidBody(body.name, props.mass, None, sp.eye(3), None, props.inertia, body, velocity, omega)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     position = names.vector(body.at) + rotation * props.centre
@@ -208,7 +256,7 @@ def _is_angle(kind: CoordinateKind, q: sp.Expr, model: Model) -> bool:
     sin/cos of integer multiples of q, so the scene repeats after one turn."""
     if kind is not CoordinateKind.AUTO:
         return kind is CoordinateKind.ANGLE
-    exprs = [*model.points.values(), *(b.position for b in model.bodies)]
+    exprs = [*model.points.values(), *model._positions()]
     exprs += [b.rotation for b in model.bodies]  # ω = α̇ is periodic whatever α is
     exprs += [s.stretch for s in model.springs]
     found = False

@@ -6,7 +6,7 @@ V = V_gravity + V_springs,
     V_gravity = −Σ m g·r_G,   V_spring = ½ k s²  (s: the spring's stretch)
 
 The mass matrix comes from the velocity Jacobians, never from differentiating T twice:
-with v_G = J_v q̇ + ∂r_G/∂t and ω = J_ω q̇ + ω_t,
+with v_G = J_v q̇ + v_t and ω = J_ω q̇ + ω_t (J_v = ∂r_G/∂q when r_G is known),
 
     M(q) = Σ_bodies (m J_vᵀ J_v + J_ωᵀ J_G J_ω)         (so T = ½ q̇ᵀ M q̇ + …)
 """
@@ -40,7 +40,7 @@ class Energy:
 
 def body_kinetic_energy(body: RigidBody, state: State) -> sp.Expr:
     """T_body = ½ m v_G·v_G + ½ ω·(R J_G Rᵀ) ω."""
-    v = state.d_dt(body.position)
+    v = body.velocity(state)
     omega = body.angular_velocity(state)
     T_translation = body.mass * v.dot(v) / 2
     T_rotation = (omega.T * body.inertia_in_scene() * omega)[0, 0] / 2 if omega != sp.zeros(3, 1) else 0
@@ -97,7 +97,7 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
     n = len(model.q)
     M = sp.zeros(n, n)
     for body in model.bodies:
-        J_v = body.position.jacobian(model.q)  # ∂v/∂q̇ = ∂r/∂q
+        J_v = body.velocity(model.state).jacobian(model.qd)
         J_w = body.angular_velocity(model.state).jacobian(model.qd)
         J_G = body.inertia_in_scene()
         if at:

@@ -12,19 +12,16 @@ from pathlib import Path
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import (
-    SHAPE_ALIASES,
     Body,
     Coordinate,
     CoordinateKind,
-    Inertia,
     Parameter,
-    Part,
     Point,
     Problem,
     Question,
-    Shape,
     Spring,
 )
+from rbdsolve.problem.bodies import BodyReader, _refuse_negative
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
@@ -69,6 +66,14 @@ def _identifier(key: Scalar, what: str) -> str:
     return name
 
 
+def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
+    """A bare unknown name where a vector is expected is most likely a misspelt point."""
+    name = node.text.strip()
+    known = scope.all_names() | {n for n, _ in scope.refused} | ex.CONSTANTS
+    if name.isidentifier() and name not in known:
+        raise InputError(f"unknown point '{name}'{did_you_mean(name, sorted(scope.vectors))}", node.loc)
+
+
 def _names_list(node: Node, what: str) -> list[tuple[Scalar, Node | None]]:
     """A list of names, or a mapping name -> options; returns (name node, options)."""
     if isinstance(node, Seq):
@@ -83,6 +88,7 @@ class _Loader:
         self.file = file
         self.scope = ex.Scope()
         self.positions = ex.Scope()
+        self.rates = ex.Scope()  # velocities at one instant: parameters, dot(q), velocity points
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -98,18 +104,13 @@ class _Loader:
                 raise InputError(f"expected {what}, found a list", node.loc)
             return self._vector_from_list(node, what, scope)
         scalar = expect_scalar(node, what)
+        scope = scope or self.positions
         if kind == ex.Kind.VECTOR:
-            self._check_point_name(scalar)
-        parsed = ex.parse(scalar.text, scalar.loc, scope or self.positions, scalar.plain)
+            _check_point_name(scalar, scope)
+        parsed = ex.parse(scalar.text, scalar.loc, scope, scalar.plain)
         if parsed.kind != kind:
             raise InputError(f"expected {what}, found a {parsed.kind.value} '{parsed.text}'", scalar.loc)
         return parsed
-
-    def _check_point_name(self, node: Scalar) -> None:
-        name = node.text.strip()
-        if name.isidentifier() and name not in self.scope.all_names() and name not in ex.CONSTANTS:
-            hint = did_you_mean(name, sorted(self.scope.vectors))
-            raise InputError(f"unknown point '{name}'{hint}", node.loc)
 
     def _vector_from_list(self, node: Seq, what: str, scope: ex.Scope | None) -> ex.Expr:
         if len(node.items) not in (2, 3):
@@ -133,13 +134,13 @@ class _Loader:
         get = root.get
         parameters = self.parameters(get("parameters"))
         coordinates = self.coordinates(get("coordinates"))
-        # Positions and angles may use coordinates and time t; rates (dot, ddot) are for
-        # questions that need velocities, and none does yet.
+        # Positions and angles may use coordinates and time t; velocities at an instant
+        # use parameters and the rates dot(q).
         self.scope = ex.Scope(
             scalars=frozenset({p.name for p in parameters} | {c.name for c in coordinates} | {"t"}),
             functions_of_time=frozenset(c.name for c in coordinates),
         )
-        self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
+        self._set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         bodies = self.bodies(get("bodies"))
         return Problem(
@@ -154,7 +155,7 @@ class _Loader:
             springs=self.springs(get("springs")),
             gravity=self.gravity(get("gravity")),
             values=self.values(get("values"), parameters),
-            questions=self.questions(get("questions"), coordinates, bodies),
+            questions=self.questions(get("questions"), coordinates, bodies, points),
         )
 
     def text(self, node: Node | None, what: str) -> str:
@@ -219,71 +220,47 @@ class _Loader:
             out.append(Coordinate(name, kind, key.loc))
         return tuple(out)
 
+    def _set_point_scopes(self, positions: frozenset[str], velocities: frozenset[str]) -> None:
+        """Positions name position points; velocities at an instant name velocity points
+        and the rates dot(q), never the coordinates themselves (the configuration of an
+        instant is given by the question, with 'at:')."""
+        self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
+        why_velocity = "it is given by its velocity; positions name points given by position"
+        self.positions = ex.Scope(self.scope.scalars, positions,
+                                  refused=tuple((n, why_velocity) for n in sorted(velocities)))
+        coordinates = self.scope.functions_of_time
+        why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
+               "give the configuration with the question's 'at:'")
+        why_position = "it is given by its position; a velocity names points given by velocity"
+        refused = [(n, why) for n in sorted(coordinates | {"t"})]
+        refused += [(n, why_position) for n in sorted(positions)]
+        self.rates = ex.Scope(self.scope.scalars - coordinates - {"t"}, velocities, coordinates, tuple(refused))
+
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:
             return ()
-        table = expect_mapping(node, "points: name -> position vector")
+        table = expect_mapping(node, "points: name -> position vector, or {velocity: vector}")
         names = [self.declare(key, "point") for key, _ in table.entries]
-        self.scope = ex.Scope(self.scope.scalars, frozenset(names), self.scope.functions_of_time)
-        self.positions = ex.Scope(self.scope.scalars, self.scope.vectors)
-        parsed = {
-            key.text: self.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' (a vector)",
-                                self.positions)
-            for key, value in table.entries
-        }
-        return tuple(Point(name, parsed[name]) for name in _dependency_order(parsed))
+        moving = {k.text for k, v in table.entries if isinstance(v, Map)}
+        self._set_point_scopes(frozenset(n for n in names if n not in moving), frozenset(moving))
+        positions, velocities = {}, {}
+        for key, value in table.entries:
+            if key.text in moving:
+                check_keys(value, ("velocity",), (), f"point '{key.text}'")
+                velocities[key.text] = self.expr(value.get("velocity"), ex.Kind.VECTOR,
+                                                 f"the velocity of point '{key.text}' (a vector)", self.rates)
+            else:
+                positions[key.text] = self.expr(value, ex.Kind.VECTOR,
+                                                f"the position of point '{key.text}' (a vector)", self.positions)
+        return (tuple(Point(name, positions[name]) for name in _dependency_order(positions))
+                + tuple(Point(name, None, velocities[name]) for name in _dependency_order(velocities)))
 
     def bodies(self, node: Node | None) -> tuple[Body, ...]:
         if node is None:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
-        return tuple(self.body(self.declare(k, "body"), v) for k, v in table.entries)
-
-    def body(self, name: str, node: Node) -> Body:
-        spec = expect_mapping(node, f"body '{name}'")
-        what = f"body '{name}'"
-        at = self.expr(spec.get("at"), ex.Kind.VECTOR, "a point name or position vector", self.positions) \
-            if spec.get("at") is not None else None
-        angle = self.optional_expr(spec.get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)")
-        if spec.get("parts") is None:
-            part = self.part(name, spec, what, ("angle",), simple=True)
-            return Body(name, (part,), at, angle, spec.loc)
-        check_keys(spec, ("parts", "at"), ("angle",), what)
-        table = expect_mapping(spec.get("parts"), "parts: name -> part")
-        if not table.entries:
-            raise InputError(f"{what} has no parts", table.loc)
-        parts = tuple(self.part(k.text, expect_mapping(v, f"part '{k.text}'"), f"part '{k.text}' of {what}", (),
-                                simple=False) for k, v in table.entries)
-        if all(p.hole for p in parts):
-            raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
-        return Body(name, parts, at, angle, spec.loc)
-
-    def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool) -> Part:
-        shape = self.shape(spec, what)
-        dims = shape.dimensions if shape else ()
-        _check_dimensions(spec, shape, what)
-        required = ("mass", "at", *dims) if simple else ("mass", *dims)
-        check_keys(spec, required, ("shape", "axis", "inertia", *extra, *(() if simple else ("at", "hole"))), what)
-        mass = self.constant(spec.get("mass"), "a mass")
-        _refuse_negative(mass, "mass")
-        dimensions = []
-        for dim in dims:
-            value = self.constant(spec.get(dim), f"a {dim}")
-            if dim not in POSITIONS:
-                _refuse_negative(value, dim)
-            dimensions.append((dim, value))
-        axis_node = spec.get("axis")
-        if axis_node is not None and shape is None:
-            raise InputError("'axis' orients a shape; an explicit inertia is already in body axes",
-                             axis_node.loc)
-        at = None
-        if not simple and spec.get("at") is not None:
-            scope = self.scope.constants("a part's position in its body must be constant")
-            at = self.expr(spec.get("at"), ex.Kind.VECTOR, "a position in the body (a vector)", scope)
-        hole = read_bool(spec.get("hole"), "true or false") if spec.get("hole") is not None else False
-        return Part(name, shape, mass, tuple(dimensions), at,
-                    self.axis(axis_node) if axis_node is not None else None,
-                    self.inertia(spec.get("inertia")), hole, spec.loc)
+        reader = BodyReader(self)
+        return tuple(reader.body(self.declare(k, "body"), v) for k, v in table.entries)
 
     def axis(self, node: Node) -> ex.Expr:
         """x, y, z (or -x, …) or a direction vector in body axes."""
@@ -299,41 +276,6 @@ class _Loader:
         if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
             raise InputError("an axis direction must not be the zero vector", value.loc)
         return value
-
-    def shape(self, spec: Map, what: str) -> Shape | None:
-        node = spec.get("shape")
-        if node is None:
-            if spec.get("inertia") is None:
-                raise InputError(f"{what} needs a 'shape' (or an explicit 'inertia')", spec.loc)
-            return None
-        if spec.get("inertia") is not None:
-            raise InputError(f"{what}: give either 'shape' or 'inertia', not both", node.loc)
-        word = expect_scalar(node, "a shape name").text
-        names = [s.value for s in Shape] + list(SHAPE_ALIASES)
-        if word in SHAPE_ALIASES:
-            return SHAPE_ALIASES[word]
-        try:
-            return Shape(word)
-        except ValueError:
-            hint = did_you_mean(word, names) or f" (shapes: {', '.join(s.value for s in Shape)})"
-            raise InputError(f"unknown shape '{word}'{hint}", node.loc) from None
-
-    def inertia(self, node: Node | None) -> Inertia | None:
-        if node is None:
-            return None
-        if isinstance(node, Scalar):
-            return Inertia((self.constant(node, "a moment of inertia"),), node.loc)
-        if isinstance(node, Seq) and len(node.items) == 3 and all(isinstance(i, Seq) for i in node.items):
-            rows = [row for row in node.items]
-            if any(len(r.items) != 3 for r in rows):
-                raise InputError("an inertia matrix is 3x3", node.loc)
-            entries = [self.constant(x, "an inertia matrix entry") for r in rows for x in r.items]
-            return Inertia(tuple(entries), node.loc)
-        if isinstance(node, Seq) and len(node.items) == 3:
-            return Inertia(tuple(self.constant(x, "a principal moment") for x in node.items), node.loc)
-        raise InputError(
-            "expected an inertia: J (planar), [J1, J2, J3] or a 3x3 matrix", node.loc
-        )
 
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
@@ -388,37 +330,16 @@ class _Loader:
         return tuple(out)
 
     def questions(self, node: Node, coordinates: tuple[Coordinate, ...],
-                  bodies: tuple[Body, ...]) -> tuple[Question, ...]:
+                  bodies: tuple[Body, ...], points: tuple[Point, ...]) -> tuple[Question, ...]:
         if not isinstance(node, Seq) or not node.items:
             found = "an empty list" if isinstance(node, Seq) else describe(node)
             raise InputError(f"expected a list of questions, found {found}", node.loc)
-        reader = QuestionReader(self, coordinates, bodies)
+        reader = QuestionReader(self, coordinates, bodies, points)
         return tuple(reader.question(item) for item in node.items)
 
 
 _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1),
          "-x": (-1, 0, 0), "-y": (0, -1, 0), "-z": (0, 0, -1)}
-
-
-def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
-    """A dimension that belongs to other shapes: say which ones this shape takes."""
-    others = {d for s in Shape for d in s.dimensions}
-    mine = shape.dimensions if shape else ()
-    for key, _ in spec.entries:
-        if key.text in others and key.text not in mine:
-            takes = ", ".join(mine) if mine else "no dimensions"
-            kind = f"a {shape.value}" if shape else "a body with an explicit inertia"
-            raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
-
-
-# Shape dimensions that are positions, not sizes: any sign is fine.
-POSITIONS = {"apex"}
-
-
-def _refuse_negative(value: ex.Expr, what: str) -> None:
-    number = ex.constant_value(value.tree)
-    if number is not None and number < 0:
-        raise InputError(f"a {what} must not be negative, found {value.text}", value.loc)
 
 
 def _dependency_order(points: dict[str, ex.Expr]) -> list[str]:

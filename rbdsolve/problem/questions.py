@@ -11,11 +11,13 @@ from typing import TYPE_CHECKING
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.schema import (
     Body,
     Coordinate,
     InertiaOptions,
     ModesOptions,
+    Point,
     Question,
     QuestionKind,
 )
@@ -30,14 +32,17 @@ OPTIONS = {
     QuestionKind.EQUILIBRIA: (),
     QuestionKind.MODES: ("about",),
     QuestionKind.INERTIA: ("body", "about", "axes"),
+    QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
 }
 
 
 class QuestionReader:
-    def __init__(self, loader: _Loader, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...]):
+    def __init__(self, loader: _Loader, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
+                 points: tuple[Point, ...]):
         self.loader = loader
         self.coordinates = coordinates
         self.bodies = bodies
+        self.points = points
 
     def question(self, node: Node) -> Question:
         if isinstance(node, Map) and len(node.entries) == 1:
@@ -55,6 +60,8 @@ class QuestionReader:
             raise InputError(f"unknown question '{key.text}'{hint}", key.loc) from None
         if kind.needs_coordinates and not self.coordinates:
             raise InputError(f"'{kind.value}' needs generalized coordinates: add 'coordinates:'", key.loc)
+        if kind.needs_positions:
+            self.require_positions(kind, key)
         opts = None
         if options is not None and not (isinstance(options, Scalar) and options.null):
             if not OPTIONS[kind]:
@@ -66,20 +73,34 @@ class QuestionReader:
             return Question(kind, ModesOptions(self.equilibrium(about) if about else None), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
+        if kind is QuestionKind.IMPACT:
+            return Question(kind, ImpactReader(self).options(opts, key), key.loc)
         return Question(kind, None, key.loc)
 
-    def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
-        table = expect_mapping(node, "an equilibrium: coordinate -> value")
+    def require_positions(self, kind: QuestionKind, key: Scalar) -> None:
+        """Equations of motion, equilibria and modes need the motion, not one instant."""
+        given = [f"body '{b.name}'" for b in self.bodies if b.at is None]
+        given += [f"point '{p.name}'" for p in self.points if p.position is None]
+        if given:
+            raise InputError(f"'{kind.value}' needs positions, but {given[0]} is given by its velocity "
+                             "at one instant (such a scene answers 'impact' questions)", key.loc)
+
+    def coordinate_values(self, node: Node, what: str, complete: bool) -> tuple[tuple[str, ex.Expr], ...]:
+        """coordinate -> constant value, in the coordinates' order."""
+        table = expect_mapping(node, f"{what}: coordinate -> value")
         names = [c.name for c in self.coordinates]
         given = {}
         for key, value in table.entries:
             if key.text not in names:
                 raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
-            given[key.text] = self.loader.constant(value, "a coordinate's value at the equilibrium")
+            given[key.text] = self.loader.constant(value, f"a value in {what}")
         missing = [n for n in names if n not in given]
-        if missing:
+        if complete and missing:
             raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
-        return tuple((n, given[n]) for n in names)
+        return tuple((n, given[n]) for n in names if n in given)
+
+    def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
+        return self.coordinate_values(node, "an equilibrium", complete=True)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
         names = [b.name for b in self.bodies]
@@ -93,6 +114,9 @@ class QuestionReader:
             body = expect_scalar(body_node, "a body name").text
             if body not in names:
                 raise InputError(f"no body '{body}'{did_you_mean(body, names)}", body_node.loc)
+        if next(b for b in self.bodies if b.name == body).at is None:
+            raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
+                             "velocity at one instant", key.loc)
         about = opts.get("about") if opts else None
         axes = opts.get("axes") if opts else None
         return InertiaOptions(body, self.point(about) if about is not None else None,

@@ -72,10 +72,17 @@ class QuestionKind(Enum):
     EQUILIBRIA = "equilibria"
     MODES = "modes"
     INERTIA = "inertia"
+    IMPACT = "impact"
 
     @property
     def needs_coordinates(self) -> bool:
         return self is not QuestionKind.INERTIA
+
+    @property
+    def needs_positions(self) -> bool:
+        """Does the question need the motion (positions as functions of the coordinates),
+        not just the velocities at one instant?"""
+        return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES)
 
 
 @dataclass(frozen=True)
@@ -95,8 +102,12 @@ class Coordinate:
 
 @dataclass(frozen=True)
 class Point:
+    """A point given by its position (a vector that may name other points), or, in a
+    scene at one instant, by its velocity (linear in the rates dot(q))."""
+
     name: str
-    position: Expr  # a vector; may name other points
+    position: Expr | None
+    velocity: Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -130,13 +141,19 @@ class Part:
 
 @dataclass(frozen=True)
 class Body:
-    """A rigid body: one part (a shape placed at ``at``) or several (``parts:``)."""
+    """A rigid body: one part (a shape placed at ``at``) or several (``parts:``).
+
+    A body in a scene at one instant (an impact) gives ``velocity`` (of its centre of
+    mass) and ``angular_velocity`` instead of ``at`` and ``angle``.
+    """
 
     name: str
     parts: tuple[Part, ...]
-    at: Expr  # position of the body's origin (a simple body: the shape's origin)
+    at: Expr | None  # position of the body's origin (a simple body: the shape's origin)
     angle: Expr | None  # planar orientation: rotation about z
     loc: Location
+    velocity: Expr | None = None
+    angular_velocity: Expr | None = None  # a scalar (planar, about z) or a vector
 
 
 @dataclass(frozen=True)
@@ -168,9 +185,45 @@ class InertiaOptions:
 
 
 @dataclass(frozen=True)
+class Particle:
+    """A particle that strikes the system: its mass, its velocity just before, and
+    (optionally) just after, which makes the impulse known."""
+
+    mass: Expr
+    velocity: Expr
+    after: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Collision:
+    """Point ``point`` of the system hits a fixed surface (no particle) or is hit by a
+    particle. The impulse on the system is along ``normal``; its size follows from
+    Newton's law of restitution with coefficient ``restitution``, or from the
+    particle's velocity ``after``."""
+
+    point: str
+    normal: Expr | None
+    restitution: Expr | None
+    particle: Particle | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class ImpactOptions:
+    at: tuple[tuple[str, Expr], ...]  # the configuration at the instant (some coordinates)
+    before: tuple[tuple[str, Expr], ...]  # generalized velocities just before (default 0)
+    impulses: tuple[tuple[str, Expr], ...]  # known impulses: point -> vector
+    collisions: tuple[Collision, ...]
+    points: tuple[str, ...]  # points whose velocities after are asked for
+    centre_of_percussion: str | None  # a parameter to solve "no impulse on the supports" for
+    loc: Location
+
+
+@dataclass(frozen=True)
 class Question:
     kind: QuestionKind
-    options: ModesOptions | InertiaOptions | None
+    options: ModesOptions | InertiaOptions | ImpactOptions | None
     loc: Location
 
 

@@ -14,7 +14,7 @@ from sympy.core.function import AppliedUndef
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from rbdsolve.report.math import Label, Math, Product, Scaled, Terms
+from rbdsolve.report.math import Along, Label, Math, Product, Scaled, Terms
 
 GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -55,7 +55,7 @@ def latex_name(name: str) -> str:
     base = {"\\phi": "\\varphi", "\\lamda": "\\lambda"}.get(base, base)
     if not sub:
         return base
-    sub_tex = "\\" + sub if sub in GREEK else sub.replace("_", "\\_")
+    sub_tex = {"phi": "\\varphi"}.get(sub, "\\" + sub) if sub in GREEK else sub.replace("_", "\\_")
     if len(sub) > 1 and sub not in GREEK:
         sub_tex = f"\\mathrm{{{sub_tex}}}"
     return f"{base}_{{{sub_tex}}}"
@@ -226,7 +226,16 @@ def to_unicode(value: Math) -> str:
         return _join(to_unicode(x) for x in value.items)
     if isinstance(value, Product):
         return _tidy_unicode(" ".join(_product_parts(value, to_unicode)).replace("- ", "-", 1))
+    if isinstance(value, Along):
+        return _along(value, to_unicode(value.component), to_unicode(value.basis), "({})")
     return _tidy_unicode(_UNICODE.doprint(value))
+
+
+def _along(value: Along, component: str, basis: str, brackets: str) -> str:
+    """(ẋ − 1/2 l φ̇) eₓ; 1 eₓ is eₓ and −1 eₓ is −eₓ."""
+    if component in ("1", "-1", "−1"):
+        return component[:-1] + basis
+    return f"{brackets.format(component) if value.is_sum() else component} {basis}"
 
 
 def _join(parts) -> str:
@@ -263,6 +272,8 @@ def to_latex(value: Math) -> str:
         return out
     if isinstance(value, Product):
         return " ".join(_product_parts(value, to_latex)).replace("- ", "-", 1)
+    if isinstance(value, Along):
+        return _along(value, to_latex(value.component), to_latex(value.basis), "\\left({}\\right)")
     if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
         return to_latex(value[0, 0])
     if isinstance(value, sp.MatrixBase) and 1 in value.shape:

@@ -55,9 +55,24 @@ class Label:
         return self.text
 
 
-Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | Label | str
+@dataclass(frozen=True)
+class Along:
+    """A vector's component along a basis vector: (ẋ − 1/2 l φ̇) eₓ."""
+
+    component: Math
+    basis: sp.Symbol
+
+    def value(self) -> sp.Expr:
+        return plain(self.component) * self.basis
+
+    def is_sum(self) -> bool:
+        c = self.component
+        return (isinstance(c, Terms) and len(c.items) > 1) or (isinstance(c, sp.Basic) and c.is_Add)
+
+
+Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | Label | Along | str
 
 
 def plain(value: Math):
     """The sympy object a display value stands for (a label: its text)."""
-    return value.value() if isinstance(value, (Terms, Product, Scaled, Label)) else value
+    return value.value() if isinstance(value, (Terms, Product, Scaled, Label, Along)) else value

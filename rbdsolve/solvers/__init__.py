@@ -14,7 +14,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
-from rbdsolve.solvers import eom, equilibria, inertia, modes
+from rbdsolve.solvers import eom, equilibria, impact, inertia, modes
 from rbdsolve.solvers.common import Options, numeric
 from rbdsolve.solvers.energies import summarize_model
 
@@ -23,6 +23,7 @@ SOLVERS = {
     QuestionKind.EQUILIBRIA: equilibria.solve,
     QuestionKind.MODES: modes.solve,
     QuestionKind.INERTIA: inertia.solve,
+    QuestionKind.IMPACT: impact.solve,
 }
 
 

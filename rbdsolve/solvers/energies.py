@@ -28,11 +28,14 @@ def present(expr: sp.Expr, model: Model) -> Math:
 def summarize_model(model: Model) -> ModelSummary:
     if not model.q:
         return ModelSummary((), None, None, ())
-    T, V = kinetic_energy(model), potential_energy(model)
+    T = kinetic_energy(model)
     q = sp.ImmutableMatrix([model.state.functions()])
     steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q))]
     steps += _energy_steps("Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of "
                            "mass)", "T", T, model)
+    if model.instant:  # velocities at one instant: no positions, so no V
+        return ModelSummary(model.state.functions(), model.to_time(T.total), None, tuple(steps))
+    V = potential_energy(model)
     steps += _energy_steps("Potential energy, −m g·r per body in gravity and ½ k s² per spring of "
                            "stretch s", "V", V, model)
     steps += _unturned(model)

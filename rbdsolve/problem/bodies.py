@@ -1,0 +1,172 @@
+"""The ``bodies:`` section: shapes from the library, composite bodies, explicit inertias.
+
+A body moves with the scene (``at`` a position, ``angle`` a planar rotation), or, in a
+scene at one instant such as an impact, is given by ``velocity`` (of its centre of
+mass) and ``angular_velocity``. A body that does not turn at the instant
+(``angular_velocity: 0``) needs only its mass: its inertia cannot matter.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar, read_bool
+from rbdsolve.problem.schema import SHAPE_ALIASES, Body, Inertia, Part, Shape
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.loader import _Loader
+
+# Shape dimensions that are positions, not sizes: any sign is fine.
+POSITIONS = {"apex"}
+MOTION_KEYS = ("angle", "velocity", "angular_velocity")
+
+
+class BodyReader:
+    def __init__(self, loader: _Loader):
+        self.loader = loader
+
+    def body(self, name: str, node: Node) -> Body:
+        spec = expect_mapping(node, f"body '{name}'")
+        what = f"body '{name}'"
+        at, angle, velocity, omega = self.motion(spec, what)
+        if spec.get("parts") is None:
+            part = self.part(name, spec, what, MOTION_KEYS, simple=True, translating=_is_zero(omega))
+            return Body(name, (part,), at, angle, spec.loc, velocity, omega)
+        check_keys(spec, ("parts",), ("at", *MOTION_KEYS), what)
+        table = expect_mapping(spec.get("parts"), "parts: name -> part")
+        if not table.entries:
+            raise InputError(f"{what} has no parts", table.loc)
+        parts = tuple(self.part(k.text, expect_mapping(v, f"part '{k.text}'"), f"part '{k.text}' of {what}", (),
+                                simple=False) for k, v in table.entries)
+        if all(p.hole for p in parts):
+            raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
+        return Body(name, parts, at, angle, spec.loc, velocity, omega)
+
+    def motion(self, spec: Map, what: str) -> tuple[ex.Expr | None, ...]:
+        """(at, angle) for a body that moves with the scene, or (velocity,
+        angular_velocity) for a body at one instant; never a mix of the two."""
+        loader = self.loader
+        get = spec.get
+        if get("at") is None and get("velocity") is None:
+            raise InputError(f"{what} needs 'at' (its position) or, in a scene at one instant, "
+                             "'velocity'", spec.loc)
+        if get("velocity") is None:
+            if get("angular_velocity") is not None:
+                raise InputError("'angular_velocity' goes with 'velocity'; a body placed with 'at' "
+                                 "turns with its 'angle'", get("angular_velocity").loc)
+            at = loader.expr(get("at"), ex.Kind.VECTOR, "a point name or position vector", loader.positions)
+            return at, loader.optional_expr(get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"), None, None
+        for key in ("at", "angle"):
+            if get(key) is not None:
+                raise InputError(f"give either 'at'/'angle' (the motion) or 'velocity'/'angular_velocity' "
+                                 f"(one instant), not both; found '{key}' with 'velocity'", get(key).loc)
+        velocity = loader.expr(get("velocity"), ex.Kind.VECTOR,
+                               "the velocity of the centre of mass (a velocity point's name or a vector)",
+                               loader.rates)
+        omega = get("angular_velocity")
+        if omega is None:
+            raise InputError(f"{what} gives 'velocity' but not 'angular_velocity' (0 if it does not "
+                             "turn at this instant)", spec.loc)
+        return None, None, velocity, self.angular_velocity(omega)
+
+    def angular_velocity(self, node: Node) -> ex.Expr:
+        """A scalar ω (planar: about z) or a vector."""
+        if isinstance(node, Seq):
+            return self.loader.expr(node, ex.Kind.VECTOR, "an angular velocity", self.loader.rates)
+        scalar = expect_scalar(node, "an angular velocity (a scalar about z, or a vector)")
+        return ex.parse(scalar.text, scalar.loc, self.loader.rates, scalar.plain)
+
+    def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool,
+             translating: bool = False) -> Part:
+        shape = self.shape(spec, what, translating)
+        dims = shape.dimensions if shape else ()
+        _check_dimensions(spec, shape, what)
+        required = ("mass", *dims)
+        check_keys(spec, required, ("shape", "axis", "inertia", "at", *extra, *(() if simple else ("hole",))), what)
+        constant = self.loader.constant
+        mass = constant(spec.get("mass"), "a mass")
+        _refuse_negative(mass, "mass")
+        dimensions = []
+        for dim in dims:
+            value = constant(spec.get(dim), f"a {dim}")
+            if dim not in POSITIONS:
+                _refuse_negative(value, dim)
+            dimensions.append((dim, value))
+        axis_node = spec.get("axis")
+        if axis_node is not None and shape is None:
+            raise InputError("'axis' orients a shape; an explicit inertia is already in body axes",
+                             axis_node.loc)
+        at = None
+        if not simple and spec.get("at") is not None:
+            scope = self.loader.scope.constants("a part's position in its body must be constant")
+            at = self.loader.expr(spec.get("at"), ex.Kind.VECTOR, "a position in the body (a vector)", scope)
+        hole = read_bool(spec.get("hole"), "true or false") if spec.get("hole") is not None else False
+        return Part(name, shape, mass, tuple(dimensions), at,
+                    self.loader.axis(axis_node) if axis_node is not None else None,
+                    self.inertia(spec.get("inertia")), hole, spec.loc)
+
+    def shape(self, spec: Map, what: str, translating: bool = False) -> Shape | None:
+        node = spec.get("shape")
+        if node is None:
+            if spec.get("inertia") is None:
+                if translating:  # it does not turn at this instant: its inertia cannot matter
+                    return Shape.PARTICLE
+                raise InputError(f"{what} needs a 'shape' (or an explicit 'inertia')", spec.loc)
+            return None
+        if spec.get("inertia") is not None:
+            raise InputError(f"{what}: give either 'shape' or 'inertia', not both", node.loc)
+        word = expect_scalar(node, "a shape name").text
+        names = [s.value for s in Shape] + list(SHAPE_ALIASES)
+        if word in SHAPE_ALIASES:
+            return SHAPE_ALIASES[word]
+        try:
+            return Shape(word)
+        except ValueError:
+            hint = did_you_mean(word, names) or f" (shapes: {', '.join(s.value for s in Shape)})"
+            raise InputError(f"unknown shape '{word}'{hint}", node.loc) from None
+
+    def inertia(self, node: Node | None) -> Inertia | None:
+        if node is None:
+            return None
+        constant = self.loader.constant
+        if isinstance(node, Scalar):
+            return Inertia((constant(node, "a moment of inertia"),), node.loc)
+        if isinstance(node, Seq) and len(node.items) == 3 and all(isinstance(i, Seq) for i in node.items):
+            rows = [row for row in node.items]
+            if any(len(r.items) != 3 for r in rows):
+                raise InputError("an inertia matrix is 3x3", node.loc)
+            entries = [constant(x, "an inertia matrix entry") for r in rows for x in r.items]
+            return Inertia(tuple(entries), node.loc)
+        if isinstance(node, Seq) and len(node.items) == 3:
+            return Inertia(tuple(constant(x, "a principal moment") for x in node.items), node.loc)
+        raise InputError(
+            "expected an inertia: J (planar), [J1, J2, J3] or a 3x3 matrix", node.loc
+        )
+
+
+def _is_zero(expr: ex.Expr | None) -> bool:
+    if expr is None:
+        return False
+    if isinstance(expr.tree, ex.Vec):
+        return all(ex.constant_value(c) == 0 for c in expr.tree.items)
+    return ex.constant_value(expr.tree) == 0
+
+
+def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
+    """A dimension that belongs to other shapes: say which ones this shape takes."""
+    others = {d for s in Shape for d in s.dimensions}
+    mine = shape.dimensions if shape else ()
+    for key, _ in spec.entries:
+        if key.text in others and key.text not in mine:
+            takes = ", ".join(mine) if mine else "no dimensions"
+            kind = f"a {shape.value}" if shape else "a body with an explicit inertia"
+            raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
+
+
+def _refuse_negative(value: ex.Expr, what: str) -> None:
+    number = ex.constant_value(value.tree)
+    if number is not None and number < 0:
+        raise InputError(f"a {what} must not be negative, found {value.text}", value.loc)

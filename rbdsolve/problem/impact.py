@@ -1,0 +1,128 @@
+"""Options of the ``impact`` question: the instant, the velocities before, the blows.
+
+    - impact:
+        at: {theta: 0}              # the configuration at the instant (when it matters)
+        before: {theta: 0}          # generalized velocities just before (default 0)
+        impulses: {P: [F, 0]}       # known impulses at points
+        collisions:                 # unknown impulses along a normal, closed by e
+          A: {normal: y, restitution: e}                          # A hits a fixed surface
+          B: {normal: x, restitution: e, particle: {mass: m, velocity: [v0, 0]}}
+          C: {particle: {mass: m, velocity: [v0, 0], after: [0, 0]}}   # e follows
+        points: [A, B]              # velocities after (default: the struck points)
+        centre_of_percussion: d     # the value of d for which the supports feel no impulse
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
+from rbdsolve.problem.schema import Collision, ImpactOptions, Particle
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.questions import QuestionReader
+
+
+class ImpactReader:
+    def __init__(self, questions: QuestionReader):
+        self.questions = questions
+        self.loader = questions.loader
+        self.point_names = [p.name for p in questions.points]
+
+    def options(self, opts: Map | None, key: Scalar) -> ImpactOptions:
+        get = opts.get if opts else (lambda _: None)
+        at = self.questions.coordinate_values(get("at"), "the configuration 'at'", complete=False) \
+            if get("at") is not None else ()
+        before = self.questions.coordinate_values(get("before"), "the velocities 'before'", complete=False) \
+            if get("before") is not None else ()
+        impulses = self.impulses(get("impulses")) if get("impulses") is not None else ()
+        collisions = self.collisions(get("collisions")) if get("collisions") is not None else ()
+        if not impulses and not collisions:
+            raise InputError("'impact' needs 'impulses' (known impulses at points) or 'collisions'", key.loc)
+        struck = [name for name, _ in impulses] + [c.point for c in collisions]
+        points = self.point_list(get("points")) if get("points") is not None else tuple(dict.fromkeys(struck))
+        centre = self.parameter(get("centre_of_percussion")) if get("centre_of_percussion") is not None else None
+        return ImpactOptions(at, before, impulses, collisions, points, centre, key.loc)
+
+    def point(self, node: Node) -> str:
+        name = expect_scalar(node, "a point name").text.strip()
+        if name not in self.point_names:
+            known = f" (points: {', '.join(self.point_names)})" if self.point_names else " (no points are declared)"
+            raise InputError(f"unknown point '{name}'{did_you_mean(name, self.point_names) or known}", node.loc)
+        return name
+
+    def point_list(self, node: Node) -> tuple[str, ...]:
+        if not isinstance(node, Seq):
+            raise InputError(f"expected a list of point names, found {describe(node)}", node.loc)
+        return tuple(self.point(item) for item in node.items)
+
+    def constant_vector(self, node: Node, what: str) -> ex.Expr:
+        scope = self.loader.scope.constants(f"{what} must be constant (parameters and numbers only)")
+        return self.loader.expr(node, ex.Kind.VECTOR, what, scope)
+
+    def impulses(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
+        table = expect_mapping(node, "impulses: point -> impulse vector")
+        return tuple((self.point(k), self.constant_vector(v, "an impulse (a vector)")) for k, v in table.entries)
+
+    def collisions(self, node: Node) -> tuple[Collision, ...]:
+        table = expect_mapping(node, "collisions: point -> {normal, restitution, particle}")
+        return tuple(self.collision(self.point(k), expect_mapping(v, f"collision at '{k.text}'"))
+                     for k, v in table.entries)
+
+    def collision(self, point: str, spec: Map) -> Collision:
+        what = f"collision at '{point}'"
+        check_keys(spec, (), ("normal", "restitution", "particle"), what)
+        particle = self.particle(spec.get("particle")) if spec.get("particle") is not None else None
+        restitution = spec.get("restitution")
+        known_after = particle is not None and particle.after is not None
+        if restitution is not None and known_after:
+            raise InputError("give either 'restitution' (the velocities after follow) or the particle's "
+                             "'after' velocity (the restitution follows), not both", restitution.loc)
+        if restitution is None and not known_after:
+            hint = "" if particle else " (a point hitting a fixed surface)"
+            raise InputError(f"{what}{hint} needs 'restitution: e' (0 ≤ e ≤ 1)", spec.loc)
+        if spec.get("normal") is None and not known_after:
+            raise InputError(f"{what} needs 'normal': the direction of the impulse on the system "
+                             "(x, -y, … or a vector)", spec.loc)
+        normal = self.normal(spec.get("normal")) if spec.get("normal") is not None else None
+        e = self.restitution(restitution) if restitution is not None else None
+        return Collision(point, normal, e, particle, spec.loc)
+
+    def normal(self, node: Node) -> ex.Expr:
+        value = self.loader.axis(node) if _is_axis_name(node) else self.constant_vector(node, "a normal (a vector)")
+        if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
+            raise InputError("a normal must not be the zero vector", value.loc)
+        return value
+
+    def restitution(self, node: Node) -> ex.Expr:
+        value = self.loader.constant(node, "a coefficient of restitution")
+        number = ex.constant_value(value.tree)
+        if number is not None and not 0 <= number <= 1:
+            raise InputError(f"a coefficient of restitution is between 0 and 1, found {value.text}", value.loc)
+        return value
+
+    def particle(self, node: Node) -> Particle:
+        spec = expect_mapping(node, "a particle: {mass, velocity, after}")
+        check_keys(spec, ("mass", "velocity"), ("after",), "the particle")
+        mass = self.loader.constant(spec.get("mass"), "a mass")
+        number = ex.constant_value(mass.tree)
+        if number is not None and number <= 0:
+            raise InputError(f"a particle's mass must be positive, found {mass.text}", mass.loc)
+        velocity = self.constant_vector(spec.get("velocity"), "the particle's velocity just before")
+        after = self.constant_vector(spec.get("after"), "the particle's velocity just after") \
+            if spec.get("after") is not None else None
+        return Particle(mass, velocity, after, spec.loc)
+
+    def parameter(self, node: Node) -> str:
+        name = expect_scalar(node, "a parameter name").text.strip()
+        params = sorted(self.loader.scope.scalars - self.loader.scope.functions_of_time - {"t"})
+        if name not in params:
+            raise InputError(f"'{name}' is not a parameter{did_you_mean(name, params)}", node.loc)
+        return name
+
+
+def _is_axis_name(node: Node) -> bool:
+    return isinstance(node, Scalar) and node.text.strip() in {"x", "y", "z", "-x", "-y", "-z"}

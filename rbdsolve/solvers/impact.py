@@ -1,0 +1,293 @@
+"""Impacts: Lagrange's equations for impact.
+
+During an impact the configuration does not change and finite forces give no impulse.
+Integrating Lagrange's equations over the impact gives, for each coordinate q_a,
+
+    ∂T/∂q̇_a |_f − ∂T/∂q̇_a |_i = I_a,      I_a = Σ_k P_k · ∂v_k/∂q̇_a
+
+(i just before, f just after; P_k the impulse at a point with velocity v_k; e.g. the
+worked solution of problem 2 in the KTH SG2150 exam of 2015-10-29, or Greenwood,
+Advanced Dynamics, ch. 3). T is quadratic in q̇ with M(q) frozen during the impact, so
+the left side is M (q̇_f − q̇_i): the impulse equations' matrix is the mass matrix at the
+instant. Smooth ideal constraints give no generalized impulse.
+
+A collision whose impulse is unknown, λ n along the unit normal n at point P, adds λ
+as an unknown and Newton's law of restitution as its equation,
+
+    n · (v_P − u)_f = −e n · (v_P − u)_i,
+
+with u the velocity of what P hits: 0 for a fixed surface, and for a particle of mass
+μ, u_f = u_i − λ n / μ (it gets the opposite impulse).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.model.state import t
+from rbdsolve.model.tidy import tidy
+from rbdsolve.problem.schema import Collision, ImpactOptions, Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.common import Options
+from rbdsolve.solvers.impact_steps import impact_steps
+
+@dataclass(frozen=True)
+class ImpactAnswers:
+    impulses: Mapping[str, sp.Expr]  # the generalized impulse I_a, per coordinate
+    velocities: Mapping[str, sp.Expr]  # q̇_a just after, per coordinate
+    points: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # velocities just after
+    contact_impulses: Mapping[str, sp.Expr]  # λ of each collision, along its normal
+    restitution: Mapping[str, sp.Expr]  # e implied by a particle's given velocity after
+    energy_before: sp.Expr  # kinetic energy of the system and the striking particles
+    energy_after: sp.Expr
+    energy_lost: sp.Expr
+    support_impulse: tuple[sp.Expr, sp.Expr, sp.Expr]  # Δp − Σ P: what the supports gave
+    centre_of_percussion: sp.Expr | None  # the asked parameter's value for no support impulse
+
+
+@dataclass(frozen=True)
+class Blow:
+    """An impulse on the system at ``point``: known, or λ n with λ unknown."""
+
+    point: str
+    impulse: sp.Matrix
+    size: sp.Symbol | None  # λ, when the impulse is unknown
+    normal: sp.Matrix | None  # unit normal (collisions)
+    collision: Collision | None
+
+
+@dataclass(frozen=True)
+class Instant:
+    """The kinematics at the impact instant, linear in the rates q̇."""
+
+    model: Model
+    at: Mapping[sp.Symbol, sp.Expr]
+    T: sp.Expr  # ½ q̇ᵀ M q̇ + … at the instant
+
+    def velocity(self, point: str) -> sp.Matrix:
+        return self.model.point_velocity(point).xreplace(self.at)
+
+
+def instant(model: Model, opts: ImpactOptions) -> Instant:
+    """Substitute the configuration into every velocity; what is left must be known."""
+    names = model.symbols
+    at = {model.symbols.coordinates[name]: names.scalar(value) for name, value in opts.at}
+    T = sp.Integer(0)
+    for body in model.bodies:
+        v = body.velocity(model.state).xreplace(at)
+        omega = body.angular_velocity(model.state).xreplace(at)
+        J = body.inertia_in_scene().xreplace(at)
+        T_translation = body.mass * v.dot(v) / 2
+        T_rotation = (omega.T * J * omega)[0, 0] / 2
+        T += T_translation + T_rotation
+    T = sp.expand(T)
+    _require_known(T, model, opts)
+    return Instant(model, at, T)
+
+
+def _require_known(expr: sp.Expr, model: Model, opts: ImpactOptions) -> None:
+    missing = [n for q, n in zip(model.q, model.coordinate_names()) if expr.has(q)]
+    if missing:
+        raise InputError(f"the velocities at the instant depend on {', '.join(missing)}: give "
+                         f"{'its value' if len(missing) == 1 else 'their values'} with 'at:'", opts.loc)
+    if expr.has(t):
+        raise UnsolvedError("the scene moves by itself (its positions depend on t): an impact at a "
+                            "given time is not supported yet")
+
+
+def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
+    """Known impulses, impulses of particles with a given velocity after, and unknown
+    collision impulses λ n."""
+    names = model.symbols
+    out = [Blow(point, names.vector(vector), None, None, None) for point, vector in opts.impulses]
+    for c in opts.collisions:
+        normal = _unit(names.vector(c.normal), c) if c.normal is not None else None
+        if c.restitution is None:  # a particle with a known velocity after: a known impulse
+            mu = names.scalar(c.particle.mass)
+            P = mu * (names.vector(c.particle.velocity) - names.vector(c.particle.after))
+            if normal is None:
+                normal = _unit(P, c) if P != sp.zeros(3, 1) else None
+            out.append(Blow(c.point, P, None, normal, c))
+        else:
+            size = sp.Symbol(f"lamda_{c.point}")
+            out.append(Blow(c.point, size * normal, size, normal, c))
+    return out
+
+
+def _unit(vector: sp.Matrix, collision: Collision) -> sp.Matrix:
+    length = tidy(sp.sqrt(vector.dot(vector)))
+    if length == 0:
+        where = collision.normal.loc if collision.normal is not None else collision.loc
+        raise InputError("a normal must not be the zero vector", where)
+    return vector.applyfunc(lambda x: tidy(x / length))
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    opts: ImpactOptions = question.options
+    now = instant(model, opts)
+    hits = blows(model, opts, now)
+    for point in {b.point for b in hits} | set(opts.points):
+        _require_known(now.velocity(point), model, opts)
+    work = ImpactEquations(model, opts, now, hits)
+    answers = work.answers()
+    return Solution("impact", Route.EXACT, answers, impact_steps(work, answers), warnings=tuple(work.warnings))
+
+
+class ImpactEquations:
+    """The impulse equations of one impact, set up once and solved once."""
+
+    def __init__(self, model: Model, opts: ImpactOptions, now: Instant, hits: list[Blow]):
+        self.model, self.opts, self.now, self.hits = model, opts, now, hits
+        given = dict(opts.before)
+        self.before = {qd: model.symbols.scalar(given[n]) if n in given else sp.Integer(0)
+                       for n, qd in zip(model.coordinate_names(), model.qd)}
+        self.final = tuple(sp.Dummy(f"{n}_f") for n in model.coordinate_names())
+        self.after = dict(zip(model.qd, self.final))
+        self.sizes = [b.size for b in hits if b.size is not None]
+        self.warnings: list[str] = []
+        self.I = [tidy(sum((b.impulse.dot(sp.diff(now.velocity(b.point), qd)) for b in hits), sp.Integer(0)))
+                  for qd in model.qd]
+        self.momenta = [sp.diff(now.T, qd) for qd in model.qd]  # ∂T/∂q̇_a
+        self.solution = self._solve()
+
+    # --- the equations -----------------------------------------------------------------
+
+    def lagrange(self) -> list[sp.Expr]:
+        """∂T/∂q̇_a|_f − ∂T/∂q̇_a|_i − I_a = 0."""
+        return [p.xreplace(self.after) - p.xreplace(self.before) - I for p, I in zip(self.momenta, self.I)]
+
+    def other_velocity(self, blow: Blow, final: bool) -> sp.Matrix:
+        """u: the velocity of what the point hits (a fixed surface: 0)."""
+        particle = blow.collision.particle if blow.collision else None
+        if particle is None:
+            return sp.zeros(3, 1)
+        names = self.model.symbols
+        u = names.vector(particle.velocity)
+        return u - blow.impulse / names.scalar(particle.mass) if final else u
+
+    def normal_speed(self, blow: Blow, final: bool) -> sp.Expr:
+        """n · (v_P − u), before or after: negative while approaching."""
+        v = self.now.velocity(blow.point).xreplace(self.after if final else self.before)
+        return blow.normal.dot(v - self.other_velocity(blow, final))
+
+    def restitution_equations(self) -> list[sp.Expr]:
+        """n · (v_P − u)_f + e n · (v_P − u)_i = 0, one per unknown collision impulse."""
+        out = []
+        for blow in self.hits:
+            if blow.size is None:
+                continue
+            e = self._restitution(blow.collision)
+            approach = tidy(self.normal_speed(blow, final=False))
+            value = _known_value(approach, self.model)
+            if approach.is_nonnegative or (value is not None and value >= 0):
+                raise UnsolvedError(f"at {blow.point} the normal velocity n·(v − u) just before is "
+                                    f"{sp.sstr(approach)}, so nothing approaches: no collision, or the normal "
+                                    "points the wrong way (it is the direction of the impulse on the system)")
+            out.append(self.normal_speed(blow, final=True) + e * approach)
+        return out
+
+    def _restitution(self, collision: Collision) -> sp.Expr:
+        e = self.model.symbols.scalar(collision.restitution)
+        value = e.xreplace(self.model.values)
+        if value.is_number and not 0 <= value <= 1:
+            raise InputError(f"a coefficient of restitution is between 0 and 1, found {collision.restitution.text}"
+                             f" = {value}", collision.restitution.loc)
+        return e
+
+    def _solve(self) -> dict[sp.Symbol, sp.Expr]:
+        unknowns = [*self.final, *self.sizes]
+        equations = [*self.lagrange(), *self.restitution_equations()]
+        A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
+        if A.det() == 0:
+            raise UnsolvedError("the impulse equations are singular: a coordinate carries no inertia at "
+                                "the instant, or two collisions push the same way")
+        values = A.LUsolve(b)
+        return {u: tidy(x) for u, x in zip(unknowns, values)}
+
+    # --- the results -------------------------------------------------------------------
+
+    def answers(self) -> ImpactAnswers:
+        model, sol = self.model, self.solution
+        names = model.coordinate_names()
+        final = {qd: sol[f] for qd, f in self.after.items()}
+        impulses = [tidy(I.xreplace(sol)) for I in self.I]
+        points = {p: tuple(tidy(x) for x in self.now.velocity(p).xreplace(final)) for p in self.opts.points}
+        before, after = self.energy(final=False), self.energy(final=True)
+        support = self.support_impulse(final)
+        return ImpactAnswers(
+            impulses=dict(zip(names, impulses)),
+            velocities={n: sol[f] for n, f in zip(names, self.final)},
+            points=points,
+            contact_impulses={b.point: sol[b.size] for b in self.hits if b.size is not None},
+            restitution=self.equivalent_restitution(final),
+            energy_before=before,
+            energy_after=after,
+            energy_lost=tidy(before - after),
+            support_impulse=support,
+            centre_of_percussion=self.centre_of_percussion(support),
+        )
+
+    def energy(self, final: bool) -> sp.Expr:
+        """T of the system plus ½ μ u·u of each striking particle."""
+        rates = {qd: self.solution[f] for qd, f in self.after.items()} if final else self.before
+        total = self.now.T.xreplace(rates)
+        for blow in self.hits:
+            if blow.collision and blow.collision.particle:
+                u = self.other_velocity(blow, final).xreplace(self.solution)
+                total += self.model.symbols.scalar(blow.collision.particle.mass) * u.dot(u) / 2
+        return tidy(total)
+
+    def equivalent_restitution(self, final: dict) -> dict[str, sp.Expr]:
+        """e = −n·(v_P − u)_f / n·(v_P − u)_i where a particle's velocity after is given."""
+        out = {}
+        for blow in self.hits:
+            if blow.size is not None or blow.collision is None or blow.normal is None:
+                continue
+            approach = tidy(self.normal_speed(blow, final=False))
+            if approach == 0:
+                self.warnings.append(f"at {blow.point} nothing approaches along the normal: no restitution "
+                                     "coefficient")
+                continue
+            e = tidy(-self.normal_speed(blow, final=True).xreplace(self.after).xreplace(self.solution) / approach)
+            value = _known_value(e, self.model)
+            if value is not None and not 0 <= value <= 1:
+                self.warnings.append(f"the velocities given at {blow.point} imply a restitution coefficient "
+                                     f"{sp.sstr(e)}, outside [0, 1]")
+            out[blow.point] = e
+        return out
+
+    def support_impulse(self, final: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        """What the supports gave: the change of momentum, Σ m Δv_G, less the impulses."""
+        dp = sp.zeros(3, 1)
+        for body in self.model.bodies:
+            v = body.velocity(self.model.state).xreplace(self.now.at)
+            dp += body.mass * (v.xreplace(final) - v.xreplace(self.before))
+        applied = sum((b.impulse.xreplace(self.solution) for b in self.hits), sp.zeros(3, 1))
+        return tuple(tidy(x) for x in dp - applied)
+
+    def centre_of_percussion(self, support: tuple[sp.Expr, ...]) -> sp.Expr | None:
+        if self.opts.centre_of_percussion is None:
+            return None
+        p = self.model.symbols.parameters[self.opts.centre_of_percussion]
+        equations = [x for x in support if x != 0]
+        if not equations:
+            self.warnings.append("the supports feel no impulse whatever "
+                                 f"{self.opts.centre_of_percussion} is")
+            return None
+        found = sp.solve(equations, p, dict=True)
+        if len(found) != 1 or p not in found[0]:
+            self.warnings.append(f"no single value of {self.opts.centre_of_percussion} frees the supports "
+                                 "of impulse")
+            return None
+        return tidy(found[0][p])
+
+
+def _known_value(value: sp.Expr, model: Model) -> float | None:
+    """The value at the parameters' values, if every parameter in it has one."""
+    number = value.xreplace(model.values)
+    return float(number) if number.is_number and number.is_real else None
