@@ -32,9 +32,17 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         folded = TR10i(expr)
         if sp.count_ops(folded) <= sp.count_ops(expr):
             expr = folded
-    elif _has_denominator(expr):
-        expr = sp.cancel(sp.together(expr))  # one fraction, common factors cancelled
+    if _has_denominator(expr):
+        expr = _cancel(expr)
     return _leading_plus(sp.factor_terms(expr))
+
+
+def _cancel(expr: sp.Expr) -> sp.Expr:
+    """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
+    rational function of them, as impact and statics answers are."""
+    table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
+    back = {v: k for k, v in table.items()}
+    return sp.cancel(sp.together(expr.xreplace(table))).xreplace(back)
 
 
 def _has_denominator(expr: sp.Expr) -> bool:
@@ -43,12 +51,20 @@ def _has_denominator(expr: sp.Expr) -> bool:
 
 
 def _leading_plus(expr: sp.Expr) -> sp.Expr:
-    """−1/4 a² σ (π − 16) → 1/4 a² σ (16 − π): a negative factor moved into a sum."""
+    """−1/4 a² σ (π − 16) → 1/4 a² σ (16 − π): a negative factor moved into a sum;
+    6 v (−e − 1) → −6 v (e + 1): a sum of negative terms turned round."""
     if not expr.is_Mul:
         return expr
+    factors = sp.Mul.make_args(expr)
+    negative = [f for f in factors if f.is_Add and all(x.could_extract_minus_sign() for x in f.args)]
+    if negative and len(factors) > 2:
+        expr = sp.Mul(*[(-f if f in negative else f) for f in factors]) * (-1) ** len(negative)
+        if not expr.is_Mul:
+            return expr
     coeff, rest = expr.as_coeff_Mul()
     sums = [f for f in sp.Mul.make_args(rest) if f.is_Add]
-    if coeff.is_negative and len(sums) == 1:
+    mixed = len(sums) == 1 and any(x.could_extract_minus_sign() for x in sums[0].args)
+    if coeff.is_negative and mixed:
         return sp.Mul(-coeff, *[(-f if f is sums[0] else f) for f in sp.Mul.make_args(rest)])
     return expr
 

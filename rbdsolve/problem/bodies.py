@@ -114,7 +114,8 @@ class BodyReader:
             if spec.get("inertia") is None:
                 if translating:  # it does not turn at this instant: its inertia cannot matter
                     return Shape.PARTICLE
-                raise InputError(f"{what} needs a 'shape' (or an explicit 'inertia')", spec.loc)
+                turns = " since it turns at this instant" if spec.get("angular_velocity") is not None else ""
+                raise InputError(f"{what} needs a 'shape' (or an explicit 'inertia'){turns}", spec.loc)
             return None
         if spec.get("inertia") is not None:
             raise InputError(f"{what}: give either 'shape' or 'inertia', not both", node.loc)

@@ -66,8 +66,14 @@ class Along:
         return plain(self.component) * self.basis
 
     def is_sum(self) -> bool:
+        """Is the component a sum or a fraction, to be bracketed before the basis vector?"""
         c = self.component
-        return (isinstance(c, Terms) and len(c.items) > 1) or (isinstance(c, sp.Basic) and c.is_Add)
+        if isinstance(c, Terms):
+            return len(c.items) > 1
+        if isinstance(c, sp.Basic):
+            return c.is_Add or any(f.is_Pow and f.exp.is_negative and not f.base.is_Number
+                                   for f in sp.Mul.make_args(c))
+        return False
 
 
 Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | Label | Along | str

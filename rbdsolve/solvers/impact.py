@@ -41,6 +41,7 @@ class ImpactAnswers:
     impulses: Mapping[str, sp.Expr]  # the generalized impulse I_a, per coordinate
     velocities: Mapping[str, sp.Expr]  # q̇_a just after, per coordinate
     points: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # velocities just after
+    particles: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # striking particles' velocities after
     contact_impulses: Mapping[str, sp.Expr]  # λ of each collision, along its normal
     restitution: Mapping[str, sp.Expr]  # e implied by a particle's given velocity after
     energy_before: sp.Expr  # kinetic energy of the system and the striking particles
@@ -223,6 +224,7 @@ class ImpactEquations:
             impulses=dict(zip(names, impulses)),
             velocities={n: sol[f] for n, f in zip(names, self.final)},
             points=points,
+            particles=self.particle_velocities(),
             contact_impulses={b.point: sol[b.size] for b in self.hits if b.size is not None},
             restitution=self.equivalent_restitution(final),
             energy_before=before,
@@ -231,6 +233,10 @@ class ImpactEquations:
             support_impulse=support,
             centre_of_percussion=self.centre_of_percussion(support),
         )
+
+    def particle_velocities(self) -> dict[str, tuple[sp.Expr, sp.Expr, sp.Expr]]:
+        return {b.point: tuple(tidy(x) for x in self.other_velocity(b, final=True).xreplace(self.solution))
+                for b in self.hits if b.collision and b.collision.particle}
 
     def energy(self, final: bool) -> sp.Expr:
         """T of the system plus ½ μ u·u of each striking particle."""

@@ -33,8 +33,11 @@ class _Show:
         self.rates = [*model.qd, *work.final, *work.sizes]
 
     def scalar(self, expr: sp.Expr) -> Math:
-        """Collected in the rates, in exam order, with a common scale pulled out."""
+        """Collected in the rates, in exam order, with a common scale pulled out; a value
+        free of them as one tidy fraction."""
         model = self.model
+        if not expr.has(*self.rates):
+            return model.to_time(tidy(expr))
         parts = collect_in(sp.expand(expr), self.rates)
         terms = [(model.to_time(tidy(c)), tuple(self.time(f) for f in factors))
                  for c, factors in ordered_sum(parts, self.rates, list(model.q))]
@@ -137,10 +140,11 @@ def _restitution(work: ImpactEquations, show: _Show) -> Step:
 
 def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[Step]:
     out = []
-    if answers.points:
-        out.append(st.result("Velocities just after the impact:",
-                             *[Relation(sp.Symbol(f"v_{p}"), show.vector(sp.Matrix(v)))
-                               for p, v in answers.points.items()]))
+    rows = [Relation(sp.Symbol(f"v_{p}"), show.vector(sp.Matrix(v))) for p, v in answers.points.items()]
+    rows += [Relation(sp.Symbol(f"u_{p}"), show.vector(sp.Matrix(v))) for p, v in answers.particles.items()]
+    if rows:
+        particles = " (u: the particle that struck there)" if answers.particles else ""
+        out.append(st.result(f"Velocities just after the impact{particles}:", *rows))
     out.append(st.result("Kinetic energy of the system and the striking particles, just before (i) and "
                          "after (f), and the energy lost:",
                          Relation(sp.Symbol("T_i"), show.scalar(answers.energy_before)),
