@@ -37,6 +37,19 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     return _leading_plus(sp.factor_terms(expr))
 
 
+def tidy_fraction(expr: sp.Expr) -> sp.Expr:
+    """A rational function of the parameters as one cancelled fraction, never expanded
+    over its denominator. sin α, cos α, … count as symbols; radicals such as √3 are
+    algebraic numbers (so √3·√3 = 3 and the result is zero exactly when it should be).
+    For answers built from solved linear systems, where ``tidy`` would swell."""
+    if expr.is_Rational:
+        return expr
+    table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
+    back = {v: k for k, v in table.items()}
+    value = sp.cancel(sp.together(expr.xreplace(table)), extension=True).xreplace(back)
+    return _leading_plus(sp.factor_terms(value))
+
+
 def _cancel(expr: sp.Expr) -> sp.Expr:
     """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
     rational function of them, as impact and statics answers are."""

@@ -11,7 +11,8 @@ Advanced Dynamics, ch. 3). T is quadratic in q̇ with M(q) frozen during the imp
 the left side is M (q̇_f − q̇_i): the impulse equations' matrix is the mass matrix at the
 instant. Smooth ideal constraints give no generalized impulse.
 
-A collision whose impulse is unknown, λ n along the unit normal n at point P, adds λ
+A collision whose impulse is unknown, λ n along the normal n at point P (as given:
+the law below is homogeneous in n, so n is never normalized and no √ enters), adds λ
 as an unknown and Newton's law of restitution as its equation,
 
     n · (v_P − u)_f = −e n · (v_P − u)_i,
@@ -27,10 +28,12 @@ from typing import Mapping
 
 import sympy as sp
 
+from sympy.polys.matrices import DomainMatrix
+
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
-from rbdsolve.model.tidy import tidy
+from rbdsolve.model.tidy import tidy, tidy_fraction
 from rbdsolve.problem.schema import Collision, ImpactOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.common import Options
@@ -42,7 +45,7 @@ class ImpactAnswers:
     velocities: Mapping[str, sp.Expr]  # q̇_a just after, per coordinate
     points: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # velocities just after
     particles: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # striking particles' velocities after
-    contact_impulses: Mapping[str, sp.Expr]  # λ of each collision, along its normal
+    contact_impulses: Mapping[str, sp.Expr]  # size of each collision's impulse, λ |n|
     restitution: Mapping[str, sp.Expr]  # e implied by a particle's given velocity after
     energy_before: sp.Expr  # kinetic energy of the system and the striking particles
     energy_after: sp.Expr
@@ -58,7 +61,7 @@ class Blow:
     point: str
     impulse: sp.Matrix
     size: sp.Symbol | None  # λ, when the impulse is unknown
-    normal: sp.Matrix | None  # unit normal (collisions)
+    normal: sp.Matrix | None  # the normal as given, or the impulse's direction (collisions)
     collision: Collision | None
 
 
@@ -107,12 +110,12 @@ def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
     names = model.symbols
     out = [Blow(point, names.vector(vector), None, None, None) for point, vector in opts.impulses]
     for c in opts.collisions:
-        normal = _unit(names.vector(c.normal), c) if c.normal is not None else None
+        normal = _nonzero(names.vector(c.normal), c) if c.normal is not None else None
         if c.restitution is None:  # a particle with a known velocity after: a known impulse
             mu = names.scalar(c.particle.mass)
             P = mu * (names.vector(c.particle.velocity) - names.vector(c.particle.after))
             if normal is None:
-                normal = _unit(P, c) if P != sp.zeros(3, 1) else None
+                normal = P if P != sp.zeros(3, 1) else None
             out.append(Blow(c.point, P, None, normal, c))
         else:
             size = sp.Symbol(f"lamda_{c.point}")
@@ -120,12 +123,10 @@ def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
     return out
 
 
-def _unit(vector: sp.Matrix, collision: Collision) -> sp.Matrix:
-    length = tidy(sp.sqrt(vector.dot(vector)))
-    if length == 0:
-        where = collision.normal.loc if collision.normal is not None else collision.loc
-        raise InputError("a normal must not be the zero vector", where)
-    return vector.applyfunc(lambda x: tidy(x / length))
+def _nonzero(vector: sp.Matrix, collision: Collision) -> sp.Matrix:
+    if tidy(vector.dot(vector)) == 0:
+        raise InputError("a normal must not be the zero vector", collision.normal.loc)
+    return vector
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -204,11 +205,11 @@ class ImpactEquations:
         unknowns = [*self.final, *self.sizes]
         equations = [*self.lagrange(), *self.restitution_equations()]
         A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
-        if A.det() == 0:
+        values = solve_linear(A, b)
+        if values is None:
             raise UnsolvedError("the impulse equations are singular: a coordinate carries no inertia at "
                                 "the instant, or two collisions push the same way")
-        values = A.LUsolve(b)
-        return {u: tidy(x) for u, x in zip(unknowns, values)}
+        return {u: tidy_fraction(x) for u, x in zip(unknowns, values)}
 
     # --- the results -------------------------------------------------------------------
 
@@ -216,8 +217,8 @@ class ImpactEquations:
         model, sol = self.model, self.solution
         names = model.coordinate_names()
         final = {qd: sol[f] for qd, f in self.after.items()}
-        impulses = [tidy(I.xreplace(sol)) for I in self.I]
-        points = {p: tuple(tidy(x) for x in self.now.velocity(p).xreplace(final)) for p in self.opts.points}
+        impulses = [tidy_fraction(I.xreplace(sol)) for I in self.I]
+        points = {p: tuple(tidy_fraction(x) for x in self.now.velocity(p).xreplace(final)) for p in self.opts.points}
         before, after = self.energy(final=False), self.energy(final=True)
         support = self.support_impulse(final)
         return ImpactAnswers(
@@ -225,17 +226,18 @@ class ImpactEquations:
             velocities={n: sol[f] for n, f in zip(names, self.final)},
             points=points,
             particles=self.particle_velocities(),
-            contact_impulses={b.point: sol[b.size] for b in self.hits if b.size is not None},
+            contact_impulses={b.point: tidy_fraction(sol[b.size] * sp.sqrt(b.normal.dot(b.normal)))
+                              for b in self.hits if b.size is not None},
             restitution=self.equivalent_restitution(final),
             energy_before=before,
             energy_after=after,
-            energy_lost=tidy(before - after),
+            energy_lost=tidy_fraction(before - after),
             support_impulse=support,
             centre_of_percussion=self.centre_of_percussion(support),
         )
 
     def particle_velocities(self) -> dict[str, tuple[sp.Expr, sp.Expr, sp.Expr]]:
-        return {b.point: tuple(tidy(x) for x in self.other_velocity(b, final=True).xreplace(self.solution))
+        return {b.point: tuple(tidy_fraction(x) for x in self.other_velocity(b, final=True).xreplace(self.solution))
                 for b in self.hits if b.collision and b.collision.particle}
 
     def energy(self, final: bool) -> sp.Expr:
@@ -246,7 +248,7 @@ class ImpactEquations:
             if blow.collision and blow.collision.particle:
                 u = self.other_velocity(blow, final).xreplace(self.solution)
                 total += self.model.symbols.scalar(blow.collision.particle.mass) * u.dot(u) / 2
-        return tidy(total)
+        return tidy_fraction(total)
 
     def equivalent_restitution(self, final: dict) -> dict[str, sp.Expr]:
         """e = −n·(v_P − u)_f / n·(v_P − u)_i where a particle's velocity after is given."""
@@ -259,7 +261,8 @@ class ImpactEquations:
                 self.warnings.append(f"at {blow.point} nothing approaches along the normal: no restitution "
                                      "coefficient")
                 continue
-            e = tidy(-self.normal_speed(blow, final=True).xreplace(self.after).xreplace(self.solution) / approach)
+            e = tidy_fraction(-self.normal_speed(blow, final=True).xreplace(self.after).xreplace(self.solution)
+                              / approach)
             value = _known_value(e, self.model)
             if value is not None and not 0 <= value <= 1:
                 self.warnings.append(f"the velocities given at {blow.point} imply a restitution coefficient "
@@ -274,7 +277,7 @@ class ImpactEquations:
             v = body.velocity(self.model.state).xreplace(self.now.at)
             dp += body.mass * (v.xreplace(final) - v.xreplace(self.before))
         applied = sum((b.impulse.xreplace(self.solution) for b in self.hits), sp.zeros(3, 1))
-        return tuple(tidy(x) for x in dp - applied)
+        return tuple(tidy_fraction(x) for x in dp - applied)
 
     def centre_of_percussion(self, support: tuple[sp.Expr, ...]) -> sp.Expr | None:
         if self.opts.centre_of_percussion is None:
@@ -290,7 +293,27 @@ class ImpactEquations:
             self.warnings.append(f"no single value of {self.opts.centre_of_percussion} frees the supports "
                                  "of impulse")
             return None
-        return tidy(found[0][p])
+        return tidy_fraction(found[0][p])
+
+
+def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
+    """x with A x = b, exactly, or None when A is singular.
+
+    sin α, cos α and radicals such as √3 are taken as symbols, so A is a matrix of
+    rational functions and the solve runs in a fraction field (sympy's DomainMatrix):
+    no expression swell, and the √3² that appear become 3 again on the way back.
+    """
+    atoms = {x for x in (A.atoms(sp.Function) | b.atoms(sp.Function))}
+    atoms |= {p for p in (A.atoms(sp.Pow) | b.atoms(sp.Pow)) if not p.exp.is_Integer}
+    table = {a: sp.Dummy() for a in atoms}
+    back = {v: k for k, v in table.items()}
+    system = DomainMatrix.from_Matrix(A.xreplace(table).row_join(b.xreplace(table))).to_field()
+    n = A.shape[1]
+    rref, pivots = system.rref()
+    if tuple(pivots) != tuple(range(n)):
+        return None
+    column = rref.to_Matrix()[:, n]
+    return [sp.cancel(x).xreplace(back) for x in column]
 
 
 def _known_value(value: sp.Expr, model: Model) -> float | None:

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from rbdsolve.model.state import t
-from rbdsolve.model.tidy import collect_in, tidy
+from rbdsolve.model.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.report import steps as st
 from rbdsolve.report.math import Along, Label, Math, Terms
 from rbdsolve.report.steps import Relation, Step
@@ -37,7 +37,7 @@ class _Show:
         free of them as one tidy fraction."""
         model = self.model
         if not expr.has(*self.rates):
-            return model.to_time(tidy(expr))
+            return model.to_time(tidy_fraction(expr))
         parts = collect_in(sp.expand(expr), self.rates)
         terms = [(model.to_time(tidy(c)), tuple(self.time(f) for f in factors))
                  for c, factors in ordered_sum(parts, self.rates, list(model.q))]
