@@ -28,6 +28,24 @@ def test_solve_terminal_reads_like_the_exam() -> None:
     assert "λ₁ = 24 g/(25 r)" in out and "λ₂ = 2 g/r" in out
 
 
+def test_impact_reads_like_the_exam() -> None:
+    result = run("solve", str(PROBLEMS / "sg2150-2015-10-29" / "p2-rod-impact.yaml"))
+    assert result.exit_code == 0, result.output
+    out = result.output
+    assert "v_AB = (ẋ − 1/2 l φ̇) eₓ" in out
+    assert "m [2 ẋ_f − 3/2 l φ̇_f] = m v₀" in out
+    assert "ẋ_f = 7/5 v₀" in out and "φ̇_f = 6 v₀/(5 l)" in out
+    assert "v_G1 = 4/5 v₀ eₓ" in out and "e_G1 = 4/5" in out
+
+
+def test_restitution_set_outside_zero_one_exits_2() -> None:
+    result = run("solve", str(PROBLEMS / "impact" / "ball-hits-pinned-rod.yaml"), "--set", "e=3/2")
+    assert result.exit_code == 2
+    assert "ball-hits-pinned-rod.yaml:24:37:" in result.output
+    assert "questions[0].impact.collisions.A.restitution: a coefficient of restitution is between 0 and 1" \
+        in result.output
+
+
 def test_solve_json_lines_contract() -> None:
     result = run("solve", P1, PENDULUM, "--format", "json")
     assert result.exit_code == 0

@@ -182,7 +182,8 @@ class TexPrinter(LatexPrinter):
         if found and found[1] <= 3:
             name, order = found
             accent = {1: "\\dot", 2: "\\ddot", 3: "\\dddot"}[order]
-            return f"{accent}{{{latex_name(name)}}}"
+            head, _, tail = latex_name(name).partition("_{")  # the dot over x in ẋ_f
+            return f"{accent}{{{head}}}" + (f"_{{{tail}" if tail else "")
         return super()._print_Derivative(expr)
 
     def _print_Mul(self, expr):
