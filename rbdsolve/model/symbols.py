@@ -7,7 +7,7 @@ and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Mapping
 
 import sympy as sp
@@ -33,6 +33,7 @@ class Symbols:
     parameters: Mapping[str, sp.Symbol]
     state: State
     points: Mapping[str, sp.Matrix]
+    prescribed: Mapping[str, sp.Expr] = field(default_factory=dict)  # name -> y_A(t) or f(t)
 
     @staticmethod
     def of(problem: Problem) -> Symbols:
@@ -41,14 +42,17 @@ class Symbols:
             for p in problem.parameters
         }
         state = State.of(tuple(c.name for c in problem.coordinates))
-        return Symbols(params, state, {})
+        names = Symbols(params, state, {})
+        prescribed = {p.name: sp.Function(p.name, real=True)(t) if p.value is None else names.scalar(p.value)
+                      for p in problem.prescribed}
+        return Symbols(params, state, {}, prescribed)
 
     @property
     def coordinates(self) -> Mapping[str, sp.Symbol]:
         return dict(zip(self.state.names, self.state.q))
 
     def with_points(self, points: Mapping[str, sp.Matrix]) -> Symbols:
-        return Symbols(self.parameters, self.state, {**self.points, **points})
+        return Symbols(self.parameters, self.state, {**self.points, **points}, self.prescribed)
 
     def scalar(self, expr: ex.Expr) -> sp.Expr:
         return _real(to_sympy(expr.tree, self), expr)
@@ -74,11 +78,13 @@ def to_sympy(tree: ex.Tree, names: Symbols):
     if isinstance(tree, ex.Name):
         if tree.id == "t":
             return t
-        for table in (names.parameters, names.coordinates, names.points):
+        for table in (names.parameters, names.coordinates, names.prescribed, names.points):
             if tree.id in table:
                 return table[tree.id]
         raise KeyError(tree.id)  # the loader checked every name
     if isinstance(tree, ex.Derivative):
+        if tree.name in names.prescribed:  # ẏ_A(t), or the derivative of a given f(t)
+            return sp.diff(names.prescribed[tree.name], t, tree.order)
         index = names.state.names.index(tree.name)
         return (names.state.qd if tree.order == 1 else names.state.qdd)[index]
     if isinstance(tree, ex.Neg):

@@ -17,6 +17,7 @@ from rbdsolve.problem.schema import (
     CoordinateKind,
     Parameter,
     Point,
+    Prescribed,
     Problem,
     Question,
     Spring,
@@ -26,7 +27,7 @@ from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
 
-TOP_KEYS = ("title", "source", "statement", "parameters", "coordinates", "points",
+TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "coordinates", "points",
             "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
 RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
@@ -89,6 +90,7 @@ class _Loader:
         self.scope = ex.Scope()
         self.positions = ex.Scope()
         self.rates = ex.Scope()  # velocities at one instant: parameters, dot(q), velocity points
+        self.coordinate_names: frozenset[str] = frozenset()
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -133,12 +135,15 @@ class _Loader:
         check_keys(root, ("questions",), TOP_KEYS, "the problem")
         get = root.get
         parameters = self.parameters(get("parameters"))
+        prescribed = self.prescribed(get("prescribed"), parameters)
         coordinates = self.coordinates(get("coordinates"))
-        # Positions and angles may use coordinates and time t; velocities at an instant
-        # use parameters and the rates dot(q).
+        self.coordinate_names = frozenset(c.name for c in coordinates)
+        # Positions and angles may use coordinates, prescribed functions and time t;
+        # velocities at an instant use parameters and the rates dot(q).
+        moving = {c.name for c in coordinates} | {p.name for p in prescribed}
         self.scope = ex.Scope(
-            scalars=frozenset({p.name for p in parameters} | {c.name for c in coordinates} | {"t"}),
-            functions_of_time=frozenset(c.name for c in coordinates),
+            scalars=frozenset({p.name for p in parameters} | moving | {"t"}),
+            functions_of_time=frozenset(moving),
         )
         self._set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
@@ -156,6 +161,7 @@ class _Loader:
             gravity=self.gravity(get("gravity")),
             values=self.values(get("values"), parameters),
             questions=self.questions(get("questions"), coordinates, bodies, points),
+            prescribed=prescribed,
         )
 
     def text(self, node: Node | None, what: str) -> str:
@@ -200,6 +206,22 @@ class _Loader:
             out.append(Parameter(name, description, positive, key.loc))
         return tuple(out)
 
+    def prescribed(self, node: Node | None, parameters: tuple[Parameter, ...]) -> tuple[Prescribed, ...]:
+        """name -> 'unknown' (a function y_A(t) kept symbolic) or an expression in t."""
+        if node is None:
+            return ()
+        table = expect_mapping(node, "prescribed: name -> unknown, or an expression in t")
+        scope = ex.Scope(frozenset({p.name for p in parameters} | {"t"}))
+        out = []
+        for key, value in table.entries:
+            name = self.declare(key, "prescribed function")
+            if isinstance(value, Scalar) and value.text.strip() == "unknown":
+                out.append(Prescribed(name, None, key.loc))
+            else:
+                what = f"'unknown' or an expression in t and the parameters for '{name}'"
+                out.append(Prescribed(name, self.expr(value, ex.Kind.SCALAR, what, scope), key.loc))
+        return tuple(out)
+
     def coordinates(self, node: Node | None) -> tuple[Coordinate, ...]:
         if node is None:
             return ()
@@ -228,13 +250,13 @@ class _Loader:
         why_velocity = "it is given by its velocity; positions name points given by position"
         self.positions = ex.Scope(self.scope.scalars, positions,
                                   refused=tuple((n, why_velocity) for n in sorted(velocities)))
-        coordinates = self.scope.functions_of_time
+        coordinates = self.coordinate_names
         why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
                "give the configuration with the question's 'at:'")
         why_position = "it is given by its position; a velocity names points given by velocity"
-        refused = [(n, why) for n in sorted(coordinates | {"t"})]
+        refused = [(n, why) for n in sorted(self.scope.functions_of_time | {"t"})]
         refused += [(n, why_position) for n in sorted(positions)]
-        self.rates = ex.Scope(self.scope.scalars - coordinates - {"t"}, velocities, coordinates, tuple(refused))
+        self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates, tuple(refused))
 
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:

@@ -94,6 +94,17 @@ class Parameter:
 
 
 @dataclass(frozen=True)
+class Prescribed:
+    """A quantity that follows a given function of time, not a degree of freedom: an
+    unknown function y_A(t) (``value`` None; its derivatives stay symbolic) or an
+    explicit expression in t and the parameters."""
+
+    name: str
+    value: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
 class Coordinate:
     name: str
     kind: CoordinateKind
@@ -241,6 +252,7 @@ class Problem:
     gravity: Expr | None
     values: tuple[tuple[str, Fraction], ...]  # numeric parameter values
     questions: tuple[Question, ...]
+    prescribed: tuple[Prescribed, ...] = ()
 
     def value_map(self) -> dict[str, Fraction]:
         return dict(self.values)

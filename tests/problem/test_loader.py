@@ -153,3 +153,39 @@ def test_binary_and_non_utf8_files(tmp_path) -> None:
 def test_missing_file() -> None:
     with pytest.raises(InputError, match="no such file"):
         load_file("does/not/exist.yaml")
+
+
+PRESCRIBED = """\
+parameters: {m: mass, l: length, a: amplitude, w: frequency}
+prescribed:
+  y_A: unknown
+  x_O: a*cos(w*t)
+coordinates: [phi]
+points:
+  B: l * [sin(phi), -cos(phi)] + [x_O, y_A]
+bodies:
+  bob: {shape: particle, mass: m, at: B}
+questions: [eom]
+"""
+
+
+def test_prescribed_functions_load() -> None:
+    problem = load_text(PRESCRIBED, "p.yaml")
+    assert [(p.name, p.value is None) for p in problem.prescribed] == [("y_A", True), ("x_O", False)]
+    assert [c.name for c in problem.coordinates] == ["phi"]  # not degrees of freedom
+
+
+@pytest.mark.parametrize(
+    "old, new, where, words",
+    [
+        ("a*cos(w*t)", "a*cos(phi*t)", (4, 14), "unknown symbol 'phi'"),
+        ("a*cos(w*t)", "a*cos(w*t) + y_A", (4, 21), "unknown symbol 'y_A'"),
+        ("mass: m,", "mass: m*y_A,", (9, 34), "'y_A' cannot appear here: a mass must be constant"),
+        ("  y_A: unknown", "  m: unknown", (3, 3), "'m' is already declared as a parameter"),
+    ],
+)
+def test_bad_prescribed_functions_are_located(old, new, where, words) -> None:
+    with pytest.raises(InputError) as info:
+        load_text(PRESCRIBED.replace(old, new, 1), "p.yaml")
+    assert words in info.value.message
+    assert (info.value.location.line, info.value.location.column) == where
