@@ -78,6 +78,7 @@ class Model:
     gravity: sp.Matrix | None
     values: Mapping[sp.Symbol, sp.Rational]
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
+    inertial: tuple = ()  # EnergyTerms: inertial potentials, for a model seen in a moving frame
 
     @property
     def instant(self) -> bool:
@@ -115,7 +116,8 @@ class Model:
     def depends_on_time(self) -> bool:
         """Does the scene move by itself (t in a position, an angle or a spring)?"""
         parts = [*self.points.values(), *self._positions(), *(b.rotation for b in self.bodies),
-                 *(s.stretch for s in self.springs)]
+                 *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
+        parts += [self.gravity] if self.gravity is not None else []
         return any(sp.sympify(p).has(t) for p in parts)
 
     def _positions(self) -> list[sp.Matrix]:

@@ -80,6 +80,7 @@ def potential_energy(model: Model) -> Energy:
     for spring in model.springs:
         V_spring = spring.stiffness * spring.stretch**2 / 2
         terms.append(EnergyTerm(f"spring {spring.name}", tidy(V_spring)))
+    terms += model.inertial  # centrifugal and translation potentials in a moving frame
     return Energy(tuple(terms), tidy(sum((x.value for x in terms), sp.Integer(0))))
 
 

@@ -15,6 +15,7 @@ from rbdsolve.problem.schema import (
     Body,
     Coordinate,
     CoordinateKind,
+    Frame,
     Parameter,
     Point,
     Prescribed,
@@ -27,7 +28,7 @@ from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
 
-TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "coordinates", "points",
+TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "coordinates", "points", "frames",
             "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
 RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
@@ -147,6 +148,7 @@ class _Loader:
         )
         self._set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
+        frames = self.frames(get("frames"))
         bodies = self.bodies(get("bodies"))
         return Problem(
             file=self.file,
@@ -160,8 +162,9 @@ class _Loader:
             springs=self.springs(get("springs")),
             gravity=self.gravity(get("gravity")),
             values=self.values(get("values"), parameters),
-            questions=self.questions(get("questions"), coordinates, bodies, points),
+            questions=self.questions(get("questions"), coordinates, bodies, points, frames),
             prescribed=prescribed,
+            frames=frames,
         )
 
     def text(self, node: Node | None, what: str) -> str:
@@ -277,6 +280,28 @@ class _Loader:
         return (tuple(Point(name, positions[name]) for name in _dependency_order(positions))
                 + tuple(Point(name, None, velocities[name]) for name in _dependency_order(velocities)))
 
+    def frames(self, node: Node | None) -> tuple[Frame, ...]:
+        """name -> {origin: point or vector in t, axis: x|y|z|vector, rate: constant}."""
+        if node is None:
+            return ()
+        table = expect_mapping(node, "frames: name -> frame")
+        out = []
+        for key, value in table.entries:
+            name = self.declare(key, "frame")
+            spec = expect_mapping(value, f"frame '{name}'")
+            check_keys(spec, (), ("origin", "axis", "rate"), f"frame '{name}'")
+            if (spec.get("axis") is None) != (spec.get("rate") is None):
+                raise InputError(f"a turning frame needs both 'axis' and 'rate' (frame '{name}')", spec.loc)
+            origin = spec.get("origin")
+            out.append(Frame(
+                name,
+                self.expr(origin, ex.Kind.VECTOR, "the frame's origin (a point or a vector)") if origin else None,
+                self.axis(spec.get("axis")) if spec.get("axis") is not None else None,
+                self.optional_constant(spec.get("rate"), "a rate of turning"),
+                spec.loc,
+            ))
+        return tuple(out)
+
     def bodies(self, node: Node | None) -> tuple[Body, ...]:
         if node is None:
             return ()
@@ -351,12 +376,12 @@ class _Loader:
             out.append((key.text, number))
         return tuple(out)
 
-    def questions(self, node: Node, coordinates: tuple[Coordinate, ...],
-                  bodies: tuple[Body, ...], points: tuple[Point, ...]) -> tuple[Question, ...]:
+    def questions(self, node: Node, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
+                  points: tuple[Point, ...], frames: tuple[Frame, ...]) -> tuple[Question, ...]:
         if not isinstance(node, Seq) or not node.items:
             found = "an empty list" if isinstance(node, Seq) else describe(node)
             raise InputError(f"expected a list of questions, found {found}", node.loc)
-        reader = QuestionReader(self, coordinates, bodies, points)
+        reader = QuestionReader(self, coordinates, bodies, points, tuple(f.name for f in frames))
         return tuple(reader.question(item) for item in node.items)
 
 

@@ -15,6 +15,8 @@ from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.schema import (
     Body,
     Coordinate,
+    EomOptions,
+    EquilibriaOptions,
     InertiaOptions,
     ModesOptions,
     Point,
@@ -28,9 +30,9 @@ if TYPE_CHECKING:
     from rbdsolve.problem.loader import _Loader
 
 OPTIONS = {
-    QuestionKind.EOM: (),
-    QuestionKind.EQUILIBRIA: (),
-    QuestionKind.MODES: ("about",),
+    QuestionKind.EOM: ("frames",),
+    QuestionKind.EQUILIBRIA: ("frame",),
+    QuestionKind.MODES: ("about", "frame"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
 }
@@ -38,8 +40,9 @@ OPTIONS = {
 
 class QuestionReader:
     def __init__(self, loader: _Loader, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
-                 points: tuple[Point, ...]):
+                 points: tuple[Point, ...], frames: tuple[str, ...] = ()):
         self.loader = loader
+        self.frames = frames
         self.coordinates = coordinates
         self.bodies = bodies
         self.points = points
@@ -68,14 +71,35 @@ class QuestionReader:
                 raise InputError(f"'{kind.value}' takes no options", options.loc)
             opts = expect_mapping(options, f"options of '{kind.value}'")
             check_keys(opts, (), OPTIONS[kind], f"question '{kind.value}'")
+        get = opts.get if opts else (lambda _: None)
+        if kind is QuestionKind.EOM:
+            frames = self.frame_list(get("frames")) if get("frames") is not None else ()
+            return Question(kind, EomOptions(frames), key.loc)
+        if kind is QuestionKind.EQUILIBRIA:
+            return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.MODES:
-            about = opts.get("about") if opts else None
-            return Question(kind, ModesOptions(self.equilibrium(about) if about else None), key.loc)
+            about = get("about")
+            return Question(kind, ModesOptions(self.equilibrium(about) if about else None,
+                                               self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.IMPACT:
             return Question(kind, ImpactReader(self).options(opts, key), key.loc)
         return Question(kind, None, key.loc)
+
+    def frame(self, node: Node | None) -> str | None:
+        if node is None:
+            return None
+        name = expect_scalar(node, "a frame name").text.strip()
+        if name not in self.frames:
+            known = f" (frames: {', '.join(self.frames)})" if self.frames else " (declare it under 'frames:')"
+            raise InputError(f"no frame '{name}'{did_you_mean(name, list(self.frames)) or known}", node.loc)
+        return name
+
+    def frame_list(self, node: Node) -> tuple[str, ...]:
+        if not isinstance(node, Seq):
+            raise InputError(f"expected a list of frame names, found {describe(node)}", node.loc)
+        return tuple(self.frame(item) for item in node.items)
 
     def require_positions(self, kind: QuestionKind, key: Scalar) -> None:
         """Equations of motion, equilibria and modes need the motion, not one instant."""

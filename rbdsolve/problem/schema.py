@@ -184,8 +184,33 @@ class Spring:
 
 
 @dataclass(frozen=True)
+class Frame:
+    """A frame moving relative to the scene's (inertial) axes: its origin follows
+    ``origin`` (a point or a vector in t; None: the scene's origin), and it turns at the
+    constant rate ``rate`` about the fixed direction ``axis`` through that origin (None:
+    it does not turn)."""
+
+    name: str
+    origin: Expr | None
+    axis: Expr | None
+    rate: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class EomOptions:
+    frames: tuple[str, ...]  # frames to write the Lagrangian and the equations in, too
+
+
+@dataclass(frozen=True)
+class EquilibriaOptions:
+    frame: str | None  # relative equilibria in a moving frame; None: the scene's axes
+
+
+@dataclass(frozen=True)
 class ModesOptions:
     about: tuple[tuple[str, Expr], ...] | None  # the equilibrium; None: the stable one
+    frame: str | None = None
 
 
 @dataclass(frozen=True)
@@ -234,7 +259,7 @@ class ImpactOptions:
 @dataclass(frozen=True)
 class Question:
     kind: QuestionKind
-    options: ModesOptions | InertiaOptions | ImpactOptions | None
+    options: EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions | None
     loc: Location
 
 
@@ -253,6 +278,7 @@ class Problem:
     values: tuple[tuple[str, Fraction], ...]  # numeric parameter values
     questions: tuple[Question, ...]
     prescribed: tuple[Prescribed, ...] = ()
+    frames: tuple[Frame, ...] = ()
 
     def value_map(self) -> dict[str, Fraction]:
         return dict(self.values)

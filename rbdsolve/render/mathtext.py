@@ -92,6 +92,14 @@ class UnicodePrinter(StrPrinter):
     def _print_Pi(self, expr):
         return "π"
 
+    def _print_Integral(self, expr):
+        """∫ f dt (indefinite, one variable), as in F = … + ∫ (½ ẏ² − g y) dt."""
+        if len(expr.limits) == 1 and len(expr.limits[0]) == 1:
+            inner = self._print(expr.function)
+            inner = f"({inner})" if expr.function.is_Add else inner
+            return f"∫ {inner} d{self._print(expr.limits[0][0])}"
+        return super()._print_Integral(expr)
+
     def _print_Derivative(self, expr):
         if expr.expr.is_Symbol and len(expr.variables) == 1:  # ∂V/∂θ
             return f"∂{self._print(expr.expr)}/∂{self._print(expr.variables[0])}"

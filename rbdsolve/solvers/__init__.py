@@ -17,6 +17,7 @@ from rbdsolve.report.steps import ProblemReport, Route, Solution
 from rbdsolve.solvers import eom, equilibria, impact, inertia, modes
 from rbdsolve.solvers.common import Options, numeric
 from rbdsolve.solvers.energies import summarize_model
+from rbdsolve.solvers.frames import frame_of, solve_in_frame
 
 SOLVERS = {
     QuestionKind.EOM: eom.solve,
@@ -32,7 +33,10 @@ def solve_question(question: Question, model: Model, options: Options) -> Soluti
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
     try:
-        solution = SOLVERS[question.kind](question, model, options)
+        if frame_of(question) is None:
+            solution = SOLVERS[question.kind](question, model, options)
+        else:
+            solution = solve_in_frame(SOLVERS[question.kind], question, model, options)
     except UnsolvedError as exc:
         solution = Solution(question.kind.value, Route.EXACT, None, (), error=str(exc))
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}

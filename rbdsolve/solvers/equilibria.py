@@ -291,7 +291,8 @@ def require_static(model: Model, what: str) -> None:
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
     if model.depends_on_time():
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
-                            "do not apply (accelerated and rotating frames are not supported yet)")
+                            "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
+                            "question's 'frame' option)")
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:

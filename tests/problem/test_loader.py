@@ -90,7 +90,7 @@ CASES = [
     ("parameters: {m: mass,", "parameters: {lambda: mass, m: mass,", 2, 14, "parameters.lambda", "Python keyword"),
     ("parameters: {m: mass,", "parameters: {ℓ: mass, m: mass,", 2, 14, "parameters.ℓ", "Greek letters are spelled"),
     ("{m: mass, l: length,", "{m: 3, l: length,", 2, 17, "parameters.m", "write 'values: {m: 3}'"),
-    ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 10, "questions[0].eom", "'eom' takes no options"),
+    ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 11, "questions[0].eom.about", "unknown key 'about' in question 'eom' (expected one of: frames)"),
     ("questions:\n  - modes: {about: {theta: 0}}", "questions: []", 9, 12, "questions", "found an empty list"),
     ("shape: particle, ", "shape: rod, length: l, radius: l, ", 8, 32, "bodies.bob.radius", "a rod takes length, not 'radius'"),
 ]
@@ -188,4 +188,50 @@ def test_bad_prescribed_functions_are_located(old, new, where, words) -> None:
     with pytest.raises(InputError) as info:
         load_text(PRESCRIBED.replace(old, new, 1), "p.yaml")
     assert words in info.value.message
+    assert (info.value.location.line, info.value.location.column) == where
+
+
+FRAMES = """\
+parameters: {m: mass, l: length, w: rate}
+prescribed: {y_A: unknown}
+coordinates: [phi]
+frames:
+  support: {origin: A}
+  turning: {axis: z, rate: w}
+points:
+  A: [0, y_A]
+  B: A + l * [sin(phi), -cos(phi)]
+bodies:
+  bob: {shape: particle, mass: m, at: B}
+questions:
+  - eom: {frames: [support, turning]}
+  - equilibria: {frame: turning}
+"""
+
+
+def test_frames_load() -> None:
+    problem = load_text(FRAMES, "p.yaml")
+    assert [f.name for f in problem.frames] == ["support", "turning"]
+    assert problem.questions[0].options.frames == ("support", "turning")
+    assert problem.questions[1].options.frame == "turning"
+
+
+@pytest.mark.parametrize(
+    "old, new, where, path, words",
+    [
+        ("frames: [support, turning]", "frames: [support, turnin]", (13, 29), "questions[0].eom.frames[1]",
+         "no frame 'turnin' (did you mean 'turning'?)"),
+        ("{frame: turning}", "{frame: hoop}", (14, 25), "questions[1].equilibria.frame",
+         "no frame 'hoop' (frames: support, turning)"),
+        ("{axis: z, rate: w}", "{axis: z}", (6, 12), "frames.turning", "needs both 'axis' and 'rate'"),
+        ("rate: w}", "rate: w*t}", (6, 30), "frames.turning.rate", "'t' cannot appear here: a rate of turning"),
+        ("{origin: A}", "{origin: Q}", (5, 21), "frames.support.origin", "unknown point 'Q'"),
+        ("{origin: A}", "{orign: A}", (5, 13), "frames.support.orign", "unknown key 'orign'"),
+    ],
+)
+def test_bad_frames_are_located(old, new, where, path, words) -> None:
+    with pytest.raises(InputError) as info:
+        load_text(FRAMES.replace(old, new, 1), "p.yaml")
+    assert words in info.value.message
+    assert info.value.location.key_path() == path
     assert (info.value.location.line, info.value.location.column) == where
