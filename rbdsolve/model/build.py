@@ -17,7 +17,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.expr import Kind
+from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
@@ -145,7 +145,7 @@ def build_model(problem: Problem) -> Model:
         if point.position is not None:
             points[point.name] = symbols.with_points(points).vector(point.position)
         else:
-            velocities[point.name] = _linear_in_rates(symbols.with_points(velocities).vector(point.velocity),
+            velocities[point.name] = _affine_in_rates(symbols.with_points(velocities).vector(point.velocity),
                                                       point.velocity, symbols)
     names = symbols.with_points(points)
     q = names.state.q
@@ -158,7 +158,7 @@ def build_model(problem: Problem) -> Model:
     return replace(model, angles=angles)
 
 
-def _linear_in_rates(value: sp.Matrix, expr, names: Symbols) -> sp.Matrix:
+def _affine_in_rates(value: sp.Matrix, expr: Expr, names: Symbols) -> sp.Matrix:
     """A velocity at an instant is affine in the rates q̇: a + Σ b_j q̇_j."""
     qd = names.state.qd
     for item in value:
@@ -185,10 +185,10 @@ def _body(body: Body, names: Symbols, rates: Symbols) -> RigidBody:
         raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
                          "weigh as much as the parts or more", body.loc)
     if body.velocity is not None:
-        velocity = _linear_in_rates(rates.vector(body.velocity), body.velocity, rates)
+        velocity = _affine_in_rates(rates.vector(body.velocity), body.velocity, rates)
         w = body.angular_velocity
         omega = rates.vector(w) if w.kind is Kind.VECTOR else sp.Matrix([0, 0, rates.scalar(w)])
-        omega = _linear_in_rates(omega, w, rates)
+        omega = _affine_in_rates(omega, w, rates)
         return RigidBody(body.name, props.mass, None, sp.eye(3), None, props.inertia, body, velocity, omega)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)

@@ -39,15 +39,23 @@ def tidy(expr: sp.Expr) -> sp.Expr:
 
 def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     """A rational function of the parameters as one cancelled fraction, never expanded
-    over its denominator. sin α, cos α, … count as symbols; radicals such as √3 are
-    algebraic numbers (so √3·√3 = 3 and the result is zero exactly when it should be).
+    over its denominator. sin α, cos α, … count as symbols, with sin²α + cos²α = 1
+    applied (numerator and denominator reduced to degree < 2 in sin α); radicals such
+    as √3 are algebraic numbers. So the result is zero exactly when the expression is.
     For answers built from solved linear systems, where ``tidy`` would swell."""
     if expr.is_Rational:
         return expr
     table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
     back = {v: k for k, v in table.items()}
-    value = sp.cancel(sp.together(expr.xreplace(table)), extension=True).xreplace(back)
-    return _leading_plus(sp.factor_terms(value))
+    value = sp.cancel(sp.together(expr.xreplace(table)), extension=True)
+    pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
+             if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
+    if pairs:
+        num, den = sp.fraction(value)
+        for s, c in pairs:  # the remainder modulo s² + c² − 1, in s
+            num, den = sp.rem(num, s**2 + c**2 - 1, s), sp.rem(den, s**2 + c**2 - 1, s)
+        value = sp.cancel(num / den, extension=True)
+    return _leading_plus(sp.factor_terms(value.xreplace(back)))
 
 
 def _cancel(expr: sp.Expr) -> sp.Expr:

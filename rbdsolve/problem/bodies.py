@@ -77,6 +77,9 @@ class BodyReader:
         if isinstance(node, Seq):
             return self.loader.expr(node, ex.Kind.VECTOR, "an angular velocity", self.loader.rates)
         scalar = expect_scalar(node, "an angular velocity (a scalar about z, or a vector)")
+        if scalar.text.strip() in self.loader.rates.vectors:
+            raise InputError(f"'{scalar.text.strip()}' is a point; an angular velocity is a scalar (about z) "
+                             "or a vector", scalar.loc)
         return ex.parse(scalar.text, scalar.loc, self.loader.rates, scalar.plain)
 
     def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool,
@@ -88,12 +91,12 @@ class BodyReader:
         check_keys(spec, required, ("shape", "axis", "inertia", "at", *extra, *(() if simple else ("hole",))), what)
         constant = self.loader.constant
         mass = constant(spec.get("mass"), "a mass")
-        _refuse_negative(mass, "mass")
+        refuse_negative(mass, "mass")
         dimensions = []
         for dim in dims:
             value = constant(spec.get(dim), f"a {dim}")
             if dim not in POSITIONS:
-                _refuse_negative(value, dim)
+                refuse_negative(value, dim)
             dimensions.append((dim, value))
         axis_node = spec.get("axis")
         if axis_node is not None and shape is None:
@@ -167,7 +170,7 @@ def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
             raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
 
 
-def _refuse_negative(value: ex.Expr, what: str) -> None:
+def refuse_negative(value: ex.Expr, what: str) -> None:
     number = ex.constant_value(value.tree)
     if number is not None and number < 0:
         raise InputError(f"a {what} must not be negative, found {value.text}", value.loc)

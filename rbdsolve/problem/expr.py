@@ -151,6 +151,7 @@ class Scope:
     vectors: frozenset[str] = frozenset()
     functions_of_time: frozenset[str] = frozenset()  # names dot()/ddot() accept
     refused: tuple[tuple[str, str], ...] = ()  # declared names not allowed here, and why
+    max_order: int = 2  # 1: rates dot() only (velocities at an instant)
 
     def all_names(self) -> set[str]:
         return set(self.scalars) | set(self.vectors)
@@ -344,6 +345,8 @@ class _Checker:
             hint = did_you_mean(name, known)
             what = f"; coordinates are {', '.join(known)}" if known and not hint else ""
             raise self.fail(node.args[0], f"{func}() needs a coordinate, found '{name}'{hint}{what}")
+        if order > self.scope.max_order:
+            raise self.fail(node, f"only rates such as dot({name}) are allowed here, not {func}({name})")
         return Derivative(name, order), Kind.SCALAR
 
     def visit_List(self, node: ast.List) -> tuple[Tree, Kind]:

@@ -101,7 +101,7 @@ class ImpactReader:
         value = self.loader.constant(node, "a coefficient of restitution")
         number = ex.constant_value(value.tree)
         if number is not None and not 0 <= number <= 1:
-            raise InputError(f"a coefficient of restitution is between 0 and 1, found {value.text}", value.loc)
+            raise InputError(restitution_message(value.text), value.loc)
         return value
 
     def particle(self, node: Node) -> Particle:
@@ -126,3 +126,9 @@ class ImpactReader:
 
 def _is_axis_name(node: Node) -> bool:
     return isinstance(node, Scalar) and node.text.strip() in {"x", "y", "z", "-x", "-y", "-z"}
+
+
+def restitution_message(text: str, value: object = None) -> str:
+    """One message for e outside [0, 1], whether the file or the values put it there."""
+    shown = text if value is None or str(value) == text.replace(" ", "") else f"{text} = {value}"
+    return f"a coefficient of restitution is between 0 and 1, found {shown}"

@@ -23,7 +23,7 @@ from rbdsolve.problem.schema import (
     Question,
     Spring,
 )
-from rbdsolve.problem.bodies import BodyReader, _refuse_negative
+from rbdsolve.problem.bodies import BodyReader, refuse_negative
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
@@ -259,7 +259,8 @@ class _Loader:
         why_position = "it is given by its position; a velocity names points given by velocity"
         refused = [(n, why) for n in sorted(self.scope.functions_of_time | {"t"})]
         refused += [(n, why_position) for n in sorted(positions)]
-        self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates, tuple(refused))
+        self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates,
+                              tuple(refused), max_order=1)
 
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:
@@ -338,7 +339,7 @@ class _Loader:
         if (between is None) == (angle is None):
             raise InputError(f"{what} needs either 'between: [A, B]' (linear) or 'angle:' (torsional)", spec.loc)
         stiffness = self.constant(spec.get("stiffness"), "a stiffness")
-        _refuse_negative(stiffness, "stiffness")
+        refuse_negative(stiffness, "stiffness")
         ends = None
         if between is not None:
             if not isinstance(between, Seq) or len(between.items) != 2:

@@ -31,9 +31,12 @@ import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
 from rbdsolve.errors import InputError, UnsolvedError
-from rbdsolve.model.build import Model
+from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.energy import body_kinetic_energy, tidy_quadratic
 from rbdsolve.model.state import t
 from rbdsolve.model.tidy import tidy, tidy_fraction
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.impact import restitution_message
 from rbdsolve.problem.schema import Collision, ImpactOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.common import Options
@@ -76,20 +79,16 @@ class Instant:
     def velocity(self, point: str) -> sp.Matrix:
         return self.model.point_velocity(point).xreplace(self.at)
 
+    def body_velocity(self, body: RigidBody) -> sp.Matrix:
+        return body.velocity(self.model.state).xreplace(self.at)
+
 
 def instant(model: Model, opts: ImpactOptions) -> Instant:
     """Substitute the configuration into every velocity; what is left must be known."""
     names = model.symbols
     at = {model.symbols.coordinates[name]: names.scalar(value) for name, value in opts.at}
-    T = sp.Integer(0)
-    for body in model.bodies:
-        v = body.velocity(model.state).xreplace(at)
-        omega = body.angular_velocity(model.state).xreplace(at)
-        J = body.inertia_in_scene().xreplace(at)
-        T_translation = body.mass * v.dot(v) / 2
-        T_rotation = (omega.T * J * omega)[0, 0] / 2
-        T += T_translation + T_rotation
-    T = sp.expand(T)
+    T = sum((body_kinetic_energy(b, model.state).xreplace(at) for b in model.bodies), sp.Integer(0))
+    T = tidy_quadratic(T, model.qd)
     _require_known(T, model, opts)
     return Instant(model, at, T)
 
@@ -104,13 +103,15 @@ def _require_known(expr: sp.Expr, model: Model, opts: ImpactOptions) -> None:
                             "given time is not supported yet")
 
 
-def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
+def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
     """Known impulses, impulses of particles with a given velocity after, and unknown
-    collision impulses λ n."""
+    collision impulses λ n (n as given)."""
     names = model.symbols
     out = [Blow(point, names.vector(vector), None, None, None) for point, vector in opts.impulses]
     for c in opts.collisions:
         normal = _nonzero(names.vector(c.normal), c) if c.normal is not None else None
+        if c.particle is not None:
+            _positive(names.scalar(c.particle.mass), c.particle.mass, model)
         if c.restitution is None:  # a particle with a known velocity after: a known impulse
             mu = names.scalar(c.particle.mass)
             P = mu * (names.vector(c.particle.velocity) - names.vector(c.particle.after))
@@ -118,30 +119,36 @@ def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
                 normal = P if P != sp.zeros(3, 1) else None
             out.append(Blow(c.point, P, None, normal, c))
         else:
-            size = sp.Symbol(f"lamda_{c.point}")
+            size = sp.Dummy(f"lamda_{c.point}")
             out.append(Blow(c.point, size * normal, size, normal, c))
     return out
 
 
 def _nonzero(vector: sp.Matrix, collision: Collision) -> sp.Matrix:
-    if tidy(vector.dot(vector)) == 0:
+    if tidy_fraction(vector.dot(vector)) == 0:
         raise InputError("a normal must not be the zero vector", collision.normal.loc)
     return vector
+
+
+def _positive(value: sp.Expr, expr: ex.Expr, model: Model) -> None:
+    number = _known_value(value, model)
+    if value.is_nonpositive or (number is not None and number <= 0):
+        raise InputError(f"a particle's mass must be positive, found {expr.text}", expr.loc)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: ImpactOptions = question.options
     now = instant(model, opts)
-    hits = blows(model, opts, now)
+    hits = blows(model, opts)
     for point in {b.point for b in hits} | set(opts.points):
         _require_known(now.velocity(point), model, opts)
     work = ImpactEquations(model, opts, now, hits)
-    answers = work.answers()
-    return Solution("impact", Route.EXACT, answers, impact_steps(work, answers), warnings=tuple(work.warnings))
+    answers, warnings = work.results()
+    return Solution("impact", Route.EXACT, answers, impact_steps(work, answers), warnings=warnings)
 
 
 class ImpactEquations:
-    """The impulse equations of one impact, set up once and solved once."""
+    """The impulse equations of one impact, set up and solved on construction."""
 
     def __init__(self, model: Model, opts: ImpactOptions, now: Instant, hits: list[Blow]):
         self.model, self.opts, self.now, self.hits = model, opts, now, hits
@@ -151,7 +158,6 @@ class ImpactEquations:
         self.final = tuple(sp.Dummy(f"{n}_f") for n in model.coordinate_names())
         self.after = dict(zip(model.qd, self.final))
         self.sizes = [b.size for b in hits if b.size is not None]
-        self.warnings: list[str] = []
         self.I = [tidy(sum((b.impulse.dot(sp.diff(now.velocity(b.point), qd)) for b in hits), sp.Integer(0)))
                   for qd in model.qd]
         self.momenta = [sp.diff(now.T, qd) for qd in model.qd]  # ∂T/∂q̇_a
@@ -173,9 +179,18 @@ class ImpactEquations:
         return u - blow.impulse / names.scalar(particle.mass) if final else u
 
     def normal_speed(self, blow: Blow, final: bool) -> sp.Expr:
-        """n · (v_P − u), before or after: negative while approaching."""
+        """n · (v_P − u), before or after (after: in the unknowns ẋ_f, λ): negative
+        while approaching."""
         v = self.now.velocity(blow.point).xreplace(self.after if final else self.before)
         return blow.normal.dot(v - self.other_velocity(blow, final))
+
+    def restitution(self, collision: Collision) -> sp.Expr:
+        """e, checked to lie in [0, 1] as far as its sign and the values tell."""
+        e = self.model.symbols.scalar(collision.restitution)
+        value = _known_value(e, self.model)
+        if e.is_negative or (e - 1).is_positive or (value is not None and not 0 <= value <= 1):
+            raise InputError(restitution_message(collision.restitution.text, value), collision.restitution.loc)
+        return e
 
     def restitution_equations(self) -> list[sp.Expr]:
         """n · (v_P − u)_f + e n · (v_P − u)_i = 0, one per unknown collision impulse."""
@@ -183,23 +198,14 @@ class ImpactEquations:
         for blow in self.hits:
             if blow.size is None:
                 continue
-            e = self._restitution(blow.collision)
-            approach = tidy(self.normal_speed(blow, final=False))
-            value = _known_value(approach, self.model)
-            if approach.is_nonnegative or (value is not None and value >= 0):
+            e = self.restitution(blow.collision)
+            approach = tidy_fraction(self.normal_speed(blow, final=False))
+            if _nonnegative(approach, self.model):
                 raise UnsolvedError(f"at {blow.point} the normal velocity n·(v − u) just before is "
                                     f"{sp.sstr(approach)}, so nothing approaches: no collision, or the normal "
                                     "points the wrong way (it is the direction of the impulse on the system)")
             out.append(self.normal_speed(blow, final=True) + e * approach)
         return out
-
-    def _restitution(self, collision: Collision) -> sp.Expr:
-        e = self.model.symbols.scalar(collision.restitution)
-        value = e.xreplace(self.model.values)
-        if value.is_number and not 0 <= value <= 1:
-            raise InputError(f"a coefficient of restitution is between 0 and 1, found {collision.restitution.text}"
-                             f" = {value}", collision.restitution.loc)
-        return e
 
     def _solve(self) -> dict[sp.Symbol, sp.Expr]:
         unknowns = [*self.final, *self.sizes]
@@ -213,7 +219,8 @@ class ImpactEquations:
 
     # --- the results -------------------------------------------------------------------
 
-    def answers(self) -> ImpactAnswers:
+    def results(self) -> tuple[ImpactAnswers, tuple[str, ...]]:
+        """The answers, and warnings about what they imply."""
         model, sol = self.model, self.solution
         names = model.coordinate_names()
         final = {qd: sol[f] for qd, f in self.after.items()}
@@ -221,20 +228,27 @@ class ImpactEquations:
         points = {p: tuple(tidy_fraction(x) for x in self.now.velocity(p).xreplace(final)) for p in self.opts.points}
         before, after = self.energy(final=False), self.energy(final=True)
         support = self.support_impulse(final)
-        return ImpactAnswers(
+        restitution, notes = self.equivalent_restitution()
+        centre, why = self.centre_of_percussion(support)
+        contacts = {b.point: tidy_fraction(sol[b.size] * sp.sqrt(tidy_fraction(b.normal.dot(b.normal))))
+                    for b in self.hits if b.size is not None}
+        notes += [f"the impulse at {p} comes out pulling ({sp.sstr(v)} < 0): with several contacts at once "
+                  "Newton's law can fail, and this contact probably separates" for p, v in contacts.items()
+                  if v.is_negative or (_known_value(v, model) or 0) < 0]
+        answers = ImpactAnswers(
             impulses=dict(zip(names, impulses)),
             velocities={n: sol[f] for n, f in zip(names, self.final)},
             points=points,
             particles=self.particle_velocities(),
-            contact_impulses={b.point: tidy_fraction(sol[b.size] * sp.sqrt(b.normal.dot(b.normal)))
-                              for b in self.hits if b.size is not None},
-            restitution=self.equivalent_restitution(final),
+            contact_impulses=contacts,
+            restitution=restitution,
             energy_before=before,
             energy_after=after,
             energy_lost=tidy_fraction(before - after),
             support_impulse=support,
-            centre_of_percussion=self.centre_of_percussion(support),
+            centre_of_percussion=centre,
         )
+        return answers, tuple(notes + ([why] if why else []))
 
     def particle_velocities(self) -> dict[str, tuple[sp.Expr, sp.Expr, sp.Expr]]:
         return {b.point: tuple(tidy_fraction(x) for x in self.other_velocity(b, final=True).xreplace(self.solution))
@@ -250,50 +264,57 @@ class ImpactEquations:
                 total += self.model.symbols.scalar(blow.collision.particle.mass) * u.dot(u) / 2
         return tidy_fraction(total)
 
-    def equivalent_restitution(self, final: dict) -> dict[str, sp.Expr]:
-        """e = −n·(v_P − u)_f / n·(v_P − u)_i where a particle's velocity after is given."""
-        out = {}
+    def equivalent_restitution(self) -> tuple[dict[str, sp.Expr], list[str]]:
+        """e = −n·(v_P − u)_f / n·(v_P − u)_i where a particle's velocity after is given,
+        with warnings when the given velocities do not make a collision."""
+        out, notes = {}, []
         for blow in self.hits:
             if blow.size is not None or blow.collision is None or blow.normal is None:
                 continue
-            approach = tidy(self.normal_speed(blow, final=False))
-            if approach == 0:
-                self.warnings.append(f"at {blow.point} nothing approaches along the normal: no restitution "
-                                     "coefficient")
+            if blow.collision.normal is not None and _nonnegative(-blow.impulse.dot(blow.normal), self.model):
+                notes.append(f"at {blow.point} the particle's impulse on the system points against the "
+                             "given normal")
+            approach = tidy_fraction(self.normal_speed(blow, final=False))
+            if _nonnegative(approach, self.model):
+                notes.append(f"at {blow.point} nothing approaches along the normal (n·(v − u) just before "
+                             f"is {sp.sstr(approach)}): no restitution coefficient")
                 continue
-            e = tidy_fraction(-self.normal_speed(blow, final=True).xreplace(self.after).xreplace(self.solution)
-                              / approach)
+            e = tidy_fraction(-self.normal_speed(blow, final=True).xreplace(self.solution) / approach)
             value = _known_value(e, self.model)
             if value is not None and not 0 <= value <= 1:
-                self.warnings.append(f"the velocities given at {blow.point} imply a restitution coefficient "
-                                     f"{sp.sstr(e)}, outside [0, 1]")
+                notes.append(f"the velocities given at {blow.point} imply a restitution coefficient "
+                             f"{sp.sstr(e)}, outside [0, 1]")
             out[blow.point] = e
-        return out
+        return out, notes
 
     def support_impulse(self, final: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """What the supports gave: the change of momentum, Σ m Δv_G, less the impulses."""
         dp = sp.zeros(3, 1)
         for body in self.model.bodies:
-            v = body.velocity(self.model.state).xreplace(self.now.at)
+            v = self.now.body_velocity(body)
             dp += body.mass * (v.xreplace(final) - v.xreplace(self.before))
         applied = sum((b.impulse.xreplace(self.solution) for b in self.hits), sp.zeros(3, 1))
         return tuple(tidy_fraction(x) for x in dp - applied)
 
-    def centre_of_percussion(self, support: tuple[sp.Expr, ...]) -> sp.Expr | None:
-        if self.opts.centre_of_percussion is None:
-            return None
-        p = self.model.symbols.parameters[self.opts.centre_of_percussion]
+    def centre_of_percussion(self, support: tuple[sp.Expr, ...]) -> tuple[sp.Expr | None, str | None]:
+        """The parameter's value that makes every component of the support impulse
+        zero, or None and why not."""
+        name = self.opts.centre_of_percussion
+        if name is None:
+            return None, None
+        p = self.model.symbols.parameters[name]
         equations = [x for x in support if x != 0]
         if not equations:
-            self.warnings.append("the supports feel no impulse whatever "
-                                 f"{self.opts.centre_of_percussion} is")
-            return None
-        found = sp.solve(equations, p, dict=True)
-        if len(found) != 1 or p not in found[0]:
-            self.warnings.append(f"no single value of {self.opts.centre_of_percussion} frees the supports "
-                                 "of impulse")
-            return None
-        return tidy_fraction(found[0][p])
+            return None, f"the supports feel no impulse whatever {name} is"
+        try:
+            found = sp.solve(equations, p, dict=True)
+        except NotImplementedError:
+            found = []
+        values = [tidy_fraction(f[p]) for f in found if p in f]
+        exact = [v for v in values if all(tidy_fraction(x.xreplace({p: v})) == 0 for x in equations)]
+        if len(exact) != 1:
+            return None, f"no single value of {name} frees the supports of impulse"
+        return exact[0], None
 
 
 def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
@@ -307,6 +328,10 @@ def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
     atoms |= {p for p in (A.atoms(sp.Pow) | b.atoms(sp.Pow)) if not p.exp.is_Integer}
     table = {a: sp.Dummy() for a in atoms}
     back = {v: k for k, v in table.items()}
+    square = DomainMatrix.from_Matrix(A.xreplace(table)).to_field()
+    # singular also when det A vanishes only through √3·√3 = 3 or sin² + cos² = 1
+    if tidy_fraction(square.domain.to_sympy(square.det()).xreplace(back)) == 0:
+        return None
     system = DomainMatrix.from_Matrix(A.xreplace(table).row_join(b.xreplace(table))).to_field()
     n = A.shape[1]
     rref, pivots = system.rref()
@@ -314,6 +339,12 @@ def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
         return None
     column = rref.to_Matrix()[:, n]
     return [sp.cancel(x).xreplace(back) for x in column]
+
+
+def _nonnegative(value: sp.Expr, model: Model) -> bool:
+    """Provably ≥ 0, from the parameters' signs or their values."""
+    number = _known_value(value, model)
+    return bool(value.is_nonnegative) or (number is not None and number >= 0)
 
 
 def _known_value(value: sp.Expr, model: Model) -> float | None:

@@ -113,7 +113,7 @@ def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:
 def _impulses(work: ImpactEquations, show: _Show) -> Step:
     rows = [Relation(sp.Symbol(f"P_{b.point}"), show.vector(b.impulse)) for b in work.hits]
     rows += [Relation(sp.Symbol(f"I_{n}"), show.scalar(I)) for n, I in zip(work.model.coordinate_names(), work.I)]
-    unknown = "; λ is the unknown size of a collision impulse along its unit normal" if work.sizes else ""
+    unknown = "; λ n is a collision's unknown impulse, n its normal as given" if work.sizes else ""
     return st.equation(f"Impulses on the system and the generalized impulses I_a = Σ P · ∂v/∂q̇_a{unknown}:",
                        *rows)
 
@@ -131,11 +131,10 @@ def _restitution(work: ImpactEquations, show: _Show) -> Step:
         if blow.size is None:
             continue
         e = work.model.symbols.scalar(blow.collision.restitution)
-        rows.append(Relation(show.scalar(blow.normal.dot(work.now.velocity(blow.point).xreplace(work.after)
-                                                          - work.other_velocity(blow, final=True))),
+        rows.append(Relation(show.scalar(work.normal_speed(blow, final=True)),
                              show.scalar(-e * work.normal_speed(blow, final=False))))
     return st.equation("Newton's law of restitution at each collision, n·(v − u)|f = −e n·(v − u)|i "
-                       "(u: the velocity of what is hit, n: the unit normal):", *rows)
+                       "(u: the velocity of what is hit, n: the normal):", *rows)
 
 
 def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[Step]:

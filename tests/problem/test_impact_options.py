@@ -66,6 +66,10 @@ CASES = [
      "needs a 'shape' (or an explicit 'inertia') since it turns at this instant"),
     (", angular_velocity: dot(phi)}", "}", 7, 7, "bodies.AB", "not 'angular_velocity' (0 if it does not turn"),
     ("velocity: G, angular", "velocity: G, at: [0, 0], angular", 7, 57, "bodies.AB.at", "not both"),
+    ("[dot(x) - l/2*dot(phi), 0]", "[dot(x) - l/2*ddot(phi), 0]", 4, 31, "points.G.velocity[0]",
+     "only rates such as dot(phi) are allowed here, not ddot(phi)"),
+    ("angular_velocity: dot(phi)}", "angular_velocity: G}", 7, 71, "bodies.AB.angular_velocity",
+     "'G' is a point; an angular velocity is a scalar (about z) or a vector"),
     ("  - impact:", "  - eom\n  - impact:", 10, 5, "questions[0]", "'eom' needs positions, but body 'AB'"),
     ("      points: [G, B]", "      points: [G, C]", 14, 19, "questions[0].impact.points[1]", "unknown point 'C'"),
     ("      impulses: {G: [m*v0, 0]}\n      collisions:\n"

@@ -140,7 +140,7 @@ def test_impulse_equations_matrix_is_the_mass_matrix() -> None:
     model = build_model(load_text(text, "scene.yaml"))
     opts = model.problem.questions[0].options
     now = instant(model, opts)
-    work = ImpactEquations(model, opts, now, blows(model, opts, now))
+    work = ImpactEquations(model, opts, now, blows(model, opts))
     A, _ = sp.linear_eq_to_matrix([sp.expand(x) for x in work.lagrange()], list(work.final))
     M, m, l = (model.symbols.parameters[n] for n in ("M", "m", "l"))
     by_hand = sp.Matrix([[M + m, m * l / 2 * sp.cos(sp.pi / 3)], [m * l / 2 * sp.cos(sp.pi / 3), m * l**2 / 3]])
@@ -193,3 +193,45 @@ def test_a_coordinate_without_inertia_is_refused() -> None:
     text = PENDULUM.replace("coordinates: [theta]", "coordinates: [theta, s]")
     solution = solve(text)
     assert solution.error is not None and "singular" in solution.error
+
+
+def test_a_negative_particle_mass_or_restitution_is_refused() -> None:
+    with pytest.raises(InputError, match="a particle's mass must be positive, found -m"):
+        solve(PENDULUM.replace("particle: {mass: m,", "particle: {mass: -m,"))
+    with pytest.raises(InputError, match="between 0 and 1, found 1 \\+ e"):
+        solve(PENDULUM.replace("restitution: e", "restitution: 1 + e"))
+
+
+ROD_ON_LEDGES = """
+parameters: {m: mass, l: length, v0: speed}
+coordinates: [x, y, theta]
+points:
+  G: [x, y]
+  A: G + l/2 * [cos(theta), sin(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta}
+questions:
+  - impact:
+      at: {theta: 0}
+      before: {x: -v0, y: -v0}
+      collisions:
+        A: {normal: [sqrt(3), 1], restitution: 1/2}
+        G: {normal: [3, sqrt(3)], restitution: 1/2}
+"""
+
+
+def test_singular_only_through_radicals_is_detected() -> None:
+    """Normals (√3, 1) and (3, √3) are parallel only because √3·√3 = 3: with both at
+    the centre of mass line the equations are singular; never zoo or nan."""
+    text = ROD_ON_LEDGES.replace("A: {normal", "H: {normal").replace("  A: G +", "  H: G +")
+    solution = solve(text.replace("H: G + l/2 * [cos(theta), sin(theta)]", "H: G + [0, 0]"))
+    assert solution.error is not None and "singular" in solution.error
+
+
+def test_centre_of_percussion_needs_every_component_to_vanish() -> None:
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "problems" / "impact" / "pendulum-struck.yaml").read_text()
+    solution = solve(text.replace("impulses: {Q: [P, 0]}", "impulses: {Q: [P, P]}"))
+    assert solution.answers.centre_of_percussion is None
+    assert any("no single value of d" in w for w in solution.warnings)
