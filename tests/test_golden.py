@@ -58,7 +58,7 @@ def compare(got, want, where: str) -> None:
     elif want is None:
         assert got is None, f"{where}: {got} != None"
     elif isinstance(want, bool) or want in ("stable", "unstable", "neutral", "undetermined",
-                                            "oscillation", "growth"):
+                                            "oscillation", "growth", "conditional"):
         assert got == want, f"{where}: {got} != {want}"
     else:
         assert same(str(got), str(want)), f"{where}: {got} != {want}"

@@ -22,6 +22,7 @@ from rbdsolve.problem.schema import (
     Point,
     Question,
     QuestionKind,
+    SteadySpinOptions,
 )
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
@@ -34,6 +35,7 @@ OPTIONS = {
     QuestionKind.EQUILIBRIA: ("frame",),
     QuestionKind.MODES: ("about", "frame"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
+    QuestionKind.STEADY_SPIN: ("body",),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
 }
 
@@ -83,6 +85,8 @@ class QuestionReader:
                                                self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
+        if kind is QuestionKind.STEADY_SPIN:
+            return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
         if kind is QuestionKind.IMPACT:
             return Question(kind, ImpactReader(self).options(opts, key), key.loc)
         return Question(kind, None, key.loc)
@@ -126,18 +130,22 @@ class QuestionReader:
     def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
         return self.coordinate_values(node, "an equilibrium", complete=True)
 
-    def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
+    def body(self, opts: Map | None, key: Scalar, kind: QuestionKind) -> str:
+        """The body a question is about: 'body: NAME', or the scene's only body."""
         names = [b.name for b in self.bodies]
         body_node = opts.get("body") if opts else None
         if body_node is None:
             if len(names) != 1:
                 found = "no bodies" if not names else f"{len(names)} bodies ({', '.join(names)})"
-                raise InputError(f"'inertia' needs 'body: NAME' when the scene has {found}", key.loc)
-            body = names[0]
-        else:
-            body = expect_scalar(body_node, "a body name").text
-            if body not in names:
-                raise InputError(f"no body '{body}'{did_you_mean(body, names)}", body_node.loc)
+                raise InputError(f"'{kind.value}' needs 'body: NAME' when the scene has {found}", key.loc)
+            return names[0]
+        body = expect_scalar(body_node, "a body name").text
+        if body not in names:
+            raise InputError(f"no body '{body}'{did_you_mean(body, names)}", body_node.loc)
+        return body
+
+    def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
+        body = self.body(opts, key, QuestionKind.INERTIA)
         if next(b for b in self.bodies if b.name == body).at is None:
             raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)

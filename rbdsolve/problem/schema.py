@@ -73,10 +73,11 @@ class QuestionKind(Enum):
     MODES = "modes"
     INERTIA = "inertia"
     IMPACT = "impact"
+    STEADY_SPIN = "steady_spin"
 
     @property
     def needs_coordinates(self) -> bool:
-        return self is not QuestionKind.INERTIA
+        return self not in (QuestionKind.INERTIA, QuestionKind.STEADY_SPIN)
 
     @property
     def needs_positions(self) -> bool:
@@ -257,9 +258,15 @@ class ImpactOptions:
 
 
 @dataclass(frozen=True)
+class SteadySpinOptions:
+    body: str  # the free body asked about
+
+
+@dataclass(frozen=True)
 class Question:
     kind: QuestionKind
-    options: EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions | None
+    options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
+              | SteadySpinOptions | None)
     loc: Location
 
 

@@ -235,3 +235,20 @@ def test_bad_frames_are_located(old, new, where, path, words) -> None:
     assert words in info.value.message
     assert info.value.location.key_path() == path
     assert (info.value.location.line, info.value.location.column) == where
+
+
+def test_steady_spin_names_its_body() -> None:
+    text = """\
+parameters: {m: mass, a: side}
+bodies:
+  box: {shape: box, mass: m, width: a, depth: a, height: a, at: [0, 0, 0]}
+  ball: {shape: sphere, mass: m, radius: a, at: [0, 0, 0]}
+questions:
+  - steady_spin: {body: bx}
+"""
+    with pytest.raises(InputError) as info:
+        load_text(text, "p.yaml")
+    assert "no body 'bx' (did you mean 'box'?)" in info.value.message
+    assert (info.value.location.line, info.value.location.column) == (6, 25)
+    with pytest.raises(InputError, match="'steady_spin' needs 'body: NAME' when the scene has 2 bodies"):
+        load_text(text.replace("  - steady_spin: {body: bx}", "  - steady_spin"), "p.yaml")
