@@ -16,7 +16,9 @@ import sympy as sp
 from rbdsolve.errors import InputError
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
+from rbdsolve.model.rotation import angular_velocity, sequence_rotation
 from rbdsolve.model.symbols import Symbols
+from rbdsolve.model.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
@@ -39,6 +41,7 @@ class RigidBody:
     source: Body
     given_velocity: sp.Matrix | None = None  # v_G at the instant, linear in q̇
     given_angular_velocity: sp.Matrix | None = None
+    turns_3d: bool = False  # oriented by a sequence of turns: ω from Ṙ Rᵀ
 
     def velocity(self, state: State) -> sp.Matrix:
         """v_G in scene axes: given, or dr_G/dt."""
@@ -50,6 +53,8 @@ class RigidBody:
         """ω in scene axes: given, or, for a planar body turning by angle α(q, t), α̇ e_z."""
         if self.given_angular_velocity is not None:
             return self.given_angular_velocity
+        if self.turns_3d:
+            return angular_velocity(self.rotation, state)
         if self.angle is None:
             return sp.zeros(3, 1)
         return sp.Matrix([0, 0, state.d_dt(self.angle)])
@@ -78,6 +83,7 @@ class Model:
     gravity: sp.Matrix | None
     values: Mapping[sp.Symbol, sp.Rational]
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
+    triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
     inertial: tuple = ()  # EnergyTerms: inertial potentials, for a model seen in a moving frame
 
     @property
@@ -138,6 +144,9 @@ class Model:
 def build_model(problem: Problem) -> Model:
     """Turn a validated Problem into sympy objects."""
     names = Symbols.of(problem)
+    triads = {tr.name: _turns(tr.turns, names) for tr in problem.triads}
+    unit_vectors = {v: triads[tr.name][:, k] for tr in problem.triads for k, v in enumerate(tr.vectors)}
+    names = names.with_points(unit_vectors)
     points: dict[str, sp.Matrix] = {}
     velocities: dict[str, sp.Matrix] = {}
     symbols = names
@@ -149,11 +158,12 @@ def build_model(problem: Problem) -> Model:
                                                       point.velocity, symbols)
     names = symbols.with_points(points)
     q = names.state.q
-    bodies = tuple(_body(b, names, symbols.with_points(velocities)) for b in problem.bodies)
+    bodies = tuple(_body(b, names, symbols.with_points(velocities), triads) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
-    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities)
+    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
+                  triads=triads)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q) if _is_angle(c.kind, qi, model))
     return replace(model, angles=angles)
 
@@ -176,7 +186,12 @@ def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
     return value
 
 
-def _body(body: Body, names: Symbols, rates: Symbols) -> RigidBody:
+def _turns(turns, names: Symbols, start: sp.Matrix | None = None) -> sp.Matrix:
+    R = sequence_rotation([(names.vector(turn.axis), names.scalar(turn.angle)) for turn in turns])
+    return R if start is None else (start * R).applyfunc(tidy)
+
+
+def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Matrix]) -> RigidBody:
     """A body's mass properties combined from its parts; its centre of mass is its
     origin plus the parts' combined centre, turned with the body: r_G = r_at + R c.
     A body at an instant has v_G and ω given instead (a scalar ω turns about z)."""
@@ -190,6 +205,11 @@ def _body(body: Body, names: Symbols, rates: Symbols) -> RigidBody:
         omega = rates.vector(w) if w.kind is Kind.VECTOR else sp.Matrix([0, 0, rates.scalar(w)])
         omega = _affine_in_rates(omega, w, rates)
         return RigidBody(body.name, props.mass, None, sp.eye(3), None, props.inertia, body, velocity, omega)
+    if body.orientation:
+        start = triads[body.orientation[0]] if isinstance(body.orientation[0], str) else None
+        rotation = _turns([x for x in body.orientation if not isinstance(x, str)], names, start)
+        position = names.vector(body.at) + rotation * props.centre
+        return RigidBody(body.name, props.mass, position, rotation, None, props.inertia, body, turns_3d=True)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     position = names.vector(body.at) + rotation * props.centre

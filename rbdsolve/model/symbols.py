@@ -41,6 +41,7 @@ class Symbols:
             p.name: sp.Symbol(p.name, positive=True) if p.positive else sp.Symbol(p.name, real=True)
             for p in problem.parameters
         }
+        params.update({name: sp.Symbol(name, real=True) for name in problem.unknowns})
         state = State.of(tuple(c.name for c in problem.coordinates))
         names = Symbols(params, state, {})
         prescribed = {p.name: sp.Function(p.name, real=True)(t) if p.value is None else names.scalar(p.value)

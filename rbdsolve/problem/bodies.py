@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar, read_bool
+from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.schema import SHAPE_ALIASES, Body, Inertia, Part, Shape
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
@@ -21,7 +22,7 @@ if TYPE_CHECKING:
 
 # Shape dimensions that are positions, not sizes: any sign is fine.
 POSITIONS = {"apex"}
-MOTION_KEYS = ("angle", "velocity", "angular_velocity")
+MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
 class BodyReader:
@@ -32,9 +33,10 @@ class BodyReader:
         spec = expect_mapping(node, f"body '{name}'")
         what = f"body '{name}'"
         at, angle, velocity, omega = self.motion(spec, what)
+        orientation = self.orientation(spec)
         if spec.get("parts") is None:
             part = self.part(name, spec, what, MOTION_KEYS, simple=True, translating=_is_zero(omega))
-            return Body(name, (part,), at, angle, spec.loc, velocity, omega)
+            return Body(name, (part,), at, angle, spec.loc, velocity, omega, orientation)
         check_keys(spec, ("parts",), ("at", *MOTION_KEYS), what)
         table = expect_mapping(spec.get("parts"), "parts: name -> part")
         if not table.entries:
@@ -43,7 +45,7 @@ class BodyReader:
                                 simple=False) for k, v in table.entries)
         if all(p.hole for p in parts):
             raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
-        return Body(name, parts, at, angle, spec.loc, velocity, omega)
+        return Body(name, parts, at, angle, spec.loc, velocity, omega, orientation)
 
     def motion(self, spec: Map, what: str) -> tuple[ex.Expr | None, ...]:
         """(at, angle) for a body that moves with the scene, or (velocity,
@@ -71,6 +73,16 @@ class BodyReader:
             raise InputError(f"{what} gives 'velocity' but not 'angular_velocity' (0 if it does not "
                              "turn at this instant)", spec.loc)
         return None, None, velocity, self.angular_velocity(omega)
+
+    def orientation(self, spec: Map) -> tuple:
+        """A 3D orientation (turns), instead of a planar 'angle'."""
+        node = spec.get("orientation")
+        if node is None:
+            return ()
+        for key in ("angle", "velocity"):
+            if spec.get(key) is not None:
+                raise InputError(f"give either 'orientation' (3D turns) or '{key}', not both", spec.get(key).loc)
+        return OrientationReader(self.loader).orientation(node, self.loader.triad_names)
 
     def angular_velocity(self, node: Node) -> ex.Expr:
         """A scalar ω (planar: about z) or a vector."""

@@ -24,11 +24,13 @@ from rbdsolve.problem.schema import (
     Spring,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
+from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
 
-TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "coordinates", "points", "frames",
+TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
+            "points", "frames",
             "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
 RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
@@ -92,6 +94,8 @@ class _Loader:
         self.positions = ex.Scope()
         self.rates = ex.Scope()  # velocities at one instant: parameters, dot(q), velocity points
         self.coordinate_names: frozenset[str] = frozenset()
+        self.triad_vectors: frozenset[str] = frozenset()
+        self.triad_names: tuple[str, ...] = ()
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -137,15 +141,20 @@ class _Loader:
         get = root.get
         parameters = self.parameters(get("parameters"))
         prescribed = self.prescribed(get("prescribed"), parameters)
+        unknowns = self.unknowns(get("unknowns"))
         coordinates = self.coordinates(get("coordinates"))
         self.coordinate_names = frozenset(c.name for c in coordinates)
         # Positions and angles may use coordinates, prescribed functions and time t;
         # velocities at an instant use parameters and the rates dot(q).
         moving = {c.name for c in coordinates} | {p.name for p in prescribed}
         self.scope = ex.Scope(
-            scalars=frozenset({p.name for p in parameters} | moving | {"t"}),
+            scalars=frozenset({p.name for p in parameters} | set(unknowns) | moving | {"t"}),
             functions_of_time=frozenset(moving),
         )
+        self._set_point_scopes(frozenset(), frozenset())
+        triads = OrientationReader(self).triads(get("triads"))
+        self.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
+        self.triad_names = tuple(tr.name for tr in triads)
         self._set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
@@ -165,6 +174,8 @@ class _Loader:
             questions=self.questions(get("questions"), coordinates, bodies, points, frames),
             prescribed=prescribed,
             frames=frames,
+            unknowns=unknowns,
+            triads=triads,
         )
 
     def text(self, node: Node | None, what: str) -> str:
@@ -225,6 +236,12 @@ class _Loader:
                 out.append(Prescribed(name, self.expr(value, ex.Kind.SCALAR, what, scope), key.loc))
         return tuple(out)
 
+    def unknowns(self, node: Node | None) -> tuple[str, ...]:
+        """Constant unknowns (a steady spin rate), found by the questions that need them."""
+        if node is None:
+            return ()
+        return tuple(self.declare(key, "unknown") for key, _ in _names_list(node, "unknown"))
+
     def coordinates(self, node: Node | None) -> tuple[Coordinate, ...]:
         if node is None:
             return ()
@@ -249,6 +266,7 @@ class _Loader:
         """Positions name position points; velocities at an instant name velocity points
         and the rates dot(q), never the coordinates themselves (the configuration of an
         instant is given by the question, with 'at:')."""
+        positions = positions | self.triad_vectors
         self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
         why_velocity = "it is given by its velocity; positions name points given by position"
         self.positions = ex.Scope(self.scope.scalars, positions,

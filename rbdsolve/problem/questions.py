@@ -22,6 +22,7 @@ from rbdsolve.problem.schema import (
     Point,
     Question,
     QuestionKind,
+    SteadyMotionOptions,
     SteadySpinOptions,
 )
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
@@ -36,6 +37,7 @@ OPTIONS = {
     QuestionKind.MODES: ("about", "frame"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
     QuestionKind.STEADY_SPIN: ("body",),
+    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
 }
 
@@ -85,6 +87,8 @@ class QuestionReader:
                                                self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
+        if kind is QuestionKind.STEADY_MOTION:
+            return Question(kind, self.steady_motion(opts, key), key.loc)
         if kind is QuestionKind.STEADY_SPIN:
             return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
         if kind is QuestionKind.IMPACT:
@@ -143,6 +147,26 @@ class QuestionReader:
         if body not in names:
             raise InputError(f"no body '{body}'{did_you_mean(body, names)}", body_node.loc)
         return body
+
+    def steady_motion(self, opts: Map | None, key: Scalar) -> SteadyMotionOptions:
+        get = opts.get if opts else (lambda _: None)
+        triads = self.loader.triad_names
+        triad_node = get("triad")
+        if triad_node is None:
+            if len(triads) != 1:
+                raise InputError("'steady_motion' needs 'triad: NAME', the turning triad the motion is steady "
+                                 f"in ({'no triads are declared' if not triads else ', '.join(triads)})", key.loc)
+            triad = triads[0]
+        else:
+            triad = expect_scalar(triad_node, "a triad name").text.strip()
+            if triad not in triads:
+                raise InputError(f"no triad '{triad}'{did_you_mean(triad, list(triads))}", triad_node.loc)
+        if get("about") is None:
+            raise InputError("'steady_motion' needs 'about: POINT', the point for angular momentum", key.loc)
+        contact = self.point(get("rolling_at")) if get("rolling_at") is not None else None
+        target = self.loader.constant(get("solve_for"), "what to solve for") if get("solve_for") is not None else None
+        return SteadyMotionOptions(self.body(opts, key, QuestionKind.STEADY_MOTION), triad,
+                                   self.point(get("about")), contact, target)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
         body = self.body(opts, key, QuestionKind.INERTIA)

@@ -74,10 +74,11 @@ class QuestionKind(Enum):
     INERTIA = "inertia"
     IMPACT = "impact"
     STEADY_SPIN = "steady_spin"
+    STEADY_MOTION = "steady_motion"
 
     @property
     def needs_coordinates(self) -> bool:
-        return self not in (QuestionKind.INERTIA, QuestionKind.STEADY_SPIN)
+        return self not in (QuestionKind.INERTIA, QuestionKind.STEADY_SPIN, QuestionKind.STEADY_MOTION)
 
     @property
     def needs_positions(self) -> bool:
@@ -152,6 +153,25 @@ class Part:
 
 
 @dataclass(frozen=True)
+class Turn:
+    """One body-fixed turn of a rotation sequence: by ``angle`` about ``axis``."""
+
+    axis: Expr
+    angle: Expr
+
+
+@dataclass(frozen=True)
+class Triad:
+    """A named frame by a sequence of body-fixed turns from the scene axes; its unit
+    vectors get the names in ``vectors`` (e1, e2, e3) and may be used in positions."""
+
+    name: str
+    turns: tuple[Turn, ...]
+    vectors: tuple[str, str, str]
+    loc: Location
+
+
+@dataclass(frozen=True)
 class Body:
     """A rigid body: one part (a shape placed at ``at``) or several (``parts:``).
 
@@ -166,6 +186,7 @@ class Body:
     loc: Location
     velocity: Expr | None = None
     angular_velocity: Expr | None = None  # a scalar (planar, about z) or a vector
+    orientation: tuple[str | Turn, ...] = ()  # 3D: a triad's name first, if any, then turns
 
 
 @dataclass(frozen=True)
@@ -258,6 +279,15 @@ class ImpactOptions:
 
 
 @dataclass(frozen=True)
+class SteadyMotionOptions:
+    body: str
+    triad: str  # the turning triad the motion is steady in
+    about: Expr  # the point to take angular momentum about
+    contact: Expr | None  # a point where the body rolls without slipping on a fixed surface
+    solve_for: Expr | None  # a constant to solve the relations for (omega0**2)
+
+
+@dataclass(frozen=True)
 class SteadySpinOptions:
     body: str  # the free body asked about
 
@@ -266,7 +296,7 @@ class SteadySpinOptions:
 class Question:
     kind: QuestionKind
     options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
-              | SteadySpinOptions | None)
+              | SteadySpinOptions | SteadyMotionOptions | None)
     loc: Location
 
 
@@ -286,6 +316,8 @@ class Problem:
     questions: tuple[Question, ...]
     prescribed: tuple[Prescribed, ...] = ()
     frames: tuple[Frame, ...] = ()
+    unknowns: tuple[str, ...] = ()  # constant unknowns, such as a steady spin rate
+    triads: tuple[Triad, ...] = ()
 
     def value_map(self) -> dict[str, Fraction]:
         return dict(self.values)

@@ -14,7 +14,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
-from rbdsolve.solvers import eom, equilibria, impact, inertia, modes, steady_spin
+from rbdsolve.solvers import eom, equilibria, impact, inertia, modes, steady_motion, steady_spin
 from rbdsolve.solvers.common import Options, numeric
 from rbdsolve.solvers.energies import summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
@@ -26,6 +26,7 @@ SOLVERS = {
     QuestionKind.INERTIA: inertia.solve,
     QuestionKind.IMPACT: impact.solve,
     QuestionKind.STEADY_SPIN: steady_spin.solve,
+    QuestionKind.STEADY_MOTION: steady_motion.solve,
 }
 
 
