@@ -84,7 +84,7 @@ class Model:
     values: Mapping[sp.Symbol, sp.Rational]
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
     triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
-    inertial: tuple = ()  # EnergyTerms: inertial potentials, for a model seen in a moving frame
+    inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
 
     @property
     def instant(self) -> bool:
@@ -120,8 +120,9 @@ class Model:
         return self.state.to_time(expr)
 
     def depends_on_time(self) -> bool:
-        """Does the scene move by itself (t in a position, an angle or a spring)?"""
-        parts = [*self.points.values(), *self._positions(), *(b.rotation for b in self.bodies),
+        """Does the scene move by itself (t in a body's position or angle, a spring, gravity
+        or an inertial potential)? Points alone carry no energy."""
+        parts = [*self._positions(), *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
         return any(sp.sympify(p).has(t) for p in parts)

@@ -31,7 +31,8 @@ from dataclasses import dataclass, replace
 import sympy as sp
 
 from rbdsolve.errors import InputError, UnsolvedError
-from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.build import Model, RigidBody, SpringModel
+from rbdsolve.model.rotation import axis_rotation
 from rbdsolve.model.energy import EnergyTerm
 from rbdsolve.model.state import t
 from rbdsolve.model.tidy import tidy
@@ -67,54 +68,45 @@ class FrameLagrangian:
 
 
 def frame_motion(model: Model, frame: Frame) -> FrameMotion:
-    """The frame's origin, axes and angular velocity. A frame turning about an axis
-    other than z is refused when a body turns with an ``angle``: bodies turn about z
-    only, so such a body's orientation cannot follow the frame."""
+    """The frame's origin, axes and angular velocity."""
     names = model.symbols.with_points(model.points)
     origin = names.vector(frame.origin) if frame.origin is not None else sp.zeros(3, 1)
-    if any(origin.has(q) for q in model.q):
-        raise InputError(f"frame '{frame.name}' must move in a given way: its origin depends on the "
-                         "coordinates", frame.origin.loc)
     if frame.axis is None:
         return FrameMotion(frame, origin, sp.eye(3), sp.zeros(3, 1))
     axis = names.vector(frame.axis)
-    n = axis / sp.sqrt(axis.dot(axis))
-    turning = [b.name for b in model.bodies if b.angle is not None and b.inertia != sp.zeros(3, 3)]
-    if (n[0] != 0 or n[1] != 0) and turning:
-        raise UnsolvedError(f"frame '{frame.name}' turns about an axis other than z, and body '{turning[0]}' "
-                            "turns with an 'angle' about z: its orientation cannot follow the frame "
-                            "(3D rotations come with issue 5)")
+    length = tidy(axis.dot(axis))
+    if length == 0:
+        raise InputError(f"frame '{frame.name}' turns about the zero vector", frame.axis.loc)
+    n = axis / sp.sqrt(length)
     rate = names.scalar(frame.rate)
-    return FrameMotion(frame, origin, _rotation(n, rate * t), rate * n)
+    return FrameMotion(frame, origin, axis_rotation(n, rate * t), rate * n)
 
 
-def _rotation(n: sp.Matrix, angle: sp.Expr) -> sp.Matrix:
-    """Rodrigues: R = cos α 1 + sin α [n]× + (1 − cos α) n nᵀ."""
-    cross = sp.Matrix([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
-    return sp.cos(angle) * sp.eye(3) + sp.sin(angle) * cross + (1 - sp.cos(angle)) * n * n.T
+def inertial_potentials(name: str, m: sp.Expr, r: sp.Expr, motion: FrameMotion) -> list[EnergyTerm]:
+    """−½ m |ω × r'|² (centrifugal) and m a' · r' (the origin's acceleration)."""
+    omega, a = motion.omega, motion.in_axes(sp.diff(motion.origin, t, 2))
+    return [EnergyTerm(f"centrifugal on {name}", tidy(-m * omega.cross(r).dot(omega.cross(r)) / 2)),
+            EnergyTerm(f"inertial force on {name}", tidy(m * a.dot(r)))]
 
 
 def frame_lagrangian(model: Model, motion: FrameMotion) -> FrameLagrangian:
     """L' and F, body by body (see the module docstring)."""
     state, omega = model.state, motion.omega
-    u = motion.in_axes(motion.origin_velocity())
-    a = motion.in_axes(sp.diff(motion.origin, t, 2))
-    g = motion.in_axes(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
+    v_O = motion.origin_velocity()
+    u = motion.in_axes(v_O)
+    gravity = model.gravity if model.gravity is not None else sp.zeros(3, 1)
+    g = motion.in_axes(gravity)
     kinetic, potential = [], []
     F_bodies, time_only = sp.Integer(0), sp.Integer(0)
-    v_O = motion.origin_velocity()
     for body in model.bodies:
         m, r = body.mass, motion.relative(body.position)
         v = state.d_dt(r)
-        spin = _spin(body, state)
         kinetic += [EnergyTerm(f"{body.name}, relative motion", tidy(m * v.dot(v) / 2)),
                     EnergyTerm(f"{body.name}, gyroscopic", tidy(m * v.dot(omega.cross(r)))),
-                    EnergyTerm(f"{body.name}, spin", spin)]
-        potential += [EnergyTerm(f"centrifugal on {body.name}", tidy(-m * omega.cross(r).dot(omega.cross(r)) / 2)),
-                      EnergyTerm(f"inertial force on {body.name}", tidy(m * a.dot(r))),
+                    EnergyTerm(f"{body.name}, spin", _spin(body, state))]
+        potential += [*inertial_potentials(body.name, m, r, motion),
                       EnergyTerm(f"gravity on {body.name}", tidy(-m * g.dot(r)))]
         F_bodies += m * r.dot(u)
-        gravity = model.gravity if model.gravity is not None else sp.zeros(3, 1)
         time_only += m * v_O.dot(v_O) / 2 + m * gravity.dot(motion.origin)
     potential += [EnergyTerm(f"spring {s.name}", tidy(s.stiffness * s.stretch**2 / 2)) for s in model.springs]
     kinetic = tuple(x for x in kinetic if x.value != 0)
@@ -135,20 +127,42 @@ def _spin(body: RigidBody, state) -> sp.Expr:
 
 def in_frame(model: Model, motion: FrameMotion) -> Model:
     """The model as seen in F, for relative equilibria and small oscillations:
-    positions r', gravity in F's axes, and the inertial potentials (centrifugal,
-    translation) added to V. A body's spin energy is kept as the scene gives it: for a
-    frame turning about z its q̇-free part is ½ J_zz Ω², a constant. Valid when F's
-    Lagrangian has no gyroscopic part at the configurations asked about (the modes
-    solver checks it)."""
-    points = {name: motion.relative(r) for name, r in model.points.items()}
-    bodies = tuple(replace(b, position=motion.relative(b.position)) for b in model.bodies)
+    positions r', bodies turned by their angle relative to F (α − Ω t for a frame
+    turning about z), spring stretches from the relative positions, gravity in F's
+    axes, and the inertial potentials (centrifugal, translation) added to V.
+
+    A body's relative spin energy ½ J (α̇ − Ω)² differs from its true one by J Ω α̇ and
+    a constant, a total time derivative: it changes no equation. A frame turning about
+    an axis other than z cannot carry a body that turns with an ``angle`` about z."""
+    n = motion.omega
+    turning = [b.name for b in model.bodies if b.angle is not None and b.inertia != sp.zeros(3, 3)]
+    if (n[0] != 0 or n[1] != 0) and turning:
+        raise UnsolvedError(f"frame '{motion.frame.name}' turns about an axis other than z, and body "
+                            f"'{turning[0]}' turns with an 'angle' about z: its orientation cannot follow the frame")
+    bodies = tuple(_relative_body(b, motion) for b in model.bodies)
+    springs = tuple(_relative_spring(s, model, motion) for s in model.springs)
     gravity = motion.in_axes(model.gravity) if model.gravity is not None else None
-    a = motion.in_axes(sp.diff(motion.origin, t, 2))
-    omega = motion.omega
-    extra = []
-    for body, moved in zip(model.bodies, bodies):
-        r = moved.position
-        extra.append(EnergyTerm(f"centrifugal on {body.name}", tidy(-body.mass * omega.cross(r).dot(omega.cross(r)) / 2)))
-        extra.append(EnergyTerm(f"inertial force on {body.name}", tidy(body.mass * a.dot(r))))
-    extra = tuple(x for x in extra if x.value != 0)
-    return replace(model, points=points, bodies=bodies, gravity=gravity, inertial=extra)
+    extra = [x for b, moved in zip(model.bodies, bodies)
+             for x in inertial_potentials(b.name, b.mass, moved.position, motion)]
+    points = {name: motion.relative(r) for name, r in model.points.items()}
+    return replace(model, points=points, bodies=bodies, springs=springs, gravity=gravity,
+                   inertial=tuple(x for x in extra if x.value != 0))
+
+
+def _relative_body(body: RigidBody, motion: FrameMotion) -> RigidBody:
+    position = motion.relative(body.position)
+    if body.angle is None:
+        return replace(body, position=position)
+    angle = tidy(body.angle - motion.omega[2] * t)
+    return replace(body, position=position, angle=angle, rotation=sp.rot_axis3(-angle))
+
+
+def _relative_spring(spring: SpringModel, model: Model, motion: FrameMotion) -> SpringModel:
+    """A linear spring's stretch from the ends' relative positions (the same length,
+    written so that a spring still in the frame shows no t)."""
+    if spring.source.ends is None:
+        return spring
+    names = model.symbols.with_points(model.points)
+    a, b = (motion.relative(names.vector(e)) for e in spring.source.ends)
+    rest = names.scalar(spring.source.natural_length) if spring.source.natural_length else sp.Integer(0)
+    return replace(spring, stretch=sp.sqrt(tidy((a - b).dot(a - b))) - rest)

@@ -70,6 +70,11 @@ def _identifier(key: Scalar, what: str) -> str:
     return name
 
 
+def _given(node: Node | None) -> Node | None:
+    """A key's value, or None when the key is missing or null."""
+    return None if node is None or (isinstance(node, Scalar) and node.null) else node
+
+
 def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
     """A bare unknown name where a vector is expected is most likely a misspelt point."""
     name = node.text.strip()
@@ -96,6 +101,7 @@ class _Loader:
         self.coordinate_names: frozenset[str] = frozenset()
         self.triad_vectors: frozenset[str] = frozenset()
         self.triad_names: tuple[str, ...] = ()
+        self.point_exprs: dict[str, ex.Expr] = {}
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -296,6 +302,7 @@ class _Loader:
             else:
                 positions[key.text] = self.expr(value, ex.Kind.VECTOR,
                                                 f"the position of point '{key.text}' (a vector)", self.positions)
+        self.point_exprs = positions
         return (tuple(Point(name, positions[name]) for name in _dependency_order(positions))
                 + tuple(Point(name, None, velocities[name]) for name in _dependency_order(velocities)))
 
@@ -309,17 +316,27 @@ class _Loader:
             name = self.declare(key, "frame")
             spec = expect_mapping(value, f"frame '{name}'")
             check_keys(spec, (), ("origin", "axis", "rate"), f"frame '{name}'")
-            if (spec.get("axis") is None) != (spec.get("rate") is None):
+            origin, axis, rate = (_given(spec.get(k)) for k in ("origin", "axis", "rate"))
+            if (axis is None) != (rate is None):
                 raise InputError(f"a turning frame needs both 'axis' and 'rate' (frame '{name}')", spec.loc)
-            origin = spec.get("origin")
-            out.append(Frame(
-                name,
-                self.expr(origin, ex.Kind.VECTOR, "the frame's origin (a point or a vector)") if origin else None,
-                self.axis(spec.get("axis")) if spec.get("axis") is not None else None,
-                self.optional_constant(spec.get("rate"), "a rate of turning"),
-                spec.loc,
-            ))
+            if origin is not None:
+                origin = self.expr(origin, ex.Kind.VECTOR, "the frame's origin (a point or a vector)")
+                moving = sorted(self.coordinate_names & self._point_names(origin))
+                if moving:
+                    raise InputError(f"frame '{name}' must move in a given way, but its origin depends on the "
+                                     f"coordinate {moving[0]}", origin.loc)
+            out.append(Frame(name, origin, self.axis(axis) if axis is not None else None,
+                             self.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
         return tuple(out)
+
+    def _point_names(self, expr: ex.Expr) -> set[str]:
+        """Every name an expression uses, through the points it names."""
+        found, todo = set(), set(expr.names())
+        while todo:
+            name = todo.pop()
+            found.add(name)
+            todo |= (self.point_exprs[name].names() - found) if name in self.point_exprs else set()
+        return found
 
     def bodies(self, node: Node | None) -> tuple[Body, ...]:
         if node is None:

@@ -319,5 +319,8 @@ class Problem:
     unknowns: tuple[str, ...] = ()  # constant unknowns, such as a steady spin rate
     triads: tuple[Triad, ...] = ()
 
+    def frame(self, name: str) -> Frame:
+        return next(f for f in self.frames if f.name == name)
+
     def value_map(self) -> dict[str, Fraction]:
         return dict(self.values)

@@ -71,7 +71,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     names = question.options.frames if question.options else ()
     frames = []
     for name in names:
-        answer, frame_steps = _in_frame(model, next(f for f in model.problem.frames if f.name == name), equations)
+        answer, frame_steps = _in_frame(model, model.problem.frame(name), equations)
         frames.append(answer)
         steps += frame_steps
     answers = EomAnswers(
@@ -109,8 +109,8 @@ def _frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: boo
     legend_T = ", ".join(f"T'{subscript(i)} {x.name}" for i, x in enumerate(seen.kinetic, start=1))
     legend_V = ", ".join(f"V'{subscript(i)} {x.name}" for i, x in enumerate(seen.potential, start=1))
     F = Relation(sp.Symbol("F"), model.to_time(seen.F))
-    checks = ("They are the same equations" if agree else "They are NOT the same equations (a bug: please report)")
-    checks += ", and L − L' = dF/dt" + ("" if derivative else " does NOT hold")
+    checks = "They are the same equations" if agree else "rbdsolve could not simplify the difference of the equations to 0"
+    checks += ", and L − L' = dF/dt" if derivative else "; L − L' − dF/dt did not simplify to 0"
     return [
         st.definition(f"In frame {frame.name} (positions r' = Rᵀ (r − r_O)): kinetic parts; {legend_T}:",
                       *rows(seen.kinetic, "T'")),

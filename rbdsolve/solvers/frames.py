@@ -35,9 +35,12 @@ def frame_of(question: Question) -> str | None:
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
     """Run ``solve`` on the model as seen in the question's frame, its steps after
     the ones that say what the frame adds."""
-    frame = next(f for f in model.problem.frames if f.name == frame_of(question))
+    frame = model.problem.frame(frame_of(question))
     motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
+    if seen.depends_on_time():
+        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or gravity "
+                            "moves in it): it has no relative equilibria there")
     if question.kind is QuestionKind.MODES:
         _require_no_gyroscopic_coupling(model, motion)
     solution = solve(question, seen, options)
@@ -51,7 +54,8 @@ def _require_no_gyroscopic_coupling(model: Model, motion: FrameMotion) -> None:
     G = sp.Matrix(n, n, lambda i, j: tidy(sp.diff(c[i], model.q[j]) - sp.diff(c[j], model.q[i])))
     if G != sp.zeros(n, n):
         raise UnsolvedError(f"in frame '{motion.frame.name}' the motion has gyroscopic (Coriolis) coupling, "
-                            f"G = {sp.sstr(model.readable(G))}: small oscillations with G are not supported yet")
+                            f"G = {sp.sstr(model.readable(G).tolist())}: small oscillations with G are not "
+                            "supported yet")
 
 
 def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:

@@ -1,0 +1,99 @@
+"""Relative equilibria and small oscillations in a turning frame, against hand
+derivations, and the refusals where the frame does not make the scene still."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+Omega, m, L, d, k = sp.symbols("Omega m L d k", positive=True)
+
+# A rod pivoted at distance d from the axis of a horizontal turntable. By hand, in the
+# table's frame: r_G = (d + L/2 cos φ, L/2 sin φ), V' = −½ m Ω² |r_G|², so
+# V' = −½ m Ω² d L cos φ + const, J_P = m L²/3: λ = 3 Ω² d/(2 L) about φ = 0.
+TURNTABLE = """
+parameters: {m: mass, L: length, d: pivot distance, Omega: rate}
+coordinates: [phi]
+frames:
+  table: {axis: z, rate: Omega}
+points:
+  P: d*[cos(Omega*t), sin(Omega*t)]
+bodies:
+  rod:
+    at: P
+    angle: phi + Omega*t
+    parts:
+      bar: {shape: rod, mass: m, length: L, at: [L/2, 0]}
+questions:
+  - equilibria: {frame: table}
+  - modes: {frame: table, about: {phi: 0}}
+"""
+
+# A bead in a radial slot, on a spring to the axis: V' = ½ k r² − ½ m Ω² r²,
+# λ = (k − m Ω²)/m about r = 0.
+SLOT = """
+parameters: {m: mass, k: stiffness, Omega: rate}
+values: {m: 1, k: 10, Omega: 1}
+coordinates: [r]
+frames:
+  table: {axis: z, rate: Omega}
+points:
+  A: [0, 0]
+  P: r*[cos(Omega*t), sin(Omega*t)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+springs:
+  s: {between: [P, A], stiffness: k}
+questions:
+  - modes: {frame: table, about: {r: 0}}
+"""
+
+
+def solve(text: str):
+    return solve_problem(build_model(load_text(text, "scene.yaml"))).solutions
+
+
+def test_a_rigid_body_still_in_the_turning_frame() -> None:
+    equilibria, modes = solve(TURNTABLE)
+    found = {e.at[next(iter(e.at))]: e.stability.value for e in equilibria.answers.equilibria}
+    assert found == {0: "stable", sp.pi: "unstable"}
+    assert sp.simplify(modes.answers.eigenvalues[0] - 3 * Omega**2 * d / (2 * L)) == 0
+
+
+def test_a_spring_to_the_axis_in_the_turning_frame() -> None:
+    (modes,) = solve(SLOT)
+    assert modes.error is None, modes.error
+    assert sp.simplify(modes.answers.eigenvalues[0] - (k - m * Omega**2) / m) == 0
+
+
+def test_a_spring_anchored_off_the_axis_is_not_still_in_the_frame() -> None:
+    (modes,) = solve(SLOT.replace("A: [0, 0]", "A: [1, 0]"))
+    assert modes.error is not None and "still depends on t" in modes.error
+
+
+def test_gyroscopic_coupling_is_refused_for_modes() -> None:
+    text = SLOT.replace("coordinates: [r]", "coordinates: [x, y]").replace(
+        "P: r*[cos(Omega*t), sin(Omega*t)]",
+        "P: [x*cos(Omega*t) - y*sin(Omega*t), x*sin(Omega*t) + y*cos(Omega*t)]").replace(
+        "about: {r: 0}", "about: {x: 0, y: 0}")
+    (modes,) = solve(text)
+    assert modes.error is not None and "gyroscopic (Coriolis) coupling" in modes.error
+
+
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        ("{axis: z, rate: Omega}", "{axis: z, rate: null}", "needs both 'axis' and 'rate'"),
+        ("{axis: z, rate: Omega}", "{axis: [Omega - Omega, 0, 0], rate: Omega}", "turns about the zero vector"),
+        ("{axis: z, rate: Omega}", "{origin: P}", "its origin depends on the coordinate r"),
+    ],
+)
+def test_bad_frames_are_located(old, new, words) -> None:
+    with pytest.raises(InputError, match=words) as info:
+        solve(SLOT.replace(old, new))
+    assert info.value.location.key_path().startswith("frames.table")
