@@ -68,7 +68,9 @@ class OrientationReader:
         for i, item in enumerate(node.items):
             if isinstance(item, Scalar):
                 name = item.text.strip()
-                if i > 0 or name not in triads:
+                if i > 0 and name in triads:
+                    raise InputError(f"the triad '{name}' may only come first in an orientation", item.loc)
+                if name not in triads:
                     hint = did_you_mean(name, list(triads)) or (f" (triads: {', '.join(triads)})" if triads else "")
                     raise InputError(f"'{name}' is not a triad here{hint}: an orientation is a triad's name, "
                                      "first, and turns [axis, angle]", item.loc)

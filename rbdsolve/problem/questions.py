@@ -160,7 +160,8 @@ class QuestionReader:
         else:
             triad = expect_scalar(triad_node, "a triad name").text.strip()
             if triad not in triads:
-                raise InputError(f"no triad '{triad}'{did_you_mean(triad, list(triads))}", triad_node.loc)
+                hint = did_you_mean(triad, list(triads)) or f" (triads: {', '.join(triads) or 'none'})"
+                raise InputError(f"no triad '{triad}'{hint}", triad_node.loc)
         if get("about") is None:
             raise InputError("'steady_motion' needs 'about: POINT', the point for angular momentum", key.loc)
         contact = self.point(get("rolling_at")) if get("rolling_at") is not None else None

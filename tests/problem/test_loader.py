@@ -252,3 +252,47 @@ questions:
     assert (info.value.location.line, info.value.location.column) == (6, 25)
     with pytest.raises(InputError, match="'steady_spin' needs 'body: NAME' when the scene has 2 bodies"):
         load_text(text.replace("  - steady_spin: {body: bx}", "  - steady_spin"), "p.yaml")
+
+
+ORIENTED = """\
+parameters: {m: mass, r: radius, w: rate, theta: tilt}
+unknowns: [spin]
+triads:
+  T: {turns: [[z, w*t], [y, -theta]], vectors: [e1, e2, e3]}
+points:
+  G: r*e3
+bodies:
+  ring: {shape: ring, mass: m, radius: r, at: G, axis: x, orientation: [T, [x, spin*t]]}
+questions:
+  - steady_motion: {about: G, solve_for: spin}
+"""
+
+
+def test_triads_and_orientations_load() -> None:
+    problem = load_text(ORIENTED, "p.yaml")
+    assert problem.unknowns == ("spin",)
+    assert problem.triads[0].vectors == ("e1", "e2", "e3")
+    assert problem.bodies[0].orientation[0] == "T"
+
+
+@pytest.mark.parametrize(
+    "old, new, where, words",
+    [
+        ("orientation: [T, [x, spin*t]]", "orientation: [[x, spin*t], T]", (8, 86),
+         "the triad 'T' may only come first"),
+        ("orientation: [T, [x, spin*t]]", "orientation: [S, [x, spin*t]]", (8, 73),
+         "'S' is not a triad here (triads: T)"),
+        ("[[z, w*t], [y, -theta]]", "[[z], [y, -theta]]", (4, 15), "expected a turn [axis, angle]"),
+        ("vectors: [e1, e2, e3]", "vectors: [e1, e2]", (4, 48), "the three unit vectors"),
+        ("vectors: [e1, e2, e3]", "vectors: [e1, e2, m]", (4, 57), "'m' is already declared as a parameter"),
+        ("at: G, axis: x, orientation", "at: G, angle: w*t, orientation", (8, 57),
+         "give either 'orientation' (3D turns) or 'angle'"),
+        ("{about: G, solve_for: spin}", "{solve_for: spin}", (10, 5), "needs 'about: POINT'"),
+        ("{about: G, solve_for: spin}", "{about: G, triad: S}", (10, 38), "no triad 'S' (triads: T)"),
+    ],
+)
+def test_bad_orientations_are_located(old, new, where, words) -> None:
+    with pytest.raises(InputError) as info:
+        load_text(ORIENTED.replace(old, new, 1), "p.yaml")
+    assert words in info.value.message
+    assert (info.value.location.line, info.value.location.column) == where
