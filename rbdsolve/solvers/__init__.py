@@ -51,7 +51,7 @@ def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
     summary = summarize_model(model)
     solutions = tuple(solve_question(q, model, options) for q in problem.questions)
     values = {str(k): float(v) for k, v in model.values.items()}
-    symbols = tuple(p.name for p in problem.parameters)
+    symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols)
 
