@@ -28,7 +28,7 @@ from rbdsolve.model.state import t
 from rbdsolve.model.tidy import tidy, tidy_fraction
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report import steps as st
-from rbdsolve.report.math import Along, Product, Terms
+from rbdsolve.report.math import Along, Label, Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options
 
@@ -201,7 +201,7 @@ def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts, target=None) -> 
         st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
                       Relation(sp.Symbol(f"L_{about}"), _show(answers.angular_momentum, e))),
         st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
-                    Relation(sp.Symbol(f"Ldot_{about}"), _show(dL, e))),
+                    Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), _show(dL, e))),
         st.definition(f"The moment of gravity about {about}, and the velocity of {about}:",
                       Relation(sp.Symbol(f"M_{about}"), _show(answers.moment, e)),
                       Relation(sp.Symbol(f"v_{about}"), _show(v_P, e))),
