@@ -166,8 +166,11 @@ class QuestionReader:
             raise InputError("'steady_motion' needs 'about: POINT', the point for angular momentum", key.loc)
         contact = self.point(get("rolling_at")) if get("rolling_at") is not None else None
         target = self.loader.constant(get("solve_for"), "what to solve for") if get("solve_for") is not None else None
-        return SteadyMotionOptions(self.body(opts, key, QuestionKind.STEADY_MOTION), triad,
-                                   self.point(get("about")), contact, target)
+        body = self.body(opts, key, QuestionKind.STEADY_MOTION)
+        if next(b for b in self.bodies if b.name == body).at is None:
+            raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
+                             "velocity at one instant", key.loc)
+        return SteadyMotionOptions(body, triad, self.point(get("about")), contact, target)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
         body = self.body(opts, key, QuestionKind.INERTIA)

@@ -61,6 +61,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     fix = lambda v: sp.Matrix([tidy(x.xreplace(rates)) for x in v])  # noqa: E731
     omega, v_G = fix(omega), fix(v_G)
     P = names.vector(opts.about)
+    if opts.contact is not None and tidy_fraction((P - names.vector(opts.contact)).dot(P - names.vector(opts.contact))) != 0:
+        raise UnsolvedError(f"the body rolls at {opts.contact.text}: take moments about that point (about: "
+                            f"{opts.contact.text}), where the unknown contact force has no moment")
     r_PG = fix(k.position(body.position) - k.position(P))
     L = fix(k.inertia() * omega + r_PG.cross(body.mass * v_G))
     steady = k.rate_in_triad(L)
@@ -69,12 +72,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     dL = fix(k.Omega.cross(L))
     v_P = fix(k.velocity(P))
     g = k.components(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
-    M = fix(sum((fix(k.position(b.position) - k.position(P)).cross(b.mass * g) for b in model.bodies),
-                sp.zeros(3, 1)))
+    M = fix((k.position(body.position) - k.position(P)).cross(body.mass * g))
     balance = dL + v_P.cross(body.mass * v_G) - M
+    if any(tidy(x).has(t) for x in balance):
+        raise UnsolvedError("not a steady motion: the balance's components in the triad change with time "
+                            "(is gravity along the triad's axis of turning?)")
     target = model.symbols.scalar(opts.solve_for) if opts.solve_for is not None else None
     relations = tuple(_relation(x, target) for x in balance if tidy_fraction(x) != 0)
-    solved = _solve_for(opts, relations, model)
+    solved = _solve_for(opts, relations, model, rates)
     answers = SteadyMotionAnswers(triad.vectors, {str(a): b for a, b in rates.items()}, tuple(omega), tuple(L),
                                   tuple(M), relations, solved)
     steps += _balance_steps(answers, dL, v_P, opts, target)
@@ -146,12 +151,6 @@ def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G
     return rates, steps
 
 
-def _gravity_moment(body: RigidBody, P: sp.Matrix, model: Model) -> sp.Matrix:
-    if model.gravity is None:
-        return sp.zeros(3, 1)
-    return (body.position - P).cross(body.mass * model.gravity)
-
-
 def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
     """A balance component as a relation = 0: its numerator, without the positive
     parameter factors (m r/2 …) that do not change it, and, with a quantity to solve
@@ -173,17 +172,30 @@ def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
     return sp.Add(a * target, b, evaluate=False) if b != 0 else a * target
 
 
-def _solve_for(opts: SteadyMotionOptions, relations, model: Model) -> dict[str, sp.Expr]:
+def _solve_for(opts: SteadyMotionOptions, relations, model: Model, rates: dict | None = None) -> dict[str, sp.Expr]:
+    """The asked quantity from the relation that holds it alone; the other relations
+    must then hold too, or there is no such steady motion."""
     if opts.solve_for is None:
         return {}
     target = model.symbols.scalar(opts.solve_for)
+    if rates and target in rates:
+        return {opts.solve_for.text: rates[target]}
     X = sp.Dummy("X")
     for relation in relations:
         replaced = relation.subs(target, X)
-        if replaced.has(X) and not any(replaced.has(s) for s in target.free_symbols):
-            found = sp.solve(replaced, X)
-            if len(found) == 1:
-                return {opts.solve_for.text: tidy_fraction(found[0])}
+        if not replaced.has(X) or any(replaced.has(s) for s in target.free_symbols):
+            continue
+        found = [v for v in sp.solve(replaced, X)
+                 if not (target.is_positive and (v.is_negative or v.could_extract_minus_sign()))]
+        if len(found) != 1:
+            continue
+        value = tidy_fraction(found[0])
+        plain = value.replace(sp.tan, lambda x: sp.sin(x) / sp.cos(x))
+        rest = [r for r in relations if tidy_fraction(r.subs(target, plain)) != 0]
+        if rest:
+            raise UnsolvedError(f"{opts.solve_for.text} = {sp.sstr(value)} from one relation, but then "
+                                f"{sp.sstr(rest[0])} = 0 must hold too: no such steady motion in general")
+        return {opts.solve_for.text: value}
     raise UnsolvedError(f"no relation gives {opts.solve_for.text} alone")
 
 
@@ -196,7 +208,7 @@ def _show(v, vectors):
 
 def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts, target=None) -> list[st.Step]:
     e = answers.triad
-    about = opts.about.text
+    about = opts.about.text if opts.about.text.isidentifier() else "P"
     return [
         st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
                       Relation(sp.Symbol(f"L_{about}"), _show(answers.angular_momentum, e))),

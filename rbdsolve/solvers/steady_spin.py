@@ -29,6 +29,7 @@ from itertools import combinations
 
 import sympy as sp
 
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
 from rbdsolve.model.tidy import tidy, tidy_fraction
@@ -93,6 +94,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         moments = tuple(found.moments)
         steps += [st.note("The body axes are not principal: e1, e2, e3 below are the principal axes."),
                   *found.steps]
+    if any(tidy(J) == 0 for J in moments):
+        raise UnsolvedError(f"body '{name}' has a zero principal moment (a particle, a slender rod or a planar "
+                            "inertia): Euler's equations need three positive moments")
     cases = tuple(_case(pattern, moments, model) for pattern in _patterns(moments, model))
     answers = SteadySpinAnswers(name, moments, cases)
     return Solution("steady_spin", Route.EXACT, answers, tuple(steps + _steps(answers)))
