@@ -41,6 +41,12 @@ def main() -> None:
 
     A problem is a short YAML scene (parameters, coordinates, points, bodies,
     forces, questions); see docs/format.md and the examples in problems/.
+
+    \b
+    Questions: eom, equilibria, modes (Lagrange's equations, equilibria and their
+    stability, small oscillations; in moving frames too), impact (Lagrange's
+    equations for impact), inertia (tensors, principal axes), steady_spin (Euler's
+    equations of a free body), steady_motion (rolling, tops, in a turning triad).
     """
 
 
@@ -90,7 +96,7 @@ def solve(paths, fmt, output, sets, debug):
     """Solve problem files and print their step-by-step solutions."""
     code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug))
     sys.exit(int(code))
-solve.help = (solve.help or "") + SOLVE_EXAMPLES
+solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
 
 
 @main.command()
