@@ -64,7 +64,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if opts.contact is not None and tidy_fraction((P - names.vector(opts.contact)).dot(P - names.vector(opts.contact))) != 0:
         raise UnsolvedError(f"the body rolls at {opts.contact.text}: take moments about that point (about: "
                             f"{opts.contact.text}), where the unknown contact force has no moment")
-    r_PG = fix(k.position(body.position) - k.position(P))
+    r_PG = fix(k.components(body.position) - k.components(P))
     L = fix(k.inertia() * omega + r_PG.cross(body.mass * v_G))
     steady = k.rate_in_triad(L)
     if any(tidy(x) != 0 for x in steady) or any(x.has(t) for x in L):
@@ -72,7 +72,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     dL = fix(k.Omega.cross(L))
     v_P = fix(k.velocity(P))
     g = k.components(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
-    M = fix((k.position(body.position) - k.position(P)).cross(body.mass * g))
+    M = fix((k.components(body.position) - k.components(P)).cross(body.mass * g))
     balance = dL + v_P.cross(body.mass * v_G) - M
     if any(tidy(x).has(t) for x in balance):
         raise UnsolvedError("not a steady motion: the balance's components in the triad change with time "
@@ -107,11 +107,8 @@ class _Kinematics:
     def components(self, v: sp.Matrix) -> sp.Matrix:
         return (self.T.T * v).applyfunc(tidy)
 
-    def position(self, r: sp.Matrix) -> sp.Matrix:
-        return self.components(r)
-
     def velocity(self, r: sp.Matrix) -> sp.Matrix:
-        r_T = self.position(r)
+        r_T = self.components(r)
         return (self.model.state.d_dt(r_T) + self.Omega.cross(r_T)).applyfunc(tidy)
 
     def rate_in_triad(self, v: sp.Matrix) -> sp.Matrix:
@@ -135,7 +132,7 @@ def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G
         return {}, []
     names = model.symbols.with_points(model.points)
     C = names.vector(opts.contact)
-    v_C = (v_G + omega.cross(k.position(C) - k.position(k.body.position))).applyfunc(tidy)
+    v_C = (v_G + omega.cross(k.components(C) - k.components(k.body.position))).applyfunc(tidy)
     unknowns = [model.symbols.parameters[u] for u in model.problem.unknowns]
     equations = [x for x in v_C if x != 0]
     found = sp.solve(equations, unknowns, dict=True) if equations else [{}]
