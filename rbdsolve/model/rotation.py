@@ -38,7 +38,11 @@ def sequence_rotation(turns: list[tuple[sp.Matrix, sp.Expr]]) -> sp.Matrix:
     return R.applyfunc(tidy)
 
 
-def angular_velocity(R: sp.Matrix, state: State) -> sp.Matrix:
-    """ω in scene axes from Ṙ Rᵀ = [ω]×."""
-    W = (state.d_dt(R) * R.T).applyfunc(tidy)
+def vee(W: sp.Matrix) -> sp.Matrix:
+    """w from a skew matrix W = [w]× (the inverse of ``cross_matrix``)."""
     return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
+
+
+def angular_velocity(R: sp.Matrix, state: State) -> sp.Matrix:
+    """ω in the axes R is written in, from Ṙ Rᵀ = [ω]×."""
+    return vee((state.d_dt(R) * R.T).applyfunc(tidy))

@@ -12,7 +12,7 @@ from sympy.core.function import AppliedUndef
 
 from rbdsolve.model.tidy import tidy
 from rbdsolve.report.tree import map_leaves
-from rbdsolve.report.math import Math, Product, Scaled, Terms
+from rbdsolve.report.math import Along, Math, Product, Scaled, Terms
 from rbdsolve.report.steps import Relation
 
 
@@ -106,6 +106,14 @@ def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
 
         out += [(term, ()) for term in sorted(rest, key=first_coordinate)]
     return out
+
+
+def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:
+    """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors."""
+    items = tuple(Along(x, e) for x, e in components)
+    if not items:
+        return sp.Integer(0)
+    return items[0] if len(items) == 1 else Terms(items)
 
 
 def configuration(coordinates: tuple[sp.Expr, ...], values: list[sp.Expr]) -> Relation:

@@ -11,9 +11,9 @@ import sympy as sp
 from rbdsolve.model.state import t
 from rbdsolve.model.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.report import steps as st
-from rbdsolve.report.math import Along, Label, Math, Terms
+from rbdsolve.report.math import Label, Math
 from rbdsolve.report.steps import Relation, Step
-from rbdsolve.solvers.common import configuration, ordered_sum, scaled_sum
+from rbdsolve.solvers.common import configuration, in_basis, ordered_sum, scaled_sum
 
 if TYPE_CHECKING:
     from rbdsolve.solvers.impact import ImpactAnswers, ImpactEquations
@@ -48,10 +48,7 @@ class _Show:
 
     def vector(self, v: sp.Matrix) -> Math:
         """(ẋ − 1/2 l φ̇) eₓ + …"""
-        items = tuple(Along(self.scalar(x), e) for x, e in zip(v, BASIS) if sp.expand(x) != 0)
-        if not items:
-            return sp.Integer(0)
-        return items[0] if len(items) == 1 else Terms(items)
+        return in_basis([(self.scalar(x), e) for x, e in zip(v, BASIS) if sp.expand(x) != 0])
 
     def angular(self, omega: sp.Matrix) -> Math:
         """A planar ω (about z) as a scalar, else a vector."""

@@ -23,14 +23,14 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
-from rbdsolve.model.rotation import sequence_rotation
+from rbdsolve.model.rotation import sequence_rotation, vee
 from rbdsolve.model.state import t
 from rbdsolve.model.tidy import tidy, tidy_fraction
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report import steps as st
-from rbdsolve.report.math import Along, Label, Product, Terms
+from rbdsolve.report.math import Label, Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
-from rbdsolve.solvers.common import Options
+from rbdsolve.solvers.common import Options, in_basis
 
 
 @dataclass(frozen=True)
@@ -48,7 +48,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: SteadyMotionOptions = question.options
     body = next(b for b in model.bodies if b.name == opts.body)
     triad = next(tr for tr in model.problem.triads if tr.name == opts.triad)
-    k = _Kinematics(model, model.triads[triad.name], body)
+    k = _Kinematics(model, triad.name, body)
     names = model.symbols.with_points(model.points)
     omega, v_G = k.omega(), k.velocity(body.position)
     steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
@@ -58,7 +58,10 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                            Relation(sp.Symbol("v_G"), _show(v_G, triad.vectors)))]
     rates, rolling_steps = _rolling(opts, model, k, omega, v_G, triad.vectors)
     steps += rolling_steps
-    fix = lambda v: sp.Matrix([tidy(x.xreplace(rates)) for x in v])  # noqa: E731
+
+    def fix(v: sp.Matrix) -> sp.Matrix:  # the unknown rates found, each component tidied
+        return sp.Matrix([tidy(x.xreplace(rates)) for x in v])
+
     omega, v_G = fix(omega), fix(v_G)
     P = names.vector(opts.about)
     if opts.contact is not None and tidy_fraction((P - names.vector(opts.contact)).dot(P - names.vector(opts.contact))) != 0:
@@ -93,12 +96,12 @@ class _Kinematics:
         Ω_T = vee(Tᵀ Ṫ),  v = d r_T/dt + Ω_T × r_T,  ω = Ω_T + vee(Ṙ_rel R_relᵀ),
         J_G = R_rel J R_relᵀ,  with R_rel = Tᵀ R the body's turns relative to T."""
 
-    def __init__(self, model: Model, T: sp.Matrix, body: RigidBody):
+    def __init__(self, model: Model, triad: str, body: RigidBody):
+        T = model.triads[triad]
         self.model, self.T, self.body = model, T, body
-        self.Omega = _vee((T.T * model.state.d_dt(T)).applyfunc(tidy))
+        self.Omega = vee((T.T * model.state.d_dt(T)).applyfunc(tidy))
         orientation = body.source.orientation
-        if orientation and orientation[0] == next(
-                (tr.name for tr in model.problem.triads if model.triads[tr.name] is T), None):
+        if orientation and orientation[0] == triad:  # the body's own turns after the triad's
             names = model.symbols.with_points(model.points)
             self.R_rel = sequence_rotation([(names.vector(x.axis), names.scalar(x.angle)) for x in orientation[1:]])
         else:
@@ -115,15 +118,11 @@ class _Kinematics:
         return self.model.state.d_dt(v).applyfunc(tidy)
 
     def omega(self) -> sp.Matrix:
-        relative = _vee((self.model.state.d_dt(self.R_rel) * self.R_rel.T).applyfunc(tidy))
+        relative = vee((self.model.state.d_dt(self.R_rel) * self.R_rel.T).applyfunc(tidy))
         return (self.Omega + relative).applyfunc(tidy)
 
     def inertia(self) -> sp.Matrix:
         return (self.R_rel * self.body.inertia * self.R_rel.T).applyfunc(tidy)
-
-
-def _vee(W: sp.Matrix) -> sp.Matrix:
-    return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
 
 
 def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G, vectors):
@@ -197,10 +196,7 @@ def _solve_for(opts: SteadyMotionOptions, relations, model: Model, rates: dict |
 
 
 def _show(v, vectors):
-    items = tuple(Along(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0)
-    if not items:
-        return sp.Integer(0)
-    return items[0] if len(items) == 1 else Terms(items)
+    return in_basis([(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0])
 
 
 def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts, target=None) -> list[st.Step]:
