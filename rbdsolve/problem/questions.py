@@ -22,6 +22,7 @@ from rbdsolve.problem.schema import (
     Point,
     Question,
     QuestionKind,
+    Reaction,
     SteadyMotionOptions,
     SteadySpinOptions,
 )
@@ -37,7 +38,7 @@ OPTIONS = {
     QuestionKind.MODES: ("about", "frame"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
     QuestionKind.STEADY_SPIN: ("body",),
-    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "solve_for"),
+    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
 }
 
@@ -164,13 +165,42 @@ class QuestionReader:
                 raise InputError(f"no triad '{triad}'{hint}", triad_node.loc)
         if get("about") is None:
             raise InputError("'steady_motion' needs 'about: POINT', the point for angular momentum", key.loc)
-        contact = self.point(get("rolling_at")) if get("rolling_at") is not None else None
-        target = self.loader.constant(get("solve_for"), "what to solve for") if get("solve_for") is not None else None
+        contacts = self.point_list(get("rolling_at"))
+        reactions = self.reactions(get("reactions"))
+        targets = self.constants(get("solve_for"), "what to solve for")
         body = self.body(opts, key, QuestionKind.STEADY_MOTION)
         if next(b for b in self.bodies if b.name == body).at is None:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
-        return SteadyMotionOptions(body, triad, self.point(get("about")), contact, target)
+        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets)
+
+    def point_list(self, node: Node | None) -> tuple[ex.Expr, ...]:
+        """One point, or a list of points (a cone rolls at its tip and at its rim)."""
+        if node is None:
+            return ()
+        items = node.items if isinstance(node, Seq) else [node]
+        return tuple(self.point(item) for item in items)
+
+    def constants(self, node: Node | None, what: str) -> tuple[ex.Expr, ...]:
+        if node is None:
+            return ()
+        items = node.items if isinstance(node, Seq) else [node]
+        return tuple(self.loader.constant(item, what) for item in items)
+
+    def reactions(self, node: Node | None) -> tuple[Reaction, ...]:
+        """[{at: POINT, force: VECTOR}, ...]: contact forces with unknown magnitudes."""
+        if node is None:
+            return ()
+        if not isinstance(node, Seq):
+            raise InputError(f"expected a list of reactions [{{at: POINT, force: VECTOR}}, ...], found "
+                             f"{describe(node)}", node.loc)
+        found = []
+        for item in node.items:
+            spec = expect_mapping(item, "a reaction {at: POINT, force: VECTOR}")
+            check_keys(spec, ("at", "force"), (), "reaction")
+            found.append(Reaction(self.point(spec.get("at")),
+                                  self.loader.expr(spec.get("force"), ex.Kind.VECTOR, "a force vector")))
+        return tuple(found)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
         body = self.body(opts, key, QuestionKind.INERTIA)

@@ -279,12 +279,22 @@ class ImpactOptions:
 
 
 @dataclass(frozen=True)
+class Reaction:
+    """An unknown contact force: its point of application and its vector, in which
+    declared unknowns (N, x_N) stand for what the balances must find."""
+
+    at: Expr
+    force: Expr
+
+
+@dataclass(frozen=True)
 class SteadyMotionOptions:
     body: str
     triad: str  # the turning triad the motion is steady in
     about: Expr  # the point to take angular momentum about
-    contact: Expr | None  # a point where the body rolls without slipping on a fixed surface
-    solve_for: Expr | None  # a constant to solve the relations for (omega0**2)
+    contacts: tuple[Expr, ...]  # points where the body rolls without slipping on a fixed surface
+    reactions: tuple[Reaction, ...]  # contact forces stated with unknowns; then both balances count
+    solve_for: tuple[Expr, ...]  # constants to solve the relations for (omega0**2; or N, x_N)
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,14 @@ In a steady motion every component in a triad T (turning at Ω_T) is constant. T
       dL_P/dt + v_P × m v_G = M_P = Σ (r_i − r_P) × F_i,
 
   with gravity at G as the force whose moment counts (a contact force at C has none
-  about C), gives the relations between the parameters (each component = 0).
+  about C), gives the relations between the parameters (each component = 0);
+- with the contact forces stated as reactions R_i at points r_i (their unknowns N,
+  x_N, …), they join M_P = Σ (r_i − r_P) × F_i, and Newton's law for G,
+
+      m a_G = m g + Σ R_i,   a_G = (dv_G/dt)_T + Ω_T × v_G,
+
+  gives three relations more: a cone rolling on its side (a line contact) has its
+  normal force's resultant at an unknown distance along the line.
 """
 
 from __future__ import annotations
@@ -64,29 +71,53 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 
     omega, v_G = fix(omega), fix(v_G)
     P = names.vector(opts.about)
-    if opts.contact is not None and tidy_fraction((P - names.vector(opts.contact)).dot(P - names.vector(opts.contact))) != 0:
-        raise UnsolvedError(f"the body rolls at {opts.contact.text}: take moments about that point (about: "
-                            f"{opts.contact.text}), where the unknown contact force has no moment")
-    r_PG = fix(k.components(body.position) - k.components(P))
-    L = fix(k.inertia() * omega + r_PG.cross(body.mass * v_G))
-    steady = k.rate_in_triad(L)
-    if any(tidy(x) != 0 for x in steady) or any(x.has(t) for x in L):
+    if not opts.reactions:
+        _require_moments_about_contact(opts, names, P)
+    L = fix(k.inertia().applyfunc(_sin_cos) * omega + fix(k.components(body.position) - k.components(P)).cross(body.mass * v_G))
+    if any(tidy(x) != 0 for x in k.rate_in_triad(L)) or any(x.has(t) for x in L):
         raise UnsolvedError("not a steady motion: the angular momentum's components in the triad change")
-    dL = fix(k.Omega.cross(L))
-    v_P = fix(k.velocity(P))
-    g = k.components(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
-    M = fix((k.components(body.position) - k.components(P)).cross(body.mass * g))
-    balance = dL + v_P.cross(body.mass * v_G) - M
-    if any(tidy(x).has(t) for x in balance):
+    dL, v_P = fix(k.Omega.cross(L)), fix(k.velocity(P))
+    forces = _forces(model, k, body, opts, names)
+    M = fix(sum(((r - k.components(P)).cross(F) for r, F in forces), sp.zeros(3, 1)))
+    balances, a_G = [dL + v_P.cross(body.mass * v_G) - M], None
+    if opts.reactions:  # the reactions' unknowns need Newton's law for G as well
+        a_G = fix(k.rate_in_triad(v_G) + k.Omega.cross(v_G))
+        balances.insert(0, body.mass * a_G - sum((F for _, F in forces), sp.zeros(3, 1)))
+    if any(tidy(x).has(t) for balance in balances for x in balance):
         raise UnsolvedError("not a steady motion: the balance's components in the triad change with time "
                             "(is gravity along the triad's axis of turning?)")
-    target = model.symbols.scalar(opts.solve_for) if opts.solve_for is not None else None
-    relations = tuple(_relation(x, target) for x in balance if tidy_fraction(x) != 0)
-    solved = _solve_for(opts, relations, model, rates)
+    targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
+    target = targets[0] if len(targets) == 1 else None
+    relations = tuple(_relation(x, target) for balance in balances for x in balance if tidy_fraction(x) != 0)
+    solved = _solve_for(opts, targets, relations, model, rates)
     answers = SteadyMotionAnswers(triad.vectors, {str(a): b for a, b in rates.items()}, tuple(omega), tuple(L),
                                   tuple(M), relations, solved)
-    steps += _balance_steps(answers, dL, v_P, opts, target)
+    steps += _balance_steps(answers, dL, v_P, opts, targets, a_G)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+
+
+def _require_moments_about_contact(opts: SteadyMotionOptions, names, P: sp.Matrix) -> None:
+    """Without stated reactions the contact force is unknown; only moments about the
+    rolling contact are free of it."""
+    if not opts.contacts:
+        return
+    if len(opts.contacts) > 1:
+        raise UnsolvedError("the body rolls at more than one point: state the contact forces as 'reactions' "
+                            "(each {at: POINT, force: VECTOR} with unknowns) so both balances can use them")
+    contact = opts.contacts[0]
+    offset = P - names.vector(contact)
+    if tidy_fraction(offset.dot(offset)) != 0:
+        raise UnsolvedError(f"the body rolls at {contact.text}: take moments about that point (about: "
+                            f"{contact.text}), where the unknown contact force has no moment, or state the "
+                            "contact forces as 'reactions'")
+
+
+def _forces(model: Model, k: _Kinematics, body: RigidBody, opts: SteadyMotionOptions, names):
+    """(point of application, force) in triad components: gravity at G, then the reactions."""
+    g = k.components(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
+    gravity = (k.components(body.position), body.mass * g)
+    return [gravity] + [(k.components(names.vector(r.at)), k.components(names.vector(r.force)))
+                        for r in opts.reactions]
 
 
 class _Kinematics:
@@ -127,19 +158,20 @@ class _Kinematics:
 
 def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G, vectors):
     """v_C = v_G + ω × (r_C − r_G) = 0 at the contact, solved for the unknown rates."""
-    if opts.contact is None:
+    if not opts.contacts:
         return {}, []
     names = model.symbols.with_points(model.points)
-    C = names.vector(opts.contact)
-    v_C = (v_G + omega.cross(k.components(C) - k.components(k.body.position))).applyfunc(tidy)
+    r_G = k.components(k.body.position)
+    v_C = [(v_G + omega.cross(k.components(names.vector(C)) - r_G)).applyfunc(tidy) for C in opts.contacts]
     unknowns = [model.symbols.parameters[u] for u in model.problem.unknowns]
-    equations = [x for x in v_C if x != 0]
+    equations = [x for v in v_C for x in v if x != 0]
     found = sp.solve(equations, unknowns, dict=True) if equations else [{}]
     if len(found) != 1:
         raise UnsolvedError("the rolling condition does not fix the unknown rates")
     rates = {a: tidy(b) for a, b in found[0].items()}
-    steps = [st.equation(f"Rolling without slipping at {opts.contact.text}: the body's point there is at rest, "
-                         "v_G + ω × (r_C − r_G) = 0:", Relation(_show(v_C, vectors), sp.Integer(0)))]
+    where = " and ".join(C.text for C in opts.contacts)
+    steps = [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
+                         "v_G + ω × (r_C − r_G) = 0:", *[Relation(_show(v, vectors), sp.Integer(0)) for v in v_C])]
     if rates:
         steps.append(st.result("which gives", *[Relation(a, b) for a, b in rates.items()]))
         steps.append(st.result("so the angular velocity is",
@@ -151,7 +183,7 @@ def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
     """A balance component as a relation = 0: its numerator, without the positive
     parameter factors (m r/2 …) that do not change it, and, with a quantity to solve
     for, as a X + b with a factored and not negative: ω₀² cos θ (4R + r sin θ) − 2g sin θ."""
-    numerator = sp.fraction(sp.together(tidy_fraction(x)))[0]
+    numerator = sp.fraction(sp.together(tidy_fraction(_sin_cos(x))))[0]
     kept = [f for f in sp.Mul.make_args(sp.factor_terms(sp.expand(numerator)))
             if not (f.is_number or f.is_positive)]
     relation = tidy(sp.Mul(*kept))
@@ -168,51 +200,68 @@ def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
     return sp.Add(a * target, b, evaluate=False) if b != 0 else a * target
 
 
-def _solve_for(opts: SteadyMotionOptions, relations, model: Model, rates: dict | None = None) -> dict[str, sp.Expr]:
-    """The asked quantity from the relation that holds it alone; the other relations
-    must then hold too, or there is no such steady motion."""
-    if opts.solve_for is None:
+def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,
+               rates: dict) -> dict[str, sp.Expr]:
+    """The asked quantities from the relations that hold them; every other relation must
+    then hold too (unless it holds an unknown not asked for), or there is no such steady
+    motion. A positive quantity (ω₀²) takes only positive roots."""
+    if not targets:
         return {}
-    target = model.symbols.scalar(opts.solve_for)
-    if rates and target in rates:
-        return {opts.solve_for.text: rates[target]}
-    X = sp.Dummy("X")
-    for relation in relations:
-        replaced = relation.subs(target, X)
-        if not replaced.has(X) or any(replaced.has(s) for s in target.free_symbols):
-            continue
-        found = [v for v in sp.solve(replaced, X)
-                 if not (target.is_positive and (v.is_negative or v.could_extract_minus_sign()))]
-        if len(found) != 1:
-            continue
-        value = tidy_fraction(found[0])
-        plain = value.replace(sp.tan, lambda x: sp.sin(x) / sp.cos(x))
-        rest = [r for r in relations if tidy_fraction(r.subs(target, plain)) != 0]
-        if rest:
-            raise UnsolvedError(f"{opts.solve_for.text} = {sp.sstr(value)} from one relation, but then "
-                                f"{sp.sstr(rest[0])} = 0 must hold too: no such steady motion in general")
-        return {opts.solve_for.text: value}
-    raise UnsolvedError(f"no relation gives {opts.solve_for.text} alone")
+    if all(x in rates for x in targets):
+        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}
+    X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
+    replaced = [r.subs(dict(zip(targets, X))) for r in relations]
+    held = set().union(*(x.free_symbols for x in targets))
+    holding = [r for r in replaced if r.has(*X) and not r.has(*held)]
+    found = [f for f in (sp.solve(holding, X, dict=True) if holding else [])
+             if len(f) == len(X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
+                                             for x, d in zip(targets, X))]
+    asked = ", ".join(x.text for x in opts.solve_for)
+    if len(found) != 1:
+        raise UnsolvedError(f"the relations do not give {asked} uniquely "
+                            f"({'no relation holds ' + asked if not holding else f'{len(found)} solutions'})")
+    values = {x: tidy_fraction(_sin_cos(found[0][d])) for x, d in zip(targets, X)}
+    others = {model.symbols.parameters[u] for u in model.problem.unknowns} - set(targets) - held
+    rest = [r for r in relations if not r.has(*others) and tidy_fraction(_sin_cos(r.subs(values))) != 0]
+    if rest:
+        shown = ", ".join(f"{x} = {sp.sstr(v)}" for x, v in values.items())
+        raise UnsolvedError(f"{shown} from the relations, but then {sp.sstr(rest[0])} = 0 must hold too: "
+                            "no such steady motion in general")
+    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}
+
+
+def _sin_cos(x: sp.Expr) -> sp.Expr:
+    """tan as sin/cos and sin 2α as 2 sin α cos α, so that the sin² + cos² = 1
+    reduction can see them."""
+    return sp.expand_trig(x.replace(sp.tan, lambda y: sp.sin(y) / sp.cos(y)))
 
 
 def _show(v, vectors):
     return in_basis([(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0])
 
 
-def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts, target=None) -> list[st.Step]:
+def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptions, targets=(),
+                   a_G: sp.Matrix | None = None) -> list[st.Step]:
     e = answers.triad
     about = opts.about.text if opts.about.text.isidentifier() else "P"
+    target = targets[0] if len(targets) == 1 else None
+    forces = "gravity and the reactions" if opts.reactions else "gravity"
+    newton = ([st.equation("The acceleration of G (constant components, so a_G = Ω_T × v_G):",
+                           Relation(sp.Symbol("a_G"), _show(a_G, e)))] if a_G is not None else [])
+    balances = ("Newton's law for G, m a_G = m g + Σ R, and the angular momentum balance "
+                f"dL/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
+                f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:")
     return [
         st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
                       Relation(sp.Symbol(f"L_{about}"), _show(answers.angular_momentum, e))),
         st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
                     Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), _show(dL, e))),
-        st.definition(f"The moment of gravity about {about}, and the velocity of {about}:",
+        st.definition(f"The moment of {forces} about {about}, and the velocity of {about}:",
                       Relation(sp.Symbol(f"M_{about}"), _show(answers.moment, e)),
                       Relation(sp.Symbol(f"v_{about}"), _show(v_P, e))),
-        st.result(f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:",
-                  *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
-        *([st.result("Solved:", *[Relation(target, v) for v in answers.solved.values()])]
+        *newton,
+        st.result(balances, *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
+        *([st.result("Solved:", *[Relation(x, v) for x, v in zip(targets, answers.solved.values())])]
           if answers.solved else []),
     ]
 

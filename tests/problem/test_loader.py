@@ -289,6 +289,13 @@ def test_triads_and_orientations_load() -> None:
          "give either 'orientation' (3D turns) or 'angle'"),
         ("{about: G, solve_for: spin}", "{solve_for: spin}", (10, 5), "needs 'about: POINT'"),
         ("{about: G, solve_for: spin}", "{about: G, triad: S}", (10, 38), "no triad 'S' (triads: T)"),
+        ("{about: G, solve_for: spin}", "{about: G, reactions: {at: G}}", (10, 42), "expected a list of reactions"),
+        ("{about: G, solve_for: spin}", "{about: G, reactions: [{at: G}]}", (10, 43), "missing required key 'force'"),
+        ("{about: G, solve_for: spin}", "{about: G, reactions: [{at: H, force: m*e3}]}", (10, 48),
+         "unknown point 'H'"),
+        ("{about: G, solve_for: spin}", "{about: G, reactions: [{at: G, force: m}]}", (10, 58), "a force vector"),
+        ("{about: G, solve_for: spin}", "{about: G, rolling_at: [G, H]}", (10, 47), "unknown point 'H'"),
+        ("{about: G, solve_for: spin}", "{about: G, solve_for: [spin, t]}", (10, 49), "must be constant"),
     ],
 )
 def test_bad_orientations_are_located(old, new, where, words) -> None:

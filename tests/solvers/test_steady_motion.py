@@ -35,6 +35,8 @@ def test_another_body_does_not_change_the_ring_s_balance() -> None:
     [
         ("{about: C, rolling_at: C,", "{about: G, rolling_at: C,", "take moments about that point"),
         ("gravity: [0, 0, -g]", "gravity: [0, -g, 0]", "not a steady motion"),
+        ("{about: C, rolling_at: C,", "{about: C, rolling_at: [C, G],", "rolls at more than one point"),
+        ("solve_for: omega0**2}", "solve_for: [omega0, R]}", "do not give omega0, R uniquely"),
     ],
 )
 def test_what_steady_motion_refuses(old, new, words) -> None:
@@ -59,3 +61,22 @@ questions: [steady_spin]
 """
     solution = solve(text)
     assert solution.error is not None and "zero principal moment" in solution.error
+
+
+CONE = (PROBLEMS / "steady" / "rolling-cone.yaml").read_text(encoding="utf-8")
+
+
+def test_reactions_let_moments_be_taken_about_any_point() -> None:
+    """About G instead of the tip, the same forces (hand derivation in the golden
+    file): N = m g wherever the moments are taken."""
+    solution = solve(CONE.replace("about: O", "about: K"))
+    assert solution.error is None, solution.error
+    m, g = sp.symbols("m g", positive=True)
+    assert sp.simplify(solution.answers.solved["N"] - m * g) == 0
+
+
+def test_a_missing_reaction_leaves_no_steady_motion() -> None:
+    """Without the normal force nothing holds the cone up: N's relation becomes m g = 0."""
+    text = CONE.replace("        - {at: Q, force: N*e3}              # the table's push, spread along OB\n", "")
+    solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [F1, F2]"))
+    assert solution.error is not None and "no such steady motion" in solution.error
