@@ -7,8 +7,11 @@
       ring: {shape: ring, …, orientation: [T, [x, spin*t]]}
 
 Each turn is [axis, angle], about an axis of the frame turned so far (body-fixed), so
-[[z, psi], [x, theta], [z, phi]] are z-x-z Euler angles. An orientation may start from
-a triad's name. The triad's unit vectors (e1, e2, e3) are vectors in positions.
+[[z, psi], [x, theta], [z, phi]] are z-x-z Euler angles. A triad may instead give
+``space_turns``, each about a scene axis (space-fixed): turning about fixed axes a₁,
+then a₂, … is R = R_n ⋯ R₂ R₁, the same as the body-fixed turns in reverse order, which
+is how they are stored. An orientation may start from a triad's name. The triad's unit
+vectors (e1, e2, e3) are vectors in positions.
 """
 
 from __future__ import annotations
@@ -19,7 +22,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.schema import Triad, Turn
-from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 if TYPE_CHECKING:
     from rbdsolve.problem.loader import _Loader
@@ -37,15 +40,23 @@ class OrientationReader:
         for key, value in table.entries:
             name = self.loader.declare(key, "triad")
             spec = expect_mapping(value, f"triad '{name}'")
-            check_keys(spec, ("turns", "vectors"), (), f"triad '{name}'")
+            check_keys(spec, ("vectors",), ("turns", "space_turns"), f"triad '{name}'")
             vectors = spec.get("vectors")
             if not isinstance(vectors, Seq) or len(vectors.items) != 3:
                 raise InputError("expected the names of the three unit vectors, as in [e1, e2, e3]",
                                  vectors.loc)
             names = tuple(self.loader.declare(expect_scalar(v, "a vector name"), "unit vector")
                           for v in vectors.items)
-            out.append(Triad(name, self.turns(spec.get("turns")), names, spec.loc))
+            out.append(Triad(name, self.triad_turns(spec), names, spec.loc))
         return tuple(out)
+
+    def triad_turns(self, spec: Map) -> tuple[Turn, ...]:
+        """Body-fixed ``turns``, or ``space_turns`` stored as body-fixed turns reversed."""
+        body, space = spec.get("turns"), spec.get("space_turns")
+        if (body is None) == (space is None):
+            raise InputError("give either 'turns' (each about the turned frame's axes) or 'space_turns' "
+                             "(each about the scene's fixed axes)", (space or spec).loc)
+        return self.turns(body) if body is not None else self.turns(space)[::-1]
 
     def turns(self, node: Node) -> tuple[Turn, ...]:
         if not isinstance(node, Seq) or not node.items:

@@ -50,7 +50,7 @@ def _unturned(model: Model) -> list[st.Step]:
     for body in model.bodies:
         moves = [n for q, n in zip(model.q, model.coordinate_names())
                  if q in model.angles and body.position.has(q)]
-        if body.angle is None and moves and body.inertia != sp.zeros(3, 3):
+        if body.angle is None and not body.turns_3d and moves and body.inertia != sp.zeros(3, 3):
             out.append(st.note(f"Note: {body.name} has no 'angle', so it moves with {', '.join(moves)} "
                                "without turning (no rotational energy). If it turns, give its angle."))
     return out

@@ -271,6 +271,9 @@ questions:
 def test_triads_and_orientations_load() -> None:
     problem = load_text(ORIENTED, "p.yaml")
     assert problem.unknowns == ("spin",)
+    space = load_text(ORIENTED.replace("turns: [[z, w*t], [y, -theta]]", "space_turns: [[y, -theta], [z, w*t]]"),
+                      "p.yaml")
+    assert [t.axis.text for t in space.triads[0].turns] == ["z", "y"]  # stored body-fixed, reversed
     assert problem.triads[0].vectors == ("e1", "e2", "e3")
     assert problem.bodies[0].orientation[0] == "T"
 
@@ -284,6 +287,9 @@ def test_triads_and_orientations_load() -> None:
          "'S' is not a triad here (triads: T)"),
         ("[[z, w*t], [y, -theta]]", "[[z], [y, -theta]]", (4, 15), "expected a turn [axis, angle]"),
         ("vectors: [e1, e2, e3]", "vectors: [e1, e2]", (4, 48), "the three unit vectors"),
+        ("{turns: [[z, w*t], [y, -theta]], ", "{", (4, 6), "give either 'turns'"),
+        ("{turns: [[z, w*t], [y, -theta]], ", "{turns: [[z, w*t]], space_turns: [[y, -theta]], ", (4, 39),
+         "give either 'turns'"),
         ("vectors: [e1, e2, e3]", "vectors: [e1, e2, m]", (4, 57), "'m' is already declared as a parameter"),
         ("at: G, axis: x, orientation", "at: G, angle: w*t, orientation", (8, 57),
          "give either 'orientation' (3D turns) or 'angle'"),
