@@ -17,6 +17,7 @@ from rbdsolve import __version__
 from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError
 
 FORMATS = ("terminal", "markdown", "latex", "json")
+ROUTES = ("auto", "exact", "numeric")  # spelled out here: importing the solvers would load sympy
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
 
 SOLVE_EXAMPLES = """
@@ -91,10 +92,13 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
               help="Write to this file instead of standard output.")
 @click.option("--set", "sets", multiple=True, metavar="NAME=VALUE",
               help="Give a parameter a numeric value (repeatable); overrides the file's values.")
+@click.option("--route", type=click.Choice(ROUTES), default="auto", show_default=True,
+              help="exact (sympy), numeric (floating point; every parameter needs a value) or auto "
+                   "(exact, then numeric where exact cannot answer).")
 @click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")
-def solve(paths, fmt, output, sets, debug):
+def solve(paths, fmt, output, sets, route, debug):
     """Solve problem files and print their step-by-step solutions."""
-    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug))
+    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug, route))
     sys.exit(int(code))
 solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
 
@@ -146,10 +150,10 @@ def _check(paths) -> ExitCode:
     return worst
 
 
-def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False) -> ExitCode:
+def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False, route: str = "auto") -> ExitCode:
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_file
-    from rbdsolve.solvers import Options, solve_problem
+    from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
     values = parse_sets(sets)
     reports, chunks, worst = [], [], ExitCode.OK
@@ -157,7 +161,7 @@ def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False) -> Ex
         try:
             problem = load_file(path)
             _check_sets(values, problem, path)
-            report = solve_problem(build_model(problem), Options(values=values))
+            report = solve_problem(build_model(problem), Options(values=values, route=RouteChoice(route)))
         except InputError as exc:
             worst = max(worst, _file_failed(str(path), exc, str(exc), fmt, chunks))
             continue

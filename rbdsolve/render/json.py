@@ -61,6 +61,7 @@ def solution(s: Solution) -> dict:
         "ok": s.solved,
         "route": s.route.value,
         "seconds": round(s.seconds, 6),
+        "error_estimate": s.error_estimate,
         "answers": exact(s.answers) if s.answers is not None else None,
         "values": s.values,
         "warnings": list(s.warnings),

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.render.mathtext import to_latex
-from rbdsolve.render.numbers import numeric_lines
+from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.steps import ProblemReport, Relation, Step, StepKind
 
 
@@ -36,7 +36,7 @@ def render(report: ProblemReport) -> str:
         for step in report.model.steps:
             lines += _step(step)
     for number, s in enumerate(report.solutions, start=1):
-        lines += [f"## Question {number}: {s.question}", "", f"*Route: {s.route.value}, {s.seconds:.2f} s.*", ""]
+        lines += [f"## Question {number}: {s.question}", "", f"*Route: {route_text(s)}.*", ""]
         for step in s.steps:
             lines += _step(step)
         lines += [f"> **Warning:** {w}" for w in s.warnings]

@@ -16,3 +16,11 @@ def numeric_lines(values: object, prefix: str = "") -> list[str]:
     if isinstance(values, float):
         return [f"{prefix} = {values:.6g}"]
     return []
+
+
+def route_text(solution) -> str:
+    """'numeric, 0.23 s, relative error ≤ 1.0e-15': how a question was answered."""
+    text = f"{solution.route.value}, {solution.seconds:.2f} s"
+    if solution.error_estimate is not None:
+        text += f", relative error ≤ {solution.error_estimate:.1e}"
+    return text

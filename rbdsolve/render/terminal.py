@@ -9,7 +9,7 @@ from rich.rule import Rule
 from rich.text import Text
 
 from rbdsolve.render.mathtext import to_unicode
-from rbdsolve.render.numbers import numeric_lines
+from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.steps import ProblemReport, Relation, Solution, Step, StepKind
 
 _STYLE = {
@@ -54,7 +54,7 @@ def render(report: ProblemReport) -> Group:
 
 def _solution(number: int, s: Solution) -> list:
     head = Text(f"Question {number}: {s.question}", style="bold underline")
-    head.append(f"   ({s.route.value}, {s.seconds:.2f} s)", style="dim")
+    head.append(f"   ({route_text(s)})", style="dim")
     out: list = [Padding(head, (1, 0, 0, 0))]
     for step in s.steps:
         out += step_lines(step)

@@ -86,6 +86,7 @@ class Solution:
     warnings: tuple[str, ...] = ()
     seconds: float = 0.0
     error: str | None = None
+    error_estimate: float | None = None  # numeric route: bound on the answers' relative error
 
     @property
     def solved(self) -> bool:

@@ -8,41 +8,95 @@
 from __future__ import annotations
 
 import time
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from typing import Callable
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
-from rbdsolve.solvers import eom, equilibria, impact, inertia, modes, steady_motion, steady_spin
-from rbdsolve.solvers.common import Options, numeric
+from rbdsolve.solvers import (
+    eom,
+    equilibria,
+    equilibria_numeric,
+    impact,
+    inertia,
+    modes,
+    modes_numeric,
+    steady_motion,
+    steady_spin,
+)
+from rbdsolve.solvers.common import Options, RouteChoice, float_tree, numeric
 from rbdsolve.solvers.energies import summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
 
-SOLVERS = {
-    QuestionKind.EOM: eom.solve,
-    QuestionKind.EQUILIBRIA: equilibria.solve,
-    QuestionKind.MODES: modes.solve,
-    QuestionKind.INERTIA: inertia.solve,
-    QuestionKind.IMPACT: impact.solve,
-    QuestionKind.STEADY_SPIN: steady_spin.solve,
-    QuestionKind.STEADY_MOTION: steady_motion.solve,
+@dataclass(frozen=True)
+class Family:
+    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+
+    exact: Callable[[Question, Model, Options], Solution]
+    numeric: Callable[[Question, Model, Options], Solution] | None = None
+
+
+FAMILIES = {
+    QuestionKind.EOM: Family(eom.solve),
+    QuestionKind.EQUILIBRIA: Family(equilibria.solve, equilibria_numeric.solve),
+    QuestionKind.MODES: Family(modes.solve, modes_numeric.solve),
+    QuestionKind.INERTIA: Family(inertia.solve),
+    QuestionKind.IMPACT: Family(impact.solve),
+    QuestionKind.STEADY_SPIN: Family(steady_spin.solve),
+    QuestionKind.STEADY_MOTION: Family(steady_motion.solve),
 }
 
 
 def solve_question(question: Question, model: Model, options: Options) -> Solution:
-    """Run one question's solver; an unanswerable question becomes a Solution with an
-    error (exit code 1), not an exception, so the other questions still run."""
+    """Run one question's solver on the route asked for; an unanswerable question becomes
+    a Solution with an error (exit code 1), not an exception, so the other questions
+    still run."""
     start = time.perf_counter()
     try:
-        if frame_of(question) is None:
-            solution = SOLVERS[question.kind](question, model, options)
-        else:
-            solution = solve_in_frame(SOLVERS[question.kind], question, model, options)
+        solution = _routed(question, model, options)
     except UnsolvedError as exc:
-        solution = Solution(question.kind.value, Route.EXACT, None, (), error=str(exc))
-    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
+        solution = Solution(question.kind.value, _route_of(options), None, (), error=str(exc))
+    if solution.route is Route.NUMERIC:
+        values = float_tree(solution.answers) if solution.answers is not None else {}
+    else:
+        values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     return replace(solution, values=values or {}, seconds=time.perf_counter() - start)
+
+
+def _routed(question: Question, model: Model, options: Options) -> Solution:
+    """exact, numeric, or auto: exact, and numeric where exact cannot answer and every
+    parameter has a value (the report says which ran, and why)."""
+    family = FAMILIES[question.kind]
+    if options.route is RouteChoice.EXACT:
+        return _run(family.exact, question, model, options)
+    if options.route is RouteChoice.NUMERIC:
+        if family.numeric is None:
+            raise UnsolvedError(f"'{question.kind.value}' has no numeric route yet; use --route exact")
+        return _run(family.numeric, question, model, options)
+    try:
+        return _run(family.exact, question, model, options)
+    except UnsolvedError as exact_failed:
+        if family.numeric is None or not _has_all_values(model):
+            raise
+        solution = _run(family.numeric, question, model, options)
+        note = f"the exact route could not answer ({exact_failed}); these are the numeric route's answers"
+        return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _run(solver, question: Question, model: Model, options: Options) -> Solution:
+    if frame_of(question) is None:
+        return solver(question, model, options)
+    return solve_in_frame(solver, question, model, options)
+
+
+def _route_of(options: Options) -> Route:
+    return Route.NUMERIC if options.route is RouteChoice.NUMERIC else Route.EXACT
+
+
+def _has_all_values(model: Model) -> bool:
+    return all(model.symbols.parameters[p.name] in model.values for p in model.problem.parameters)
 
 
 def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
@@ -56,4 +110,4 @@ def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
                          summary, solutions, values, symbols)
 
 
-__all__ = ["Options", "SOLVERS", "solve_problem", "solve_question"]
+__all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_problem", "solve_question"]

@@ -4,23 +4,37 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from enum import Enum
 from fractions import Fraction
 from typing import Mapping
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.tidy import tidy
 from rbdsolve.report.tree import map_leaves
 from rbdsolve.report.math import Along, Math, Product, Scaled, Terms
 from rbdsolve.report.steps import Relation
 
 
+class RouteChoice(Enum):
+    """Which route a question takes: ``exact`` (sympy, rational arithmetic), ``numeric``
+    (floating point: numpy and scipy, every parameter needs a value) or ``auto`` (exact,
+    and numeric where the exact route cannot answer and the values allow it)."""
+
+    EXACT = "exact"
+    NUMERIC = "numeric"
+    AUTO = "auto"
+
+
 @dataclass(frozen=True)
 class Options:
-    """How to solve: parameter values from the command line (they override the file's)."""
+    """How to solve: parameter values from the command line (they override the file's)
+    and the route."""
 
     values: Mapping[str, Fraction] = field(default_factory=dict)
+    route: RouteChoice = RouteChoice.AUTO
 
 
 # --- common scales ---------------------------------------------------------------------
@@ -157,3 +171,17 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | 
     if not (math.isfinite(z.real) and math.isfinite(z.imag)):
         return None
     return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
+
+
+def require_values(model, what: str) -> None:
+    """Floating-point work needs a number for every parameter."""
+    missing = [p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values]
+    if missing:
+        raise UnsolvedError(f"{what} needs a value for every parameter; give {', '.join(missing)} "
+                            "('values:' in the file, or --set NAME=VALUE)")
+
+
+def float_tree(value: object) -> object:
+    """An answers tree of a numeric route as JSON-ready numbers (enums and text kept)."""
+    return map_leaves(value, lambda leaf: float(leaf) if isinstance(leaf, (float, int)) and
+                      not isinstance(leaf, bool) else None)

@@ -1,0 +1,173 @@
+"""The floating-point routes' view of a model: M and K at a configuration as float
+arrays, and the equilibria of ∂V/∂q = 0 found numerically.
+
+M and K come from the model's exact velocity Jacobians and Hessian of V at the
+configuration, with the parameter values put in and rounded once to floats.
+
+Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) are compiled with
+sympy's lambdify; Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H) is
+started from every point of a grid over the search box (angles over one turn, lengths
+within ±SEARCH_SCALE × the largest parameter value), the roots are wrapped into
+(−π, π] and merged when closer than MERGE_TOL. The grid has GRID_POINTS per coordinate
+(fewer in higher dimension, at most MAX_STARTS starts): an equilibrium whose basin
+of attraction misses every start is not found, and the report says so.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from typing import Mapping
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import hessian, mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.problem.schema import Question
+
+GRID_POINTS = 24
+MAX_STARTS = 4096
+SEARCH_SCALE = 10.0
+ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
+MERGE_TOL = 1e-6
+EPS_STEP = 4 * float(np.finfo(float).eps)
+
+
+def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndarray:
+    """An exact matrix with the parameter values put in, rounded once to floats."""
+    filled = matrix.xreplace(dict(values))
+    try:
+        return np.array([[float(sp.N(x, 20)) for x in row] for row in filled.tolist()], dtype=float)
+    except TypeError:
+        raise UnsolvedError("a matrix entry is not a real number at the given values") from None
+
+
+def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, np.ndarray, str]:
+    """M and K at the configuration ``about`` (coordinate name -> value), as floats."""
+    at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
+    M = to_floats(mass_matrix(model, at), model.values)
+    K = to_floats(stiffness_matrix(potential_energy(model).total, model.q, at), model.values)
+    return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
+
+
+def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr]:
+    """The question's ``about`` (checked to be an equilibrium in floating point), or the
+    first stable equilibrium found numerically."""
+    names = model.coordinate_names()
+    about = question.options.about
+    if about is not None:
+        at = {name: model.symbols.scalar(e) for name, (_, e) in zip(names, about)}
+        point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
+        g, _ = compiled_gradient(model)
+        residual = np.asarray(g(point), dtype=float)
+        if np.max(np.abs(residual)) > ROOT_TOL * gradient_scale(model, g):
+            (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
+            raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
+        return at
+    found = find_numeric(model)
+    stable = [p for p, kind in found.equilibria if kind == "stable"]
+    if not stable:
+        raise UnsolvedError("no stable equilibrium found numerically; choose one with 'modes: {about: {...}}'")
+    return {n: sp.Float(v, 17) for n, v in zip(names, stable[0])}
+
+
+def compiled_gradient(model: Model):
+    """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions."""
+    V = potential_energy(model).total.xreplace(dict(model.values))
+    q = sp.symbols(f"x0:{len(model.q)}")
+    V = V.xreplace(dict(zip(model.q, q)))
+    grad = [sp.diff(V, x) for x in q]
+    H = hessian(V, tuple(q))
+    return sp.lambdify([q], grad, "numpy"), sp.lambdify([q], H.tolist(), "numpy")
+
+
+def gradient_scale(model: Model, g) -> float:
+    """The size of ∂V/∂q over the search box: roots are judged relative to it."""
+    samples = [np.max(np.abs(np.asarray(g(p), dtype=float))) for p in _starts(model, 5)]
+    return max(max(samples, default=1.0), 1e-300)
+
+
+class NumericEquilibria:
+    def __init__(self, equilibria: list[tuple[tuple[float, ...], str]], starts: int):
+        self.equilibria = equilibria  # (q, "stable" | "unstable" | "neutral")
+        self.starts = starts
+
+
+def find_numeric(model: Model) -> NumericEquilibria:
+    from scipy.optimize import root
+
+    g, H = compiled_gradient(model)
+    scale = gradient_scale(model, g)
+    starts = _starts(model, GRID_POINTS)
+    roots: list[np.ndarray] = []
+    for start in starts:
+        result = root(lambda x: np.asarray(g(x), dtype=float), start,
+                      jac=lambda x: np.asarray(H(x), dtype=float), method="hybr")
+        x = _wrapped(model, _polished(result.x, g, H))
+        if np.max(np.abs(np.asarray(g(x), dtype=float))) > ROOT_TOL * scale or not _inside(model, x):
+            continue
+        if all(np.max(np.abs(_difference(model, x, y))) > MERGE_TOL for y in roots):
+            roots.append(x)
+    roots.sort(key=tuple)
+    return NumericEquilibria([(tuple(float(v) for v in x), _kind(np.asarray(H(x), dtype=float))) for x in roots],
+                             len(starts))
+
+
+def _polished(x: np.ndarray, g, H, steps: int = 3) -> np.ndarray:
+    """A few plain Newton steps: hybr stops at a relative step of 1.5e-8, Newton's
+    quadratic convergence takes the root on to round-off."""
+    for _ in range(steps):
+        try:
+            step = np.linalg.solve(np.asarray(H(x), dtype=float), np.asarray(g(x), dtype=float))
+        except np.linalg.LinAlgError:
+            break
+        x = x - step
+        if np.max(np.abs(step)) <= EPS_STEP * max(np.max(np.abs(x)), 1.0):
+            break
+    return x
+
+
+def _kind(H: np.ndarray) -> str:
+    eig = np.linalg.eigvalsh((H + H.T) / 2)
+    tol = 1e-9 * max(np.max(np.abs(eig)), 1e-300)
+    if np.all(eig > tol):
+        return "stable"
+    if np.any(eig < -tol):
+        return "unstable"
+    return "neutral"
+
+
+def _box(model: Model) -> list[tuple[float, float]]:
+    sizes = [abs(float(v)) for v in model.values.values()] or [1.0]
+    reach = SEARCH_SCALE * max(max(sizes), 1.0)
+    return [(-math.pi, math.pi) if q in model.angles else (-reach, reach) for q in model.q]
+
+
+def _starts(model: Model, per_axis: int) -> list[np.ndarray]:
+    n = len(model.q)
+    per_axis = max(2, min(per_axis, int(MAX_STARTS ** (1 / n))))
+    axes = [np.linspace(lo, hi, per_axis, endpoint=False) + (hi - lo) / (2 * per_axis) for lo, hi in _box(model)]
+    return [np.array(p) for p in itertools.product(*axes)]
+
+
+def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:
+    """Angles into (−π, π]."""
+    out = np.array(x, dtype=float)
+    for i, q in enumerate(model.q):
+        if q in model.angles:
+            out[i] = math.pi - (math.pi - out[i]) % (2 * math.pi)
+    return out
+
+
+def _difference(model: Model, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    d = x - y
+    for i, q in enumerate(model.q):
+        if q in model.angles:
+            d[i] = (d[i] + math.pi) % (2 * math.pi) - math.pi
+    return d
+
+
+def _inside(model: Model, x: np.ndarray) -> bool:
+    return all(lo - 1e-12 <= v <= hi + 1e-12 for v, (lo, hi) in zip(x, _box(model)))
