@@ -236,10 +236,16 @@ def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
     bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
     used: dict[sp.Expr, int] = {}
     out = []
+    conjugates: dict[sp.Poly, tuple[sp.Expr, ...] | None] = {}
     for _, root, factor in spectrum.pairs:
         if root not in bases:
             vector = None
-            if counts[root] == 1 and not root.is_Rational:
+            if counts[root] == 1 and not root.is_Rational and _rational(K) and _rational(M):
+                if factor not in conjugates:
+                    conjugates[factor] = _field_null_vector(K, M, x, factor)
+                if conjugates[factor] is not None:
+                    vector = tuple(_at_root(c, x, root) for c in conjugates[factor])
+            elif counts[root] == 1 and not root.is_Rational:
                 if adjugate is None:
                     adjugate = (K - x * M).adjugate(method="berkowitz").applyfunc(sp.expand)
                 vector = _shape_mod(adjugate, x, factor.as_expr(), root, values)
@@ -252,6 +258,32 @@ def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
         used[root] = k + 1
         out.append(bases[root][k] if k < len(bases[root]) else ())
     return tuple(out)
+
+
+def _at_root(p: sp.Expr, x: sp.Symbol, root: sp.Expr) -> sp.Expr:
+    """A polynomial p at a CRootOf, highest power first, built without evaluation:
+    an evaluated Add of CRootOf powers sorts its terms by isolating the root again."""
+    terms = [c * root**k if k else c for (k,), c in sp.Poly(p, x).terms() if c != 0]
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else (terms[0] if terms else sp.Integer(0))
+
+
+def _field_null_vector(K: sp.Matrix, M: sp.Matrix, x: sp.Symbol, f: sp.Poly) -> tuple[sp.Expr, ...] | None:
+    """The mode shape of every root of an irreducible f over QQ at once, as polynomials
+    in x of degree < deg f: the null vector of K − αM over the field QQ(α), f(α) = 0,
+    by exact elimination there (DomainMatrix), scaled so its first nonzero entry is 1.
+    Each root's shape is these polynomials at that root: the roots of f are conjugate,
+    and conjugation maps one null vector onto the other."""
+    alpha = f.all_roots()[0]
+    field = sp.QQ.algebraic_field(alpha)
+    a = field.from_sympy(alpha)
+    rows = [[field.from_sympy(K[i, j]) - a * field.from_sympy(M[i, j]) for j in range(K.cols)]
+            for i in range(K.rows)]
+    null = DomainMatrix(rows, K.shape, field).nullspace()
+    if null.shape[0] != 1:
+        return None
+    entries = null.to_list()[0]  # field elements: polynomials in alpha of degree < deg f
+    first = next(e for e in entries if e)
+    return tuple(sp.Poly([sp.QQ.to_sympy(c) for c in (e / first).to_list()], x).as_expr() for e in entries)
 
 
 def _shape_mod(adjugate: sp.Matrix, x: sp.Symbol, f: sp.Expr, root: sp.Expr,
