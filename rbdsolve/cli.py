@@ -78,8 +78,10 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
         name, sep, text = item.partition("=")
         if not sep or not name.strip().isidentifier():
             raise InputError(f"--set expects NAME=VALUE, found '{item}'")
-        where = Location("--set", 1, len(name) + 2)
-        values[name.strip()] = parse_number(text, where)
+        try:
+            values[name.strip()] = parse_number(text, Location("--set", 1, len(name) + 2))
+        except InputError as exc:  # said as the option, not as a place in a file
+            raise InputError(f"--set {name.strip()}: {exc.message}") from None
     return values
 
 

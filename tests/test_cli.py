@@ -82,7 +82,7 @@ def test_set_gives_numeric_values() -> None:
     [
         (("--set", "M=1"), "has no parameter 'M' (did you mean 'm'?)"),
         (("--set", "m"), "--set expects NAME=VALUE"),
-        (("--set", "m=heavy"), "unknown symbol 'heavy'"),
+        (("--set", "m=heavy"), "--set m: expected a number, found 'heavy'"),
         (("--set", "m=-1"), "the parameter is positive"),
         (("--format", "pdf"), "Invalid value"),
     ],
