@@ -14,10 +14,11 @@ from pathlib import Path
 import click
 
 from rbdsolve import __version__
-from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError
+from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError, UnsolvedError
 
 FORMATS = ("terminal", "markdown", "latex", "json")
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
+DEFAULT_BUDGET = 60.0  # seconds per question: an exam question that takes longer is stuck
 
 SOLVE_EXAMPLES = """
 \b
@@ -93,10 +94,14 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
               help="Write to this file instead of standard output.")
 @click.option("--set", "sets", multiple=True, metavar="NAME=VALUE",
               help="Give a parameter a numeric value (repeatable); overrides the file's values.")
+@click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+              show_default=True, metavar="SECONDS",
+              help="Time budget for building each file's model and for each question; a question "
+                   "past it is left unanswered (exit code 1).")
 @click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")
-def solve(paths, fmt, output, sets, debug):
+def solve(paths, fmt, output, sets, budget, debug):
     """Solve problem files and print their step-by-step solutions."""
-    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug))
+    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug, budget))
     sys.exit(int(code))
 solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
 
@@ -148,10 +153,10 @@ def _check(paths) -> ExitCode:
     return worst
 
 
-def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False) -> ExitCode:
-    from rbdsolve.model.build import build_model
+def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False,
+           budget: float | None = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.problem import load_file
-    from rbdsolve.solvers import Options, solve_problem
+    from rbdsolve.solvers import Options, solve_file
 
     values = parse_sets(sets)
     reports, chunks, worst = [], [], ExitCode.OK
@@ -159,8 +164,8 @@ def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False) -> Ex
         try:
             problem = load_file(path)
             _check_sets(values, problem, path)
-            report = solve_problem(build_model(problem), Options(values=values))
-        except InputError as exc:
+            report = solve_file(problem, Options(values=values, budget=budget))
+        except (InputError, UnsolvedError) as exc:
             worst = max(worst, _file_failed(str(path), exc, str(exc), fmt, chunks))
             continue
         except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others

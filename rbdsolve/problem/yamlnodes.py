@@ -98,6 +98,8 @@ def parse_yaml(text: str, path: str) -> Map:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
         raise _yaml_error(exc, path) from None
+    except yaml.reader.ReaderError as exc:  # a control character the YAML reader refuses
+        raise _reader_error(exc, text, path) from None
     except yaml.YAMLError as exc:  # unmarked: rare, but say it in one line
         raise InputError(f"YAML error: {exc}", Location(path, 1, 1)) from None
     except RecursionError:
@@ -123,6 +125,13 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
         if exc.context:
             problem += f" ({exc.context})"
     return InputError(problem, loc)
+
+
+def _reader_error(exc: yaml.reader.ReaderError, text: str, path: str) -> InputError:
+    line = text.count("\n", 0, exc.position) + 1
+    column = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
+    code = exc.character if isinstance(exc.character, int) else ord(exc.character)
+    return InputError(f"the control character U+{code:04X} is not allowed in a YAML file", Location(path, line, column))
 
 
 class _Converter:

@@ -18,9 +18,11 @@ from rbdsolve.report.steps import Relation
 
 @dataclass(frozen=True)
 class Options:
-    """How to solve: parameter values from the command line (they override the file's)."""
+    """How to solve: parameter values from the command line (they override the file's),
+    and the time budget in seconds for the model and for each question (None: none)."""
 
     values: Mapping[str, Fraction] = field(default_factory=dict)
+    budget: float | None = None
 
 
 # --- common scales ---------------------------------------------------------------------
