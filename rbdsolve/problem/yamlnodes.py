@@ -95,7 +95,7 @@ def read_text(path: str, data: bytes) -> str:
 def parse_yaml(text: str, path: str) -> Map:
     """Compose the single YAML document in ``text`` into located nodes."""
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = _compose(text, path)
     except yaml.MarkedYAMLError as exc:
         raise _yaml_error(exc, path) from None
     except yaml.reader.ReaderError as exc:  # a control character the YAML reader refuses
@@ -112,6 +112,34 @@ def parse_yaml(text: str, path: str) -> Map:
             f"expected a mapping at the top of the file, found {tree.kind_name}", tree.loc
         )
     return tree
+
+
+class _ShallowLoader(yaml.SafeLoader):
+    """PyYAML's composer recurses once per level: stop at MAX_DEPTH levels, before a
+    10,000-deep '[[[[…' spends seconds reaching Python's recursion limit."""
+
+    depth = 0
+    path = ""
+
+    def compose_node(self, parent, index):
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH + 1:
+                mark = self.peek_event().start_mark
+                raise InputError(f"nesting deeper than {MAX_DEPTH} levels",
+                                 Location(self.path, mark.line + 1, mark.column + 1))
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
+
+
+def _compose(text: str, path: str) -> yaml.Node | None:
+    loader = _ShallowLoader(text)
+    loader.path = path
+    try:
+        return loader.get_single_node()
+    finally:
+        loader.dispose()
 
 
 def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
