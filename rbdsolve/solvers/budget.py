@@ -14,6 +14,7 @@ belong to it), ``within`` does nothing: the work runs to its end. Windows do not
 from __future__ import annotations
 
 import signal
+import sys
 import threading
 from contextlib import contextmanager
 from typing import Iterator
@@ -45,12 +46,20 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
     def ring(signum, frame):
         raise OutOfTime(seconds, what)
 
-    previous = signal.signal(signal.SIGALRM, ring)
+    def unraisable(info) -> None:
+        # A ring inside a __del__ or a gc callback cannot propagate; Python would print it
+        # as "Exception ignored in ...". Drop it quietly: the next ring gets through.
+        if not isinstance(info.exc_value, OutOfTime):
+            hook(info)
+
+    previous, hook = signal.signal(signal.SIGALRM, ring), sys.unraisablehook
+    sys.unraisablehook = unraisable
     signal.setitimer(signal.ITIMER_REAL, seconds, REPEAT)
     try:
         yield
     finally:
         _disarm(previous)
+        sys.unraisablehook = hook
 
 
 def _disarm(previous) -> None:

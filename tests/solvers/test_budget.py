@@ -101,13 +101,13 @@ def _armed_in_a_thread() -> bool:
 
 def test_a_slow_question_is_left_unanswered_and_the_next_one_runs() -> None:
     start = time.perf_counter()
-    report = solve_file(load_text(SLOW, "slow.yaml"), Options(budget=0.3))
+    report = solve_file(load_text(SLOW, "slow.yaml"), Options(budget=1.0))
     elapsed = time.perf_counter() - start
     first, second = report.solutions
-    assert first.error == "'equilibria' ran out of its 0.3 s budget (--budget to change it)"
+    assert first.error == "'equilibria' ran out of its 1 s budget (--budget to change it)"
     assert second.error is None and second.answers
-    assert elapsed < 0.3 + 0.3 + 2.0  # the second question (eom) takes well under 2 s
-    assert first.seconds < 0.3 + 0.2  # the overrun margin of one question
+    assert elapsed < 1.0 + 1.0 + 1.0  # the second question (eom) takes well under 1 s
+    assert first.seconds < 1.0 + 0.2  # the overrun margin of one question
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
 
 
