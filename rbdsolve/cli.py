@@ -14,11 +14,12 @@ from pathlib import Path
 import click
 
 from rbdsolve import __version__
-from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError
+from rbdsolve.errors import ExitCode, InputError, InternalError, RbdError, UnsolvedError
 
 FORMATS = ("terminal", "markdown", "latex", "json")
 ROUTES = ("auto", "exact", "numeric")  # spelled out here: importing the solvers would load sympy
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
+DEFAULT_BUDGET = 60.0  # seconds per question: an exam question that takes longer is stuck
 
 SOLVE_EXAMPLES = """
 \b
@@ -79,8 +80,10 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
         name, sep, text = item.partition("=")
         if not sep or not name.strip().isidentifier():
             raise InputError(f"--set expects NAME=VALUE, found '{item}'")
-        where = Location("--set", 1, len(name) + 2)
-        values[name.strip()] = parse_number(text, where)
+        try:
+            values[name.strip()] = parse_number(text, Location("--set", 1, len(name) + 2))
+        except InputError as exc:  # said as the option, not as a place in a file
+            raise InputError(f"--set {name.strip()}: {exc.message}") from None
     return values
 
 
@@ -94,11 +97,16 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
               help="Give a parameter a numeric value (repeatable); overrides the file's values.")
 @click.option("--route", type=click.Choice(ROUTES), default="auto", show_default=True,
               help="exact (sympy), numeric (floating point; every parameter needs a value) or auto "
-                   "(exact, then numeric where exact cannot answer).")
+                   "(exact, then numeric where exact cannot answer or runs out of its budget).")
+@click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+              show_default=True, metavar="SECONDS",
+              help="Time budget for building each file's model and for each question; a question "
+                   "past it is left unanswered (exit code 1), or, with --route auto, answered by the "
+                   "numeric route.")
 @click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")
-def solve(paths, fmt, output, sets, route, debug):
+def solve(paths, fmt, output, sets, route, budget, debug):
     """Solve problem files and print their step-by-step solutions."""
-    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug, route))
+    code = _guard(debug, lambda: _solve(paths, fmt, output, sets, debug, budget, route))
     sys.exit(int(code))
 solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
 
@@ -150,10 +158,10 @@ def _check(paths) -> ExitCode:
     return worst
 
 
-def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False, route: str = "auto") -> ExitCode:
-    from rbdsolve.model.build import build_model
+def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False,
+           budget: float | None = DEFAULT_BUDGET, route: str = "auto") -> ExitCode:
     from rbdsolve.problem import load_file
-    from rbdsolve.solvers import Options, RouteChoice, solve_problem
+    from rbdsolve.solvers import Options, RouteChoice, solve_file
 
     values = parse_sets(sets)
     reports, chunks, worst = [], [], ExitCode.OK
@@ -161,8 +169,8 @@ def _solve(paths, fmt: str, output: str | None, sets, debug: bool = False, route
         try:
             problem = load_file(path)
             _check_sets(values, problem, path)
-            report = solve_problem(build_model(problem), Options(values=values, route=RouteChoice(route)))
-        except InputError as exc:
+            report = solve_file(problem, Options(values=values, budget=budget, route=RouteChoice(route)))
+        except (InputError, UnsolvedError) as exc:
             worst = max(worst, _file_failed(str(path), exc, str(exc), fmt, chunks))
             continue
         except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others

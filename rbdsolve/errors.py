@@ -87,6 +87,11 @@ class UnsolvedError(RbdError):
 
     exit_code = ExitCode.UNSOLVED
 
+    def __init__(self, message: str):
+        self.message = message
+        self.location = None
+        super().__init__(message)
+
 
 def did_you_mean(word: str, choices: object) -> str:
     """A ' (did you mean 'x'?)' suffix naming the closest choice, or ''."""

@@ -12,6 +12,8 @@ refused here, with the column of the offending piece.
 from __future__ import annotations
 
 import ast
+import math
+import re
 from dataclasses import dataclass
 from enum import Enum
 from fractions import Fraction
@@ -22,6 +24,11 @@ MAX_TEXT = 2000
 MAX_NODES = 400
 MAX_EXPONENT = 100  # |n| for a numeric exponent; 9**9**9 is refused before anything runs
 MAX_DIGITS = 40
+MAX_TEN_POWER = 300  # |n| in a literal 1e±n: Fraction('1e99999999') would build the integer
+# Numbers that the model folds (10**100 * 10**100, (10**100)**100) stay under this many
+# bits (about 3000 digits), far below Python's 4300-digit limit for printing an integer.
+MAX_NUMBER_BITS = 10_000
+MAX_NUMBER_DIGITS = 3000
 
 
 class Kind(Enum):
@@ -180,7 +187,8 @@ def parse(text: str, loc: Location, scope: Scope, plain: bool = True) -> Expr:
         module = ast.parse(source, mode="eval")
     except SyntaxError as exc:
         col = (exc.offset or 1) - 1
-        raise InputError(f"cannot read expression '{source}': {exc.msg}", _at(loc, plain, lead + col)) from None
+        raise InputError(f"cannot read expression '{_clip(source)}': {exc.msg}",
+                         _at(loc, plain, lead + col)) from None
     except (RecursionError, MemoryError, ValueError):
         raise InputError("expression is nested too deeply", loc) from None
     checker = _Checker(source, loc, scope, plain, lead)
@@ -189,6 +197,11 @@ def parse(text: str, loc: Location, scope: Scope, plain: bool = True) -> Expr:
     except RecursionError:
         raise InputError("expression is nested too deeply", loc) from None
     return Expr(tree, kind, source, loc)
+
+
+def _clip(source: str, width: int = 60) -> str:
+    """The start of a long expression, for a message that stays one readable line."""
+    return source if len(source) <= width else source[:width] + "…"
 
 
 def _at(loc: Location, plain: bool, offset: int) -> Location:
@@ -228,6 +241,9 @@ class _Checker:
         digits = sum(ch.isdigit() for ch in text)
         if digits > MAX_DIGITS:
             raise self.fail(node, f"number with {digits} digits; the limit is {MAX_DIGITS}")
+        ten_power = re.search(r"[eE]([+-]?[0-9_]+)$", text)
+        if ten_power and abs(int(ten_power.group(1).replace("_", ""))) > MAX_TEN_POWER:
+            raise self.fail(node, f"the number {text} is out of range (the limit is 1e±{MAX_TEN_POWER})")
         try:
             exact = Fraction(text.replace("_", ""))  # the decimal as written: 0.1 is 1/10
         except (ValueError, ZeroDivisionError):
@@ -271,7 +287,10 @@ class _Checker:
             raise self.fail(node, "division by zero")
         if op == "**":
             self._check_power(node, left, right)
-        return BinOp(op, left, right), kind
+        tree = BinOp(op, left, right)
+        if _number_bits(tree) > MAX_NUMBER_BITS:
+            raise self.fail(node, f"the numbers in this expression grow past {MAX_NUMBER_DIGITS} digits")
+        return tree, kind
 
     def _combine(self, node: ast.BinOp, op: str, lk: Kind, rk: Kind) -> Kind:
         V, S = Kind.VECTOR, Kind.SCALAR
@@ -363,6 +382,25 @@ class _Checker:
     visit_Tuple = visit_List
 
 
+def _number_bits(tree: Tree) -> int:
+    """An upper bound on the size in bits of the numbers sympy makes when it folds
+    ``tree``: products and sums add sizes, a constant power multiplies them. Checked
+    before anything folds, so 10**100**… never reaches the integer arithmetic."""
+    if isinstance(tree, Num):
+        return tree.value.numerator.bit_length() + tree.value.denominator.bit_length()
+    if isinstance(tree, Neg):
+        return _number_bits(tree.operand)
+    if isinstance(tree, BinOp) and tree.op == "**":
+        exponent = constant_value(tree.right)
+        scale = math.ceil(abs(exponent)) if exponent is not None else 1
+        return _number_bits(tree.left) * max(scale, 1) + _number_bits(tree.right)
+    if isinstance(tree, BinOp):
+        return _number_bits(tree.left) + _number_bits(tree.right)
+    if isinstance(tree, (Call, Vec)):
+        return max((_number_bits(a) for a in (tree.args if isinstance(tree, Call) else tree.items)), default=0)
+    return 0
+
+
 def _has_power(tree: Tree) -> bool:
     if isinstance(tree, BinOp):
         return tree.op == "**" or _has_power(tree.left) or _has_power(tree.right)
@@ -407,6 +445,16 @@ def _describe(node: ast.AST) -> str:
     return names.get(kind, f"'{kind}'")
 
 
+def _is_expression(source: str) -> bool:
+    if len(source) > MAX_TEXT:
+        return True  # parse() refuses it with the length limit
+    try:
+        ast.parse(source, mode="eval")
+    except (SyntaxError, RecursionError, MemoryError, ValueError):
+        return False
+    return True
+
+
 def is_number_text(text: str) -> bool:
     try:
         Fraction(text.strip())
@@ -417,10 +465,14 @@ def is_number_text(text: str) -> bool:
 
 def parse_number(text: str, loc: Location, plain: bool = True) -> Fraction:
     """A plain numeric value (no names), e.g. a parameter's value: '9.81', '1/2', '-3'."""
+    source = text.strip()
+    if not _is_expression(source) or any(ch.isalpha() and ch not in "eE" for ch in source):
+        # A name or a sentence ('heavy', 'nine point eight') is not a value at all.
+        raise InputError(f"expected a number, found '{_clip(source)}'", loc)
     expr = parse(text, loc, Scope(), plain)
     value = constant_value(expr.tree)
     if value is None:
-        raise InputError(f"expected a number, found '{text.strip()}'", loc)
+        raise InputError(f"expected a number, found '{_clip(source)}'", loc)
     if abs(value) > 10**300:
         raise InputError(f"the number {text.strip()} is too large (the limit is 1e300)", loc)
     return value

@@ -27,7 +27,7 @@ from rbdsolve.problem.bodies import BodyReader, refuse_negative
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
-from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_text
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
@@ -42,7 +42,7 @@ def load_file(path: str | Path) -> Problem:
     """Read and validate one problem file."""
     name = str(path)
     try:
-        data = Path(path).read_bytes()
+        data = read_bytes(name)
     except FileNotFoundError:
         raise InputError(f"no such file: {name}") from None
     except IsADirectoryError:

@@ -8,6 +8,7 @@ so ``mass: 3`` and ``mass: 3*m`` go through the same expression parser.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 
 import yaml
@@ -17,6 +18,7 @@ from rbdsolve.errors import InputError, Location
 MAX_FILE_BYTES = 256 * 1024
 MAX_NODES = 20_000
 MAX_DEPTH = 40
+_UTF16_32_BOMS = (b"\xff\xfe", b"\xfe\xff", b"\x00\x00\xfe\xff")
 
 
 @dataclass(frozen=True)
@@ -57,13 +59,23 @@ class Map:
 Node = Scalar | Seq | Map
 
 
+def read_bytes(path: str) -> bytes:
+    """A file's bytes, reading no more than one byte past the size limit, so a huge
+    file (or /dev/zero) is refused without being read into memory."""
+    with open(path, "rb") as handle:
+        size = os.fstat(handle.fileno()).st_size
+        if size > MAX_FILE_BYTES:
+            raise InputError(f"file is {size} bytes; the limit is {MAX_FILE_BYTES} bytes", Location(path, 1, 1))
+        return handle.read(MAX_FILE_BYTES + 1)
+
+
 def read_text(path: str, data: bytes) -> str:
     """Decode a problem file, refusing what is not reasonable UTF-8 text."""
     where = Location(path, 1, 1)
-    if len(data) > MAX_FILE_BYTES:
-        raise InputError(
-            f"file is {len(data)} bytes; the limit is {MAX_FILE_BYTES} bytes", where
-        )
+    if len(data) > MAX_FILE_BYTES:  # a stream of unknown size: only the limit is known
+        raise InputError(f"file is more than {MAX_FILE_BYTES} bytes; the limit is {MAX_FILE_BYTES} bytes", where)
+    if data.startswith(_UTF16_32_BOMS):
+        raise InputError("the file is UTF-16 or UTF-32 text; save it as UTF-8", where)
     if b"\x00" in data:
         raise InputError("this is a binary file, not a YAML problem file", where)
     try:
@@ -72,7 +84,7 @@ def read_text(path: str, data: bytes) -> str:
         line = data[: exc.start].count(b"\n") + 1
         col = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
         raise InputError(
-            f"the file is not UTF-8 text (byte 0x{data[exc.start]:02x})",
+            f"the file is not UTF-8 text (byte 0x{data[exc.start]:02x}); save it as UTF-8",
             Location(path, line, col),
         ) from None
     if not text.strip():
@@ -83,9 +95,11 @@ def read_text(path: str, data: bytes) -> str:
 def parse_yaml(text: str, path: str) -> Map:
     """Compose the single YAML document in ``text`` into located nodes."""
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = _compose(text, path)
     except yaml.MarkedYAMLError as exc:
         raise _yaml_error(exc, path) from None
+    except yaml.reader.ReaderError as exc:  # a control character the YAML reader refuses
+        raise _reader_error(exc, text, path) from None
     except yaml.YAMLError as exc:  # unmarked: rare, but say it in one line
         raise InputError(f"YAML error: {exc}", Location(path, 1, 1)) from None
     except RecursionError:
@@ -100,6 +114,34 @@ def parse_yaml(text: str, path: str) -> Map:
     return tree
 
 
+class _ShallowLoader(yaml.SafeLoader):
+    """PyYAML's composer recurses once per level: stop at MAX_DEPTH levels, before a
+    10,000-deep '[[[[…' spends seconds reaching Python's recursion limit."""
+
+    depth = 0
+    path = ""
+
+    def compose_node(self, parent, index):
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH + 1:
+                mark = self.peek_event().start_mark
+                raise InputError(f"nesting deeper than {MAX_DEPTH} levels",
+                                 Location(self.path, mark.line + 1, mark.column + 1))
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
+
+
+def _compose(text: str, path: str) -> yaml.Node | None:
+    loader = _ShallowLoader(text)
+    loader.path = path
+    try:
+        return loader.get_single_node()
+    finally:
+        loader.dispose()
+
+
 def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
     mark = exc.problem_mark or exc.context_mark
     loc = Location(path, mark.line + 1, mark.column + 1) if mark else Location(path, 1, 1)
@@ -111,6 +153,13 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
         if exc.context:
             problem += f" ({exc.context})"
     return InputError(problem, loc)
+
+
+def _reader_error(exc: yaml.reader.ReaderError, text: str, path: str) -> InputError:
+    line = text.count("\n", 0, exc.position) + 1
+    column = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
+    code = exc.character if isinstance(exc.character, int) else ord(exc.character)
+    return InputError(f"the control character U+{code:04X} is not allowed in a YAML file", Location(path, line, column))
 
 
 class _Converter:

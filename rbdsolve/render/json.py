@@ -12,7 +12,7 @@ import json
 from enum import Enum
 import sympy as sp
 
-from rbdsolve.errors import InputError, InternalError
+from rbdsolve.errors import InputError, InternalError, UnsolvedError
 from rbdsolve.render.mathtext import to_latex
 from rbdsolve.report.math import Math, plain
 from rbdsolve.report.tree import map_leaves
@@ -94,7 +94,7 @@ def render_report(report: ProblemReport) -> str:
     return json.dumps(report_object(report), ensure_ascii=False) + "\n"
 
 
-def render_error(file: str, error: InputError | InternalError) -> str:
+def render_error(file: str, error: InputError | InternalError | UnsolvedError) -> str:
     """The JSON line for a file that could not be read: scripts still get one line."""
     loc = error.location
     where = {"line": loc.line, "column": loc.column, "path": loc.key_path()} if loc else {}

@@ -2,7 +2,8 @@
 
     solve(question, model, options) -> Solution
 
-``solve_problem`` runs every question of a problem and times each one.
+``solve_file`` builds a problem's model and runs every question, each within its time
+budget (``budget.within``), and times each one.
 """
 
 from __future__ import annotations
@@ -12,8 +13,8 @@ from dataclasses import dataclass, replace
 from typing import Callable
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import Question, QuestionKind
+from rbdsolve.model.build import Model, build_model
+from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
 from rbdsolve.solvers import (
     eom,
@@ -26,6 +27,7 @@ from rbdsolve.solvers import (
     steady_motion,
     steady_spin,
 )
+from rbdsolve.solvers.budget import OutOfTime, within
 from rbdsolve.solvers.common import Options, RouteChoice, float_tree, numeric
 from rbdsolve.solvers.energies import summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
@@ -50,13 +52,13 @@ FAMILIES = {
 
 
 def solve_question(question: Question, model: Model, options: Options) -> Solution:
-    """Run one question's solver on the route asked for; an unanswerable question becomes
-    a Solution with an error (exit code 1), not an exception, so the other questions
-    still run."""
+    """Run one question's solver on the route asked for, within its time budget; an
+    unanswerable question, or one past its budget, becomes a Solution with an error
+    (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
     try:
         solution = _routed(question, model, options)
-    except UnsolvedError as exc:
+    except (UnsolvedError, OutOfTime) as exc:
         solution = Solution(question.kind.value, _route_of(options), None, (), error=str(exc))
     if solution.route is Route.NUMERIC:
         values = float_tree(solution.answers) if solution.answers is not None else {}
@@ -77,18 +79,19 @@ def _routed(question: Question, model: Model, options: Options) -> Solution:
         return _run(family.numeric, question, model, options)
     try:
         return _run(family.exact, question, model, options)
-    except UnsolvedError as exact_failed:
+    except (UnsolvedError, OutOfTime) as exact_failed:
         if family.numeric is None or not _has_all_values(model):
             raise
-        solution = _run(family.numeric, question, model, options)
+        solution = _run(family.numeric, question, model, options, " (numeric route)")
         note = f"the exact route could not answer ({exact_failed}); these are the numeric route's answers"
         return replace(solution, warnings=(note, *solution.warnings))
 
 
-def _run(solver, question: Question, model: Model, options: Options) -> Solution:
-    if frame_of(question) is None:
-        return solver(question, model, options)
-    return solve_in_frame(solver, question, model, options)
+def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:
+    with within(options.budget, f"'{question.kind.value}'{route}"):
+        if frame_of(question) is None:
+            return solver(question, model, options)
+        return solve_in_frame(solver, question, model, options)
 
 
 def _route_of(options: Options) -> Route:
@@ -100,9 +103,26 @@ def _has_all_values(model: Model) -> bool:
 
 
 def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
-    model = model.with_values(options.values) if options.values else model
-    problem = model.problem
-    summary = summarize_model(model)
+    """Every question of a model already built, each within the budget."""
+    return _solve(model.problem, lambda: model, options)
+
+
+def solve_file(problem: Problem, options: Options = Options()) -> ProblemReport:
+    """Build the model of ``problem``, then answer every question, each within the budget."""
+    return _solve(problem, lambda: build_model(problem), options)
+
+
+def _solve(problem: Problem, build: Callable[[], Model], options: Options) -> ProblemReport:
+    """The model section (T, V, the parameter values) within one budget, then each
+    question within its own. A model past its budget is an UnsolvedError for the whole
+    file (exit code 1), said in one line."""
+    try:
+        with within(options.budget, "the model (T and V)"):
+            model = build()
+            model = model.with_values(options.values) if options.values else model
+            summary = summarize_model(model)
+    except OutOfTime as exc:
+        raise UnsolvedError(f"{problem.file}: {exc}") from None
     solutions = tuple(solve_question(q, model, options) for q in problem.questions)
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
@@ -110,4 +130,4 @@ def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
                          summary, solutions, values, symbols)
 
 
-__all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_problem", "solve_question"]
+__all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_file", "solve_problem", "solve_question"]

@@ -30,11 +30,13 @@ class RouteChoice(Enum):
 
 @dataclass(frozen=True)
 class Options:
-    """How to solve: parameter values from the command line (they override the file's)
-    and the route."""
+    """How to solve: parameter values from the command line (they override the file's),
+    the route, and the time budget in seconds for the model and for each question
+    (None: none)."""
 
     values: Mapping[str, Fraction] = field(default_factory=dict)
     route: RouteChoice = RouteChoice.AUTO
+    budget: float | None = None
 
 
 # --- common scales ---------------------------------------------------------------------

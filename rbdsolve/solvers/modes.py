@@ -292,6 +292,8 @@ def _shape_mod(adjugate: sp.Matrix, x: sp.Symbol, f: sp.Expr, root: sp.Expr,
     sample = {s: values.get(s, 1) for s in adjugate.free_symbols | root.free_symbols if s != x}
     at_root = adjugate.xreplace({x: root}).xreplace(sample).evalf()
     sizes = [sum(abs(v) for v in at_root[:, j]) for j in range(adjugate.cols)]
+    if any(size.has(sp.nan, sp.zoo, sp.oo) for size in sizes):
+        return None  # the sample fell on a singular point: the null space route instead
     j = max(range(adjugate.cols), key=lambda c: sizes[c])
     if sizes[j] == 0:
         return None

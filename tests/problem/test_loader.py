@@ -76,7 +76,7 @@ CASES = [
     ("coordinates: [theta]", "coordinates: [theta, m]", 3, 22, "coordinates[1]", "already declared as a parameter"),
     ("  P: l * [sin(theta), -cos(theta)]", "  P: Q + [1, 0]\n  Q: P + [0, 1]", 6, 6, "points.P", "cyclic point definitions: P -> Q -> P"),
     ("  P: l * [sin(theta), -cos(theta)]", "  P: l * [sin(theta), -cos(theta)] + 1", 6, 6, "points.P", "cannot add a vector and a scalar"),
-    ("title: Pendulum", "title: Pendulum\nvalues: {m: heavy}", 2, 13, "values.m", "unknown symbol 'heavy'"),
+    ("title: Pendulum", "title: Pendulum\nvalues: {m: heavy}", 2, 13, "values.m", "expected a number, found 'heavy'"),
     ("title: Pendulum", "title: Pendulum\nvalues: {M: 1}", 2, 10, "values.M", "'M' is not a parameter (did you mean 'm'?)"),
     ("title: Pendulum", "title: Pendulum\nvalues: {m: -1}", 2, 13, "values.m", "declared positive"),
     # constants stay constant; rates are not allowed in a scene
