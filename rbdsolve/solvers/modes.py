@@ -261,8 +261,11 @@ def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
 
 
 def _at_root(p: sp.Expr, x: sp.Symbol, root: sp.Expr) -> sp.Expr:
-    """A polynomial p at a CRootOf, highest power first, built without evaluation:
-    an evaluated Add of CRootOf powers sorts its terms by isolating the root again."""
+    """A polynomial p at a root: at a CRootOf, highest power first, built without
+    evaluation (an evaluated Add of CRootOf powers sorts its terms by isolating the
+    root again); at a closed form (radicals), expanded and collected."""
+    if not root.has(sp.CRootOf):
+        return sp.factor_terms(sp.together(sp.expand(p.xreplace({x: root}))))
     terms = [c * root**k if k else c for (k,), c in sp.Poly(p, x).terms() if c != 0]
     return sp.Add(*terms, evaluate=False) if len(terms) > 1 else (terms[0] if terms else sp.Integer(0))
 
