@@ -22,10 +22,12 @@ from rbdsolve.solvers import (
     equilibria_numeric,
     impact,
     inertia,
+    inertia_numeric,
     modes,
     modes_numeric,
     steady_motion,
     steady_spin,
+    steady_spin_numeric,
 )
 from rbdsolve.solvers.budget import OutOfTime, within
 from rbdsolve.solvers.common import Options, RouteChoice, float_tree, numeric
@@ -44,9 +46,9 @@ FAMILIES = {
     QuestionKind.EOM: Family(eom.solve),
     QuestionKind.EQUILIBRIA: Family(equilibria.solve, equilibria_numeric.solve),
     QuestionKind.MODES: Family(modes.solve, modes_numeric.solve),
-    QuestionKind.INERTIA: Family(inertia.solve),
+    QuestionKind.INERTIA: Family(inertia.solve, inertia_numeric.solve),
     QuestionKind.IMPACT: Family(impact.solve),
-    QuestionKind.STEADY_SPIN: Family(steady_spin.solve),
+    QuestionKind.STEADY_SPIN: Family(steady_spin.solve, steady_spin_numeric.solve),
     QuestionKind.STEADY_MOTION: Family(steady_motion.solve),
 }
 

@@ -65,7 +65,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         J, shift_steps = _shift(body, J_G, about, label, symbols)
         steps += shift_steps
     if opts.axes is not None:
-        A = _frame(opts, model)
+        A = frame_matrix(opts, model)
         J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
         steps.append(st.equation("In the frame with unit vectors (rows of A), J' = A J Aᵀ:",
                                  Relation(sp.Symbol("A"), sp.ImmutableMatrix(A)),
@@ -135,7 +135,8 @@ def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
     return Terms((scaled_matrix(a, symbols), scaled_matrix(b, symbols)))
 
 
-def _frame(opts: InertiaOptions, model: Model) -> sp.Matrix:
+def frame_matrix(opts: InertiaOptions, model: Model) -> sp.Matrix:
+    """A: the rows are the asked unit vectors in scene axes, checked orthonormal."""
     names = model.symbols.with_points(model.points)
     rows = [names.vector(e).applyfunc(tidy) for e in opts.axes]
     A = sp.Matrix.hstack(*rows).T

@@ -9,7 +9,8 @@ routes run, and:
   exact λ evaluated to 30 digits; shapes agree to 1e-8 (both scaled so the first
   nonzero entry is 1);
 - equilibria: the same set of configurations (angles modulo 2π) to 1e-8, with the
-  same stability, unless the exact route found a continuum or conditions.
+  same stability, unless the exact route found a continuum or conditions;
+- inertia and steady spin: the principal moments within 10 × the estimate.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ from rbdsolve.problem.schema import QuestionKind
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
 SAMPLES = [Fraction(13, 10), Fraction(7, 10), Fraction(17, 10), Fraction(11, 10), Fraction(9, 10), Fraction(23, 10)]
-KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA}
+KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA, QuestionKind.INERTIA, QuestionKind.STEADY_SPIN}
 
 
 def _cases():
@@ -62,8 +63,12 @@ def test_numeric_route_agrees_with_exact(path) -> None:
         assert n.route.value == "numeric" and n.error_estimate is not None
         if question.kind is QuestionKind.MODES:
             _same_modes(e, n)
-        else:
+        elif question.kind is QuestionKind.EQUILIBRIA:
             _same_equilibria(e, n, model)
+        elif question.kind is QuestionKind.INERTIA:
+            _same_numbers(e.values["principal_moments"], n.answers.principal_moments, n.error_estimate)
+        else:
+            _same_numbers(sorted(e.values["moments"]), n.answers.moments, n.error_estimate)
         compared += 1
     assert compared or all(s.error for s in exact.solutions), "nothing compared"
 
@@ -78,6 +83,12 @@ def _same_modes(e, n) -> None:
     for shape_e, shape_n, lam in zip(e.values["shapes"], n.answers.shapes, want):
         if shape_e and all(x is not None for x in shape_e) and want.count(lam) == 1:
             assert all(abs(a - b) <= 1e-8 * max(1.0, abs(a)) for a, b in zip(shape_e, shape_n))
+
+
+def _same_numbers(want, got, estimate: float) -> None:
+    assert len(want) == len(got)
+    for w, g in zip(want, got):
+        assert abs(w - g) <= max(10 * estimate, 1e-14) * abs(w), (w, g, estimate)
 
 
 def _same_equilibria(e, n, model) -> None:

@@ -1,0 +1,87 @@
+"""Steady spin, the floating-point route: the principal moments J₁ ≤ J₂ ≤ J₃ and axes
+of J_G in floats (numpy.linalg.eigh); a steady spin is a spin Ω about a principal axis
+(Euler's equations, J ω̇ + ω × J ω = 0, need ω × J ω = 0). Linearizing about Ω e_k:
+
+    (J_k − J_i)(J_k − J_j) > 0: stable, the perturbation turns at Ω √((J_k − J_i)(J_k − J_j)/(J_i J_j));
+    (J_k − J_i)(J_k − J_j) < 0: unstable, it grows at Ω √(−(J_k − J_i)(J_k − J_j)/(J_i J_j)).
+
+Rates are given per unit spin (Ω = 1). Moments equal to within EQUAL_TOL (relative)
+are taken as equal: a symmetric body, whose spin about the symmetry axis is stable and
+whose equatorial spins are neutral, or a spherical one, neutral about every axis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import Relation, Route, Solution
+from rbdsolve.solvers.common import Options, require_values
+from rbdsolve.solvers.inertia_numeric import principal_floats
+from rbdsolve.solvers.numeric_model import to_floats
+from rbdsolve.solvers.steady_spin import Stability
+
+EQUAL_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class NumericSpin:
+    axis: tuple[float, float, float]  # unit principal axis in body axes
+    moment: float
+    stability: Stability
+    rate: float | None  # per unit spin: turning (stable), growth (unstable), precession (symmetric)
+
+
+@dataclass(frozen=True)
+class NumericSteadySpinAnswers:
+    body: str
+    moments: tuple[float, float, float]  # ascending
+    spins: tuple[NumericSpin, ...]
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_values(model, "the numeric route")
+    name = question.options.body
+    body = next(b for b in model.bodies if b.name == name)
+    J, axes, estimate = principal_floats(to_floats(body.inertia, model.values))
+    if np.min(J) <= EQUAL_TOL * np.max(J):
+        raise UnsolvedError(f"body '{name}' has a zero principal moment: Euler's equations need three positive "
+                            "moments")
+    spins = tuple(_spin(k, J, axes) for k in range(3))
+    answers = NumericSteadySpinAnswers(name, tuple(float(x) for x in J), spins)
+    steps = (
+        st.result("Principal moments (numpy.linalg.eigh); steady spins are spins about the principal axes:",
+                  *[Relation(sp.Symbol(f"J_{k + 1}"), sp.Float(J[k], 15)) for k in range(3)]),
+        *[st.result(f"Spin about e{k + 1} = {tuple(round(x, 12) for x in s.axis)}: {s.stability.value}"
+                    + (f", rate {s.rate:.6g} Ω" if s.rate is not None else ""))
+          for k, s in enumerate(spins)],
+    )
+    return Solution("steady_spin", Route.NUMERIC, answers, steps, error_estimate=estimate)
+
+
+def _spin(k: int, J: np.ndarray, axes: np.ndarray) -> NumericSpin:
+    i, j = (n for n in range(3) if n != k)
+    axis, tol = tuple(float(x) for x in axes[:, k]), EQUAL_TOL * np.max(J)
+    if abs(J[k] - J[i]) <= tol or abs(J[k] - J[j]) <= tol:  # equatorial spin of a symmetric body, or a sphere
+        return NumericSpin(axis, float(J[k]), Stability.NEUTRAL, None)
+    product = (J[k] - J[i]) * (J[k] - J[j])
+    rate = float(np.sqrt(abs(product) / (J[i] * J[j])))
+    if product < 0:
+        return NumericSpin(axis, float(J[k]), Stability.UNSTABLE, rate)
+    precession = _symmetric_axis(k, J, tol)
+    return NumericSpin(axis, float(J[k]), Stability.STABLE, precession if precession is not None else rate)
+
+
+def _symmetric_axis(k: int, J: np.ndarray, tol: float) -> float | None:
+    """About the symmetry axis (the other two moments equal) the perturbation precesses
+    at (J_k − J_i)/J_i per unit spin."""
+    i, j = (n for n in range(3) if n != k)
+    if abs(J[i] - J[j]) <= tol:
+        return float((J[k] - J[i]) / J[i])
+    return None
