@@ -28,6 +28,7 @@ Examples:
   rbdsolve solve problems/sg2150-2015-10-29/          # a whole exam, in file order
   rbdsolve solve p1.yaml --format json | jq .results  # JSON Lines for scripts
   rbdsolve solve p1.yaml --set m=2 --set r=0.5 --set g=9.81
+  rbdsolve solve p1.yaml --route numeric --set m=1 --set r=1 --set g=9.81
   rbdsolve solve p1.yaml --format latex -o p1.tex
 
 \b
