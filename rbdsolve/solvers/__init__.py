@@ -21,6 +21,7 @@ from rbdsolve.solvers import (
     equilibria,
     equilibria_numeric,
     impact,
+    impact_numeric,
     inertia,
     inertia_numeric,
     modes,
@@ -30,7 +31,7 @@ from rbdsolve.solvers import (
     steady_spin_numeric,
 )
 from rbdsolve.solvers.budget import OutOfTime, within
-from rbdsolve.solvers.common import Options, RouteChoice, float_tree, numeric
+from rbdsolve.solvers.common import Options, RouteChoice, numeric
 from rbdsolve.solvers.energies import summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
 
@@ -47,7 +48,7 @@ FAMILIES = {
     QuestionKind.EQUILIBRIA: Family(equilibria.solve, equilibria_numeric.solve),
     QuestionKind.MODES: Family(modes.solve, modes_numeric.solve),
     QuestionKind.INERTIA: Family(inertia.solve, inertia_numeric.solve),
-    QuestionKind.IMPACT: Family(impact.solve),
+    QuestionKind.IMPACT: Family(impact.solve, impact_numeric.solve),
     QuestionKind.STEADY_SPIN: Family(steady_spin.solve, steady_spin_numeric.solve),
     QuestionKind.STEADY_MOTION: Family(steady_motion.solve),
 }
@@ -62,10 +63,7 @@ def solve_question(question: Question, model: Model, options: Options) -> Soluti
         solution = _routed(question, model, options)
     except (UnsolvedError, OutOfTime) as exc:
         solution = Solution(question.kind.value, _route_of(options), None, (), error=str(exc))
-    if solution.route is Route.NUMERIC:
-        values = float_tree(solution.answers) if solution.answers is not None else {}
-    else:
-        values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
+    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     return replace(solution, values=values or {}, seconds=time.perf_counter() - start)
 
 

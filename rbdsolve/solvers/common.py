@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from enum import Enum
@@ -161,6 +162,8 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
 
 
 def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | None:
+    if isinstance(value, float):
+        return value  # a numeric route's answer
     if not isinstance(value, sp.Basic):
         return None  # enums, text: not numbers
     number = value.xreplace(subs)
@@ -183,7 +186,17 @@ def require_values(model, what: str) -> None:
                             "('values:' in the file, or --set NAME=VALUE)")
 
 
-def float_tree(value: object) -> object:
-    """An answers tree of a numeric route as JSON-ready numbers (enums and text kept)."""
-    return map_leaves(value, lambda leaf: float(leaf) if isinstance(leaf, (float, int)) and
-                      not isinstance(leaf, bool) else None)
+def with_floats(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
+    """The same answers (dataclasses, mappings, tuples kept) with every sympy leaf put
+    to a float at the parameter values (None where that is not a real number)."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return dataclasses.replace(value, **{f.name: with_floats(getattr(value, f.name), subs)
+                                            for f in dataclasses.fields(value)})
+    if isinstance(value, Mapping):
+        return {k: with_floats(v, subs) for k, v in value.items()}
+    if isinstance(value, tuple):
+        return tuple(with_floats(v, subs) for v in value)
+    if isinstance(value, sp.Basic):
+        number = _number(value, subs)
+        return number if isinstance(number, float) else None
+    return value

@@ -59,16 +59,27 @@ class _Show:
 
 def impact_steps(work: ImpactEquations, answers: ImpactAnswers) -> tuple[Step, ...]:
     show = _Show(work)
+    out = equation_steps(work)
+    out.append(st.result("Solving these linear equations:",
+                         *[Relation(show.time(u), show.scalar(work.solution[u])) for u in work.solution]))
+    out += _after(work, show, answers)
+    return tuple(out)
+
+
+def equation_steps(work: ImpactEquations) -> list[Step]:
+    """From the velocities at the instant to the impulse equations, before solving."""
+    show = _Show(work)
     out = [*_given(work, show), _velocities(work, show),
            st.definition("Kinetic energy at the instant:", Relation(sp.Symbol("T"), show.scalar(work.now.T))),
            _partial_velocities(work, show), _impulses(work, show), _lagrange(work, show)]
     restitution = _restitution(work, show)
     if restitution.math:
         out.append(restitution)
-    out.append(st.result("Solving these linear equations:",
-                         *[Relation(show.time(u), show.scalar(work.solution[u])) for u in work.solution]))
-    out += _after(work, show, answers)
-    return tuple(out)
+    return out
+
+
+def unknown_name(work: ImpactEquations, unknown: sp.Symbol) -> sp.Expr:
+    return _Show(work).time(unknown)
 
 
 def _given(work: ImpactEquations, show: _Show) -> list[Step]:

@@ -1,0 +1,66 @@
+"""Impact, the floating-point route: the same impulse equations as the exact route
+(Lagrange's equations for impact and Newton's restitution laws, linear in the velocities
+after and the unknown impulses), with the parameter values put in and solved in floats
+by LU with partial pivoting (numpy.linalg.solve).
+
+Error estimate: the forward error of a backward-stable solve, n ε cond(A) (Higham,
+Accuracy and Stability of Numerical Algorithms, §7.1). A condition number past
+1/(n ε) means the equations are singular in floating point: refused.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import ImpactOptions, Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import Relation, Route, Solution
+from rbdsolve.solvers.common import Options, require_values, with_floats
+from rbdsolve.solvers.impact import ImpactEquations, blows, instant
+from rbdsolve.solvers.impact_steps import equation_steps, unknown_name
+from rbdsolve.solvers.numeric_model import to_floats
+
+EPS = float(np.finfo(float).eps)
+
+
+class NumericImpactEquations(ImpactEquations):
+    """The exact route's equations, solved in floats; ``condition`` is cond(A)."""
+
+    condition: float = float("nan")
+
+    def _solve(self) -> dict[sp.Symbol, sp.Expr]:
+        unknowns = [*self.final, *self.sizes]
+        equations = [*self.lagrange(), *self.restitution_equations()]
+        A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
+        Af, bf = to_floats(A, self.model.values), to_floats(b, self.model.values)
+        self.condition = float(np.linalg.cond(Af))
+        if not np.isfinite(self.condition) or self.condition * len(unknowns) * EPS >= 1:
+            raise UnsolvedError(f"the impulse equations are singular in floating point (condition number "
+                                f"{self.condition:.3g}): a coordinate carries no inertia at the instant, or "
+                                "two collisions push the same way")
+        x = np.linalg.solve(Af, bf).ravel()
+        return {u: sp.Float(float(v), 17) for u, v in zip(unknowns, x)}
+
+
+    def centre_of_percussion(self, support):
+        if self.opts.centre_of_percussion is None:
+            return None, None
+        return None, ("the centre of percussion solves for a parameter: the exact route finds it "
+                      "(--route exact)")
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_values(model, "the numeric route")
+    opts: ImpactOptions = question.options
+    work = NumericImpactEquations(model, opts, instant(model, opts), blows(model, opts))
+    answers, warnings = work.results()
+    estimate = len(work.solution) * EPS * work.condition
+    values = ", ".join(f"{k} = {float(v):g}" for k, v in model.values.items())
+    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve, condition number "
+                       f"{work.condition:.3g}):",
+                       *[Relation(unknown_name(work, u), sp.Float(float(v), 15)) for u, v in work.solution.items()])
+    return Solution("impact", Route.NUMERIC, with_floats(answers, model.values),
+                    (*equation_steps(work), solved), warnings=warnings, error_estimate=estimate)
