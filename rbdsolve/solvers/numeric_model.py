@@ -76,7 +76,7 @@ def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr
 def compiled_gradient(model: Model):
     """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions."""
     V = potential_energy(model).total.xreplace(dict(model.values))
-    q = sp.symbols(f"x0:{len(model.q)}")
+    q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
     grad = [sp.diff(V, x) for x in q]
     H = hessian(V, tuple(q))
