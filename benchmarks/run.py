@@ -1,0 +1,286 @@
+"""The benchmark: speed against accuracy, per family, route and size.
+
+    python3 -m benchmarks.run [--quick] [--out benchmarks/results]
+
+Writes results.json and the charts (PNG and SVG) into --out. Every measurement runs in
+a child process with a timeout; a size that times out is recorded as "> T s" and the
+family/route stops growing there. See docs/performance.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+from benchmarks.families import FAMILIES
+
+ROOT = Path(__file__).resolve().parent.parent
+SEED_P1 = ROOT / "problems" / "sg2150-2015-10-29" / "p1-two-rods.yaml"
+SEED_CHECK = ROOT / "problems" / "sg2150-2015-10-29"
+HEAVY = ("sympy", "numpy", "scipy", "mpmath", "rich")
+
+
+@dataclass(frozen=True)
+class Plan:
+    """Sizes per family and route, the per-measurement timeout and the repeats."""
+
+    sizes: dict[tuple[str, str], tuple[int, ...]]
+    timeout: float
+    baseline_sizes: tuple[int, ...]
+    baseline_timeout: float
+    repeats: int = 3
+    whole_process_limit: float = 5.0  # whole-process timings only where one solve takes less
+
+
+FULL = Plan({
+    ("chain_points", "exact"): (1, 2, 3, 5, 8, 10),
+    ("chain_points", "numeric"): (1, 2, 3, 5, 8, 10, 15, 20, 30, 50),
+    ("chain_rods", "exact"): (1, 2, 3, 5, 8),
+    ("chain_rods", "numeric"): (1, 2, 3, 5, 10),
+    ("springs", "exact"): (1, 2, 5, 10),
+    ("springs", "numeric"): (1, 2, 5, 10, 20),
+    ("composite", "exact"): (1, 3, 9, 27),
+    ("composite", "numeric"): (1,),
+    ("impact", "exact"): (1, 2, 5),
+    ("impact", "numeric"): (1,),
+    ("spin", "exact"): (1, 2, 4, 8),
+    ("spin", "numeric"): (1,),
+}, timeout=60.0, baseline_sizes=(1, 2, 3, 5, 8, 10), baseline_timeout=100.0, whole_process_limit=3.0)
+
+QUICK = Plan({key: tuple(n for n in sizes if n <= 2) for key, sizes in FULL.sizes.items()},
+             timeout=30.0, baseline_sizes=(1, 2), baseline_timeout=30.0, repeats=3,
+             whole_process_limit=2.0)
+
+
+@dataclass(frozen=True)
+class RouteMeasurement:
+    """One family/size/route: in-process median of solve_problem (load+build+solve), the
+    question's own seconds, whole-process median (None where not measured), relative
+    error against the 50-digit reference, the route's own error estimate, and a status
+    ("ok", "timeout", "no numeric route yet", or the solver's error)."""
+
+    family: str
+    size: int
+    route: str
+    status: str
+    median_s: float | None = None
+    samples_s: tuple[float, ...] = ()
+    solution_s: float | None = None
+    whole_process_s: float | None = None
+    relative_error: float | None = None
+    error_estimate: float | None = None
+    timeout_s: float | None = None
+
+
+@dataclass(frozen=True)
+class BaselineMeasurement:
+    """sympy.physics.mechanics on the n-link point-mass chain: seconds of each phase in
+    its process (compute = equations + linearize + exact eigenvalues), the whole process
+    and the relative errors of its exact and numeric eigenvalues."""
+
+    method: str
+    n: int
+    status: str
+    equations_s: float | None = None
+    linearize_s: float | None = None
+    eigen_exact_s: float | None = None
+    eigen_numeric_s: float | None = None
+    compute_s: float | None = None
+    whole_process_s: float | None = None
+    relative_error_exact: float | None = None
+    relative_error_numeric: float | None = None
+    timeout_s: float | None = None
+
+
+@dataclass(frozen=True)
+class StartupMeasurement:
+    """A whole command's wall time (median of the samples) and which heavy modules its
+    process had imported when it ended."""
+
+    label: str
+    command: tuple[str, ...]
+    median_s: float
+    samples_s: tuple[float, ...]
+    heavy_modules: tuple[str, ...] | None = None
+
+
+def _python() -> list[str]:
+    return [sys.executable]
+
+
+def _wall(command: list[str], timeout: float, cwd: Path = ROOT) -> tuple[float, subprocess.CompletedProcess]:
+    """Wall-clock seconds of one child process (perf_counter around subprocess.run)."""
+    start = time.perf_counter()
+    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    return time.perf_counter() - start, done
+
+
+def _median_wall(command: list[str], repeats: int, timeout: float) -> tuple[float, tuple[float, ...]]:
+    samples = tuple(_wall(command, timeout)[0] for _ in range(repeats))
+    return statistics.median(samples), samples
+
+
+def measure_route(family: str, size: int, route: str, plan: Plan, files: Path) -> RouteMeasurement:
+    """In-process timing in a child (benchmarks.measure), then, if one solve is short,
+    the whole process `python -m rbdsolve solve FILE --route R --format json`."""
+    command = _python() + ["-m", "benchmarks.measure", family, str(size), route, str(plan.repeats)]
+    try:
+        _, done = _wall(command, plan.timeout)
+    except subprocess.TimeoutExpired:
+        return RouteMeasurement(family, size, route, "timeout", timeout_s=plan.timeout)
+    if done.returncode != 0:
+        return RouteMeasurement(family, size, route, "failed: " + done.stderr.strip().splitlines()[-1][:200])
+    data = json.loads(done.stdout)
+    if data["error"]:
+        status = "no numeric route yet" if "no numeric route" in data["error"] else data["error"][:200]
+        return RouteMeasurement(family, size, route, status)
+    whole = None
+    if data["median"] < plan.whole_process_limit:
+        path = files / f"{family}-{size}.yaml"
+        path.write_text(FAMILIES[family](size).text)
+        whole, _ = _median_wall(_python() + ["-m", "rbdsolve", "solve", str(path), "--route", route,
+                                             "--format", "json"], plan.repeats, plan.timeout)
+    return RouteMeasurement(family, size, route, "ok", data["median"], tuple(data["samples"]),
+                            data["solution_seconds"], whole, data["relative_error"], data["error_estimate"])
+
+
+def measure_routes(plan: Plan, files: Path) -> list[RouteMeasurement]:
+    """Every family and route over its sizes; a route stops growing after a timeout."""
+    out = []
+    for (family, route), sizes in plan.sizes.items():
+        for size in sizes:
+            m = measure_route(family, size, route, plan, files)
+            out.append(m)
+            _log(f"{family:13s} {route:8s} n={size:3d} {m.status:22s} "
+                 f"in-process {_fmt(m.median_s)}  whole {_fmt(m.whole_process_s)}  rel.err {m.relative_error}")
+            if m.status != "ok":
+                break
+    return out
+
+
+def measure_baseline(method: str, n: int, timeout: float) -> BaselineMeasurement:
+    """One run of benchmarks.baseline in its own process, with a timeout."""
+    try:
+        whole, done = _wall(_python() + ["-m", "benchmarks.baseline", method, str(n)], timeout)
+    except subprocess.TimeoutExpired:
+        return BaselineMeasurement(method, n, "timeout", timeout_s=timeout)
+    if done.returncode != 0:
+        return BaselineMeasurement(method, n, "failed: " + done.stderr.strip().splitlines()[-1][:200])
+    d = json.loads(done.stdout)
+    ref = _chain_reference(n)
+    return BaselineMeasurement(method, n, "ok", d["equations"], d["linearize"], d["eigen_exact"],
+                               d["eigen_numeric"], d["equations"] + d["linearize"] + d["eigen_exact"], whole,
+                               _rel(d["eigenvalues_exact"], ref), _rel(d["eigenvalues_numeric"], ref))
+
+
+def _chain_reference(n: int) -> list:
+    import sympy as sp
+
+    from rbdsolve.solvers.modes_numeric import reference_eigenvalues
+
+    case = FAMILIES["chain_points"](n)
+    rational = [[[sp.Rational(x.numerator, x.denominator) for x in row] for row in A] for A in (case.K, case.M)]
+    return reference_eigenvalues(*rational)
+
+
+def _rel(values, ref) -> float:
+    import mpmath
+
+    with mpmath.workdps(40):
+        got = sorted(mpmath.mpf(str(x)) for x in values)
+        return float(max(abs(a - b) / abs(b) for a, b in zip(got, ref)))
+
+
+def measure_baselines(plan: Plan) -> list[BaselineMeasurement]:
+    """LagrangesMethod and KanesMethod over the baseline sizes, one run each (they are
+    long; a rerun of the benchmark is the repeat), stopping after a timeout."""
+    out = []
+    for method in ("lagrange", "kane"):
+        for n in plan.baseline_sizes:
+            m = measure_baseline(method, n, plan.baseline_timeout)
+            out.append(m)
+            _log(f"mechanics     {method:8s} n={n:3d} {m.status:22s} compute {_fmt(m.compute_s)}  "
+                 f"whole {_fmt(m.whole_process_s)}")
+            if m.status != "ok":
+                break
+    return out
+
+
+def _imports_of(args: list[str]) -> tuple[str, ...]:
+    """The heavy modules loaded by running the rbdsolve CLI with ``args`` in a child:
+    main() is called in-process and sys.modules inspected when it exits."""
+    probe = ("import sys\nfrom rbdsolve.cli import main\n"
+             "try:\n    main(%r)\nexcept SystemExit:\n    pass\n"
+             "print('HEAVY', ','.join(m for m in %r if m in sys.modules), file=sys.stderr)\n") % (args, HEAVY)
+    _, done = _wall(_python() + ["-c", probe], 120)
+    line = [x for x in done.stderr.splitlines() if x.startswith("HEAVY")][-1]
+    return tuple(x for x in line.split(" ", 1)[1].split(",") if x)
+
+
+def measure_startup(plan: Plan) -> list[StartupMeasurement]:
+    """Whole-process medians: python -c "import sympy", rbdsolve --help, rbdsolve check,
+    rbdsolve solve p1 --format json, and the plain mechanics script for p1."""
+    repeats = max(plan.repeats, 5)
+    cases = [
+        ("python -c 'import sympy'", _python() + ["-c", "import sympy"], None),
+        ("python -c 'pass'", _python() + ["-c", "pass"], None),
+        ("rbdsolve --help", _python() + ["-m", "rbdsolve", "--help"], ["--help"]),
+        ("rbdsolve check sg2150-2015-10-29/", _python() + ["-m", "rbdsolve", "check", str(SEED_CHECK)],
+         ["check", str(SEED_CHECK)]),
+        ("rbdsolve solve p1 --format json", _python() + ["-m", "rbdsolve", "solve", str(SEED_P1), "--format", "json"],
+         ["solve", str(SEED_P1), "--format", "json"]),
+        ("mechanics script for p1", _python() + [str(ROOT / "benchmarks" / "seed_p1_mechanics.py")], None),
+    ]
+    out = []
+    for label, command, cli_args in cases:
+        median, samples = _median_wall(command, repeats, 300)
+        heavy = _imports_of(cli_args) if cli_args is not None else None
+        out.append(StartupMeasurement(label, tuple(command), median, samples, heavy))
+        _log(f"startup       {label:36s} {_fmt(median)}  heavy: {heavy}")
+    return out
+
+
+def _fmt(x: float | None) -> str:
+    return "   -   " if x is None else f"{x:7.3f}s"
+
+
+def _log(text: str) -> None:
+    print(text, flush=True)
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes only (a minute or two)")
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "results"))
+    parser.add_argument("--skip-baselines", action="store_true", help="leave out sympy.physics.mechanics")
+    args = parser.parse_args(argv)
+    plan = QUICK if args.quick else FULL
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    started = time.perf_counter()
+    with tempfile.TemporaryDirectory() as files:
+        routes = measure_routes(plan, Path(files))
+    baselines = [] if args.skip_baselines else measure_baselines(plan)
+    startup = measure_startup(plan)
+    from benchmarks.report import targets, write_charts, write_tables
+
+    result = {"plan": "quick" if args.quick else "full", "python": sys.version.split()[0],
+              "routes": [asdict(m) for m in routes], "baselines": [asdict(m) for m in baselines],
+              "startup": [asdict(m) for m in startup],
+              "targets": [asdict(t) for t in targets(routes, baselines, startup)],
+              "wall_seconds": time.perf_counter() - started}
+    (out / "results.json").write_text(json.dumps(result, indent=1))
+    write_tables(result, out / "tables.md")
+    write_charts(result, out)
+    _log(f"wrote {out}/results.json, tables.md and charts in {time.perf_counter() - started:.0f} s")
+
+
+if __name__ == "__main__":
+    main()
