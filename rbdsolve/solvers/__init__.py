@@ -32,7 +32,7 @@ from rbdsolve.solvers import (
 )
 from rbdsolve.solvers.budget import OutOfTime, within
 from rbdsolve.solvers.common import Options, RouteChoice, numeric
-from rbdsolve.solvers.energies import summarize_model
+from rbdsolve.solvers.energies import coordinates_only, summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
 
 @dataclass(frozen=True)
@@ -120,7 +120,7 @@ def _solve(problem: Problem, build: Callable[[], Model], options: Options) -> Pr
         with within(options.budget, "the model (T and V)"):
             model = build()
             model = model.with_values(options.values) if options.values else model
-            summary = summarize_model(model)
+            summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
     except OutOfTime as exc:
         raise UnsolvedError(f"{problem.file}: {exc}") from None
     solutions = tuple(solve_question(q, model, options) for q in problem.questions)

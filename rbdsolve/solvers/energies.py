@@ -25,6 +25,17 @@ def present(expr: sp.Expr, model: Model) -> Math:
     return scaled_sum(terms, set(model.symbols.parameters.values()))
 
 
+def coordinates_only(model: Model) -> ModelSummary:
+    """The model section of the numeric route: the coordinates; T and V are not
+    expanded (the solvers take M and K at a configuration, not T and V in full)."""
+    if not model.q:
+        return ModelSummary((), None, None, ())
+    q = sp.ImmutableMatrix([model.state.functions()])
+    return ModelSummary(model.state.functions(), None, None,
+                        (st.given("Generalized coordinates (T and V are not expanded on the numeric route):",
+                                  Relation(sp.Symbol("q"), q)),))
+
+
 def summarize_model(model: Model) -> ModelSummary:
     if not model.q:
         return ModelSummary((), None, None, ())
