@@ -127,10 +127,10 @@ def _check_supported(problem: Problem) -> None:
     """Refuse what this route does not model, with the reason."""
     if problem.triads:
         raise NotNumeric("the scene uses triads (3D frames by turns): use the symbolic route")
-    if problem.frames:
-        raise NotNumeric("the scene has moving frames: use the symbolic route")
     if problem.prescribed:
         raise NotNumeric("the scene has prescribed motion (functions of time): use the symbolic route")
+    if problem.frames:
+        raise NotNumeric("the scene has moving frames: use the symbolic route")
     for point in problem.points:
         if point.position is None:
             raise NotNumeric(f"point '{point.name}' is given by its velocity at an instant, not a position")
