@@ -196,10 +196,7 @@ def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Ma
     """A body's mass properties combined from its parts; its centre of mass is its
     origin plus the parts' combined centre, turned with the body: r_G = r_at + R c.
     A body at an instant has v_G and ω given instead (a scalar ω turns about z)."""
-    props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
-    if props.mass.is_nonpositive:
-        raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
-                         "weigh as much as the parts or more", body.loc)
+    props = body_mass_properties(body, names)
     if body.velocity is not None:
         velocity = _affine_in_rates(rates.vector(body.velocity), body.velocity, rates)
         w = body.angular_velocity
@@ -215,6 +212,17 @@ def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Ma
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     position = names.vector(body.at) + rotation * props.centre
     return RigidBody(body.name, props.mass, position, rotation, angle, props.inertia, body)
+
+
+def body_mass_properties(body: Body, names: Symbols) -> MassProperties:
+    """A body's mass, centre of mass (from its origin, in body axes) and J about that
+    centre, combined from its parts (:func:`rbdsolve.model.inertia.combine`). With
+    ``names`` mapping parameters to numbers, the same formulas give numbers."""
+    props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
+    if props.mass.is_nonpositive:
+        raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
+                         "weigh as much as the parts or more", body.loc)
+    return props
 
 
 def part_properties(part: Part, names: Symbols) -> MassProperties:
