@@ -117,14 +117,18 @@ def _normalized(v: np.ndarray) -> tuple[float, ...]:
     return tuple(float(x / first) for x in v)
 
 
+MAX_SHOWN = 8  # larger matrices and mode shapes are left to the JSON answers
+
+
 def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...]:
-    M, K = sp.ImmutableMatrix(a.M), sp.ImmutableMatrix(a.K)
+    n = len(a.eigenvalues)
+    matrices = ((Relation(sp.Symbol("M"), _floats(a.M)), Relation(sp.Symbol("K"), _floats(a.K)))
+                if n <= MAX_SHOWN else ())
     steps = [
         st.given("Small motions q = q₀ + u about the equilibrium",
                  configuration(model.state.functions(), [sp.Float(v, 15) for v in a.about.values()])),
-        st.equation(f"Linearized equations M u\u0308 + K u = 0 at the equilibrium, in numbers ({how}):",
-                    Relation(sp.Symbol("M"), M.applyfunc(lambda x: sp.Float(x, 15))),
-                    Relation(sp.Symbol("K"), K.applyfunc(lambda x: sp.Float(x, 15)))),
+        st.equation(f"Linearized equations M u\u0308 + K u = 0 at the equilibrium, in numbers ({how}"
+                    + (f"; M and K are {n}×{n}, in the JSON answers):" if n > MAX_SHOWN else "):"), *matrices),
         st.equation("The generalized symmetric eigenproblem K a = λ M a, by Cholesky factorization of M "
                     "(scipy.linalg.eigh):",
                     *[Relation(sp.Symbol(f"lambda_{i}"), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
@@ -139,6 +143,11 @@ def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...
             text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
         else:
             text = f"Mode {i}: λ = 0 within round-off, neutral:"
-        rel.append(Relation(sp.Symbol(f"a_{i}"), sp.ImmutableMatrix([[sp.Float(x, 15) for x in shape]])))
+        if n <= MAX_SHOWN:
+            rel.append(Relation(sp.Symbol(f"a_{i}"), _floats((shape,))))
         steps.append(st.result(text, *rel))
     return tuple(steps)
+
+
+def _floats(rows) -> sp.ImmutableMatrix:
+    return sp.ImmutableMatrix([[sp.Float(x, 15) for x in row] for row in rows])

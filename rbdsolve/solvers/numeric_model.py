@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from fractions import Fraction
 from typing import Mapping
 
 import numpy as np
@@ -25,10 +26,13 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene
 from rbdsolve.problem.schema import Question
 
 GRID_POINTS = 24
 MAX_STARTS = 4096
+SAMPLE_SEED = 20151029  # fixed: the same starts, and the same answers, every run
+SCALE_SAMPLES = 16
 SEARCH_SCALE = 10.0
 ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
 MERGE_TOL = 1e-6
@@ -45,11 +49,28 @@ def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndar
 
 
 def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, np.ndarray, str]:
-    """M and K at the configuration ``about`` (coordinate name -> value), as floats."""
+    """M and K at the configuration ``about`` (coordinate name -> value), as floats: by
+    automatic differentiation on the scene's own expressions where the scene allows
+    (``NumericScene``), else from the exact Jacobians and Hessian, rounded once."""
+    scene = numeric_scene(model)
+    if scene is not None:
+        q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
+        _, _, K = scene.potential(q0)
+        return scene.mass_matrix(q0), (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
     K = to_floats(stiffness_matrix(potential_energy(model).total, model.q, at), model.values)
     return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
+
+
+def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
+    """The scene for floating-point evaluation, or None where it needs the symbolic model
+    (3D orientations, frames, prescribed motion, …: see NotNumeric)."""
+    values = {str(k): Fraction(int(v.p), int(v.q)) for k, v in model.values.items()}
+    try:
+        return NumericScene.build(model.problem, values, arithmetic)
+    except NotNumeric:
+        return None
 
 
 def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr]:
@@ -60,9 +81,10 @@ def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr
     if about is not None:
         at = {name: model.symbols.scalar(e) for name, (_, e) in zip(names, about)}
         point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
-        g, _ = compiled_gradient(model)
+        g, H = compiled_gradient(model)
         residual = np.asarray(g(point), dtype=float)
-        if np.max(np.abs(residual)) > ROOT_TOL * gradient_scale(model, g):
+        scale = max(np.max(np.abs(np.asarray(H(point), dtype=float))), 1e-300)  # |∂V/∂q| per unit of q
+        if np.max(np.abs(residual)) > ROOT_TOL * scale:
             (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
             raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
         return at
@@ -74,7 +96,11 @@ def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr
 
 
 def compiled_gradient(model: Model):
-    """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions."""
+    """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions:
+    from the numeric scene where it applies, else compiled from the symbolic V."""
+    scene = numeric_scene(model)
+    if scene is not None:
+        return (lambda x: scene.potential(x)[1]), (lambda x: scene.potential(x)[2])
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
@@ -85,7 +111,10 @@ def compiled_gradient(model: Model):
 
 def gradient_scale(model: Model, g) -> float:
     """The size of ∂V/∂q over the search box: roots are judged relative to it."""
-    samples = [np.max(np.abs(np.asarray(g(p), dtype=float))) for p in _starts(model, 5)]
+    box = _box(model)
+    points = np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box)))
+    samples = [np.max(np.abs(np.asarray(g(np.array([lo + x * (hi - lo) for x, (lo, hi) in zip(p, box)])),
+                                        dtype=float)), initial=0.0) for p in points]
     return max(max(samples, default=1.0), 1e-300)
 
 
@@ -146,10 +175,17 @@ def _box(model: Model) -> list[tuple[float, float]]:
 
 
 def _starts(model: Model, per_axis: int) -> list[np.ndarray]:
-    n = len(model.q)
-    per_axis = max(2, min(per_axis, int(MAX_STARTS ** (1 / n))))
-    axes = [np.linspace(lo, hi, per_axis, endpoint=False) + (hi - lo) / (2 * per_axis) for lo, hi in _box(model)]
-    return [np.array(p) for p in itertools.product(*axes)]
+    """A grid of per_axis points on each coordinate, cell-centred, while it has at most
+    MAX_STARTS points; in more dimensions MAX_STARTS points of a fixed pseudo-random
+    sample of the box instead (the same every run)."""
+    n, box = len(model.q), _box(model)
+    per_axis = min(per_axis, int(MAX_STARTS ** (1 / n)))
+    if per_axis >= 2:
+        axes = [np.linspace(lo, hi, per_axis, endpoint=False) + (hi - lo) / (2 * per_axis) for lo, hi in box]
+        return [np.array(p) for p in itertools.product(*axes)]
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    sample = np.random.default_rng(SAMPLE_SEED).random((MAX_STARTS, n))
+    return list(low + sample * (high - low))
 
 
 def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:
