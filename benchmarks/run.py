@@ -42,16 +42,16 @@ class Plan:
 FULL = Plan({
     ("chain_points", "exact"): (1, 2, 3, 5, 8, 10),
     ("chain_points", "numeric"): (1, 2, 3, 5, 8, 10, 15, 20, 30, 50),
-    ("chain_rods", "exact"): (1, 2, 3, 5, 8),
-    ("chain_rods", "numeric"): (1, 2, 3, 5, 10),
+    ("chain_rods", "exact"): (1, 2, 3, 5, 8, 10),
+    ("chain_rods", "numeric"): (1, 2, 3, 5, 10, 20, 30, 50),
     ("springs", "exact"): (1, 2, 5, 10),
-    ("springs", "numeric"): (1, 2, 5, 10, 20),
+    ("springs", "numeric"): (1, 2, 5, 10, 20, 50),
     ("composite", "exact"): (1, 3, 9, 27),
-    ("composite", "numeric"): (1,),
+    ("composite", "numeric"): (1, 3, 9, 27),
     ("impact", "exact"): (1, 2, 5),
-    ("impact", "numeric"): (1,),
+    ("impact", "numeric"): (1, 2, 5, 10),
     ("spin", "exact"): (1, 2, 4, 8),
-    ("spin", "numeric"): (1,),
+    ("spin", "numeric"): (1, 2, 4, 8),
 }, timeout=60.0, baseline_sizes=(1, 2, 3, 5, 8, 10), baseline_timeout=100.0, whole_process_limit=3.0)
 
 QUICK = Plan({key: tuple(n for n in sizes if n <= 2) for key, sizes in FULL.sizes.items()},

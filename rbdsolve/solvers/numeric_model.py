@@ -55,12 +55,36 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     scene = numeric_scene(model)
     if scene is not None:
         q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
-        _, _, K = scene.potential(q0)
-        return scene.mass_matrix(q0), (K + K.T) / 2, "by automatic differentiation of the scene"
+        K = finite(lambda x: scene.potential(x)[2])(q0)
+        M = finite(scene.mass_matrix)(q0)
+        return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
     K = to_floats(stiffness_matrix(potential_energy(model).total, model.q, at), model.values)
     return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
+
+
+def finite(evaluate):
+    """``evaluate`` at a configuration, as a float array, or an UnsolvedError where the
+    scene has no finite value there (a spring of zero length has no direction)."""
+
+    def at(x):
+        try:
+            with np.errstate(all="ignore"):
+                value = np.asarray(evaluate(x), dtype=float)
+        except (ArithmeticError, ValueError) as exc:
+            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): a spring of zero "
+                                "length, or a square root or logarithm out of its domain?") from None
+        if not np.all(np.isfinite(value)):
+            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: a spring of zero length, or a "
+                                "division by zero there?")
+        return value
+
+    return at
+
+
+def _shown(x) -> str:
+    return "(" + ", ".join(f"{float(v):.6g}" for v in x) + ")"
 
 
 def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
@@ -100,21 +124,25 @@ def compiled_gradient(model: Model):
     from the numeric scene where it applies, else compiled from the symbolic V."""
     scene = numeric_scene(model)
     if scene is not None:
-        return (lambda x: scene.potential(x)[1]), (lambda x: scene.potential(x)[2])
+        return finite(lambda x: scene.potential(x)[1]), finite(lambda x: scene.potential(x)[2])
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
     grad = [sp.diff(V, x) for x in q]
     H = hessian(V, tuple(q))
-    return sp.lambdify([q], grad, "numpy"), sp.lambdify([q], H.tolist(), "numpy")
+    return finite(sp.lambdify([q], grad, "numpy")), finite(sp.lambdify([q], H.tolist(), "numpy"))
 
 
 def gradient_scale(model: Model, g) -> float:
     """The size of ∂V/∂q over the search box: roots are judged relative to it."""
     box = _box(model)
-    points = np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box)))
-    samples = [np.max(np.abs(np.asarray(g(np.array([lo + x * (hi - lo) for x, (lo, hi) in zip(p, box)])),
-                                        dtype=float)), initial=0.0) for p in points]
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    samples = []
+    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+        try:
+            samples.append(np.max(np.abs(g(low + p * (high - low))), initial=0.0))
+        except UnsolvedError:  # a sample where V has no value tells nothing of its scale
+            continue
     return max(max(samples, default=1.0), 1e-300)
 
 
@@ -132,10 +160,13 @@ def find_numeric(model: Model) -> NumericEquilibria:
     starts = _starts(model, GRID_POINTS)
     roots: list[np.ndarray] = []
     for start in starts:
-        result = root(lambda x: np.asarray(g(x), dtype=float), start,
-                      jac=lambda x: np.asarray(H(x), dtype=float), method="hybr")
-        x = _wrapped(model, _polished(result.x, g, H))
-        if np.max(np.abs(np.asarray(g(x), dtype=float))) > ROOT_TOL * scale or not _inside(model, x):
+        try:
+            result = root(g, start, jac=H, method="hybr")
+            x = _wrapped(model, _polished(result.x, g, H))
+            residual = np.max(np.abs(g(x)))
+        except UnsolvedError:  # Newton wandered where V has no value: this start finds nothing
+            continue
+        if residual > ROOT_TOL * scale or not _inside(model, x):
             continue
         if all(np.max(np.abs(_difference(model, x, y))) > MERGE_TOL for y in roots):
             roots.append(x)

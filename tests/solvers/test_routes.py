@@ -137,3 +137,29 @@ def _close(a: float, b: float, angle: bool) -> bool:
     if angle:
         d = (d + math.pi) % (2 * math.pi) - math.pi
     return abs(d) <= 1e-8 * max(1.0, abs(a))
+
+
+ZERO_LENGTH = """\
+parameters: {m: mass, l: length, k: stiffness, a: offset}
+coordinates: [theta]
+values: {m: 2, l: 1/2, k: 3, a: 1}
+points:
+  A: [a, 0]
+  P: 2*l * [cos(theta), sin(theta)]
+bodies:
+  b: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, A], natural_length: l}
+questions:
+  - modes: {about: {theta: 0}}
+"""
+
+
+def test_numeric_route_refuses_where_v_has_no_value() -> None:
+    """At θ = 0 the spring's two ends meet (|PA| = 0): its direction, and K, are undefined
+    there. The numeric route says so instead of dividing by zero (found by the fuzzer)."""
+    from rbdsolve.problem import load_text
+
+    model = build_model(load_text(ZERO_LENGTH, "scene.yaml"))
+    (solution,) = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions
+    assert solution.answers is None and "cannot be evaluated at q = (0)" in solution.error
