@@ -165,7 +165,9 @@ def build_model(problem: Problem) -> Model:
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
                   triads=triads)
-    angles = frozenset(qi for c, qi in zip(problem.coordinates, q) if _is_angle(c.kind, qi, model))
+    periodic = _periodic_coordinates(model)
+    angles = frozenset(qi for c, qi in zip(problem.coordinates, q)
+                       if c.kind is CoordinateKind.ANGLE or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
 
 
@@ -282,33 +284,41 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
     return SpringModel(spring.name, k, stretch, spring)
 
 
-def _is_angle(kind: CoordinateKind, q: sp.Expr, model: Model) -> bool:
-    """Is ``q`` a periodic angle? Declared, or (AUTO) q enters the scene only through
-    sin/cos of integer multiples of q, so the scene repeats after one turn."""
-    if kind is not CoordinateKind.AUTO:
-        return kind is CoordinateKind.ANGLE
+def _periodic_coordinates(model: Model) -> frozenset:
+    """The coordinates q that enter the scene, and only through sin/cos of integer
+    multiples of q, so the scene repeats after one turn of q (an AUTO coordinate is then
+    an angle). One walk over the scene's expressions serves every coordinate."""
     exprs = [*model.points.values(), *model._positions()]
     exprs += [b.rotation for b in model.bodies]  # ω = α̇ is periodic whatever α is
     exprs += [s.stretch for s in model.springs]
-    found = False
+    usage = _Usage(frozenset(model.q))
     for e in exprs:
         for item in (e if isinstance(e, sp.MatrixBase) else [e]):
-            ok, seen = _only_periodic(sp.sympify(item), q)
-            if not ok:
-                return False
-            found = found or seen
-    return found
+            usage.walk(sp.sympify(item))
+    return frozenset(usage.seen - usage.aperiodic)
 
 
-def _only_periodic(expr: sp.Expr, q: sp.Expr) -> tuple[bool, bool]:
-    """(every q in expr sits inside sin/cos with an integer multiple of q, q occurs)."""
-    if expr == q:
-        return False, True
-    if isinstance(expr, (sp.sin, sp.cos)) and expr.has(q):
-        coeff = sp.diff(expr.args[0], q)
-        return (coeff.is_integer is True and not coeff.has(q)), True
-    ok, seen = True, False
-    for arg in expr.args:
-        a, s = _only_periodic(arg, q)
-        ok, seen = ok and a, seen or s
-    return ok, seen
+class _Usage:
+    """Which coordinates occur (``seen``), and which occur other than inside sin/cos of an
+    integer multiple of themselves (``aperiodic``); shared subexpressions walked once."""
+
+    def __init__(self, q: frozenset):
+        self.q, self.seen, self.aperiodic, self.done = q, set(), set(), set()
+
+    def walk(self, expr: sp.Expr) -> None:
+        if expr in self.done:
+            return
+        self.done.add(expr)
+        if expr in self.q:
+            self.seen.add(expr)
+            self.aperiodic.add(expr)
+        elif isinstance(expr, (sp.sin, sp.cos)) and expr.free_symbols & self.q:
+            argument = expr.args[0]
+            for q in argument.free_symbols & self.q:
+                coeff = sp.diff(argument, q)
+                self.seen.add(q)
+                if not (coeff.is_integer is True and not coeff.has(q)):
+                    self.aperiodic.add(q)
+        else:
+            for arg in expr.args:
+                self.walk(arg)

@@ -65,9 +65,17 @@ class Symbols:
 def _real(value, expr: ex.Expr):
     """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show."""
     for item in (value if isinstance(value, sp.MatrixBase) else [value]):
-        if item.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or item.has(sp.I) or item.is_real is False:
+        if item.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or item.has(sp.I) or _provably_complex(item):
             raise InputError(f"'{expr.text}' is not a real number here ({sp.sstr(item)})", expr.loc)
     return value
+
+
+def _provably_complex(item: sp.Expr) -> bool:
+    """Does a piece of ``item`` have no real value (sqrt(-m), log(-m), asin(2))? Sums,
+    products, integer powers and sin/cos of real symbols are real, so only the pieces that
+    can leave the reals are asked: asking sympy about a whole 50-term sum is slow."""
+    risky = item.atoms(sp.Pow, sp.log, sp.asin, sp.acos)
+    return any(p.is_real is False for p in risky if not (isinstance(p, sp.Pow) and p.exp.is_integer))
 
 
 def to_sympy(tree: ex.Tree, names: Symbols):

@@ -92,7 +92,8 @@ def _leading_plus(expr: sp.Expr) -> sp.Expr:
 
 def _pythagoras(expr: sp.Expr) -> sp.Expr:
     """Use sin²x + cos²x = 1 for each angle x to shorten ``expr``."""
-    angles = {f.args[0] for f in expr.atoms(sp.sin, sp.cos)}
+    angles = {p.base.args[0] for p in expr.atoms(sp.Pow)
+              if isinstance(p.base, (sp.sin, sp.cos)) and p.exp.is_even and p.exp > 0}
     for x in sorted(angles, key=sp.default_sort_key):
         best = expr
         for square, other in ((sp.sin(x), sp.cos(x)), (sp.cos(x), sp.sin(x))):
@@ -117,10 +118,31 @@ def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False)
     finish = (lambda c: sp.factor_terms(c)) if tidied else tidy
     if not generators:
         return {sp.Integer(1): finish(expr)}
-    poly = sp.Poly(sp.expand(expr), *generators)
+    grouped = _group_by_monomial(sp.expand(expr), set(generators))
+    if grouped is None:  # a generator inside a function or a denominator: let Poly judge
+        poly = sp.Poly(sp.expand(expr), *generators)
+        grouped = {sp.Mul(*[g**p for g, p in zip(generators, powers)]): [coeff]
+                   for powers, coeff in poly.terms()}
     out: dict[sp.Expr, sp.Expr] = {}
-    for powers, coeff in poly.terms():
-        value = finish(coeff)
+    for mono, coefficients in grouped.items():
+        value = finish(sp.Add(*coefficients))
         if value != 0:
-            out[sp.Mul(*[g**p for g, p in zip(generators, powers)])] = value
+            out[mono] = value
     return out
+
+
+def _group_by_monomial(expanded: sp.Expr, generators: set) -> dict[sp.Expr, list[sp.Expr]] | None:
+    """The terms of an expanded sum grouped by their monomial in the generators, read off
+    each term's factors (much cheaper than a Poly over every other symbol); None when a
+    generator occurs other than as a positive integer power factor."""
+    grouped: dict[sp.Expr, list[sp.Expr]] = {}
+    for term in sp.Add.make_args(expanded):
+        mono, rest = [], []
+        for factor in sp.Mul.make_args(term):
+            base, exp = factor.as_base_exp()
+            (mono if base in generators and exp.is_Integer and exp > 0 else rest).append(factor)
+        coefficient = sp.Mul(*rest)
+        if coefficient.free_symbols & generators:
+            return None
+        grouped.setdefault(sp.Mul(*mono), []).append(coefficient)
+    return grouped

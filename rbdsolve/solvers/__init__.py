@@ -8,6 +8,7 @@ budget (``budget.within``), and times each one.
 
 from __future__ import annotations
 
+import importlib
 import time
 from dataclasses import dataclass, replace
 from typing import Callable
@@ -16,24 +17,11 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Route, Solution
-from rbdsolve.solvers import (
-    eom,
-    equilibria,
-    equilibria_numeric,
-    impact,
-    impact_numeric,
-    inertia,
-    inertia_numeric,
-    modes,
-    modes_numeric,
-    steady_motion,
-    steady_spin,
-    steady_spin_numeric,
-)
 from rbdsolve.solvers.budget import OutOfTime, within
 from rbdsolve.solvers.common import Options, RouteChoice, numeric
 from rbdsolve.solvers.energies import coordinates_only, summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
+
 
 @dataclass(frozen=True)
 class Family:
@@ -43,14 +31,25 @@ class Family:
     numeric: Callable[[Question, Model, Options], Solution] | None = None
 
 
+def _later(module: str) -> Callable[[Question, Model, Options], Solution]:
+    """A route whose module is imported when first asked (numpy, scipy and the numeric
+    machinery stay out of a process that only takes the exact route)."""
+
+    def solve(question: Question, model: Model, options: Options) -> Solution:
+        return importlib.import_module(f"rbdsolve.solvers.{module}").solve(question, model, options)
+
+    solve.__qualname__ = f"{module}.solve"
+    return solve
+
+
 FAMILIES = {
-    QuestionKind.EOM: Family(eom.solve),
-    QuestionKind.EQUILIBRIA: Family(equilibria.solve, equilibria_numeric.solve),
-    QuestionKind.MODES: Family(modes.solve, modes_numeric.solve),
-    QuestionKind.INERTIA: Family(inertia.solve, inertia_numeric.solve),
-    QuestionKind.IMPACT: Family(impact.solve, impact_numeric.solve),
-    QuestionKind.STEADY_SPIN: Family(steady_spin.solve, steady_spin_numeric.solve),
-    QuestionKind.STEADY_MOTION: Family(steady_motion.solve),
+    QuestionKind.EOM: Family(_later("eom")),
+    QuestionKind.EQUILIBRIA: Family(_later("equilibria"), _later("equilibria_numeric")),
+    QuestionKind.MODES: Family(_later("modes"), _later("modes_numeric")),
+    QuestionKind.INERTIA: Family(_later("inertia"), _later("inertia_numeric")),
+    QuestionKind.IMPACT: Family(_later("impact"), _later("impact_numeric")),
+    QuestionKind.STEADY_SPIN: Family(_later("steady_spin"), _later("steady_spin_numeric")),
+    QuestionKind.STEADY_MOTION: Family(_later("steady_motion")),
 }
 
 
