@@ -12,9 +12,10 @@ scene by automatic differentiation where it allows, else compiled from the symbo
 with sympy's lambdify (``compiled_gradient``); Newton's method (scipy.optimize.root,
 'hybr' with the Jacobian H) is started from every point of a grid over the search box
 (angles over one turn, lengths within ±SEARCH_SCALE × the largest parameter value),
-the roots are wrapped into (−π, π] and merged when closer than MERGE_TOL. The grid has GRID_POINTS per coordinate
-(fewer in higher dimension, at most MAX_STARTS starts): an equilibrium whose basin
-of attraction misses every start is not found, and the report says so.
+the roots are wrapped into (−π, π] and merged when closer than MERGE_TOL. The grid has
+GRID_POINTS per coordinate (fewer in higher dimension, at most MAX_STARTS starts): an
+equilibrium whose basin of attraction misses every start is not found, and the report
+says so.
 """
 
 from __future__ import annotations
