@@ -4,6 +4,11 @@ Exact answers are ``str()`` of sympy objects, which ``sympy.sympify`` reads back
 coordinates appear as ``theta(t)``; matrices are nested lists of strings. The
 conversion is generic over the answers dataclasses, so a new solver family needs no
 code here.
+
+The output is strict JSON (``allow_nan=False``): a number that is not finite is a bug
+where the answers were built (they give None, JSON null, where a value is undefined,
+and say what null means in docs/json.md), so it is an InternalError here, not a
+``NaN`` or ``Infinity`` token that strict JSON readers refuse.
 """
 
 from __future__ import annotations
@@ -91,7 +96,7 @@ def report_object(report: ProblemReport) -> dict:
 
 
 def render_report(report: ProblemReport) -> str:
-    return json.dumps(report_object(report), ensure_ascii=False) + "\n"
+    return _dumps(report_object(report), report.file)
 
 
 def render_error(file: str, error: InputError | InternalError | UnsolvedError) -> str:
@@ -100,4 +105,12 @@ def render_error(file: str, error: InputError | InternalError | UnsolvedError) -
     where = {"line": loc.line, "column": loc.column, "path": loc.key_path()} if loc else {}
     body = {"schema": SCHEMA_VERSION, "file": file, "ok": False,
             "error": {"message": error.message, **where}, "exit_code": int(error.exit_code)}
-    return json.dumps(body, ensure_ascii=False) + "\n"
+    return _dumps(body, file)
+
+
+def _dumps(body: dict, file: str) -> str:
+    """One line of strict JSON (no NaN or Infinity)."""
+    try:
+        return json.dumps(body, ensure_ascii=False, allow_nan=False) + "\n"
+    except ValueError as exc:
+        raise InternalError(f"{file}: a number that is not finite reached the JSON output ({exc})") from None

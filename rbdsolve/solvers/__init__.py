@@ -9,6 +9,7 @@ budget (``budget.within``), and times each one.
 from __future__ import annotations
 
 import importlib
+import math
 import time
 from dataclasses import dataclass, replace
 from typing import Callable
@@ -63,7 +64,19 @@ def solve_question(question: Question, model: Model, options: Options) -> Soluti
     except (UnsolvedError, OutOfTime) as exc:
         solution = Solution(question.kind.value, _route_of(options), None, (), error=str(exc))
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
-    return replace(solution, values=values or {}, seconds=time.perf_counter() - start)
+    return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
+
+
+def _finite_estimate(solution: Solution) -> Solution:
+    """``error_estimate`` is a number or None (docs/json.md): a route whose estimate is not
+    finite (a singular matrix in it) gives none, and a warning says so, rather than an
+    infinity that strict JSON cannot hold."""
+    estimate = solution.error_estimate
+    if estimate is None or math.isfinite(estimate):
+        return solution
+    note = (f"no error estimate: the route's estimate is not finite ({estimate}), e.g. a singular Hessian "
+            "where the equilibria form a continuum")
+    return replace(solution, error_estimate=None, warnings=(*solution.warnings, note))
 
 
 def _routed(question: Question, model: Model, options: Options) -> Solution:

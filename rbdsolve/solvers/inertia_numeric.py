@@ -4,7 +4,10 @@ from the shape library, rounded once to floats, and its principal moments and ax
 numpy.linalg.eigh (symmetric QR; Golub & Van Loan §8.3).
 
 Error estimate: eigh is backward stable, so each moment moves by at most about
-3 ε ‖J‖₂ (Weyl); relative to each moment, 3 ε max J / J_k.
+3 ε ‖J‖₂ (Weyl): ``absolute_error``, the same for every moment. Relative to each moment,
+3 ε ‖J‖₂ / |J_k|, and ``error_estimate`` is the largest of these over the moments that
+are not zero within that bound (a rod's moment about its axis, a particle's: their
+relative error is undefined; they have the absolute one), None if every one is.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ class NumericInertiaAnswers:
     J: tuple[tuple[float, ...], ...]  # about the asked point (G by default), in the asked axes
     principal_moments: tuple[float, ...]  # ascending
     principal_axes: tuple[tuple[float, ...], ...]  # unit vectors, one per moment
+    absolute_error: float  # bound on each principal moment's error
 
 
 def tensor(opts: InertiaOptions, model: Model) -> tuple[sp.Expr, sp.Matrix]:
@@ -48,28 +52,31 @@ def tensor(opts: InertiaOptions, model: Model) -> tuple[sp.Expr, sp.Matrix]:
 
 
 def principal_floats(J: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
-    """Moments ascending, unit axes (columns, first nonzero component positive), and
-    the largest relative error estimate."""
+    """Moments ascending, unit axes (columns, first nonzero component positive), and the
+    bound 3 ε ‖J‖₂ on each moment's absolute error."""
     moments, axes = np.linalg.eigh((J + J.T) / 2)
     for k in range(3):
         first = next(x for x in axes[:, k] if abs(x) > 1e-12)
         axes[:, k] *= np.sign(first)
     axes += 0.0  # no −0.0 in the report
-    top = max(np.max(np.abs(moments)), 1e-300)
-    with np.errstate(divide="ignore"):
-        estimate = float(np.max(3 * EPS * top / np.abs(moments)))
-    return moments, axes, estimate
+    return moments, axes, float(3 * EPS * np.max(np.abs(moments)))
+
+
+def relative_estimate(moments: np.ndarray, absolute: float) -> float | None:
+    """The largest absolute/|J_k| over the moments larger than ``absolute``; a moment
+    within it of zero has no relative error (None if every one is)."""
+    return max((absolute / abs(float(m)) for m in moments if abs(m) > absolute), default=None)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     mass, J = tensor(question.options, model)
     Jf = to_floats(J, model.values)
-    moments, axes, estimate = principal_floats(Jf)
+    moments, axes, absolute = principal_floats(Jf)
     answers = NumericInertiaAnswers(float(sp.N(mass.xreplace(dict(model.values)))),
                                     tuple(tuple(float(x) for x in row) for row in Jf),
                                     tuple(float(x) for x in moments),
-                                    tuple(tuple(float(x) for x in axes[:, k]) for k in range(3)))
+                                    tuple(tuple(float(x) for x in axes[:, k]) for k in range(3)), absolute)
     steps = (
         st.equation("The inertia tensor in numbers (assembled exactly, rounded once):",
                     Relation(sp.Symbol("J"), sp.ImmutableMatrix(Jf).applyfunc(lambda x: sp.Float(x, 15)))),
@@ -78,4 +85,4 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                   *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 12) for x in axes[:, k]]]))
                     for k in range(3)]),
     )
-    return Solution("inertia", Route.NUMERIC, answers, steps, error_estimate=estimate)
+    return Solution("inertia", Route.NUMERIC, answers, steps, error_estimate=relative_estimate(moments, absolute))

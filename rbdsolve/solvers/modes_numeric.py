@@ -4,15 +4,29 @@
 
 solved by scipy.linalg.eigh (Cholesky M = L Lᵀ, then the symmetric eigenproblem of
 L⁻¹ K L⁻ᵀ; Golub & Van Loan, Matrix Computations, §8.7), with M and K at the
-equilibrium as floats. The eigenvectors come M-orthonormal (aᵀ M a = 1).
+equilibrium as floats. The eigenvectors are scaled M-orthonormal (aᵀ M a = 1).
 
-Error estimate. For an M-normalized pair (λ̂, â) with residual r = K â − λ̂ M â there is
-an eigenvalue within ‖r‖_{M⁻¹} = √(rᵀ M⁻¹ r) of λ̂ (Parlett, The Symmetric Eigenvalue
-Problem, Thm 4.5.1, applied to L⁻¹ K L⁻ᵀ). Rounding M and K to floats moves every λ by
-up to about n ε ‖L⁻¹ K L⁻ᵀ‖₂ = n ε max|λ| (Weyl). The relative error estimate of λᵢ
-is the sum of the two over |λᵢ|; the report gives the largest.
+Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three terms:
 
-The 50-digit reference (``reference_eigenvalues``) does the same in mpmath.
+- the residual: for the computed pair (λ̂, â) with r = K â − λ̂ M â there is an exact
+  eigenvalue of the float pencil within ‖r‖_{M⁻¹}/‖â‖_M (Parlett, The Symmetric
+  Eigenvalue Problem, Thm 4.5.1, applied to L⁻¹ K L⁻ᵀ and x = Lᵀ â);
+- the rounding of r itself: each entry of the computed r is within about
+  n ε (‖K‖₂ + |λ̂| ‖M‖₂) ‖â‖₂ of its value, which in the M⁻¹ norm is at most that over
+  √λ_min(M). Over all vectors this is at most the a priori n ε ‖K‖₂/λ_min(M) of the
+  Cholesky method (Golub & Van Loan §8.7.2) for λ = 0, and it is nonzero wherever K is,
+  so a zero eigenvalue always has a nonzero bound;
+- the rounding of M and K to floats, δM and δK of about n ε ‖M‖₂ and n ε ‖K‖₂: to first
+  order λ moves by âᵀ (δK − λ δM) â (M-normalized â), at most
+  n ε (‖K‖₂ + |λ| ‖M‖₂) ‖â‖₂² (the backward error of the pencil; Higham & Higham,
+  Structured backward error and condition of generalized eigenvalue problems, 1998),
+  divided by 1 − η, η = n ε ‖M‖₂/λ_min(M), which makes the worst vector's bound rigorous
+  (M + δM lies between (1 − η) M and (1 + η) M: Rayleigh quotients). Where η ≥ 1 the
+  rounding of M may be as large as its smallest eigenvalue: the question is refused.
+
+An eigenvalue within its bound of zero is neutral (zero within rounding); its relative
+error is undefined (None). ``error_estimate`` is the largest relative bound of the
+others. The 50-digit reference (``reference_eigenvalues``) does the same in mpmath.
 """
 
 from __future__ import annotations
@@ -34,7 +48,6 @@ from rbdsolve.solvers.modes import Motion
 from rbdsolve.solvers.numeric_model import equilibrium_for_modes, linearized
 
 EPS = float(np.finfo(float).eps)
-NEUTRAL_TOL = 1e3  # |λ| below this many estimated round-offs is taken as zero
 
 
 @dataclass(frozen=True)
@@ -46,7 +59,8 @@ class NumericModesAnswers:
     frequencies: tuple[float | None, ...]  # ω = √λ where λ > 0
     motions: tuple[Motion, ...]
     shapes: tuple[tuple[float, ...], ...]  # first nonzero entry 1, as on the exact route
-    relative_errors: tuple[float, ...]  # the estimate for each λ
+    absolute_errors: tuple[float, ...]  # the bound on |λ̂ − λ| for each λ
+    relative_errors: tuple[float | None, ...]  # that over |λ|; None where λ is neutral (zero within it)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -54,34 +68,68 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
     about = equilibrium_for_modes(question, model)
     M, K, how = linearized(model, about)
-    lam, vectors, errors = generalized_eigh(K, M)
-    absolute = np.abs(lam) * errors
-    motions = tuple(Motion.NEUTRAL if abs(x) <= max(a, NEUTRAL_TOL * EPS * np.max(np.abs(lam), initial=0.0))
-                    else Motion.OSCILLATION if x > 0 else Motion.GROWTH for x, a in zip(lam, absolute))
+    lam, vectors, absolute = generalized_eigh(K, M)
+    motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
+    relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
     answers = NumericModesAnswers(
-        {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K), tuple(float(x) for x in lam),
+        {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K),
+        tuple(float(x) for x in lam),
         tuple(float(np.sqrt(x)) if m is Motion.OSCILLATION else None for x, m in zip(lam, motions)),
-        motions, tuple(_normalized(v) for v in vectors.T), tuple(float(e) for e in errors))
-    estimate = max((e for e, m in zip(errors, motions) if m is not Motion.NEUTRAL), default=0.0)
-    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), error_estimate=float(estimate))
+        motions, tuple(_normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative)
+    # Only the modes that are not neutral have a relative error; with none, there is no estimate.
+    estimate = max((e for e in relative if e is not None), default=None)
+    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), error_estimate=estimate)
+
+
+def classify(lam: float, bound: float) -> Motion:
+    """Neutral where |λ| ≤ its bound (the sign of λ is not known), else by the sign of λ."""
+    if not (np.isfinite(lam) and np.isfinite(bound)):  # never classify NaN: a comparison with it is False
+        raise UnsolvedError(f"the eigenvalue {lam} or its error bound {bound} is not finite")
+    if abs(lam) <= bound:
+        return Motion.NEUTRAL
+    return Motion.OSCILLATION if lam > 0 else Motion.GROWTH
 
 
 def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """λ ascending, M-orthonormal eigenvectors (columns) and each λ's relative error estimate."""
-    from scipy.linalg import LinAlgError, cho_factor, cho_solve, eigh
+    """λ ascending, M-orthonormal eigenvectors (columns) and each λ's absolute error bound
+    (the module docstring derives it)."""
+    from scipy.linalg import LinAlgError, cholesky, eigh, solve_triangular
 
     try:
-        factor = cho_factor(M)
+        L = cholesky(M, lower=True)
     except LinAlgError:
         raise UnsolvedError("the mass matrix is not positive definite at this configuration: "
                             "a coordinate carries no inertia") from None
+    Linv = solve_triangular(L, np.eye(len(M)), lower=True)
+    smallest, eta = _conditioning(M, Linv)
     lam, vectors = eigh(K, M)
-    residuals = K @ vectors - M @ vectors * lam
-    bound = np.sqrt(np.einsum("ij,ij->j", residuals, cho_solve(factor, residuals)))
-    rounding = len(lam) * EPS * np.max(np.abs(lam), initial=0.0)
-    with np.errstate(divide="ignore"):
-        relative = (bound + rounding) / np.abs(lam)
-    return lam, vectors, relative
+    # eigh's vectors are M-orthonormal only to rounding (less so as M is ill-conditioned);
+    # ‖Lᵀ a‖ is √(aᵀ M a) without the cancellation that could make it negative.
+    vectors = vectors / np.linalg.norm(L.T @ vectors, axis=0)
+    return lam, vectors, eigen_bounds(K, M, Linv, lam, vectors, smallest, eta)
+
+
+def _conditioning(M: np.ndarray, Linv: np.ndarray) -> tuple[float, float]:
+    """λ_min(M) = 1/‖L⁻¹‖₂² (the same factor as eigh's) and η = n ε ‖M‖₂/λ_min(M), the
+    rounding of M relative to its smallest eigenvalue; refused where η ≥ 1."""
+    smallest = 1.0 / np.linalg.norm(Linv, 2) ** 2
+    eta = len(M) * EPS * np.linalg.norm(M, 2) / smallest
+    if not eta < 1:  # also refuses a NaN
+        raise UnsolvedError(f"the mass matrix is singular in floating point (condition number "
+                            f"{np.linalg.norm(M, 2) / smallest:.3g}): its rounding may be as large as its smallest "
+                            "eigenvalue, so the eigenvalues are not determined; a coordinate carries (almost) no "
+                            "inertia")
+    return smallest, eta
+
+
+def eigen_bounds(K: np.ndarray, M: np.ndarray, Linv: np.ndarray, lam: np.ndarray, vectors: np.ndarray,
+                 smallest: float, eta: float) -> np.ndarray:
+    """|λ̂ − λ| ≤ ‖r‖_{M⁻¹} + n ε (‖K‖ + |λ̂| ‖M‖) (‖â‖/√λ_min(M) + ‖â‖²/(1 − η)), â M-normalized
+    (Parlett Thm 4.5.1; Higham & Higham 1998; the module docstring)."""
+    residual = np.linalg.norm(Linv @ (K @ vectors - M @ vectors * lam), axis=0)
+    scale = len(lam) * EPS * (np.linalg.norm(K, 2) + np.abs(lam) * np.linalg.norm(M, 2))
+    length = np.linalg.norm(vectors, axis=0)
+    return residual + scale * (length / np.sqrt(smallest) + length**2 / (1 - eta))
 
 
 def reference_eigenvalues(K, M, digits: int = 50) -> list:
@@ -133,7 +181,8 @@ def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...
                     "(scipy.linalg.eigh):",
                     *[Relation(sp.Symbol(f"lambda_{i}"), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
     ]
-    for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
+    for i, (lam, w, motion, shape, err) in enumerate(
+            zip(a.eigenvalues, a.frequencies, a.motions, a.shapes, a.absolute_errors), 1):
         rel = []
         if motion is Motion.OSCILLATION:
             rel.append(Relation(sp.Symbol(f"omega_{i}"), sp.Float(w, 15)))
@@ -142,7 +191,7 @@ def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...
             rel.append(Relation(sp.Symbol(f"gamma_{i}"), sp.Float(np.sqrt(-lam), 15)))
             text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
         else:
-            text = f"Mode {i}: λ = 0 within round-off, neutral:"
+            text = f"Mode {i}: |λ| ≤ {err:.1e}, its error bound: λ is not told from 0 within rounding, neutral:"
         if n <= MAX_SHOWN:
             rel.append(Relation(sp.Symbol(f"a_{i}"), _floats((shape,))))
         steps.append(st.result(text, *rel))

@@ -1,16 +1,21 @@
 """The floating-point routes' view of a model: M and K at a configuration as float
 arrays, and the equilibria of ∂V/∂q = 0 found numerically.
 
-M and K come from the model's exact velocity Jacobians and Hessian of V at the
-configuration, with the parameter values put in and rounded once to floats.
+M and K (``linearized``) come first from the scene itself (``NumericScene``: M(q) and V's
+derivatives by forward-mode automatic differentiation of the scene's own expressions, in
+floats); only where the scene needs the symbolic model (see NotNumeric) from the
+model's exact velocity Jacobians and Hessian of V at the configuration, with the
+parameter values put in and rounded once to floats.
 
-Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) are compiled with
-sympy's lambdify; Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H) is
-started from every point of a grid over the search box (angles over one turn, lengths
-within ±SEARCH_SCALE × the largest parameter value), the roots are wrapped into
-(−π, π] and merged when closer than MERGE_TOL. The grid has GRID_POINTS per coordinate
-(fewer in higher dimension, at most MAX_STARTS starts): an equilibrium whose basin
-of attraction misses every start is not found, and the report says so.
+Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) likewise come from the
+scene by automatic differentiation where it allows, else compiled from the symbolic V
+with sympy's lambdify (``compiled_gradient``); Newton's method (scipy.optimize.root,
+'hybr' with the Jacobian H) is started from every point of a grid over the search box
+(angles over one turn, lengths within ±SEARCH_SCALE × the largest parameter value),
+the roots are wrapped into (−π, π] and merged when closer than MERGE_TOL. The grid has
+GRID_POINTS per coordinate (fewer in higher dimension, at most MAX_STARTS starts): an
+equilibrium whose basin of attraction misses every start is not found, and the report
+says so.
 """
 
 from __future__ import annotations

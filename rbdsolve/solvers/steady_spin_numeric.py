@@ -23,7 +23,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, require_values
-from rbdsolve.solvers.inertia_numeric import principal_floats
+from rbdsolve.solvers.inertia_numeric import principal_floats, relative_estimate
 from rbdsolve.solvers.numeric_model import to_floats
 from rbdsolve.solvers.steady_spin import Stability
 
@@ -49,7 +49,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     name = question.options.body
     body = next(b for b in model.bodies if b.name == name)
-    J, axes, estimate = principal_floats(to_floats(body.inertia, model.values))
+    J, axes, absolute = principal_floats(to_floats(body.inertia, model.values))
     if np.min(J) <= EQUAL_TOL * np.max(J):
         raise UnsolvedError(f"body '{name}' has a zero principal moment: Euler's equations need three positive "
                             "moments")
@@ -62,7 +62,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                     + (f", rate {s.rate:.6g} Ω" if s.rate is not None else ""))
           for k, s in enumerate(spins)],
     )
-    return Solution("steady_spin", Route.NUMERIC, answers, steps, error_estimate=estimate)
+    return Solution("steady_spin", Route.NUMERIC, answers, steps, error_estimate=relative_estimate(J, absolute))
 
 
 def _spin(k: int, J: np.ndarray, axes: np.ndarray) -> NumericSpin:

@@ -42,3 +42,15 @@ def test_answers_read_back(path) -> None:
         for text in strings(result["answers"] or {}):
             expr = sp.sympify(text, locals=names)  # raises if not readable
             assert isinstance(expr, sp.Basic), text
+
+
+def test_a_number_that_is_not_finite_is_a_bug_not_a_nan_token() -> None:
+    # Strict JSON has no NaN or Infinity: the renderer refuses them (allow_nan=False)
+    # instead of writing tokens that strict readers reject.
+    from rbdsolve.errors import InternalError
+    from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
+
+    bad = Solution("modes", Route.NUMERIC, None, (), error_estimate=float("inf"))
+    report = ProblemReport("f.yaml", "t", "", "", ModelSummary((), None, None, ()), (bad,))
+    with pytest.raises(InternalError, match="not finite"):
+        render_report(report)
