@@ -178,9 +178,15 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | 
     return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
 
 
+def missing_values(model) -> tuple[str, ...]:
+    """The parameters without a numeric value, in the file's order: floating-point work
+    (every numeric route, and auto's fallback to it) needs none missing."""
+    return tuple(p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values)
+
+
 def require_values(model, what: str) -> None:
-    """Floating-point work needs a number for every parameter."""
-    missing = [p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values]
+    """Refuse floating-point work while ``missing_values`` is not empty, naming them."""
+    missing = missing_values(model)
     if missing:
         raise UnsolvedError(f"{what} needs a value for every parameter; give {', '.join(missing)} "
                             "('values:' in the file, or --set NAME=VALUE)")
