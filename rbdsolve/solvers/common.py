@@ -156,9 +156,17 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     """Numeric values of an answers tree where every symbol has a value.
 
     Expressions become floats (or [re, im] when complex), matrices nested lists;
-    anything that still holds a free symbol or a function of time becomes None.
+    anything that still holds a free symbol or a function of time becomes None. Leaves
+    that are not expressions stay as the answers give them (an enum as its value, a
+    count, a text), so the tree reads like the answers.
     """
-    return map_leaves(value, lambda leaf: _number(leaf, subs))
+    return map_leaves(value, lambda leaf: _number(leaf, subs) if isinstance(leaf, sp.Basic) else _plain(leaf))
+
+
+def _plain(leaf: object) -> object:
+    """A leaf that is not an expression: an enum as its value, else itself (a float, an
+    int, a text, None)."""
+    return leaf.value if isinstance(leaf, Enum) else leaf
 
 
 def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> float | list | None:
