@@ -52,7 +52,7 @@ class NumericModesAnswers:
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     require_static(model, "small oscillations")
-    about = equilibrium_for_modes(question, model)
+    about, notes = equilibrium_for_modes(question, model)
     M, K, how = linearized(model, about)
     lam, vectors, errors = generalized_eigh(K, M)
     absolute = np.abs(lam) * errors
@@ -63,7 +63,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         tuple(float(np.sqrt(x)) if m is Motion.OSCILLATION else None for x, m in zip(lam, motions)),
         motions, tuple(_normalized(v) for v in vectors.T), tuple(float(e) for e in errors))
     estimate = max((e for e, m in zip(errors, motions) if m is not Motion.NEUTRAL), default=0.0)
-    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), error_estimate=float(estimate))
+    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), warnings=notes,
+                    error_estimate=float(estimate))
 
 
 def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
