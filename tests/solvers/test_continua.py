@@ -114,3 +114,20 @@ def test_values_repeat_the_answers_on_the_numeric_route(cart) -> None:
 def test_the_search_says_how_the_starts_were_placed(cart) -> None:
     equilibria, _ = cart.solutions
     assert "from 576 starts on a 24 × 24 grid" in equilibria.warnings[0]
+
+
+@pytest.mark.parametrize("n, starts, text", [
+    (2, 24 * 24, "starts on a 24 × 24 grid"),
+    (12, 2 ** 12, "starts on a " + " × ".join(["2"] * 12) + " grid"),  # 2¹² = 4096: still a grid
+    (13, 4096, "starts at fixed pseudo-random points"),  # 2¹³ > 4096
+])
+def test_the_starts_are_described_as_they_were_placed(n, starts, text) -> None:
+    from types import SimpleNamespace
+
+    import sympy as sp
+
+    from rbdsolve.solvers.numeric_model import _starts
+
+    model = SimpleNamespace(q=sp.symbols(f"q0:{n}"), angles=set(), values={})
+    points, how = _starts(model, 24)
+    assert len(points) == starts and how.startswith(text)
