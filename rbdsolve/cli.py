@@ -101,9 +101,11 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
                    "(exact, then numeric where exact cannot answer or runs out of its budget).")
 @click.option("--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
               show_default=True, metavar="SECONDS",
-              help="Time budget for building each file's model and for each question; a question "
-                   "past it is left unanswered (exit code 1), or, with --route auto, answered by the "
-                   "numeric route.")
+              help="Time budget for building each file's model and for each route of each question; "
+                   "a question past it is left unanswered (exit code 1), or, with --route auto and "
+                   "every value given, answered by the numeric route, which gets the same budget "
+                   "again (so a question may take twice the budget; a model whose T and V run out "
+                   "shows the coordinates only).")
 @click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")
 def solve(paths, fmt, output, sets, route, budget, debug):
     """Solve problem files and print their step-by-step solutions."""

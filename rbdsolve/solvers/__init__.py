@@ -17,9 +17,10 @@ from typing import Callable
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
-from rbdsolve.report.steps import ProblemReport, Route, Solution
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.budget import OutOfTime, within
-from rbdsolve.solvers.common import Options, RouteChoice, numeric
+from rbdsolve.solvers.common import Options, RouteChoice, missing_values, numeric
 from rbdsolve.solvers.energies import coordinates_only, summarize_model
 from rbdsolve.solvers.frames import frame_of, solve_in_frame
 
@@ -55,14 +56,11 @@ FAMILIES = {
 
 
 def solve_question(question: Question, model: Model, options: Options) -> Solution:
-    """Run one question's solver on the route asked for, within its time budget; an
-    unanswerable question, or one past its budget, becomes a Solution with an error
-    (exit code 1), not an exception, so the other questions still run."""
+    """Run one question's solver on the route asked for, each route within its own time
+    budget; an unanswerable question, or one past its budget, becomes a Solution with an
+    error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
-    try:
-        solution = _routed(question, model, options)
-    except (UnsolvedError, OutOfTime) as exc:
-        solution = Solution(question.kind.value, _route_of(options), None, (), error=str(exc))
+    solution = _routed(question, model, options)
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
 
@@ -80,23 +78,37 @@ def _finite_estimate(solution: Solution) -> Solution:
 
 
 def _routed(question: Question, model: Model, options: Options) -> Solution:
-    """exact, numeric, or auto: exact, and numeric where exact cannot answer and every
-    parameter has a value (the report says which ran, and why)."""
+    """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
+    parameter lacks a value. Each route gets the whole budget (auto may take twice it).
+    The Solution's route is the route that ran last; when both fail, its error gives
+    both routes' reasons."""
     family = FAMILIES[question.kind]
-    if options.route is RouteChoice.EXACT:
-        return _run(family.exact, question, model, options)
+    if options.route is RouteChoice.NUMERIC and family.numeric is None:
+        return _failed(question, Route.NUMERIC, f"'{question.kind.value}' has no numeric route yet; use --route exact")
     if options.route is RouteChoice.NUMERIC:
-        if family.numeric is None:
-            raise UnsolvedError(f"'{question.kind.value}' has no numeric route yet; use --route exact")
-        return _run(family.numeric, question, model, options)
+        return _attempt(Route.NUMERIC, family.numeric, question, model, options)
+    exact = _attempt(Route.EXACT, family.exact, question, model, options)
+    if options.route is RouteChoice.EXACT or exact.solved or family.numeric is None or missing_values(model):
+        return exact
+    solution = _attempt(Route.NUMERIC, family.numeric, question, model, options, " (numeric route)")
+    if not solution.solved:
+        return replace(solution, error=f"the exact route could not answer ({exact.error}); "
+                                       f"nor could the numeric route ({solution.error})")
+    note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
+    return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _attempt(route: Route, solver, question: Question, model: Model, options: Options, label: str = "") -> Solution:
+    """The solver's Solution within the budget, or a Solution on ``route`` with the
+    reason it could not answer."""
     try:
-        return _run(family.exact, question, model, options)
-    except (UnsolvedError, OutOfTime) as exact_failed:
-        if family.numeric is None or not _has_all_values(model):
-            raise
-        solution = _run(family.numeric, question, model, options, " (numeric route)")
-        note = f"the exact route could not answer ({exact_failed}); these are the numeric route's answers"
-        return replace(solution, warnings=(note, *solution.warnings))
+        return _run(solver, question, model, options, label)
+    except (UnsolvedError, OutOfTime) as exc:
+        return _failed(question, route, str(exc))
+
+
+def _failed(question: Question, route: Route, error: str) -> Solution:
+    return Solution(question.kind.value, route, None, (), error=error)
 
 
 def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:
@@ -104,14 +116,6 @@ def _run(solver, question: Question, model: Model, options: Options, route: str 
         if frame_of(question) is None:
             return solver(question, model, options)
         return solve_in_frame(solver, question, model, options)
-
-
-def _route_of(options: Options) -> Route:
-    return Route.NUMERIC if options.route is RouteChoice.NUMERIC else Route.EXACT
-
-
-def _has_all_values(model: Model) -> bool:
-    return all(model.symbols.parameters[p.name] in model.values for p in model.problem.parameters)
 
 
 def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
@@ -127,19 +131,32 @@ def solve_file(problem: Problem, options: Options = Options()) -> ProblemReport:
 def _solve(problem: Problem, build: Callable[[], Model], options: Options) -> ProblemReport:
     """The model section (T, V, the parameter values) within one budget, then each
     question within its own. A model past its budget is an UnsolvedError for the whole
-    file (exit code 1), said in one line."""
+    file (exit code 1), said in one line, except on auto with every value given when
+    only the expansion of T and V ran out: the section then shows the coordinates only,
+    as on the numeric route, and says why."""
+    model = None  # set once built, with its values: only the summary is left then
     try:
         with within(options.budget, "the model (T and V)"):
-            model = build()
-            model = model.with_values(options.values) if options.values else model
+            built = build()
+            model = built.with_values(options.values) if options.values else built
             summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
     except OutOfTime as exc:
-        raise UnsolvedError(f"{problem.file}: {exc}") from None
+        if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
+            raise UnsolvedError(f"{problem.file}: {exc}") from None
+        summary = _coordinates_instead(model, exc)
     solutions = tuple(solve_question(q, model, options) for q in problem.questions)
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols)
+
+
+def _coordinates_instead(model: Model, exc: OutOfTime) -> ModelSummary:
+    """The numeric route's model section, with a note that T and V ran out of time."""
+    summary = coordinates_only(model)
+    why = st.note(f"warning: {exc}; T and V are not expanded, as on the numeric route "
+                  "(every parameter has a value)")
+    return replace(summary, steps=(why, *summary.steps))
 
 
 __all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_file", "solve_problem", "solve_question"]

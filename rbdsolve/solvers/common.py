@@ -156,10 +156,18 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     """Numeric values of an answers tree where every symbol has a value.
 
     Expressions become floats (or [re, im] when complex), matrices nested lists;
-    anything that still holds a free symbol or a function of time becomes None.
+    anything that still holds a free symbol or a function of time becomes None. Leaves
+    that are not expressions stay as the answers give them (an enum as its value, a
+    count, a text), so the tree reads like the answers.
     """
     roots: dict[sp.Expr, sp.Expr] = {}
-    return map_leaves(value, lambda leaf: _number(leaf, subs, roots))
+    return map_leaves(value, lambda leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf))
+
+
+def _plain(leaf: object) -> object:
+    """A leaf that is not an expression: an enum as its value, else itself (a float, an
+    int, a text, None)."""
+    return leaf.value if isinstance(leaf, Enum) else leaf
 
 
 def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
@@ -192,9 +200,15 @@ def _root_values(number: sp.Expr, roots: dict[sp.Expr, sp.Expr]) -> dict[sp.Expr
     return roots
 
 
+def missing_values(model) -> tuple[str, ...]:
+    """The parameters without a numeric value, in the file's order: floating-point work
+    (every numeric route, and auto's fallback to it) needs none missing."""
+    return tuple(p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values)
+
+
 def require_values(model, what: str) -> None:
-    """Floating-point work needs a number for every parameter."""
-    missing = [p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values]
+    """Refuse floating-point work while ``missing_values`` is not empty, naming them."""
+    missing = missing_values(model)
     if missing:
         raise UnsolvedError(f"{what} needs a value for every parameter; give {', '.join(missing)} "
                             "('values:' in the file, or --set NAME=VALUE)")

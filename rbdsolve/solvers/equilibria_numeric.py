@@ -1,10 +1,14 @@
 """Equilibria, the floating-point route: ∂V/∂q = 0 by Newton's method from a grid of
 starts (``numeric_model.find_numeric``: the strategy and its limits are stated there),
 each root classified by the eigenvalues of the Hessian of V there (all positive:
-stable; one negative: unstable; else neutral to second order).
+stable; one negative: unstable; else neutral to second order). A continuum of
+equilibria (V flat along a straight line, as a cart's x) is reported once, at its
+point nearest q = 0 along the free directions, which a warning names
+(``continua``); λ = 0 along them is neutral.
 
 Error estimate: one more Newton step, |H⁻¹ ∂V/∂q|, relative to max(|q|, 1), plus
-cond(H) ε for the rounding of the gradient itself.
+cond(H) ε for the rounding of the gradient itself; on a continuum H and ∂V/∂q are
+taken across it only (along it the representative is exact by construction).
 """
 
 from __future__ import annotations
@@ -22,7 +26,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, configuration, require_values
 from rbdsolve.solvers.equilibria import Stability, require_static
-from rbdsolve.solvers.numeric_model import MAX_STARTS, compiled_gradient, find_numeric
+from rbdsolve.solvers.numeric_model import SEARCH_SCALE, compiled_gradient, continuum_text, find_numeric
 
 EPS = float(np.finfo(float).eps)
 
@@ -32,12 +36,13 @@ class NumericEquilibrium:
     at: Mapping[str, float]
     stability: Stability
     curvatures: tuple[float, ...]  # eigenvalues of the Hessian of V there, ascending
+    free: tuple[tuple[float, ...], ...] = ()  # directions of a continuum it represents (unit vectors)
 
 
 @dataclass(frozen=True)
 class NumericEquilibriaAnswers:
     equilibria: tuple[NumericEquilibrium, ...]
-    starts: int  # Newton starts on the grid
+    starts: int  # Newton starts
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -45,39 +50,61 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "the equilibria")
     found = find_numeric(model)
     if not found.equilibria:
-        raise UnsolvedError(f"Newton's method from {found.starts} starts found no equilibrium")
+        raise UnsolvedError(f"Newton's method from {found.starts} {found.sampling} found no equilibrium")
     g, H = compiled_gradient(model)
     names = model.coordinate_names()
     equilibria, errors = [], []
-    for point, kind in found.equilibria:
-        x = np.array(point)
+    for r in found.equilibria:
+        x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        equilibria.append(NumericEquilibrium(dict(zip(names, point)), Stability(kind),
-                                             tuple(float(c) for c in curvatures)))
-        errors.append(_error(x, np.asarray(g(x), dtype=float), hess))
+        equilibria.append(NumericEquilibrium(dict(zip(names, r.at)), Stability(r.kind),
+                                             tuple(float(c) for c in curvatures), r.free))
+        errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts)
-    warning = (f"numeric search: Newton's method from {found.starts} grid starts (at most {MAX_STARTS}) over "
-               "angles in (−π, π] and lengths within ±10 × the largest parameter value; an equilibrium whose "
-               "basin misses every start would be missed")
-    return Solution("equilibria", Route.NUMERIC, answers, _steps(answers, model), warnings=(warning,),
-                    error_estimate=float(max(errors)))
+    search = (f"numeric search: Newton's method from {found.starts} {found.sampling} over angles in (−π, π] "
+              f"and lengths within ±{SEARCH_SCALE:g} × the largest parameter value; an equilibrium whose "
+              "basin misses every start would be missed")
+    return Solution("equilibria", Route.NUMERIC, answers, _steps(answers, model, found.sampling),
+                    warnings=(search, *_continuum_warnings(found, names)), error_estimate=float(max(errors)))
 
 
-def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray) -> float:
+def _continuum_warnings(found, names: list[str]) -> list[str]:
+    """One line per kind of continuum found, and one where the Hessian is singular
+    beyond the free directions (higher-order terms decide; perhaps a curved continuum)."""
+    lines = list(dict.fromkeys(continuum_text(r.free, names) for r in found.equilibria if r.free))
+    singular = [i for i, r in enumerate(found.equilibria, 1) if r.kind == "neutral" and not r.stable_across]
+    if singular:
+        lines.append(f"the Hessian of V is singular at equilibri{'um' if len(singular) == 1 else 'a'} "
+                     f"{', '.join(map(str, singular))} (beyond any continuum found): higher-order terms decide "
+                     "the stability there, and a curved continuum of equilibria would be listed point by point")
+    return lines
+
+
+def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:
+    """|H⁻¹ g| / max(|q|, 1) + cond(H) ε, with H and g restricted to the directions
+    across a continuum (along it the position is exact: the representative)."""
+    if free:
+        from scipy.linalg import null_space
+
+        P = null_space(np.array(free, dtype=float))  # orthonormal basis across the continuum
+        hess, gradient = P.T @ hess @ P, P.T @ gradient
     try:
-        step = np.linalg.solve(hess, gradient)
-        condition = np.linalg.cond(hess)
+        step = np.linalg.solve(hess, gradient) if hess.size else np.zeros(0)
+        condition = np.linalg.cond(hess) if hess.size else 1.0
     except np.linalg.LinAlgError:
         return float("inf")
-    return float(np.max(np.abs(step)) / max(np.max(np.abs(x)), 1.0) + condition * EPS)
+    return float(np.max(np.abs(step), initial=0.0) / max(np.max(np.abs(x)), 1.0) + condition * EPS)
 
 
-def _steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
-    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0; Newton's method from {a.starts} starts on a grid finds:")]
+def _steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
+    names = model.coordinate_names()
+    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0; Newton's method from {a.starts} {sampling} finds:")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [sp.Float(v, 12) for v in eq.at.values()])
         curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
-        steps.append(st.result(f"Equilibrium {i}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
+        family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
+        steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
     return tuple(steps)
+

@@ -66,7 +66,7 @@ class NumericModesAnswers:
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     require_static(model, "small oscillations")
-    about = equilibrium_for_modes(question, model)
+    about, notes = equilibrium_for_modes(question, model)
     M, K, how = linearized(model, about)
     lam, vectors, absolute = generalized_eigh(K, M)
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
@@ -78,7 +78,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         motions, tuple(_normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative)
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
-    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), error_estimate=estimate)
+    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), warnings=notes,
+                    error_estimate=estimate)
 
 
 def classify(lam: float, bound: float) -> Motion:

@@ -10,18 +10,22 @@ parameter values put in and rounded once to floats.
 Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) likewise come from the
 scene by automatic differentiation where it allows, else compiled from the symbolic V
 with sympy's lambdify (``compiled_gradient``); Newton's method (scipy.optimize.root,
-'hybr' with the Jacobian H) is started from every point of a grid over the search box
-(angles over one turn, lengths within ±SEARCH_SCALE × the largest parameter value),
-the roots are wrapped into (−π, π] and merged when closer than MERGE_TOL. The grid has
-GRID_POINTS per coordinate (fewer in higher dimension, at most MAX_STARTS starts): an
-equilibrium whose basin of attraction misses every start is not found, and the report
-says so.
+'hybr' with the Jacobian H) is started from every point of a grid over the search box (angles over one turn, lengths
+within ±SEARCH_SCALE × the largest parameter value), the roots are wrapped into
+(−π, π] and merged when closer than MERGE_TOL. The grid has GRID_POINTS per coordinate
+(fewer in higher dimension, at most MAX_STARTS starts; where even 2 per coordinate
+would exceed MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead):
+an equilibrium whose basin of attraction misses every start is not found, and the
+report says so. A root on a continuum of equilibria (a straight line along which ∂V/∂q
+stays zero) is replaced by its family's representative with its free directions
+(``continua``), so a family is reported once.
 """
 
 from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass
 from fractions import Fraction
 from typing import Mapping
 
@@ -33,6 +37,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene
 from rbdsolve.problem.schema import Question
+from rbdsolve.solvers.continua import free_directions, is_axis, null_count, representative
 
 GRID_POINTS = 24
 MAX_STARTS = 4096
@@ -102,26 +107,52 @@ def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
         return None
 
 
-def equilibrium_for_modes(question: Question, model: Model) -> dict[str, sp.Expr]:
+def equilibrium_for_modes(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tuple[str, ...]]:
     """The question's ``about`` (checked to be an equilibrium in floating point), or the
-    first stable equilibrium found numerically."""
+    first stable equilibrium found numerically, else the first one stable across a
+    continuum of equilibria (its representative: see ``continua``); and notes saying
+    which was chosen when it lies on a continuum."""
     names = model.coordinate_names()
-    about = question.options.about
-    if about is not None:
-        at = {name: model.symbols.scalar(e) for name, (_, e) in zip(names, about)}
-        point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
-        g, H = compiled_gradient(model)
-        residual = np.asarray(g(point), dtype=float)
-        scale = max(np.max(np.abs(np.asarray(H(point), dtype=float))), 1e-300)  # |∂V/∂q| per unit of q
-        if np.max(np.abs(residual)) > ROOT_TOL * scale:
-            (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
-            raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
-        return at
+    if question.options.about is not None:
+        return _checked_about(question, model), ()
     found = find_numeric(model)
-    stable = [p for p, kind in found.equilibria if kind == "stable"]
-    if not stable:
+    stable = [r for r in found.equilibria if r.kind == "stable"]
+    across = [r for r in found.equilibria if r.kind == "neutral" and r.free and r.stable_across]
+    if not stable and not across:
         raise UnsolvedError("no stable equilibrium found numerically; choose one with 'modes: {about: {...}}'")
-    return {n: sp.Float(v, 17) for n, v in zip(names, stable[0])}
+    chosen = (stable or across)[0]
+    notes = () if not chosen.free else (
+        continuum_text(chosen.free, names) + "; the modes are taken about it, the first equilibrium found that is "
+        "stable across the continuum (choose another with 'modes: {about: {...}}'); along the continuum λ = 0: neutral",)
+    return {n: sp.Float(v, 17) for n, v in zip(names, chosen.at)}, notes
+
+
+def _checked_about(question: Question, model: Model) -> dict[str, sp.Expr]:
+    """The question's ``about``, refused unless ∂V/∂q vanishes there (relative to H)."""
+    about = question.options.about
+    at = {name: model.symbols.scalar(e) for name, (_, e) in zip(model.coordinate_names(), about)}
+    point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
+    g, H = compiled_gradient(model)
+    residual = np.asarray(g(point), dtype=float)
+    scale = max(np.max(np.abs(np.asarray(H(point), dtype=float))), 1e-300)  # |∂V/∂q| per unit of q
+    if np.max(np.abs(residual)) > ROOT_TOL * scale:
+        (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
+        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
+    return at
+
+
+def continuum_text(free: tuple[tuple[float, ...], ...], names: list[str]) -> str:
+    """'every x is an equilibrium (a continuum); shown at x = 0', or the direction."""
+    parts = []
+    for v in free:
+        axis = is_axis(v)
+        if axis is not None:
+            parts.append(f"every {names[axis]} is an equilibrium (a continuum); shown at {names[axis]} = 0")
+        else:
+            direction = ", ".join(f"{c:.6g}" for c in v)
+            parts.append(f"the equilibria form a continuum along ({', '.join(names)}) ∝ ({direction}); "
+                         "shown at its point nearest q = 0")
+    return "; ".join(parts)
 
 
 def compiled_gradient(model: Model):
@@ -151,33 +182,75 @@ def gradient_scale(model: Model, g) -> float:
     return max(max(samples, default=1.0), 1e-300)
 
 
+@dataclass(frozen=True)
+class Root:
+    """An equilibrium found numerically: where, its kind ("stable" | "unstable" |
+    "neutral", from the Hessian of V), the directions along which it is one point of a
+    continuum of equilibria (unit vectors in coordinate order; empty when isolated),
+    and whether V curves upward across them (H ≥ 0 with zero eigenvalues only along
+    the free directions)."""
+
+    at: tuple[float, ...]
+    kind: str
+    free: tuple[tuple[float, ...], ...] = ()
+    stable_across: bool = False
+
+
+@dataclass(frozen=True)
 class NumericEquilibria:
-    def __init__(self, equilibria: list[tuple[tuple[float, ...], str]], starts: int):
-        self.equilibria = equilibria  # (q, "stable" | "unstable" | "neutral")
-        self.starts = starts
+    equilibria: tuple[Root, ...]
+    starts: int
+    sampling: str  # how the starts were placed: a grid, or a fixed pseudo-random sample
 
 
 def find_numeric(model: Model) -> NumericEquilibria:
+    """Newton from every start (see the module's docstring), each root polished,
+    wrapped, replaced by its continuum's representative if it lies on one, and merged."""
     from scipy.optimize import root
 
     g, H = compiled_gradient(model)
-    scale = gradient_scale(model, g)
-    starts = _starts(model, GRID_POINTS)
-    roots: list[np.ndarray] = []
+    tol = ROOT_TOL * gradient_scale(model, g)
+    starts, sampling = _starts(model, GRID_POINTS)
+    roots: list[Root] = []
     for start in starts:
         try:
             result = root(g, start, jac=H, method="hybr")
             x = _wrapped(model, _polished(result.x, g, H))
-            residual = np.max(np.abs(g(x)))
+            if np.max(np.abs(g(x))) > tol or not _inside(model, x) or _on_a_family(model, x, roots):
+                continue
+            found = _as_root(model, x, g, H, tol)
         except UnsolvedError:  # Newton wandered where V has no value: this start finds nothing
             continue
-        if residual > ROOT_TOL * scale or not _inside(model, x):
-            continue
-        if all(np.max(np.abs(_difference(model, x, y))) > MERGE_TOL for y in roots):
-            roots.append(x)
-    roots.sort(key=tuple)
-    return NumericEquilibria([(tuple(float(v) for v in x), _kind(np.asarray(H(x), dtype=float))) for x in roots],
-                             len(starts))
+        if all(np.max(np.abs(_difference(model, np.array(found.at), np.array(r.at)))) > MERGE_TOL for r in roots):
+            roots.append(found)
+    return NumericEquilibria(tuple(sorted(roots, key=lambda r: r.at)), len(starts), sampling)
+
+
+def _on_a_family(model: Model, x: np.ndarray, roots: list[Root]) -> bool:
+    """x differs from a continuum's representative only along its free directions."""
+    for r in roots:
+        if r.free:
+            d = _difference(model, x, np.array(r.at))
+            F = np.array(r.free, dtype=float).T
+            if np.max(np.abs(d - F @ (F.T @ d))) <= MERGE_TOL:
+                return True
+    return False
+
+
+def _as_root(model: Model, x: np.ndarray, g, H, tol: float) -> Root:
+    """The root x classified, or its continuum's representative with the free directions."""
+    hess = np.asarray(H(x), dtype=float)
+    half_widths = [(hi - lo) / 2 for lo, hi in _box(model)]
+    free = free_directions(x, g, hess, half_widths, tol) if null_count(hess) else ()
+    if free:
+        rep = _wrapped(model, representative(x, free))
+        if np.max(np.abs(g(rep))) <= tol:
+            x, hess = rep, np.asarray(H(rep), dtype=float)
+        else:
+            free = ()
+    kind = _kind(hess)
+    across = bool(free) and kind == "neutral" and null_count(hess) == len(free)
+    return Root(tuple(float(v) for v in x), kind, free, across)
 
 
 def _polished(x: np.ndarray, g, H, steps: int = 3) -> np.ndarray:
@@ -210,18 +283,20 @@ def _box(model: Model) -> list[tuple[float, float]]:
     return [(-math.pi, math.pi) if q in model.angles else (-reach, reach) for q in model.q]
 
 
-def _starts(model: Model, per_axis: int) -> list[np.ndarray]:
+def _starts(model: Model, per_axis: int) -> tuple[list[np.ndarray], str]:
     """A grid of per_axis points on each coordinate, cell-centred, while it has at most
     MAX_STARTS points; in more dimensions MAX_STARTS points of a fixed pseudo-random
-    sample of the box instead (the same every run)."""
+    sample of the box instead (the same every run). With a description of which."""
     n, box = len(model.q), _box(model)
     per_axis = min(per_axis, int(MAX_STARTS ** (1 / n)))
     if per_axis >= 2:
         axes = [np.linspace(lo, hi, per_axis, endpoint=False) + (hi - lo) / (2 * per_axis) for lo, hi in box]
-        return [np.array(p) for p in itertools.product(*axes)]
+        grid = " × ".join([str(per_axis)] * n)
+        return [np.array(p) for p in itertools.product(*axes)], "starts on a " + (f"{grid} grid" if n > 1 else "grid")
     low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
     sample = np.random.default_rng(SAMPLE_SEED).random((MAX_STARTS, n))
-    return list(low + sample * (high - low))
+    return list(low + sample * (high - low)), (f"starts at fixed pseudo-random points (a grid of even 2 per "
+                                               f"coordinate would exceed {MAX_STARTS} starts in {n} dimensions)")
 
 
 def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:

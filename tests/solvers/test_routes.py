@@ -18,6 +18,7 @@ routes run, and:
 from __future__ import annotations
 
 import math
+import time
 from fractions import Fraction
 
 import pytest
@@ -26,7 +27,9 @@ from conftest import PROBLEMS
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.problem.schema import QuestionKind
-from rbdsolve.solvers import Options, RouteChoice, solve_problem
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.solvers import Options, RouteChoice, solve_file, solve_problem
+from rbdsolve.solvers.budget import OutOfTime, available
 
 SAMPLES = [Fraction(13, 10), Fraction(7, 10), Fraction(17, 10), Fraction(11, 10), Fraction(9, 10), Fraction(23, 10)]
 KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA, QuestionKind.INERTIA, QuestionKind.STEADY_SPIN,
@@ -163,3 +166,148 @@ def test_numeric_route_refuses_where_v_has_no_value() -> None:
     model = build_model(load_text(ZERO_LENGTH, "scene.yaml"))
     (solution,) = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions
     assert solution.answers is None and "cannot be evaluated at q = (0)" in solution.error
+
+
+# --- auto's fallback, the budget, and missing values ------------------------------------
+#
+# A particle at height y under gravity: V = m g y, ∂V/∂y = m g ≠ 0, so no route can find
+# an equilibrium. A pendulum: V = −m g l cos θ, equilibria θ = 0 (stable) and θ = π.
+
+FALLING = """\
+parameters: {m: mass, g: gravity}
+coordinates: [y]
+gravity: [0, -g]
+points:
+  P: [0, y]
+bodies:
+  b: {shape: particle, mass: m, at: P}
+questions:
+  - equilibria
+values: {m: 1, g: 2}
+"""
+
+PENDULUM = """\
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  b: {shape: particle, mass: m, at: P}
+questions:
+  - equilibria
+values: {m: 1, l: 1, g: 2}
+"""
+
+
+def _problem(text: str):
+    from rbdsolve.problem import load_text
+
+    return load_text(text, "scene.yaml")
+
+
+def _replace_exact(monkeypatch, exact) -> None:
+    from rbdsolve import solvers
+
+    family = solvers.FAMILIES[QuestionKind.EQUILIBRIA]
+    monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EQUILIBRIA, solvers.Family(exact, family.numeric))
+
+
+def test_when_both_routes_fail_both_reasons_are_kept_and_the_route_is_the_last() -> None:
+    (solution,) = solve_problem(build_model(_problem(FALLING)), Options(route=RouteChoice.AUTO)).solutions
+    assert solution.route.value == "numeric"
+    assert solution.error.startswith("the exact route could not answer (∂V/∂q = 0 has no real solution")
+    assert "nor could the numeric route (Newton's method from 24 starts" in solution.error
+    assert solution.error.endswith("found no equilibrium)")
+
+
+def test_the_route_tag_says_the_numeric_route_answered(monkeypatch) -> None:
+    def refuse(question, model, options):
+        raise UnsolvedError("too hard")
+
+    _replace_exact(monkeypatch, refuse)
+    (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options()).solutions
+    assert solution.error is None and solution.route.value == "numeric"
+    assert solution.warnings[0].startswith("the exact route could not answer (too hard)")
+    assert [eq.stability.value for eq in solution.answers.equilibria] == ["stable", "unstable"]
+
+
+@pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
+def test_the_numeric_fallback_gets_the_budget_again(monkeypatch) -> None:
+    """Documented (--help, docs/json.md): each route gets the whole budget. The exact
+    route spends all of its 0.3 s; the numeric one, sleeping 0.2 s, still answers."""
+    from rbdsolve import solvers
+
+    def endless(question, model, options):
+        while True:
+            time.sleep(0.01)
+
+    def slow_numeric(question, model, options):
+        time.sleep(0.2)
+        return numeric(question, model, options)
+
+    numeric = solvers.FAMILIES[QuestionKind.EQUILIBRIA].numeric
+    monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EQUILIBRIA, solvers.Family(endless, slow_numeric))
+    (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options(budget=0.3)).solutions
+    assert solution.error is None and solution.route.value == "numeric"
+    assert "'equilibria' ran out of its 0.3 s budget" in solution.warnings[0]
+
+
+def test_missing_values_names_them_in_order_and_auto_does_not_fall_back(monkeypatch) -> None:
+    from rbdsolve.solvers.common import missing_values
+
+    def refuse(question, model, options):
+        raise UnsolvedError("too hard")
+
+    problem = _problem(PENDULUM.replace("values: {m: 1, l: 1, g: 2}\n", "values: {l: 1}\n"))
+    model = build_model(problem)
+    assert missing_values(model) == ("m", "g")
+    assert missing_values(model.with_values({"m": Fraction(1), "g": Fraction(2)})) == ()
+    _replace_exact(monkeypatch, refuse)
+    (auto,) = solve_problem(model, Options()).solutions
+    assert (auto.route.value, auto.error) == ("exact", "too hard")
+    (numeric,) = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions
+    assert numeric.route.value == "numeric"
+    assert numeric.error.startswith("the numeric route needs a value for every parameter; give m, g ")
+
+
+def _summary_out_of_time(monkeypatch) -> None:
+    from rbdsolve import solvers
+
+    def out_of_time(model):
+        raise OutOfTime(0.5, "the model (T and V)")
+
+    monkeypatch.setattr(solvers, "summarize_model", out_of_time)
+
+
+def test_auto_shows_the_coordinates_only_when_t_and_v_run_out(monkeypatch) -> None:
+    _summary_out_of_time(monkeypatch)
+    report = solve_file(_problem(PENDULUM), Options(budget=0.5))
+    assert report.model.T is None and report.model.V is None
+    note, coordinates = report.model.steps
+    assert note.text.startswith("warning: the model (T and V) ran out of its 0.5 s budget")
+    assert "numeric route" in coordinates.text
+    (solution,) = report.solutions
+    assert solution.error is None  # the questions still run
+
+
+@pytest.mark.parametrize("route, values", [(RouteChoice.EXACT, "values: {m: 1, l: 1, g: 2}\n"),
+                                           (RouteChoice.AUTO, "values: {l: 1}\n")])
+def test_without_a_numeric_fallback_a_model_out_of_time_fails_the_file(monkeypatch, route, values) -> None:
+    _summary_out_of_time(monkeypatch)
+    problem = _problem(PENDULUM.replace("values: {m: 1, l: 1, g: 2}\n", values))
+    with pytest.raises(UnsolvedError, match=r"scene.yaml: the model \(T and V\) ran out of its 0.5 s budget"):
+        solve_file(problem, Options(route=route, budget=0.5))
+
+
+@pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
+def test_auto_falls_back_when_the_real_alarm_rings_in_the_summary(monkeypatch) -> None:
+    from rbdsolve import solvers
+
+    def endless(model):
+        while True:
+            time.sleep(0.01)
+
+    monkeypatch.setattr(solvers, "summarize_model", endless)
+    report = solve_file(_problem(PENDULUM), Options(budget=1.0))
+    assert report.model.T is None and report.model.steps[0].text.startswith("warning: the model (T and V) ran out")
