@@ -9,8 +9,9 @@ and solving, in a process where rbdsolve, sympy, numpy and scipy are already imp
 and one size-1 problem of the same family has been solved on the same route (a warm-up,
 so that lazy imports and first-call compilation are not charged to the size measured).
 Each repeat starts from the text again. Also recorded: the question's own
-``solution.seconds`` (the solver alone), the route that ran, its error estimate, and
-the relative error of the eigenvalues (modes questions) against the 50-digit reference:
+``solution.seconds`` (the solver alone) and "compute", load + build + the solver (the
+answer from the text, without the report's model section that writes out T and V),
+the route that ran, its error estimate, and the relative error of the eigenvalues (modes questions) against the 50-digit reference:
 max_i |λ_i − λ_ref,i| / |λ_ref,i|, the exact route's eigenvalues evaluated to 30 digits.
 """
 
@@ -27,15 +28,17 @@ LONG = 10.0  # one sample only when a solve takes longer than this (s): the time
 
 
 def solve_once(case: Case, route: str):
-    """One timed solve; returns (seconds, the question's Solution, the model)."""
+    """One timed solve; returns (seconds, load + build seconds, the question's Solution,
+    the model)."""
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_text
     from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
     start = time.perf_counter()
     model = build_model(load_text(case.text))
+    built = time.perf_counter()
     report = solve_problem(model, Options(route=RouteChoice(route)))
-    return time.perf_counter() - start, report.solutions[0], model
+    return time.perf_counter() - start, built - start, report.solutions[0], model
 
 
 def reference(case: Case, model) -> list:
@@ -74,14 +77,15 @@ def measure(family: str, size: int, route: str, repeats: int) -> dict:
     median and every sample."""
     case = FAMILIES[family](size)
     solve_once(FAMILIES[family](1), route)
-    samples, solution, model = [], None, None
+    samples, computes, solution, model = [], [], None, None
     for _ in range(repeats):
-        seconds, solution, model = solve_once(case, route)
+        seconds, build, solution, model = solve_once(case, route)
         samples.append(seconds)
+        computes.append(build + solution.seconds)
         if solution.error or seconds > LONG:
             break
     out = {"samples": samples, "median": statistics.median(samples), "route_ran": solution.route.value,
-           "solution_seconds": solution.seconds, "error": solution.error,
+           "solution_seconds": solution.seconds, "compute": statistics.median(computes), "error": solution.error,
            "error_estimate": solution.error_estimate, "relative_error": None}
     if case.question == "modes" and solution.answers is not None:
         out["relative_error"] = relative_error(solution.answers.eigenvalues, reference(case, model),

@@ -73,6 +73,7 @@ class RouteMeasurement:
     median_s: float | None = None
     samples_s: tuple[float, ...] = ()
     solution_s: float | None = None
+    compute_s: float | None = None  # load + build + the solver, without the model section (T, V)
     whole_process_s: float | None = None
     relative_error: float | None = None
     error_estimate: float | None = None
@@ -148,7 +149,8 @@ def measure_route(family: str, size: int, route: str, plan: Plan, files: Path) -
         whole, _ = _median_wall(_python() + ["-m", "rbdsolve", "solve", str(path), "--route", route,
                                              "--format", "json"], plan.repeats, plan.timeout)
     return RouteMeasurement(family, size, route, "ok", data["median"], tuple(data["samples"]),
-                            data["solution_seconds"], whole, data["relative_error"], data["error_estimate"])
+                            data["solution_seconds"], data["compute"], whole, data["relative_error"],
+                            data["error_estimate"])
 
 
 def measure_routes(plan: Plan, files: Path) -> list[RouteMeasurement]:
