@@ -24,7 +24,7 @@ In a steady motion every component in a triad T (turning at Ω_T) is constant. T
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -48,7 +48,9 @@ class SteadyMotionAnswers:
     angular_momentum: tuple[sp.Expr, sp.Expr, sp.Expr]  # L_P, triad components
     moment: tuple[sp.Expr, sp.Expr, sp.Expr]  # M_P, triad components
     relations: tuple[sp.Expr, ...]  # each = 0
-    solved: dict[str, sp.Expr]  # the asked quantity, from the relations
+    solved: dict[str, sp.Expr]  # the asked quantities, from the relations
+    # the reactions' other unknowns (not asked for), solved together with the asked ones
+    found_along: dict[str, sp.Expr] = field(default_factory=dict)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -89,9 +91,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
     target = targets[0] if len(targets) == 1 else None
     relations = tuple(_relation(x, target) for balance in balances for x in balance if tidy_fraction(x) != 0)
-    solved = _solve_for(opts, targets, relations, model, rates)
+    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
     answers = SteadyMotionAnswers(triad.vectors, {str(a): b for a, b in rates.items()}, tuple(omega), tuple(L),
-                                  tuple(M), relations, solved)
+                                  tuple(M), relations, solved, {str(u): v for u, v in along.items()})
     steps += _balance_steps(answers, dL, v_P, opts, targets, a_G)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
 
@@ -201,33 +203,69 @@ def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
 
 
 def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,
-               rates: dict) -> dict[str, sp.Expr]:
-    """The asked quantities from the relations that hold them; every other relation must
-    then hold too (unless it holds an unknown not asked for), or there is no such steady
-    motion. A positive quantity (ω₀²) takes only positive roots."""
+               rates: dict, reaction_unknowns: tuple[sp.Symbol, ...] = ()):
+    """The asked quantities from the relations that hold them, solved together with the
+    reactions' other unknowns (x_N alone needs N too: N x_N = … and N = m g hold them
+    together), so that no answer keeps an unknown; an answer that still holds one (a
+    reaction's unknown or a rate the rolling conditions leave open) is refused. Every
+    other relation must then hold too (unless it holds an unknown not found), or there
+    is no such steady motion. A positive quantity (ω₀²) takes only positive roots.
+    Returns the asked values and those of the reactions' other unknowns."""
     if not targets:
-        return {}
+        return {}, {}
     if all(x in rates for x in targets):
-        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}
+        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}, {}
+    held = set().union(*(x.free_symbols for x in targets))
+    along = [u for u in reaction_unknowns if u not in held]
     X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
     replaced = [r.subs(dict(zip(targets, X))) for r in relations]
-    held = set().union(*(x.free_symbols for x in targets))
-    holding = [r for r in replaced if r.has(*X) and not r.has(*held)]
-    found = [f for f in (sp.solve(holding, X, dict=True) if holding else [])
-             if len(f) == len(X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
-                                             for x, d in zip(targets, X))]
+    holding = [r for r in replaced if r.has(*X, *along) and not r.has(*held)]
+    found = [f for f in (sp.solve(holding, X + along, dict=True) if holding else [])
+             if all(d in f for d in X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
+                                                   for x, d in zip(targets, X))]
     asked = ", ".join(x.text for x in opts.solve_for)
     if len(found) != 1:
         raise UnsolvedError(f"the relations do not give {asked} uniquely "
                             f"({'no relation holds ' + asked if not holding else f'{len(found)} solutions'})")
-    values = {x: tidy_fraction(_sin_cos(found[0][d])) for x, d in zip(targets, X)}
-    others = {model.symbols.parameters[u] for u in model.problem.unknowns} - set(targets) - held
+    back = dict(zip(X, targets))
+    values = {x: tidy_fraction(_sin_cos(found[0][d].xreplace(back))) for x, d in zip(targets, X)}
+    _require_known(values, _unknown_symbols(model) | held)
+    found_along = {u: tidy_fraction(_sin_cos(found[0][u])) for u in along
+                   if u in found[0] and not found[0][u].has(*X, *_unknown_symbols(model))}
+    _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
+    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along
+
+
+def _require_known(values: dict, unknown: set) -> None:
+    """An answer must be free of the unknowns: one still holding N (not asked for, and not
+    fixed by the relations) would be no answer."""
+    for x, v in values.items():
+        left = sorted(str(u) for u in v.free_symbols & unknown)
+        if left:
+            raise UnsolvedError(f"the relations leave {', '.join(left)} unknown, and {x} = {sp.sstr(v)} depends "
+                                f"on {'it' if len(left) == 1 else 'them'}: {x} is not fixed by this balance")
+
+
+def _require_rest(relations, values: dict, model: Model, targets, held: set, reactions: bool) -> None:
+    """Every relation free of the unknowns not found must hold with the values found."""
+    others = _unknown_symbols(model) - set(targets) - held - set(values)
     rest = [r for r in relations if not r.has(*others) and tidy_fraction(_sin_cos(r.subs(values))) != 0]
     if rest:
         shown = ", ".join(f"{x} = {sp.sstr(v)}" for x, v in values.items())
+        hint = " (or a contact force is missing from 'reactions')" if reactions else ""
         raise UnsolvedError(f"{shown} from the relations, but then {sp.sstr(rest[0])} = 0 must hold too: "
-                            "no such steady motion in general")
-    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}
+                            f"no such steady motion in general{hint}")
+
+
+def _unknown_symbols(model: Model) -> set[sp.Symbol]:
+    return {model.symbols.parameters[u] for u in model.problem.unknowns}
+
+
+def _reaction_unknowns(opts: SteadyMotionOptions, model: Model, names) -> tuple[sp.Symbol, ...]:
+    """The declared unknowns the reactions hold (N, x_N, F1, F2), in their declared order."""
+    held = set().union(*(names.vector(r.at).free_symbols | names.vector(r.force).free_symbols
+                         for r in opts.reactions))
+    return tuple(s for s in (model.symbols.parameters[u] for u in model.problem.unknowns) if s in held)
 
 
 def _sin_cos(x: sp.Expr) -> sp.Expr:
@@ -261,9 +299,20 @@ def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOpti
                       Relation(sp.Symbol(f"v_{about}"), _show(v_P, e))),
         *newton,
         st.result(balances, *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
-        *([st.result("Solved:", *[Relation(x, v) for x, v in zip(targets, answers.solved.values())])]
-          if answers.solved else []),
+        *_solved_steps(answers, targets),
     ]
+
+
+def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
+    """The asked values; with the reactions' other unknowns found together with them
+    first (N = m g before the x_N it fixes), as a worked solution would find them."""
+    if not answers.solved:
+        return []
+    asked = [Relation(x, v) for x, v in zip(targets, answers.solved.values())]
+    if not answers.found_along:
+        return [st.result("Solved:", *asked)]
+    return [st.result("Solved, together with the reactions' other unknowns:",
+                      *[Relation(sp.Symbol(u), v) for u, v in answers.found_along.items()], *asked)]
 
 
 def _target_first(relation: sp.Expr, target: sp.Expr | None):
@@ -274,5 +323,5 @@ def _target_first(relation: sp.Expr, target: sp.Expr | None):
     rest = [x for x in relation.args if not x.has(target)]
     if len(with_target) != 1:
         return relation
-    coefficient = sp.Mul(*[f for f in sp.Mul.make_args(with_target[0]) if f != target])
-    return Terms((Product(sp.Integer(1), (target, coefficient)), *rest))
+    number, coefficient = sp.Mul(*[f for f in sp.Mul.make_args(with_target[0]) if f != target]).as_coeff_Mul()
+    return Terms((Product(number, (target, coefficient)), *rest))
