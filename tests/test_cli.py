@@ -195,6 +195,18 @@ def test_steady_motion_x_N_alone_reads_free_of_N(tmp_path) -> None:
     assert "N" not in x_N.split("=", 1)[1]
 
 
+def test_steady_motion_rolling_contact_without_reaction_exits_2(tmp_path) -> None:
+    cone = tmp_path / "cone.yaml"
+    text = CONE.replace(PUSH, "").replace("{at: O, force: F1*e1 + F2*e2}", "{at: O, force: F1*e1 + F2*e2 + N*e3}")
+    cone.write_text(text)
+    line = text.splitlines().index("      reactions:") + 2  # the list's first item, 1-based
+    result = run("solve", str(cone))
+    assert result.exit_code == 2, result.output
+    assert (f"{cone}:{line}:9: questions[0].steady_motion.reactions: no reaction at the rolling contact 'B'"
+            in result.output)
+    assert "Traceback" not in result.output
+
+
 def test_steady_motion_answer_with_an_unknown_exits_1(tmp_path) -> None:
     cone = tmp_path / "cone.yaml"
     cone.write_text(CONE.replace("unknowns: [spin, N, x_N, F1, F2]", "unknowns: [spin, N, x_N, F1, F2, N2]")

@@ -19,7 +19,10 @@ In a steady motion every component in a triad T (turning at Ω_T) is constant. T
       m a_G = m g + Σ R_i,   a_G = (dv_G/dt)_T + Ω_T × v_G,
 
   gives three relations more: a cone rolling on its side (a line contact) has its
-  normal force's resultant at an unknown distance along the line.
+  normal force's resultant at an unknown distance along the line. Each rolling contact
+  then needs a reaction (Newton's law counts it even where it has no moment), and the
+  asked quantities are solved together with the reactions' other unknowns, so that no
+  answer keeps one (docs/format.md, steady_motion).
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.rotation import sequence_rotation, vee
 from rbdsolve.model.state import t
@@ -75,6 +78,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     P = names.vector(opts.about)
     if not opts.reactions:
         _require_moments_about_contact(opts, names, P)
+    _require_reactions_at_contacts(opts, model, k, names)
     L = fix(k.inertia().applyfunc(_sin_cos) * omega + fix(k.components(body.position) - k.components(P)).cross(body.mass * v_G))
     if any(tidy(x) != 0 for x in k.rate_in_triad(L)) or any(x.has(t) for x in L):
         raise UnsolvedError("not a steady motion: the angular momentum's components in the triad change")
@@ -112,6 +116,34 @@ def _require_moments_about_contact(opts: SteadyMotionOptions, names, P: sp.Matri
         raise UnsolvedError(f"the body rolls at {contact.text}: take moments about that point (about: "
                             f"{contact.text}), where the unknown contact force has no moment, or state the "
                             "contact forces as 'reactions'")
+
+
+def _require_reactions_at_contacts(opts: SteadyMotionOptions, model: Model, k: _Kinematics, names) -> None:
+    """With reactions, Newton's law for G, m a_G = m g + Σ R, joins the balance, so the
+    reactions must be all the contact forces: a missing one is a wrong answer, also at
+    the point P the moments are taken about (its force has no moment about P, but it
+    still counts in Σ R). A rolling contact C is stated by a reaction applied at C, or
+    by one at an unknown place on the line through C and another rolling contact: the
+    resultant of a line contact's distributed push (the cone's N at Q = x_N e1, on OB)."""
+    if not opts.reactions:
+        return
+    unknown = _unknown_symbols(model)
+    contacts = [k.components(names.vector(C)) for C in opts.contacts]
+    at = [k.components(names.vector(r.at)) for r in opts.reactions]
+    for C, r_C in zip(opts.contacts, contacts):
+        lines = [d for d in (r - r_C for r in contacts) if not _is_zero(d)]
+        if any(_is_zero(a - r_C) or (a.free_symbols & unknown and any(_is_zero((a - r_C).cross(d)) for d in lines))
+               for a in at):
+            continue
+        raise InputError(f"no reaction at the rolling contact '{C.text}': with 'reactions' given they must be all "
+                         "the contact forces, as Newton's law for G counts each one (even at the point the moments "
+                         f"are taken about); add one such as {{at: {C.text}, force: ...}} with unknowns (or, for a "
+                         f"line contact, one at an unknown distance along the line through {C.text} and another "
+                         "rolling point)", opts.reactions_loc)
+
+
+def _is_zero(v: sp.Matrix) -> bool:
+    return all(tidy_fraction(_sin_cos(x)) == 0 for x in v)
 
 
 def _forces(model: Model, k: _Kinematics, body: RigidBody, opts: SteadyMotionOptions, names):

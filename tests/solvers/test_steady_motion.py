@@ -122,3 +122,20 @@ def test_an_answer_that_keeps_an_unsolved_rate_is_refused() -> None:
     solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
     assert solution.error is not None and "leave spin unknown" in solution.error
 
+
+def test_a_rolling_contact_without_a_reaction_is_bad_input() -> None:
+    """Friction and push stated at the tip only: the rim's contact B has none (and the
+    tip's reaction sits at a known point, so it is no line contact's resultant)."""
+    text = CONE.replace("        - {at: Q, force: N*e3}              # the table's push, spread along OB\n", "")
+    text = text.replace("{at: O, force: F1*e1 + F2*e2}", "{at: O, force: F1*e1 + F2*e2 + N*e3}")
+    with pytest.raises(InputError, match="no reaction at the rolling contact 'B'") as caught:
+        solve(text)
+    assert caught.value.location.key_path() == "questions[0].steady_motion.reactions"
+
+
+def test_moments_about_the_contact_do_not_excuse_its_reaction() -> None:
+    """About C a force at C has no moment, but Newton's law for G still counts it."""
+    text = RING.replace("unknowns: [spin]", "unknowns: [spin, P]").replace(
+        "{about: C, rolling_at: C,", "{about: C, rolling_at: C, reactions: [{at: G, force: P*e3}],")
+    with pytest.raises(InputError, match="no reaction at the rolling contact 'C'"):
+        solve(text)
