@@ -175,3 +175,44 @@ def test_one_internal_error_does_not_lose_the_other_files(monkeypatch) -> None:
     assert result.exit_code == 3
     lines = [json.loads(x) for x in result.stdout.splitlines()]
     assert lines[0]["ok"] is True and lines[1]["ok"] is False and lines[1]["exit_code"] == 3
+
+
+CONE = (PROBLEMS / "steady" / "rolling-cone.yaml").read_text(encoding="utf-8")
+PUSH = "        - {at: Q, force: N*e3}              # the table's push, spread along OB\n"
+FRICTION = "        - {at: O, force: F1*e1 + F2*e2}     # friction\n"
+
+
+def test_steady_motion_x_N_alone_reads_free_of_N(tmp_path) -> None:
+    """N, F1, F2 are solved with x_N and shown first; x_N itself holds no N."""
+    cone = tmp_path / "cone.yaml"
+    cone.write_text(CONE.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
+    result = run("solve", str(cone))
+    assert result.exit_code == 0, result.output
+    out = result.output
+    assert "Solved, together with the reactions' other unknowns:" in out
+    assert "N = g m" in out and "F₂ = 0" in out
+    x_N = next(line for line in out.splitlines() if line.strip().startswith("x_N ="))
+    assert "N" not in x_N.split("=", 1)[1]
+
+
+def test_steady_motion_rolling_contact_without_reaction_exits_2(tmp_path) -> None:
+    cone = tmp_path / "cone.yaml"
+    text = CONE.replace(PUSH, "").replace("{at: O, force: F1*e1 + F2*e2}", "{at: O, force: F1*e1 + F2*e2 + N*e3}")
+    cone.write_text(text)
+    line = text.splitlines().index("      reactions:") + 2  # the list's first item, 1-based
+    result = run("solve", str(cone))
+    assert result.exit_code == 2, result.output
+    assert (f"{cone}:{line}:9: questions[0].steady_motion.reactions: no reaction at the rolling contact 'B'"
+            in result.output)
+    assert "Traceback" not in result.output
+
+
+def test_steady_motion_answer_with_an_unknown_exits_1(tmp_path) -> None:
+    cone = tmp_path / "cone.yaml"
+    cone.write_text(CONE.replace("unknowns: [spin, N, x_N, F1, F2]", "unknowns: [spin, N, x_N, F1, F2, N2]")
+                    .replace(FRICTION, FRICTION + "        - {at: B, force: N2*e3}\n")
+                    .replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
+    result = run("solve", str(cone))
+    assert result.exit_code == 1, result.output
+    assert "could not answer: the relations leave N2 unknown" in result.output
+    assert "Solved" not in result.output

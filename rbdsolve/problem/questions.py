@@ -172,7 +172,8 @@ class QuestionReader:
         if next(b for b in self.bodies if b.name == body).at is None:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
-        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets)
+        where = get("reactions").loc if get("reactions") is not None else None
+        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where)
 
     def point_list(self, node: Node | None) -> tuple[ex.Expr, ...]:
         """One point, or a list of points (a cone rolls at its tip and at its rim)."""

@@ -295,6 +295,7 @@ class SteadyMotionOptions:
     contacts: tuple[Expr, ...]  # points where the body rolls without slipping on a fixed surface
     reactions: tuple[Reaction, ...]  # contact forces stated with unknowns; then both balances count
     solve_for: tuple[Expr, ...]  # constants to solve the relations for (omega0**2; or N, x_N)
+    reactions_loc: Location | None = None  # where 'reactions' is, for errors about them
 
 
 @dataclass(frozen=True)

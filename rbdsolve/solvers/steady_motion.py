@@ -19,16 +19,19 @@ In a steady motion every component in a triad T (turning at Ω_T) is constant. T
       m a_G = m g + Σ R_i,   a_G = (dv_G/dt)_T + Ω_T × v_G,
 
   gives three relations more: a cone rolling on its side (a line contact) has its
-  normal force's resultant at an unknown distance along the line.
+  normal force's resultant at an unknown distance along the line. Each rolling contact
+  then needs a reaction (Newton's law counts it even where it has no moment), and the
+  asked quantities are solved together with the reactions' other unknowns, so that no
+  answer keeps one (docs/format.md, steady_motion).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.rotation import sequence_rotation, vee
 from rbdsolve.model.state import t
@@ -48,7 +51,9 @@ class SteadyMotionAnswers:
     angular_momentum: tuple[sp.Expr, sp.Expr, sp.Expr]  # L_P, triad components
     moment: tuple[sp.Expr, sp.Expr, sp.Expr]  # M_P, triad components
     relations: tuple[sp.Expr, ...]  # each = 0
-    solved: dict[str, sp.Expr]  # the asked quantity, from the relations
+    solved: dict[str, sp.Expr]  # the asked quantities, from the relations
+    # the reactions' other unknowns (not asked for), solved together with the asked ones
+    found_along: dict[str, sp.Expr] = field(default_factory=dict)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -73,6 +78,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     P = names.vector(opts.about)
     if not opts.reactions:
         _require_moments_about_contact(opts, names, P)
+    _require_reactions_at_contacts(opts, model, k, names)
     L = fix(k.inertia().applyfunc(_sin_cos) * omega + fix(k.components(body.position) - k.components(P)).cross(body.mass * v_G))
     if any(tidy(x) != 0 for x in k.rate_in_triad(L)) or any(x.has(t) for x in L):
         raise UnsolvedError("not a steady motion: the angular momentum's components in the triad change")
@@ -89,9 +95,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
     target = targets[0] if len(targets) == 1 else None
     relations = tuple(_relation(x, target) for balance in balances for x in balance if tidy_fraction(x) != 0)
-    solved = _solve_for(opts, targets, relations, model, rates)
+    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
     answers = SteadyMotionAnswers(triad.vectors, {str(a): b for a, b in rates.items()}, tuple(omega), tuple(L),
-                                  tuple(M), relations, solved)
+                                  tuple(M), relations, solved, {str(u): v for u, v in along.items()})
     steps += _balance_steps(answers, dL, v_P, opts, targets, a_G)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
 
@@ -110,6 +116,34 @@ def _require_moments_about_contact(opts: SteadyMotionOptions, names, P: sp.Matri
         raise UnsolvedError(f"the body rolls at {contact.text}: take moments about that point (about: "
                             f"{contact.text}), where the unknown contact force has no moment, or state the "
                             "contact forces as 'reactions'")
+
+
+def _require_reactions_at_contacts(opts: SteadyMotionOptions, model: Model, k: _Kinematics, names) -> None:
+    """With reactions, Newton's law for G, m a_G = m g + Σ R, joins the balance, so the
+    reactions must be all the contact forces: a missing one is a wrong answer, also at
+    the point P the moments are taken about (its force has no moment about P, but it
+    still counts in Σ R). A rolling contact C is stated by a reaction applied at C, or
+    by one at an unknown place on the line through C and another rolling contact: the
+    resultant of a line contact's distributed push (the cone's N at Q = x_N e1, on OB)."""
+    if not opts.reactions:
+        return
+    unknown = _unknown_symbols(model)
+    contacts = [k.components(names.vector(C)) for C in opts.contacts]
+    at = [k.components(names.vector(r.at)) for r in opts.reactions]
+    for C, r_C in zip(opts.contacts, contacts):
+        lines = [d for d in (r - r_C for r in contacts) if not _is_zero(d)]
+        if any(_is_zero(a - r_C) or (a.free_symbols & unknown and any(_is_zero((a - r_C).cross(d)) for d in lines))
+               for a in at):
+            continue
+        raise InputError(f"no reaction at the rolling contact '{C.text}': with 'reactions' given they must be all "
+                         "the contact forces, as Newton's law for G counts each one (even at the point the moments "
+                         f"are taken about); add one such as {{at: {C.text}, force: ...}} with unknowns (or, for a "
+                         f"line contact, one at an unknown distance along the line through {C.text} and another "
+                         "rolling point)", opts.reactions_loc)
+
+
+def _is_zero(v: sp.Matrix) -> bool:
+    return all(tidy_fraction(_sin_cos(x)) == 0 for x in v)
 
 
 def _forces(model: Model, k: _Kinematics, body: RigidBody, opts: SteadyMotionOptions, names):
@@ -201,33 +235,69 @@ def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
 
 
 def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,
-               rates: dict) -> dict[str, sp.Expr]:
-    """The asked quantities from the relations that hold them; every other relation must
-    then hold too (unless it holds an unknown not asked for), or there is no such steady
-    motion. A positive quantity (ω₀²) takes only positive roots."""
+               rates: dict, reaction_unknowns: tuple[sp.Symbol, ...] = ()):
+    """The asked quantities from the relations that hold them, solved together with the
+    reactions' other unknowns (x_N alone needs N too: N x_N = … and N = m g hold them
+    together), so that no answer keeps an unknown; an answer that still holds one (a
+    reaction's unknown or a rate the rolling conditions leave open) is refused. Every
+    other relation must then hold too (unless it holds an unknown not found), or there
+    is no such steady motion. A positive quantity (ω₀²) takes only positive roots.
+    Returns the asked values and those of the reactions' other unknowns."""
     if not targets:
-        return {}
+        return {}, {}
     if all(x in rates for x in targets):
-        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}
+        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}, {}
+    held = set().union(*(x.free_symbols for x in targets))
+    along = [u for u in reaction_unknowns if u not in held]
     X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
     replaced = [r.subs(dict(zip(targets, X))) for r in relations]
-    held = set().union(*(x.free_symbols for x in targets))
-    holding = [r for r in replaced if r.has(*X) and not r.has(*held)]
-    found = [f for f in (sp.solve(holding, X, dict=True) if holding else [])
-             if len(f) == len(X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
-                                             for x, d in zip(targets, X))]
+    holding = [r for r in replaced if r.has(*X, *along) and not r.has(*held)]
+    found = [f for f in (sp.solve(holding, X + along, dict=True) if holding else [])
+             if all(d in f for d in X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
+                                                   for x, d in zip(targets, X))]
     asked = ", ".join(x.text for x in opts.solve_for)
     if len(found) != 1:
         raise UnsolvedError(f"the relations do not give {asked} uniquely "
                             f"({'no relation holds ' + asked if not holding else f'{len(found)} solutions'})")
-    values = {x: tidy_fraction(_sin_cos(found[0][d])) for x, d in zip(targets, X)}
-    others = {model.symbols.parameters[u] for u in model.problem.unknowns} - set(targets) - held
+    back = dict(zip(X, targets))
+    values = {x: tidy_fraction(_sin_cos(found[0][d].xreplace(back))) for x, d in zip(targets, X)}
+    _require_known(values, _unknown_symbols(model) | held)
+    found_along = {u: tidy_fraction(_sin_cos(found[0][u])) for u in along
+                   if u in found[0] and not found[0][u].has(*X, *_unknown_symbols(model))}
+    _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
+    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along
+
+
+def _require_known(values: dict, unknown: set) -> None:
+    """An answer must be free of the unknowns: one still holding N (not asked for, and not
+    fixed by the relations) would be no answer."""
+    for x, v in values.items():
+        left = sorted(str(u) for u in v.free_symbols & unknown)
+        if left:
+            raise UnsolvedError(f"the relations leave {', '.join(left)} unknown, and {x} = {sp.sstr(v)} depends "
+                                f"on {'it' if len(left) == 1 else 'them'}: {x} is not fixed by this balance")
+
+
+def _require_rest(relations, values: dict, model: Model, targets, held: set, reactions: bool) -> None:
+    """Every relation free of the unknowns not found must hold with the values found."""
+    others = _unknown_symbols(model) - set(targets) - held - set(values)
     rest = [r for r in relations if not r.has(*others) and tidy_fraction(_sin_cos(r.subs(values))) != 0]
     if rest:
         shown = ", ".join(f"{x} = {sp.sstr(v)}" for x, v in values.items())
+        hint = " (or a contact force is missing from 'reactions')" if reactions else ""
         raise UnsolvedError(f"{shown} from the relations, but then {sp.sstr(rest[0])} = 0 must hold too: "
-                            "no such steady motion in general")
-    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}
+                            f"no such steady motion in general{hint}")
+
+
+def _unknown_symbols(model: Model) -> set[sp.Symbol]:
+    return {model.symbols.parameters[u] for u in model.problem.unknowns}
+
+
+def _reaction_unknowns(opts: SteadyMotionOptions, model: Model, names) -> tuple[sp.Symbol, ...]:
+    """The declared unknowns the reactions hold (N, x_N, F1, F2), in their declared order."""
+    held = set().union(*(names.vector(r.at).free_symbols | names.vector(r.force).free_symbols
+                         for r in opts.reactions))
+    return tuple(s for s in (model.symbols.parameters[u] for u in model.problem.unknowns) if s in held)
 
 
 def _sin_cos(x: sp.Expr) -> sp.Expr:
@@ -261,9 +331,20 @@ def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOpti
                       Relation(sp.Symbol(f"v_{about}"), _show(v_P, e))),
         *newton,
         st.result(balances, *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
-        *([st.result("Solved:", *[Relation(x, v) for x, v in zip(targets, answers.solved.values())])]
-          if answers.solved else []),
+        *_solved_steps(answers, targets),
     ]
+
+
+def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
+    """The asked values; with the reactions' other unknowns found together with them
+    first (N = m g before the x_N it fixes), as a worked solution would find them."""
+    if not answers.solved:
+        return []
+    asked = [Relation(x, v) for x, v in zip(targets, answers.solved.values())]
+    if not answers.found_along:
+        return [st.result("Solved:", *asked)]
+    return [st.result("Solved, together with the reactions' other unknowns:",
+                      *[Relation(sp.Symbol(u), v) for u, v in answers.found_along.items()], *asked)]
 
 
 def _target_first(relation: sp.Expr, target: sp.Expr | None):
@@ -274,5 +355,5 @@ def _target_first(relation: sp.Expr, target: sp.Expr | None):
     rest = [x for x in relation.args if not x.has(target)]
     if len(with_target) != 1:
         return relation
-    coefficient = sp.Mul(*[f for f in sp.Mul.make_args(with_target[0]) if f != target])
-    return Terms((Product(sp.Integer(1), (target, coefficient)), *rest))
+    number, coefficient = sp.Mul(*[f for f in sp.Mul.make_args(with_target[0]) if f != target]).as_coeff_Mul()
+    return Terms((Product(number, (target, coefficient)), *rest))

@@ -75,8 +75,67 @@ def test_reactions_let_moments_be_taken_about_any_point() -> None:
     assert sp.simplify(solution.answers.solved["N"] - m * g) == 0
 
 
-def test_a_missing_reaction_leaves_no_steady_motion() -> None:
-    """Without the normal force nothing holds the cone up: N's relation becomes m g = 0."""
-    text = CONE.replace("        - {at: Q, force: N*e3}              # the table's push, spread along OB\n", "")
-    solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [F1, F2]"))
+def test_a_missing_friction_leaves_no_steady_motion() -> None:
+    """Without friction nothing turns G on its circle: Newton's law along e1 becomes
+    3/4 m Omega² h cos(alpha) = 0, which does not hold (the reactions are then
+    complete, N at Q on the line of contact, but frictionless)."""
+    text = CONE.replace("        - {at: O, force: F1*e1 + F2*e2}     # friction\n", "")
+    solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [N, x_N]"))
     assert solution.error is not None and "no such steady motion" in solution.error
+    assert "missing from 'reactions'" in solution.error
+
+
+# By hand (the golden file's derivation): N = m g from Newton's law along e3, then the
+# moment about O along e2, N x_N = 3/4 m g h cos(alpha) + Omega L_O·e1 (inertia about the tip).
+h, alpha, Omega = sp.symbols("h alpha Omega", positive=True)
+X_N = (sp.Rational(3, 4) * h * sp.cos(alpha) + Omega**2 * h**2 * (
+    sp.Rational(9, 10) * sp.sin(alpha) * sp.cos(alpha) + sp.Rational(3, 20) * sp.tan(alpha) * sp.sin(alpha)**2) / g)
+
+
+def test_x_N_alone_is_solved_with_the_other_reaction_unknowns() -> None:
+    """solve_for [x_N] alone: N (and F1, F2) are solved with it, so x_N holds no N."""
+    solution = solve(CONE.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
+    assert solution.error is None, solution.error
+    assert list(solution.answers.solved) == ["x_N"]
+    value = solution.answers.solved["x_N"]
+    assert not {s.name for s in value.free_symbols} & {"N", "F1", "F2", "spin"}
+    assert sp.simplify(value - X_N) == 0
+    m = sp.Symbol("m", positive=True)
+    assert sp.simplify(solution.answers.found_along["N"] - m * g) == 0
+    assert sp.simplify(solution.answers.found_along["F1"] + sp.Rational(3, 4) * m * Omega**2 * h * sp.cos(alpha)) == 0
+
+
+def test_an_answer_that_keeps_an_unknown_is_refused() -> None:
+    """A second push at the rim, N2 at B: N + N2 = m g fixes neither, so x_N depends on
+    N2 (statically indeterminate) and is not printed."""
+    text = CONE.replace("unknowns: [spin, N, x_N, F1, F2]", "unknowns: [spin, N, x_N, F1, F2, N2]").replace(
+        "        - {at: O, force: F1*e1 + F2*e2}     # friction\n",
+        "        - {at: O, force: F1*e1 + F2*e2}     # friction\n        - {at: B, force: N2*e3}\n")
+    solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
+    assert solution.error is not None and "leave N2 unknown" in solution.error
+    assert "x_N is not fixed" in solution.error
+
+
+def test_an_answer_that_keeps_an_unsolved_rate_is_refused() -> None:
+    """Rolling at the tip alone (at rest anyway) leaves the spin open; x_N depends on it."""
+    text = CONE.replace("rolling_at: [O, B]", "rolling_at: O")
+    solution = solve(text.replace("solve_for: [N, x_N, F1, F2]", "solve_for: [x_N]"))
+    assert solution.error is not None and "leave spin unknown" in solution.error
+
+
+def test_a_rolling_contact_without_a_reaction_is_bad_input() -> None:
+    """Friction and push stated at the tip only: the rim's contact B has none (and the
+    tip's reaction sits at a known point, so it is no line contact's resultant)."""
+    text = CONE.replace("        - {at: Q, force: N*e3}              # the table's push, spread along OB\n", "")
+    text = text.replace("{at: O, force: F1*e1 + F2*e2}", "{at: O, force: F1*e1 + F2*e2 + N*e3}")
+    with pytest.raises(InputError, match="no reaction at the rolling contact 'B'") as caught:
+        solve(text)
+    assert caught.value.location.key_path() == "questions[0].steady_motion.reactions"
+
+
+def test_moments_about_the_contact_do_not_excuse_its_reaction() -> None:
+    """About C a force at C has no moment, but Newton's law for G still counts it."""
+    text = RING.replace("unknowns: [spin]", "unknowns: [spin, P]").replace(
+        "{about: C, rolling_at: C,", "{about: C, rolling_at: C, reactions: [{at: G, force: P*e3}],")
+    with pytest.raises(InputError, match="no reaction at the rolling contact 'C'"):
+        solve(text)
