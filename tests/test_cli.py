@@ -216,3 +216,35 @@ def test_steady_motion_answer_with_an_unknown_exits_1(tmp_path) -> None:
     assert result.exit_code == 1, result.output
     assert "could not answer: the relations leave N2 unknown" in result.output
     assert "Solved" not in result.output
+
+
+def _strict(text: str) -> dict:
+    def refuse(token: str):
+        raise ValueError(f"not strict JSON: {token}")
+
+    return json.loads(text, parse_constant=refuse)
+
+
+@pytest.mark.parametrize("path, values", [
+    ("steady/rolling-cone.yaml", ["m=1", "h=1", "alpha=1/2", "g=9.81", "Omega=2"]),
+    ("sg2150-2015-10-29/p3-rolling-ring.yaml", ["m=1", "r=1/5", "R=1", "g=9.81", "theta=1/2"]),  # no omega0
+])
+def test_steady_motion_numeric_route_prints_strict_json(path, values) -> None:
+    """Every number finite or null: the cone's F2 = 0 (no relative error), the ring's
+    relations holding omega0 and spin (null values)."""
+    sets = [arg for value in values for arg in ("--set", value)]
+    result = run("solve", str(PROBLEMS / path), "--route", "numeric", *sets, "--format", "json")
+    assert result.exit_code == 0, result.output
+    (answer,) = _strict(result.stdout)["results"]
+    assert answer["ok"] and answer["route"] == "numeric" and answer["error_estimate"] < 1e-12
+    assert answer["answers"]["solutions"] and answer["values"]["solved"] == answer["answers"]["solved"]
+
+
+def test_steady_motion_numeric_route_without_a_value_exits_1() -> None:
+    result = run("solve", str(PROBLEMS / "steady" / "heavy-top.yaml"), "--route", "numeric", "--set", "m=1",
+                 "--format", "json")
+    assert result.exit_code == 1, result.output
+    (answer,) = _strict(result.stdout)["results"]
+    assert answer["route"] == "numeric" and answer["answers"] is None
+    assert answer["error"].startswith("the numeric route needs a value for every parameter; give h, J1, J3, g, "
+                                      "theta, Omega (")

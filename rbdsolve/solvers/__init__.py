@@ -51,7 +51,7 @@ FAMILIES = {
     QuestionKind.INERTIA: Family(_later("inertia"), _later("inertia_numeric")),
     QuestionKind.IMPACT: Family(_later("impact"), _later("impact_numeric")),
     QuestionKind.STEADY_SPIN: Family(_later("steady_spin"), _later("steady_spin_numeric")),
-    QuestionKind.STEADY_MOTION: Family(_later("steady_motion")),
+    QuestionKind.STEADY_MOTION: Family(_later("steady_motion"), _later("steady_motion_numeric")),
 }
 
 

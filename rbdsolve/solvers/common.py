@@ -200,18 +200,24 @@ def _root_values(number: sp.Expr, roots: dict[sp.Expr, sp.Expr]) -> dict[sp.Expr
     return roots
 
 
-def missing_values(model) -> tuple[str, ...]:
-    """The parameters without a numeric value, in the file's order: floating-point work
-    (every numeric route, and auto's fallback to it) needs none missing."""
-    return tuple(p.name for p in model.problem.parameters if model.symbols.parameters[p.name] not in model.values)
+def missing_values(model, free: tuple[str, ...] = ()) -> tuple[str, ...]:
+    """The parameters without a numeric value, in the file's order, except those in
+    ``free`` (a route's own unknowns: steady_motion solves for omega0): floating-point
+    work (every numeric route, and auto's fallback to it) needs none missing."""
+    return tuple(p.name for p in model.problem.parameters
+                 if p.name not in free and model.symbols.parameters[p.name] not in model.values)
 
 
-def require_values(model, what: str) -> None:
+def require_values(model, what: str, free: tuple[str, ...] = ()) -> None:
     """Refuse floating-point work while ``missing_values`` is not empty, naming them."""
-    missing = missing_values(model)
+    missing = missing_values(model, free)
     if missing:
-        raise UnsolvedError(f"{what} needs a value for every parameter; give {', '.join(missing)} "
-                            "('values:' in the file, or --set NAME=VALUE)")
+        raise UnsolvedError(f"{what} needs a value for every parameter{_except(free)}; give "
+                            f"{', '.join(missing)} ('values:' in the file, or --set NAME=VALUE)")
+
+
+def _except(free: tuple[str, ...]) -> str:
+    return f" except {', '.join(free)} (solved for)" if free else ""
 
 
 def with_floats(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:

@@ -58,22 +58,68 @@ class SteadyMotionAnswers:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: SteadyMotionOptions = question.options
+    k, vectors = setup(opts, model)
+    omega, v_G = k.omega(), k.velocity(k.body.position)
+    steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
+                           f"{', '.join(vectors)} (which turns at Ω_T):",
+                           Relation(sp.Symbol("Omega_T"), show(k.Omega, vectors)),
+                           Relation(sp.Symbol("omega"), show(omega, vectors)),
+                           Relation(sp.Symbol("v_G"), show(v_G, vectors)))]
+    rates, rolling_steps = _rolling(opts, model, rolling_velocities(opts, model, k, omega, v_G), omega, vectors)
+    steps += rolling_steps
+    b = balances(opts, model, k, rates, omega, v_G)
+    targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
+    target = targets[0] if len(targets) == 1 else None
+    relations = tuple(relation(x, target) for x in b.components if tidy_fraction(x) != 0)
+    names = model.symbols.with_points(model.points)
+    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
+    answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
+                                  tuple(b.M), relations, solved, {str(u): v for u, v in along.items()})
+    steps += _balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G)
+    return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+
+
+@dataclass(frozen=True)
+class Balances:
+    """A steady motion's balances in the triad, with the rates found so far put in: ω,
+    v_G, L_P, dL_P/dt = Ω_T × L_P, v_P, M_P, a_G (with reactions, else None) and the
+    balances' components, each = 0 (Newton's law for G first, with reactions)."""
+
+    omega: sp.ImmutableMatrix
+    v_G: sp.ImmutableMatrix
+    L: sp.ImmutableMatrix
+    dL: sp.ImmutableMatrix
+    v_P: sp.ImmutableMatrix
+    M: sp.ImmutableMatrix
+    a_G: sp.ImmutableMatrix | None
+    components: tuple[sp.Expr, ...]
+
+
+def setup(opts: SteadyMotionOptions, model: Model) -> tuple[_Kinematics, tuple[str, str, str]]:
+    """The kinematics of the asked body in the asked triad, and the triad's vector names."""
     body = next(b for b in model.bodies if b.name == opts.body)
     triad = next(tr for tr in model.problem.triads if tr.name == opts.triad)
-    k = _Kinematics(model, triad.name, body)
+    return _Kinematics(model, triad.name, body), triad.vectors
+
+
+def rolling_velocities(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G) -> list[sp.Matrix]:
+    """v_C = v_G + ω × (r_C − r_G) at each rolling contact C, in triad components: each = 0."""
     names = model.symbols.with_points(model.points)
-    omega, v_G = k.omega(), k.velocity(body.position)
-    steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
-                           f"{', '.join(triad.vectors)} (which turns at Ω_T):",
-                           Relation(sp.Symbol("Omega_T"), _show(k.Omega, triad.vectors)),
-                           Relation(sp.Symbol("omega"), _show(omega, triad.vectors)),
-                           Relation(sp.Symbol("v_G"), _show(v_G, triad.vectors)))]
-    rates, rolling_steps = _rolling(opts, model, k, omega, v_G, triad.vectors)
-    steps += rolling_steps
+    r_G = k.components(k.body.position)
+    return [(v_G + omega.cross(k.components(names.vector(C)) - r_G)).applyfunc(tidy) for C in opts.contacts]
+
+
+def balances(opts: SteadyMotionOptions, model: Model, k: _Kinematics, rates: dict, omega, v_G) -> Balances:
+    """The angular momentum balance about P (and, with reactions, Newton's law for G),
+    with the rates found put in (none: the rates stay unknowns, as on the numeric
+    route). Refuses what is not a steady motion, and moments or reactions that would
+    leave out an unknown contact force."""
+    body = k.body
 
     def fix(v: sp.Matrix) -> sp.Matrix:  # the unknown rates found, each component tidied
         return sp.Matrix([tidy(x.xreplace(rates)) for x in v])
 
+    names = model.symbols.with_points(model.points)
     omega, v_G = fix(omega), fix(v_G)
     P = names.vector(opts.about)
     if not opts.reactions:
@@ -85,21 +131,15 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     dL, v_P = fix(k.Omega.cross(L)), fix(k.velocity(P))
     forces = _forces(model, k, body, opts, names)
     M = fix(sum(((r - k.components(P)).cross(F) for r, F in forces), sp.zeros(3, 1)))
-    balances, a_G = [dL + v_P.cross(body.mass * v_G) - M], None
+    found, a_G = [dL + v_P.cross(body.mass * v_G) - M], None
     if opts.reactions:  # the reactions' unknowns need Newton's law for G as well
         a_G = fix(k.rate_in_triad(v_G) + k.Omega.cross(v_G))
-        balances.insert(0, body.mass * a_G - sum((F for _, F in forces), sp.zeros(3, 1)))
-    if any(tidy(x).has(t) for balance in balances for x in balance):
+        found.insert(0, body.mass * a_G - sum((F for _, F in forces), sp.zeros(3, 1)))
+    if any(tidy(x).has(t) for balance in found for x in balance):
         raise UnsolvedError("not a steady motion: the balance's components in the triad change with time "
                             "(is gravity along the triad's axis of turning?)")
-    targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
-    target = targets[0] if len(targets) == 1 else None
-    relations = tuple(_relation(x, target) for balance in balances for x in balance if tidy_fraction(x) != 0)
-    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
-    answers = SteadyMotionAnswers(triad.vectors, {str(a): b for a, b in rates.items()}, tuple(omega), tuple(L),
-                                  tuple(M), relations, solved, {str(u): v for u, v in along.items()})
-    steps += _balance_steps(answers, dL, v_P, opts, targets, a_G)
-    return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+    frozen = [sp.ImmutableMatrix(x) if x is not None else None for x in (omega, v_G, L, dL, v_P, M, a_G)]
+    return Balances(*frozen, tuple(x for balance in found for x in balance))
 
 
 def _require_moments_about_contact(opts: SteadyMotionOptions, names, P: sp.Matrix) -> None:
@@ -190,13 +230,10 @@ class _Kinematics:
         return (self.R_rel * self.body.inertia * self.R_rel.T).applyfunc(tidy)
 
 
-def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G, vectors):
+def _rolling(opts: SteadyMotionOptions, model: Model, v_C: list[sp.Matrix], omega, vectors):
     """v_C = v_G + ω × (r_C − r_G) = 0 at the contact, solved for the unknown rates."""
     if not opts.contacts:
         return {}, []
-    names = model.symbols.with_points(model.points)
-    r_G = k.components(k.body.position)
-    v_C = [(v_G + omega.cross(k.components(names.vector(C)) - r_G)).applyfunc(tidy) for C in opts.contacts]
     unknowns = [model.symbols.parameters[u] for u in model.problem.unknowns]
     equations = [x for v in v_C for x in v if x != 0]
     found = sp.solve(equations, unknowns, dict=True) if equations else [{}]
@@ -205,15 +242,15 @@ def _rolling(opts: SteadyMotionOptions, model: Model, k: _Kinematics, omega, v_G
     rates = {a: tidy(b) for a, b in found[0].items()}
     where = " and ".join(C.text for C in opts.contacts)
     steps = [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
-                         "v_G + ω × (r_C − r_G) = 0:", *[Relation(_show(v, vectors), sp.Integer(0)) for v in v_C])]
+                         "v_G + ω × (r_C − r_G) = 0:", *[Relation(show(v, vectors), sp.Integer(0)) for v in v_C])]
     if rates:
         steps.append(st.result("which gives", *[Relation(a, b) for a, b in rates.items()]))
         steps.append(st.result("so the angular velocity is",
-                               Relation(sp.Symbol("omega"), _show(omega.xreplace(rates).applyfunc(tidy), vectors))))
+                               Relation(sp.Symbol("omega"), show(omega.xreplace(rates).applyfunc(tidy), vectors))))
     return rates, steps
 
 
-def _relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
+def relation(x: sp.Expr, target: sp.Expr | None) -> sp.Expr:
     """A balance component as a relation = 0: its numerator, without the positive
     parameter factors (m r/2 …) that do not change it, and, with a quantity to solve
     for, as a X + b with a factored and not negative: ω₀² cos θ (4R + r sin θ) − 2g sin θ."""
@@ -306,7 +343,7 @@ def _sin_cos(x: sp.Expr) -> sp.Expr:
     return sp.expand_trig(x.replace(sp.tan, lambda y: sp.sin(y) / sp.cos(y)))
 
 
-def _show(v, vectors):
+def show(v, vectors):
     return in_basis([(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0])
 
 
@@ -317,18 +354,18 @@ def _balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOpti
     target = targets[0] if len(targets) == 1 else None
     forces = "gravity and the reactions" if opts.reactions else "gravity"
     newton = ([st.equation("The acceleration of G (constant components, so a_G = Ω_T × v_G):",
-                           Relation(sp.Symbol("a_G"), _show(a_G, e)))] if a_G is not None else [])
+                           Relation(sp.Symbol("a_G"), show(a_G, e)))] if a_G is not None else [])
     balances = ("Newton's law for G, m a_G = m g + Σ R, and the angular momentum balance "
                 f"dL/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
                 f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:")
     return [
         st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
-                      Relation(sp.Symbol(f"L_{about}"), _show(answers.angular_momentum, e))),
+                      Relation(sp.Symbol(f"L_{about}"), show(answers.angular_momentum, e))),
         st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
-                    Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), _show(dL, e))),
+                    Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), show(dL, e))),
         st.definition(f"The moment of {forces} about {about}, and the velocity of {about}:",
-                      Relation(sp.Symbol(f"M_{about}"), _show(answers.moment, e)),
-                      Relation(sp.Symbol(f"v_{about}"), _show(v_P, e))),
+                      Relation(sp.Symbol(f"M_{about}"), show(answers.moment, e)),
+                      Relation(sp.Symbol(f"v_{about}"), show(v_P, e))),
         *newton,
         st.result(balances, *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
         *_solved_steps(answers, targets),

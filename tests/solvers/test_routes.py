@@ -12,7 +12,10 @@ routes run, and:
   same stability, unless the exact route found a continuum or conditions;
 - inertia and steady spin: the principal moments within 10 × the estimate;
 - impact: every number of the exact answers within 10 × the estimate (relative to
-  the largest).
+  the largest);
+- steady motion: each solve_for value, and ω (the exact ω with the numeric unknowns
+  put in: omega0, spin), within its own absolute bound, and within the relative
+  error_estimate where it is not zero within that bound.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from rbdsolve.solvers.budget import OutOfTime, available
 
 SAMPLES = [Fraction(13, 10), Fraction(7, 10), Fraction(17, 10), Fraction(11, 10), Fraction(9, 10), Fraction(23, 10)]
 KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA, QuestionKind.INERTIA, QuestionKind.STEADY_SPIN,
-         QuestionKind.IMPACT}
+         QuestionKind.IMPACT, QuestionKind.STEADY_MOTION}
 
 
 def _cases():
@@ -73,6 +76,8 @@ def test_numeric_route_agrees_with_exact(path) -> None:
             _same_equilibria(e, n, model)
         elif question.kind is QuestionKind.IMPACT:
             _same_tree(e.values, n.values, n.error_estimate)
+        elif question.kind is QuestionKind.STEADY_MOTION:
+            _same_steady_motion(e, n, model)
         elif question.kind is QuestionKind.INERTIA:
             _same_numbers(e.values["principal_moments"], n.answers.principal_moments, n.error_estimate)
         else:
@@ -97,6 +102,26 @@ def _same_numbers(want, got, estimate: float) -> None:
     assert len(want) == len(got)
     for w, g in zip(want, got):
         assert abs(w - g) <= max(10 * estimate, 1e-14) * abs(w), (w, g, estimate)
+
+
+def _same_steady_motion(e, n, model) -> None:
+    """Every numeric solution against the exact answers at its unknowns: the exact
+    solve_for values hold no unknown; the exact ω may hold omega0 or spin."""
+    import sympy as sp
+
+    assert n.answers.solutions
+    for solution in n.answers.solutions:
+        found = {model.symbols.parameters[u]: sp.Float(v, 17) for u, v in solution.unknowns.items() if v is not None}
+        want = {q: float(v) for q, v in e.values["solved"].items()}
+        want.update({f"omega{i}": float(sp.N(w.xreplace({**model.values, **found}), 30))
+                     for i, w in enumerate(e.answers.angular_velocity, 1)})
+        got = {**solution.solved, **dict(zip(("omega1", "omega2", "omega3"), solution.angular_velocity))}
+        assert set(want) == set(got)
+        for name, w in want.items():
+            bound = solution.absolute_errors[name]
+            assert abs(got[name] - w) <= bound, (name, w, got[name], bound)
+            if abs(w) > bound:
+                assert abs(got[name] - w) <= n.error_estimate * abs(w), (name, w, got[name], n.error_estimate)
 
 
 def _leaves(tree, path=""):

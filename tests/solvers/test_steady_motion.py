@@ -139,3 +139,59 @@ def test_moments_about_the_contact_do_not_excuse_its_reaction() -> None:
         "{about: C, rolling_at: C,", "{about: C, rolling_at: C, reactions: [{at: G, force: P*e3}],")
     with pytest.raises(InputError, match="no reaction at the rolling contact 'C'"):
         solve(text)
+
+
+# --- the numeric route ------------------------------------------------------------------
+#
+# The ring with values: ω₀² cos θ (4R + r sin θ) = 2 g sin θ (the seed's relation).
+
+VALUES = "values: {m: 1, r: 1/5, R: 1, g: 981/100, theta: 1/2}\n"
+
+
+def numeric(text: str):
+    from rbdsolve.solvers import Options, RouteChoice
+
+    model = build_model(load_text(text, "scene.yaml"))
+    return solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions[0]
+
+
+def seed_value(**values) -> float:
+    names = {"g": g, "R": R, "r": r, "theta": theta}
+    return float(SEED.subs({names[k]: sp.Rational(v) for k, v in values.items()}))
+
+
+def test_numeric_route_solves_for_omega0_without_its_value() -> None:
+    solution = numeric(RING + VALUES)
+    assert solution.error is None and solution.route.value == "numeric"
+    want = seed_value(g="981/100", R=1, r="1/5", theta="1/2")
+    assert abs(solution.answers.solved["omega0**2"] - want) <= solution.error_estimate * want
+    (one,) = solution.answers.solutions  # omega0 is positive: one root
+    assert abs(one.unknowns["omega0"] ** 2 - want) <= 1e-13 * want
+
+
+def test_numeric_route_reports_both_roots_of_a_real_omega0() -> None:
+    text = RING.replace("omega0: angular speed of G about the vertical axis",
+                        "omega0: {description: angular speed, positive: false}")
+    solution = numeric(text.replace("solve_for: omega0**2", "solve_for: omega0") + VALUES)
+    assert solution.error is None, solution.error
+    low, high = sorted(solution.answers.solved["omega0"])
+    assert low < 0 < high and abs(low + high) <= 1e-12 * high
+    first, second = solution.answers.angular_velocity  # ω changes sign with ω₀
+    assert all(abs(a + b) <= 1e-12 * max(1.0, abs(a)) for a, b in zip(first, second))
+
+
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        (VALUES, "values: {m: 1, r: 1/5, theta: 1/2}\n",
+         "the numeric route needs a value for every parameter except omega0 (solved for); give R, g "),
+        ("solve_for: omega0**2", "solve_for: [omega0, R]", "is singular at the solution"),
+        ("solve_for: omega0**2", "solve_for: spin", "found no solution of the relations"),
+    ],
+)
+def test_what_the_numeric_route_refuses(old, new, words) -> None:
+    text = (RING + VALUES).replace(old, new)
+    if "solve_for: spin" in text:
+        text = text.replace("theta: 1/2}", "theta: 1/2, omega0: 2}")
+    solution = numeric(text)
+    assert solution.answers is None and words in solution.error, solution.error
