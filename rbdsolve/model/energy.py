@@ -71,17 +71,23 @@ def kinetic_energy(model: Model) -> Energy:
 
 @memoized
 def potential_energy(model: Model) -> Energy:
-    terms: list[EnergyTerm] = []
+    terms = [EnergyTerm(name, tidy(value)) for name, value in potential_terms(model)]
+    terms += model.inertial  # centrifugal and translation potentials in a moving frame
+    return Energy(tuple(terms), tidy(sum((x.value for x in terms), sp.Integer(0))))
+
+
+def potential_terms(model: Model) -> list[tuple[str, sp.Expr]]:
+    """(name, value) of each gravity and spring term, as built (not tidied):
+    V_gravity = −m g·r_G per body, V_spring = ½ k s² per spring."""
+    terms = []
     if model.gravity is not None:
         for body in model.bodies:
             V_gravity = -body.mass * model.gravity.dot(body.position)
             if V_gravity != 0:
-                terms.append(EnergyTerm(f"gravity on {body.name}", tidy(V_gravity)))
+                terms.append((f"gravity on {body.name}", V_gravity))
     for spring in model.springs:
-        V_spring = spring.stiffness * spring.stretch**2 / 2
-        terms.append(EnergyTerm(f"spring {spring.name}", tidy(V_spring)))
-    terms += model.inertial  # centrifugal and translation potentials in a moving frame
-    return Energy(tuple(terms), tidy(sum((x.value for x in terms), sp.Integer(0))))
+        terms.append((f"spring {spring.name}", spring.stiffness * spring.stretch**2 / 2))
+    return terms
 
 
 def tidy_quadratic(T: sp.Expr, qd: tuple[sp.Expr, ...]) -> sp.Expr:

@@ -45,7 +45,7 @@ def _later(module: str) -> Callable[[Question, Model, Options], Solution]:
 
 
 FAMILIES = {
-    QuestionKind.EOM: Family(_later("eom")),
+    QuestionKind.EOM: Family(_later("eom"), _later("eom_numeric")),
     QuestionKind.EQUILIBRIA: Family(_later("equilibria"), _later("equilibria_numeric")),
     QuestionKind.MODES: Family(_later("modes"), _later("modes_numeric")),
     QuestionKind.INERTIA: Family(_later("inertia"), _later("inertia_numeric")),

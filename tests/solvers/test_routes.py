@@ -15,7 +15,11 @@ routes run, and:
   the largest);
 - steady motion: each solve_for value, and ω (the exact ω with the numeric unknowns
   put in: omega0, spin), within its own absolute bound, and within the relative
-  error_estimate where it is not zero within that bound.
+  error_estimate where it is not zero within that bound;
+- equations of motion: both routes' equations (and each frame's) evaluated at random
+  states (q, q̇, q̈, t and any prescribed function and its derivatives) agree within
+  10 × the estimate relative to the sum of the terms' sizes (the exact route's
+  equations hold no rounding, the numeric one's are in products of sines and cosines).
 """
 
 from __future__ import annotations
@@ -36,7 +40,7 @@ from rbdsolve.solvers.budget import OutOfTime, available
 
 SAMPLES = [Fraction(13, 10), Fraction(7, 10), Fraction(17, 10), Fraction(11, 10), Fraction(9, 10), Fraction(23, 10)]
 KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA, QuestionKind.INERTIA, QuestionKind.STEADY_SPIN,
-         QuestionKind.IMPACT, QuestionKind.STEADY_MOTION}
+         QuestionKind.IMPACT, QuestionKind.STEADY_MOTION, QuestionKind.EOM}
 
 
 def _cases():
@@ -78,6 +82,8 @@ def test_numeric_route_agrees_with_exact(path) -> None:
             _same_tree(e.values, n.values, n.error_estimate)
         elif question.kind is QuestionKind.STEADY_MOTION:
             _same_steady_motion(e, n, model)
+        elif question.kind is QuestionKind.EOM:
+            _same_equations(e, n, model)
         elif question.kind is QuestionKind.INERTIA:
             _same_numbers(e.values["principal_moments"], n.answers.principal_moments, n.error_estimate)
         else:
@@ -122,6 +128,50 @@ def _same_steady_motion(e, n, model) -> None:
             assert abs(got[name] - w) <= bound, (name, w, got[name], bound)
             if abs(w) > bound:
                 assert abs(got[name] - w) <= n.error_estimate * abs(w), (name, w, got[name], n.error_estimate)
+
+
+def _same_equations(e, n, model) -> None:
+    pairs = list(zip(e.answers.equations, n.answers.equations))
+    pairs += [(a, b) for fe, fn in zip(e.answers.frames, n.answers.frames) for a, b in zip(fe.equations, fn.equations)]
+    assert len(e.answers.frames) == len(n.answers.frames) and all(f.equivalent for f in n.answers.frames)
+    for seed in range(3):
+        for want, got in pairs:
+            at = _random_state((want, got), seed)
+            w, g = _at(want, at, model), _at(got, at, model)
+            size = sum(abs(_at(term, at, model)) for term in _expanded_terms(want, model))
+            assert abs(w - g) <= max(10 * n.error_estimate, 1e-15) * max(size, 1e-300), (want, got, w, g)
+
+
+def _random_state(exprs, seed: int) -> list[tuple]:
+    """A number for t and for every function of t and derivative in ``exprs``, in the
+    order to put them in: derivatives first (putting q(t) first would leave
+    Derivative(0.7, t)), t last."""
+    import random
+
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+
+    from rbdsolve.model.state import t
+
+    rng = random.Random(seed)
+    atoms = set().union(*(x.atoms(sp.Derivative, AppliedUndef) for x in exprs))
+    ordered = sorted(atoms, key=lambda a: -(a.derivative_count if isinstance(a, sp.Derivative) else 0))
+    return [(a, sp.Float(rng.uniform(-2, 2), 30)) for a in ordered] + [(t, sp.Float(rng.uniform(0, 3), 30))]
+
+
+def _at(expr, at: list[tuple], model) -> float:
+    import sympy as sp
+
+    value = expr.xreplace(model.values)
+    for atom, number in at:
+        value = value.xreplace({atom: number})
+    return float(sp.N(value, 30))
+
+
+def _expanded_terms(expr, model):
+    import sympy as sp
+
+    return sp.Add.make_args(sp.expand(expr.xreplace(model.values)))
 
 
 def _leaves(tree, path=""):
