@@ -28,6 +28,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import body_kinetic_energy, potential_terms
 from rbdsolve.model.frames import frame_lagrangian, frame_motion
+from rbdsolve.model.state import t
 from rbdsolve.model.tidy import collect_in
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
@@ -99,7 +100,55 @@ def _derive(model: Model, lagrangian) -> _Rounded:
 
 
 def _lagrange(model: Model, L: sp.Expr) -> list[sp.Expr]:
-    return [sp.expand(model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q)) for q, qd in zip(model.q, model.qd)]
+    """E_i from L's parts by their degree in q̇ (``_quadratic``), or by differentiating
+    L whole where L is not a polynomial of degree ≤ 2 in q̇."""
+    parts = _quadratic(L, model.qd)
+    if parts is None:
+        return [sp.expand(model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q)) for q, qd in zip(model.q, model.qd)]
+    return [sp.expand(E) for E in _from_parts(model, *parts)]
+
+
+def _quadratic(L: sp.Expr, qd: tuple) -> tuple[list[list[sp.Expr]], list[sp.Expr], sp.Expr] | None:
+    """L = ½ q̇ᵀ M q̇ + bᵀ q̇ + L₀ read off L's expanded terms: (M, b, L₀), or None."""
+    n, index = len(qd), {x: i for i, x in enumerate(qd)}
+    M = [[sp.Integer(0)] * n for _ in range(n)]
+    b, L0 = [sp.Integer(0)] * n, []
+    for term in sp.Add.make_args(L):
+        rates = [f for f in sp.Mul.make_args(term) if f.as_base_exp()[0] in index]
+        powers = [(index[f.as_base_exp()[0]], f.as_base_exp()[1]) for f in rates]
+        rest = sp.Mul(*[f for f in sp.Mul.make_args(term) if f not in rates])
+        if rest.has(*qd) or sum(p for _, p in powers) > 2 or any(not p.is_Integer for _, p in powers):
+            return None
+        slots = [i for i, p in powers for _ in range(int(p))]
+        if len(slots) == 2:
+            i, j = sorted(slots)
+            M[i][j] += 2 * rest if i == j else rest
+            if i != j:
+                M[j][i] += rest
+        elif len(slots) == 1:
+            b[slots[0]] += rest
+        else:
+            L0.append(rest)
+    return M, b, sp.Add(*L0)
+
+
+def _from_parts(model: Model, M, b, L0) -> list[sp.Expr]:
+    """Lagrange's equations of L = ½ q̇ᵀ M(q, t) q̇ + b(q, t)ᵀ q̇ + L₀(q, t):
+
+        E_i = Σ_j M_ij q̈_j + Σ_jk (∂M_ij/∂q_k − ½ ∂M_jk/∂q_i) q̇_j q̇_k + Σ_j ∂M_ij/∂t q̇_j
+              + Σ_j (∂b_i/∂q_j − ∂b_j/∂q_i) q̇_j + ∂b_i/∂t − ∂L₀/∂q_i,
+
+    d/dt(∂L/∂q̇_i) − ∂L/∂q_i by the chain rule, each piece a small coefficient."""
+    q, qd, qdd, n = model.q, model.qd, model.qdd, len(model.q)
+    dM = [[[sp.diff(M[i][j], q[k]) for k in range(n)] for j in range(n)] for i in range(n)]
+    db = [[sp.diff(b[i], q[j]) for j in range(n)] for i in range(n)]
+    out = []
+    for i in range(n):
+        E = sum((M[i][j] * qdd[j] + sp.diff(M[i][j], t) * qd[j] + (db[i][j] - db[j][i]) * qd[j] for j in range(n)),
+                sp.Integer(0))
+        E += sum(((dM[i][j][k] - dM[j][k][i] / 2) * qd[j] * qd[k] for j in range(n) for k in range(n)), sp.Integer(0))
+        out.append(E + sp.diff(b[i], t) - sp.diff(L0, q[i]))
+    return out
 
 
 def _compare(rounded: sp.Expr, reference: sp.Expr) -> tuple[dict[sp.Expr, sp.Expr], float]:
