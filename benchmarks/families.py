@@ -15,6 +15,7 @@ Families (and the rbdsolve question each uses):
   ``inertia`` about the origin.
 - ``impact``: an n-link chain of rods hanging at rest, struck at its lowest end by a
   horizontal impulse P; ``impact``.
+- ``eom_chain``: the ``chain_points`` scene asked for Lagrange's equations (``eom``).
 - ``spin``: a free body with a random (seeded) full 3×3 inertia tensor whose entries
   have ``size`` decimal digits; ``steady_spin``.
 """
@@ -91,6 +92,14 @@ def chain_points(n: int) -> Case:
     K = tuple(tuple(G_VALUE * (n - i + 1) if i == j else Fraction(0) for j in range(1, n + 1))
               for i in range(1, n + 1))
     return Case("chain_points", n, text, "modes", M, K)
+
+
+def eom_chain(n: int) -> Case:
+    """The n-link chain of point masses asked for its equations of motion (``eom``): no
+    reference numbers (the answer is a set of equations); the numeric route measures its
+    own error against 50 digits."""
+    text = _chain_scene(n, False, f"{n}-link chain of point masses") + "questions: [eom]\n"
+    return Case("eom_chain", n, text, "eom")
 
 
 def chain_rods(n: int) -> Case:
@@ -184,4 +193,5 @@ FAMILIES: dict[str, Callable[[int], Case]] = {
     "composite": composite,
     "impact": impact,
     "spin": spin,
+    "eom_chain": eom_chain,
 }

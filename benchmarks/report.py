@@ -221,9 +221,11 @@ def chart_time_size(result: dict, out: Path) -> None:
     baselines' compute time on chain_points, timeouts marked at their limit."""
     import matplotlib.pyplot as plt
 
-    families = ["chain_points", "chain_rods", "springs", "composite", "impact", "spin"]
+    families = ["chain_points", "chain_rods", "springs", "composite", "impact", "spin", "eom_chain"]
     xlabels = {"composite": "parts k", "spin": "digits of the inertia entries"}
-    fig, axes = plt.subplots(2, 3, figsize=(16, 9.5))
+    fig, axes = plt.subplots(3, 3, figsize=(16, 13.5))
+    for ax in axes.flat[len(families):]:
+        ax.set_visible(False)
     for ax, family in zip(axes.flat, families):
         for route in ("exact", "numeric"):
             rows = _series(result, family, route)

@@ -52,6 +52,8 @@ FULL = Plan({
     ("impact", "numeric"): (1, 2, 5, 10),
     ("spin", "exact"): (1, 2, 4, 8),
     ("spin", "numeric"): (1, 2, 4, 8),
+    ("eom_chain", "exact"): (1, 2, 3, 5, 8),
+    ("eom_chain", "numeric"): (1, 2, 3, 5, 8),
 }, timeout=60.0, baseline_sizes=(1, 2, 3, 5, 8, 10), baseline_timeout=100.0, whole_process_limit=3.0)
 
 QUICK = Plan({key: tuple(n for n in sizes if n <= 2) for key, sizes in FULL.sizes.items()},
