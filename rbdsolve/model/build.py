@@ -174,17 +174,17 @@ def build_model(problem: Problem) -> Model:
 
 
 def check_values(problem: Problem, names: Symbols, values: Mapping[sp.Symbol, sp.Expr]) -> None:
-    """Masses, dimensions, moments of inertia, stiffnesses and natural lengths keep their
-    signs at the parameter values, as they must for any values: a parameter declared
-    ``positive: false`` may make a mass 0 there (a singular mass matrix, every route).
+    """Masses, stiffnesses and natural lengths keep their signs at the parameter values,
+    as they must for any values: a parameter declared ``positive: false`` may make a
+    mass 0 there (a singular mass matrix, every route).
     The same checks as with symbols (``_require``), with the numbers put in; located
     InputErrors."""
     if not values:
         return
     numbers = replace(names, parameters={k: values.get(s, s) for k, s in names.parameters.items()})
     try:
-        for body in problem.bodies:
-            body_mass_properties(body, numbers)
+        for part in (p for body in problem.bodies for p in body.parts):
+            _require(numbers.scalar(part.mass), part.mass, "a mass")
         for spring in problem.springs:
             _require(numbers.scalar(spring.stiffness), spring.stiffness, "a stiffness", zero_ok=True)
             if spring.natural_length:
