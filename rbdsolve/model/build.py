@@ -139,6 +139,7 @@ class Model:
         table = dict(self.values)
         for name, value in values.items():
             table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
+        check_values(self.problem, self.symbols, table)
         return replace(self, values=table)
 
 
@@ -163,12 +164,35 @@ def build_model(problem: Problem) -> Model:
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
+    check_values(problem, names, values)
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
                   triads=triads)
     periodic = _periodic_coordinates(model)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q)
                        if c.kind is CoordinateKind.ANGLE or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
+
+
+def check_values(problem: Problem, names: Symbols, values: Mapping[sp.Symbol, sp.Expr]) -> None:
+    """Masses, stiffnesses and natural lengths keep their signs at the parameter values,
+    as they must for any values: a parameter declared ``positive: false`` may make a
+    mass 0 there (a singular mass matrix, every route).
+    The same checks as with symbols (``_require``), with the numbers put in; located
+    InputErrors."""
+    if not values:
+        return
+    numbers = replace(names, parameters={k: values.get(s, s) for k, s in names.parameters.items()})
+    try:
+        for part in (p for body in problem.bodies for p in body.parts):
+            _require(numbers.scalar(part.mass), part.mass, "a mass")
+        for spring in problem.springs:
+            _require(numbers.scalar(spring.stiffness), spring.stiffness, "a stiffness", zero_ok=True)
+            if spring.natural_length:
+                _require(numbers.scalar(spring.natural_length), spring.natural_length, "a natural length",
+                         zero_ok=True)
+    except InputError as exc:
+        given = ", ".join(f"{k} = {v}" for k, v in values.items())
+        raise InputError(f"{exc.message} at the values given ({given})", exc.location) from None
 
 
 def _affine_in_rates(value: sp.Matrix, expr: Expr, names: Symbols) -> sp.Matrix:

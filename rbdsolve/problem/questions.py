@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.amplitudes import amplitudes
 from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.schema import (
     Body,
@@ -35,7 +36,7 @@ if TYPE_CHECKING:
 OPTIONS = {
     QuestionKind.EOM: ("frames",),
     QuestionKind.EQUILIBRIA: ("frame",),
-    QuestionKind.MODES: ("about", "frame"),
+    QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
     QuestionKind.STEADY_SPIN: ("body",),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
@@ -84,8 +85,8 @@ class QuestionReader:
             return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.MODES:
             about = get("about")
-            return Question(kind, ModesOptions(self.equilibrium(about) if about else None,
-                                               self.frame(get("frame"))), key.loc)
+            return Question(kind, ModesOptions(self.equilibrium(about) if about else None, self.frame(get("frame")),
+                                               amplitudes(get("check_amplitudes"), get("frame"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:

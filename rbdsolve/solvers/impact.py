@@ -41,6 +41,7 @@ from rbdsolve.problem.schema import Collision, ImpactOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.common import Options
 from rbdsolve.solvers.impact_steps import impact_steps
+from rbdsolve.solvers.singular import exact_reason
 
 @dataclass(frozen=True)
 class ImpactAnswers:
@@ -213,9 +214,23 @@ class ImpactEquations:
         A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
         values = solve_linear(A, b)
         if values is None:
-            raise UnsolvedError("the impulse equations are singular: a coordinate carries no inertia at "
-                                "the instant, or two collisions push the same way")
+            raise UnsolvedError(self.singular_reason(exact_reason(self.inertia(), self.model.coordinate_names(),
+                                                                  "at the instant")))
         return {u: tidy_fraction(x) for u, x in zip(unknowns, values)}
+
+    def inertia(self) -> sp.Matrix:
+        """M at the instant, ∂²T/∂q̇∂q̇: the impulse equations' matrix without collisions."""
+        return sp.Matrix([[sp.diff(p, qd) for qd in self.model.qd] for p in self.momenta])
+
+    def singular_reason(self, inertia: str | None) -> str:
+        """Why the impulse equations have no unique solution: the mass matrix at the instant
+        (``singular``: a coordinate or a combination that moves no mass), else the collisions'
+        columns (their generalized impulses) are dependent."""
+        if inertia:
+            return f"the impulse equations are singular (no unique solution): {inertia}"
+        return ("the impulse equations are singular (no unique solution): the mass matrix is regular, so the unknown "
+                "collision impulses are not independent (two collisions push the system the same way, or a "
+                "collision point moves with no coordinate along its normal)")
 
     # --- the results -------------------------------------------------------------------
 

@@ -22,6 +22,7 @@ from rbdsolve.solvers.common import Options, require_values, with_floats
 from rbdsolve.solvers.impact import ImpactEquations, blows, instant
 from rbdsolve.solvers.impact_steps import equation_steps, unknown_name
 from rbdsolve.solvers.numeric_model import to_floats
+from rbdsolve.solvers.singular import float_reason
 
 EPS = float(np.finfo(float).eps)
 
@@ -38,9 +39,10 @@ class NumericImpactEquations(ImpactEquations):
         Af, bf = to_floats(A, self.model.values), to_floats(b, self.model.values)
         self.condition = float(np.linalg.cond(Af))
         if not np.isfinite(self.condition) or self.condition * len(unknowns) * EPS >= 1:
-            raise UnsolvedError(f"the impulse equations are singular in floating point (condition number "
-                                f"{self.condition:.3g}): a coordinate carries no inertia at the instant, or "
-                                "two collisions push the same way")
+            inertia = float_reason(to_floats(self.inertia(), self.model.values), self.model.coordinate_names(),
+                                   "at the instant")
+            raise UnsolvedError(f"{self.singular_reason(inertia)} (in floating point: condition number "
+                                f"{self.condition:.3g})")
         x = np.linalg.solve(Af, bf).ravel()
         return {u: sp.Float(float(v), 17) for u, v in zip(unknowns, x)}
 

@@ -32,6 +32,8 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.math import Product, Terms
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, common_scale, configuration, sample, scaled_matrix
+from rbdsolve.solvers.amplitude import with_check
+from rbdsolve.solvers.singular import exact_reason
 from rbdsolve.solvers.equilibria import (
     Inertia,
     Stability,
@@ -61,6 +63,7 @@ class ModesAnswers:
     frequencies: tuple[sp.Expr | None, ...]  # ω = √λ where λ > 0
     motions: tuple[Motion, ...]
     shapes: tuple[tuple[sp.Expr, ...], ...]  # one amplitude vector per eigenvalue
+    amplitude_check: object = None  # solvers/amplitude.py, with 'check_amplitudes'
 
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
@@ -81,9 +84,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     at, chosen = _equilibrium(question, model)
     M = sp.ImmutableMatrix(mass_matrix(model, at))
     K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
-    if M.det() == 0:
-        raise UnsolvedError("the mass matrix is singular at this configuration: "
-                            "a coordinate carries no inertia")
+    singular = exact_reason(M, model.coordinate_names(), "at this configuration")
+    if singular:
+        raise UnsolvedError(singular)
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [lam for lam, _, _ in spectrum.pairs]
     motions = _motions(eigenvalues, K, model)
@@ -91,7 +94,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(spectrum, model.values)
     answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes)
-    return Solution("modes", Route.EXACT, answers, _steps(answers, model, spectrum.steps))
+    return with_check(question, model, Solution("modes", Route.EXACT, answers, _steps(answers, model, spectrum.steps)))
 
 
 @dataclass(frozen=True)

@@ -46,6 +46,8 @@ from rbdsolve.solvers.common import Options, configuration, require_values
 from rbdsolve.solvers.equilibria import require_static
 from rbdsolve.solvers.modes import Motion
 from rbdsolve.solvers.numeric_model import equilibrium_for_modes, linearized
+from rbdsolve.solvers.amplitude import with_check
+from rbdsolve.solvers.singular import float_reason
 
 EPS = float(np.finfo(float).eps)
 
@@ -61,6 +63,7 @@ class NumericModesAnswers:
     shapes: tuple[tuple[float, ...], ...]  # first nonzero entry 1, as on the exact route
     absolute_errors: tuple[float, ...]  # the bound on |λ̂ − λ| for each λ
     relative_errors: tuple[float | None, ...]  # that over |λ|; None where λ is neutral (zero within it)
+    amplitude_check: object = None  # solvers/amplitude.py, with 'check_amplitudes'
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -68,6 +71,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
     about, notes = equilibrium_for_modes(question, model)
     M, K, how = linearized(model, about)
+    if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
+        raise UnsolvedError(singular)
     lam, vectors, absolute = generalized_eigh(K, M)
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
@@ -78,8 +83,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         motions, tuple(_normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative)
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
-    return Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how), warnings=notes,
-                    error_estimate=estimate)
+    return with_check(question, model, Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how),
+                                                warnings=notes, error_estimate=estimate))
 
 
 def classify(lam: float, bound: float) -> Motion:
