@@ -242,7 +242,7 @@ def test_when_both_routes_fail_both_reasons_are_kept_and_the_route_is_the_last()
     (solution,) = solve_problem(build_model(_problem(FALLING)), Options(route=RouteChoice.AUTO)).solutions
     assert solution.route.value == "numeric"
     assert solution.error.startswith("the exact route could not answer (∂V/∂q = 0 has no real solution")
-    assert "nor could the numeric route (Newton's method from 24 starts" in solution.error
+    assert "nor could the numeric route (a sign-change scan of ∂V/∂q at" in solution.error
     assert solution.error.endswith("found no equilibrium)")
 
 
