@@ -69,7 +69,8 @@ def test_numeric_route_agrees_with_exact(path) -> None:
         if question.kind not in KINDS or e.error is not None:
             continue
         assert n.error is None, f"{question.kind.value}: numeric route failed: {n.error}"
-        assert n.route.value == "numeric" and n.error_estimate is not None
+        assert n.route.value == "numeric"  # no estimate only where a warning says why (a singular Hessian)
+        assert n.error_estimate is not None or any(w.startswith("no error estimate") for w in n.warnings)
         if question.kind is QuestionKind.MODES:
             _same_modes(e, n)
         elif question.kind is QuestionKind.EQUILIBRIA:
