@@ -74,18 +74,36 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     else:
         warnings = []
     unknowns = [q for q in model.q if q not in free]
-    solutions = _solve_trig_polynomial(equations, unknowns, model.angles)
+    angles = periodic_angles(model)
+    warnings += [f"V is not 2π-periodic in {q.name} (it enters V outside sin and cos, e.g. in a torsional "
+                 "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
+    solutions = _solve_trig_polynomial(equations, unknowns, angles)
     if solutions is None:
         solutions = _solve_general(equations, unknowns, model)
         warnings.append("the equilibrium equations are not polynomial in sin, cos and the "
                         "coordinates; sympy's solve was used and may miss solutions")
     out = []
     for sol in solutions:
-        full = {q: _turn(sol.get(q, sp.Integer(0))) if q in model.angles else sol.get(q, sp.Integer(0))
+        full = {q: _turn(sol.get(q, sp.Integer(0))) if q in angles else sol.get(q, sp.Integer(0))
                 for q in model.q}
         if full not in out and existence(full, model) is not None:
             out.append(full)
     return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
+
+
+@memoized
+def periodic_angles(model: Model) -> frozenset:
+    """The angle coordinates along which ∂V/∂q is 2π-periodic: ∂V/∂q at q + 2π equals it
+    (sympy reduces sin and cos of q + 2π). An angle that also enters V bare, as in a
+    torsional spring ½ c (θ − θ₀)², is not: turning its equilibria into (−π, π] would
+    move them off ∂V/∂q = 0, so they are kept as solved."""
+    grad = gradient(model)
+    return frozenset(q for q in model.angles
+                     if all(_vanishes(e.xreplace({q: q + 2 * sp.pi}) - e) for e in grad))
+
+
+def _vanishes(expr: sp.Expr) -> bool:
+    return sp.expand(expr) == 0 or sp.expand(sp.expand_trig(expr)) == 0
 
 
 def _turn(angle: sp.Expr) -> sp.Expr:
@@ -286,6 +304,27 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
     return Undecided(value)
 
 
+def _coinciding(solutions: list[dict], model: Model) -> list[str]:
+    """Equilibria that are distinct expressions but one configuration at the given
+    values (branches meeting at a bifurcation, e.g. ±acos(g/(R Ω²)) = 0 when R Ω² = g):
+    a warning names them, so that the count is not read as distinct configurations."""
+    if not model.values:
+        return []
+    points = []
+    for sol in solutions:
+        try:
+            points.append(tuple(complex(sp.N(v.xreplace(model.values), 20)) for v in sol.values()))
+        except TypeError:  # a parameter without a value: not a number
+            return []
+    lines = []
+    for i, p in enumerate(points):
+        same = [j + 1 for j, r in enumerate(points) if max(abs(a - b) for a, b in zip(p, r)) <= 1e-12 * (1 + max(map(abs, p)))]
+        if len(same) > 1 and same[0] == i + 1:
+            lines.append(f"equilibria {', '.join(map(str, same))} coincide at the given parameter values (one "
+                         "configuration where solution branches meet, a bifurcation), listed once per branch")
+    return lines
+
+
 def require_static(model: Model, what: str) -> None:
     """Equilibria and small oscillations of a scene that moves by itself (t appears in
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
@@ -302,6 +341,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if not solutions:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
     equilibria = tuple(classify(model, sol) for sol in solutions)
+    warnings += _coinciding(solutions, model)
     symbols = set(model.symbols.parameters.values())
     steps = [
         st.equation(
@@ -311,7 +351,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
               for q, g in zip(model.state.functions(), grad)],
         ),
         st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'}"
-                  + (" (angles in (−π, π])" if model.angles else "") + ":"),
+                  + (" (angles in (−π, π])" if periodic_angles(model) else "") + ":"),
     ]
     coordinates = model.state.functions()
     for number, eq in enumerate(equilibria, start=1):

@@ -1,7 +1,11 @@
-"""Equilibria, the floating-point route: ∂V/∂q = 0 by Newton's method from a grid of
-starts (``numeric_model.find_numeric``: the strategy and its limits are stated there),
-each root classified by the eigenvalues of the Hessian of V there (all positive:
-stable; one negative: unstable; else neutral to second order). A continuum of
+"""Equilibria, the floating-point route: ∂V/∂q = 0 by a sign-change scan in one
+coordinate (``scan``: complete under a stated assumption) and by Newton's method from
+a grid of starts in more (``numeric_model.find_numeric``: no completeness claim); the
+strategy and its limits are stated there and in the report. Each root is classified
+by the eigenvalues of the Hessian of V there against a tolerance, CURVATURE_TOL times
+the Hessian's scale over the search box (all above it: stable; one below −it:
+unstable; else zero within rounding: neutral along a continuum, otherwise
+undetermined, higher-order terms decide, never a sign from round-off). A continuum of
 equilibria (V flat along a straight line, as a cart's x) is reported once, at its
 point nearest q = 0 along the free directions, which a warning names
 (``continua``); λ = 0 along them is neutral.
@@ -26,7 +30,14 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, configuration, require_values
 from rbdsolve.solvers.equilibria import Stability, require_static
-from rbdsolve.solvers.numeric_model import SEARCH_SCALE, compiled_gradient, continuum_text, find_numeric
+from rbdsolve.solvers.numeric_model import (
+    CURVATURE_TOL,
+    SEARCH_SCALE,
+    compiled_gradient,
+    continuum_text,
+    find_numeric,
+    periodic_angles,
+)
 
 EPS = float(np.finfo(float).eps)
 
@@ -50,7 +61,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "the equilibria")
     found = find_numeric(model)
     if not found.equilibria:
-        raise UnsolvedError(f"Newton's method from {found.starts} {found.sampling} found no equilibrium")
+        raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
     g, H = compiled_gradient(model)
     names = model.coordinate_names()
     equilibria, errors = [], []
@@ -62,22 +73,52 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                                              tuple(float(c) for c in curvatures), r.free))
         errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts)
-    search = (f"numeric search: Newton's method from {found.starts} {found.sampling} over angles in (−π, π] "
-              f"and lengths within ±{SEARCH_SCALE:g} × the largest parameter value; an equilibrium whose "
-              "basin misses every start would be missed")
+    warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
     return Solution("equilibria", Route.NUMERIC, answers, _steps(answers, model, found.sampling),
-                    warnings=(search, *_continuum_warnings(found, names)), error_estimate=float(max(errors)))
+                    warnings=warnings, error_estimate=float(max(errors)))
+
+
+def searched(model: Model, found) -> str:
+    """How the search went and over which box."""
+    how = (f"a sign-change scan of ∂V/∂q at {found.starts} {found.sampling}" if len(model.q) == 1
+           else f"Newton's method from {found.starts} {found.sampling}")
+    return (f"{how}, over angles in (−π, π] and lengths within ±{SEARCH_SCALE:g} × max(1, the largest "
+            "parameter value) (a coordinate's range cannot be declared; equilibria outside it are not searched)")
+
+
+def search_claim(model: Model, found) -> str:
+    """What the search covers and what it guarantees (the completeness claim)."""
+    if len(model.q) == 1:
+        return (f"numeric search: {searched(model, found)}; every equilibrium in it is found provided "
+                "|∂²V/∂q²| on each cell stays within twice its largest sampled value there and equilibria "
+                "are more than the smallest cell apart (closer ones are reported once, or missed)")
+    return (f"numeric search: {searched(model, found)}; an equilibrium whose basin misses every start "
+            "would be missed (no completeness guarantee in more than one coordinate)")
+
+
+def _range_warnings(model: Model, found) -> list[str]:
+    """Declared angles along which V is not 2π-periodic, and intervals left unsettled."""
+    names = dict(zip(model.q, model.coordinate_names()))
+    lines = [f"V is not 2π-periodic in {names[q]} (it enters V outside sin and cos, e.g. in a torsional "
+             "spring): it was searched as a length, not only over (−π, π]"
+             for q in model.q if q in model.angles and q not in periodic_angles(model)]
+    if found.unresolved:
+        spans = ", ".join(f"[{a:.6g}, {b:.6g}]" for a, b in found.unresolved[:5])
+        lines.append(f"the search is incomplete: the scan ran out of evaluations with {len(found.unresolved)} "
+                     f"interval(s) unsettled ({spans}{', …' if len(found.unresolved) > 5 else ''})")
+    return lines
 
 
 def _continuum_warnings(found, names: list[str]) -> list[str]:
     """One line per kind of continuum found, and one where the Hessian is singular
     beyond the free directions (higher-order terms decide; perhaps a curved continuum)."""
     lines = list(dict.fromkeys(continuum_text(r.free, names) for r in found.equilibria if r.free))
-    singular = [i for i, r in enumerate(found.equilibria, 1) if r.kind == "neutral" and not r.stable_across]
+    singular = [i for i, r in enumerate(found.equilibria, 1) if r.kind == "undetermined"]
     if singular:
         lines.append(f"the Hessian of V is singular at equilibri{'um' if len(singular) == 1 else 'a'} "
-                     f"{', '.join(map(str, singular))} (beyond any continuum found): higher-order terms decide "
-                     "the stability there, and a curved continuum of equilibria would be listed point by point")
+                     f"{', '.join(map(str, singular))} (an eigenvalue within {CURVATURE_TOL:g} × the Hessian's "
+                     "scale of zero, beyond any continuum found): undetermined, higher-order terms decide the "
+                     "stability there, and a curved continuum of equilibria would be listed point by point")
     return lines
 
 
@@ -99,7 +140,10 @@ def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float
 
 def _steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
     names = model.coordinate_names()
-    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0; Newton's method from {a.starts} {sampling} finds:")]
+    how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
+           else f"Newton's method from {a.starts} {sampling}")
+    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0; {how} finds (a curvature within {CURVATURE_TOL:g} × the "
+                         "Hessian's scale over the search box of zero counts as zero: undetermined):")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [sp.Float(v, 12) for v in eq.at.values()])
         curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))

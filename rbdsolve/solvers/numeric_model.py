@@ -9,16 +9,34 @@ parameter values put in and rounded once to floats.
 
 Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) likewise come from the
 scene by automatic differentiation where it allows, else compiled from the symbolic V
-with sympy's lambdify (``compiled_gradient``); Newton's method (scipy.optimize.root,
-'hybr' with the Jacobian H) is started from every point of a grid over the search box (angles over one turn, lengths
-within ±SEARCH_SCALE × the largest parameter value), the roots are wrapped into
-(−π, π] and merged when closer than MERGE_TOL. The grid has GRID_POINTS per coordinate
-(fewer in higher dimension, at most MAX_STARTS starts; where even 2 per coordinate
-would exceed MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead):
-an equilibrium whose basin of attraction misses every start is not found, and the
-report says so. A root on a continuum of equilibria (a straight line along which ∂V/∂q
+with sympy's lambdify (``compiled_gradient``). The search box: angles over one turn
+(one cell more each side, so a root at ±π is bracketed whatever its rounding), lengths
+within ±SEARCH_SCALE × max(1, the largest parameter value); a coordinate's range cannot
+be declared in the format, so equilibria outside the box are not searched. An angle
+along which ∂V/∂q is not 2π-periodic (``periodic_angles``: a torsional spring counts
+turns) is searched as a length.
+
+* One coordinate: a sign-change scan of g (``scan``: adaptive halving with a sampled
+  Lipschitz exclusion test, Brent's method for each root, extrema of g for roots of
+  even multiplicity). Complete, to round-off, under the assumption stated there (|g'|
+  within twice its sampled size on each cell; roots more than the smallest cell, box
+  width / 2**20, apart); intervals left when its evaluations run out are reported.
+* More coordinates: Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H)
+  from every point of a grid over the box, GRID_POINTS per coordinate (fewer in higher
+  dimension, at most MAX_STARTS starts; where even 2 per coordinate would exceed
+  MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead). No
+  completeness claim: an equilibrium whose basin of attraction misses every start is
+  not found, and the report says so.
+
+Roots are wrapped into (−π, π] along periodic angles and merged when closer than
+MERGE_TOL. A root on a continuum of equilibria (a straight line along which ∂V/∂q
 stays zero) is replaced by its family's representative with its free directions
-(``continua``), so a family is reported once.
+(``continua``), so a family is reported once. Each root is classified from the
+eigenvalues of H against CURVATURE_TOL × the Hessian's scale over the box
+(``hessian_scale``): the tolerance covers the rounding of H and its change over the
+root's own error (up to √ε at a double root of g), so a degenerate Hessian is called
+singular (neutral along a continuum, else undetermined), never stable or unstable on
+round-off.
 """
 
 from __future__ import annotations
@@ -34,10 +52,12 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import hessian, mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.continua import free_directions, is_axis, null_count, representative
+from rbdsolve.solvers.scan import CELLS as SCAN_CELLS
+from rbdsolve.solvers.scan import scan
 
 GRID_POINTS = 24
 MAX_STARTS = 4096
@@ -47,6 +67,9 @@ SEARCH_SCALE = 10.0
 ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
 MERGE_TOL = 1e-6
 EPS_STEP = 4 * float(np.finfo(float).eps)
+PERIODIC_SAMPLES = 3
+PERIODIC_TOL = 1e-8
+CURVATURE_TOL = 1e-7  # a Hessian eigenvalue this small relative to hessian_scale counts as zero
 
 
 def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndarray:
@@ -199,31 +222,84 @@ class Root:
 @dataclass(frozen=True)
 class NumericEquilibria:
     equilibria: tuple[Root, ...]
-    starts: int
-    sampling: str  # how the starts were placed: a grid, or a fixed pseudo-random sample
+    starts: int  # Newton starts; in one coordinate, the points the scan evaluated
+    sampling: str  # how the starts were placed: a grid, a fixed pseudo-random sample, or the scan
+    unresolved: tuple[tuple[float, float], ...] = ()  # intervals the scan could not settle
 
 
 def find_numeric(model: Model) -> NumericEquilibria:
-    """Newton from every start (see the module's docstring), each root polished,
-    wrapped, replaced by its continuum's representative if it lies on one, and merged."""
-    from scipy.optimize import root
-
+    """In one coordinate, the sign-change scan (``scan``); in more, Newton from every
+    start (see the module's docstring). Each root is wrapped, replaced by its continuum's
+    representative if it lies on one, classified against the Hessian's scale, and merged."""
     g, H = compiled_gradient(model)
-    tol = ROOT_TOL * gradient_scale(model, g)
-    starts, sampling = _starts(model, GRID_POINTS)
+    scale = gradient_scale(model, g)
+    tol, curvature = ROOT_TOL * scale, hessian_scale(model, H)
+    if len(model.q) == 1:
+        candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
+    else:
+        starts, sampling = _starts(model, GRID_POINTS)
+        candidates, unresolved = (_newton(x, g, H) for x in starts), ()
     roots: list[Root] = []
-    for start in starts:
+    for x in candidates:
         try:
-            result = root(g, start, jac=H, method="hybr")
-            x = _wrapped(model, _polished(result.x, g, H))
-            if np.max(np.abs(g(x))) > tol or not _inside(model, x) or _on_a_family(model, x, roots):
-                continue
-            found = _as_root(model, x, g, H, tol)
+            found = _accepted(model, x, g, H, tol, curvature, roots)
         except UnsolvedError:  # Newton wandered where V has no value: this start finds nothing
             continue
-        if all(np.max(np.abs(_difference(model, np.array(found.at), np.array(r.at)))) > MERGE_TOL for r in roots):
+        if found is not None:
             roots.append(found)
-    return NumericEquilibria(tuple(sorted(roots, key=lambda r: r.at)), len(starts), sampling)
+    return NumericEquilibria(tuple(sorted(roots, key=lambda r: r.at)), len(starts), sampling, unresolved)
+
+
+def _newton(start: np.ndarray, g, H) -> np.ndarray | None:
+    """Newton's method (hybr) from a start, polished; None where V has no value."""
+    from scipy.optimize import root
+
+    try:
+        return _polished(root(g, start, jac=H, method="hybr").x, g, H)
+    except UnsolvedError:
+        return None
+
+
+def _scanned(model: Model, g, H, tol: float):
+    """The scan's candidate roots in the one coordinate, the points it evaluated,
+    its description and the intervals it left unresolved."""
+    (low, high), = _box(model)
+    if model.q[0] in periodic_angles(model):  # one cell more each side: a root at ±π, whatever its rounding
+        low, high = low - (high - low) / SCAN_CELLS, high + (high - low) / SCAN_CELLS
+    result = scan(_slope_and_curvature(model, g, H), low, high, tol)
+    sampling = (f"points ({SCAN_CELLS} cells over [{low:.6g}, {high:.6g}], halved where they may hold a root, "
+                f"down to {result.smallest:.3g})")
+    return [np.array([x]) for x in result.roots], list(range(result.evaluations)), sampling, result.unresolved
+
+
+def _slope_and_curvature(model: Model, g, H):
+    """x -> (∂V/∂q, ∂²V/∂q²) in one coordinate: one pass of the scene's automatic
+    differentiation where it applies, else the two compiled functions."""
+    scene = numeric_scene(model)
+    if scene is None:
+        return lambda x: (g(np.array([x]))[0], H(np.array([x]))[0][0])
+    both = finite(lambda x: _first_derivatives(scene.potential(x)))
+    return lambda x: tuple(both(np.array([x])))
+
+
+def _first_derivatives(potential) -> list[float]:
+    """(∂V/∂q, ∂²V/∂q²) from the scene's (V, gradient, Hessian) in one coordinate."""
+    _, gradient, hess = potential
+    return [float(np.asarray(gradient, dtype=float).ravel()[0]), float(np.asarray(hess, dtype=float).ravel()[0])]
+
+
+def _accepted(model: Model, x, g, H, tol: float, curvature: float, roots: list[Root]) -> Root | None:
+    """The candidate x as a new Root, or None: not a root, outside the box, or one
+    already found (on a family found, or within MERGE_TOL of a root)."""
+    if x is None:
+        return None
+    x = _wrapped(model, x)
+    if np.max(np.abs(g(x))) > tol or not _inside(model, x) or _on_a_family(model, x, roots):
+        return None
+    found = _as_root(model, x, g, H, tol, curvature)
+    if any(np.max(np.abs(_difference(model, np.array(found.at), np.array(r.at)))) <= MERGE_TOL for r in roots):
+        return None
+    return found
 
 
 def _on_a_family(model: Model, x: np.ndarray, roots: list[Root]) -> bool:
@@ -237,7 +313,7 @@ def _on_a_family(model: Model, x: np.ndarray, roots: list[Root]) -> bool:
     return False
 
 
-def _as_root(model: Model, x: np.ndarray, g, H, tol: float) -> Root:
+def _as_root(model: Model, x: np.ndarray, g, H, tol: float, curvature: float) -> Root:
     """The root x classified, or its continuum's representative with the free directions."""
     hess = np.asarray(H(x), dtype=float)
     half_widths = [(hi - lo) / 2 for lo, hi in _box(model)]
@@ -248,8 +324,10 @@ def _as_root(model: Model, x: np.ndarray, g, H, tol: float) -> Root:
             x, hess = rep, np.asarray(H(rep), dtype=float)
         else:
             free = ()
-    kind = _kind(hess)
-    across = bool(free) and kind == "neutral" and null_count(hess) == len(free)
+    kind = _kind(hess, curvature)
+    across = bool(free) and kind == "singular" and null_count(hess) == len(free)
+    if kind == "singular":
+        kind = "neutral" if across else "undetermined"
     return Root(tuple(float(v) for v in x), kind, free, across)
 
 
@@ -267,20 +345,68 @@ def _polished(x: np.ndarray, g, H, steps: int = 3) -> np.ndarray:
     return x
 
 
-def _kind(H: np.ndarray) -> str:
+def _kind(H: np.ndarray, curvature: float) -> str:
+    """stable (every eigenvalue of H above CURVATURE_TOL × curvature), unstable (one
+    below −that), else singular: zero within the tolerance, which rounding cannot
+    decide (the caller makes it neutral along a continuum, else undetermined)."""
     eig = np.linalg.eigvalsh((H + H.T) / 2)
-    tol = 1e-9 * max(np.max(np.abs(eig)), 1e-300)
+    tol = CURVATURE_TOL * max(curvature, np.max(np.abs(eig), initial=0.0))
     if np.all(eig > tol):
         return "stable"
     if np.any(eig < -tol):
         return "unstable"
-    return "neutral"
+    return "singular"
+
+
+def hessian_scale(model: Model, H) -> float:
+    """The size of ∂²V/∂q∂q over the search box (the largest |eigenvalue| at the
+    sample points of ``gradient_scale``): curvatures are judged zero relative to it."""
+    box = _box(model)
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    sizes = []
+    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+        try:
+            hess = np.asarray(H(low + p * (high - low)), dtype=float)
+        except UnsolvedError:
+            continue
+        sizes.append(np.max(np.abs(np.linalg.eigvalsh((hess + hess.T) / 2)), initial=0.0))
+    return max(max(sizes, default=1.0), 1e-300)
 
 
 def _box(model: Model) -> list[tuple[float, float]]:
     sizes = [abs(float(v)) for v in model.values.values()] or [1.0]
     reach = SEARCH_SCALE * max(max(sizes), 1.0)
-    return [(-math.pi, math.pi) if q in model.angles else (-reach, reach) for q in model.q]
+    angles = periodic_angles(model)
+    return [(-math.pi, math.pi) if q in angles else (-reach, reach) for q in model.q]
+
+
+def periodic_angles(model: Model) -> frozenset:
+    """The angle coordinates along which ∂V/∂q is 2π-periodic, checked at PERIODIC_SAMPLES
+    points to PERIODIC_TOL: an angle that also enters V bare (a torsional spring counts
+    turns) is searched, wrapped and merged as a length instead."""
+    return _periodic(model) if model.angles else frozenset()
+
+
+@memoized
+def _periodic(model: Model) -> frozenset:
+    g, _ = compiled_gradient(model)
+    rng = np.random.default_rng(SAMPLE_SEED)
+    points = [np.array([rng.uniform(-math.pi, math.pi) for _ in model.q]) for _ in range(PERIODIC_SAMPLES)]
+    periodic = set()
+    for i, q in enumerate(model.q):
+        if q in model.angles and all(_same_after_a_turn(g, x, i) for x in points):
+            periodic.add(q)
+    return frozenset(periodic)
+
+
+def _same_after_a_turn(g, x: np.ndarray, i: int) -> bool:
+    turned = x.copy()
+    turned[i] += 2 * math.pi
+    try:
+        a, b = np.asarray(g(x), dtype=float), np.asarray(g(turned), dtype=float)
+    except UnsolvedError:
+        return True  # no value to compare: keep the declared kind
+    return bool(np.max(np.abs(a - b), initial=0.0) <= PERIODIC_TOL * max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300))
 
 
 def _starts(model: Model, per_axis: int) -> tuple[list[np.ndarray], str]:
@@ -302,16 +428,18 @@ def _starts(model: Model, per_axis: int) -> tuple[list[np.ndarray], str]:
 def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:
     """Angles into (−π, π]."""
     out = np.array(x, dtype=float)
+    angles = periodic_angles(model)
     for i, q in enumerate(model.q):
-        if q in model.angles:
+        if q in angles:
             out[i] = math.pi - (math.pi - out[i]) % (2 * math.pi)
     return out
 
 
 def _difference(model: Model, x: np.ndarray, y: np.ndarray) -> np.ndarray:
     d = x - y
+    angles = periodic_angles(model)
     for i, q in enumerate(model.q):
-        if q in model.angles:
+        if q in angles:
             d[i] = (d[i] + math.pi) % (2 * math.pi) - math.pi
     return d
 

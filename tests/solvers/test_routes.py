@@ -73,7 +73,8 @@ def test_numeric_route_agrees_with_exact(path) -> None:
         if question.kind not in KINDS or e.error is not None:
             continue
         assert n.error is None, f"{question.kind.value}: numeric route failed: {n.error}"
-        assert n.route.value == "numeric" and n.error_estimate is not None
+        assert n.route.value == "numeric"  # no estimate only where a warning says why (a singular Hessian)
+        assert n.error_estimate is not None or any(w.startswith("no error estimate") for w in n.warnings)
         if question.kind is QuestionKind.MODES:
             _same_modes(e, n)
         elif question.kind is QuestionKind.EQUILIBRIA:
@@ -292,7 +293,7 @@ def test_when_both_routes_fail_both_reasons_are_kept_and_the_route_is_the_last()
     (solution,) = solve_problem(build_model(_problem(FALLING)), Options(route=RouteChoice.AUTO)).solutions
     assert solution.route.value == "numeric"
     assert solution.error.startswith("the exact route could not answer (∂V/∂q = 0 has no real solution")
-    assert "nor could the numeric route (Newton's method from 24 starts" in solution.error
+    assert "nor could the numeric route (a sign-change scan of ∂V/∂q at" in solution.error
     assert solution.error.endswith("found no equilibrium)")
 
 
