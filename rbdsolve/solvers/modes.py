@@ -171,19 +171,38 @@ MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CR
 def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
     """Every root of a polynomial over QQ, with the irreducible factor it belongs to:
     closed forms for factors of degree ≤ 2 and for cubics with a compact real
-    (trigonometric) form; exact CRootOf(f, k) otherwise. No Ferrari quartics."""
+    (trigonometric) form, each checked against the isolated roots (``_agree``); exact
+    CRootOf(f, k) otherwise. No Ferrari quartics."""
     out = []
     for factor, multiplicity in poly.factor_list()[1]:
         roots = None
         if factor.degree() <= 3:
             found = sp.roots(factor, trig=True)
             if sum(found.values()) == factor.degree() and all(
-                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found):
+                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found) \
+                    and _agree(list(found), factor):
                 roots = list(found)
         if roots is None:
             roots = factor.all_roots()
         out += [(r, factor) for r in roots for _ in range(multiplicity)]
     return out
+
+
+CHECK_DIGITS = 50
+
+
+def _agree(closed: list[sp.Expr], factor: sp.Poly) -> bool:
+    """Whether closed forms are the roots of ``factor``: their values at CHECK_DIGITS
+    digits match, in order, those of the isolated real roots (CRootOf, exact isolation)
+    to 10^-(CHECK_DIGITS − 10) relative. A guard against sympy simplifying a closed form
+    wrongly: cos(acos(x)/3) evaluates to 1 when x is within ~1e-24 of 1 (a cubic with one
+    eigenvalue 1e12 times the others), which would silently drop a term of a root."""
+    exact = [sp.N(r, CHECK_DIGITS) for r in factor.all_roots()]
+    if len(exact) != len(closed):
+        return False
+    values = sorted(sp.N(r, CHECK_DIGITS) for r in closed)
+    tolerance = sp.Float(10, CHECK_DIGITS) ** (10 - CHECK_DIGITS)
+    return all(abs(a - b) <= tolerance * max(abs(b), 1) for a, b in zip(values, exact))
 
 
 def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
