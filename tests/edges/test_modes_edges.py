@@ -93,7 +93,6 @@ questions:
 
 def test_exact_double_root_gives_an_m_orthogonal_basis_of_its_plane() -> None:
     report, s = _solve(RING, EXACT)
-    m, k = sp.symbols("m k", positive=True)
     a = s.answers
     names = {str(x): x for x in a.M.free_symbols | a.K.free_symbols}
     M = sp.eye(3) * names["m"]
@@ -123,6 +122,8 @@ def test_numeric_cluster_is_one_mode_space_with_an_m_orthonormal_basis() -> None
     assert a.clusters == ((1,), (2, 3))
     assert a.motions[0] is Motion.NEUTRAL and a.growth_rates == (None, None, None)
     V = a.orthonormal_shapes
+    for lam, v in zip(a.eigenvalues, V):  # (K − λM) a = 0 within rounding (entries of size 10)
+        assert max(abs(sum(K[r][c] * v[c] for c in range(3)) - lam * M[r][r] * v[r]) for r in range(3)) < 1e-13
     for i in range(3):
         for j in range(3):  # aᵢᵀ M aⱼ = δᵢⱼ within 1e-14
             assert abs(sum(V[i][r] * M[r][r] * V[j][r] for r in range(3)) - (i == j)) < 1e-14
