@@ -2,7 +2,9 @@
 
     python3 -m benchmarks.run [--quick] [--out benchmarks/results]
 
-Writes results.json and the charts (PNG and SVG) into --out. Every measurement runs in
+Writes results.json and the charts (PNG and SVG) into --out, among them
+conditioning.png (benchmarks.conditioning: the numeric modes route's actual error and
+stated bound against the condition number, a few seconds). Every measurement runs in
 a child process with a timeout; a size that times out is recorded as "> T s" and the
 family/route stops growing there. See docs/performance.md.
 """
@@ -169,6 +171,23 @@ def measure_routes(plan: Plan, files: Path) -> list[RouteMeasurement]:
     return out
 
 
+def measure_conditioning(timeout: float = 120.0) -> list[dict]:
+    """The numeric modes route against the condition number (benchmarks.conditioning, a
+    few seconds) in its own process; [] with a logged reason if it fails or times out."""
+    try:
+        _, done = _wall(_python() + ["-m", "benchmarks.conditioning"], timeout)
+    except subprocess.TimeoutExpired:
+        _log(f"conditioning  timed out after {timeout:.0f} s")
+        return []
+    if done.returncode != 0:
+        _log("conditioning  failed: " + (done.stderr.strip().splitlines() or ["?"])[-1][:200])
+        return []
+    rows = json.loads(done.stdout)
+    worst = max((r["actual"] / r["bound"] for r in rows if r["bound"]), default=None)
+    _log(f"conditioning  {len(rows)} eigenvalues; largest actual error / stated bound {worst}")
+    return rows
+
+
 def measure_baseline(method: str, n: int, timeout: float) -> BaselineMeasurement:
     """One run of benchmarks.baseline in its own process, with a timeout."""
     try:
@@ -271,13 +290,14 @@ def main(argv: list[str] | None = None) -> None:
     started = time.perf_counter()
     with tempfile.TemporaryDirectory() as files:
         routes = measure_routes(plan, Path(files))
+    conditioning = measure_conditioning()
     baselines = [] if args.skip_baselines else measure_baselines(plan)
     startup = measure_startup(plan)
     from benchmarks.report import targets, write_charts, write_tables
 
     result = {"plan": "quick" if args.quick else "full", "python": sys.version.split()[0],
               "routes": [asdict(m) for m in routes], "baselines": [asdict(m) for m in baselines],
-              "startup": [asdict(m) for m in startup],
+              "startup": [asdict(m) for m in startup], "conditioning": conditioning,
               "targets": [asdict(t) for t in targets(routes, baselines, startup)],
               "wall_seconds": time.perf_counter() - started}
     (out / "results.json").write_text(json.dumps(result, indent=1))

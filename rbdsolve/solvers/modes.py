@@ -11,7 +11,13 @@ rational M̂, K̂ (the usual case: s_M = m r², s_K = m g r), the characteristic
 polynomial is taken over the rationals in the dimensionless μ = λ s_M / s_K, which is
 fast and exact; otherwise over the parameters.
 
-λ > 0: oscillation at ω = √λ; λ < 0: exponential growth at rate √−λ; λ = 0: neutral.
+λ > 0: oscillation at ω = √λ; λ < 0: exponential growth at rate γ = √−λ (the solutions
+e^(±γt) a); λ = 0: neutral, its mode shape the direction of no restoring force.
+
+A root of multiplicity k has a k-dimensional mode space (K and M symmetric, M > 0:
+the pencil is diagonalizable, Parlett, The Symmetric Eigenvalue Problem, §15.3); its
+null space basis is made M-orthogonal (Gram–Schmidt in the inner product uᵀ M v) and
+each vector scaled so its first nonzero entry is 1.
 """
 
 from __future__ import annotations
@@ -63,6 +69,8 @@ class ModesAnswers:
     frequencies: tuple[sp.Expr | None, ...]  # ω = √λ where λ > 0
     motions: tuple[Motion, ...]
     shapes: tuple[tuple[sp.Expr, ...], ...]  # one amplitude vector per eigenvalue
+    growth_rates: tuple[sp.Expr | None, ...] = ()  # γ = √(−λ) where λ < 0
+    multiplicities: tuple[int, ...] = ()  # of each λ as a root of det(K − λM)
     amplitude_check: object = None  # solvers/amplitude.py, with 'check_amplitudes'
 
 
@@ -93,7 +101,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(spectrum, model.values)
-    answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes)
+    rates = tuple(tidy(sp.sqrt(-lam)) if mo is Motion.GROWTH else None for lam, mo in zip(eigenvalues, motions))
+    answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
+                           rates, tuple(eigenvalues.count(lam) for lam in eigenvalues))
     return with_check(question, model, Solution("modes", Route.EXACT, answers, _steps(answers, model, spectrum.steps)))
 
 
@@ -164,19 +174,38 @@ MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CR
 def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
     """Every root of a polynomial over QQ, with the irreducible factor it belongs to:
     closed forms for factors of degree ≤ 2 and for cubics with a compact real
-    (trigonometric) form; exact CRootOf(f, k) otherwise. No Ferrari quartics."""
+    (trigonometric) form, each checked against the isolated roots (``_agree``); exact
+    CRootOf(f, k) otherwise. No Ferrari quartics."""
     out = []
     for factor, multiplicity in poly.factor_list()[1]:
         roots = None
         if factor.degree() <= 3:
             found = sp.roots(factor, trig=True)
             if sum(found.values()) == factor.degree() and all(
-                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found):
+                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found) \
+                    and _agree(list(found), factor):
                 roots = list(found)
         if roots is None:
             roots = factor.all_roots()
         out += [(r, factor) for r in roots for _ in range(multiplicity)]
     return out
+
+
+CHECK_DIGITS = 50
+
+
+def _agree(closed: list[sp.Expr], factor: sp.Poly) -> bool:
+    """Whether closed forms are the roots of ``factor``: their values at CHECK_DIGITS
+    digits match, in order, those of the isolated real roots (CRootOf, exact isolation)
+    to 10^-(CHECK_DIGITS − 10) relative. A guard against sympy simplifying a closed form
+    wrongly: cos(acos(x)/3) evaluates to 1 when x is within ~1e-24 of 1 (a cubic with one
+    eigenvalue 1e12 times the others), which would silently drop a term of a root."""
+    exact = [sp.N(r, CHECK_DIGITS) for r in factor.all_roots()]
+    if len(exact) != len(closed):
+        return False
+    values = sorted(sp.N(r, CHECK_DIGITS) for r in closed)
+    tolerance = sp.Float(10, CHECK_DIGITS) ** (10 - CHECK_DIGITS)
+    return all(abs(a - b) <= tolerance * max(abs(b), 1) for a, b in zip(values, exact))
 
 
 def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
@@ -256,7 +285,7 @@ def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
                 bases[root] = [vector]
             else:
                 null = (K - root * M).applyfunc(tidy).nullspace(simplify=True)
-                bases[root] = [_normalize(v) for v in null]
+                bases[root] = [_normalize(v) for v in _m_orthogonal(null, M)]
         k = used.get(root, 0)
         used[root] = k + 1
         out.append(bases[root][k] if k < len(bases[root]) else ())
@@ -312,9 +341,40 @@ def _shape_mod(adjugate: sp.Matrix, x: sp.Symbol, f: sp.Expr, root: sp.Expr,
     return tuple(sp.factor_terms(sp.together(sp.expand(r.xreplace({x: root})))) for r in ratios)
 
 
+def _m_orthogonal(vectors: list[sp.Matrix], M: sp.Matrix) -> list[sp.Matrix]:
+    """Gram–Schmidt in the inner product ⟨u, v⟩ = uᵀ M v (M symmetric positive
+    definite), exact: a basis of the same space with uᵢᵀ M uⱼ = 0 for i ≠ j."""
+    out: list[sp.Matrix] = []
+    for v in vectors:
+        w = sp.Matrix(v)
+        for u in out:
+            w = w - tidy((u.T * M * v)[0] / (u.T * M * u)[0]) * u
+        out.append(w.applyfunc(tidy))
+    return out
+
+
 def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
     first = next(x for x in v if x != 0)
     return tuple(tidy(x / first) for x in v)
+
+
+def _repeated_notes(eigenvalues: tuple[sp.Expr, ...]) -> list[st.Step]:
+    """A note per repeated λ: its mode space and the basis shown."""
+    notes, seen = [], set()
+    for lam in eigenvalues:
+        modes = [i for i, x in enumerate(eigenvalues, 1) if x == lam]
+        if len(modes) > 1 and lam not in seen:
+            seen.add(lam)
+            names = ", ".join(f"a{_sub(i)}" for i in modes)
+            notes.append(st.note(
+                f"{' = '.join(f'λ{_sub(i)}' for i in modes)}: a root of multiplicity {len(modes)}, so its mode "
+                f"space is {len(modes)}-dimensional; {names} below are an M-orthogonal basis of it "
+                "(aᵢᵀ M aⱼ = 0), and every combination of them is a mode with the same λ."))
+    return notes
+
+
+def _sub(i: int) -> str:
+    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
 def _steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> tuple:
@@ -333,6 +393,7 @@ def _steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> t
                              "λ = ω², solvable when", *char_steps))
     steps.append(st.result("Eigenvalues:", *[
         Relation(sp.Symbol(f"lambda_{i}"), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
+    steps += _repeated_notes(a.eigenvalues)
     for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
         vector = sp.ImmutableMatrix([shape]) if shape else None
         if motion is Motion.OSCILLATION:

@@ -26,7 +26,10 @@ Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three t
 
 An eigenvalue within its bound of zero is neutral (zero within rounding); its relative
 error is undefined (None). ``error_estimate`` is the largest relative bound of the
-others. The 50-digit reference (``reference_eigenvalues``) does the same in mpmath.
+others. A negative λ is reported by its growth rate γ = √(−λ). Clusters of eigenvalues
+equal within their bounds, the error of each mode space, condition numbers and the
+warnings past the tolerance 1e-8: ``modes_spaces``. The 50-digit reference
+(``reference_eigenvalues``) does the same in mpmath.
 """
 
 from __future__ import annotations
@@ -45,6 +48,7 @@ from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, configuration, require_values
 from rbdsolve.solvers.equilibria import require_static
 from rbdsolve.solvers.modes import Motion
+from rbdsolve.solvers.modes_spaces import analyse, warnings
 from rbdsolve.solvers.numeric_model import equilibrium_for_modes, linearized
 from rbdsolve.solvers.amplitude import with_check
 from rbdsolve.solvers.singular import float_reason
@@ -63,6 +67,13 @@ class NumericModesAnswers:
     shapes: tuple[tuple[float, ...], ...]  # first nonzero entry 1, as on the exact route
     absolute_errors: tuple[float, ...]  # the bound on |λ̂ − λ| for each λ
     relative_errors: tuple[float | None, ...]  # that over |λ|; None where λ is neutral (zero within it)
+    growth_rates: tuple[float | None, ...] = ()  # γ = √(−λ) where λ < 0
+    orthonormal_shapes: tuple[tuple[float, ...], ...] = ()  # the shapes scaled so aᵢᵀ M aⱼ = δᵢⱼ
+    clusters: tuple[tuple[int, ...], ...] = ()  # modes (1-based) equal within their bounds: one mode space each
+    shape_errors: tuple[float, ...] = ()  # sin Θ bound between each mode's computed space and the exact one
+    condition_M: float | None = None  # κ₂(M)
+    conditions: tuple[float | None, ...] = ()  # relative condition number κ(λ) of each λ; None where neutral
+    spread: float | None = None  # max |λ|/min |λ| over the modes that are not neutral
     amplitude_check: object = None  # solvers/amplitude.py, with 'check_amplitudes'
 
 
@@ -76,15 +87,20 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     lam, vectors, absolute = generalized_eigh(K, M)
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
+    spaces = analyse(K, M, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
     answers = NumericModesAnswers(
         {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K),
         tuple(float(x) for x in lam),
         tuple(float(np.sqrt(x)) if m is Motion.OSCILLATION else None for x, m in zip(lam, motions)),
-        motions, tuple(_normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative)
+        motions, tuple(_normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative,
+        tuple(float(np.sqrt(-x)) if m is Motion.GROWTH else None for x, m in zip(lam, motions)),
+        _rows(vectors.T), tuple(tuple(i + 1 for i in g) for g in spaces.clusters), spaces.shape_errors,
+        spaces.condition_M, spaces.conditions, spaces.spread)
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
     return with_check(question, model, Solution("modes", Route.NUMERIC, answers, _steps(answers, model, how),
-                                                warnings=notes, error_estimate=estimate))
+                                                warnings=tuple(notes) + warnings(spaces, lam, relative),
+                                                error_estimate=estimate))
 
 
 def classify(lam: float, bound: float) -> Motion:
@@ -186,6 +202,7 @@ def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...
         st.equation("The generalized symmetric eigenproblem K a = λ M a, by Cholesky factorization of M "
                     "(scipy.linalg.eigh):",
                     *[Relation(sp.Symbol(f"lambda_{i}"), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
+        _conditioning_note(a),
     ]
     for i, (lam, w, motion, shape, err) in enumerate(
             zip(a.eigenvalues, a.frequencies, a.motions, a.shapes, a.absolute_errors), 1):
@@ -202,6 +219,22 @@ def _steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...
             rel.append(Relation(sp.Symbol(f"a_{i}"), _floats((shape,))))
         steps.append(st.result(text, *rel))
     return tuple(steps)
+
+
+def _conditioning_note(a: NumericModesAnswers) -> st.Step:
+    """κ₂(M), the spread of λ, the largest κ(λ) and the clusters (modes_spaces)."""
+    kappas = [k for k in a.conditions if k is not None]
+    text = f"Conditioning: κ₂(M) = {a.condition_M:.2g}"
+    if a.spread is not None:
+        text += f", max |λ|/min |λ| = {a.spread:.2g}"
+    if kappas:
+        text += (f", largest relative condition number κ(λ) = (‖K‖₂ + |λ| ‖M‖₂) ‖a‖₂²/|λ| with aᵀ M a = 1: "
+                 f"{max(kappas):.2g} (relative error about ε κ, ε = {EPS:.1e})")
+    for group in a.clusters:
+        if len(group) > 1:
+            text += (f"; λ{'/λ'.join(map(str, group))} are equal within their bounds: one mode space, "
+                     "its shapes below an M-orthogonal basis of it")
+    return st.note(text + ".")
 
 
 def _floats(rows) -> sp.ImmutableMatrix:

@@ -49,7 +49,11 @@ def _oracle_roots(f, low: float, high: float, points: int = 20001) -> list:
     """Every root of f on [low, high]: sign changes on a dense grid, each refined by
     mpmath's findroot (bisection-safe 'anderson' on the bracket), plus findroot from
     many starts; merged at 1e-12."""
-    mp.mp.dps = 30
+    with mp.workdps(30):
+        return _roots_at_working_precision(f, low, high, points)
+
+
+def _roots_at_working_precision(f, low: float, high: float, points: int) -> list:
     xs = [mp.mpf(low) + (mp.mpf(high) - low) * i / (points - 1) for i in range(points)]
     roots = []
     for a, b in zip(xs, xs[1:]):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+import sympy as sp
 
 from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
@@ -72,13 +73,16 @@ def test_a_scene_that_moves_by_itself_has_no_equilibria() -> None:
         assert not result.solved and "depends explicitly on time" in result.error
 
 
-def test_angles_are_reported_in_one_turn() -> None:
-    # θ enters as θ/2, declared an angle: sympy's solve gives θ = 2π, shown as 0.
+def test_an_angle_the_scene_does_not_repeat_after_one_turn_is_not_folded() -> None:
+    # θ enters as θ/2 though declared an angle: the bob hangs at θ = 0 and stands on top
+    # at θ = 2π (by hand: V = −m g l cos(θ/2)). Folding 2π into (−π, π] would put the
+    # unstable top at 0, on the stable bottom; both are kept, with a warning.
     scene = BASE.replace("coordinates: [theta]", "coordinates: {theta: angle}").replace(
         "l * [sin(theta), -cos(theta)]", "l * [sin(theta/2), -cos(theta/2)]")
-    report = solve_problem(build_model(load_text(scene, "s.yaml")))
-    values = [eq.at["theta"] for eq in report.solutions[1].answers.equilibria]
-    assert all(v.is_number and -3.1416 < float(v) <= 3.1416 for v in values)
+    solution = solve_problem(build_model(load_text(scene, "s.yaml"))).solutions[1]
+    found = {(eq.at["theta"], eq.stability.value) for eq in solution.answers.equilibria}
+    assert found == {(0, "stable"), (2 * sp.pi, "unstable")}
+    assert any("not 2π-periodic in theta" in w for w in solution.warnings)
 
 
 @pytest.mark.parametrize("position, words", [("[1/0, 0]", "division by zero"),
