@@ -44,7 +44,7 @@ def chain_text(masses, stiffnesses) -> str:
     """Masses on parallel rails 1 apart, zero-length springs: V = ½ Σ kᵢ ((xᵢ − xᵢ₋₁)² + 1).
     The masses and stiffnesses are written as rational numbers, not parameters: the
     exact route then works over QQ (with six symbolic parameters its cubic runs out of
-    the budget; docs/failure-edges-modes.md)."""
+    the budget; docs/failure-edges.md)."""
     n = len(masses)
     return (f"coordinates: [{', '.join(f'x{i}' for i in range(1, n + 1))}]\n"
             + "points:\n  P0: [0, 0]\n" + "".join(f"  P{i}: [x{i}, {i}]\n" for i in range(1, n + 1))

@@ -1,7 +1,7 @@
 """Failure edges of the `modes` routes (issue 8): repeated and near-repeated eigenvalues,
 ill-conditioned mass and stiffness, unstable and neutral modes. Each case gets a correct
 answer or a stated reason, never a silent wrong number, NaN or hang
-(docs/failure-edges-modes.md).
+(docs/failure-edges.md).
 
 Expected values are derived by hand in each test (M and K written down from T and V)
 and, for numbers, solved here in mpmath at 50 digits; none is taken from rbdsolve.
