@@ -27,9 +27,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Callable, Mapping, Sequence
 
-import numpy as np
 import sympy as sp
 
 from rbdsolve.model.build import Model
@@ -37,6 +36,9 @@ from rbdsolve.model.energy import mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
 from rbdsolve.solvers.common import missing_values, numeric
+
+if TYPE_CHECKING:  # numpy is imported where a check runs: a modes question without one needs none
+    import numpy as np
 
 CYCLES = 4  # full periods measured
 SLOWEST = 4.0  # integrate up to SLOWEST × the linear time for CYCLES periods
@@ -102,6 +104,8 @@ def check(model: Model, about: Mapping[str, float], modes: Sequence[tuple[int, f
           amplitudes: Sequence[float]) -> AmplitudeCheck:
     """Every (mode, amplitude) run: ``modes`` holds (index, ω_lin, shape) of the
     oscillating modes, ``about`` the equilibrium q₀."""
+    import numpy as np
+
     dyn = compile_dynamics(model)
     q0 = np.array([about[n] for n in model.coordinate_names()], dtype=float)
     runs = []
@@ -132,6 +136,7 @@ def compile_dynamics(model: Model) -> Dynamics:
 def simulate(dyn: Dynamics, q0: np.ndarray, a: np.ndarray, omega: float, amplitude: float,
              index: int, coordinate: str) -> AmplitudeRun:
     """One run from rest at q₀ + A a; the frequency from the modal coordinate's crossings."""
+    import numpy as np
     from scipy.integrate import solve_ivp
 
     n = len(q0)

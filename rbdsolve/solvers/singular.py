@@ -25,15 +25,17 @@ regular one is far from 1e-20 there.
 from __future__ import annotations
 
 import random
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
-import numpy as np
 import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix
 
-EPS = float(np.finfo(float).eps)
+if TYPE_CHECKING:  # numpy is imported where floats are used: the exact routes need none
+    import numpy as np
+
+EPS = 2.0**-52  # binary64's machine epsilon
 GENERIC_DIGITS = 30
 GENERIC_TOL = 1e-20
 SEED = 20151029  # a fixed sample: the same verdict every run
@@ -68,6 +70,8 @@ def exact_reason(M: sp.Matrix, names: Sequence[str], where: str) -> str | None:
 def float_reason(M: np.ndarray, names: Sequence[str], where: str) -> str | None:
     """None when every eigenvalue of M exceeds n ε ‖M‖₂, else the reason, naming the
     eigenvectors of the eigenvalues below it (zero within rounding)."""
+    import numpy as np
+
     M = np.asarray(M, dtype=float)
     if not np.all(np.isfinite(M)):
         return None  # not this module's to diagnose
@@ -82,6 +86,8 @@ def float_reason(M: np.ndarray, names: Sequence[str], where: str) -> str | None:
 
 def _texts(v: Sequence[float]) -> list[str]:
     """Entries scaled so the largest is 1, rounded to 4 digits; round-off shows as 0."""
+    import numpy as np
+
     v = np.asarray(v, dtype=float)
     v = v / v[np.argmax(np.abs(v))]
     return ["0" if abs(x) < 1e-9 else f"{x:.4g}" for x in v]
