@@ -97,7 +97,7 @@ def parse_yaml(text: str, path: str) -> Map:
     try:
         root = _compose(text, path)
     except yaml.MarkedYAMLError as exc:
-        raise _yaml_error(exc, path) from None
+        raise _yaml_error(exc, path, text) from None
     except yaml.reader.ReaderError as exc:  # a control character the YAML reader refuses
         raise _reader_error(exc, text, path) from None
     except yaml.YAMLError as exc:  # unmarked: rare, but say it in one line
@@ -142,7 +142,7 @@ def _compose(text: str, path: str) -> yaml.Node | None:
         loader.dispose()
 
 
-def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
+def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputError:
     mark = exc.problem_mark or exc.context_mark
     loc = Location(path, mark.line + 1, mark.column + 1) if mark else Location(path, 1, 1)
     problem = exc.problem or "invalid YAML"
@@ -152,7 +152,19 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str) -> InputError:
         problem = f"YAML syntax error: {problem}"
         if exc.context:
             problem += f" ({exc.context})"
+        problem += _bracket_hint(text, mark.line if mark else 0)
     return InputError(problem, loc)
+
+
+def _bracket_hint(text: str, line: int) -> str:
+    """YAML reads a value that starts with '[' as a list, so [3, 0] + l*[…] breaks the
+    file there: say to quote it."""
+    lines = text.splitlines()
+    for row in (line, line - 1):
+        value = lines[row].split(":", 1)[-1].strip() if 0 <= row < len(lines) else ""
+        if value.startswith("[") and "]" in value and value[value.index("]") + 1:].strip():
+            return f'; an expression that starts with \'[\' must be quoted: "{value}"'
+    return ""
 
 
 def _reader_error(exc: yaml.reader.ReaderError, text: str, path: str) -> InputError:

@@ -142,8 +142,9 @@ def _steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st
     names = model.coordinate_names()
     how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
            else f"Newton's method from {a.starts} {sampling}")
-    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0; {how} finds (a curvature within {CURVATURE_TOL:g} × the "
-                         "Hessian's scale over the search box of zero counts as zero: undetermined):")]
+    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0, found by {how}. Stability from the eigenvalues of the "
+                         f"Hessian of V; one within {CURVATURE_TOL:g} × the Hessian's scale over the search box "
+                         "counts as zero (undetermined: higher-order terms decide):")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [sp.Float(v, 12) for v in eq.at.values()])
         curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
