@@ -47,3 +47,17 @@ def _canonical_radicands(expr: sp.Expr) -> sp.Expr:
 @pytest.fixture
 def problems_dir() -> Path:
     return PROBLEMS
+
+
+# A cart (x) carrying a pendulum (θ) on a massless link; tests add values and questions.
+CART_PENDULUM = """\
+parameters: {m: mass, M: cart mass, l: length, g: gravity}
+coordinates: [x, theta]
+gravity: [0, -g]
+points:
+  C: [x, 0]
+  P: C + l * [sin(theta), -cos(theta)]
+bodies:
+  cart: {shape: particle, mass: M, at: C}
+  bob: {shape: particle, mass: m, at: P}
+"""

@@ -17,6 +17,7 @@ import mpmath
 import pytest
 import sympy as sp
 
+from conftest import CART_PENDULUM
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.render.json import render_report
@@ -297,17 +298,8 @@ def test_mass_singular_in_floating_point_is_refused_not_guessed() -> None:
 # det(K − λM) = λ ((M + m) m l² λ + (M + m) m g l − m² l² λ)... = λ (M m l² λ + (M + m) m g l):
 # λ = 0 (a = (1, 0): the cart slides) and λ = −(M + m) g/(M l), γ = √((M + m) g/(M l)),
 # a = (1, (M + m)/(m l)) from the first row −λ((M + m) a₁ − m l a₂) = 0.
-CART = """
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
+CART = CART_PENDULUM + """\
 values: {m: 1, M: 2, l: 1, g: 981/100}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
 questions:
   - modes: {about: {x: 0, theta: pi}}
 """

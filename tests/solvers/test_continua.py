@@ -19,21 +19,12 @@ import math
 
 import pytest
 
+from conftest import CART_PENDULUM
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
-CART = """\
-title: cart with pendulum
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
+CART = "title: cart with pendulum\n" + CART_PENDULUM + """\
 questions:
   - equilibria
   - modes

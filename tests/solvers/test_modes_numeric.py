@@ -14,6 +14,7 @@ from fractions import Fraction
 import mpmath
 import pytest
 
+from conftest import CART_PENDULUM
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
@@ -24,17 +25,8 @@ from rbdsolve.solvers.modes_numeric import classify
 
 NUMERIC = Options(route=RouteChoice.NUMERIC)
 
-CART = """
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
+CART = CART_PENDULUM + """\
 values: {m: 1, M: 2, l: 1, g: 981/100}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
 questions:
   - modes: {about: {x: 0, theta: 0}}
   - equilibria

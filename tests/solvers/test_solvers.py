@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from conftest import CART_PENDULUM
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -19,18 +20,7 @@ bodies:
 """
 
 
-# A cart (x) carrying a pendulum (θ).
-CART = """
-parameters: {m: mass, M: cart mass, l: length, g: gravity}
-coordinates: [x, theta]
-gravity: [0, -g]
-points:
-  C: [x, 0]
-  P: C + l * [sin(theta), -cos(theta)]
-bodies:
-  cart: {shape: particle, mass: M, at: C}
-  bob: {shape: particle, mass: m, at: P}
-"""
+CART = "\n" + CART_PENDULUM
 
 
 def solve(text: str):
