@@ -246,8 +246,6 @@ def chart_time_size(result: dict, out: Path) -> None:
                 _timeouts(ax, rows, "n", color)
         ax.set(yscale="log", xscale="log", title=family, xlabel=xlabels.get(family, "size n (degrees of freedom)"),
                ylabel="time per solve, in-process median (s)")
-        if not _series(result, family, "numeric"):
-            ax.text(0.02, 0.02, "no numeric route yet", transform=ax.transAxes, fontsize=8, color="0.4")
         from matplotlib.ticker import ScalarFormatter
 
         ax.xaxis.set_major_formatter(ScalarFormatter())

@@ -68,7 +68,7 @@ class RouteMeasurement:
     """One family/size/route: in-process median of solve_problem (load+build+solve), the
     question's own seconds, whole-process median (None where not measured), relative
     error against the 50-digit reference, the route's own error estimate, and a status
-    ("ok", "timeout", "no numeric route yet", or the solver's error)."""
+    ("ok", "timeout", or the solver's error)."""
 
     family: str
     size: int
@@ -144,8 +144,7 @@ def measure_route(family: str, size: int, route: str, plan: Plan, files: Path) -
         return RouteMeasurement(family, size, route, "failed: " + done.stderr.strip().splitlines()[-1][:200])
     data = json.loads(done.stdout)
     if data["error"]:
-        status = "no numeric route yet" if "no numeric route" in data["error"] else data["error"][:200]
-        return RouteMeasurement(family, size, route, status)
+        return RouteMeasurement(family, size, route, data["error"][:200])
     whole = None
     if data["median"] < plan.whole_process_limit:
         path = files / f"{family}-{size}.yaml"

@@ -128,7 +128,7 @@ def test_internal_error_exits_3(monkeypatch) -> None:
     def broken(*args):
         raise ZeroDivisionError("boom")
 
-    monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EOM, solvers.Family(broken))
+    monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EOM, solvers.Family(broken, broken))
     result = run("solve", PENDULUM)
     assert result.exit_code == 3
     assert "internal error: ZeroDivisionError: boom (run with --debug" in result.output

@@ -30,7 +30,7 @@ class Family:
     """A solver family's routes: each a pure function (question, model, options) -> Solution."""
 
     exact: Callable[[Question, Model, Options], Solution]
-    numeric: Callable[[Question, Model, Options], Solution] | None = None
+    numeric: Callable[[Question, Model, Options], Solution]
 
 
 def _later(module: str) -> Callable[[Question, Model, Options], Solution]:
@@ -83,12 +83,10 @@ def _routed(question: Question, model: Model, options: Options) -> Solution:
     The Solution's route is the route that ran last; when both fail, its error gives
     both routes' reasons."""
     family = FAMILIES[question.kind]
-    if options.route is RouteChoice.NUMERIC and family.numeric is None:
-        return _failed(question, Route.NUMERIC, f"'{question.kind.value}' has no numeric route yet; use --route exact")
     if options.route is RouteChoice.NUMERIC:
         return _attempt(Route.NUMERIC, family.numeric, question, model, options)
     exact = _attempt(Route.EXACT, family.exact, question, model, options)
-    if options.route is RouteChoice.EXACT or exact.solved or family.numeric is None or missing_values(model):
+    if options.route is RouteChoice.EXACT or exact.solved or missing_values(model):
         return exact
     solution = _attempt(Route.NUMERIC, family.numeric, question, model, options, " (numeric route)")
     if not solution.solved:

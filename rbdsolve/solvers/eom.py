@@ -27,7 +27,7 @@ from rbdsolve.report.math import Terms
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, subscript
 from rbdsolve.solvers.energies import present
-from rbdsolve.solvers.singular import generic_reason
+from rbdsolve.solvers.singular import eom_warnings
 
 
 @dataclass(frozen=True)
@@ -81,9 +81,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         all(f.equivalent for f in frames) if frames else None,
         frames[0].total_derivative if frames else None,
     )
-    singular = generic_reason(model)
-    warnings = (f"{singular}: these equations cannot be solved for the accelerations",) if singular else ()
-    return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=warnings)
+    return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=eom_warnings(model))
 
 
 def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[FrameAnswers, list[st.Step]]:

@@ -34,7 +34,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Relation, Route, Solution
 from rbdsolve.solvers.common import Options, require_values
-from rbdsolve.solvers.singular import generic_reason
+from rbdsolve.solvers.singular import eom_warnings
 
 FLOAT_DIGITS = 15  # sympy Float of 15 digits carries 53 bits, a binary64's precision
 REFERENCE_DIGITS = 50
@@ -74,10 +74,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     errors = scene.errors + tuple(e for _, r in frames for e in r.errors)
     answers = NumericEomAnswers(_equations(scene, model), scene.errors,
                                 tuple(answer for answer, _ in frames))
-    singular = generic_reason(model)
-    warnings = (f"{singular}: these equations cannot be solved for the accelerations",) if singular else ()
     return Solution("eom", Route.NUMERIC, answers, _steps(answers, model, max(errors, default=0.0)),
-                    warnings=warnings, error_estimate=max(errors, default=0.0))
+                    warnings=eom_warnings(model), error_estimate=max(errors, default=0.0))
 
 
 def _scene_lagrangian(model: Model, digits: int) -> sp.Expr:

@@ -114,3 +114,10 @@ def generic_reason(model: Model) -> str | None:
     if not small:
         return None
     return describe([_texts(v) for v in vecs], model.coordinate_names(), "at every configuration")
+
+
+def eom_warnings(model: Model) -> tuple[str, ...]:
+    """Lagrange's equations are right even with a singular M, but cannot be solved for
+    the accelerations: both eom routes say so."""
+    singular = generic_reason(model)
+    return (f"{singular}: these equations cannot be solved for the accelerations",) if singular else ()
