@@ -49,8 +49,8 @@ def test_restitution_set_outside_zero_one_exits_2() -> None:
 def test_solve_json_lines_contract() -> None:
     result = run("solve", P1, PENDULUM, "--format", "json")
     assert result.exit_code == 0
-    lines = result.output.splitlines()
-    assert len(lines) == 2
+    lines = result.stdout.splitlines()  # the summary table is on standard error
+    assert len(lines) == 2 and "Summary" in result.stderr
     first = json.loads(lines[0])
     assert {"file", "title", "model", "results"} <= first.keys()
     assert first["model"]["coordinates"] == ["theta(t)", "phi(t)"]
@@ -63,7 +63,7 @@ def test_solve_json_lines_contract() -> None:
 def test_folder_is_solved_in_file_order() -> None:
     result = run("solve", str(PROBLEMS / "examples"), "-f", "json")
     assert result.exit_code == 0
-    files = [json.loads(line)["file"].rsplit("/", 1)[1] for line in result.output.splitlines()]
+    files = [json.loads(line)["file"].rsplit("/", 1)[1] for line in result.stdout.splitlines()]
     on_disk = sorted(p.name for p in (PROBLEMS / "examples").glob("*.yaml"))
     assert files == [name for name in on_disk if not name.endswith(".expected.yaml")]
     assert "pendulum.yaml" in files and len(files) >= 5
@@ -72,7 +72,7 @@ def test_folder_is_solved_in_file_order() -> None:
 def test_set_gives_numeric_values() -> None:
     result = run("solve", P1, "-f", "json", "--set", "m=1", "--set", "r=0.5", "--set", "g=9.81")
     assert result.exit_code == 0
-    modes = json.loads(result.output)["results"][2]
+    modes = json.loads(result.stdout)["results"][2]
     assert modes["values"]["eigenvalues"] == pytest.approx([24 * 9.81 / 12.5, 2 * 9.81 / 0.5], rel=1e-12)
     assert modes["values"]["frequencies"][1] == pytest.approx((2 * 9.81 / 0.5) ** 0.5, rel=1e-12)
 

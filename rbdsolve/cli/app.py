@@ -1,0 +1,169 @@
+"""The ``rbdsolve`` group and what every command shares: turning paths, globs and
+``-`` into problem sources, ``--set`` values, output files, and the one place that turns
+an exception into a message and an exit code."""
+
+from __future__ import annotations
+
+import glob
+import sys
+import traceback
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import Callable
+
+import click
+
+from rbdsolve import __version__
+from rbdsolve.errors import ExitCode, InputError, RbdError
+
+EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
+STDIN = "-"
+_GLOB_CHARS = frozenset("*?[")
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="rbdsolve")
+def main() -> None:
+    """rbdsolve: rigid body dynamics exam problems, solved step by step.
+
+    A problem is a short YAML scene (parameters, coordinates, points, bodies,
+    forces, questions); see docs/format.md and the examples in problems/.
+
+    \b
+    Questions: eom, equilibria, modes (Lagrange's equations, equilibria and their
+    stability, small oscillations; in moving frames too), impact (Lagrange's
+    equations for impact), inertia (tensors, principal axes), steady_spin (Euler's
+    equations of a free body), steady_motion (rolling, tops, in a turning triad).
+
+    \b
+    Shell completion (bash; zsh and fish alike, see the README):
+      eval "$(_RBDSOLVE_COMPLETE=bash_source rbdsolve)"
+    """
+
+
+@dataclass(frozen=True)
+class Source:
+    """One problem to read: a file, or text already read (standard input)."""
+
+    name: str
+    text: str | None = None
+
+    def load(self):
+        from rbdsolve.problem import load_file, load_text
+
+        return load_file(self.name) if self.text is None else load_text(self.text, self.name)
+
+
+def expand_paths(paths: tuple[str, ...]) -> list[Path]:
+    """Files as given; a folder gives the *.yaml files below it, in path order; a glob
+    (quoted, so the shell leaves it) the files it matches, in path order."""
+    out: list[Path] = []
+    for raw in paths:
+        path = Path(raw)
+        if path.is_dir():
+            found = sorted(p for p in path.rglob("*") if p.is_file() and _is_problem(p))
+            if not found:
+                raise InputError(f"{raw}: no problem files (*.yaml) in this folder")
+            out += found
+        elif not path.exists() and _GLOB_CHARS & set(raw):
+            found = sorted(Path(p) for p in glob.glob(raw, recursive=True) if _is_problem(Path(p)))
+            if not found:
+                raise InputError(f"{raw}: no problem files match this pattern")
+            out += found
+        else:
+            out.append(path)
+    return out
+
+
+def sources(paths: tuple[str, ...]) -> list[Source]:
+    """``expand_paths`` with ``-`` read once from standard input."""
+    out: list[Source] = []
+    for raw in paths:
+        if raw == STDIN:
+            out.append(Source("<stdin>", sys.stdin.read()))
+        else:
+            out += [Source(str(p)) for p in expand_paths((raw,))]
+    return out
+
+
+def _is_problem(path: Path) -> bool:
+    return path.suffix in (".yaml", ".yml") and not path.name.endswith(EXPECTED_SUFFIX)
+
+
+def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
+    from rbdsolve.errors import Location
+    from rbdsolve.problem.expr import parse_number
+
+    values = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        if not sep or not name.strip().isidentifier():
+            raise InputError(f"--set expects NAME=VALUE, found '{item}'")
+        try:
+            values[name.strip()] = parse_number(text, Location("--set", 1, len(name) + 2))
+        except InputError as exc:  # said as the option, not as a place in a file
+            raise InputError(f"--set {name.strip()}: {exc.message}") from None
+    return values
+
+
+def check_sets(values: dict[str, Fraction], problem) -> None:
+    """Every ``--set`` names a parameter of ``problem``, positive ones positive."""
+    names = [p.name for p in problem.parameters]
+    for name, value in values.items():
+        if name not in names:
+            from rbdsolve.errors import did_you_mean
+
+            raise InputError(f"--set {name}: {problem.file} has no parameter '{name}'{did_you_mean(name, names)}")
+        if value <= 0 and next(p for p in problem.parameters if p.name == name).positive:
+            raise InputError(f"--set {name}: the parameter is positive, found {value}")
+
+
+def open_output(output: str, mode: str = "w"):
+    try:
+        return open(output, mode, encoding=None if "b" in mode else "utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot write {output}: {exc.strerror}") from None
+
+
+def write_text(text: str, output: str | None) -> None:
+    """To ``output``, or to standard output when there is none."""
+    if output:
+        with open_output(output) as handle:
+            handle.write(text)
+    else:
+        click.echo(text, nl=False)
+
+
+def stderr_is_terminal() -> bool:
+    return sys.stderr.isatty()
+
+
+def run_guarded(debug: bool, run: Callable[[], ExitCode]) -> None:
+    """Run a command's body and exit with its code: an RbdError is one line and its
+    exit code, anything else a bug (exit code 3, the traceback with --debug)."""
+    sys.exit(int(guard(debug, run)))
+
+
+def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
+    try:
+        return run()
+    except RbdError as exc:
+        click.echo(str(exc), err=True)
+        return exc.exit_code
+    except KeyboardInterrupt:
+        click.echo("rbdsolve: interrupted", err=True)
+        return ExitCode.INTERNAL
+    except Exception as exc:  # noqa: BLE001 - the one place that reports a bug
+        if debug:
+            traceback.print_exc()
+        click.echo(internal_message(exc), err=True)
+        return ExitCode.INTERNAL
+
+
+def internal_message(exc: BaseException) -> str:
+    return (f"rbdsolve: internal error: {type(exc).__name__}: {exc} "
+            "(run with --debug for the traceback)")
+
+
+debug_option = click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")

@@ -1,0 +1,127 @@
+"""Solving many problem files: in file order, or in parallel processes (``--jobs``),
+with a progress bar on a terminal. Each file gives an :class:`Outcome`; one file's
+failure (bad input, an unanswered question, a bug) never loses the others, and the
+exit code is the worst of the files."""
+
+from __future__ import annotations
+
+import time
+import traceback
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Callable, Iterable
+
+from rbdsolve.cli.app import Source, check_sets, internal_message
+from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError
+
+PROGRESS_FROM = 4  # files: fewer than a handful finish before a bar is worth drawing
+
+
+@dataclass(frozen=True)
+class Settings:
+    """How every file is solved: the command's options, as plain values."""
+
+    values: tuple[tuple[str, Fraction], ...] = ()
+    budget: float = 60.0
+    route: str = "auto"
+    debug: bool = False
+
+
+@dataclass(frozen=True)
+class Failure:
+    """Why a file gave no report, as the JSON and the terminal say it (an exception
+    does not cross a process boundary with its location)."""
+
+    message: str
+    location: Location | None
+    exit_code: ExitCode
+    line: str  # the one line for standard error
+
+
+@dataclass(frozen=True)
+class Outcome:
+    source: str
+    report: object | None  # ProblemReport, or None with a failure
+    failure: Failure | None
+    seconds: float
+
+    @property
+    def code(self) -> ExitCode:
+        if self.failure is not None:
+            return self.failure.exit_code
+        return ExitCode.OK if self.report.solved else ExitCode.UNSOLVED
+
+
+def solve_source(source: Source, settings: Settings) -> Outcome:
+    """Load, build and solve one problem; every failure becomes an Outcome."""
+    from rbdsolve.solvers import Options, RouteChoice, solve_file
+
+    start = time.perf_counter()
+    values = dict(settings.values)
+    try:
+        problem = source.load()
+        check_sets(values, problem)
+        options = Options(values=values, budget=settings.budget, route=RouteChoice(settings.route))
+        report = solve_file(problem, options)
+    except (InputError, UnsolvedError) as exc:
+        failure = Failure(exc.message, exc.location, exc.exit_code, str(exc))
+        return Outcome(source.name, None, failure, time.perf_counter() - start)
+    except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others
+        if settings.debug:
+            traceback.print_exc()
+        failure = Failure(str(exc), None, ExitCode.INTERNAL, f"{source.name}: {internal_message(exc)}")
+        return Outcome(source.name, None, failure, time.perf_counter() - start)
+    return Outcome(source.name, report, None, time.perf_counter() - start)
+
+
+def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
+              progress: bool = False) -> list[Outcome]:
+    """Every source's Outcome, in the sources' order, ``jobs`` at a time."""
+    with _bar(len(items), progress) as advance:
+        if jobs <= 1 or len(items) <= 1:
+            return [_advanced(solve_source(s, settings), advance) for s in items]
+        return _in_parallel(items, settings, min(jobs, len(items)), advance)
+
+
+def _in_parallel(items: list[Source], settings: Settings, jobs: int,
+                 advance: Callable[[Outcome], None]) -> list[Outcome]:
+    outcomes: list[Outcome | None] = [None] * len(items)
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(solve_source, s, settings): i for i, s in enumerate(items)}
+        for future in as_completed(futures):
+            outcomes[futures[future]] = _advanced(future.result(), advance)
+    return outcomes
+
+
+def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:
+    advance(outcome)
+    return outcome
+
+
+class _bar:
+    """A rich progress bar on standard error while files are solved, or nothing."""
+
+    def __init__(self, total: int, shown: bool):
+        self.total, self.shown, self.progress = total, shown and total >= PROGRESS_FROM, None
+
+    def __enter__(self) -> Callable[[Outcome], None]:
+        if not self.shown:
+            return lambda outcome: None
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+        self.progress = Progress(TextColumn("solving"), BarColumn(), MofNCompleteColumn(),
+                                 TimeElapsedColumn(), TextColumn("{task.description}"),
+                                 console=Console(stderr=True), transient=True)
+        self.progress.start()
+        task = self.progress.add_task("", total=self.total)
+        return lambda outcome: self.progress.update(task, advance=1, description=outcome.source)
+
+    def __exit__(self, *exc) -> None:
+        if self.progress is not None:
+            self.progress.stop()
+
+
+def worst(outcomes: Iterable[Outcome]) -> ExitCode:
+    return max((o.code for o in outcomes), default=ExitCode.OK)

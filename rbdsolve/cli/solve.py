@@ -1,0 +1,158 @@
+"""``rbdsolve solve``: problem files, folders, globs or ``-`` in, step-by-step solutions
+out, in the chosen format; a summary table on standard error for more than one file."""
+
+from __future__ import annotations
+
+import click
+
+from rbdsolve.cli.app import debug_option, main, open_output, parse_sets, run_guarded, sources, \
+    stderr_is_terminal, write_text
+from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
+from rbdsolve.errors import ExitCode
+
+FORMATS = ("terminal", "markdown", "latex", "json")
+ROUTES = ("auto", "exact", "numeric")  # spelled out here: importing the solvers would load sympy
+DEFAULT_BUDGET = 60.0  # seconds per question: an exam question that takes longer is stuck
+
+SOLVE_EXAMPLES = """
+\b
+Examples:
+  rbdsolve solve problems/sg2150-2015-10-29/p1-two-rods.yaml
+  rbdsolve solve problems/sg2150-2015-10-29/          # a whole exam, in file order
+  rbdsolve solve 'problems/**/*.yaml' --jobs 2        # a glob, two processes
+  rbdsolve solve p1.yaml --format json | jq .results  # JSON Lines for scripts
+  cat p1.yaml | rbdsolve solve -                      # a problem on standard input
+  rbdsolve solve p1.yaml --set m=2 --set r=0.5 --set g=9.81
+  rbdsolve solve p1.yaml --route numeric --set m=1 --set r=1 --set g=9.81
+  rbdsolve solve p1.yaml --format latex -o p1.tex
+
+\b
+Exit codes (the worst of the files): 0 solved, 1 a question could not be
+answered, 2 bad input or usage, 3 internal error.
+"""
+
+route_option = click.option(
+    "--route", type=click.Choice(ROUTES), default="auto", show_default=True,
+    help="exact (sympy), numeric (floating point; every parameter needs a value) or auto "
+         "(exact, then numeric where exact cannot answer or runs out of its budget).")
+budget_option = click.option(
+    "--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+    show_default=True, metavar="SECONDS",
+    help="Time budget for building each file's model and for each route of each question; "
+         "a question past it is left unanswered (exit code 1), or, with --route auto and "
+         "every value given, answered by the numeric route, which gets the same budget "
+         "again (so a question may take twice the budget; a model whose T and V run out "
+         "shows the coordinates only).")
+sets_option = click.option(
+    "--set", "sets", multiple=True, metavar="NAME=VALUE",
+    help="Give a parameter a numeric value (repeatable); overrides the file's values.")
+jobs_option = click.option(
+    "-j", "--jobs", type=click.IntRange(min=1), default=1, show_default=True,
+    help="Solve this many files at once, in separate processes.")
+quiet_option = click.option(
+    "-q", "--quiet", is_flag=True,
+    help="No progress bar and no summary table; errors are still said on standard error.")
+
+
+@main.command()
+@click.argument("paths", nargs=-1, required=True, type=click.Path(allow_dash=True))
+@click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="terminal",
+              show_default=True, help="Output format.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+              help="Write to this file instead of standard output.")
+@sets_option
+@route_option
+@budget_option
+@jobs_option
+@quiet_option
+@debug_option
+def solve(paths, fmt, output, sets, route, budget, jobs, quiet, debug):
+    """Solve problem files and print their step-by-step solutions.
+
+    PATHS are problem files, folders (their *.yaml files, in path order), quoted
+    globs, or - for standard input. Progress and the summary table go to standard
+    error, so standard output holds only the solutions (JSON Lines with --format json).
+    """
+    run_guarded(debug, lambda: _solve(paths, fmt, output, Settings(tuple(parse_sets(sets).items()),
+                                                                   budget, route, debug), jobs, quiet))
+
+
+solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
+
+
+def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 1,
+           quiet: bool = False) -> ExitCode:
+    items = sources(paths)
+    outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    for outcome in outcomes:
+        if outcome.failure is not None:
+            click.echo(outcome.failure.line, err=True)
+    _write(fmt, outcomes, output)
+    if len(outcomes) > 1 and not quiet:
+        print_summary(outcomes)
+    return worst(outcomes)
+
+
+def _write(fmt: str, outcomes: list[Outcome], output: str | None) -> None:
+    reports = [o.report for o in outcomes if o.report is not None]
+    if fmt == "json":
+        from rbdsolve.render.json import render_error, render_report
+
+        write_text("".join(render_report(o.report) if o.report is not None else render_error(o.source, o.failure)
+                           for o in outcomes), output)
+    elif fmt == "markdown":
+        from rbdsolve.render.markdown import render
+
+        write_text("\n".join(render(r) for r in reports), output)
+    elif fmt == "latex":
+        if reports:
+            from rbdsolve.render.latex import render_document
+
+            write_text(render_document(reports), output)
+    else:
+        _write_terminal(reports, output)
+
+
+def _write_terminal(reports, output: str | None) -> None:
+    from rich.console import Console
+
+    from rbdsolve.render.terminal import render
+
+    if output:
+        with open_output(output) as handle:
+            console = Console(file=handle, color_system=None, width=100, highlight=False)
+            for report in reports:
+                console.print(render(report))
+        return
+    console = Console(highlight=False)
+    for report in reports:
+        console.print(render(report))
+
+
+def print_summary(outcomes: list[Outcome]) -> None:
+    """One row per file on standard error: questions answered, routes, seconds, result."""
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title="Summary", title_justify="left")
+    for name, justify in (("file", "left"), ("answered", "right"), ("route", "left"),
+                          ("seconds", "right"), ("result", "left")):
+        table.add_column(name, justify=justify)
+    for o in outcomes:
+        table.add_row(o.source, *_row(o))
+    Console(stderr=True, highlight=False).print(table)
+
+
+def _row(outcome: Outcome) -> tuple[str, str, str, str]:
+    seconds = f"{outcome.seconds:.2f}"
+    if outcome.report is None:
+        return "-", "-", seconds, f"[red]{_RESULT[outcome.code]}[/red]"
+    solutions = outcome.report.solutions
+    answered = sum(s.solved for s in solutions)
+    routes = ", ".join(sorted({s.route.value for s in solutions})) or "-"
+    style = "green" if outcome.code is ExitCode.OK else "yellow"
+    return f"{answered}/{len(solutions)}", routes, seconds, f"[{style}]{_RESULT[outcome.code]}[/{style}]"
+
+
+_RESULT = {ExitCode.OK: "solved", ExitCode.UNSOLVED: "unanswered question",
+           ExitCode.BAD_INPUT: "bad input", ExitCode.INTERNAL: "internal error"}
