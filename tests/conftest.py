@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 
 import pytest
@@ -9,6 +11,16 @@ import sympy as sp
 
 ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = ROOT / "problems"
+SEED = PROBLEMS / "sg2150-2015-10-29"
+
+
+def needs_tex() -> None:
+    """Skip without a TeX engine, except in CI, which installs TeX Live (.ci/run): there
+    a missing pdflatex is a failure, so the key's LaTeX is compiled on every change."""
+    if shutil.which("pdflatex") is None:
+        if os.environ.get("CI"):
+            pytest.fail("CI installs TeX Live (.ci/run), but pdflatex is not on PATH")
+        pytest.skip("no TeX engine installed")
 
 
 def read_back(text: str, names: dict[str, sp.Symbol] | None = None) -> sp.Expr:

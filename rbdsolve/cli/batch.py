@@ -5,6 +5,7 @@ exit code is the worst of the files."""
 
 from __future__ import annotations
 
+import pickle
 import time
 import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -88,10 +89,38 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
     outcomes: list[Outcome | None] = [None] * len(items)
     with ProcessPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(solve_source, s, settings): i for i, s in enumerate(items)}
+        futures = {pool.submit(_solve_pickled, s, settings): i for i, s in enumerate(items)}
         for future in as_completed(futures):
-            outcomes[futures[future]] = _advanced(future.result(), advance)
+            outcomes[futures[future]] = _advanced(pickle.loads(future.result()), advance)
     return outcomes
+
+
+def _solve_pickled(source: Source, settings: Settings) -> bytes:
+    """The Outcome pickled so that sums, products and powers come back as they were:
+    sympy rebuilds an expression from its arguments and, by default, evaluates them
+    again, which would fold a display form the solver kept on purpose (√(24g/(25r))
+    into 2√6 √g/(5√r)). Those three are rebuilt unevaluated; their arguments are
+    already in canonical order, so nothing else changes."""
+    import copyreg
+    import io
+
+    import sympy as sp
+
+    buffer = io.BytesIO()
+    pickler = pickle.Pickler(buffer)
+    pickler.dispatch_table = copyreg.dispatch_table.copy()
+    for kind in (sp.Add, sp.Mul, sp.Pow):
+        pickler.dispatch_table[kind] = _reduce_unevaluated
+    pickler.dump(solve_source(source, settings))
+    return buffer.getvalue()
+
+
+def _reduce_unevaluated(expr):
+    return _unevaluated, (type(expr), expr.args)
+
+
+def _unevaluated(kind, args):
+    return kind(*args, evaluate=False)
 
 
 def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:

@@ -8,12 +8,15 @@ import unicodedata
 from rbdsolve.render.markdown import relation_latex
 from rbdsolve.render.mathtext import GREEK
 from rbdsolve.render.numbers import numeric_lines
+from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
 
 PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage[utf8]{inputenc}
 \usepackage[T1]{fontenc}
+\IfFileExists{lmodern.sty}{\usepackage{lmodern}}{}
 \usepackage{amsmath,amssymb}
+\usepackage{graphicx}
 \usepackage[margin=2.5cm]{geometry}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
@@ -72,12 +75,13 @@ def _step(step: Step) -> list[str]:
     return out + [""]
 
 
-def body(report: ProblemReport) -> list[str]:
+def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]:
     lines = [f"\\section*{{{text(report.title)}}}"]
     if report.source:
         lines.append(f"\\emph{{{text(report.source)}}}\\par")
     if report.statement:
         lines += [text(report.statement), ""]
+    lines += [line for picture in pictures for line in _picture(picture)]
     if report.values:
         lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()) + ".")
     if report.model.steps:
@@ -97,6 +101,27 @@ def body(report: ProblemReport) -> list[str]:
             lines += [f"\\item \\texttt{{{text(line)}}}" for line in numbers]
             lines.append("\\end{itemize}")
     return lines
+
+
+def _picture(picture: Picture) -> list[str]:
+    """A figure where it is named, not floated away from its problem."""
+    path = picture.path.as_posix()
+    return ["\\begin{center}", f"\\includegraphics[width=0.85\\linewidth,height=0.3\\textheight,"
+            f"keepaspectratio]{{{path}}}\\\\", f"\\small {text(picture.caption)}", "\\end{center}", ""]
+
+
+def render_key(key: AnswerKey) -> str:
+    """The answer key as one LaTeX document: a title, then each problem on its own page."""
+    lines = [PREAMBLE, f"\\title{{{text(key.title)}}}", "\\date{}", "\\begin{document}", "\\maketitle"]
+    for number, entry in enumerate(key.entries):
+        if number:
+            lines.append("\\clearpage")
+        if entry.report is None:
+            lines += [f"\\section*{{{text(entry.source)}}}", f"\\textbf{{Not solved:}} {text(entry.failure or '')}\\par"]
+        else:
+            lines += body(entry.report, entry.pictures)
+    lines.append("\\end{document}")
+    return "\n".join(lines) + "\n"
 
 
 def render_document(reports: list[ProblemReport]) -> str:

@@ -292,3 +292,10 @@ def to_latex(value: Math) -> str:
         rows = " \\\\ ".join(" & ".join(_TEX.doprint(x) for x in row) for row in value.tolist())
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
     return _TEX.doprint(value)
+
+
+def relation_text(rel) -> str:
+    """A Relation (report.steps) in readable unicode: ⇒ T = T₁ + T₂ = …"""
+    parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]
+    parts += [f"= {to_unicode(m)}" for m in rel.more]
+    return " ".join(p for p in parts if p)

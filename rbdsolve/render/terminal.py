@@ -8,9 +8,9 @@ from rich.padding import Padding
 from rich.rule import Rule
 from rich.text import Text
 
-from rbdsolve.render.mathtext import to_unicode
+from rbdsolve.render.mathtext import relation_text
 from rbdsolve.render.numbers import numeric_lines, route_text
-from rbdsolve.report.steps import ProblemReport, Relation, Solution, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
 
 _STYLE = {
     StepKind.GIVEN: "",
@@ -20,12 +20,6 @@ _STYLE = {
     StepKind.RESULT: "bold green",
     StepKind.NOTE: "italic",
 }
-
-
-def relation_text(rel: Relation) -> str:
-    parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]
-    parts += [f"= {to_unicode(m)}" for m in rel.more]
-    return " ".join(p for p in parts if p)
 
 
 def step_lines(step: Step) -> list[Text]:

@@ -3,12 +3,9 @@ installed, the whole corpus compiles."""
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 
-import pytest
-
-from conftest import PROBLEMS
+from conftest import PROBLEMS, needs_tex
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.latex import render_document, text
@@ -25,8 +22,8 @@ def test_prose_becomes_latex_text() -> None:
     assert text("☃") == "[U+2603]"
 
 
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="no TeX engine installed")
 def test_the_corpus_compiles(tmp_path) -> None:
+    needs_tex()
     files = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
     reports = [solve_problem(build_model(load_file(p))) for p in files]
     source = tmp_path / "all.tex"

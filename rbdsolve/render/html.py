@@ -1,0 +1,103 @@
+"""An answer key as one self-contained HTML file: no scripts, no fonts or styles from
+the network. Math is the terminal's readable unicode (θ̇², m r² [7/8 …]) in a serif
+face; pictures are embedded as data URIs."""
+
+from __future__ import annotations
+
+import base64
+import html
+from pathlib import Path
+
+from rbdsolve.render.mathtext import relation_text
+from rbdsolve.render.numbers import numeric_lines, route_text
+from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
+from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
+
+STYLE = """
+body { font-family: Georgia, 'DejaVu Serif', serif; max-width: 52em; margin: 2em auto;
+       padding: 0 1em; line-height: 1.45; color: #222; }
+h1 { border-bottom: 2px solid #444; padding-bottom: .2em; }
+h2 { margin-top: 2.5em; border-bottom: 1px solid #bbb; }
+.source { color: #666; font-style: italic; }
+.statement { background: #f6f6f0; border-left: 4px solid #c8c2a0; padding: .6em 1em; }
+.math { font-family: 'STIX Two Math', 'Cambria Math', 'DejaVu Serif', serif;
+        margin: .3em 0 .3em 2em; white-space: pre-wrap; }
+.result { border: 1.5px solid #2a6f2a; padding: .2em .6em; display: inline-block;
+          margin-left: 2em; }
+.note { font-style: italic; color: #444; }
+.route { color: #777; font-size: .9em; }
+.warning { color: #8a5a00; }
+.error { color: #a00000; }
+figure { text-align: center; margin: 1em 0; }
+figure img { max-width: 100%; max-height: 28em; }
+figcaption { font-size: .9em; color: #555; }
+"""
+
+
+def render_key(key: AnswerKey, folder: Path) -> str:
+    """The whole key; picture paths are read relative to ``folder`` and embedded."""
+    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+             f"<title>{_e(key.title)}</title>", f"<style>{STYLE}</style></head><body>",
+             f"<h1>{_e(key.title)}</h1>"]
+    for entry in key.entries:
+        parts += _entry(entry, folder)
+    parts.append("</body></html>")
+    return "\n".join(parts) + "\n"
+
+
+def _entry(entry: KeyEntry, folder: Path) -> list[str]:
+    if entry.report is None:
+        return [f"<h2>{_e(entry.source)}</h2>", f'<p class="error">Not solved: {_e(entry.failure or "")}</p>']
+    return _report(entry.report, tuple(_figure(p, folder) for p in entry.pictures))
+
+
+def _report(report: ProblemReport, figures: tuple[str, ...]) -> list[str]:
+    out = [f"<section><h2>{_e(report.title)}</h2>"]
+    if report.source:
+        out.append(f'<p class="source">{_e(report.source)}</p>')
+    if report.statement:
+        out.append(f'<p class="statement">{_e(report.statement)}</p>')
+    out += figures
+    if report.values:
+        out.append("<p>Parameter values: " + ", ".join(f"{_e(k)} = {v:g}" for k, v in report.values.items()) + "</p>")
+    if report.model.steps:
+        out.append("<h3>Model</h3>")
+        out += [line for step in report.model.steps for line in _step(step)]
+    for number, solution in enumerate(report.solutions, start=1):
+        out += _solution(number, solution)
+    return out + ["</section>"]
+
+
+def _solution(number: int, s: Solution) -> list[str]:
+    out = [f'<h3>Question {number}: {_e(s.question)} <span class="route">({_e(route_text(s))})</span></h3>']
+    out += [line for step in s.steps for line in _step(step)]
+    out += [f'<p class="warning"><b>Warning:</b> {_e(w)}</p>' for w in s.warnings]
+    if s.error:
+        out.append(f'<p class="error"><b>Could not answer:</b> {_e(s.error)}</p>')
+    numbers = numeric_lines(s.values)
+    if numbers:
+        out += ["<p>Numeric values:</p><ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in numbers] + ["</ul>"]
+    return out
+
+
+def _step(step: Step) -> list[str]:
+    out = []
+    if step.text:
+        out.append(f'<p class="note">{_e(step.text)}</p>' if step.kind is StepKind.NOTE else f"<p>{_e(step.text)}</p>")
+    for rel in step.math:
+        math = _e(relation_text(rel))
+        out.append(f'<div class="math"><span class="result">{math}</span></div>' if step.kind is StepKind.RESULT
+                   else f'<div class="math">{math}</div>')
+    return out
+
+
+def _figure(picture: Picture, folder: Path) -> str:
+    path = folder / picture.path
+    kind = "svg+xml" if path.suffix == ".svg" else "png"
+    data = base64.b64encode(path.read_bytes()).decode("ascii")
+    return (f'<figure><img src="data:image/{kind};base64,{data}" alt="{_e(picture.caption)}">'
+            f"<figcaption>{_e(picture.caption)}</figcaption></figure>")
+
+
+def _e(value: str) -> str:
+    return html.escape(value, quote=True)
