@@ -31,6 +31,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.inertia import OWN_AXIS, rotation_to
 from rbdsolve.model.state import t
+from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Part, QuestionKind, Shape
 
 Vec2 = tuple[float, float]
@@ -85,6 +86,16 @@ class PointLabel:
 
 
 @dataclass(frozen=True)
+class Link:
+    """A thin line from the point a position is measured from to the point or body
+    placed from it (``P1: O + l1*[...]``): the massless links and construction lines
+    the scene's positions describe, which no body draws."""
+
+    start: Vec2
+    end: Vec2
+
+
+@dataclass(frozen=True)
 class Zigzag:
     name: str
     vertices: tuple[Vec2, ...]
@@ -105,6 +116,7 @@ class Sketch:
     anchors: tuple[Vec2, ...] = ()  # points that move with the bodies: how far a mode moves the scene
     notes: tuple[str, ...] = ()
     bodies: tuple[str, ...] = field(default=())  # names, in the scene's order
+    links: tuple[Link, ...] = ()
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x_min, y_min, x_max, y_max) of everything drawn."""
@@ -196,7 +208,8 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
     gravity = _unit(values.vector(model.gravity)) if model.gravity is not None else None
     return Sketch(tuple(shapes), points, tuple(_springs(model, values)), gravity,
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
-                  ones_note(unvalued(model)), tuple(b.name for b in model.bodies))
+                  ones_note(unvalued(model)), tuple(b.name for b in model.bodies),
+                  tuple(_links(model, {p.name: p.at for p in points})))
 
 
 class _Values:
@@ -335,6 +348,22 @@ def convex_hull(points: list[Vec2]) -> tuple[Vec2, ...]:
 
 def _cross(o: Vec2, a: Vec2, b: Vec2) -> float:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def _links(model: Model, at: Mapping[str, Vec2]) -> Iterator[Link]:
+    """A link from the point each point's position starts from (the first term of a sum
+    ``O + …``) to that point."""
+    for point in model.problem.points:
+        base = _base_point(point.position.tree) if point.position is not None else None
+        if base in at and point.name in at and math.dist(at[base], at[point.name]) > 0:
+            yield Link(at[base], at[point.name])
+
+
+def _base_point(tree) -> str | None:
+    """'O' for O + l*[…] or O - …; None when the position does not start at a point."""
+    while isinstance(tree, ex.BinOp) and tree.op in ("+", "-"):
+        tree = tree.left
+    return tree.id if isinstance(tree, ex.Name) else None
 
 
 def _springs(model: Model, values: _Values) -> Iterator[Zigzag]:
