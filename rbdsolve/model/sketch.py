@@ -156,23 +156,33 @@ def ones_note(names: Iterable[str]) -> tuple[str, ...]:
     return (f"{' = '.join(names)} = 1: no value{'s' if len(names) > 1 else ''} given",)
 
 
+def _time_note(model: Model) -> tuple[str, ...]:
+    """Say that a scene moving by itself is drawn at t = 0, unknown functions of t as 0."""
+    unknown = [n for n, f in model.symbols.prescribed.items() if isinstance(f, AppliedUndef)]
+    notes = ["at t = 0"] if model.depends_on_time() or model.symbols.prescribed else []
+    if unknown:
+        notes.append(f"{', '.join(unknown)} = 0 (an unknown function of t)")
+    return tuple(notes)
+
+
 def require_planar(model: Model) -> None:
-    """Refuse, saying why, a scene that has no planar picture."""
+    """Refuse, saying why and where, a scene that has no planar picture."""
     for body in model.bodies:
         if body.position is None:
             raise NotDrawable(f"the scene cannot be drawn: body '{body.name}' is given by its velocity at one "
-                              "instant, not by its position")
+                              "instant, not by its position", body.source.loc)
         if body.turns_3d:
             raise NotDrawable(f"the scene cannot be drawn: body '{body.name}' turns in 3D (an orientation by "
-                              "turns); only planar scenes are drawn")
+                              "turns); only planar scenes are drawn", body.source.loc)
     names = model.symbols
-    placed = [(f"point '{n}'", p) for n, p in model.points.items()]
-    placed += [(f"body '{b.name}'", names.vector(b.source.at)) for b in model.bodies]
-    placed += [("gravity", model.gravity)] if model.gravity is not None else []
-    for what, vector in placed:
+    placed = [(f"point '{n}'", p, None) for n, p in model.points.items()]
+    placed += [(f"body '{b.name}'", names.vector(b.source.at), b.source.loc) for b in model.bodies]
+    placed += [("gravity", model.gravity, model.problem.gravity.loc)] if model.gravity is not None else []
+    for what, vector, loc in placed:
         if vector[2] != 0 and sp.simplify(vector[2]) != 0:
-            raise NotDrawable(f"the scene cannot be drawn: {what} leaves the xy-plane (z = "
-                              f"{sp.sstr(model.readable(vector[2]))}); only planar scenes are drawn")
+            where = "" if loc is not None else f"{model.problem.file}: "
+            raise NotDrawable(f"{where}the scene cannot be drawn: {what} leaves the xy-plane (z = "
+                              f"{sp.sstr(model.readable(vector[2]))}); only planar scenes are drawn", loc)
 
 
 def default_configuration(model: Model) -> dict[str, float]:
@@ -186,10 +196,15 @@ def default_configuration(model: Model) -> dict[str, float]:
             given = question.options.at
         else:
             continue
-        values = _Values(model, {})
-        out.update({name: values.scalar(model.symbols.scalar(e)) for name, e in given})
+        out.update({name: number(model, model.symbols.scalar(e)) for name, e in given})
         return out
     return out
+
+
+def number(model: Model, expr) -> float:
+    """A constant of the scene (an ``about`` or ``--at`` value) as the picture takes it:
+    parameters at their values or 1; NotDrawable if it is not a real number."""
+    return _Values(model, {}).scalar(expr)
 
 
 def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
@@ -208,7 +223,7 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
     gravity = _unit(values.vector(model.gravity)) if model.gravity is not None else None
     return Sketch(tuple(shapes), points, tuple(_springs(model, values)), gravity,
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
-                  ones_note(unvalued(model)), tuple(b.name for b in model.bodies),
+                  ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
                   tuple(_links(model, {p.name: p.at for p in points})))
 
 

@@ -10,6 +10,7 @@ question, each with its caption; nothing for a scene that cannot be drawn.
 from __future__ import annotations
 
 import math
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Mapping
@@ -25,6 +26,7 @@ COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e
 MARGIN = 0.18  # of the scene's size, around it
 ARROW = 0.16  # the gravity arrow's length, of the scene's size
 PANELS_PER_ROW = 3
+ASPECTS = (0.5, 1.4)  # the range of a panel's height/width
 PANEL = 4.2  # inches: the width of one scene panel
 DPI = 150
 
@@ -71,7 +73,7 @@ def save_scene(model: Model, path: Path, at: Mapping[str, float] | None = None) 
     view.apply(ax)
     _legend(ax, drawing)
     ax.set_title(configuration_text(drawing), fontsize=10)
-    fig.suptitle(model.problem.title, fontsize=12)
+    _suptitle(fig, model.problem.title)
     _notes(fig, drawing.notes)
     save(fig, path)
     return Figure(Path(path), _caption(model, f"the scene to scale at {configuration_text(drawing)}",
@@ -96,7 +98,7 @@ def save_modes(model: Model, question: Question, path: Path) -> Figure:
         view.apply(ax)
         ax.set_title(f"{mode.title()}\n{mode.shape_text()}, a = {mode.amplitude:.2g}", fontsize=10)
     about = configuration_text(shapes.equilibrium)
-    fig.suptitle(f"{model.problem.title}: mode shapes about {about}", fontsize=12)
+    _suptitle(fig, f"{model.problem.title}: mode shapes about {about}")
     _notes(fig, shapes.notes)
     save(fig, path)
     text = f"the mode shapes about {about}, each drawn at q₀ + a·u (the equilibrium faint)"
@@ -239,7 +241,8 @@ class View:
         arrow_at = (x1 + pad, (y0 + y1) / 2)
         if gravity is not None:
             x1 = arrow_at[0] + abs(gravity[0]) * length / 2 + 0.35 * length  # the arrow and its label
-        return View(x0 - pad, y0 - pad, x1 + pad, y1 + pad, gravity, arrow_at, length)
+        x0, y0, x1, y1 = _within_aspect(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+        return View(x0, y0, x1, y1, gravity, arrow_at, length)
 
     def figure_size(self, rows: int, cols: int) -> tuple[float, float]:
         """Inches: panels about PANEL wide, as tall as the scene's shape asks (within
@@ -257,6 +260,20 @@ class View:
             side.set_color("0.8")
         if self.gravity is not None:
             _gravity_arrow(ax, self.gravity, *self.arrow_at, self.arrow_length)
+
+
+def _within_aspect(x0: float, y0: float, x1: float, y1: float) -> tuple[float, float, float, float]:
+    """Widen the shorter side, about its middle, so height/width stays within ASPECTS: a
+    hanging pendulum gets a panel of a readable shape, not a sliver."""
+    low, high = ASPECTS
+    width, height = x1 - x0, y1 - y0
+    if height > high * width:
+        grow = (height / high - width) / 2
+        return x0 - grow, y0, x1 + grow, y1
+    if height < low * width:
+        grow = (low * width - height) / 2
+        return x0, y0 - grow, x1, y1 + grow
+    return x0, y0, x1, y1
 
 
 def _gravity_arrow(ax, g: tuple[float, float], x: float, y: float, length: float) -> None:
@@ -280,6 +297,11 @@ def _legend(ax, drawing: Sketch) -> None:
                       **({"marker": "o", "ls": "none", "ms": 9} if b in dots else {"lw": 5}))
                for b in drawing.bodies]
     ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85)
+
+
+def _suptitle(fig, text: str) -> None:
+    """Wrapped to the figure's width: a one-panel figure is narrower than a long title."""
+    fig.suptitle(textwrap.fill(text, int(fig.get_figwidth() * 8)), fontsize=12)
 
 
 def _notes(fig, notes: tuple[str, ...]) -> None:
