@@ -129,6 +129,7 @@ class Sketch:
         return max(x1 - x0, y1 - y0) or 1.0
 
     def _extent(self) -> Iterator[Vec2]:
+        yield (0.0, 0.0)  # the scene's origin: the positions are measured from it
         yield from (p.at for p in self.points)
         for s in self.shapes:
             if isinstance(s, Segment):

@@ -76,7 +76,8 @@ def save_scene(model: Model, path: Path, at: Mapping[str, float] | None = None) 
     _suptitle(fig, model.problem.title)
     _notes(fig, drawing.notes)
     save(fig, path)
-    return Figure(Path(path), _caption(model, f"the scene to scale at {configuration_text(drawing)}",
+    at_text = configuration_text(drawing)
+    return Figure(Path(path), _caption(model, "the scene to scale" + (f" at {at_text}" if at_text else ""),
                                        drawing.notes))
 
 
@@ -122,7 +123,7 @@ def save(fig, path: Path) -> None:
 
 def configuration_text(drawing: Sketch) -> str:
     """θ = 0, φ = 0.3: the coordinates as a caption says them."""
-    return ", ".join(f"{unicode_name(n)} = {_number(v)}" for n, v in drawing.configuration) or "rest"
+    return ", ".join(f"{unicode_name(n)} = {_number(v)}" for n, v in drawing.configuration)
 
 
 def _number(x: float) -> str:
@@ -160,6 +161,7 @@ def draw_sketch(ax, drawing: Sketch, labels: bool, faint: bool = False) -> None:
         ax.plot(xs, ys, color="0.35", lw=1.2, alpha=alpha, zorder=2)
     if labels:
         _points(ax, drawing)
+        ax.plot(0, 0, "+", color="0.55", ms=9, mew=1, zorder=1)  # the scene's origin
 
 
 def _draw_shape(ax, shape, colour: str, alpha: float) -> None:
