@@ -1,0 +1,92 @@
+"""``rbdsolve draw``: a planar scene to scale at a configuration, and its mode shapes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from rbdsolve.cli.app import Source, check_sets, debug_option, main, parse_sets, run_guarded
+from rbdsolve.errors import ExitCode, InputError, Location, did_you_mean
+
+DRAW_EXAMPLES = """
+\b
+Examples:
+  rbdsolve draw problems/sg2150-2015-10-29/p1-two-rods.yaml -o p1.png
+  rbdsolve draw p1.yaml -o p1.svg --at theta=0.3 --at phi=-pi/6
+  rbdsolve draw p1.yaml -o p1.png --set r=2 --no-modes
+
+\b
+With a modes question, the mode shapes go next to the scene (p1-modes.png);
+the paths written are printed, one per line. Exit codes: 0 drawn, 1 the mode
+shapes could not be computed, 2 bad input (also: a scene that is not planar).
+"""
+
+
+@main.command()
+@click.argument("path", type=click.Path(dir_okay=False))
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+              help="The picture to write: a .png or .svg file.")
+@click.option("--at", "at", multiple=True, metavar="COORDINATE=VALUE",
+              help="Draw at this value of a coordinate (repeatable; a number or an expression "
+                   "in the parameters, such as pi/6). Default: the modes question's equilibrium "
+                   "or the impact's configuration, else 0.")
+@click.option("--set", "sets", multiple=True, metavar="NAME=VALUE",
+              help="Give a parameter a numeric value (repeatable); overrides the file's values. "
+                   "A parameter without a value is drawn as 1.")
+@click.option("--modes/--no-modes", default=True, show_default=True,
+              help="With a modes question, also draw its mode shapes (OUTPUT's name + '-modes').")
+@debug_option
+def draw(path, output, at, sets, modes, debug):
+    """Draw a planar scene to scale: bodies by shape, points labelled, gravity."""
+    run_guarded(debug, lambda: _draw(path, Path(output), at, sets, modes))
+
+
+draw.help = (draw.help or "").rstrip() + "\n\n" + DRAW_EXAMPLES.lstrip("\n")
+
+
+def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], modes: bool) -> ExitCode:
+    from rbdsolve.errors import RbdError
+    from rbdsolve.model.build import build_model
+    from rbdsolve.render.draw import check_suffix, modes_questions, save_modes, save_scene
+
+    check_suffix(output)
+    problem = Source(path).load()
+    values = parse_sets(sets)
+    check_sets(values, problem)
+    model = build_model(problem)
+    model = model.with_values(values) if values else model
+    click.echo(save_scene(model, output, configuration(model, at)).path)
+    code = ExitCode.OK
+    for n, question in enumerate(modes_questions(model) if modes else [], 1):
+        name = f"{output.stem}-modes{'' if n == 1 else f'-{n}'}{output.suffix}"
+        try:
+            click.echo(save_modes(model, question, output.with_name(name)).path)
+        except RbdError as exc:  # the scene is drawn; say why the modes are not
+            click.echo(f"{question.loc}: no mode shapes: {exc}", err=True)
+            code = max(code, exc.exit_code)
+    return code
+
+
+def configuration(model, items: tuple[str, ...]) -> dict[str, float]:
+    """``--at NAME=VALUE``: a coordinate of the model, a number or an expression in the
+    parameters (read by the problem files' own expression parser, never eval)."""
+    from rbdsolve.model.sketch import NotDrawable, number
+    from rbdsolve.problem import expr as ex
+
+    names = model.coordinate_names()
+    out: dict[str, float] = {}
+    for item in items:
+        name, sep, text = (part.strip() for part in item.partition("="))
+        if not sep or not name.isidentifier():
+            raise InputError(f"--at expects COORDINATE=VALUE, found '{item}'")
+        if name not in names:
+            raise InputError(f"--at {name}: {model.problem.file} has no coordinate '{name}'"
+                             f"{did_you_mean(name, names)} (coordinates: {', '.join(names)})")
+        scope = ex.Scope(frozenset(model.symbols.parameters))
+        tree = ex.parse(text, Location(f"--at {name}", 1, 1), scope, plain=False)
+        try:
+            out[name] = number(model, model.symbols.scalar(tree))
+        except NotDrawable:
+            raise InputError(f"--at {name}: '{text}' is not a real number") from None
+    return out
