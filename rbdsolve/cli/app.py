@@ -5,6 +5,7 @@ an exception into a message and an exit code."""
 from __future__ import annotations
 
 import glob
+import inspect
 import sys
 import traceback
 from dataclasses import dataclass
@@ -164,6 +165,13 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
 def internal_message(exc: BaseException) -> str:
     return (f"rbdsolve: internal error: {type(exc).__name__}: {exc} "
             "(run with --debug for the traceback)")
+
+
+def append_help(command: click.Command, text: str) -> None:
+    """Add a block (examples, a table) after a command's docstring. The docstring is
+    dedented first: click does that only for a docstring it is left alone with, so an
+    appended one would otherwise keep its indentation and be rewrapped around it."""
+    command.help = inspect.cleandoc(command.help or "") + "\n\n" + text.strip("\n") + "\n"
 
 
 debug_option = click.option("--debug", is_flag=True, help="Show the traceback of an internal error.")

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import debug_option, main, open_output, parse_sets, run_guarded, sources, \
-    stderr_is_terminal, write_text
+from rbdsolve.cli.app import append_help, debug_option, main, open_output, parse_sets, run_guarded, \
+    sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
 
@@ -77,7 +77,7 @@ def solve(paths, fmt, output, sets, route, budget, jobs, quiet, debug):
                                                                    budget, route, debug), jobs, quiet))
 
 
-solve.help = (solve.help or "").rstrip() + "\n\n" + SOLVE_EXAMPLES.lstrip("\n")
+append_help(solve, SOLVE_EXAMPLES)
 
 
 def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 1,

@@ -1,0 +1,242 @@
+"""``rbdsolve new KIND`` and its templates: one per question kind, each a working
+problem whose answers agree with a derivation by hand (written out below, never taken
+from rbdsolve's output), plus the command's own behaviour and shell completion."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from functools import cache
+from importlib import resources
+
+import pytest
+import sympy as sp
+from click.testing import CliRunner
+
+from conftest import ROOT, same
+from rbdsolve.cli import main
+from rbdsolve.cli.new import KINDS
+from rbdsolve.problem.schema import QuestionKind
+
+
+def run(*args: str, env: dict[str, str] | None = None):
+    return CliRunner().invoke(main, list(args), prog_name="rbdsolve", env=env)
+
+
+def template_path(kind: str) -> str:
+    return str(resources.files("rbdsolve") / "templates" / f"{kind}.yaml")
+
+
+@cache
+def solved(kind: str) -> dict:
+    """The JSON report of a template, solved once for all the tests that read it."""
+    result = run("solve", template_path(kind), "--format", "json")
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def answers(kind: str) -> dict:
+    (only,) = solved(kind)["results"]
+    return only["answers"]
+
+
+def same_all(got: list, expected: list) -> bool:
+    """Element by element, at any depth of nesting (vectors, matrices)."""
+    if isinstance(expected, list):
+        return len(got) == len(expected) and all(same_all(g, e) for g, e in zip(got, expected))
+    return same(got, expected)
+
+
+# --- the command ---------------------------------------------------------------------
+
+
+def test_there_is_one_template_per_question_kind() -> None:
+    assert list(KINDS) == [k.value for k in QuestionKind]
+    for kind in KINDS:
+        assert resources.files("rbdsolve").joinpath("templates", f"{kind}.yaml").is_file()
+
+
+@pytest.mark.parametrize("kind", list(KINDS))
+def test_template_passes_check_and_solves(kind: str, tmp_path) -> None:
+    path = tmp_path / f"{kind}.yaml"
+    written = run("new", kind, "-o", str(path))
+    assert written.exit_code == 0, written.output
+    checked = run("check", str(path))
+    assert checked.exit_code == 0 and f"ok ({kind})" in checked.output, checked.output
+    report = solved(kind)
+    assert report["ok"] and report["results"][0]["question"] == kind
+    text = path.read_text(encoding="utf-8")
+    assert "title:" in text and "statement:" in text and text.count("\n#") >= 5  # commented
+
+
+@pytest.mark.parametrize("kind", list(KINDS))
+def test_stdout_is_the_text_of_the_file(kind: str, tmp_path) -> None:
+    path = tmp_path / "p.yaml"
+    assert run("new", kind, "-o", str(path)).exit_code == 0
+    printed = run("new", kind)
+    assert printed.exit_code == 0
+    assert printed.stdout == path.read_text(encoding="utf-8")
+
+
+def test_new_refuses_to_overwrite_without_force(tmp_path) -> None:
+    path = tmp_path / "mine.yaml"
+    path.write_text("my own problem\n", encoding="utf-8")
+    refused = run("new", "modes", "-o", str(path))
+    assert refused.exit_code == 2
+    assert f"{path} already exists; use --force to overwrite it" in refused.stderr
+    assert path.read_text(encoding="utf-8") == "my own problem\n"
+    forced = run("new", "modes", "-o", str(path), "--force")
+    assert forced.exit_code == 0
+    assert path.read_text(encoding="utf-8") == run("new", "modes").stdout
+
+
+def test_list_and_help_name_every_kind() -> None:
+    listing = run("new", "--list")
+    assert listing.exit_code == 0
+    assert [line.split()[0] for line in listing.stdout.splitlines()] == list(KINDS)
+    helped = run("new", "--help")
+    assert all(kind in helped.stdout for kind in KINDS)
+    assert "rbdsolve new modes -o my-problem.yaml && rbdsolve solve my-problem.yaml" in helped.stdout
+
+
+def test_a_missing_or_unknown_kind_is_a_usage_error() -> None:
+    assert run("new").exit_code == 2
+    unknown = run("new", "mode")
+    assert unknown.exit_code == 2 and "'mode' is not one of" in unknown.output
+
+
+def test_new_loads_no_sympy() -> None:
+    """A fresh interpreter: the command must stay instant (no algebra, no YAML)."""
+    code = ("import sys; from rbdsolve.cli import main\n"
+            "try: main(['new', 'eom'], standalone_mode=False)\n"
+            "finally: print('sympy' in sys.modules, 'yaml' in sys.modules, file=sys.stderr)")
+    done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True,
+                          text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.strip() == "False False"
+
+
+@pytest.mark.parametrize(("words", "cword", "expected"), [
+    ("rbdsolve ne", "1", "plain,new"),
+    ("rbdsolve new steady_", "2", "plain,steady_spin\nplain,steady_motion"),
+])
+def test_bash_completion(words: str, cword: str, expected: str) -> None:
+    env = {"_RBDSOLVE_COMPLETE": "bash_complete", "COMP_WORDS": words, "COMP_CWORD": cword}
+    assert run(env=env).stdout.strip() == expected
+
+
+@pytest.mark.parametrize("shell", ["bash", "zsh", "fish"])
+def test_completion_scripts(shell: str) -> None:
+    script = run(env={"_RBDSOLVE_COMPLETE": f"{shell}_source"}).stdout
+    assert "_RBDSOLVE_COMPLETE" in script and "rbdsolve" in script
+
+
+# --- the answers, against derivations by hand ----------------------------------------
+
+
+def test_eom_rolling_wheel_with_pendulum() -> None:
+    """C = (x, r), the disk turns at -x'/r: T_disk = M x'^2/2 + (M r^2/2)(x'/r)^2/2 = 3/4 M x'^2.
+    P = C + l (sin θ, -cos θ): v_P = (x' + l cos θ θ', l sin θ θ').
+    V = M g r + m g (r - l cos θ) + k x^2/2. Lagrange:
+      x: d/dt[(3M/2 + m) x' + m l cos θ θ'] + k x
+      θ: d/dt[m l cos θ x' + m l^2 θ'] + m l sin θ x' θ' + m g l sin θ."""
+    xd, xdd = "Derivative(x(t), t)", "Derivative(x(t), (t, 2))"
+    td, tdd = "Derivative(theta(t), t)", "Derivative(theta(t), (t, 2))"
+    model = solved("eom")["model"]
+    assert same(model["T"], f"3*M*{xd}**2/4 + m*({xd}**2 + 2*l*cos(theta(t))*{xd}*{td} + l**2*{td}**2)/2")
+    assert same(model["V"], "M*g*r + m*g*(r - l*cos(theta(t))) + k*x(t)**2/2")
+    assert same_all(answers("eom")["equations"], [
+        f"(3*M/2 + m)*{xdd} + m*l*cos(theta(t))*{tdd} - m*l*sin(theta(t))*{td}**2 + k*x(t)",
+        f"m*l*cos(theta(t))*{xdd} + m*l**2*{tdd} + m*g*l*sin(theta(t))",
+    ])
+
+
+def test_equilibria_sliding_ladder() -> None:
+    """A = (2a sin θ, 0), G = a (sin θ, cos θ): V = m g a cos θ + 2 k a^2 sin^2 θ,
+    V' = a sin θ (4 k a cos θ - m g) = 0: θ = 0, π, ±acos(m g/(4 k a)) (4 k a > m g at the
+    values). V'' = -m g a cos θ + 4 k a^2 cos 2θ: a (4ka - mg) > 0 at 0, a (4ka + mg) > 0 at π,
+    4 k a^2 (c^2 - 1) < 0 at cos θ = c."""
+    theta, m, a, k, g = sp.symbols("theta m a k g", positive=True)
+    hessian = -m * g * a * sp.cos(theta) + 4 * k * a**2 * sp.cos(2 * theta)
+    root = sp.acos(m * g / (4 * k * a))
+    expected = {sp.S(0): "stable", sp.pi: "stable", root: "unstable", -root: "unstable"}
+    found = answers("equilibria")["equilibria"]
+    assert len(found) == len(expected)
+    for equilibrium in found:
+        (at,) = [e for e in expected if same(equilibrium["at"]["theta"], str(e))]
+        assert equilibrium["stability"] == expected[at]
+        assert same(equilibrium["hessian"][0][0], str(hessian.subs(theta, at)))
+
+
+def test_modes_rod_with_bob_on_string() -> None:
+    """About (0, 0): T = (m l^2/3) θ'^2/2 + m (l^2 θ'^2 + 2 l^2 θ' φ' + l^2 φ'^2)/2, so
+    M = m l^2 [[4/3, 1], [1, 1]]; V = -m g l cos θ/2 - m g l (cos θ + cos φ), so
+    K = m g l [[3/2, 0], [0, 1]]. With μ = λ l/g, det = 2μ^2 - 17μ + 9 (times 1/6),
+    μ = (17 ∓ √217)/4, and the first row gives a = (1, (3/2 - 4μ/3)/μ)."""
+    got = answers("modes")
+    assert same_all(got["M"], [["4*m*l**2/3", "m*l**2"], ["m*l**2", "m*l**2"]])
+    assert same_all(got["K"], [["3*m*g*l/2", "0"], ["0", "m*g*l"]])
+    mus = [(17 - sp.sqrt(217)) / 4, (17 + sp.sqrt(217)) / 4]
+    assert same_all(got["eigenvalues"], [f"g/l*({mu})" for mu in mus])
+    assert same_all(got["frequencies"], [f"sqrt(g/l*({mu}))" for mu in mus])
+    assert same_all(got["shapes"], [["1", str((sp.Rational(3, 2) - 4 * mu / 3) / mu)] for mu in mus])
+    lam = [9.81 / 0.5 * float(mu) for mu in mus]  # the template's values: l = 0.5, g = 9.81
+    assert solved("modes")["results"][0]["values"]["eigenvalues"] == pytest.approx(lam, rel=1e-10)
+
+
+def test_inertia_plate_about_its_corner() -> None:
+    """J_G = m diag(a^2, 4a^2, 5a^2)/12; d = (a, a/2, 0), |d|^2 = 5a^2/4, so J_O = m a^2
+    [[1/3, -1/2, 0], [-1/2, 4/3, 0], [0, 0, 5/3]] (J_xy = -∫ x y dm = -m a (a/2)). The xy
+    block has trace 5/3 and determinant 7/36: moments m a^2 (5/6 ∓ √2/2), and 5/3 m a^2 about
+    z; the smallest one's axis has y/x = 2 (1/3 - λ) = √2 - 1, i.e. 22.5° from x."""
+    got = answers("inertia")
+    assert same_all(got["J_G"], [["m*a**2/12", "0", "0"], ["0", "m*a**2/3", "0"], ["0", "0", "5*m*a**2/12"]])
+    assert same_all(got["J"], [["m*a**2/3", "-m*a**2/2", "0"], ["-m*a**2/2", "4*m*a**2/3", "0"],
+                               ["0", "0", "5*m*a**2/3"]])
+    assert same_all(got["principal_moments"],
+                    ["m*a**2*(5/6 - sqrt(2)/2)", "m*a**2*(5/6 + sqrt(2)/2)", "5*m*a**2/3"])
+    assert same_all(got["principal_axes"][0], ["cos(pi/8)", "sin(pi/8)", "0"])
+    assert same_all(got["principal_axes"][2], ["0", "0", "1"])
+
+
+def test_impact_cart_and_rod_struck() -> None:
+    """At θ = 0, v_G = (x' + l θ'/2, 0): T = (M + m) x'^2/2 + m l x' θ'/2 + m l^2 θ'^2/6.
+    The impulse at C gives I_x = P, I_θ = 0: p_θ = m l x'/2 + m l^2 θ'/3 = 0 so θ' = -3x'/(2l),
+    and (M + m) x' - 3m x'/4 = P: x' = 4P/(4M + m), θ' = -6P/(l (4M + m)),
+    v_G = P/(4M + m). From rest T_f = P x'/2 = 2P^2/(4M + m); the rail gives no impulse."""
+    got = answers("impact")
+    assert same(got["velocities"]["x"], "4*P/(4*M + m)")
+    assert same(got["velocities"]["theta"], "-6*P/(l*(4*M + m))")
+    assert same_all(got["points"]["G"], ["P/(4*M + m)", "0", "0"])
+    assert same(got["energy_after"], "2*P**2/(4*M + m)")
+    assert same_all(got["support_impulse"], ["0", "0", "0"])
+
+
+def test_steady_spin_of_a_thrown_phone() -> None:
+    """Plate a × 2a: J = m a^2 (1/3, 1/12, 5/12) about x, y, z (J_z = J_x + J_y). About x
+    (the intermediate moment): unstable, γ = Ω √((1/3-1/12)(5/12-1/3)/((1/12)(5/12))) = Ω √(3/5);
+    about y (smallest): ν = Ω √((1/12-1/3)(1/12-5/12)/((1/3)(5/12))) = Ω √(3/5); about z
+    (largest): ν = Ω √((1/12)(1/3)/((1/3)(1/12))) = Ω."""
+    got = answers("steady_spin")
+    assert same_all(got["moments"], ["m*a**2/3", "m*a**2/12", "5*m*a**2/12"])
+    (case,) = got["cases"]
+    expected = {("Omega", "0", "0"): ("unstable", "sqrt(3/5)*Omega"),
+                ("0", "Omega", "0"): ("stable", "sqrt(3/5)*Omega"),
+                ("0", "0", "Omega"): ("stable", "Omega")}
+    assert len(case["stability"]) == len(expected)
+    for spin in case["stability"]:
+        stability, rate = expected[tuple(spin["spin"])]
+        assert spin["stability"] == stability and same(spin["rate"], rate)
+
+
+def test_steady_motion_conical_pendulum_of_a_rod() -> None:
+    """ω = Ω ẑ, and ẑ = -sin θ e1 - cos θ e3 in the triad (e3 along the rod). J_O is m l^2/3
+    across the rod, 0 along it: L_O = -m l^2 Ω sin θ/3 e1; dL/dt = Ω ẑ × L = m l^2 Ω^2 sin θ
+    cos θ/3 e2; gravity's moment (l/2) e3 × (-m g ẑ) = m g l sin θ/2 e2. Balance:
+    Ω^2 = 3 g/(2 l cos θ)."""
+    got = answers("steady_motion")
+    assert same_all(got["angular_velocity"], ["-Omega*sin(theta)", "0", "-Omega*cos(theta)"])
+    assert same_all(got["angular_momentum"], ["-m*l**2*Omega*sin(theta)/3", "0", "0"])
+    assert same_all(got["moment"], ["0", "m*g*l*sin(theta)/2", "0"])
+    assert same(got["solved"]["Omega**2"], "3*g/(2*l*cos(theta))")
