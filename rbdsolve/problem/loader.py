@@ -22,10 +22,12 @@ from rbdsolve.problem.schema import (
     Problem,
     Question,
     Spring,
+    ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
+from rbdsolve.problem.ranges import value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text
 
@@ -165,6 +167,7 @@ class _Loader:
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
         bodies = self.bodies(get("bodies"))
+        values, ranges = self.values(get("values"), parameters)
         return Problem(
             file=self.file,
             title=self.text(get("title"), "a title") or Path(self.file).stem,
@@ -176,12 +179,13 @@ class _Loader:
             bodies=bodies,
             springs=self.springs(get("springs")),
             gravity=self.gravity(get("gravity")),
-            values=self.values(get("values"), parameters),
+            values=values,
             questions=self.questions(get("questions"), coordinates, bodies, points, frames),
             prescribed=prescribed,
             frames=frames,
             unknowns=unknowns,
             triads=triads,
+            ranges=ranges,
         )
 
     def text(self, node: Node | None, what: str) -> str:
@@ -395,22 +399,27 @@ class _Loader:
             loc=spec.loc,
         )
 
-    def values(self, node: Node | None, parameters: tuple[Parameter, ...]) -> tuple[tuple[str, Fraction], ...]:
+    def values(self, node: Node | None, parameters: tuple[Parameter, ...]
+               ) -> tuple[tuple[tuple[str, Fraction], ...], tuple[ValueRange, ...]]:
+        """Numbers, and the ranges or choices to draw per exam variant (problem/ranges.py)."""
         if node is None:
-            return ()
+            return (), ()
         table = expect_mapping(node, "values: parameter -> number")
         known = [p.name for p in parameters]
-        out = []
+        numbers, ranges = [], []
         for key, value in table.entries:
             if key.text not in known:
                 raise InputError(f"'{key.text}' is not a parameter{did_you_mean(key.text, known)}", key.loc)
+            param = next(p for p in parameters if p.name == key.text)
+            if isinstance(value, Map):
+                ranges.append(value_range(param, value))
+                continue
             scalar = expect_scalar(value, "a number")
             number = ex.parse_number(scalar.text, scalar.loc, scalar.plain)
-            param = next(p for p in parameters if p.name == key.text)
             if param.positive and number <= 0:
                 raise InputError(f"'{key.text}' is declared positive, found {scalar.text}", scalar.loc)
-            out.append((key.text, number))
-        return tuple(out)
+            numbers.append((key.text, number))
+        return tuple(numbers), tuple(ranges)
 
     def questions(self, node: Node, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
                   points: tuple[Point, ...], frames: tuple[Frame, ...]) -> tuple[Question, ...]:

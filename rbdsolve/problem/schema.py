@@ -313,6 +313,31 @@ class Question:
 
 
 @dataclass(frozen=True)
+class ValueRange:
+    """A parameter whose value is drawn per exam variant (``rbdsolve variants``): from
+    the grid low, low + step, … ≤ high, or from ``choices``. ``rbdsolve solve`` keeps
+    such a parameter symbolic, as if it had no value."""
+
+    name: str
+    low: Fraction
+    high: Fraction
+    step: Fraction
+    choices: tuple[Fraction, ...]  # not empty: drawn from these instead of the grid
+    loc: Location
+
+    @property
+    def size(self) -> int:
+        """How many values there are to draw from."""
+        if self.choices:
+            return len(self.choices)
+        return int((self.high - self.low) // self.step) + 1
+
+    def value(self, k: int) -> Fraction:
+        """The k-th value (0-based) of the grid or of the choices, exactly."""
+        return self.choices[k] if self.choices else self.low + k * self.step
+
+
+@dataclass(frozen=True)
 class Problem:
     file: str
     title: str
@@ -330,6 +355,7 @@ class Problem:
     frames: tuple[Frame, ...] = ()
     unknowns: tuple[str, ...] = ()  # constant unknowns, such as a steady spin rate
     triads: tuple[Triad, ...] = ()
+    ranges: tuple[ValueRange, ...] = ()  # parameters drawn per variant; symbolic otherwise
 
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)

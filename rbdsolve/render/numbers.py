@@ -2,17 +2,21 @@
 
 from __future__ import annotations
 
+from rbdsolve.report.tree import Path, label
 
-def numeric_lines(values: object, prefix: str = "") -> list[str]:
-    """Flatten a numeric values tree into 'name = value' lines, skipping the empty."""
+
+def numeric_lines(values: object, path: Path = ()) -> list[str]:
+    """Flatten a numeric values tree into 'name = value' lines, skipping the empty; names
+    are spelled by ``report.tree.label``."""
+    prefix = label(path)
     if isinstance(values, dict):
-        return [line for k, v in values.items() for line in numeric_lines(v, f"{prefix}{k}" if not prefix else f"{prefix}.{k}")]
+        return [line for k, v in values.items() for line in numeric_lines(v, (*path, k))]
     if isinstance(values, list) and values and all(isinstance(v, float) or v is None for v in values):
         if all(v is None for v in values):
             return []
         return [f"{prefix} = [" + ", ".join("—" if v is None else f"{v:.6g}" for v in values) + "]"]
     if isinstance(values, list):
-        return [line for i, v in enumerate(values, 1) for line in numeric_lines(v, f"{prefix}[{i}]")]
+        return [line for i, v in enumerate(values) for line in numeric_lines(v, (*path, i))]
     if isinstance(values, float):
         return [f"{prefix} = {values:.6g}"]
     return []

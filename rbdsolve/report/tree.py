@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
-from typing import Callable, Mapping
+from typing import Callable, Iterator, Mapping
 
 import sympy as sp
 
@@ -20,3 +20,38 @@ def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
     if isinstance(value, (list, tuple)):
         return [map_leaves(v, leaf) for v in value]
     return leaf(value)
+
+
+Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an answers tree
+
+
+def leaves(value: object, path: Path = ()) -> Iterator[tuple[Path, object]]:
+    """Each leaf of an answers tree with its path, in the order ``map_leaves`` walks."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        for f in dataclasses.fields(value):
+            yield from leaves(getattr(value, f.name), (*path, f.name))
+    elif isinstance(value, Mapping):
+        for k, v in value.items():
+            yield from leaves(v, (*path, str(k)))
+    elif isinstance(value, sp.MatrixBase):
+        for i, row in enumerate(value.tolist()):
+            for j, x in enumerate(row):
+                yield from leaves(x, (*path, i, j))
+    elif isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            yield from leaves(v, (*path, i))
+    else:
+        yield path, value
+
+
+def label(path: Path) -> str:
+    """'eigenvalues[1]', 'equilibria[2].at.theta': keys joined by '.', indices 1-based in
+    brackets. The one spelling of an answer's name, for the numeric lines of every
+    renderer and the columns of the variants table."""
+    out = ""
+    for part in path:
+        if isinstance(part, int):
+            out += f"[{part + 1}]"
+        else:
+            out += f".{part}" if out else part
+    return out

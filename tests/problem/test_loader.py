@@ -309,3 +309,24 @@ def test_bad_orientations_are_located(old, new, where, words) -> None:
         load_text(ORIENTED.replace(old, new, 1), "p.yaml")
     assert words in info.value.message
     assert (info.value.location.line, info.value.location.column) == where
+
+
+def test_values_take_ranges_and_choices_kept_apart_from_numbers() -> None:
+    from fractions import Fraction
+
+    from rbdsolve.problem import load_text
+
+    problem = load_text("""
+parameters: {m: mass, l: length, g: gravity}
+values: {m: 2, l: {range: [0.5, 2], step: 0.4}, g: {choices: [9.81, 10]}}
+coordinates: [theta]
+gravity: [0, -g]
+points: {P: "l * [sin(theta), -cos(theta)]"}
+bodies: {bob: {shape: particle, mass: m, at: P}}
+questions: [eom]
+""")
+    assert problem.values == (("m", Fraction(2)),)
+    length, gravity = problem.ranges
+    assert length.size == 4 and [length.value(k) for k in range(4)] == [Fraction(1, 2), Fraction(9, 10),
+                                                                        Fraction(13, 10), Fraction(17, 10)]
+    assert gravity.size == 2 and gravity.value(0) == Fraction(981, 100)

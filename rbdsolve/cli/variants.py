@@ -1,0 +1,92 @@
+"""``rbdsolve variants``: exam variants of one problem, drawn from the ranges in its
+``values:``; a CSV, JSON or LaTeX sheet of every variant's values and answers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from rbdsolve.cli.app import Source, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
+from rbdsolve.errors import ExitCode, InputError
+
+FORMATS = ("csv", "json", "tex")
+SUFFIXES = {".csv": "csv", ".json": "json", ".tex": "tex"}
+
+VARIANTS_EXAMPLES = """
+\b
+Examples:
+  rbdsolve variants problems/sg2150-2015-10-29/p1-two-rods.yaml --count 30 --seed 1 -o variants.csv
+  rbdsolve variants p1.yaml --count 30 --seed 1 -o sheets.tex    # a page per student, answers last
+  rbdsolve variants p1.yaml --count 1000 --seed 7 --format json  # to standard output
+
+\b
+A parameter is drawn from its 'values:' entry in the file:
+  values: {m: {range: [1, 5], step: 0.5}, g: {choices: [9.81, 10]}, r: 0.5}
+
+\b
+Exit codes: 0 the table is written, 1 a question has no exact answer or the
+check by a full solve disagrees (no table is written), 2 bad input or usage,
+3 internal error.
+"""
+
+
+@main.command()
+@click.argument("path", type=click.Path(allow_dash=True))
+@click.option("-n", "--count", type=click.IntRange(min=1), default=30, show_default=True,
+              help="How many variants (students).")
+@click.option("-s", "--seed", type=click.IntRange(min=0), default=0, show_default=True,
+              help="Seed of the random draw: the same seed gives the same variants.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+              help="Write to this file (format from its suffix: .csv, .json, .tex).")
+@click.option("-f", "--format", "fmt", type=click.Choice(FORMATS),
+              help="Output format (default: from --output's suffix, else csv).")
+@click.option("--verify", type=click.IntRange(min=0), default=3, show_default=True, metavar="K",
+              help="Solve K variants again in full, with their values given, and refuse to write "
+                   "the table unless every number agrees (relative 1e-9).")
+@route_option
+@budget_option
+@debug_option
+def variants(path, count, seed, output, fmt, verify, route, budget, debug):
+    """Exam variants: draw COUNT sets of parameter values from the ranges in the
+    file's 'values:', solve the problem exactly once, and write each variant's values
+    and numeric answers.
+
+    PATH is one problem file, or - for standard input. Warnings (empty cells, answers
+    left out) go to standard error.
+    """
+    run_guarded(debug, lambda: _variants(path, count, seed, output, fmt, verify, route, budget))
+
+
+variants.help = (variants.help or "").rstrip() + "\n\n" + VARIANTS_EXAMPLES.lstrip("\n")
+
+
+def output_format(output: str | None, fmt: str | None) -> str:
+    """--format, else the output file's suffix, else csv."""
+    if fmt:
+        return fmt
+    if output is None:
+        return "csv"
+    suffix = Path(output).suffix.lower()
+    if suffix not in SUFFIXES:
+        raise InputError(f"-o {output}: cannot tell the format from '{suffix or 'no suffix'}'; "
+                         "use .csv, .json or .tex, or give --format")
+    return SUFFIXES[suffix]
+
+
+def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | None, verify: int,
+              route: str, budget: float = DEFAULT_BUDGET) -> ExitCode:
+    import sys
+
+    from rbdsolve.render.variants import RENDERERS
+    from rbdsolve.solvers import Options, RouteChoice
+    from rbdsolve.solvers.variants import variants as make
+
+    kind = output_format(output, fmt)
+    source = Source("<stdin>", sys.stdin.read()) if path == "-" else Source(path)
+    table = make(source.load(), count, seed, Options(route=RouteChoice(route), budget=budget), verify)
+    for line in (*table.notes, *(f"warning: {w}" for w in table.warnings)):
+        click.echo(f"{table.file}: {line}", err=True)
+    write_text(RENDERERS[kind](table), output)
+    return ExitCode.OK

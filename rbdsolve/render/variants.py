@@ -1,0 +1,106 @@
+"""A VariantTable as CSV, strict JSON, or a LaTeX sheet (one page per student, then the
+teacher's answers). Numbers are written with NUMBER_FORMAT; an empty cell is empty in
+CSV and null in JSON (the warnings say why)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from fractions import Fraction
+
+from rbdsolve.render.latex import PREAMBLE, text
+from rbdsolve.solvers.variants import VariantTable
+
+NUMBER_FORMAT = "{:.10g}"  # ten significant digits: exact to well past what an exam marks
+
+
+ASKED = {  # a question kind as a student sheet asks it
+    "eom": "Lagrange's equations of motion.",
+    "equilibria": "All equilibria and their stability.",
+    "modes": "The small oscillations: eigenvalues, frequencies and mode shapes.",
+    "inertia": "The inertia tensor, principal moments and principal axes.",
+    "impact": "The velocities and impulses just after the impact.",
+    "steady_spin": "The steady spins of the free body and their stability.",
+    "steady_motion": "The steady motion: the relations it needs.",
+}
+
+
+def _number(value: float | None) -> str:
+    return "" if value is None else NUMBER_FORMAT.format(value)
+
+
+def _parameter(value: Fraction) -> str:
+    return NUMBER_FORMAT.format(float(value))
+
+
+def render_csv(table: VariantTable) -> str:
+    """Header: variant, seed, the ranged parameters, the answer labels; one row per variant."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["variant", "seed", *table.parameters, *table.columns])
+    for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1):
+        writer.writerow([n, table.seed, *map(_parameter, draw), *map(_number, answers)])
+    return out.getvalue()
+
+
+def render_json(table: VariantTable) -> str:
+    """One object: the problem, seed, fixed values, columns and rows (strict JSON)."""
+    body = {
+        "file": table.file,
+        "title": table.title,
+        "seed": table.seed,
+        "fixed": {name: float(value) for name, value in table.fixed},
+        "parameters": list(table.parameters),
+        "columns": list(table.columns),
+        "rows": [{"variant": n, "values": [float(v) for v in draw], "answers": list(answers)}
+                 for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1)],
+        "verified": list(table.verified),
+        "notes": list(table.notes),
+        "warnings": list(table.warnings),
+    }
+    return json.dumps(body, ensure_ascii=False, allow_nan=False, indent=1) + "\n"
+
+
+def render_latex(table: VariantTable) -> str:
+    """One page per variant (title, statement, that student's values, the questions),
+    then the teacher's answers, variant by variant. Compiles with pdflatex."""
+    lines = [PREAMBLE, "\\usepackage{longtable}", "\\begin{document}"]
+    for n, draw in enumerate(table.draws, start=1):
+        lines += _student_page(table, n, draw)
+    lines += _answers(table)
+    lines.append("\\end{document}")
+    return "\n".join(lines) + "\n"
+
+
+def _values_line(table: VariantTable, draw: tuple[Fraction, ...]) -> str:
+    given = [*zip(table.parameters, draw), *table.fixed]
+    return ", ".join(f"\\texttt{{{text(name)}}} $= {_parameter(value)}$" for name, value in given)
+
+
+def _student_page(table: VariantTable, n: int, draw: tuple[Fraction, ...]) -> list[str]:
+    lines = [f"\\section*{{{text(table.title)} \\hfill Variant {n}}}"]
+    if table.statement:
+        lines += [text(table.statement), ""]
+    lines += [f"\\textbf{{Your values:}} {_values_line(table, draw)}.", "", "\\textbf{Questions:}",
+              "\\begin{enumerate}"]
+    lines += [f"\\item {text(ASKED.get(q.split('(')[0], q))}" for q in table.questions]
+    return lines + ["\\end{enumerate}", "\\newpage"]
+
+
+def _answers(table: VariantTable) -> list[str]:
+    lines = [f"\\section*{{Answers: {text(table.title)}}}",
+             f"Seed {table.seed}; every number to ten significant digits; an empty cell has no real "
+             f"value for that variant. Checked by a full solve: variants "
+             f"{', '.join(map(str, table.verified)) or 'none'}.", ""]
+    lines += [f"\\emph{{{text(note)}}}\\par" for note in table.notes]
+    lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in table.warnings]
+    for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1):
+        lines += [f"\\subsection*{{Variant {n}}}", _values_line(table, draw) + "\\par",
+                  "{\\footnotesize\\begin{longtable}{ll}"]
+        lines += [f"\\texttt{{{text(c)}}} & {_number(a) or '---'} \\\\" for c, a in zip(table.columns, answers)]
+        lines.append("\\end{longtable}}")
+    return lines
+
+
+RENDERERS = {"csv": render_csv, "json": render_json, "tex": render_latex}
