@@ -6,7 +6,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, check_sets, debug_option, main, parse_sets, run_guarded
+from rbdsolve.cli.app import Source, append_help, check_sets, debug_option, main, parse_sets, run_guarded
+from rbdsolve.cli.solve import sets_option
 from rbdsolve.errors import ExitCode, InputError, Location, did_you_mean
 
 DRAW_EXAMPLES = """
@@ -31,18 +32,20 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
               help="Draw at this value of a coordinate (repeatable; a number or an expression "
                    "in the parameters, such as pi/6). Default: the modes question's equilibrium "
                    "or the impact's configuration, else 0.")
-@click.option("--set", "sets", multiple=True, metavar="NAME=VALUE",
-              help="Give a parameter a numeric value (repeatable); overrides the file's values. "
-                   "A parameter without a value is drawn as 1.")
+@sets_option
 @click.option("--modes/--no-modes", default=True, show_default=True,
               help="With a modes question, also draw its mode shapes (OUTPUT's name + '-modes').")
 @debug_option
 def draw(path, output, at, sets, modes, debug):
-    """Draw a planar scene to scale: bodies by shape, points labelled, gravity."""
+    """Draw a planar scene to scale: bodies by shape, points labelled, gravity.
+
+    Lengths come from the file's values and --set; a parameter without a value is
+    drawn as 1 (the picture says so). Scenes turned in 3D are refused (exit code 2).
+    """
     run_guarded(debug, lambda: _draw(path, Path(output), at, sets, modes))
 
 
-draw.help = (draw.help or "").rstrip() + "\n\n" + DRAW_EXAMPLES.lstrip("\n")
+append_help(draw, DRAW_EXAMPLES)
 
 
 def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], modes: bool) -> ExitCode:

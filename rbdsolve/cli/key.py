@@ -10,9 +10,9 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, debug_option, main, parse_sets, run_guarded, sources, stderr_is_terminal
+from rbdsolve.cli.app import Source, main, parse_sets, run_guarded, sources, stderr_is_terminal
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
-from rbdsolve.cli.solve import budget_option, jobs_option, print_summary, quiet_option, route_option, sets_option
+from rbdsolve.cli.solve import batch_options, print_summary
 from rbdsolve.errors import ExitCode, InputError
 
 KINDS = (".pdf", ".tex", ".md", ".html")
@@ -25,12 +25,7 @@ KINDS = (".pdf", ".tex", ".md", ".html")
 @click.option("--title", help="The key's title (default: the problems' common source, or the folder's name).")
 @click.option("--figures/--no-figures", default=True, show_default=True,
               help="Draw each planar scene and its mode shapes into the key.")
-@sets_option
-@route_option
-@budget_option
-@jobs_option
-@quiet_option
-@debug_option
+@batch_options
 def key(paths, output, title, figures, sets, route, budget, jobs, quiet, debug):
     """Write an answer key for an exam: a folder (or files) of problems in, one document out.
 

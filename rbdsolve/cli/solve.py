@@ -54,18 +54,20 @@ quiet_option = click.option(
     help="No progress bar and no summary table; errors are still said on standard error.")
 
 
+def batch_options(command):
+    """The options of every command that solves many files (solve, key)."""
+    for option in (debug_option, quiet_option, jobs_option, budget_option, route_option, sets_option):
+        command = option(command)
+    return command
+
+
 @main.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path(allow_dash=True))
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="terminal",
               show_default=True, help="Output format.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write to this file instead of standard output.")
-@sets_option
-@route_option
-@budget_option
-@jobs_option
-@quiet_option
-@debug_option
+@batch_options
 def solve(paths, fmt, output, sets, route, budget, jobs, quiet, debug):
     """Solve problem files and print their step-by-step solutions.
 
@@ -130,17 +132,33 @@ def _write_terminal(reports, output: str | None) -> None:
 
 
 def print_summary(outcomes: list[Outcome]) -> None:
-    """One row per file on standard error: questions answered, routes, seconds, result."""
+    """One row per file on standard error: questions answered, routes, seconds, result.
+    Files are named from their common folder (in the title), whole, never cut short."""
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title="Summary", title_justify="left")
-    for name, justify in (("file", "left"), ("answered", "right"), ("route", "left"),
-                          ("seconds", "right"), ("result", "left")):
-        table.add_column(name, justify=justify)
-    for o in outcomes:
-        table.add_row(o.source, *_row(o))
+    folder, names = _short_names([o.source for o in outcomes])
+    table = Table(title=f"Summary ({folder})" if folder else "Summary", title_justify="left")
+    table.add_column("file", overflow="fold")
+    for name in ("answered", "route", "seconds", "result"):
+        table.add_column(name, justify="right" if name in ("answered", "seconds") else "left", no_wrap=True)
+    for name, o in zip(names, outcomes):
+        table.add_row(name, *_row(o))
     Console(stderr=True, highlight=False).print(table)
+
+
+def _short_names(sources: list[str]) -> tuple[str, list[str]]:
+    """The files' common folder and each file's path below it."""
+    import os
+
+    files = [s for s in sources if not s.startswith("<")]
+    try:
+        folder = os.path.commonpath([os.path.dirname(s) for s in files]) if files else ""
+    except ValueError:  # absolute and relative paths mixed
+        folder = ""
+    if not folder:
+        return "", sources
+    return folder + os.sep, [os.path.relpath(s, folder) if not s.startswith("<") else s for s in sources]
 
 
 def _row(outcome: Outcome) -> tuple[str, str, str, str]:

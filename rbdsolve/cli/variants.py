@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.app import Source, append_help, debug_option, main, run_guarded, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
@@ -59,7 +59,7 @@ def variants(path, count, seed, output, fmt, verify, route, budget, debug):
     run_guarded(debug, lambda: _variants(path, count, seed, output, fmt, verify, route, budget))
 
 
-variants.help = (variants.help or "").rstrip() + "\n\n" + VARIANTS_EXAMPLES.lstrip("\n")
+append_help(variants, VARIANTS_EXAMPLES)
 
 
 def output_format(output: str | None, fmt: str | None) -> str:
