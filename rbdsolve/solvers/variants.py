@@ -120,6 +120,7 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     conds = _evaluate([c for _, c in conditions], symbols, arrays, count)
     labels = question_labels([s.question for s in report.solutions])
     warnings = _existence(found, conditions, conds, cells, labels)
+    warnings += _coincident(found, cells, labels)
     warnings += _reorder(found, cells)
     warnings += _not_real(found, cells, report)
     table = _table(problem, report, seed, draws, found, cells, warnings, left_out)
@@ -339,6 +340,38 @@ def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple
                         tuple(draws), answers, notes, tuple(warnings))
 
 
+def _coincident(found: list[_Leaf], cells: np.ndarray, labels: list[str]) -> list[str]:
+    """Empty the cells of a MATCHED element (an equilibrium) in the variants where it
+    coincides with an earlier one: at a critical value two branches of the exact answer
+    meet (acos(g/(Ω²R)) = 0 at Ω²R = g), and the point is one equilibrium, not two."""
+    warnings = []
+    for (q, name), elements in _elements(found).items():
+        sub = MATCHED[name]
+        at = {e: {found[i].key[4:]: i for i in leaves_ if found[i].key[3] == sub} for e, leaves_ in elements.items()}
+        for later in elements:
+            for earlier in (e for e in elements if e < later and at[e].keys() == at[later].keys() and at[e]):
+                same = np.all([np.isclose(cells[at[later][p]], cells[at[earlier][p]], rtol=VERIFY_RTOL,
+                                          atol=VERIFY_ATOL) for p in at[later]], axis=0)
+                if not same.any():
+                    continue
+                for i in elements[later]:
+                    cells[i, same] = np.nan
+                warnings.append(f"{label((labels[q], name, later))} is {label((labels[q], name, earlier))} in "
+                                f"{int(same.sum())} variants (first: variant {int(np.argmax(same)) + 1}); "
+                                "listed once there")
+    return warnings
+
+
+def _elements(found: list[_Leaf]) -> dict[tuple[int, str], dict[int, list[int]]]:
+    """For each MATCHED list, its elements' leaf indices, by element."""
+    out: dict[tuple[int, str], dict[int, list[int]]] = {}
+    for i, leaf in enumerate(found):
+        key = leaf.key
+        if len(key) > 3 and key[1] in MATCHED and isinstance(key[2], int):
+            out.setdefault((key[0], key[1]), {}).setdefault(key[2], []).append(i)
+    return out
+
+
 def _spread(count: int, verify: int) -> list[int]:
     """``verify`` variant indices spread over the table: the first, the last, between."""
     if verify <= 0:
@@ -360,6 +393,7 @@ def _verify(model: Model, options: Options, table: VariantTable, found: list[_Le
                                 f"values ({s.error}); the table is not written")
         theirs.update({(q, *path): numeric(leaf, given.values) for path, leaf in leaves(s.answers)})
     row = {leaf.key: x for leaf, x in zip(found, table.answers[k])}
+    _same_count(row, theirs, table.file, where)
     for column, leaf, ours in zip(table.columns, found, table.answers[k]):
         if ours is None:
             continue  # an empty cell claims nothing
@@ -370,6 +404,31 @@ def _verify(model: Model, options: Options, table: VariantTable, found: list[_Le
         if not _close(ours, other):
             raise UnsolvedError(f"{table.file}: {where}: {column} is {ours:.10g} in the table, but a full "
                                 f"solve at these values gives {other:.10g}; the table is not written")
+
+
+def _same_count(row: dict[tuple, float | None], theirs: dict[tuple, object], file: str, where: str) -> None:
+    """As many elements of each MATCHED list in the row as the full solve finds: the
+    element-by-element comparison alone would let two rows match one equilibrium."""
+    for q, name in {(k[0], k[1]) for k in row if len(k) > 2 and k[1] in MATCHED}:
+        ours = {k[2] for k, x in row.items() if k[:2] == (q, name) and x is not None}
+        others = _distinct(q, name, theirs)
+        if len(ours) != others:
+            raise UnsolvedError(f"{file}: {where}: the table lists {len(ours)} {name}, a full solve at these "
+                                f"values finds {others}; the table is not written")
+
+
+def _distinct(q: int, name: str, theirs: dict[tuple, object]) -> int:
+    """How many different elements the full solve lists (by their MATCHED entries): its
+    exact branches may meet at these values, as the table's do (_coincident)."""
+    sub = MATCHED[name]
+    places: list[tuple] = []
+    for e in sorted({k[2] for k in theirs if k[:2] == (q, name) and len(k) > 3}):
+        at = tuple(x for k, x in sorted(theirs.items(), key=lambda kv: str(kv[0]))
+                   if k[:4] == (q, name, e, sub))
+        if not any(len(at) == len(p) and all(isinstance(a, float) and isinstance(b, float) and _close(a, b)
+                                             for a, b in zip(at, p)) for p in places):
+            places.append(at)
+    return len(places)
 
 
 def _close(a: float, b: float) -> bool:

@@ -141,11 +141,21 @@ def test_equilibria_that_exist_only_above_the_critical_rate_are_empty_below_it()
     assert any(w.startswith("equilibria.equilibria[2]: does not exist") for w in table.warnings)
     for o, lower, upper in zip(omega, column(table, "equilibria.equilibria[2].at.theta"),
                                column(table, "equilibria.equilibria[3].at.theta")):
-        if o**2 < 9:
+        if o**2 <= 9:  # at Ω²R = g, ±acos(1) is θ = 0, already the first equilibrium
             assert lower is None and upper is None
         else:
             assert upper == pytest.approx(math.acos(9 / o**2), rel=1e-12, abs=1e-12)
             assert lower == pytest.approx(-upper, abs=1e-12)
+
+
+def test_at_the_critical_rate_the_meeting_branches_are_one_equilibrium() -> None:
+    # sin θ (g − Ω²R cos θ) = 0 at Ω²R = g: θ = 0 and θ = π only (cos θ = 1 is θ = 0 again)
+    table = variants(load_text(hoop("{choices: [3, 2]}"), "hoop.yaml"), 12, 0, verify=12)
+    for o, row in zip(params(table, "Omega"), table.answers):
+        thetas = [row[table.columns.index(f"equilibria.equilibria[{k}].at.theta")] for k in range(1, 5)]
+        assert sorted(t for t in thetas if t is not None) == pytest.approx([0, math.pi])
+    assert 3 in params(table, "Omega") and len(table.verified) == 12
+    assert any("is equilibria.equilibria[1]" in w and "listed once there" in w for w in table.warnings)
 
 
 def test_a_file_without_ranges_is_refused() -> None:
