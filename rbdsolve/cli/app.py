@@ -79,6 +79,8 @@ def expand_paths(paths: tuple[str, ...]) -> list[Path]:
 
 def sources(paths: tuple[str, ...]) -> list[Source]:
     """``expand_paths`` with ``-`` read once from standard input."""
+    if paths.count(STDIN) > 1:
+        raise InputError("'-' (standard input) is given more than once; it can be read only once")
     out: list[Source] = []
     for raw in paths:
         if raw == STDIN:

@@ -86,13 +86,18 @@ def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 
            quiet: bool = False) -> ExitCode:
     items = sources(paths)
     outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
-    for outcome in outcomes:
-        if outcome.failure is not None:
-            click.echo(outcome.failure.line, err=True)
+    say_failures(outcomes)
     _write(fmt, outcomes, output)
     if len(outcomes) > 1 and not quiet:
         print_summary(outcomes)
     return worst(outcomes)
+
+
+def say_failures(outcomes: list[Outcome]) -> None:
+    """Each file that gave no report, in one line on standard error."""
+    for outcome in outcomes:
+        if outcome.failure is not None:
+            click.echo(outcome.failure.line, err=True)
 
 
 def _write(fmt: str, outcomes: list[Outcome], output: str | None) -> None:

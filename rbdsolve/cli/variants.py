@@ -11,6 +11,7 @@ from rbdsolve.cli.app import Source, append_help, debug_option, main, run_guarde
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
+MAX_COUNT = 100_000  # a class is hundreds; a million rows is a typo that would fill the memory
 FORMATS = ("csv", "json", "tex")
 SUFFIXES = {".csv": "csv", ".json": "json", ".tex": "tex"}
 
@@ -34,7 +35,7 @@ check by a full solve disagrees (no table is written), 2 bad input or usage,
 
 @main.command()
 @click.argument("path", type=click.Path(allow_dash=True))
-@click.option("-n", "--count", type=click.IntRange(min=1), default=30, show_default=True,
+@click.option("-n", "--count", type=click.IntRange(min=1, max=MAX_COUNT), default=30, show_default=True,
               help="How many variants (students).")
 @click.option("-s", "--seed", type=click.IntRange(min=0), default=0, show_default=True,
               help="Seed of the random draw: the same seed gives the same variants.")

@@ -9,6 +9,7 @@ question, each with its caption; nothing for a scene that cannot be drawn.
 
 from __future__ import annotations
 
+import functools
 import math
 import textwrap
 from dataclasses import dataclass
@@ -61,6 +62,21 @@ def modes_questions(model: Model) -> list[Question]:
     return [q for q in model.problem.questions if q.kind is QuestionKind.MODES]
 
 
+def literal_text(draw):
+    """Run ``draw`` with matplotlib's mathtext off: titles and names come from the
+    problem file, and a '$' there is a dollar, not the start of a formula to parse."""
+
+    @functools.wraps(draw)
+    def drawn(*args, **kwargs):
+        import matplotlib
+
+        with matplotlib.rc_context({"text.parse_math": False}):
+            return draw(*args, **kwargs)
+
+    return drawn
+
+
+@literal_text
 def save_scene(model: Model, path: Path, at: Mapping[str, float] | None = None) -> Figure:
     """The scene at ``at`` (default: the questions' configuration) written to ``path``;
     NotDrawable (an InputError) for a scene that is not planar."""
@@ -81,6 +97,7 @@ def save_scene(model: Model, path: Path, at: Mapping[str, float] | None = None) 
                                        drawing.notes))
 
 
+@literal_text
 def save_modes(model: Model, question: Question, path: Path) -> Figure:
     """One panel per mode: the equilibrium faint, q₀ + a·u_k over it, titled with ω_k."""
     from rbdsolve.solvers.mode_shapes import mode_shapes

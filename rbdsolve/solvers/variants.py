@@ -123,6 +123,7 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     warnings += _coincident(found, cells, labels)
     warnings += _reorder(found, cells)
     warnings += _not_real(found, cells, report)
+    warnings += _unvalued(problem)
     table = _table(problem, report, seed, draws, found, cells, warnings, left_out)
     checked = _spread(count, verify)
     for k in checked:
@@ -338,6 +339,17 @@ def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple
     return VariantTable(problem.file, problem.title, problem.statement, tuple(labels), seed,
                         tuple(r.name for r in problem.ranges), problem.values, columns,
                         tuple(draws), answers, notes, tuple(warnings))
+
+
+def _unvalued(problem: Problem) -> list[str]:
+    """A parameter with neither a value nor a range keeps every answer holding it out of
+    the table: said, so a thin table is not taken for the whole answer."""
+    given = {name for name, _ in problem.values} | {r.name for r in problem.ranges}
+    missing = [p.name for p in problem.parameters if p.name not in given and p.name not in problem.unknowns]
+    if not missing:
+        return []
+    return [f"{', '.join(missing)} {'has' if len(missing) == 1 else 'have'} neither a value nor a range in "
+            "'values:': the answers that hold them are not numbers, so not in the table"]
 
 
 def _coincident(found: list[_Leaf], cells: np.ndarray, labels: list[str]) -> list[str]:

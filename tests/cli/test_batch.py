@@ -75,3 +75,8 @@ def test_the_exit_code_is_the_worst_file(tmp_path) -> None:
         "bodies:\n  b: {shape: particle, mass: m, at: [0, y]}\nquestions: [equilibria]\n", encoding="utf-8")
     assert run("solve", PENDULUM, unanswerable, "--quiet").exit_code == 1
     assert run("solve", PENDULUM, unanswerable, BAD, "--quiet", "--jobs", "2").exit_code == 2
+
+
+def test_standard_input_is_read_once() -> None:
+    result = run("solve", "-", "-", input="")
+    assert result.exit_code == 2 and "given more than once" in result.output

@@ -107,3 +107,26 @@ def test_default_title() -> None:
         == "Answer key: SG2150 exam 2015-10-29"
     assert default_title(["exams/final"], ["", "Textbook 3.2"]) == "Answer key: final"
     assert default_title(["a.yaml", "b.yaml"], ["x", "y"]) == "Answer key"
+
+
+def test_a_missing_output_folder_is_said_before_any_solving(tmp_path) -> None:
+    for suffix in ("pdf", "md"):
+        result = run("key", SEED_FILES[0], "-o", tmp_path / "missing" / f"key.{suffix}")
+        assert result.exit_code == 2 and "there is no folder" in result.output and "Summary" not in result.output
+
+
+def test_file_names_and_titles_that_tex_and_matplotlib_would_read_as_code(tmp_path) -> None:
+    # '%' and '#' in file names, '$' and a TeX command in the title: all plain text in the key
+    odd = tmp_path / "50% rod#1.yaml"
+    scene = (SEED.parent / "examples" / "pendulum.yaml").read_text(encoding="utf-8")
+    odd.write_text("title: 'Cost $5 and $x^$ \\input{/etc/passwd} 100%'\n" + scene.split("\n", 1)[1],
+                   encoding="utf-8")
+    result = run("key", odd, "-o", tmp_path / "my key%.md", "--quiet")
+    assert result.exit_code == 0, result.output
+    text = (tmp_path / "my key%.md").read_text(encoding="utf-8")
+    assert "(my-key-figures/01-50-rod-1.png)" in text
+    tex = run("key", odd, "-o", tmp_path / "k.tex", "--quiet")
+    assert tex.exit_code == 0 and "\\textbackslash{}input\\{/etc/passwd\\}" in (tmp_path / "k.tex").read_text()
+    if shutil.which("pdflatex"):
+        pdf = run("key", odd, "-o", tmp_path / "k%.pdf", "--quiet")
+        assert pdf.exit_code == 0, pdf.output

@@ -196,3 +196,11 @@ def test_cli_errors() -> None:
     missing = runner.invoke(main, ["variants", "nope.yaml"])
     assert missing.exit_code == 2 and missing.stderr.strip() == "no such file: nope.yaml"
     assert "--count 30 --seed 1 -o variants.csv" in runner.invoke(main, ["variants", "--help"]).output
+
+
+def test_parameters_without_value_or_range_are_named() -> None:
+    text = (PROBLEMS / "examples" / "pendulum.yaml").read_text(encoding="utf-8")
+    table = variants(load_text(text.replace("questions:", "values: {m: {range: [1, 5], step: 1}}\nquestions:"),
+                               "pendulum.yaml"), 3, 0, verify=1)
+    assert any(w.startswith("l, g have neither a value nor a range") for w in table.warnings)
+    assert not any("eigenvalues" in c for c in table.columns)  # λ = 3g/(2l) holds l and g: no number
