@@ -11,10 +11,13 @@ import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Callable, Iterable
+from typing import TYPE_CHECKING, Callable, Iterable
 
 from rbdsolve.cli.app import Source, check_sets, internal_message
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError
+
+if TYPE_CHECKING:  # the report module imports sympy: not at start-up
+    from rbdsolve.report.steps import ProblemReport
 
 PROGRESS_FROM = 4  # files: fewer than a handful finish before a bar is worth drawing
 
@@ -43,7 +46,7 @@ class Failure:
 @dataclass(frozen=True)
 class Outcome:
     source: str
-    report: object | None  # ProblemReport, or None with a failure
+    report: ProblemReport | None  # None with a failure
     failure: Failure | None
     seconds: float
 
