@@ -61,6 +61,17 @@ def problems_dir() -> Path:
     return PROBLEMS
 
 
+# A particle pendulum (θ from the downward vertical); tests add values and questions.
+SIMPLE_PENDULUM = """\
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+"""
+
 # A cart (x) carrying a pendulum (θ) on a massless link; tests add values and questions.
 CART_PENDULUM = """\
 parameters: {m: mass, M: cart mass, l: length, g: gravity}

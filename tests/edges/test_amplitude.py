@@ -16,21 +16,15 @@ from pathlib import Path
 import pytest
 from scipy.special import ellipk
 
+from conftest import SIMPLE_PENDULUM
 from rbdsolve.errors import InputError
 from rbdsolve.problem import load_text
 from rbdsolve.render.json import render_report
 from rbdsolve.solvers import Options, RouteChoice, solve_file
 
 ROOT = Path(__file__).resolve().parents[2]
-PENDULUM = """\
-parameters: {m: mass, l: length, g: gravity}
+PENDULUM = SIMPLE_PENDULUM + """\
 values: {m: 1, l: 1/2, g: 9.81}
-coordinates: [theta]
-gravity: [0, -g]
-points:
-  P: l * [sin(theta), -cos(theta)]
-bodies:
-  bob: {shape: particle, mass: m, at: P}
 questions:
   - modes: {about: {theta: 0}, check_amplitudes: [0.01, 0.5, 2.0, 3.2]}
 """

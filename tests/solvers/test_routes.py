@@ -30,7 +30,7 @@ from fractions import Fraction
 
 import pytest
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, SIMPLE_PENDULUM
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.problem.schema import QuestionKind
@@ -262,14 +262,7 @@ questions:
 values: {m: 1, g: 2}
 """
 
-PENDULUM = """\
-parameters: {m: mass, l: length, g: gravity}
-coordinates: [theta]
-gravity: [0, -g]
-points:
-  P: l * [sin(theta), -cos(theta)]
-bodies:
-  b: {shape: particle, mass: m, at: P}
+PENDULUM = SIMPLE_PENDULUM + """\
 questions:
   - equilibria
 values: {m: 1, l: 1, g: 2}

@@ -17,7 +17,7 @@ from fractions import Fraction
 import pytest
 from click.testing import CliRunner
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, SIMPLE_PENDULUM
 from rbdsolve.cli import main
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.problem import load_file, load_text
@@ -26,16 +26,8 @@ from rbdsolve.solvers.variants import variants
 
 P1 = PROBLEMS / "sg2150-2015-10-29" / "p1-two-rods.yaml"
 
-PENDULUM = """
-title: Pendulum
-parameters: {m: mass, l: length, g: gravity}
+PENDULUM = "title: Pendulum\n" + SIMPLE_PENDULUM + """\
 values: {m: 2, l: {range: [0.5, 2], step: 0.25}, g: {choices: [9.81, 10]}}
-coordinates: [theta]
-gravity: [0, -g]
-points:
-  P: l * [sin(theta), -cos(theta)]
-bodies:
-  bob: {shape: particle, mass: m, at: P}
 questions:
   - modes: {about: {theta: 0}}
 """
