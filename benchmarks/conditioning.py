@@ -88,7 +88,7 @@ def measure_case(case: ChainCase) -> list[ConditioningPoint]:
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_text
     from rbdsolve.solvers import Options, RouteChoice, solve_problem
-    from rbdsolve.solvers.modes_numeric import reference_eigenvalues
+    from rbdsolve.solvers.modes.numeric import reference_eigenvalues
 
     model = build_model(load_text(chain_text(case.masses, case.stiffnesses)))
     numeric = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions[0].answers

@@ -47,7 +47,7 @@ def reference(case: Case, model) -> list:
     import sympy as sp
 
     from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
-    from rbdsolve.solvers.modes_numeric import reference_eigenvalues
+    from rbdsolve.solvers.modes.numeric import reference_eigenvalues
 
     if case.M is not None:
         M = [[sp.Rational(x.numerator, x.denominator) for x in row] for row in case.M]

@@ -205,7 +205,7 @@ def measure_baseline(method: str, n: int, timeout: float) -> BaselineMeasurement
 def _chain_reference(n: int) -> list:
     import sympy as sp
 
-    from rbdsolve.solvers.modes_numeric import reference_eigenvalues
+    from rbdsolve.solvers.modes.numeric import reference_eigenvalues
 
     case = FAMILIES["chain_points"](n)
     rational = [[[sp.Rational(x.numerator, x.denominator) for x in row] for row in A] for A in (case.K, case.M)]

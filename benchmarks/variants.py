@@ -27,7 +27,7 @@ TARGET_S = 5.0
 
 def in_process(count: int) -> list[float]:
     from rbdsolve.problem import load_file
-    from rbdsolve.solvers.variants import variants
+    from rbdsolve.teaching.variants import variants
 
     samples = []
     for _ in range(RUNS):

@@ -84,3 +84,16 @@ bodies:
   cart: {shape: particle, mass: M, at: C}
   bob: {shape: particle, mass: m, at: P}
 """
+
+# A uniform rod pivoted at one end (θ from the downward vertical), with a stiffness c for
+# tests that add a torsional spring; tests add springs and questions.
+ROD_PENDULUM = """\
+parameters: {m: mass, l: length, g: gravity, c: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: l/2 * [sin(theta), -cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta}
+"""
+

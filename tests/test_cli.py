@@ -7,8 +7,9 @@ import json
 import pytest
 from click.testing import CliRunner
 
-from conftest import PROBLEMS, same
 from rbdsolve.cli import main
+
+from conftest import PROBLEMS, same
 
 P1 = str(PROBLEMS / "sg2150-2015-10-29" / "p1-two-rods.yaml")
 PENDULUM = str(PROBLEMS / "examples" / "pendulum.yaml")

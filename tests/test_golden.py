@@ -15,11 +15,12 @@ from pathlib import Path
 import pytest
 import yaml
 
-from conftest import PROBLEMS, same
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.json import report_object
 from rbdsolve.solvers import solve_problem
+
+from conftest import PROBLEMS, same
 
 CASES = sorted(PROBLEMS.rglob("*.expected.yaml"))
 

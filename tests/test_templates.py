@@ -14,10 +14,11 @@ import pytest
 import sympy as sp
 from click.testing import CliRunner
 
-from conftest import ROOT, same
 from rbdsolve.cli import main
 from rbdsolve.cli.new import KINDS
 from rbdsolve.problem.schema import QuestionKind
+
+from conftest import ROOT, same
 
 
 def run(*args: str, env: dict[str, str] | None = None):

@@ -51,7 +51,12 @@ append_help(draw, DRAW_EXAMPLES)
 def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], modes: bool) -> ExitCode:
     from rbdsolve.errors import RbdError
     from rbdsolve.model.build import build_model
-    from rbdsolve.render.draw import check_suffix, modes_questions, save_modes, save_scene
+    from rbdsolve.render.drawing.figures import (
+        check_suffix,
+        modes_questions,
+        save_modes,
+        save_scene,
+    )
 
     check_suffix(output)
     problem = Source(path).load()
@@ -74,7 +79,7 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
 def configuration(model, items: tuple[str, ...]) -> dict[str, float]:
     """``--at NAME=VALUE``: a coordinate of the model, a number or an expression in the
     parameters (read by the problem files' own expression parser, never eval)."""
-    from rbdsolve.model.sketch import NotDrawable, number
+    from rbdsolve.render.drawing.sketch import NotDrawable, number
     from rbdsolve.problem import expr as ex
 
     names = model.coordinate_names()

@@ -82,7 +82,7 @@ def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | N
 
     from rbdsolve.render.variants import RENDERERS
     from rbdsolve.solvers import Options, RouteChoice
-    from rbdsolve.solvers.variants import variants as make
+    from rbdsolve.teaching.variants import variants as make
 
     kind = output_format(output, fmt)
     source = Source("<stdin>", sys.stdin.read()) if path == "-" else Source(path)

@@ -18,7 +18,7 @@ from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, co
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.model.tidy import tidy
+from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring

@@ -21,7 +21,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.state import State
-from rbdsolve.model.tidy import collect_in, tidy, tidy_matrix
+from rbdsolve.form.tidy import collect_in, tidy, tidy_matrix
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,7 @@ from rbdsolve.model.build import Model, RigidBody, SpringModel
 from rbdsolve.model.rotation import axis_rotation
 from rbdsolve.model.energy import EnergyTerm
 from rbdsolve.model.state import t
-from rbdsolve.model.tidy import tidy
+from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.schema import Frame
 
 

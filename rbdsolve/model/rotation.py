@@ -17,7 +17,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.state import State
-from rbdsolve.model.tidy import tidy
+from rbdsolve.form.tidy import tidy
 
 
 def cross_matrix(n: sp.Matrix) -> sp.Matrix:

@@ -3,7 +3,7 @@
 ``modes: {about: {...}, check_amplitudes: [0.01, 0.5]}``: a list of positive numbers,
 each the amplitude of the mode's largest coordinate (radians for an angle, the length
 unit for a length) at which rbdsolve simulates the full nonlinear equations
-(:mod:`rbdsolve.solvers.amplitude`).
+(:mod:`rbdsolve.solvers.modes.amplitude`).
 """
 
 from __future__ import annotations

@@ -8,17 +8,13 @@ mass) and ``angular_velocity``. A body that does not turn at the instant
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.schema import SHAPE_ALIASES, Body, Inertia, Part, Shape
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
-
-if TYPE_CHECKING:
-    from rbdsolve.problem.loader import _Loader
 
 # Shape dimensions that are positions, not sizes: any sign is fine.
 POSITIONS = {"apex"}
@@ -26,8 +22,8 @@ MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
 class BodyReader:
-    def __init__(self, loader: _Loader):
-        self.loader = loader
+    def __init__(self, reading: Reading):
+        self.reading = reading
 
     def body(self, name: str, node: Node) -> Body:
         spec = expect_mapping(node, f"body '{name}'")
@@ -50,7 +46,7 @@ class BodyReader:
     def motion(self, spec: Map, what: str) -> tuple[ex.Expr | None, ...]:
         """(at, angle) for a body that moves with the scene, or (velocity,
         angular_velocity) for a body at one instant; never a mix of the two."""
-        loader = self.loader
+        reading = self.reading
         get = spec.get
         if get("at") is None and get("velocity") is None:
             raise InputError(f"{what} needs 'at' (its position) or, in a scene at one instant, "
@@ -59,15 +55,15 @@ class BodyReader:
             if get("angular_velocity") is not None:
                 raise InputError("'angular_velocity' goes with 'velocity'; a body placed with 'at' "
                                  "turns with its 'angle'", get("angular_velocity").loc)
-            at = loader.expr(get("at"), ex.Kind.VECTOR, "a point name or position vector", loader.positions)
-            return at, loader.optional_expr(get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"), None, None
+            at = reading.expr(get("at"), ex.Kind.VECTOR, "a point name or position vector", reading.positions)
+            return at, reading.optional_expr(get("angle"), ex.Kind.SCALAR, "an angle (a scalar expression)"), None, None
         for key in ("at", "angle"):
             if get(key) is not None:
                 raise InputError(f"give either 'at'/'angle' (the motion) or 'velocity'/'angular_velocity' "
                                  f"(one instant), not both; found '{key}' with 'velocity'", get(key).loc)
-        velocity = loader.expr(get("velocity"), ex.Kind.VECTOR,
+        velocity = reading.expr(get("velocity"), ex.Kind.VECTOR,
                                "the velocity of the centre of mass (a velocity point's name or a vector)",
-                               loader.rates)
+                               reading.rates)
         omega = get("angular_velocity")
         if omega is None:
             raise InputError(f"{what} gives 'velocity' but not 'angular_velocity' (0 if it does not "
@@ -82,17 +78,17 @@ class BodyReader:
         for key in ("angle", "velocity"):
             if spec.get(key) is not None:
                 raise InputError(f"give either 'orientation' (3D turns) or '{key}', not both", spec.get(key).loc)
-        return OrientationReader(self.loader).orientation(node, self.loader.triad_names)
+        return OrientationReader(self.reading).orientation(node, self.reading.triad_names)
 
     def angular_velocity(self, node: Node) -> ex.Expr:
         """A scalar ω (planar: about z) or a vector."""
         if isinstance(node, Seq):
-            return self.loader.expr(node, ex.Kind.VECTOR, "an angular velocity", self.loader.rates)
+            return self.reading.expr(node, ex.Kind.VECTOR, "an angular velocity", self.reading.rates)
         scalar = expect_scalar(node, "an angular velocity (a scalar about z, or a vector)")
-        if scalar.text.strip() in self.loader.rates.vectors:
+        if scalar.text.strip() in self.reading.rates.vectors:
             raise InputError(f"'{scalar.text.strip()}' is a point; an angular velocity is a scalar (about z) "
                              "or a vector", scalar.loc)
-        return ex.parse(scalar.text, scalar.loc, self.loader.rates, scalar.plain)
+        return ex.parse(scalar.text, scalar.loc, self.reading.rates, scalar.plain)
 
     def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool,
              translating: bool = False) -> Part:
@@ -101,7 +97,7 @@ class BodyReader:
         _check_dimensions(spec, shape, what)
         required = ("mass", *dims)
         check_keys(spec, required, ("shape", "axis", "inertia", "at", *extra, *(() if simple else ("hole",))), what)
-        constant = self.loader.constant
+        constant = self.reading.constant
         mass = constant(spec.get("mass"), "a mass")
         refuse_negative(mass, "mass")
         dimensions = []
@@ -116,11 +112,11 @@ class BodyReader:
                              axis_node.loc)
         at = None
         if not simple and spec.get("at") is not None:
-            scope = self.loader.scope.constants("a part's position in its body must be constant")
-            at = self.loader.expr(spec.get("at"), ex.Kind.VECTOR, "a position in the body (a vector)", scope)
+            scope = self.reading.scope.constants("a part's position in its body must be constant")
+            at = self.reading.expr(spec.get("at"), ex.Kind.VECTOR, "a position in the body (a vector)", scope)
         hole = read_bool(spec.get("hole"), "true or false") if spec.get("hole") is not None else False
         return Part(name, shape, mass, tuple(dimensions), at,
-                    self.loader.axis(axis_node) if axis_node is not None else None,
+                    self.reading.axis(axis_node) if axis_node is not None else None,
                     self.inertia(spec.get("inertia")), hole, spec.loc)
 
     def shape(self, spec: Map, what: str, translating: bool = False) -> Shape | None:
@@ -147,7 +143,7 @@ class BodyReader:
     def inertia(self, node: Node | None) -> Inertia | None:
         if node is None:
             return None
-        constant = self.loader.constant
+        constant = self.reading.constant
         if isinstance(node, Scalar):
             return Inertia((constant(node, "a moment of inertia"),), node.loc)
         if isinstance(node, Seq) and len(node.items) == 3 and all(isinstance(i, Seq) for i in node.items):

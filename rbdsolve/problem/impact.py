@@ -14,29 +14,24 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Collision, ImpactOptions, Particle
+from rbdsolve.problem.schema import Collision, ImpactOptions, Particle, Point
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
-
-if TYPE_CHECKING:
-    from rbdsolve.problem.questions import QuestionReader
 
 
 class ImpactReader:
-    def __init__(self, questions: QuestionReader):
-        self.questions = questions
-        self.loader = questions.loader
-        self.point_names = [p.name for p in questions.points]
+    def __init__(self, reading: Reading, points: tuple[Point, ...]):
+        self.reading = reading
+        self.point_names = [p.name for p in points]
 
     def options(self, opts: Map | None, key: Scalar) -> ImpactOptions:
         get = opts.get if opts else (lambda _: None)
-        at = self.questions.coordinate_values(get("at"), "the configuration 'at'", complete=False) \
+        at = self.reading.coordinate_values(get("at"), "the configuration 'at'", complete=False) \
             if get("at") is not None else ()
-        before = self.questions.coordinate_values(get("before"), "the velocities 'before'", complete=False) \
+        before = self.reading.coordinate_values(get("before"), "the velocities 'before'", complete=False) \
             if get("before") is not None else ()
         impulses = self.impulses(get("impulses")) if get("impulses") is not None else ()
         collisions = self.collisions(get("collisions")) if get("collisions") is not None else ()
@@ -60,8 +55,8 @@ class ImpactReader:
         return tuple(self.point(item) for item in node.items)
 
     def constant_vector(self, node: Node, what: str) -> ex.Expr:
-        scope = self.loader.scope.constants(f"{what} must be constant (parameters and numbers only)")
-        return self.loader.expr(node, ex.Kind.VECTOR, what, scope)
+        scope = self.reading.scope.constants(f"{what} must be constant (parameters and numbers only)")
+        return self.reading.expr(node, ex.Kind.VECTOR, what, scope)
 
     def impulses(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
         table = expect_mapping(node, "impulses: point -> impulse vector")
@@ -92,13 +87,13 @@ class ImpactReader:
         return Collision(point, normal, e, particle, spec.loc)
 
     def normal(self, node: Node) -> ex.Expr:
-        value = self.loader.axis(node) if _is_axis_name(node) else self.constant_vector(node, "a normal (a vector)")
+        value = self.reading.axis(node) if _is_axis_name(node) else self.constant_vector(node, "a normal (a vector)")
         if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
             raise InputError("a normal must not be the zero vector", value.loc)
         return value
 
     def restitution(self, node: Node) -> ex.Expr:
-        value = self.loader.constant(node, "a coefficient of restitution")
+        value = self.reading.constant(node, "a coefficient of restitution")
         number = ex.constant_value(value.tree)
         if number is not None and not 0 <= number <= 1:
             raise InputError(restitution_message(value.text), value.loc)
@@ -107,7 +102,7 @@ class ImpactReader:
     def particle(self, node: Node) -> Particle:
         spec = expect_mapping(node, "a particle: {mass, velocity, after}")
         check_keys(spec, ("mass", "velocity"), ("after",), "the particle")
-        mass = self.loader.constant(spec.get("mass"), "a mass")
+        mass = self.reading.constant(spec.get("mass"), "a mass")
         number = ex.constant_value(mass.tree)
         if number is not None and number <= 0:
             raise InputError(f"a particle's mass must be positive, found {mass.text}", mass.loc)
@@ -118,7 +113,7 @@ class ImpactReader:
 
     def parameter(self, node: Node) -> str:
         name = expect_scalar(node, "a parameter name").text.strip()
-        params = sorted(self.loader.scope.scalars - self.loader.scope.functions_of_time - {"t"})
+        params = sorted(self.reading.scope.scalars - self.reading.scope.functions_of_time - {"t"})
         if name not in params:
             raise InputError(f"'{name}' is not a parameter{did_you_mean(name, params)}", node.loc)
         return name

@@ -5,7 +5,6 @@ Every error names file:line:column, the key path, what was expected and what was
 
 from __future__ import annotations
 
-import keyword
 from fractions import Fraction
 from pathlib import Path
 
@@ -25,6 +24,7 @@ from rbdsolve.problem.schema import (
     ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
+from rbdsolve.problem.context import Reading
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.ranges import value_range
@@ -34,10 +34,6 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
             "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
-# t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
-RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
-    ex.DERIVATIVE_FUNCTIONS
-) | ex.VECTOR_FUNCTIONS
 
 
 def load_file(path: str | Path) -> Problem:
@@ -58,31 +54,9 @@ def load_text(text: str, name: str = "<string>") -> Problem:
     return _Loader(name).problem(parse_yaml(text, name))
 
 
-def _identifier(key: Scalar, what: str) -> str:
-    name = key.text
-    if keyword.iskeyword(name):
-        raise InputError(f"'{name}' is a Python keyword and cannot be a name; try '{name}_'", key.loc)
-    if not (name.isascii() and name.isidentifier()):
-        raise InputError(f"'{name}' is not a valid {what} name (ASCII letters, digits and _, "
-                         "not starting with a digit; Greek letters are spelled: theta)", key.loc)
-    if name.startswith("__"):
-        raise InputError("names starting with '__' are not allowed", key.loc)
-    if name in RESERVED:
-        raise InputError(f"'{name}' is reserved (a function, a constant or time t)", key.loc)
-    return name
-
-
 def _given(node: Node | None) -> Node | None:
     """A key's value, or None when the key is missing or null."""
     return None if node is None or (isinstance(node, Scalar) and node.null) else node
-
-
-def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
-    """A bare unknown name where a vector is expected is most likely a misspelt point."""
-    name = node.text.strip()
-    known = scope.all_names() | {n for n, _ in scope.refused} | ex.CONSTANTS
-    if name.isidentifier() and name not in known:
-        raise InputError(f"unknown point '{name}'{did_you_mean(name, sorted(scope.vectors))}", node.loc)
 
 
 def _names_list(node: Node, what: str) -> list[tuple[Scalar, Node | None]]:
@@ -96,51 +70,7 @@ def _names_list(node: Node, what: str) -> list[tuple[Scalar, Node | None]]:
 
 class _Loader:
     def __init__(self, file: str):
-        self.file = file
-        self.scope = ex.Scope()
-        self.positions = ex.Scope()
-        self.rates = ex.Scope()  # velocities at one instant: parameters, dot(q), velocity points
-        self.coordinate_names: frozenset[str] = frozenset()
-        self.triad_vectors: frozenset[str] = frozenset()
-        self.triad_names: tuple[str, ...] = ()
-        self.point_exprs: dict[str, ex.Expr] = {}
-        self.taken: dict[str, str] = {}  # name -> what declared it
-
-    # --- expressions -------------------------------------------------------------------
-
-    def constant(self, node: Node, what: str) -> ex.Expr:
-        """A scalar that must not change with the motion: parameters and numbers only."""
-        scope = self.scope.constants(f"{what} must be constant (parameters and numbers only)")
-        return self.expr(node, ex.Kind.SCALAR, what, scope)
-
-    def expr(self, node: Node, kind: ex.Kind, what: str, scope: ex.Scope | None = None) -> ex.Expr:
-        if isinstance(node, Seq):  # a YAML list of components is a vector literal
-            if kind != ex.Kind.VECTOR:
-                raise InputError(f"expected {what}, found a list", node.loc)
-            return self._vector_from_list(node, what, scope)
-        scalar = expect_scalar(node, what)
-        scope = scope or self.positions
-        if kind == ex.Kind.VECTOR:
-            _check_point_name(scalar, scope)
-        parsed = ex.parse(scalar.text, scalar.loc, scope, scalar.plain)
-        if parsed.kind != kind:
-            raise InputError(f"expected {what}, found a {parsed.kind.value} '{parsed.text}'", scalar.loc)
-        return parsed
-
-    def _vector_from_list(self, node: Seq, what: str, scope: ex.Scope | None) -> ex.Expr:
-        if len(node.items) not in (2, 3):
-            raise InputError(f"a vector has 2 or 3 components, found {len(node.items)}", node.loc)
-        parts = [self.expr(item, ex.Kind.SCALAR, "a number or scalar expression", scope)
-                 for item in node.items]
-        text = "[" + ", ".join(p.text for p in parts) + "]"
-        return ex.Expr(ex.Vec(tuple(p.tree for p in parts)), ex.Kind.VECTOR, text, node.loc)
-
-    def declare(self, key: Scalar, what: str) -> str:
-        name = _identifier(key, what)
-        if name in self.taken:
-            raise InputError(f"'{name}' is already declared as a {self.taken[name]}", key.loc)
-        self.taken[name] = what
-        return name
+        self.reading = Reading(file)
 
     # --- sections ----------------------------------------------------------------------
 
@@ -151,28 +81,28 @@ class _Loader:
         prescribed = self.prescribed(get("prescribed"), parameters)
         unknowns = self.unknowns(get("unknowns"))
         coordinates = self.coordinates(get("coordinates"))
-        self.coordinate_names = frozenset(c.name for c in coordinates)
+        self.reading.coordinates = tuple(c.name for c in coordinates)
         # Positions and angles may use coordinates, prescribed functions and time t;
         # velocities at an instant use parameters and the rates dot(q).
         moving = {c.name for c in coordinates} | {p.name for p in prescribed}
-        self.scope = ex.Scope(
+        self.reading.scope = ex.Scope(
             scalars=frozenset({p.name for p in parameters} | set(unknowns) | moving | {"t"}),
             functions_of_time=frozenset(moving),
         )
-        self._set_point_scopes(frozenset(), frozenset())
-        triads = OrientationReader(self).triads(get("triads"))
-        self.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
-        self.triad_names = tuple(tr.name for tr in triads)
-        self._set_point_scopes(frozenset(), frozenset())
+        self.reading.set_point_scopes(frozenset(), frozenset())
+        triads = OrientationReader(self.reading).triads(get("triads"))
+        self.reading.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
+        self.reading.triad_names = tuple(tr.name for tr in triads)
+        self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
         bodies = self.bodies(get("bodies"))
         values, ranges = self.values(get("values"), parameters)
         return Problem(
-            file=self.file,
-            title=self.text(get("title"), "a title") or Path(self.file).stem,
-            source=self.text(get("source"), "a source"),
-            statement=self.text(get("statement"), "a statement"),
+            file=self.reading.file,
+            title=self.reading.text(get("title"), "a title") or Path(self.reading.file).stem,
+            source=self.reading.text(get("source"), "a source"),
+            statement=self.reading.text(get("statement"), "a statement"),
             parameters=parameters,
             coordinates=coordinates,
             points=points,
@@ -188,33 +118,18 @@ class _Loader:
             ranges=ranges,
         )
 
-    def text(self, node: Node | None, what: str) -> str:
-        if node is None or (isinstance(node, Scalar) and node.null):
-            return ""
-        return expect_scalar(node, what).text.strip()
-
-    def optional_expr(self, node: Node | None, kind: ex.Kind, what: str) -> ex.Expr | None:
-        if node is None or (isinstance(node, Scalar) and node.null):
-            return None
-        return self.expr(node, kind, what, self.positions)
-
-    def optional_constant(self, node: Node | None, what: str) -> ex.Expr | None:
-        if node is None or (isinstance(node, Scalar) and node.null):
-            return None
-        return self.constant(node, what)
-
     def gravity(self, node: Node | None) -> ex.Expr | None:
         if node is None or (isinstance(node, Scalar) and node.null):
             return None
-        scope = self.scope.constants("gravity must be constant (parameters and numbers only)")
-        return self.expr(node, ex.Kind.VECTOR, "a gravity vector such as [0, -g]", scope)
+        scope = self.reading.scope.constants("gravity must be constant (parameters and numbers only)")
+        return self.reading.expr(node, ex.Kind.VECTOR, "a gravity vector such as [0, -g]", scope)
 
     def parameters(self, node: Node | None) -> tuple[Parameter, ...]:
         if node is None:
             return ()
         out = []
         for key, options in _names_list(node, "parameter"):
-            name = self.declare(key, "parameter")
+            name = self.reading.declare(key, "parameter")
             description, positive = "", True
             if isinstance(options, Scalar):
                 description = options.text
@@ -224,7 +139,7 @@ class _Loader:
             elif options is not None:
                 opts = expect_mapping(options, "parameter options")
                 check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
-                description = self.text(opts.get("description"), "a description")
+                description = self.reading.text(opts.get("description"), "a description")
                 if opts.get("positive") is not None:
                     positive = read_bool(opts.get("positive"), "true or false")
             out.append(Parameter(name, description, positive, key.loc))
@@ -238,26 +153,26 @@ class _Loader:
         scope = ex.Scope(frozenset({p.name for p in parameters} | {"t"}))
         out = []
         for key, value in table.entries:
-            name = self.declare(key, "prescribed function")
+            name = self.reading.declare(key, "prescribed function")
             if isinstance(value, Scalar) and value.text.strip() == "unknown":
                 out.append(Prescribed(name, None, key.loc))
             else:
                 what = f"'unknown' or an expression in t and the parameters for '{name}'"
-                out.append(Prescribed(name, self.expr(value, ex.Kind.SCALAR, what, scope), key.loc))
+                out.append(Prescribed(name, self.reading.expr(value, ex.Kind.SCALAR, what, scope), key.loc))
         return tuple(out)
 
     def unknowns(self, node: Node | None) -> tuple[str, ...]:
         """Constant unknowns (a steady spin rate), found by the questions that need them."""
         if node is None:
             return ()
-        return tuple(self.declare(key, "unknown") for key, _ in _names_list(node, "unknown"))
+        return tuple(self.reading.declare(key, "unknown") for key, _ in _names_list(node, "unknown"))
 
     def coordinates(self, node: Node | None) -> tuple[Coordinate, ...]:
         if node is None:
             return ()
         out = []
         for key, options in _names_list(node, "coordinate"):
-            name = self.declare(key, "coordinate")
+            name = self.reading.declare(key, "coordinate")
             kind = CoordinateKind.AUTO
             if options is not None:
                 word = expect_scalar(options, "a coordinate kind ('angle' or 'length')")
@@ -272,41 +187,23 @@ class _Loader:
             out.append(Coordinate(name, kind, key.loc))
         return tuple(out)
 
-    def _set_point_scopes(self, positions: frozenset[str], velocities: frozenset[str]) -> None:
-        """Positions name position points; velocities at an instant name velocity points
-        and the rates dot(q), never the coordinates themselves (the configuration of an
-        instant is given by the question, with 'at:')."""
-        positions = positions | self.triad_vectors
-        self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
-        why_velocity = "it is given by its velocity; positions name points given by position"
-        self.positions = ex.Scope(self.scope.scalars, positions,
-                                  refused=tuple((n, why_velocity) for n in sorted(velocities)))
-        coordinates = self.coordinate_names
-        why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
-               "give the configuration with the question's 'at:'")
-        why_position = "it is given by its position; a velocity names points given by velocity"
-        refused = [(n, why) for n in sorted(self.scope.functions_of_time | {"t"})]
-        refused += [(n, why_position) for n in sorted(positions)]
-        self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates,
-                              tuple(refused), max_order=1)
-
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:
             return ()
         table = expect_mapping(node, "points: name -> position vector, or {velocity: vector}")
-        names = [self.declare(key, "point") for key, _ in table.entries]
+        names = [self.reading.declare(key, "point") for key, _ in table.entries]
         moving = {k.text for k, v in table.entries if isinstance(v, Map)}
-        self._set_point_scopes(frozenset(n for n in names if n not in moving), frozenset(moving))
+        self.reading.set_point_scopes(frozenset(n for n in names if n not in moving), frozenset(moving))
         positions, velocities = {}, {}
         for key, value in table.entries:
             if key.text in moving:
                 check_keys(value, ("velocity",), (), f"point '{key.text}'")
-                velocities[key.text] = self.expr(value.get("velocity"), ex.Kind.VECTOR,
-                                                 f"the velocity of point '{key.text}' (a vector)", self.rates)
+                velocities[key.text] = self.reading.expr(value.get("velocity"), ex.Kind.VECTOR,
+                                                 f"the velocity of point '{key.text}' (a vector)", self.reading.rates)
             else:
-                positions[key.text] = self.expr(value, ex.Kind.VECTOR,
-                                                f"the position of point '{key.text}' (a vector)", self.positions)
-        self.point_exprs = positions
+                positions[key.text] = self.reading.expr(value, ex.Kind.VECTOR,
+                                                f"the position of point '{key.text}' (a vector)", self.reading.positions)
+        self.reading.point_exprs = positions
         return (tuple(Point(name, positions[name]) for name in _dependency_order(positions))
                 + tuple(Point(name, None, velocities[name]) for name in _dependency_order(velocities)))
 
@@ -317,58 +214,34 @@ class _Loader:
         table = expect_mapping(node, "frames: name -> frame")
         out = []
         for key, value in table.entries:
-            name = self.declare(key, "frame")
+            name = self.reading.declare(key, "frame")
             spec = expect_mapping(value, f"frame '{name}'")
             check_keys(spec, (), ("origin", "axis", "rate"), f"frame '{name}'")
             origin, axis, rate = (_given(spec.get(k)) for k in ("origin", "axis", "rate"))
             if (axis is None) != (rate is None):
                 raise InputError(f"a turning frame needs both 'axis' and 'rate' (frame '{name}')", spec.loc)
             if origin is not None:
-                origin = self.expr(origin, ex.Kind.VECTOR, "the frame's origin (a point or a vector)")
-                moving = sorted(self.coordinate_names & self._point_names(origin))
+                origin = self.reading.expr(origin, ex.Kind.VECTOR, "the frame's origin (a point or a vector)")
+                moving = sorted(frozenset(self.reading.coordinates) & self.reading.point_names(origin))
                 if moving:
                     raise InputError(f"frame '{name}' must move in a given way, but its origin depends on the "
                                      f"coordinate {moving[0]}", origin.loc)
-            out.append(Frame(name, origin, self.axis(axis) if axis is not None else None,
-                             self.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
+            out.append(Frame(name, origin, self.reading.axis(axis) if axis is not None else None,
+                             self.reading.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
         return tuple(out)
-
-    def _point_names(self, expr: ex.Expr) -> set[str]:
-        """Every name an expression uses, through the points it names."""
-        found, todo = set(), set(expr.names())
-        while todo:
-            name = todo.pop()
-            found.add(name)
-            todo |= (self.point_exprs[name].names() - found) if name in self.point_exprs else set()
-        return found
 
     def bodies(self, node: Node | None) -> tuple[Body, ...]:
         if node is None:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
-        reader = BodyReader(self)
-        return tuple(reader.body(self.declare(k, "body"), v) for k, v in table.entries)
-
-    def axis(self, node: Node) -> ex.Expr:
-        """x, y, z (or -x, …) or a direction vector in body axes."""
-        if isinstance(node, Scalar) and node.text.strip() in _AXES:
-            text = node.text.strip()
-            tree = ex.Vec(tuple(ex.Num(Fraction(v)) for v in _AXES[text]))
-            return ex.Expr(tree, ex.Kind.VECTOR, text, node.loc)
-        if isinstance(node, Scalar) and node.text.strip().lstrip("-").isidentifier():
-            raise InputError(f"expected an axis x, y, z, -x, -y, -z or a direction vector, "
-                             f"found '{node.text.strip()}'", node.loc)
-        scope = self.scope.constants("an axis must be constant (parameters and numbers only)")
-        value = self.expr(node, ex.Kind.VECTOR, "an axis: x, y, z or a direction vector", scope)
-        if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
-            raise InputError("an axis direction must not be the zero vector", value.loc)
-        return value
+        reader = BodyReader(self.reading)
+        return tuple(reader.body(self.reading.declare(k, "body"), v) for k, v in table.entries)
 
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
             return ()
         table = expect_mapping(node, "springs: name -> spring")
-        return tuple(self.spring(self.declare(k, "spring"), v) for k, v in table.entries)
+        return tuple(self.spring(self.reading.declare(k, "spring"), v) for k, v in table.entries)
 
     def spring(self, name: str, node: Node) -> Spring:
         what = f"spring '{name}'"
@@ -377,13 +250,13 @@ class _Loader:
         between, angle = spec.get("between"), spec.get("angle")
         if (between is None) == (angle is None):
             raise InputError(f"{what} needs either 'between: [A, B]' (linear) or 'angle:' (torsional)", spec.loc)
-        stiffness = self.constant(spec.get("stiffness"), "a stiffness")
+        stiffness = self.reading.constant(spec.get("stiffness"), "a stiffness")
         refuse_negative(stiffness, "stiffness")
         ends = None
         if between is not None:
             if not isinstance(between, Seq) or len(between.items) != 2:
                 raise InputError(f"expected two ends [A, B], found {describe(between)}", between.loc)
-            ends = tuple(self.expr(e, ex.Kind.VECTOR, "a point name or position vector", self.positions)
+            ends = tuple(self.reading.expr(e, ex.Kind.VECTOR, "a point name or position vector", self.reading.positions)
                          for e in between.items)
         elif spec.get("natural_length") is not None:
             raise InputError("'natural_length' belongs to a linear spring; use 'rest' with 'angle'", spec.get("natural_length").loc)
@@ -393,9 +266,9 @@ class _Loader:
             name=name,
             stiffness=stiffness,
             ends=ends,
-            natural_length=self.optional_constant(spec.get("natural_length"), "a natural length"),
-            angle=self.optional_expr(angle, ex.Kind.SCALAR, "an angle expression"),
-            rest=self.optional_constant(spec.get("rest"), "a rest angle"),
+            natural_length=self.reading.optional_constant(spec.get("natural_length"), "a natural length"),
+            angle=self.reading.optional_expr(angle, ex.Kind.SCALAR, "an angle expression"),
+            rest=self.reading.optional_constant(spec.get("rest"), "a rest angle"),
             loc=spec.loc,
         )
 
@@ -426,12 +299,10 @@ class _Loader:
         if not isinstance(node, Seq) or not node.items:
             found = "an empty list" if isinstance(node, Seq) else describe(node)
             raise InputError(f"expected a list of questions, found {found}", node.loc)
-        reader = QuestionReader(self, coordinates, bodies, points, tuple(f.name for f in frames))
+        reader = QuestionReader(self.reading, coordinates, bodies, points, tuple(f.name for f in frames))
         return tuple(reader.question(item) for item in node.items)
 
 
-_AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1),
-         "-x": (-1, 0, 0), "-y": (0, -1, 0), "-z": (0, 0, -1)}
 
 
 def _dependency_order(points: dict[str, ex.Expr]) -> list[str]:

@@ -16,21 +16,17 @@ vectors (e1, e2, e3) are vectors in positions.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.schema import Triad, Turn
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
-if TYPE_CHECKING:
-    from rbdsolve.problem.loader import _Loader
-
 
 class OrientationReader:
-    def __init__(self, loader: _Loader):
-        self.loader = loader
+    def __init__(self, reading: Reading):
+        self.reading = reading
 
     def triads(self, node: Node | None) -> tuple[Triad, ...]:
         if node is None:
@@ -38,14 +34,14 @@ class OrientationReader:
         table = expect_mapping(node, "triads: name -> {turns, vectors}")
         out = []
         for key, value in table.entries:
-            name = self.loader.declare(key, "triad")
+            name = self.reading.declare(key, "triad")
             spec = expect_mapping(value, f"triad '{name}'")
             check_keys(spec, ("vectors",), ("turns", "space_turns"), f"triad '{name}'")
             vectors = spec.get("vectors")
             if not isinstance(vectors, Seq) or len(vectors.items) != 3:
                 raise InputError("expected the names of the three unit vectors, as in [e1, e2, e3]",
                                  vectors.loc)
-            names = tuple(self.loader.declare(expect_scalar(v, "a vector name"), "unit vector")
+            names = tuple(self.reading.declare(expect_scalar(v, "a vector name"), "unit vector")
                           for v in vectors.items)
             out.append(Triad(name, self.triad_turns(spec), names, spec.loc))
         return tuple(out)
@@ -66,9 +62,9 @@ class OrientationReader:
     def turn(self, node: Node) -> Turn:
         if not isinstance(node, Seq) or len(node.items) != 2:
             raise InputError(f"expected a turn [axis, angle], such as [z, psi], found {describe(node)}", node.loc)
-        axis = self.loader.axis(node.items[0])
-        angle = self.loader.expr(node.items[1], ex.Kind.SCALAR, "an angle (a scalar expression)",
-                                 self.loader.positions)
+        axis = self.reading.axis(node.items[0])
+        angle = self.reading.expr(node.items[1], ex.Kind.SCALAR, "an angle (a scalar expression)",
+                                 self.reading.positions)
         return Turn(axis, angle)
 
     def orientation(self, node: Node, triads: tuple[str, ...]) -> tuple[str | Turn, ...]:

@@ -7,10 +7,9 @@ knows about the scene: coordinates for ``modes``, bodies and points for ``inerti
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.context import Reading
 from rbdsolve.problem.amplitudes import amplitudes
 from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.schema import (
@@ -30,9 +29,6 @@ from rbdsolve.problem.schema import (
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
-if TYPE_CHECKING:
-    from rbdsolve.problem.loader import _Loader
-
 OPTIONS = {
     QuestionKind.EOM: ("frames",),
     QuestionKind.EQUILIBRIA: ("frame",),
@@ -45,9 +41,9 @@ OPTIONS = {
 
 
 class QuestionReader:
-    def __init__(self, loader: _Loader, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
+    def __init__(self, reading: Reading, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
                  points: tuple[Point, ...], frames: tuple[str, ...] = ()):
-        self.loader = loader
+        self.reading = reading
         self.frames = frames
         self.coordinates = coordinates
         self.bodies = bodies
@@ -94,7 +90,7 @@ class QuestionReader:
         if kind is QuestionKind.STEADY_SPIN:
             return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
         if kind is QuestionKind.IMPACT:
-            return Question(kind, ImpactReader(self).options(opts, key), key.loc)
+            return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
         return Question(kind, None, key.loc)
 
     def frame(self, node: Node | None) -> str | None:
@@ -119,22 +115,8 @@ class QuestionReader:
             raise InputError(f"'{kind.value}' needs positions, but {given[0]} is given by its velocity "
                              "at one instant (such a scene answers 'impact' questions)", key.loc)
 
-    def coordinate_values(self, node: Node, what: str, complete: bool) -> tuple[tuple[str, ex.Expr], ...]:
-        """coordinate -> constant value, in the coordinates' order."""
-        table = expect_mapping(node, f"{what}: coordinate -> value")
-        names = [c.name for c in self.coordinates]
-        given = {}
-        for key, value in table.entries:
-            if key.text not in names:
-                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
-            given[key.text] = self.loader.constant(value, f"a value in {what}")
-        missing = [n for n in names if n not in given]
-        if complete and missing:
-            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
-        return tuple((n, given[n]) for n in names if n in given)
-
     def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
-        return self.coordinate_values(node, "an equilibrium", complete=True)
+        return self.reading.coordinate_values(node, "an equilibrium", complete=True)
 
     def body(self, opts: Map | None, key: Scalar, kind: QuestionKind) -> str:
         """The body a question is about: 'body: NAME', or the scene's only body."""
@@ -152,7 +134,7 @@ class QuestionReader:
 
     def steady_motion(self, opts: Map | None, key: Scalar) -> SteadyMotionOptions:
         get = opts.get if opts else (lambda _: None)
-        triads = self.loader.triad_names
+        triads = self.reading.triad_names
         triad_node = get("triad")
         if triad_node is None:
             if len(triads) != 1:
@@ -187,7 +169,7 @@ class QuestionReader:
         if node is None:
             return ()
         items = node.items if isinstance(node, Seq) else [node]
-        return tuple(self.loader.constant(item, what) for item in items)
+        return tuple(self.reading.constant(item, what) for item in items)
 
     def reactions(self, node: Node | None) -> tuple[Reaction, ...]:
         """[{at: POINT, force: VECTOR}, ...]: contact forces with unknown magnitudes."""
@@ -201,7 +183,7 @@ class QuestionReader:
             spec = expect_mapping(item, "a reaction {at: POINT, force: VECTOR}")
             check_keys(spec, ("at", "force"), (), "reaction")
             found.append(Reaction(self.point(spec.get("at")),
-                                  self.loader.expr(spec.get("force"), ex.Kind.VECTOR, "a force vector")))
+                                  self.reading.expr(spec.get("force"), ex.Kind.VECTOR, "a force vector")))
         return tuple(found)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
@@ -216,11 +198,11 @@ class QuestionReader:
 
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""
-        return self.loader.expr(node, ex.Kind.VECTOR, "a point name or position vector")
+        return self.reading.expr(node, ex.Kind.VECTOR, "a point name or position vector")
 
     def axes(self, node: Node) -> tuple[ex.Expr, ex.Expr, ex.Expr]:
         if not isinstance(node, Seq) or len(node.items) != 3:
             raise InputError("expected three axis vectors [e1, e2, e3] (unit vectors of the "
                              "frame, in scene axes)", node.loc)
-        vectors = [self.loader.axis(item) for item in node.items]  # x, -y, … or vectors
+        vectors = [self.reading.axis(item) for item in node.items]  # x, -y, … or vectors
         return vectors[0], vectors[1], vectors[2]

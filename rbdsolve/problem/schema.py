@@ -233,7 +233,7 @@ class EquilibriaOptions:
 class ModesOptions:
     about: tuple[tuple[str, Expr], ...] | None  # the equilibrium; None: the stable one
     frame: str | None = None
-    check_amplitudes: tuple[Fraction, ...] = ()  # amplitudes to simulate each mode at (solvers/amplitude.py)
+    check_amplitudes: tuple[Fraction, ...] = ()  # amplitudes to simulate each mode at (solvers/modes/amplitude.py)
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,7 @@ import base64
 import html
 from pathlib import Path
 
-from rbdsolve.render.mathtext import relation_text
+from rbdsolve.form.printers import relation_text
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind

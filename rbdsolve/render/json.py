@@ -18,10 +18,11 @@ from enum import Enum
 import sympy as sp
 
 from rbdsolve.errors import InputError, InternalError, UnsolvedError
-from rbdsolve.render.mathtext import to_latex
-from rbdsolve.report.math import Math, plain
+from rbdsolve.form.printers import to_latex
+from rbdsolve.form.display import Math, plain
 from rbdsolve.report.tree import map_leaves
-from rbdsolve.report.steps import ProblemReport, Relation, Solution, Step
+from rbdsolve.report.steps import ProblemReport, Solution, Step
+from rbdsolve.form.display import Relation
 
 SCHEMA_VERSION = 1
 

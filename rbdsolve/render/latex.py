@@ -6,7 +6,7 @@ import re
 import unicodedata
 
 from rbdsolve.render.markdown import relation_latex
-from rbdsolve.render.mathtext import GREEK
+from rbdsolve.form.printers import GREEK
 from rbdsolve.render.numbers import numeric_lines
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind

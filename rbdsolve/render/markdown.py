@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from rbdsolve.render.mathtext import to_latex
+from rbdsolve.form.printers import to_latex
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, Picture
-from rbdsolve.report.steps import ProblemReport, Relation, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Step, StepKind
+from rbdsolve.form.display import Relation
 
 
 def relation_latex(rel: Relation) -> str:

@@ -8,7 +8,7 @@ from rich.padding import Padding
 from rich.rule import Rule
 from rich.text import Text
 
-from rbdsolve.render.mathtext import relation_text
+from rbdsolve.form.printers import relation_text
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
 

@@ -10,7 +10,7 @@ import json
 from fractions import Fraction
 
 from rbdsolve.render.latex import PREAMBLE, text
-from rbdsolve.solvers.variants import VariantTable
+from rbdsolve.report.variants import VariantTable
 
 NUMBER_FORMAT = "{:.10g}"  # ten significant digits: exact to well past what an exam marks
 

@@ -1,16 +1,5 @@
-"""The vocabulary of a solution: typed steps, display values, answers and solutions.
-
-Solvers build these as data; renderers turn them into text. Nothing here prints.
+"""The vocabulary of results: typed steps, solutions, problem reports, answer keys and
+variant tables. Solvers and the teaching layer build these as data; renderers turn them
+into text. Nothing here prints or computes; how mathematics is arranged for reading
+lives in rbdsolve.form.
 """
-
-from rbdsolve.report.math import Scaled, Terms
-from rbdsolve.report.steps import (
-    ProblemReport,
-    Relation,
-    Route,
-    Solution,
-    Step,
-    StepKind,
-)
-
-__all__ = ["ProblemReport", "Relation", "Route", "Scaled", "Solution", "Step", "StepKind", "Terms"]

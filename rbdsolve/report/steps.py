@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 from typing import Mapping
 
-from rbdsolve.report.math import Math
+from rbdsolve.form.display import Relation
 
 
 class StepKind(Enum):
@@ -25,18 +25,6 @@ class StepKind(Enum):
 class Route(Enum):
     EXACT = "exact"
     NUMERIC = "numeric"
-
-
-@dataclass(frozen=True)
-class Relation:
-    """[lead] lhs op rhs [= more …], e.g. T = T₁ + T₂ = m r² […], or, following the
-    previous relation, ⇒ 25/48 μ² − 37/24 μ + 1 = 0 (lead '⇒')."""
-
-    lhs: Math
-    rhs: Math
-    op: str = "="
-    more: tuple[Math, ...] = ()
-    lead: str = ""
 
 
 @dataclass(frozen=True)

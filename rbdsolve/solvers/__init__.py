@@ -1,160 +1,60 @@
-"""Solver families: one module per family, each a pure function
+"""The solver families, one folder each: the table of contents of rbdsolve's answers.
+
+Each family has the same rooms: ``answers.py`` (what it answers, both routes: frozen
+dataclasses, the JSON contract), ``exact.py`` (sympy, rational arithmetic) and
+``numeric.py`` (floating point, with an error estimate), each route a pure function
 
     solve(question, model, options) -> Solution
 
-``solve_file`` builds a problem's model and runs every question, each within its time
-budget (``budget.within``), and times each one.
+and ``steps.py``, where both routes write their worked solutions. ``shared/`` holds the
+machinery several families use: options and routes, the time budget, signs decided
+exactly, numeric values, the model section of a report, the numeric model of a scene
+and its root search, moving frames.
+
+    family          question          what it answers
+    eom/            eom               Lagrange's equations, in moving frames too
+    equilibria/     equilibria        ∂V/∂q = 0, each equilibrium's stability
+    modes/          modes             M, K, det(K − λM) = 0, eigenvalues, frequencies, shapes
+    impact/         impact            generalized impulses, velocities after, energy lost
+    inertia/        inertia           a body's tensor about a point, principal moments and axes
+    steady_spin/    steady_spin       Euler's equations, spins about principal axes, stability
+    steady_motion/  steady_motion     rolling conditions, angular momentum balance, solve_for
 """
 
 from __future__ import annotations
 
-import importlib
-import math
-import time
-from dataclasses import dataclass, replace
-from typing import Callable
-
-from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
-from rbdsolve.report import steps as st
-from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
-from rbdsolve.solvers.budget import OutOfTime, within
-from rbdsolve.solvers.common import Options, RouteChoice, missing_values, numeric
-from rbdsolve.solvers.energies import coordinates_only, summarize_model
-from rbdsolve.solvers.frames import frame_of, solve_in_frame
-
-
-@dataclass(frozen=True)
-class Family:
-    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
-
-    exact: Callable[[Question, Model, Options], Solution]
-    numeric: Callable[[Question, Model, Options], Solution]
-
-
-def _later(module: str) -> Callable[[Question, Model, Options], Solution]:
-    """A route whose module is imported when first asked (numpy, scipy and the numeric
-    machinery stay out of a process that only takes the exact route)."""
-
-    def solve(question: Question, model: Model, options: Options) -> Solution:
-        return importlib.import_module(f"rbdsolve.solvers.{module}").solve(question, model, options)
-
-    solve.__qualname__ = f"{module}.solve"
-    return solve
-
+from rbdsolve.report.steps import ProblemReport, Solution
+from rbdsolve.solvers.shared import routes
+from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.shared.routes import Family, later
 
 FAMILIES = {
-    QuestionKind.EOM: Family(_later("eom"), _later("eom_numeric")),
-    QuestionKind.EQUILIBRIA: Family(_later("equilibria"), _later("equilibria_numeric")),
-    QuestionKind.MODES: Family(_later("modes"), _later("modes_numeric")),
-    QuestionKind.INERTIA: Family(_later("inertia"), _later("inertia_numeric")),
-    QuestionKind.IMPACT: Family(_later("impact"), _later("impact_numeric")),
-    QuestionKind.STEADY_SPIN: Family(_later("steady_spin"), _later("steady_spin_numeric")),
-    QuestionKind.STEADY_MOTION: Family(_later("steady_motion"), _later("steady_motion_numeric")),
+    QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric")),
+    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric")),
+    QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric")),
+    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric")),
+    QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),
+    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
 }
 
 
-def solve_question(question: Question, model: Model, options: Options) -> Solution:
-    """Run one question's solver on the route asked for, each route within its own time
-    budget; an unanswerable question, or one past its budget, becomes a Solution with an
-    error (exit code 1), not an exception, so the other questions still run."""
-    start = time.perf_counter()
-    solution = _routed(question, model, options)
-    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
-    return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
-
-
-def _finite_estimate(solution: Solution) -> Solution:
-    """``error_estimate`` is a number or None (docs/json.md): a route whose estimate is not
-    finite (a singular matrix in it) gives none, and a warning says so, rather than an
-    infinity that strict JSON cannot hold."""
-    estimate = solution.error_estimate
-    if estimate is None or math.isfinite(estimate):
-        return solution
-    note = (f"no error estimate: the route's estimate is not finite ({estimate}), e.g. a singular Hessian "
-            "where the equilibria form a continuum")
-    return replace(solution, error_estimate=None, warnings=(*solution.warnings, note))
-
-
-def _routed(question: Question, model: Model, options: Options) -> Solution:
-    """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
-    parameter lacks a value. Each route gets the whole budget (auto may take twice it).
-    The Solution's route is the route that ran last; when both fail, its error gives
-    both routes' reasons."""
-    family = FAMILIES[question.kind]
-    if options.route is RouteChoice.NUMERIC:
-        return _attempt(Route.NUMERIC, family.numeric, question, model, options)
-    exact = _attempt(Route.EXACT, family.exact, question, model, options)
-    if options.route is RouteChoice.EXACT or exact.solved or missing_values(model):
-        return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, model, options, " (numeric route)")
-    if not solution.solved:
-        return replace(solution, error=f"the exact route could not answer ({exact.error}); "
-                                       f"nor could the numeric route ({solution.error})")
-    note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
-    return replace(solution, warnings=(note, *solution.warnings))
-
-
-def _attempt(route: Route, solver, question: Question, model: Model, options: Options, label: str = "") -> Solution:
-    """The solver's Solution within the budget, or a Solution on ``route`` with the
-    reason it could not answer."""
-    try:
-        return _run(solver, question, model, options, label)
-    except (UnsolvedError, OutOfTime) as exc:
-        return _failed(question, route, str(exc))
-
-
-def _failed(question: Question, route: Route, error: str) -> Solution:
-    return Solution(question.kind.value, route, None, (), error=error)
-
-
-def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:
-    with within(options.budget, f"'{question.kind.value}'{route}"):
-        if frame_of(question) is None:
-            return solver(question, model, options)
-        return solve_in_frame(solver, question, model, options)
+def solve_question(question: Question, model: Model, options: Options = Options()) -> Solution:
+    """One question, on the route ``options`` asks for, within its budget: an unanswerable
+    question becomes a Solution with an error (exit code 1), not an exception."""
+    return routes.answer(FAMILIES[question.kind], question, model, options)
 
 
 def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
     """Every question of a model already built, each within the budget."""
-    return _solve(model.problem, lambda: model, options)
+    return routes.report(model.problem, lambda: model, solve_question, options)
 
 
 def solve_file(problem: Problem, options: Options = Options()) -> ProblemReport:
     """Build the model of ``problem``, then answer every question, each within the budget."""
-    return _solve(problem, lambda: build_model(problem), options)
-
-
-def _solve(problem: Problem, build: Callable[[], Model], options: Options) -> ProblemReport:
-    """The model section (T, V, the parameter values) within one budget, then each
-    question within its own. A model past its budget is an UnsolvedError for the whole
-    file (exit code 1), said in one line, except on auto with every value given when
-    only the expansion of T and V ran out: the section then shows the coordinates only,
-    as on the numeric route, and says why."""
-    model = None  # set once built, with its values: only the summary is left then
-    try:
-        with within(options.budget, "the model (T and V)"):
-            built = build()
-            model = built.with_values(options.values) if options.values else built
-            summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
-    except OutOfTime as exc:
-        if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
-            raise UnsolvedError(f"{problem.file}: {exc}") from None
-        summary = _coordinates_instead(model, exc)
-    solutions = tuple(solve_question(q, model, options) for q in problem.questions)
-    values = {str(k): float(v) for k, v in model.values.items()}
-    symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
-    return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
-                         summary, solutions, values, symbols)
-
-
-def _coordinates_instead(model: Model, exc: OutOfTime) -> ModelSummary:
-    """The numeric route's model section, with a note that T and V ran out of time."""
-    summary = coordinates_only(model)
-    why = st.note(f"warning: {exc}; T and V are not expanded, as on the numeric route "
-                  "(every parameter has a value)")
-    return replace(summary, steps=(why, *summary.steps))
+    return routes.report(problem, lambda: build_model(problem), solve_question, options)
 
 
 __all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_file", "solve_problem", "solve_question"]

@@ -7,8 +7,9 @@ import json
 
 from click.testing import CliRunner
 
-from conftest import PROBLEMS, SEED
 from rbdsolve.cli import main
+
+from conftest import PROBLEMS, SEED
 
 PENDULUM = PROBLEMS / "examples" / "pendulum.yaml"
 BAD = PROBLEMS.parent / "tests" / "problem" / "bad" / "001-yaml-unclosed-flow-mapping.yaml"

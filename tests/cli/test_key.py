@@ -9,10 +9,11 @@ import subprocess
 import pytest
 from click.testing import CliRunner
 
-from conftest import SEED, needs_tex
 from rbdsolve.cli import main
 from rbdsolve.problem import load_file
 from rbdsolve.report.key import default_title
+
+from conftest import SEED, needs_tex
 
 BAD = SEED.parents[1] / "tests" / "problem" / "bad" / "001-yaml-unclosed-flow-mapping.yaml"
 SEED_FILES = sorted(p for p in SEED.glob("*.yaml") if not p.name.endswith(".expected.yaml"))

@@ -16,11 +16,12 @@ from pathlib import Path
 import pytest
 from scipy.special import ellipk
 
-from conftest import SIMPLE_PENDULUM
 from rbdsolve.errors import InputError
 from rbdsolve.problem import load_text
 from rbdsolve.render.json import render_report
 from rbdsolve.solvers import Options, RouteChoice, solve_file
+
+from conftest import SIMPLE_PENDULUM
 
 ROOT = Path(__file__).resolve().parents[2]
 PENDULUM = SIMPLE_PENDULUM + """\

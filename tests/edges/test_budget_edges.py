@@ -15,7 +15,7 @@ import time
 
 import pytest
 
-from rbdsolve.solvers.budget import available
+from rbdsolve.solvers.shared.budget import available
 
 pytestmark = pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
 

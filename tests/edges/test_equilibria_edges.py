@@ -18,8 +18,10 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
-from rbdsolve.solvers import equilibria, equilibria_numeric, solve_problem
-from rbdsolve.solvers.common import Options, RouteChoice
+from rbdsolve.solvers import solve_problem
+from rbdsolve.solvers.equilibria import exact as equilibria
+from rbdsolve.solvers.equilibria import numeric as equilibria_numeric
+from rbdsolve.solvers.shared.options import Options, RouteChoice
 
 TOL = 1e-9
 

@@ -17,12 +17,13 @@ import mpmath
 import pytest
 import sympy as sp
 
-from conftest import CART_PENDULUM
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.render.json import render_report
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
-from rbdsolve.solvers.modes import Motion
+from rbdsolve.solvers.modes.answers import Motion
+
+from conftest import CART_PENDULUM
 
 EXACT, NUMERIC = Options(route=RouteChoice.EXACT), Options(route=RouteChoice.NUMERIC)
 

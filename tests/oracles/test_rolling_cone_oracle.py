@@ -32,11 +32,12 @@ import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
-from conftest import PROBLEMS
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.json import report_object
 from rbdsolve.solvers import solve_problem
+
+from conftest import PROBLEMS
 
 m, h, alpha, g, Omega = sp.symbols("m h alpha g Omega", positive=True)
 N_, x_N = sp.symbols("N x_N", real=True)

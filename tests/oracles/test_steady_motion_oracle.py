@@ -26,7 +26,7 @@ that these tests can fail: measured, a 0.1 % error moves the tilt by 3e-3 (top) 
 the tilt by 0.13 to 0.17 and the radius by 0.4.
 
 Scenes and conventions (checked against the YAML files and
-``rbdsolve/solvers/steady_motion.py``):
+``rbdsolve/solvers/steady_motion/exact.py``):
 
 - ``problems/steady/heavy-top.yaml``: T = Rz(Omega t) Rx(theta), body = T Rz(spin t),
   i.e. z-x-z Euler angles about the fixed point O with psi = Omega t, theta constant,

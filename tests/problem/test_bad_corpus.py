@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import re
 import shlex
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+import tomllib
 from click.testing import CliRunner
 
 from rbdsolve.cli import main

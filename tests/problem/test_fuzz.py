@@ -26,8 +26,9 @@ from click.testing import CliRunner
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from conftest import PROBLEMS
 from rbdsolve.cli import main
+
+from conftest import PROBLEMS
 
 FUZZ_EXAMPLES = int(os.environ.get("RBDSOLVE_FUZZ_EXAMPLES", "60"))
 BUDGET = 2.0

@@ -13,8 +13,7 @@ import pytest
 
 from rbdsolve.errors import InputError, Location
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem import load_file, load_text
-from rbdsolve.problem import yamlnodes
+from rbdsolve.problem import load_file, load_text, yamlnodes
 
 HERE = Location("p.yaml", 3, 9, ("bodies", "bob", "mass"))
 SCOPE = ex.Scope(frozenset({"m", "x"}))

@@ -7,11 +7,12 @@ import json
 import pytest
 import sympy as sp
 
-from conftest import PROBLEMS
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.json import render_report
 from rbdsolve.solvers import solve_problem
+
+from conftest import PROBLEMS
 
 FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
 

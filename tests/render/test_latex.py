@@ -5,11 +5,12 @@ from __future__ import annotations
 
 import subprocess
 
-from conftest import PROBLEMS, needs_tex
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.latex import render_document, text
 from rbdsolve.solvers import solve_problem
+
+from conftest import PROBLEMS, needs_tex
 
 
 def test_prose_becomes_latex_text() -> None:

@@ -1,0 +1,9 @@
+"""The exam form of mathematics, in one home: how a result is arranged for reading.
+
+    display.py   display values: a sum in order, a scale pulled out, a relation
+    tidy.py      bounded, targeted simplification of one coefficient or fraction
+    arrange.py   common scales, the exam's order of terms, vectors along a basis
+    printers.py  unicode for terminals and LaTeX for documents
+
+Used by the model (tidy coefficients), the solvers' steps and every renderer; imports
+nothing of rbdsolve but itself."""

@@ -1,0 +1,301 @@
+"""Math as text: readable unicode for terminals, LaTeX for documents.
+
+Both printers show a coordinate θ(t) as θ, its derivatives as θ̇ and θ̈, Greek names as
+letters, and a rational coefficient in front (7/8 θ̇², as an exam solution writes it).
+Display values (:class:`Scaled`, :class:`Terms`, matrices) are laid out here too.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.printing.latex import LatexPrinter
+from sympy.printing.str import StrPrinter
+
+from rbdsolve.form.display import Along, Label, Math, Product, Scaled, Terms
+
+GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
+    "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "lamda": "λ", "mu": "μ",
+    "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
+    "phi": "φ", "varphi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
+    "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
+    "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
+}  # fmt: skip
+_SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
+_SUP = str.maketrans("0123456789+-=()n", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿ")
+_SUBSCRIPTABLE = set("0123456789+-=()aehijklmnoprstuvx")
+
+
+def split_name(name: str) -> tuple[str, str]:
+    """'omega0' -> ('omega', '0'); 'y_A' -> ('y', 'A'); 'T_long_rod' -> ('T', 'long_rod')."""
+    if "_" in name.strip("_"):
+        base, sub = name.split("_", 1)
+        return base, sub
+    match = re.fullmatch(r"([A-Za-z]+?)(\d+)", name)
+    return (match.group(1), match.group(2)) if match else (name, "")
+
+
+def unicode_name(name: str) -> str:
+    base, sub = split_name(name)
+    base = GREEK.get(base, base)
+    if not sub:
+        return base
+    sub_text = GREEK.get(sub, sub)
+    if set(sub_text) <= _SUBSCRIPTABLE and (len(sub_text) <= 2 or sub_text.isdigit()):
+        return base + sub_text.translate(_SUB)
+    return f"{base}_{sub_text}"
+
+
+def latex_name(name: str) -> str:
+    base, sub = split_name(name)
+    base = "\\" + base if base in GREEK else (base if len(base) == 1 else f"\\mathrm{{{base}}}")
+    base = {"\\phi": "\\varphi", "\\lamda": "\\lambda"}.get(base, base)
+    if not sub:
+        return base
+    sub_tex = {"phi": "\\varphi"}.get(sub, "\\" + sub) if sub in GREEK else sub.replace("_", "\\_")
+    if len(sub) > 1 and sub not in GREEK:
+        sub_tex = f"\\mathrm{{{sub_tex}}}"
+    return f"{base}_{{{sub_tex}}}"
+
+
+def _coordinate_name(expr) -> str | None:
+    """The name of θ(t)-like functions of time."""
+    if isinstance(expr, AppliedUndef) and expr.args == (sp.Symbol("t", real=True),):
+        return expr.func.__name__
+    return None
+
+
+def _derivative(expr: sp.Derivative) -> tuple[str, int] | None:
+    name = _coordinate_name(expr.expr)
+    if name is None or len(expr.variable_count) != 1:
+        return None
+    return name, expr.variable_count[0][1]
+
+
+class UnicodePrinter(StrPrinter):
+    """One-line unicode math: 7/8 m r² θ̇², √3 r, cos(φ − θ)."""
+
+    def _print_Symbol(self, expr):
+        return unicode_name(expr.name)
+
+    _print_Dummy = _print_Symbol
+
+    def _print_Function(self, expr):
+        name = _coordinate_name(expr)
+        if name is not None:
+            return unicode_name(name)
+        return super()._print_Function(expr)
+
+    def _print_Pi(self, expr):
+        return "π"
+
+    def _print_Integral(self, expr):
+        """∫ f dt (indefinite, one variable), as in F = … + ∫ (½ ẏ² − g y) dt."""
+        if len(expr.limits) == 1 and len(expr.limits[0]) == 1:
+            inner = self._print(expr.function)
+            inner = f"({inner})" if expr.function.is_Add else inner
+            return f"∫ {inner} d{self._print(expr.limits[0][0])}"
+        return super()._print_Integral(expr)
+
+    def _print_Derivative(self, expr):
+        if expr.expr.is_Symbol and len(expr.variables) == 1:  # ∂V/∂θ
+            return f"∂{self._print(expr.expr)}/∂{self._print(expr.variables[0])}"
+        found = _derivative(expr)
+        if found and found[1] <= 3:
+            name, order = found
+            text = unicode_name(name)
+            base = GREEK.get(split_name(name)[0], split_name(name)[0])
+            if len(base) > 1:  # no dot over a word: d(name)/dt
+                power = "" if order == 1 else str(order).translate(_SUP)
+                return f"d{power}{text}/dt{power}"
+            mark = {1: "\u0307", 2: "\u0308", 3: "\u20db"}[order]
+            return text[0] + mark + text[1:]  # the dot sits over the base letter
+        return super()._print_Derivative(expr)
+
+    def _print_Pow(self, expr, rational=False):
+        base, exp = expr.as_base_exp()
+        if exp in (sp.Rational(1, 2), sp.Rational(-1, 2)):
+            inner = self._print(base)
+            root = f"√{inner}" if base.is_Atom else f"√({inner})"
+            return root if exp > 0 else f"1/{root}"
+        if exp.is_Integer and exp > 0:
+            text = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Pow"])
+            return text + str(exp).translate(_SUP)
+        return super()._print_Pow(expr, rational)
+
+    def _print_Mul(self, expr):
+        lead = _rational_lead(expr)
+        if lead is None:
+            return super()._print_Mul(expr)
+        sign, coeff, rest = lead
+        inner = f"({self._print(rest)})" if rest.is_Add else self._print(rest)
+        return f"{sign}{coeff.p}/{coeff.q} {inner}"
+
+    def _print_Rational(self, expr):
+        return f"{expr.p}/{expr.q}"
+
+    def _print_ImmutableDenseMatrix(self, expr):
+        if expr.shape == (1, 1):
+            return self._print(expr[0, 0])
+        if 1 in expr.shape:  # a vector
+            return "(" + ", ".join(self._print(x) for x in expr) + ")"
+        rows = ["[" + ", ".join(self._print(x) for x in row) + "]" for row in expr.tolist()]
+        return "[" + ", ".join(rows) + "]"
+
+    _print_MutableDenseMatrix = _print_ImmutableDenseMatrix
+
+    def _print_Equality(self, expr):
+        return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
+
+
+def _rational_lead(expr: sp.Mul) -> tuple[str, sp.Rational, sp.Expr] | None:
+    """(sign, |c|, rest) for c·rest with a proper fraction c written first: 7/8 θ̇²."""
+    coeff, rest = expr.as_coeff_Mul()
+    if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
+        return ("-" if coeff < 0 else ""), abs(coeff), rest
+    return None
+
+
+def _has_denominator(expr: sp.Expr) -> bool:
+    return any(f.is_Pow and f.exp.is_negative for f in sp.Mul.make_args(expr))
+
+
+def _tidy_unicode(text: str) -> str:
+    text = text.replace("**", "^").replace("*", " ")
+    text = re.sub(r"(?<=[\w)\u0307\u0308⁰¹²³⁴⁵⁶⁷⁸⁹]) - ", " − ", text)
+    text = text.replace(" + -", " − ").replace("(-", "(−").replace("[-", "[−").replace(", -", ", −")
+    return "−" + text[1:] if text.startswith("-") else text
+
+
+class TexPrinter(LatexPrinter):
+    """LaTeX with \\dot{\\theta}, rational coefficients in front, \\varphi."""
+
+    def _print_Symbol(self, expr, style="plain"):
+        return latex_name(expr.name)
+
+    def _print_Function(self, expr, exp=None):
+        name = _coordinate_name(expr)
+        if name is not None:
+            text = latex_name(name)
+            return f"{text}^{{{exp}}}" if exp else text
+        return super()._print_Function(expr, exp)
+
+    def _print_Derivative(self, expr):
+        if expr.expr.is_Symbol and len(expr.variables) == 1:  # ∂V/∂θ
+            return f"\\frac{{\\partial {self._print(expr.expr)}}}{{\\partial {self._print(expr.variables[0])}}}"
+        found = _derivative(expr)
+        if found and found[1] <= 3:
+            name, order = found
+            accent = {1: "\\dot", 2: "\\ddot", 3: "\\dddot"}[order]
+            head, _, tail = latex_name(name).partition("_{")  # the dot over x in ẋ_f
+            return f"{accent}{{{head}}}" + (f"_{{{tail}" if tail else "")
+        return super()._print_Derivative(expr)
+
+    def _print_Mul(self, expr):
+        lead = _rational_lead(expr)
+        if lead is None:
+            return super()._print_Mul(expr)
+        sign, coeff, rest = lead
+        inner = f"\\left({self._print(rest)}\\right)" if rest.is_Add else self._print(rest)
+        return f"{sign and '- '}\\frac{{{coeff.p}}}{{{coeff.q}}} {inner}"
+
+
+_UNICODE = UnicodePrinter()
+_TEX = TexPrinter()
+
+
+def _product_parts(value: Product, printer) -> list[str]:
+    c = value.coefficient
+    parts = []
+    if c == -1 and value.factors:
+        parts.append("-")
+    elif c != 1 or not value.factors:
+        text = printer(c)
+        parts.append(f"({text})" if c.is_Add else text)
+    parts += [printer(f) for f in value.factors]
+    return parts
+
+
+def to_unicode(value: Math) -> str:
+    if isinstance(value, str):
+        return value
+    if isinstance(value, Label):
+        return value.text
+    if isinstance(value, Scaled):
+        inner = to_unicode(value.inner)
+        bracket = isinstance(value.inner, Terms) or (
+            isinstance(value.inner, sp.MatrixBase) and 1 not in value.inner.shape)
+        return f"{to_unicode(value.factor)} {inner}" if bracket and inner.startswith("[") else (
+            f"{to_unicode(value.factor)} [{inner}]" if bracket else f"{to_unicode(value.factor)} {inner}"
+        )
+    if isinstance(value, Terms):
+        return _join(to_unicode(x) for x in value.items)
+    if isinstance(value, Product):
+        return _tidy_unicode(" ".join(_product_parts(value, to_unicode)).replace("- ", "-", 1))
+    if isinstance(value, Along):
+        return _along(value, to_unicode(value.component), to_unicode(value.basis), "({})")
+    return _tidy_unicode(_UNICODE.doprint(value))
+
+
+def _along(value: Along, component: str, basis: str, brackets: str) -> str:
+    """(ẋ − 1/2 l φ̇) eₓ; 1 eₓ is eₓ and −1 eₓ is −eₓ."""
+    if component in ("1", "-1", "−1"):
+        return component[:-1] + basis
+    return f"{brackets.format(component) if value.is_sum() else component} {basis}"
+
+
+def _join(parts) -> str:
+    out = ""
+    for part in parts:
+        if not out:
+            out = part
+        elif part.startswith(("-", "−")):
+            out += " − " + part[1:].lstrip()
+        else:
+            out += " + " + part
+    return out
+
+
+def to_latex(value: Math) -> str:
+    if isinstance(value, Label):
+        return value.latex
+    if isinstance(value, str):
+        return f"\\text{{{value.encode('ascii', 'replace').decode()}}}"
+    if isinstance(value, Scaled):
+        inner = to_latex(value.inner)
+        if isinstance(value.inner, Terms):
+            inner = f"\\left[{inner}\\right]"
+        return f"{to_latex(value.factor)} {inner}"
+    if isinstance(value, Terms):
+        out = ""
+        for part in (to_latex(x) for x in value.items):
+            if not out:
+                out = part
+            elif part.startswith("-"):
+                out += " - " + part[1:].lstrip()
+            else:
+                out += " + " + part
+        return out
+    if isinstance(value, Product):
+        return " ".join(_product_parts(value, to_latex)).replace("- ", "-", 1)
+    if isinstance(value, Along):
+        return _along(value, to_latex(value.component), to_latex(value.basis), "\\left({}\\right)")
+    if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
+        return to_latex(value[0, 0])
+    if isinstance(value, sp.MatrixBase) and 1 in value.shape:
+        items = " \\\\ ".join(_TEX.doprint(x) for x in value)
+        return f"\\begin{{pmatrix}} {items} \\end{{pmatrix}}"
+    if isinstance(value, sp.MatrixBase):
+        rows = " \\\\ ".join(" & ".join(_TEX.doprint(x) for x in row) for row in value.tolist())
+        return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
+    return _TEX.doprint(value)
+
+
+def relation_text(rel) -> str:
+    """A Relation (report.steps) in readable unicode: ⇒ T = T₁ + T₂ = …"""
+    parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]
+    parts += [f"= {to_unicode(m)}" for m in rel.more]
+    return " ".join(p for p in parts if p)

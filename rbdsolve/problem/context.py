@@ -1,0 +1,171 @@
+"""The reading context of one problem file: what the sections read so far, and how
+an expression is read there.
+
+The loader makes one ``Reading`` per file and hands it to each section's reader
+(bodies, orientation, questions, impact). It holds the scopes of names an expression
+may use (positions, velocities at an instant, constants), the names declared so far
+(one name, one meaning), the points' expressions and the coordinates; its methods read
+an expression, a constant, an axis or a configuration from a located YAML node, and
+every refusal names file:line:column.
+"""
+
+from __future__ import annotations
+
+import keyword
+from fractions import Fraction
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.readers import expect_mapping, expect_scalar
+from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
+
+# t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
+RESERVED = {"t", "pi", "E", "I"} | set(ex.SCALAR_FUNCTIONS) | set(
+    ex.DERIVATIVE_FUNCTIONS
+) | ex.VECTOR_FUNCTIONS
+_AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1),
+         "-x": (-1, 0, 0), "-y": (0, -1, 0), "-z": (0, 0, -1)}
+
+
+def identifier(key: Scalar, what: str) -> str:
+    name = key.text
+    if keyword.iskeyword(name):
+        raise InputError(f"'{name}' is a Python keyword and cannot be a name; try '{name}_'", key.loc)
+    if not (name.isascii() and name.isidentifier()):
+        raise InputError(f"'{name}' is not a valid {what} name (ASCII letters, digits and _, "
+                         "not starting with a digit; Greek letters are spelled: theta)", key.loc)
+    if name.startswith("__"):
+        raise InputError("names starting with '__' are not allowed", key.loc)
+    if name in RESERVED:
+        raise InputError(f"'{name}' is reserved (a function, a constant or time t)", key.loc)
+    return name
+
+
+def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
+    """A bare unknown name where a vector is expected is most likely a misspelt point."""
+    name = node.text.strip()
+    known = scope.all_names() | {n for n, _ in scope.refused} | ex.CONSTANTS
+    if name.isidentifier() and name not in known:
+        raise InputError(f"unknown point '{name}'{did_you_mean(name, sorted(scope.vectors))}", node.loc)
+
+
+class Reading:
+    """One file's names, scopes and points, and the readers of its expressions."""
+
+    def __init__(self, file: str):
+        self.file = file
+        self.coordinates: tuple[str, ...] = ()  # in the file's order
+        self.scope = ex.Scope()
+        self.positions = ex.Scope()
+        self.rates = ex.Scope()  # velocities at one instant: parameters, dot(q), velocity points
+        self.triad_vectors: frozenset[str] = frozenset()
+        self.triad_names: tuple[str, ...] = ()
+        self.point_exprs: dict[str, ex.Expr] = {}
+        self.taken: dict[str, str] = {}  # name -> what declared it
+
+    # --- expressions -------------------------------------------------------------------
+
+    def constant(self, node: Node, what: str) -> ex.Expr:
+        """A scalar that must not change with the motion: parameters and numbers only."""
+        scope = self.scope.constants(f"{what} must be constant (parameters and numbers only)")
+        return self.expr(node, ex.Kind.SCALAR, what, scope)
+
+    def expr(self, node: Node, kind: ex.Kind, what: str, scope: ex.Scope | None = None) -> ex.Expr:
+        if isinstance(node, Seq):  # a YAML list of components is a vector literal
+            if kind != ex.Kind.VECTOR:
+                raise InputError(f"expected {what}, found a list", node.loc)
+            return self._vector_from_list(node, what, scope)
+        scalar = expect_scalar(node, what)
+        scope = scope or self.positions
+        if kind == ex.Kind.VECTOR:
+            _check_point_name(scalar, scope)
+        parsed = ex.parse(scalar.text, scalar.loc, scope, scalar.plain)
+        if parsed.kind != kind:
+            raise InputError(f"expected {what}, found a {parsed.kind.value} '{parsed.text}'", scalar.loc)
+        return parsed
+
+    def _vector_from_list(self, node: Seq, what: str, scope: ex.Scope | None) -> ex.Expr:
+        if len(node.items) not in (2, 3):
+            raise InputError(f"a vector has 2 or 3 components, found {len(node.items)}", node.loc)
+        parts = [self.expr(item, ex.Kind.SCALAR, "a number or scalar expression", scope)
+                 for item in node.items]
+        text = "[" + ", ".join(p.text for p in parts) + "]"
+        return ex.Expr(ex.Vec(tuple(p.tree for p in parts)), ex.Kind.VECTOR, text, node.loc)
+
+    def declare(self, key: Scalar, what: str) -> str:
+        name = identifier(key, what)
+        if name in self.taken:
+            raise InputError(f"'{name}' is already declared as a {self.taken[name]}", key.loc)
+        self.taken[name] = what
+        return name
+
+    def text(self, node: Node | None, what: str) -> str:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ""
+        return expect_scalar(node, what).text.strip()
+
+    def optional_expr(self, node: Node | None, kind: ex.Kind, what: str) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        return self.expr(node, kind, what, self.positions)
+
+    def optional_constant(self, node: Node | None, what: str) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        return self.constant(node, what)
+
+    def set_point_scopes(self, positions: frozenset[str], velocities: frozenset[str]) -> None:
+        """Positions name position points; velocities at an instant name velocity points
+        and the rates dot(q), never the coordinates themselves (the configuration of an
+        instant is given by the question, with 'at:')."""
+        positions = positions | self.triad_vectors
+        self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
+        why_velocity = "it is given by its velocity; positions name points given by position"
+        self.positions = ex.Scope(self.scope.scalars, positions,
+                                  refused=tuple((n, why_velocity) for n in sorted(velocities)))
+        coordinates = frozenset(self.coordinates)
+        why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
+               "give the configuration with the question's 'at:'")
+        why_position = "it is given by its position; a velocity names points given by velocity"
+        refused = [(n, why) for n in sorted(self.scope.functions_of_time | {"t"})]
+        refused += [(n, why_position) for n in sorted(positions)]
+        self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates,
+                              tuple(refused), max_order=1)
+
+    def point_names(self, expr: ex.Expr) -> set[str]:
+        """Every name an expression uses, through the points it names."""
+        found, todo = set(), set(expr.names())
+        while todo:
+            name = todo.pop()
+            found.add(name)
+            todo |= (self.point_exprs[name].names() - found) if name in self.point_exprs else set()
+        return found
+
+    def axis(self, node: Node) -> ex.Expr:
+        """x, y, z (or -x, …) or a direction vector in body axes."""
+        if isinstance(node, Scalar) and node.text.strip() in _AXES:
+            text = node.text.strip()
+            tree = ex.Vec(tuple(ex.Num(Fraction(v)) for v in _AXES[text]))
+            return ex.Expr(tree, ex.Kind.VECTOR, text, node.loc)
+        if isinstance(node, Scalar) and node.text.strip().lstrip("-").isidentifier():
+            raise InputError(f"expected an axis x, y, z, -x, -y, -z or a direction vector, "
+                             f"found '{node.text.strip()}'", node.loc)
+        scope = self.scope.constants("an axis must be constant (parameters and numbers only)")
+        value = self.expr(node, ex.Kind.VECTOR, "an axis: x, y, z or a direction vector", scope)
+        if isinstance(value.tree, ex.Vec) and all(ex.constant_value(c) == 0 for c in value.tree.items):
+            raise InputError("an axis direction must not be the zero vector", value.loc)
+        return value
+
+    def coordinate_values(self, node: Node, what: str, complete: bool) -> tuple[tuple[str, ex.Expr], ...]:
+        """coordinate -> constant value, in the coordinates' order."""
+        table = expect_mapping(node, f"{what}: coordinate -> value")
+        names = list(self.coordinates)
+        given = {}
+        for key, value in table.entries:
+            if key.text not in names:
+                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
+            given[key.text] = self.constant(value, f"a value in {what}")
+        missing = [n for n in names if n not in given]
+        if complete and missing:
+            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
+        return tuple((n, given[n]) for n in names if n in given)

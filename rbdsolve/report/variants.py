@@ -1,0 +1,27 @@
+"""A table of exam variants: each student's parameter values and numeric answers
+(teaching/variants.py makes it; render/variants.py writes it as CSV, JSON or LaTeX)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+
+@dataclass(frozen=True)
+class VariantTable:
+    """One row per variant: its drawn parameter values and its numeric answers (None
+    where a cell is empty; ``warnings`` say why)."""
+
+    file: str
+    title: str
+    statement: str
+    questions: tuple[str, ...]  # the question kinds, in file order
+    seed: int
+    parameters: tuple[str, ...]  # the ranged parameters, in file order
+    fixed: tuple[tuple[str, Fraction], ...]  # values every variant shares
+    columns: tuple[str, ...]  # answer labels ('modes.eigenvalues[1]')
+    draws: tuple[tuple[Fraction, ...], ...]  # per variant, per parameter
+    answers: tuple[tuple[float | None, ...], ...]  # per variant, per column
+    notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+    verified: tuple[int, ...] = ()  # variant numbers (1-based) checked by a full solve

@@ -1,0 +1,78 @@
+"""Lagrange's equations.
+
+    d/dt (∂L/∂q̇_i) − ∂L/∂q_i = 0,   L = T − V           (e.g. Goldstein, ch. 1)
+
+with the total time derivative written out by the chain rule,
+
+    d/dt (∂L/∂q̇_i) = Σ_j (∂²L/∂q̇_i∂q̇_j q̈_j + ∂²L/∂q̇_i∂q_j q̇_j) + ∂²L/∂q̇_i∂t.
+
+Each equation is an expression = 0, collected in q̈ and q̇ with each coefficient tidied,
+and shown with the scales pulled out: the inertia part m r² […] and the potential part
+m g r […], as an exam solution writes it.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.tidy import collect_in, tidy
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import kinetic_energy, potential_energy
+from rbdsolve.model.frames import frame_lagrangian, frame_motion
+from rbdsolve.problem.schema import Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
+from rbdsolve.solvers.eom.steps import frame_steps, lagrange_step
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.singular import eom_warnings
+
+
+def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr, ...]:
+    """E_i = d/dt(∂L/∂q̇_i) − ∂L/∂q_i for each coordinate, in the model's plain symbols;
+    L = T − V unless given."""
+    if L is None:
+        L = kinetic_energy(model).total - potential_energy(model).total
+    generators = [*model.qdd, *model.qd]
+    out = []
+    for q, qd in zip(model.q, model.qd):
+        E = model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q)
+        out.append(sp.Add(*[c * m for m, c in collect_in(E, generators).items()]))
+    return tuple(out)
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    equations = lagrange_equations(model)
+    steps = [lagrange_step(equations, model)]
+    names = question.options.frames if question.options else ()
+    frames = []
+    for name in names:
+        answer, frame_steps = _in_frame(model, model.problem.frame(name), equations)
+        frames.append(answer)
+        steps += frame_steps
+    answers = EomAnswers(
+        tuple(model.to_time(E) for E in equations),
+        tuple(frames),
+        all(f.equivalent for f in frames) if frames else None,
+        frames[0].total_derivative if frames else None,
+    )
+    return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=eom_warnings(model))
+
+
+def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[FrameAnswers, list[st.Step]]:
+    """L' in the frame, its equations, and the two checks: the same equations, and
+    L − L' = dF/dt."""
+    seen = frame_lagrangian(model, frame_motion(model, frame))
+    primed = lagrange_equations(model, seen.L)
+    agree = all(_vanishes(a - b) for a, b in zip(primed, equations))
+    L = kinetic_energy(model).total - potential_energy(model).total
+    derivative = _vanishes(L - seen.L - model.state.d_dt(seen.F))
+    answer = FrameAnswers(frame.name, model.to_time(seen.L), tuple(model.to_time(E) for E in primed),
+                          model.to_time(seen.F), agree and derivative)
+    return answer, frame_steps(model, frame, seen, primed, agree, derivative)
+
+
+def _vanishes(expr: sp.Expr) -> bool:
+    """Exactly zero: expanded, then tidied, then (small expressions only) simplified."""
+    expr = tidy(sp.expand(expr))
+    return expr == 0 or (sp.count_ops(expr) < 400 and sp.simplify(expr) == 0)

@@ -1,0 +1,61 @@
+"""The worked solution of the equations of motion: Lagrange's equations with the
+inertia and potential parts each scaled, as an exam writes them; in a moving frame, T',
+V', L', its equations and the checks against the scene's; and the numeric route's
+equations with float coefficients."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import subscript
+from rbdsolve.form.display import Relation
+from rbdsolve.model.build import Model
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.eom.answers import NumericEomAnswers
+from rbdsolve.solvers.shared.present import present, present_equation
+
+
+def frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: bool) -> list[st.Step]:
+    def rows(terms, name):
+        return [Relation(sp.Symbol(f"{name}_{i}"), present(x.value, model)) for i, x in enumerate(terms, start=1)]
+
+    legend_T = ", ".join(f"T'{subscript(i)} {x.name}" for i, x in enumerate(seen.kinetic, start=1))
+    legend_V = ", ".join(f"V'{subscript(i)} {x.name}" for i, x in enumerate(seen.potential, start=1))
+    F = Relation(sp.Symbol("F"), model.to_time(seen.F))
+    checks = "They are the same equations" if agree else "rbdsolve could not simplify the difference of the equations to 0"
+    checks += ", and L − L' = dF/dt" if derivative else "; L − L' − dF/dt did not simplify to 0"
+    return [
+        st.definition(f"In frame {frame.name} (positions r' = Rᵀ (r − r_O)): kinetic parts; {legend_T}:",
+                      *rows(seen.kinetic, "T'")),
+        st.definition(f"Potentials, gravity and the inertial forces included; {legend_V}:",
+                      *rows(seen.potential, "V'")),
+        st.equation(f"The Lagrangian in frame {frame.name}:", Relation(sp.Symbol("L'"), present(seen.L, model))),
+        st.result(f"Lagrange's equations in frame {frame.name}:",
+                  *[Relation(present_equation(E, model), sp.Integer(0)) for E in primed]),
+        st.result(f"{checks}, with", F) if derivative else st.note(f"{checks}.", F),
+    ]
+
+
+SHOWN_DIGITS = 6  # the numeric route's coefficients as printed (the JSON has them whole)
+
+
+def numeric_steps(answers: NumericEomAnswers, model: Model, error: float,
+                  reference_digits: int) -> tuple[st.Step, ...]:
+    def shown(equations):
+        return [Relation(sp.N(E, SHOWN_DIGITS), sp.Integer(0)) for E in equations]
+
+    how = (f"coefficients shown to {SHOWN_DIGITS} digits; relative error ≤ {error:.1e} against the same "
+           f"derivation in {reference_digits}-digit arithmetic")
+    steps = [st.result("Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, the parameter values put "
+                       f"in as floats before differentiating ({how}):", *shown(answers.equations))]
+    for frame in answers.frames:
+        verdict = ("They are the scene's equations, coefficient by coefficient within the errors."
+                   if frame.equivalent else "They differ from the scene's equations beyond the errors.")
+        steps.append(st.result(f"Lagrange's equations from the Lagrangian L' in frame {frame.frame}. {verdict}",
+                               *shown(frame.equations)))
+    return tuple(steps)
+
+
+def lagrange_step(equations: tuple[sp.Expr, ...], model: Model) -> st.Step:
+    return st.result("Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, one for each "
+                     "coordinate in turn:", *[Relation(present_equation(E, model), sp.Integer(0)) for E in equations])

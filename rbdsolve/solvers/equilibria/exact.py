@@ -1,0 +1,252 @@
+"""Equilibria of a conservative system and their stability.
+
+Equilibria: ∂V/∂q = 0. Angles enter V through sin and cos, so each angle q is replaced
+by s = sin q, c = cos q with s² + c² = 1, which turns a trigonometric system into a
+polynomial one that sympy solves completely (Gröbner bases); q = atan2(s, c) recovers
+every branch in (−π, π], so no root is missed (plain ``solve`` misses some).
+
+Stability (Lagrange–Dirichlet): with T positive definite, a strict minimum of V is
+stable. The Hessian H = ∂²V/∂q∂q is symmetric, so its characteristic polynomial has
+real roots only, and Descartes' rule of signs then counts its positive, zero and
+negative eigenvalues exactly from the signs of the coefficients, even when the
+entries are symbolic:
+
+* all eigenvalues positive → stable;
+* one negative → unstable (the linearized motion grows exponentially);
+* zero eigenvalues only along coordinates V does not contain → neutral;
+* other zero eigenvalues → undetermined: higher-order terms decide.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import hessian, memoized, potential_energy
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, Stability
+from rbdsolve.solvers.equilibria.steps import exact_steps
+from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
+from rbdsolve.solvers.shared.values import sample
+
+
+@memoized
+def gradient(model: Model) -> tuple[sp.Expr, ...]:
+    V = potential_energy(model).total
+    return tuple(tidy(sp.diff(V, q)) for q in model.q)
+
+
+def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:
+    """Every solution of ∂V/∂q = 0, angles in (−π, π]; and warnings, if any."""
+    equations = [e for e in gradient(model) if e != 0]
+    if any(not e.has(*model.q) for e in equations):  # e.g. ∂V/∂x = m g sin α ≠ 0
+        return [], []
+    free = [q for q in model.q if not any(e.has(q) for e in equations)]
+    if free:
+        warnings = [f"V does not depend on {', '.join(q.name for q in free)}: "
+                    "every value is an equilibrium; it is shown as 0"]
+    else:
+        warnings = []
+    unknowns = [q for q in model.q if q not in free]
+    angles = periodic_angles(model)
+    warnings += [f"V is not 2π-periodic in {q.name} (it enters V outside sin and cos, e.g. in a torsional "
+                 "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
+    solutions = _solve_trig_polynomial(equations, unknowns, angles)
+    if solutions is None:
+        solutions = _solve_general(equations, unknowns, model)
+        warnings.append("the equilibrium equations are not polynomial in sin, cos and the "
+                        "coordinates; sympy's solve was used and may miss solutions")
+    out = []
+    for sol in solutions:
+        full = {q: _turn(sol.get(q, sp.Integer(0))) if q in angles else sol.get(q, sp.Integer(0))
+                for q in model.q}
+        if full not in out and existence(full, model) is not None:
+            out.append(full)
+    return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
+
+
+@memoized
+def periodic_angles(model: Model) -> frozenset:
+    """The angle coordinates along which ∂V/∂q is 2π-periodic: ∂V/∂q at q + 2π equals it
+    (sympy reduces sin and cos of q + 2π). An angle that also enters V bare, as in a
+    torsional spring ½ c (θ − θ₀)², is not: turning its equilibria into (−π, π] would
+    move them off ∂V/∂q = 0, so they are kept as solved."""
+    grad = gradient(model)
+    return frozenset(q for q in model.angles
+                     if all(_vanishes(e.xreplace({q: q + 2 * sp.pi}) - e) for e in grad))
+
+
+def _vanishes(expr: sp.Expr) -> bool:
+    return sp.expand(expr) == 0 or sp.expand(sp.expand_trig(expr)) == 0
+
+
+def _turn(angle: sp.Expr) -> sp.Expr:
+    """An angle brought into (−π, π]: numbers exactly; c + 2πk by dropping the turns."""
+    if not angle.is_number:
+        turns = [t for t in sp.Add.make_args(angle) if (t / (2 * sp.pi)).is_integer]
+        return angle - sp.Add(*turns)
+    turned = angle - 2 * sp.pi * sp.ceiling((angle - sp.pi) / (2 * sp.pi))
+    return sp.nsimplify(turned) if turned.is_rational else turned
+
+
+def _order(value: sp.Expr) -> tuple:
+    """Sort key: by numeric value (parameters set to 1), then by the expression."""
+    number = sample(value, {})
+    return (number.real if number.imag == 0 else 0.0, sp.default_sort_key(value))
+
+
+def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
+    s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in unknowns if q in angles}
+    c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in unknowns if q in angles}
+    plain = [q for q in unknowns if q not in angles]
+    system = []
+    for e in equations:
+        poly = sp.expand_trig(sp.expand(e))
+        poly = poly.xreplace({sp.sin(q): s[q] for q in s} | {sp.cos(q): c[q] for q in c})
+        if any(poly.has(q) for q in s):
+            return None
+        numerator = sp.numer(sp.together(poly))
+        if not numerator.is_polynomial(*s.values(), *c.values(), *plain):
+            return None
+        system.append(numerator)
+    system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
+    symbols = [*s.values(), *c.values(), *plain]
+    if not symbols:
+        return [{}]
+    roots = sp.solve(system, symbols, dict=True, check=False)  # polynomial: nothing to check
+    out = []
+    for root in roots:
+        if any(sp.sympify(v).is_real is False for v in root.values()):
+            continue
+        if len(root) < len(symbols):  # a family of solutions: not isolated points
+            raise UnsolvedError("the equilibria form a continuum (V is flat along a curve); "
+                                "rbdsolve reports isolated equilibria only")
+        sol = {q: _angle(root[s[q]], root[c[q]]) for q in s}
+        sol |= {q: tidy(root[q]) for q in plain}
+        out.append(sol)
+    return out
+
+
+def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
+    """Where an equilibrium exists: None if it is not real at the given parameter values,
+    else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
+    needed = set()
+    for value in at.values():
+        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
+    conditions = []
+    for condition in sorted(needed, key=sp.default_sort_key):
+        sign = sign_of(tidy(condition), model.values)
+        if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
+            return None  # not real for these parameter values
+        if isinstance(sign, Undecided):
+            conditions.append(tidy(condition))
+    return tuple(conditions)
+
+
+def _numeric(expr: sp.Expr, model: Model) -> bool:
+    """Does the expression become a number once the given values are put in?"""
+    return not expr.xreplace(model.values).free_symbols
+
+
+def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
+    """The angle in (−π, π] with this sine and cosine; ±acos(c) when s = ±√(1 − c²)."""
+    angle = sp.atan2(sin_value, cos_value)
+    if angle.is_number:
+        return sp.nsimplify(angle) if angle.is_rational else angle
+    if sin_value.is_zero:
+        return sp.Integer(0) if cos_value.is_positive else sp.pi
+    if sp.expand(sin_value**2 - (1 - cos_value**2)) == 0:
+        return -sp.acos(cos_value) if sin_value.could_extract_minus_sign() else sp.acos(cos_value)
+    return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
+
+
+def _solve_general(equations, unknowns, model: Model) -> list[dict]:
+    shown = "; ".join(f"{sp.sstr(model.readable(e))} = 0" for e in equations)
+    refusal = UnsolvedError(
+        f"the equilibrium equations are transcendental ({shown}) and the exact route "
+        "cannot solve them; for modes, give the equilibrium with 'modes: {about: {...}}'"
+    )
+    if any(_mixed(e, q) for e in equations for q in unknowns):
+        raise refusal  # q both inside and outside sin/cos, as in θ = k sin θ: no closed form
+    try:
+        roots = sp.solve(equations, unknowns, dict=True)
+    except NotImplementedError:
+        raise refusal from None
+    return [r for r in roots if all(sp.sympify(v).is_real is not False for v in r.values())]
+
+
+def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q occur both inside a trigonometric function and outside every one?"""
+    inside = any(f.has(q) for f in expr.atoms(sp.sin, sp.cos, sp.tan))
+    outside = expr.xreplace({f: sp.Integer(0) for f in expr.atoms(sp.sin, sp.cos, sp.tan)}).has(q)
+    return inside and outside
+
+
+def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
+    """The equilibrium's stability from the Hessian of V, and where it exists."""
+    found = _classify(model, at)
+    return replace(found, conditions=existence(at, model) or ())
+
+
+def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
+    V = potential_energy(model).total
+    H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
+    names = {q: n for q, n in zip(model.q, model.coordinate_names())}
+    where = {names[q]: v for q, v in at.items()}
+    inertia = matrix_inertia(H, model.values)
+    if isinstance(inertia, Undecided):
+        return Equilibrium(where, Stability.UNDETERMINED, H,
+                           f"the sign of {sp.sstr(inertia.expr)} depends on the parameters")
+    if inertia.negative:
+        return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
+    if inertia.zero:
+        flat = [q for q in model.q if not V.has(q)]
+        if len(flat) == inertia.zero:
+            return Equilibrium(where, Stability.NEUTRAL, H,
+                               "V does not depend on " + ", ".join(names[q] for q in flat))
+        return Equilibrium(where, Stability.UNDETERMINED, H,
+                           "the Hessian of V is singular: higher-order terms decide")
+    return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")
+
+
+def _coinciding(solutions: list[dict], model: Model) -> list[str]:
+    """Equilibria that are distinct expressions but one configuration at the given
+    values (branches meeting at a bifurcation, e.g. ±acos(g/(R Ω²)) = 0 when R Ω² = g):
+    a warning names them, so that the count is not read as distinct configurations."""
+    if not model.values:
+        return []
+    points = []
+    for sol in solutions:
+        try:
+            points.append(tuple(complex(sp.N(v.xreplace(model.values), 20)) for v in sol.values()))
+        except TypeError:  # a parameter without a value: not a number
+            return []
+    lines = []
+    for i, p in enumerate(points):
+        same = [j + 1 for j, r in enumerate(points) if max(abs(a - b) for a, b in zip(p, r)) <= 1e-12 * (1 + max(map(abs, p)))]
+        if len(same) > 1 and same[0] == i + 1:
+            lines.append(f"equilibria {', '.join(map(str, same))} coincide at the given parameter values (one "
+                         "configuration where solution branches meet, a bifurcation), listed once per branch")
+    return lines
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_static(model, "the equilibria")
+    grad = gradient(model)
+    solutions, warnings = find_equilibria(model)
+    if not solutions:
+        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+    equilibria = tuple(classify(model, sol) for sol in solutions)
+    warnings += _coinciding(solutions, model)
+    answers = EquilibriaAnswers(equilibria)
+    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, bool(periodic_angles(model))),
+                    warnings=tuple(warnings))

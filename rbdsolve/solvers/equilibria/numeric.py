@@ -1,0 +1,126 @@
+"""Equilibria, the floating-point route: ∂V/∂q = 0 by a sign-change scan in one
+coordinate (``scan``: complete under a stated assumption) and by Newton's method from
+a grid of starts in more (``numeric_model.find_numeric``: no completeness claim); the
+strategy and its limits are stated there and in the report. Each root is classified
+by the eigenvalues of the Hessian of V there against a tolerance, CURVATURE_TOL times
+the Hessian's scale over the search box (all above it: stable; one below −it:
+unstable; else zero within rounding: neutral along a continuum, otherwise
+undetermined, higher-order terms decide, never a sign from round-off). A continuum of
+equilibria (V flat along a straight line, as a cart's x) is reported once, at its
+point nearest q = 0 along the free directions, which a warning names
+(``continua``); λ = 0 along them is neutral.
+
+Error estimate: one more Newton step, |H⁻¹ ∂V/∂q|, relative to max(|q|, 1), plus
+cond(H) ε for the rounding of the gradient itself; on a continuum H and ∂V/∂q are
+taken across it only (along it the representative is exact by construction).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.equilibria.answers import (
+    NumericEquilibriaAnswers,
+    NumericEquilibrium,
+    Stability,
+)
+from rbdsolve.solvers.equilibria.steps import numeric_steps
+from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.numeric_model import (
+    CURVATURE_TOL,
+    SEARCH_SCALE,
+    compiled_gradient,
+    continuum_text,
+    find_numeric,
+    periodic_angles,
+)
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.values import require_values
+
+EPS = float(np.finfo(float).eps)
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_values(model, "the numeric route")
+    require_static(model, "the equilibria")
+    found = find_numeric(model)
+    if not found.equilibria:
+        raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
+    g, H = compiled_gradient(model)
+    names = model.coordinate_names()
+    equilibria, errors = [], []
+    for r in found.equilibria:
+        x = np.array(r.at)
+        hess = np.asarray(H(x), dtype=float)
+        curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
+        equilibria.append(NumericEquilibrium(dict(zip(names, r.at)), Stability(r.kind),
+                                             tuple(float(c) for c in curvatures), r.free))
+        errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
+    answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts)
+    warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
+    return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model, found.sampling),
+                    warnings=warnings, error_estimate=float(max(errors)))
+
+
+def searched(model: Model, found) -> str:
+    """How the search went and over which box."""
+    how = (f"a sign-change scan of ∂V/∂q at {found.starts} {found.sampling}" if len(model.q) == 1
+           else f"Newton's method from {found.starts} {found.sampling}")
+    return (f"{how}, over angles in (−π, π] and lengths within ±{SEARCH_SCALE:g} × max(1, the largest "
+            "parameter value) (a coordinate's range cannot be declared; equilibria outside it are not searched)")
+
+
+def search_claim(model: Model, found) -> str:
+    """What the search covers and what it guarantees (the completeness claim)."""
+    if len(model.q) == 1:
+        return (f"numeric search: {searched(model, found)}; every equilibrium in it is found provided "
+                "|∂²V/∂q²| on each cell stays within twice its largest sampled value there and equilibria "
+                "are more than the smallest cell apart (closer ones are reported once, or missed)")
+    return (f"numeric search: {searched(model, found)}; an equilibrium whose basin misses every start "
+            "would be missed (no completeness guarantee in more than one coordinate)")
+
+
+def _range_warnings(model: Model, found) -> list[str]:
+    """Declared angles along which V is not 2π-periodic, and intervals left unsettled."""
+    names = dict(zip(model.q, model.coordinate_names()))
+    lines = [f"V is not 2π-periodic in {names[q]} (it enters V outside sin and cos, e.g. in a torsional "
+             "spring): it was searched as a length, not only over (−π, π]"
+             for q in model.q if q in model.angles and q not in periodic_angles(model)]
+    if found.unresolved:
+        spans = ", ".join(f"[{a:.6g}, {b:.6g}]" for a, b in found.unresolved[:5])
+        lines.append(f"the search is incomplete: the scan ran out of evaluations with {len(found.unresolved)} "
+                     f"interval(s) unsettled ({spans}{', …' if len(found.unresolved) > 5 else ''})")
+    return lines
+
+
+def _continuum_warnings(found, names: list[str]) -> list[str]:
+    """One line per kind of continuum found, and one where the Hessian is singular
+    beyond the free directions (higher-order terms decide; perhaps a curved continuum)."""
+    lines = list(dict.fromkeys(continuum_text(r.free, names) for r in found.equilibria if r.free))
+    singular = [i for i, r in enumerate(found.equilibria, 1) if r.kind == "undetermined"]
+    if singular:
+        lines.append(f"the Hessian of V is singular at equilibri{'um' if len(singular) == 1 else 'a'} "
+                     f"{', '.join(map(str, singular))} (an eigenvalue within {CURVATURE_TOL:g} × the Hessian's "
+                     "scale of zero, beyond any continuum found): undetermined, higher-order terms decide the "
+                     "stability there, and a curved continuum of equilibria would be listed point by point")
+    return lines
+
+
+def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:
+    """|H⁻¹ g| / max(|q|, 1) + cond(H) ε, with H and g restricted to the directions
+    across a continuum (along it the position is exact: the representative)."""
+    if free:
+        from scipy.linalg import null_space
+
+        P = null_space(np.array(free, dtype=float))  # orthonormal basis across the continuum
+        hess, gradient = P.T @ hess @ P, P.T @ gradient
+    try:
+        step = np.linalg.solve(hess, gradient) if hess.size else np.zeros(0)
+        condition = np.linalg.cond(hess) if hess.size else 1.0
+    except np.linalg.LinAlgError:
+        return float("inf")
+    return float(np.max(np.abs(step), initial=0.0) / max(np.max(np.abs(x)), 1.0) + condition * EPS)

@@ -1,0 +1,60 @@
+"""The worked solution of an equilibria question: ∂V/∂q = 0, each equilibrium with the
+conditions for it to exist, its stability and the Hessian K there; and the numeric
+route's search and the eigenvalues of K at each root found."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import configuration, scaled_matrix
+from rbdsolve.form.display import Relation
+from rbdsolve.model.build import Model
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
+
+
+def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Model,
+                periodic: bool) -> tuple[st.Step, ...]:
+    """∂V/∂q = 0, then each equilibrium with where it exists, its stability and K;
+    ``periodic``: some angle was reduced to (−π, π]."""
+    symbols = set(model.symbols.parameters.values())
+    equilibria = answers.equilibria
+    steps = [
+        st.equation(
+            "Equilibria are constant solutions q(t) = q₀; with q̇ = q̈ = 0 Lagrange's "
+            "equations reduce to ∂V/∂q = 0:",
+            *[Relation(sp.Derivative(sp.Symbol("V"), q), model.to_time(g))
+              for q, g in zip(model.state.functions(), grad)],
+        ),
+        st.result(f"{len(equilibria)} equilibri{'um' if len(equilibria) == 1 else 'a'}"
+                  + (" (angles in (−π, π])" if periodic else "") + ":"),
+    ]
+    coordinates = model.state.functions()
+    for number, eq in enumerate(equilibria, start=1):
+        exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
+        steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
+                               *[Relation(c, sp.Integer(0), "≥") for c in eq.conditions]))
+        steps.append(st.equation(
+            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
+            Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
+        ))
+    return tuple(steps)
+
+
+def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
+    # numpy's machinery only here: the exact route's steps load none of it
+    from rbdsolve.solvers.shared.numeric_model import CURVATURE_TOL, continuum_text
+
+    names = model.coordinate_names()
+    how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
+           else f"Newton's method from {a.starts} {sampling}")
+    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0, found by {how}. Stability from the eigenvalues of the "
+                         f"Hessian of V; one within {CURVATURE_TOL:g} × the Hessian's scale over the search box "
+                         "counts as zero (undetermined: higher-order terms decide):")]
+    for i, eq in enumerate(a.equilibria, 1):
+        where = configuration(model.state.functions(), [sp.Float(v, 12) for v in eq.at.values()])
+        curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
+        family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
+        steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
+                               where, curv))
+    return tuple(steps)

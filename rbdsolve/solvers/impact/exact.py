@@ -1,0 +1,22 @@
+"""Impact, the exact route: the impulse equations (equations.py) solved exactly in a
+fraction field, answers as cancelled fractions, the worked solution from steps.py."""
+
+from __future__ import annotations
+
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import ImpactOptions, Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.impact.equations import ImpactEquations, blows, instant, require_known
+from rbdsolve.solvers.impact.steps import exact_steps
+from rbdsolve.solvers.shared.options import Options
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    opts: ImpactOptions = question.options
+    now = instant(model, opts)
+    hits = blows(model, opts)
+    for point in {b.point for b in hits} | set(opts.points):
+        require_known(now.velocity(point), model, opts)
+    work = ImpactEquations(model, opts, now, hits)
+    answers, warnings = work.results()
+    return Solution("impact", Route.EXACT, answers, exact_steps(work, answers), warnings=warnings)

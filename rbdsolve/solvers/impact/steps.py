@@ -1,0 +1,176 @@
+"""The steps of an impact solution, in the order of the seed's problem 2: velocities at
+the instant, T, partial velocities, generalized impulses, Lagrange's equations for
+impact, their solution, then what follows from it."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import configuration, in_basis, ordered_sum, scaled_sum
+from rbdsolve.form.display import Label, Math, Relation
+from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
+from rbdsolve.model.state import t
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import Step
+from rbdsolve.solvers.impact.answers import ImpactAnswers
+from rbdsolve.solvers.impact.equations import ImpactEquations
+
+BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))
+
+
+class _Show:
+    """Display forms: q̇ as ẋ, the unknown velocities after as ẋ_f."""
+
+    def __init__(self, work: ImpactEquations):
+        model = work.model
+        self.model = model
+        self.params = set(model.symbols.parameters.values())
+        self.final = {f: sp.Derivative(sp.Function(f"{n}_f", real=True)(t), t)
+                      for n, f in zip(model.coordinate_names(), work.final)}
+        self.rates = [*model.qd, *work.final, *work.sizes]
+
+    def scalar(self, expr: sp.Expr) -> Math:
+        """Collected in the rates, in exam order, with a common scale pulled out; a value
+        free of them as one tidy fraction."""
+        model = self.model
+        if not expr.has(*self.rates):
+            return model.to_time(tidy_fraction(expr))
+        parts = collect_in(sp.expand(expr), self.rates)
+        terms = [(model.to_time(tidy(c)), tuple(self.time(f) for f in factors))
+                 for c, factors in ordered_sum(parts, self.rates, list(model.q))]
+        return scaled_sum(terms, self.params)
+
+    def time(self, expr):
+        return self.model.to_time(expr.xreplace(self.final))
+
+    def vector(self, v: sp.Matrix) -> Math:
+        """(ẋ − 1/2 l φ̇) eₓ + …"""
+        return in_basis([(self.scalar(x), e) for x, e in zip(v, BASIS) if sp.expand(x) != 0])
+
+    def angular(self, omega: sp.Matrix) -> Math:
+        """A planar ω (about z) as a scalar, else a vector."""
+        if sp.expand(omega[0]) == 0 and sp.expand(omega[1]) == 0:
+            return self.scalar(omega[2])
+        return self.vector(omega)
+
+
+def exact_steps(work: ImpactEquations, answers: ImpactAnswers) -> tuple[Step, ...]:
+    show = _Show(work)
+    out = equation_steps(work)
+    out.append(st.result("Solving these linear equations:",
+                         *[Relation(show.time(u), show.scalar(work.solution[u])) for u in work.solution]))
+    out += _after(work, show, answers)
+    return tuple(out)
+
+
+def equation_steps(work: ImpactEquations) -> list[Step]:
+    """From the velocities at the instant to the impulse equations, before solving."""
+    show = _Show(work)
+    out = [*_given(work, show), _velocities(work, show),
+           st.definition("Kinetic energy at the instant:", Relation(sp.Symbol("T"), show.scalar(work.now.T))),
+           _partial_velocities(work, show), _impulses(work, show), _lagrange(work, show)]
+    restitution = _restitution(work, show)
+    if restitution.math:
+        out.append(restitution)
+    return out
+
+
+def unknown_name(work: ImpactEquations, unknown: sp.Symbol) -> sp.Expr:
+    return _Show(work).time(unknown)
+
+
+def _given(work: ImpactEquations, show: _Show) -> list[Step]:
+    model = work.model
+    out = []
+    if work.now.at:
+        q = [model.to_time(q) for q in model.q if q in work.now.at]
+        out.append(st.given("The configuration at the instant of the impact:",
+                            configuration(tuple(q), [work.now.at[x] for x in model.q if x in work.now.at])))
+    moving = [(qd, v) for qd, v in work.before.items() if v != 0]
+    if moving:
+        out.append(st.given("Generalized velocities just before the impact:",
+                            *[Relation(model.to_time(qd), v) for qd, v in moving]))
+    return out
+
+
+def _velocities(work: ImpactEquations, show: _Show) -> Step:
+    model, at = work.model, work.now.at
+    rows = []
+    for body in model.bodies:
+        rows.append(Relation(sp.Symbol(f"v_{body.name}"), show.vector(body.velocity(model.state).xreplace(at))))
+        omega = body.angular_velocity(model.state).xreplace(at)
+        if omega != sp.zeros(3, 1) or body.given_angular_velocity is not None:
+            rows.append(Relation(sp.Symbol(f"omega_{body.name}"), show.angular(omega)))
+    for point in dict.fromkeys(b.point for b in work.hits):
+        rows.append(Relation(sp.Symbol(f"v_{point}"), show.vector(work.now.velocity(point))))
+    return st.definition("Velocities at the instant (of each body's centre of mass, and of the struck "
+                         "points), linear in the generalized velocities:", *rows)
+
+
+def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:
+    model = work.model
+    rows = [Relation(sp.Derivative(sp.Symbol(f"v_{p}"), model.to_time(qd)),
+                     show.vector(sp.diff(work.now.velocity(p), qd)))
+            for p in dict.fromkeys(b.point for b in work.hits) for qd in model.qd]
+    return st.definition("Partial velocities ∂v/∂q̇ of the struck points:", *rows)
+
+
+def _impulses(work: ImpactEquations, show: _Show) -> Step:
+    rows = [Relation(sp.Symbol(f"P_{b.point}"), show.vector(b.impulse)) for b in work.hits]
+    rows += [Relation(sp.Symbol(f"I_{n}"), show.scalar(I)) for n, I in zip(work.model.coordinate_names(), work.I)]
+    unknown = "; λ n is a collision's unknown impulse, n its normal as given" if work.sizes else ""
+    return st.equation(f"Impulses on the system and the generalized impulses I_a = Σ P · ∂v/∂q̇_a{unknown}:",
+                       *rows)
+
+
+def _lagrange(work: ImpactEquations, show: _Show) -> Step:
+    rows = [Relation(show.scalar(p.xreplace(work.after) - p.xreplace(work.before)), show.scalar(I))
+            for p, I in zip(work.momenta, work.I)]
+    return st.equation("Lagrange's equations for impact, ∂T/∂q̇_a|f − ∂T/∂q̇_a|i = I_a (f: just after, "
+                       "i: just before):", *rows)
+
+
+def _restitution(work: ImpactEquations, show: _Show) -> Step:
+    rows = []
+    for blow in work.hits:
+        if blow.size is None:
+            continue
+        e = work.model.symbols.scalar(blow.collision.restitution)
+        rows.append(Relation(show.scalar(work.normal_speed(blow, final=True)),
+                             show.scalar(-e * work.normal_speed(blow, final=False))))
+    return st.equation("Newton's law of restitution at each collision, n·(v − u)|f = −e n·(v − u)|i "
+                       "(u: the velocity of what is hit, n: the normal):", *rows)
+
+
+def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[Step]:
+    out = []
+    rows = [Relation(sp.Symbol(f"v_{p}"), show.vector(sp.Matrix(v))) for p, v in answers.points.items()]
+    rows += [Relation(sp.Symbol(f"u_{p}"), show.vector(sp.Matrix(v))) for p, v in answers.particles.items()]
+    if rows:
+        particles = " (u: the particle that struck there)" if answers.particles else ""
+        out.append(st.result(f"Velocities just after the impact{particles}:", *rows))
+    out.append(st.result("Kinetic energy of the system and the striking particles, just before (i) and "
+                         "after (f), and the energy lost:",
+                         Relation(sp.Symbol("T_i"), show.scalar(answers.energy_before)),
+                         Relation(sp.Symbol("T_f"), show.scalar(answers.energy_after)),
+                         Relation(Label("Tᵢ − T_f", "T_i - T_f"), show.scalar(answers.energy_lost))))
+    if answers.restitution:
+        out.append(st.result("The coefficient of restitution this impact amounts to, "
+                             "e = −n·(v − u)|f / n·(v − u)|i:",
+                             *[Relation(sp.Symbol(f"e_{p}"), e) for p, e in answers.restitution.items()]))
+    out.append(st.result("Impulse from the supports, the change of momentum Σ m Δv_G less the impulses "
+                         "applied:", Relation(sp.Symbol("P_supports"), show.vector(sp.Matrix(answers.support_impulse)))))
+    if answers.centre_of_percussion is not None:
+        p = sp.Symbol(work.opts.centre_of_percussion)
+        out.append(st.result("The supports feel no impulse (the centre of percussion) when",
+                             Relation(p, answers.centre_of_percussion)))
+    return out
+
+
+def numeric_steps(work: ImpactEquations, condition: float) -> tuple[Step, ...]:
+    """The impulse equations, then their solution in floats at the parameter values."""
+    values = ", ".join(f"{k} = {float(v):g}" for k, v in work.model.values.items())
+    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve, condition number "
+                       f"{condition:.3g}):",
+                       *[Relation(unknown_name(work, u), sp.Float(float(v), 15)) for u, v in work.solution.items()])
+    return (*equation_steps(work), solved)

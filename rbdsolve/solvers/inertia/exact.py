@@ -1,0 +1,228 @@
+"""Inertia tensors, the parallel axis theorem, principal moments and axes.
+
+About the centre of mass G, a body made of parts i (holes: negative mass) has
+
+    J_G = Σ_i [J_i + m_i (|d_i|² 1 − d_i d_iᵀ)],   d_i = r_i − r_G,
+
+and about any point P (Steiner, the parallel axis theorem)
+
+    J_P = J_G + m (|d|² 1 − d dᵀ),   d = r_G − r_P.
+
+In a rotated frame whose unit vectors are the rows of A, J' = A J Aᵀ. Principal moments
+are the roots of det(J − λ1) = 0 (closed forms: a common scale m r² is pulled out and
+the cubic solved over the rationals, in trigonometric form when it has three real
+irrational roots); principal axes are unit vectors spanning each null space of J − λ1,
+an orthonormal basis of the plane when a moment is repeated. Products of inertia are
+the tensor's off-diagonal entries, J_xy = −∫ x y dm, as in SG2150.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.arrange import common_scale
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.inertia import parallel_axis
+from rbdsolve.problem.schema import InertiaOptions, Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.inertia.answers import InertiaAnswers, Principal
+from rbdsolve.solvers.inertia.steps import (
+    CONVENTION,
+    _centre_steps,
+    characteristic_step,
+    frame_step,
+    numeric_principal_steps,
+    principal_steps,
+    scene_axes_step,
+    shift_steps,
+)
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.values import sample
+
+LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    opts: InertiaOptions = question.options
+    body = next(b for b in model.bodies if b.name == opts.body)
+    symbols = set(model.symbols.parameters.values())
+    steps: list[st.Step] = list(_centre_steps(body, model, symbols))
+    J_G = body.inertia_in_scene().applyfunc(tidy)
+    if body.rotation != sp.eye(3):
+        steps.append(scene_axes_step(J_G, symbols))
+    J, about = J_G, None
+    if opts.about is not None:
+        about = model.symbols.with_points(model.points).vector(opts.about)
+        label = opts.about.text if opts.about.text.isidentifier() else "P"
+        J, shift_steps = _shift(body, J_G, about, label, symbols)
+        steps += shift_steps
+    if opts.axes is not None:
+        A = frame_matrix(opts, model)
+        J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
+        steps.append(frame_step(A, J, symbols))
+    found = principal(J, symbols, model)
+    steps += [*found.steps, st.note(CONVENTION)]
+    answers = InertiaAnswers(
+        body.mass, tuple(tidy(x) for x in body.position),
+        tuple(about) if about is not None else None,
+        sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), found.moments, found.axes, found.repeated,
+    )
+    return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps),
+                    warnings=found.warnings)
+
+
+def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: set):
+    """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P."""
+    d = (body.position - P).applyfunc(tidy)
+    term = parallel_axis(body.mass, d).applyfunc(tidy)
+    J = (J_G + term).applyfunc(tidy)
+    return J, shift_steps(label, d, J_G, term, J, symbols)
+
+
+def frame_matrix(opts: InertiaOptions, model: Model) -> sp.Matrix:
+    """A: the rows are the asked unit vectors in scene axes, checked orthonormal."""
+    names = model.symbols.with_points(model.points)
+    rows = [names.vector(e).applyfunc(tidy) for e in opts.axes]
+    A = sp.Matrix.hstack(*rows).T
+    if (A * A.T - sp.eye(3)).applyfunc(lambda x: sp.simplify(x)) != sp.zeros(3, 3):
+        raise UnsolvedError(f"{opts.axes[0].loc}: the axes must be orthonormal unit vectors (A Aᵀ = 1)")
+    return A
+
+
+MAX_ROOT_OPS = 40  # a closed form longer than this is no help to a reader
+
+
+def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
+    """Principal moments (ascending) and unit principal axes of a symmetric tensor:
+    closed forms when they are compact; for a tensor that is numeric apart from its
+    scale, numpy's symmetric eigensolver otherwise (and a warning says so)."""
+    scale = common_scale(list(J), symbols)
+    scale = -scale if scale.could_extract_minus_sign() else scale
+    J_hat = (J / scale).applyfunc(tidy)
+    poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
+    steps = [characteristic_step(scale, poly)]
+    found = _closed_form(J_hat, poly)
+    if found is None:
+        if J_hat.free_symbols:
+            raise UnsolvedError("the principal moments have no compact closed form here; give "
+                                "parameter values for numeric ones")
+        return _numeric_principal(J_hat, scale, steps)
+    roots = sorted(((tidy(r), k) for r, k in found.items()), key=lambda rk: _size(rk[0], model))
+    moments, axes, repeated = [], [], []
+    for root, multiplicity in roots:
+        moments += [tidy(scale * root)] * multiplicity
+        axes += _unit_axes(J_hat, root, multiplicity)
+        if multiplicity > 1:
+            repeated.append(tidy(scale * root))
+    steps += principal_steps(moments, axes, repeated)
+    return Principal(tuple(moments), tuple(_unit(d) for d in axes), tuple(repeated), tuple(steps), ())
+
+
+def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
+    """{root: multiplicity} in closed form, or None when no compact real form is found
+    (an irreducible cubic with irrational coefficients gives Cardano's formula in i)."""
+    if J_hat.is_diagonal():
+        found: dict[sp.Expr, int] = {}
+        for i in range(3):
+            found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
+        return found
+    found = sp.roots(poly, LAMBDA, trig=True)
+    if sum(found.values()) != 3:
+        return None
+    if any(r.has(sp.I) or sp.count_ops(r) > MAX_ROOT_OPS for r in found):
+        return None
+    return found
+
+
+def _numeric_principal(J_hat: sp.Matrix, scale: sp.Expr, steps: list[st.Step]) -> Principal:
+    """numpy.linalg.eigh on Ĵ: ascending moments, orthonormal axes, to about 1e-15."""
+    import numpy as np
+
+    values, vectors = np.linalg.eigh(np.array(J_hat.evalf(20).tolist(), dtype=float))
+    moments = tuple(scale * sp.Float(v, 15) for v in values)
+    axes = []
+    for k in range(3):
+        v = vectors[:, k]
+        first = next(x for x in v if abs(x) > 1e-12)
+        axes.append(tuple(sp.Float(x if first > 0 else -x, 15) for x in v))
+    note = ("No compact closed form for these roots: the principal moments and axes are "
+            "numeric (numpy's symmetric eigensolver, relative error about 1e-15).")
+    steps += numeric_principal_steps(moments, axes)
+    return Principal(moments, tuple(axes), (), tuple(steps), (note,))
+
+
+def _size(value: sp.Expr, model: Model) -> float:
+    return sample(value, model.values).real
+
+
+def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Matrix]:
+    """Directions spanning the null space of Ĵ − κ1, cleared of denominators, first
+    nonzero entry positive: (0, 12, √145 − 1). A repeated moment's plane gets an
+    orthogonal pair (Gram–Schmidt). Divide by the length for unit vectors."""
+    if multiplicity == 1 and not _surd(root):
+        return [_first_positive(_adjugate_column(J_hat, root))]
+    null = (J_hat - root * sp.eye(3)).applyfunc(tidy).nullspace(simplify=True)
+    if len(null) != multiplicity:
+        raise UnsolvedError(f"could not find the principal axes for the moment {sp.sstr(root)}")
+    directions: list[sp.Matrix] = []
+    for v in null:
+        for u in directions:
+            v = v - (u.dot(v) / u.dot(u)) * u
+        first = next(x for x in v if tidy(x) != 0)
+        directions.append(_first_positive(_integral((v / first).applyfunc(tidy))))
+    return directions
+
+
+def _unit(direction: sp.Matrix) -> tuple[sp.Expr, ...]:
+    """direction/|direction|; tidied when it is made of surds (else left as it is: a
+    trigonometric cubic root does not shorten, and expanding it is slow)."""
+    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    unit = [x / length for x in direction]
+    return tuple(tidy(x) if _surd(x) else x for x in unit)
+
+
+def _surd(value: sp.Expr) -> bool:
+    """Rational, or built from rationals with square roots only (nullspace stays fast)."""
+    return all(p.exp.is_Rational and p.exp.q in (1, 2) for p in value.atoms(sp.Pow)) and not value.atoms(
+        sp.Function)
+
+
+def _adjugate_column(J_hat: sp.Matrix, root: sp.Expr) -> sp.Matrix:
+    """For a simple root κ, adj(κ1 − Ĵ) has rank one: its largest column is the axis
+    (the cofactor method; no symbolic elimination on the cubic's trigonometric roots)."""
+    kappa = sp.Dummy("kappa")
+    adjugate = (kappa * sp.eye(3) - J_hat).adjugate().applyfunc(sp.expand)
+    columns = [adjugate[:, j].xreplace({kappa: root}) for j in range(3)]
+    size = [sum(abs(complex(sp.N(x.xreplace({s: 1 for s in x.free_symbols})))) for x in c) for c in columns]
+    return columns[max(range(3), key=lambda j: size[j])].applyfunc(sp.expand)
+
+
+def _integral(v: sp.Matrix) -> sp.Matrix:
+    """The direction of v with its rational denominators cleared: (0, 1, (√145 − 1)/12)
+    becomes (0, 12, √145 − 1)."""
+    scale = sp.lcm([r.q for x in v for r in x.atoms(sp.Rational)] or [1])
+    return (v * scale).applyfunc(sp.expand)
+
+
+def _first_positive(v: sp.Matrix) -> sp.Matrix:
+    """The sign convention: the first nonzero component is positive."""
+    first = next(x for x in v if x != 0)
+    return -v if first.could_extract_minus_sign() else v
+
+
+def _to_time(answers: InertiaAnswers, model: Model) -> InertiaAnswers:
+    """Answers that depend on the configuration show coordinates as functions of t."""
+    if not model.q:
+        return answers
+    convert = model.to_time
+    return InertiaAnswers(
+        convert(answers.mass), tuple(convert(x) for x in answers.centre),
+        tuple(convert(x) for x in answers.about) if answers.about is not None else None,
+        convert(answers.J_G), convert(answers.J),
+        tuple(convert(x) for x in answers.principal_moments),
+        tuple(tuple(convert(x) for x in v) for v in answers.principal_axes),
+        tuple(convert(x) for x in answers.repeated),
+    )

@@ -1,0 +1,131 @@
+"""The worked solution of an inertia question: J_G from the table or from the parts,
+the parallel axis theorem, a change of axes, det(λ1 − J) = 0 and each principal moment
+with its unit axis; and the numeric route's tensor and eigenpairs."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import scaled_matrix
+from rbdsolve.form.display import Label, Product, Relation, Scaled, Terms
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model, RigidBody, part_properties
+from rbdsolve.model.inertia import parallel_axis
+from rbdsolve.report import steps as st
+
+STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
+
+
+CONVENTION = ("Products of inertia are the tensor's off-diagonal entries, J_xy = −∫ x y dm "
+              "(the SG2150 convention).")
+
+
+def _show(name: str, J: sp.Matrix, symbols: set) -> Relation:
+    return Relation(sp.Symbol(name), scaled_matrix(J, symbols))
+
+
+def _centre_steps(body: RigidBody, model: Model, symbols: set) -> list[st.Step]:
+    """J_G from the shape table (one part), or from the parts by the parallel axis
+    theorem (a composite body)."""
+    parts = body.source.parts
+    if len(parts) == 1 and not parts[0].hole:
+        part = parts[0]
+        what = f"a {part.shape.value.replace('_', ' ')}" if part.shape else "the given inertia"
+        return [st.definition(f"{body.name}: J about its centre of mass G, from the table for {what} "
+                              "(body axes):", _show("J_G", body.inertia, symbols))]
+    names = model.symbols.with_points(model.points)
+    props = [part_properties(p, names) for p in parts]
+    centre = body.rotation.T * (body.position - names.vector(body.source.at))
+    steps = [st.definition(
+        f"{body.name} is made of {len(parts)} parts (holes count with negative mass); its mass "
+        "and centre of mass from its origin:",
+        Relation(sp.Symbol("m"), tidy(body.mass)),
+        Relation(sp.Symbol("r_G"), sp.ImmutableMatrix(centre.applyfunc(tidy)).T),
+    )]
+    for part, p in zip(parts, props):
+        d = (p.centre - centre).applyfunc(tidy)
+        label = part.name if not part.hole or "hole" in part.name else f"{part.name} (a hole)"
+        steps.append(st.equation(
+            f"{label}: J about its own centre, then shifted by d = r_{part.name} − r_G:",
+            _show(f"J_{part.name}", p.inertia, symbols),
+            Relation(sp.Symbol("d"), sp.ImmutableMatrix(d).T),
+            _show(f"J_{part.name},G", (p.inertia + parallel_axis(p.mass, d)).applyfunc(tidy), symbols),
+        ))
+    steps.append(st.result("Summing the parts:", _show("J_G", body.inertia, symbols)))
+    return steps
+
+
+def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
+    return Terms((scaled_matrix(a, symbols), scaled_matrix(b, symbols)))
+
+
+def _unit_display(direction: sp.Matrix):
+    """1/√(290 − 2√145) (0, 12, √145 − 1): a unit vector as its direction over its length."""
+    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    vector = sp.ImmutableMatrix([list(direction)])
+    return vector if length == 1 else Scaled(1 / length, vector)
+
+
+def _cubic(poly: sp.Poly):
+    kappa = sp.Symbol("kappa")
+    return Terms(tuple(Product(c, (kappa**k,) if k else ()) for (k,), c in poly.terms()))
+
+
+def scene_axes_step(J_G: sp.Matrix, symbols: set) -> st.Step:
+    return st.equation("In scene axes, J_G = R J_G,body Rᵀ:", _show("J_G", J_G, symbols))
+
+
+def shift_steps(label: str, d: sp.Matrix, J_G: sp.Matrix, term: sp.Matrix, J: sp.Matrix,
+                symbols: set) -> list[st.Step]:
+    """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P, as the exam writes it."""
+    return [
+        st.given(f"The centre of mass G relative to {label}:", Relation(sp.Symbol("d"), sp.ImmutableMatrix(d).T)),
+        st.equation(f"Parallel axis theorem, J_{label} = J_G + m (|d|² 1 − d dᵀ), with",
+                    Relation(STEINER, scaled_matrix(term, symbols))),
+        st.result(f"About {label}:", Relation(sp.Symbol(f"J_{label}"), _sum(J_G, term, symbols),
+                                               more=(scaled_matrix(J, symbols),))),
+    ]
+
+
+def frame_step(A: sp.Matrix, J: sp.Matrix, symbols: set) -> st.Step:
+    return st.equation("In the frame with unit vectors (rows of A), J' = A J Aᵀ:",
+                       Relation(sp.Symbol("A"), sp.ImmutableMatrix(A)), _show("J'", J, symbols))
+
+
+def characteristic_step(scale: sp.Expr, poly: sp.Poly) -> st.Step:
+    return st.equation("Principal moments: det(λ1 − J) = 0; with λ = J₀ κ, J₀ the common scale:",
+                       Relation(sp.Symbol("J_0"), scale), Relation(_cubic(poly), sp.Integer(0)))
+
+
+def principal_steps(moments: list[sp.Expr], axes: list[sp.Matrix], repeated: list[sp.Expr]) -> list[st.Step]:
+    """Each moment with its unit axis, then a note on each repeated moment."""
+    steps = []
+    for i, (moment, axis) in enumerate(zip(moments, axes), start=1):
+        steps.append(st.result(f"Principal moment {i} and its axis (a unit vector):",
+                               Relation(sp.Symbol(f"J_{i}"), moment),
+                               Relation(sp.Symbol(f"e_{i}"), _unit_display(axis))))
+    for value in repeated:
+        where = ("every axis is a principal axis" if moments.count(value) == 3 else
+                 "every axis in the plane of its two axes above is a principal axis")
+        steps.append(st.note(f"A repeated moment: {where},", Relation(sp.Symbol("J"), value)))
+    return steps
+
+
+def numeric_principal_steps(moments, axes) -> list[st.Step]:
+    """Moments and axes found by numpy for a tensor with no compact closed form."""
+    return [st.result(f"Principal moment {i} and its axis (numeric):",
+                      Relation(sp.Symbol(f"J_{i}"), moment),
+                      Relation(sp.Symbol(f"e_{i}"), sp.ImmutableMatrix([list(axis)])))
+            for i, (moment, axis) in enumerate(zip(moments, axes), start=1)]
+
+
+def numeric_steps(J, moments, axes) -> tuple[st.Step, ...]:
+    """The numeric route: the tensor in floats, then its eigenpairs."""
+    return (
+        st.equation("The inertia tensor in numbers (assembled exactly, rounded once):",
+                    Relation(sp.Symbol("J"), sp.ImmutableMatrix(J).applyfunc(lambda x: sp.Float(x, 15)))),
+        st.result("Principal moments and axes, J e = λ e (numpy.linalg.eigh):",
+                  *[Relation(sp.Symbol(f"J_{k + 1}"), sp.Float(m, 15), more=()) for k, m in enumerate(moments)],
+                  *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 12) for x in axes[:, k]]]))
+                    for k in range(3)]),
+    )

@@ -1,0 +1,51 @@
+"""The answers of a modes question, both routes (docs/json.md, modes)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from typing import Mapping
+
+import sympy as sp
+
+
+class Motion(Enum):
+    OSCILLATION = "oscillation"
+    GROWTH = "growth"
+    NEUTRAL = "neutral"
+
+
+@dataclass(frozen=True)
+class ModesAnswers:
+    about: Mapping[str, sp.Expr]
+    M: sp.ImmutableMatrix
+    K: sp.ImmutableMatrix
+    characteristic: sp.Expr  # det(K − λM), a polynomial in λ
+    eigenvalues: tuple[sp.Expr, ...]  # λ, ascending, repeated by multiplicity
+    frequencies: tuple[sp.Expr | None, ...]  # ω = √λ where λ > 0
+    motions: tuple[Motion, ...]
+    shapes: tuple[tuple[sp.Expr, ...], ...]  # one amplitude vector per eigenvalue
+    growth_rates: tuple[sp.Expr | None, ...] = ()  # γ = √(−λ) where λ < 0
+    multiplicities: tuple[int, ...] = ()  # of each λ as a root of det(K − λM)
+    amplitude_check: object = None  # solvers/modes/amplitude.py, with 'check_amplitudes'
+
+
+@dataclass(frozen=True)
+class NumericModesAnswers:
+    about: Mapping[str, float]
+    M: tuple[tuple[float, ...], ...]
+    K: tuple[tuple[float, ...], ...]
+    eigenvalues: tuple[float, ...]  # λ, ascending
+    frequencies: tuple[float | None, ...]  # ω = √λ where λ > 0
+    motions: tuple[Motion, ...]
+    shapes: tuple[tuple[float, ...], ...]  # first nonzero entry 1, as on the exact route
+    absolute_errors: tuple[float, ...]  # the bound on |λ̂ − λ| for each λ
+    relative_errors: tuple[float | None, ...]  # that over |λ|; None where λ is neutral (zero within it)
+    growth_rates: tuple[float | None, ...] = ()  # γ = √(−λ) where λ < 0
+    orthonormal_shapes: tuple[tuple[float, ...], ...] = ()  # the shapes scaled so aᵢᵀ M aⱼ = δᵢⱼ
+    clusters: tuple[tuple[int, ...], ...] = ()  # modes (1-based) equal within their bounds: one mode space each
+    shape_errors: tuple[float, ...] = ()  # sin Θ bound between each mode's computed space and the exact one
+    condition_M: float | None = None  # κ₂(M)
+    conditions: tuple[float | None, ...] = ()  # relative condition number κ(λ) of each λ; None where neutral
+    spread: float | None = None  # max |λ|/min |λ| over the modes that are not neutral
+    amplitude_check: object = None  # solvers/modes/amplitude.py, with 'check_amplitudes'

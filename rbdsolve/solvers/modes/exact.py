@@ -1,0 +1,325 @@
+"""Small oscillations about an equilibrium: normal modes.
+
+With q = q₀ + u and u small, Lagrange's equations linearize to
+
+    M ü + K u = 0,   M = ∂²T/∂q̇∂q̇ |_(q₀),   K = ∂²V/∂q∂q |_(q₀)
+
+(e.g. Goldstein, ch. 6). M comes from the velocity Jacobians at q₀ and K from the
+Hessian of V at q₀: the nonlinear equations of motion are never built. Trying
+u = a cos(ωt) gives det(K − λM) = 0 with λ = ω². When M = s_M M̂ and K = s_K K̂ with
+rational M̂, K̂ (the usual case: s_M = m r², s_K = m g r), the characteristic
+polynomial is taken over the rationals in the dimensionless μ = λ s_M / s_K, which is
+fast and exact; otherwise over the parameters.
+
+λ > 0: oscillation at ω = √λ; λ < 0: exponential growth at rate γ = √−λ (the solutions
+e^(±γt) a); λ = 0: neutral, its mode shape the direction of no restoring force.
+
+A root of multiplicity k has a k-dimensional mode space (K and M symmetric, M > 0:
+the pencil is diagonalizable, Parlett, The Symmetric Eigenvalue Problem, §15.3); its
+null space basis is made M-orthogonal (Gram–Schmidt in the inner product uᵀ M v) and
+each vector scaled so its first nonzero entry is 1.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+from sympy.polys.matrices import DomainMatrix
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.arrange import common_scale
+from rbdsolve.form.display import Relation
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.equilibria.answers import Stability
+from rbdsolve.solvers.equilibria.exact import classify, find_equilibria, gradient
+from rbdsolve.solvers.modes.amplitude import with_check
+from rbdsolve.solvers.modes.answers import ModesAnswers, Motion
+from rbdsolve.solvers.modes.steps import descending, exact_steps
+from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
+from rbdsolve.solvers.shared.singular import exact_reason
+from rbdsolve.solvers.shared.values import sample
+
+LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
+MU = sp.Symbol("mu")
+# det(K − λM) as it is written, in that order (non-commutative symbols keep it)
+DET = sp.Function("det")(sp.Symbol("K", commutative=False)
+                         - sp.Symbol("lamda", commutative=False) * sp.Symbol("M", commutative=False))
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_static(model, "small oscillations")
+    at, chosen = _equilibrium(question, model)
+    M = sp.ImmutableMatrix(mass_matrix(model, at))
+    K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    singular = exact_reason(M, model.coordinate_names(), "at this configuration")
+    if singular:
+        raise UnsolvedError(singular)
+    spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
+    eigenvalues = [lam for lam, _, _ in spectrum.pairs]
+    motions = _motions(eigenvalues, K, model)
+    frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
+                        for lam, mo in zip(eigenvalues, motions))
+    shapes = _shapes(spectrum, model.values)
+    rates = tuple(tidy(sp.sqrt(-lam)) if mo is Motion.GROWTH else None for lam, mo in zip(eigenvalues, motions))
+    answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
+                           rates, tuple(eigenvalues.count(lam) for lam in eigenvalues))
+    return with_check(question, model, Solution("modes", Route.EXACT, answers, exact_steps(answers, model, spectrum.steps)))
+
+
+@dataclass(frozen=True)
+class _Spectrum:
+    """The eigenvalues λ, ascending, each with the root of the eigenproblem actually
+    solved: (K̂ − μ M̂) a = 0 in the scaled form, or (K − λM) a = 0 itself."""
+
+    K: sp.Matrix
+    M: sp.Matrix
+    x: sp.Symbol  # the variable of the eigenproblem solved: μ (scaled) or λ
+    pairs: list[tuple[sp.Expr, sp.Expr, sp.Poly]]  # (λ, root, the irreducible factor it solves)
+    steps: tuple[Relation, ...]
+    characteristic: sp.Expr  # det(K − λM)
+
+
+def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectrum:
+    s_M, s_K = common_scale(list(M), symbols), common_scale(list(K), symbols)
+    scale = s_K / s_M  # λ = scale · μ
+    M_hat, K_hat = M / s_M, K / s_K
+    if _rational(M_hat) and _rational(K_hat):
+        poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
+        pairs = [(tidy(scale * mu), mu, f) for mu, f in _rational_roots(poly)]
+        steps = (Relation(DET, sp.Integer(0)), Relation(descending(poly), sp.Integer(0), lead="⇒"),
+                 Relation(MU, tidy(LAMBDA / scale)))
+        # det(K − λM) = s_Kⁿ det(K̂ − μM̂) with μ = λ s_M/s_K
+        characteristic = tidy(s_K ** K.rows * poly.as_expr().subs(MU, LAMBDA * s_M / s_K))
+        return _Spectrum(K_hat, M_hat, MU, _ascending(pairs, model), steps, characteristic)
+    poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
+    pairs = [(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
+    steps = (Relation(DET, sp.Integer(0)), Relation(descending(poly), sp.Integer(0), lead="⇒"))
+    return _Spectrum(K, M, LAMBDA, _ascending(pairs, model), steps, tidy(poly.as_expr()))
+
+
+def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
+    names = model.coordinate_names()
+    about = question.options.about
+    if about is not None:
+        symbols = model.symbols
+        at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
+        residual = [tidy(g.xreplace(at)) for g in gradient(model)]
+        for (name, expr), r in zip(about, residual):
+            if sp.simplify(r) != 0:
+                raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = "
+                                    f"{sp.sstr(model.readable(r))} there")
+        return at, {n: at[q] for n, q in zip(names, model.q)}
+    solutions, _ = find_equilibria(model)
+    stable = [s for s in solutions if classify(model, s).stability is Stability.STABLE]
+    if not stable:
+        raise UnsolvedError("no stable equilibrium found; choose one with "
+                            "'modes: {about: {...}}'")
+    return stable[0], {n: stable[0][q] for n, q in zip(names, model.q)}
+
+
+def _rational(matrix: sp.Matrix) -> bool:
+    return all(x.is_Rational for x in matrix)
+
+
+def _charpoly_rational(K_hat: sp.Matrix, M_hat: sp.Matrix) -> sp.Poly:
+    """det(K̂ − μ M̂) with exact rational arithmetic (DomainMatrix over QQ[μ])."""
+    A = DomainMatrix.from_Matrix(sp.Matrix(K_hat - MU * M_hat)).convert_to(sp.QQ[MU])
+    return sp.Poly(A.det().as_expr(), MU)
+
+
+MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CRootOf
+
+
+def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
+    """Every root of a polynomial over QQ, with the irreducible factor it belongs to:
+    closed forms for factors of degree ≤ 2 and for cubics with a compact real
+    (trigonometric) form, each checked against the isolated roots (``_agree``); exact
+    CRootOf(f, k) otherwise. No Ferrari quartics."""
+    out = []
+    for factor, multiplicity in poly.factor_list()[1]:
+        roots = None
+        if factor.degree() <= 3:
+            found = sp.roots(factor, trig=True)
+            if sum(found.values()) == factor.degree() and all(
+                    not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found) \
+                    and _agree(list(found), factor):
+                roots = list(found)
+        if roots is None:
+            roots = factor.all_roots()
+        out += [(r, factor) for r in roots for _ in range(multiplicity)]
+    return out
+
+
+CHECK_DIGITS = 50
+
+
+def _agree(closed: list[sp.Expr], factor: sp.Poly) -> bool:
+    """Whether closed forms are the roots of ``factor``: their values at CHECK_DIGITS
+    digits match, in order, those of the isolated real roots (CRootOf, exact isolation)
+    to 10^-(CHECK_DIGITS − 10) relative. A guard against sympy simplifying a closed form
+    wrongly: cos(acos(x)/3) evaluates to 1 when x is within ~1e-24 of 1 (a cubic with one
+    eigenvalue 1e12 times the others), which would silently drop a term of a root."""
+    exact = [sp.N(r, CHECK_DIGITS) for r in factor.all_roots()]
+    if len(exact) != len(closed):
+        return False
+    values = sorted(sp.N(r, CHECK_DIGITS) for r in closed)
+    tolerance = sp.Float(10, CHECK_DIGITS) ** (10 - CHECK_DIGITS)
+    return all(abs(a - b) <= tolerance * max(abs(b), 1) for a, b in zip(values, exact))
+
+
+def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
+    """All roots with multiplicity, in closed form where one exists (else CRootOf)."""
+    found = sp.roots(poly, x)
+    if sum(found.values()) == poly.degree():
+        return [r for r, k in found.items() for _ in range(k)]
+    if all(c.is_Rational for c in poly.all_coeffs()):
+        return list(sp.Poly(poly, x).all_roots())  # exact CRootOf for the rest
+    raise UnsolvedError(f"no closed form for the roots of the degree-{poly.degree()} "
+                        "characteristic polynomial")
+
+
+def _ascending(pairs: list[tuple], model: Model) -> list:
+    """Sorted by λ: at the given parameter values, or with every parameter 1."""
+
+    def key(pair):
+        lam = pair[0]
+        number = sample(lam, model.values)
+        if number.imag != 0:
+            return (1, 0.0, sp.default_sort_key(lam))
+        return (0, number.real, sp.default_sort_key(lam))
+
+    return sorted(pairs, key=key)
+
+
+def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Motion, ...]:
+    """Oscillation, growth or neutral for each λ. When a λ's sign is not decided by
+    itself, Sylvester's law of inertia decides it: with M positive definite, K a = λ M a
+    has as many positive, zero and negative λ as K has eigenvalues of each sign, so a
+    positive definite K (a stable equilibrium) makes every λ positive."""
+    counts = matrix_inertia(K, model.values)
+    out = []
+    for lam in eigenvalues:
+        sign = sign_of(lam, model.values)
+        if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
+                and counts.positive + counts.zero + counts.negative == len(eigenvalues):
+            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
+        if isinstance(sign, Undecided):
+            raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the "
+                                "parameters; give values to decide")
+        out.append({1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}[sign])
+    return tuple(out)
+
+
+def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
+    """An amplitude vector a for each λ, (K − λM) a = 0, scaled so its first nonzero
+    entry is 1; a repeated λ takes the next vector of a basis of its mode space.
+
+    For a simple irrational or symbolic root of an irreducible factor f, adj(K − xM) has
+    rank one there and its nonzero columns are a (the cofactor method). The ratios
+    a_k/a_first = adj_kj/adj_first,j are reduced modulo f to polynomials of degree
+    < deg f before the root is put in: exact algebra, no radical simplification.
+    Rational roots and repeated ones use the null space.
+    """
+    K, M, x = spectrum.K, spectrum.M, spectrum.x
+    roots = [root for _, root, _ in spectrum.pairs]
+    counts = {root: roots.count(root) for root in roots}
+    adjugate = None
+    bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
+    used: dict[sp.Expr, int] = {}
+    out = []
+    conjugates: dict[sp.Poly, tuple[sp.Expr, ...] | None] = {}
+    for _, root, factor in spectrum.pairs:
+        if root not in bases:
+            vector = None
+            if counts[root] == 1 and not root.is_Rational and _rational(K) and _rational(M):
+                if factor not in conjugates:
+                    conjugates[factor] = _field_null_vector(K, M, x, factor)
+                if conjugates[factor] is not None:
+                    vector = tuple(_at_root(c, x, root) for c in conjugates[factor])
+            elif counts[root] == 1 and not root.is_Rational:
+                if adjugate is None:
+                    adjugate = (K - x * M).adjugate(method="berkowitz").applyfunc(sp.expand)
+                vector = _shape_mod(adjugate, x, factor.as_expr(), root, values)
+            if vector is not None:
+                bases[root] = [vector]
+            else:
+                null = (K - root * M).applyfunc(tidy).nullspace(simplify=True)
+                bases[root] = [_normalize(v) for v in _m_orthogonal(null, M)]
+        k = used.get(root, 0)
+        used[root] = k + 1
+        out.append(bases[root][k] if k < len(bases[root]) else ())
+    return tuple(out)
+
+
+def _at_root(p: sp.Expr, x: sp.Symbol, root: sp.Expr) -> sp.Expr:
+    """A polynomial p at a root: at a CRootOf, highest power first, built without
+    evaluation (an evaluated Add of CRootOf powers sorts its terms by isolating the
+    root again); at a closed form (radicals), expanded and collected."""
+    if not root.has(sp.CRootOf):
+        return sp.factor_terms(sp.together(sp.expand(p.xreplace({x: root}))))
+    terms = [c * root**k if k else c for (k,), c in sp.Poly(p, x).terms() if c != 0]
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else (terms[0] if terms else sp.Integer(0))
+
+
+def _field_null_vector(K: sp.Matrix, M: sp.Matrix, x: sp.Symbol, f: sp.Poly) -> tuple[sp.Expr, ...] | None:
+    """The mode shape of every root of an irreducible f over QQ at once, as polynomials
+    in x of degree < deg f: the null vector of K − αM over the field QQ(α), f(α) = 0,
+    by exact elimination there (DomainMatrix), scaled so its first nonzero entry is 1.
+    Each root's shape is these polynomials at that root: the roots of f are conjugate,
+    and conjugation maps one null vector onto the other."""
+    alpha = f.all_roots()[0]
+    field = sp.QQ.algebraic_field(alpha)
+    a = field.from_sympy(alpha)
+    rows = [[field.from_sympy(K[i, j]) - a * field.from_sympy(M[i, j]) for j in range(K.cols)]
+            for i in range(K.rows)]
+    null = DomainMatrix(rows, K.shape, field).nullspace()
+    if null.shape[0] != 1:
+        return None
+    entries = null.to_list()[0]  # field elements: polynomials in alpha of degree < deg f
+    first = next(e for e in entries if e)
+    return tuple(sp.Poly([sp.QQ.to_sympy(c) for c in (e / first).to_list()], x).as_expr() for e in entries)
+
+
+def _shape_mod(adjugate: sp.Matrix, x: sp.Symbol, f: sp.Expr, root: sp.Expr,
+               values: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...] | None:
+    """The mode shape at a simple root of f from the adjugate, reduced modulo f."""
+    sample = {s: values.get(s, 1) for s in adjugate.free_symbols | root.free_symbols if s != x}
+    at_root = adjugate.xreplace({x: root}).xreplace(sample).evalf()
+    sizes = [sum(abs(v) for v in at_root[:, j]) for j in range(adjugate.cols)]
+    if any(size.has(sp.nan, sp.zoo, sp.oo) for size in sizes):
+        return None  # the sample fell on a singular point: the null space route instead
+    j = max(range(adjugate.cols), key=lambda c: sizes[c])
+    if sizes[j] == 0:
+        return None
+    first = next(i for i in range(adjugate.rows) if abs(at_root[i, j]) > 1e-9 * sizes[j])
+    try:
+        inverse = sp.invert(adjugate[first, j], f, x)
+    except sp.polys.polyerrors.NotInvertible:
+        return None
+    ratios = [sp.rem(sp.expand(adjugate[k, j] * inverse), f, x) for k in range(adjugate.rows)]
+    return tuple(sp.factor_terms(sp.together(sp.expand(r.xreplace({x: root})))) for r in ratios)
+
+
+def _m_orthogonal(vectors: list[sp.Matrix], M: sp.Matrix) -> list[sp.Matrix]:
+    """Gram–Schmidt in the inner product ⟨u, v⟩ = uᵀ M v (M symmetric positive
+    definite), exact: a basis of the same space with uᵢᵀ M uⱼ = 0 for i ≠ j."""
+    out: list[sp.Matrix] = []
+    for v in vectors:
+        w = sp.Matrix(v)
+        for u in out:
+            w = w - tidy((u.T * M * v)[0] / (u.T * M * u)[0]) * u
+        out.append(w.applyfunc(tidy))
+    return out
+
+
+def _normalize(v: sp.Matrix) -> tuple[sp.Expr, ...]:
+    first = next(x for x in v if x != 0)
+    return tuple(tidy(x / first) for x in v)

@@ -1,0 +1,164 @@
+"""Small oscillations, the floating-point route: the generalized symmetric eigenproblem
+
+    K a = λ M a,   M = Mᵀ > 0,
+
+solved by scipy.linalg.eigh (Cholesky M = L Lᵀ, then the symmetric eigenproblem of
+L⁻¹ K L⁻ᵀ; Golub & Van Loan, Matrix Computations, §8.7), with M and K at the
+equilibrium as floats. The eigenvectors are scaled M-orthonormal (aᵀ M a = 1).
+
+Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three terms:
+
+- the residual: for the computed pair (λ̂, â) with r = K â − λ̂ M â there is an exact
+  eigenvalue of the float pencil within ‖r‖_{M⁻¹}/‖â‖_M (Parlett, The Symmetric
+  Eigenvalue Problem, Thm 4.5.1, applied to L⁻¹ K L⁻ᵀ and x = Lᵀ â);
+- the rounding of r itself: each entry of the computed r is within about
+  n ε (‖K‖₂ + |λ̂| ‖M‖₂) ‖â‖₂ of its value, which in the M⁻¹ norm is at most that over
+  √λ_min(M). Over all vectors this is at most the a priori n ε ‖K‖₂/λ_min(M) of the
+  Cholesky method (Golub & Van Loan §8.7.2) for λ = 0, and it is nonzero wherever K is,
+  so a zero eigenvalue always has a nonzero bound;
+- the rounding of M and K to floats, δM and δK of about n ε ‖M‖₂ and n ε ‖K‖₂: to first
+  order λ moves by âᵀ (δK − λ δM) â (M-normalized â), at most
+  n ε (‖K‖₂ + |λ| ‖M‖₂) ‖â‖₂² (the backward error of the pencil; Higham & Higham,
+  Structured backward error and condition of generalized eigenvalue problems, 1998),
+  divided by 1 − η, η = n ε ‖M‖₂/λ_min(M), which makes the worst vector's bound rigorous
+  (M + δM lies between (1 − η) M and (1 + η) M: Rayleigh quotients). Where η ≥ 1 the
+  rounding of M may be as large as its smallest eigenvalue: the question is refused.
+
+An eigenvalue within its bound of zero is neutral (zero within rounding); its relative
+error is undefined (None). ``error_estimate`` is the largest relative bound of the
+others. A negative λ is reported by its growth rate γ = √(−λ). Clusters of eigenvalues
+equal within their bounds, the error of each mode space, condition numbers and the
+warnings past the tolerance 1e-8: ``modes_spaces``. The 50-digit reference
+(``reference_eigenvalues``) does the same in mpmath.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.modes.amplitude import with_check
+from rbdsolve.solvers.modes.answers import Motion, NumericModesAnswers
+from rbdsolve.solvers.modes.spaces import analyse, warnings
+from rbdsolve.solvers.modes.steps import numeric_steps
+from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.numeric_model import equilibrium_for_modes, linearized
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.singular import float_reason
+from rbdsolve.solvers.shared.values import require_values
+
+EPS = float(np.finfo(float).eps)
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    require_values(model, "the numeric route")
+    require_static(model, "small oscillations")
+    about, notes = equilibrium_for_modes(question, model)
+    M, K, how = linearized(model, about)
+    if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
+        raise UnsolvedError(singular)
+    lam, vectors, absolute = generalized_eigh(K, M)
+    motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
+    relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
+    spaces = analyse(K, M, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
+    answers = NumericModesAnswers(
+        {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K),
+        tuple(float(x) for x in lam),
+        tuple(float(np.sqrt(x)) if m is Motion.OSCILLATION else None for x, m in zip(lam, motions)),
+        motions, tuple(normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative,
+        tuple(float(np.sqrt(-x)) if m is Motion.GROWTH else None for x, m in zip(lam, motions)),
+        _rows(vectors.T), tuple(tuple(i + 1 for i in g) for g in spaces.clusters), spaces.shape_errors,
+        spaces.condition_M, spaces.conditions, spaces.spread)
+    # Only the modes that are not neutral have a relative error; with none, there is no estimate.
+    estimate = max((e for e in relative if e is not None), default=None)
+    return with_check(question, model, Solution("modes", Route.NUMERIC, answers, numeric_steps(answers, model, how),
+                                                warnings=tuple(notes) + warnings(spaces, lam, relative),
+                                                error_estimate=estimate))
+
+
+def classify(lam: float, bound: float) -> Motion:
+    """Neutral where |λ| ≤ its bound (the sign of λ is not known), else by the sign of λ."""
+    if not (np.isfinite(lam) and np.isfinite(bound)):  # never classify NaN: a comparison with it is False
+        raise UnsolvedError(f"the eigenvalue {lam} or its error bound {bound} is not finite")
+    if abs(lam) <= bound:
+        return Motion.NEUTRAL
+    return Motion.OSCILLATION if lam > 0 else Motion.GROWTH
+
+
+def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """λ ascending, M-orthonormal eigenvectors (columns) and each λ's absolute error bound
+    (the module docstring derives it)."""
+    from scipy.linalg import LinAlgError, cholesky, eigh, solve_triangular
+
+    try:
+        L = cholesky(M, lower=True)
+    except LinAlgError:
+        raise UnsolvedError("the mass matrix is not positive definite at this configuration: "
+                            "a coordinate carries no inertia") from None
+    Linv = solve_triangular(L, np.eye(len(M)), lower=True)
+    smallest, eta = _conditioning(M, Linv)
+    lam, vectors = eigh(K, M)
+    # eigh's vectors are M-orthonormal only to rounding (less so as M is ill-conditioned);
+    # ‖Lᵀ a‖ is √(aᵀ M a) without the cancellation that could make it negative.
+    vectors = vectors / np.linalg.norm(L.T @ vectors, axis=0)
+    return lam, vectors, eigen_bounds(K, M, Linv, lam, vectors, smallest, eta)
+
+
+def _conditioning(M: np.ndarray, Linv: np.ndarray) -> tuple[float, float]:
+    """λ_min(M) = 1/‖L⁻¹‖₂² (the same factor as eigh's) and η = n ε ‖M‖₂/λ_min(M), the
+    rounding of M relative to its smallest eigenvalue; refused where η ≥ 1."""
+    smallest = 1.0 / np.linalg.norm(Linv, 2) ** 2
+    eta = len(M) * EPS * np.linalg.norm(M, 2) / smallest
+    if not eta < 1:  # also refuses a NaN
+        raise UnsolvedError(f"the mass matrix is singular in floating point (condition number "
+                            f"{np.linalg.norm(M, 2) / smallest:.3g}): its rounding may be as large as its smallest "
+                            "eigenvalue, so the eigenvalues are not determined; a coordinate carries (almost) no "
+                            "inertia")
+    return smallest, eta
+
+
+def eigen_bounds(K: np.ndarray, M: np.ndarray, Linv: np.ndarray, lam: np.ndarray, vectors: np.ndarray,
+                 smallest: float, eta: float) -> np.ndarray:
+    """|λ̂ − λ| ≤ ‖r‖_{M⁻¹} + n ε (‖K‖ + |λ̂| ‖M‖) (‖â‖/√λ_min(M) + ‖â‖²/(1 − η)), â M-normalized
+    (Parlett Thm 4.5.1; Higham & Higham 1998; the module docstring)."""
+    residual = np.linalg.norm(Linv @ (K @ vectors - M @ vectors * lam), axis=0)
+    scale = len(lam) * EPS * (np.linalg.norm(K, 2) + np.abs(lam) * np.linalg.norm(M, 2))
+    length = np.linalg.norm(vectors, axis=0)
+    return residual + scale * (length / np.sqrt(smallest) + length**2 / (1 - eta))
+
+
+def reference_eigenvalues(K, M, digits: int = 50) -> list:
+    """λ of K a = λ M a to ``digits`` digits (mpmath): Cholesky M = L Lᵀ, then the
+    symmetric eigenvalues of L⁻¹ K L⁻ᵀ. K and M may hold exact or mpf entries."""
+    import mpmath
+
+    with mpmath.workdps(digits + 10):
+        Km, Mm = mpmath.matrix(_mp_rows(K)), mpmath.matrix(_mp_rows(M))
+        L = mpmath.cholesky(Mm)
+        Linv = mpmath.inverse(L)
+        A = Linv * Km * Linv.T
+        A = (A + A.T) / 2
+        return sorted(mpmath.eigsy(A, eigvals_only=True))
+
+
+def _mp_rows(A) -> list[list]:
+    import mpmath
+
+    rows = A.tolist() if hasattr(A, "tolist") else [list(r) for r in A]
+    return [[mpmath.mpf(sp.N(x, mpmath.mp.dps)) if isinstance(x, sp.Basic) else mpmath.mpf(x) for x in r]
+            for r in rows]
+
+
+def _rows(A: np.ndarray) -> tuple[tuple[float, ...], ...]:
+    return tuple(tuple(float(x) for x in row) for row in A)
+
+
+def normalized(v: np.ndarray) -> tuple[float, ...]:
+    """Scaled so the first entry that is not round-off is 1, as the exact route shows."""
+    big = np.max(np.abs(v))
+    first = next(x for x in v if abs(x) > 1e-9 * big)
+    return tuple(float(x / first) for x in v)

@@ -1,0 +1,29 @@
+"""How to solve: the route a question takes and the options every route receives."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import Enum
+from fractions import Fraction
+from typing import Mapping
+
+
+class RouteChoice(Enum):
+    """Which route a question takes: ``exact`` (sympy, rational arithmetic), ``numeric``
+    (floating point: numpy and scipy, every parameter needs a value) or ``auto`` (exact,
+    and numeric where the exact route cannot answer and the values allow it)."""
+
+    EXACT = "exact"
+    NUMERIC = "numeric"
+    AUTO = "auto"
+
+
+@dataclass(frozen=True)
+class Options:
+    """How to solve: parameter values from the command line (they override the file's),
+    the route, and the time budget in seconds for the model and for each question
+    (None: none)."""
+
+    values: Mapping[str, Fraction] = field(default_factory=dict)
+    route: RouteChoice = RouteChoice.AUTO
+    budget: float | None = None

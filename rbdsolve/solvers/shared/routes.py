@@ -1,0 +1,142 @@
+"""How a question is answered: its family's routes, the choice among them, the time
+budget, and a whole problem's report.
+
+    answer(family, question, model, options) -> Solution
+    report(problem, build, answer, options) -> ProblemReport
+
+``--route auto`` runs the exact route, and the numeric route where the exact one
+cannot answer and every parameter has a value; each route runs within the budget
+(``budget.within``) and is timed.
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+import time
+from dataclasses import dataclass, replace
+from typing import Callable
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Problem, Question
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
+from rbdsolve.solvers.shared.budget import OutOfTime, within
+from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
+from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model
+from rbdsolve.solvers.shared.values import missing_values, numeric
+
+Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
+
+
+@dataclass(frozen=True)
+class Family:
+    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+
+    exact: Solver
+    numeric: Solver
+
+
+def later(module: str) -> Solver:
+    """A route whose module (``rbdsolve.solvers.<family>.<route>``) is imported when first
+    asked: numpy, scipy and the numeric machinery stay out of a process that only takes
+    the exact route."""
+
+    def solve(question: Question, model: Model, options: Options) -> Solution:
+        return importlib.import_module(f"rbdsolve.solvers.{module}").solve(question, model, options)
+
+    solve.__qualname__ = f"{module}.solve"
+    return solve
+
+
+def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
+    """Run one question's solver on the route asked for, each route within its own time
+    budget; an unanswerable question, or one past its budget, becomes a Solution with an
+    error (exit code 1), not an exception, so the other questions still run."""
+    start = time.perf_counter()
+    solution = _routed(family, question, model, options)
+    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
+    return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
+
+
+def _finite_estimate(solution: Solution) -> Solution:
+    """``error_estimate`` is a number or None (docs/json.md): a route whose estimate is not
+    finite (a singular matrix in it) gives none, and a warning says so, rather than an
+    infinity that strict JSON cannot hold."""
+    estimate = solution.error_estimate
+    if estimate is None or math.isfinite(estimate):
+        return solution
+    note = (f"no error estimate: the route's estimate is not finite ({estimate}), e.g. a singular Hessian "
+            "where the equilibria form a continuum")
+    return replace(solution, error_estimate=None, warnings=(*solution.warnings, note))
+
+
+def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:
+    """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
+    parameter lacks a value. Each route gets the whole budget (auto may take twice it).
+    The Solution's route is the route that ran last; when both fail, its error gives
+    both routes' reasons."""
+    if options.route is RouteChoice.NUMERIC:
+        return _attempt(Route.NUMERIC, family.numeric, question, model, options)
+    exact = _attempt(Route.EXACT, family.exact, question, model, options)
+    if options.route is RouteChoice.EXACT or exact.solved or missing_values(model):
+        return exact
+    solution = _attempt(Route.NUMERIC, family.numeric, question, model, options, " (numeric route)")
+    if not solution.solved:
+        return replace(solution, error=f"the exact route could not answer ({exact.error}); "
+                                       f"nor could the numeric route ({solution.error})")
+    note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
+    return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _attempt(route: Route, solver, question: Question, model: Model, options: Options, label: str = "") -> Solution:
+    """The solver's Solution within the budget, or a Solution on ``route`` with the
+    reason it could not answer."""
+    try:
+        return _run(solver, question, model, options, label)
+    except (UnsolvedError, OutOfTime) as exc:
+        return _failed(question, route, str(exc))
+
+
+def _failed(question: Question, route: Route, error: str) -> Solution:
+    return Solution(question.kind.value, route, None, (), error=error)
+
+
+def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:
+    with within(options.budget, f"'{question.kind.value}'{route}"):
+        if frame_of(question) is None:
+            return solver(question, model, options)
+        return solve_in_frame(solver, question, model, options)
+
+
+def report(problem: Problem, build: Callable[[], Model], answer: Solver, options: Options) -> ProblemReport:
+    """The model section (T, V, the parameter values) within one budget, then each
+    question within its own. A model past its budget is an UnsolvedError for the whole
+    file (exit code 1), said in one line, except on auto with every value given when
+    only the expansion of T and V ran out: the section then shows the coordinates only,
+    as on the numeric route, and says why."""
+    model = None  # set once built, with its values: only the summary is left then
+    try:
+        with within(options.budget, "the model (T and V)"):
+            built = build()
+            model = built.with_values(options.values) if options.values else built
+            summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
+    except OutOfTime as exc:
+        if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
+            raise UnsolvedError(f"{problem.file}: {exc}") from None
+        summary = _coordinates_instead(model, exc)
+    solutions = tuple(answer(q, model, options) for q in problem.questions)
+    values = {str(k): float(v) for k, v in model.values.items()}
+    symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
+    return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
+                         summary, solutions, values, symbols)
+
+
+def _coordinates_instead(model: Model, exc: OutOfTime) -> ModelSummary:
+    """The numeric route's model section, with a note that T and V ran out of time."""
+    summary = coordinates_only(model)
+    why = st.note(f"warning: {exc}; T and V are not expanded, as on the numeric route "
+                  "(every parameter has a value)")
+    return replace(summary, steps=(why, *summary.steps))

@@ -1,0 +1,81 @@
+"""Signs decided exactly: of one expression (from the parameters' assumptions, else
+their given values) and of a symmetric matrix's eigenvalues (its inertia: how many
+positive, zero and negative). Stability rests on these; what they cannot decide is
+returned as ``Undecided`` with the expression, never guessed."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.form.tidy import tidy
+
+
+@dataclass(frozen=True)
+class Undecided:
+    expr: sp.Expr  # the quantity whose sign could not be decided
+
+
+@dataclass(frozen=True)
+class Inertia:
+    """Eigenvalue sign counts of a symmetric matrix. ``negative`` may be a lower bound
+    (≥ 1) when a negative eigenvalue is proven without counting them all."""
+
+    positive: int
+    zero: int
+    negative: int
+
+
+def matrix_inertia(H: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> Inertia | Undecided:
+    """Eigenvalue sign counts of a symmetric matrix, decided exactly.
+
+    Cheap exact tests first: a diagonal matrix shows its eigenvalues; positive leading
+    principal minors prove positive definiteness (Sylvester's criterion); a negative
+    diagonal entry eᵢᵀHeᵢ < 0 proves a negative eigenvalue. Otherwise Descartes' rule of
+    signs on det(λI − H), exact because a symmetric matrix has real eigenvalues only.
+    Parameter values, when given, decide signs the parameters' assumptions cannot.
+    """
+    n = H.rows
+    if H.is_diagonal():
+        signs = [sign_of(H[i, i], values) for i in range(n)]
+        undecided = [x for x in signs if isinstance(x, Undecided)]
+        if undecided and -1 not in signs:
+            return undecided[0]
+        return Inertia(signs.count(1), signs.count(0), max(signs.count(-1), 1) if undecided else signs.count(-1))
+    if all(sign_of(tidy(H[:k, :k].det()), values) == 1 for k in range(1, n + 1)):
+        return Inertia(n, 0, 0)
+    if any(sign_of(H[i, i], values) == -1 for i in range(n)):
+        return Inertia(0, 0, 1)
+    lam = sp.Dummy("lambda")
+    signs = [sign_of(tidy(c), values) for c in H.charpoly(lam).all_coeffs()]  # leading 1
+    undecided = [x for x in signs if isinstance(x, Undecided)]
+    if undecided:
+        return undecided[0]
+    zero = 0
+    while signs and signs[-1] == 0:
+        signs.pop()
+        zero += 1
+    nonzero = [x for x in signs if x != 0]
+    positive = sum(1 for a, b in zip(nonzero, nonzero[1:]) if a != b)
+    return Inertia(positive, zero, n - positive - zero)
+
+
+def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undecided:
+    """−1, 0 or 1 if the parameters' assumptions (or their given values) decide it."""
+    for form in (value, sp.factor(value)):
+        if form.is_zero:
+            return 0
+        if form.is_positive:
+            return 1
+        if form.is_negative:
+            return -1
+    if values:
+        number = value.xreplace(values)
+        if number.is_number:
+            z = complex(sp.N(number, 30))
+            if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+                return Undecided(value)  # not real at these values
+            return 0 if z.real == 0 else (1 if z.real > 0 else -1)
+    return Undecided(value)

@@ -1,0 +1,41 @@
+"""The answers of a steady motion question, both routes (docs/json.md, steady_motion)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class SteadyMotionAnswers:
+    triad: tuple[str, str, str]  # the names of the triad's unit vectors
+    rates: dict[str, sp.Expr]  # unknown rates found from the rolling conditions
+    angular_velocity: tuple[sp.Expr, sp.Expr, sp.Expr]  # ω in the triad's components
+    angular_momentum: tuple[sp.Expr, sp.Expr, sp.Expr]  # L_P, triad components
+    moment: tuple[sp.Expr, sp.Expr, sp.Expr]  # M_P, triad components
+    relations: tuple[sp.Expr, ...]  # each = 0
+    solved: dict[str, sp.Expr]  # the asked quantities, from the relations
+    # the reactions' other unknowns (not asked for), solved together with the asked ones
+    found_along: dict[str, sp.Expr] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class NumericSteadyMotion:
+    """One solution of the relations."""
+
+    unknowns: dict[str, float | None]  # every unknown solved for (None: the relations leave it open)
+    angular_velocity: tuple[float, float, float]  # ω in the triad's components
+    solved: dict[str, float]  # each solve_for expression (as written) -> its value
+    residuals: tuple[float, ...]  # each relation's value there, in the order of ``relations``
+    absolute_errors: dict[str, float]  # a bound on each value's error: unknowns, solved, omega1..3
+
+
+@dataclass(frozen=True)
+class NumericSteadyMotionAnswers:
+    triad: tuple[str, str, str]
+    relations: tuple[sp.Expr, ...]  # the rolling conditions, then the balances, each = 0
+    angular_velocity: tuple  # one 3-vector, or one per solution when they differ
+    solved: dict[str, float | list[float]]  # a value, or one per solution when they differ
+    solutions: tuple[NumericSteadyMotion, ...]
+    starts: int

@@ -1,0 +1,141 @@
+"""Steady motion of a rigid body: rolling conditions and angular momentum balance in a
+turning triad (the seed's problem 3: a ring rolling on a horizontal circle).
+
+In a steady motion every component in a triad T (turning at Ω_T) is constant. Then
+
+- rolling without slipping at a contact point C: v_G + ω × (r_C − r_G) = 0, solved for
+  the unknown rates (a spin rate);
+- the angular momentum about a point P, L_P = J_G ω + (r_G − r_P) × m v_G, has constant
+  components in T, so dL_P/dt = (dL_P/dt)_T + Ω_T × L_P = Ω_T × L_P;
+- angular momentum balance about P, which may move with velocity v_P,
+
+      dL_P/dt + v_P × m v_G = M_P = Σ (r_i − r_P) × F_i,
+
+  with gravity at G as the force whose moment counts (a contact force at C has none
+  about C), gives the relations between the parameters (each component = 0);
+- with the contact forces stated as reactions R_i at points r_i (their unknowns N,
+  x_N, …), they join M_P = Σ (r_i − r_P) × F_i, and Newton's law for G,
+
+      m a_G = m g + Σ R_i,   a_G = (dv_G/dt)_T + Ω_T × v_G,
+
+  gives three relations more: a cone rolling on its side (a line contact) has its
+  normal force's resultant at an unknown distance along the line. Each rolling contact
+  then needs a reaction (Newton's law counts it even where it has no moment), and the
+  asked quantities are solved together with the reactions' other unknowns, so that no
+  answer keeps one (docs/format.md, steady_motion).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question, SteadyMotionOptions
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers
+from rbdsolve.solvers.steady_motion.balances import (
+    balances,
+    relation,
+    rolling_velocities,
+    setup,
+    sin_cos,
+    unknown_symbols,
+)
+from rbdsolve.solvers.steady_motion.steps import balance_steps, kinematics_step, rolling_steps
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    opts: SteadyMotionOptions = question.options
+    k, vectors = setup(opts, model)
+    omega, v_G = k.omega(), k.velocity(k.body.position)
+    steps = [kinematics_step(vectors, k.Omega, omega, v_G)]
+    rates, rolling_steps = _rolling(opts, model, rolling_velocities(opts, model, k, omega, v_G), omega, vectors)
+    steps += rolling_steps
+    b = balances(opts, model, k, rates, omega, v_G)
+    targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
+    target = targets[0] if len(targets) == 1 else None
+    relations = tuple(relation(x, target) for x in b.components if tidy_fraction(x) != 0)
+    names = model.symbols.with_points(model.points)
+    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
+    answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
+                                  tuple(b.M), relations, solved, {str(u): v for u, v in along.items()})
+    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G)
+    return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+
+
+def _rolling(opts: SteadyMotionOptions, model: Model, v_C: list[sp.Matrix], omega, vectors):
+    """v_C = v_G + ω × (r_C − r_G) = 0 at the contact, solved for the unknown rates."""
+    if not opts.contacts:
+        return {}, []
+    unknowns = [model.symbols.parameters[u] for u in model.problem.unknowns]
+    equations = [x for v in v_C for x in v if x != 0]
+    found = sp.solve(equations, unknowns, dict=True) if equations else [{}]
+    if len(found) != 1:
+        raise UnsolvedError("the rolling condition does not fix the unknown rates")
+    rates = {a: tidy(b) for a, b in found[0].items()}
+    return rates, rolling_steps(opts, v_C, rates, omega.xreplace(rates).applyfunc(tidy), vectors)
+
+
+def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,
+               rates: dict, reaction_unknowns: tuple[sp.Symbol, ...] = ()):
+    """The asked quantities from the relations that hold them, solved together with the
+    reactions' other unknowns (x_N alone needs N too: N x_N = … and N = m g hold them
+    together), so that no answer keeps an unknown; an answer that still holds one (a
+    reaction's unknown or a rate the rolling conditions leave open) is refused. Every
+    other relation must then hold too (unless it holds an unknown not found), or there
+    is no such steady motion. A positive quantity (ω₀²) takes only positive roots.
+    Returns the asked values and those of the reactions' other unknowns."""
+    if not targets:
+        return {}, {}
+    if all(x in rates for x in targets):
+        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}, {}
+    held = set().union(*(x.free_symbols for x in targets))
+    along = [u for u in reaction_unknowns if u not in held]
+    X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
+    replaced = [r.subs(dict(zip(targets, X))) for r in relations]
+    holding = [r for r in replaced if r.has(*X, *along) and not r.has(*held)]
+    found = [f for f in (sp.solve(holding, X + along, dict=True) if holding else [])
+             if all(d in f for d in X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
+                                                   for x, d in zip(targets, X))]
+    asked = ", ".join(x.text for x in opts.solve_for)
+    if len(found) != 1:
+        raise UnsolvedError(f"the relations do not give {asked} uniquely "
+                            f"({'no relation holds ' + asked if not holding else f'{len(found)} solutions'})")
+    back = dict(zip(X, targets))
+    values = {x: tidy_fraction(sin_cos(found[0][d].xreplace(back))) for x, d in zip(targets, X)}
+    _require_known(values, unknown_symbols(model) | held)
+    found_along = {u: tidy_fraction(sin_cos(found[0][u])) for u in along
+                   if u in found[0] and not found[0][u].has(*X, *unknown_symbols(model))}
+    _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
+    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along
+
+
+def _require_known(values: dict, unknown: set) -> None:
+    """An answer must be free of the unknowns: one still holding N (not asked for, and not
+    fixed by the relations) would be no answer."""
+    for x, v in values.items():
+        left = sorted(str(u) for u in v.free_symbols & unknown)
+        if left:
+            raise UnsolvedError(f"the relations leave {', '.join(left)} unknown, and {x} = {sp.sstr(v)} depends "
+                                f"on {'it' if len(left) == 1 else 'them'}: {x} is not fixed by this balance")
+
+
+def _require_rest(relations, values: dict, model: Model, targets, held: set, reactions: bool) -> None:
+    """Every relation free of the unknowns not found must hold with the values found."""
+    others = unknown_symbols(model) - set(targets) - held - set(values)
+    rest = [r for r in relations if not r.has(*others) and tidy_fraction(sin_cos(r.subs(values))) != 0]
+    if rest:
+        shown = ", ".join(f"{x} = {sp.sstr(v)}" for x, v in values.items())
+        hint = " (or a contact force is missing from 'reactions')" if reactions else ""
+        raise UnsolvedError(f"{shown} from the relations, but then {sp.sstr(rest[0])} = 0 must hold too: "
+                            f"no such steady motion in general{hint}")
+
+
+def _reaction_unknowns(opts: SteadyMotionOptions, model: Model, names) -> tuple[sp.Symbol, ...]:
+    """The declared unknowns the reactions hold (N, x_N, F1, F2), in their declared order."""
+    held = set().union(*(names.vector(r.at).free_symbols | names.vector(r.force).free_symbols
+                         for r in opts.reactions))
+    return tuple(s for s in (model.symbols.parameters[u] for u in model.problem.unknowns) if s in held)

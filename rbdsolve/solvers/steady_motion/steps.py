@@ -1,0 +1,107 @@
+"""The worked solution of a steady motion: ω and v_G in the turning triad, the rolling
+conditions, L about the point, dL/dt = Ω_T × L, the moment, the balances and what they
+are solved for; and the numeric route's relations and solutions."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import in_basis
+from rbdsolve.form.display import Label, Product, Relation, Terms
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import SteadyMotionOptions
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
+
+
+def show(v, vectors):
+    return in_basis([(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0])
+
+
+def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptions, targets=(),
+                   a_G: sp.Matrix | None = None) -> list[st.Step]:
+    e = answers.triad
+    about = opts.about.text if opts.about.text.isidentifier() else "P"
+    target = targets[0] if len(targets) == 1 else None
+    forces = "gravity and the reactions" if opts.reactions else "gravity"
+    newton = ([st.equation("The acceleration of G (constant components, so a_G = Ω_T × v_G):",
+                           Relation(sp.Symbol("a_G"), show(a_G, e)))] if a_G is not None else [])
+    balances = ("Newton's law for G, m a_G = m g + Σ R, and the angular momentum balance "
+                f"dL/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
+                f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:")
+    return [
+        st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
+                      Relation(sp.Symbol(f"L_{about}"), show(answers.angular_momentum, e))),
+        st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
+                    Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), show(dL, e))),
+        st.definition(f"The moment of {forces} about {about}, and the velocity of {about}:",
+                      Relation(sp.Symbol(f"M_{about}"), show(answers.moment, e)),
+                      Relation(sp.Symbol(f"v_{about}"), show(v_P, e))),
+        *newton,
+        st.result(balances, *[Relation(_target_first(r, target), sp.Integer(0)) for r in answers.relations]),
+        *_solved_steps(answers, targets),
+    ]
+
+
+def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
+    """The asked values; with the reactions' other unknowns found together with them
+    first (N = m g before the x_N it fixes), as a worked solution would find them."""
+    if not answers.solved:
+        return []
+    asked = [Relation(x, v) for x, v in zip(targets, answers.solved.values())]
+    if not answers.found_along:
+        return [st.result("Solved:", *asked)]
+    return [st.result("Solved, together with the reactions' other unknowns:",
+                      *[Relation(sp.Symbol(u), v) for u, v in answers.found_along.items()], *asked)]
+
+
+def _target_first(relation: sp.Expr, target: sp.Expr | None):
+    """ω₀² (4R + r sin θ) cos θ − 2 g sin θ: the term with the asked quantity first."""
+    if target is None or not relation.is_Add:
+        return relation
+    with_target = [x for x in relation.args if x.has(target)]
+    rest = [x for x in relation.args if not x.has(target)]
+    if len(with_target) != 1:
+        return relation
+    number, coefficient = sp.Mul(*[f for f in sp.Mul.make_args(with_target[0]) if f != target]).as_coeff_Mul()
+    return Terms((Product(number, (target, coefficient)), *rest))
+
+
+def numeric_steps(a: NumericSteadyMotionAnswers, opts: SteadyMotionOptions, omega, v_G, model: Model) -> tuple[st.Step, ...]:
+    vectors = a.triad
+    values = ", ".join(f"{k} = {float(v):g}" for k, v in model.values.items())
+    steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
+                           f"{', '.join(vectors)}:",
+                           Relation(sp.Symbol("omega"), show(omega, vectors)),
+                           Relation(sp.Symbol("v_G"), show(v_G, vectors))),
+             st.equation("The rolling conditions and the balances (Newton's law for G first, with reactions), "
+                         "each = 0, the unknown rates left in:", *[Relation(r, sp.Integer(0)) for r in a.relations])]
+    for i, s in enumerate(a.solutions, 1):
+        found = [Relation(sp.Symbol(n), sp.Float(v, 15)) for n, v in s.unknowns.items() if v is not None]
+        found += [Relation(model.symbols.scalar(q), sp.Float(s.solved[q.text], 15))
+                  for q in opts.solve_for if q.text not in s.unknowns]
+        found.append(Relation(sp.Symbol("omega"), show([sp.Float(v, 15) if v else 0 for v in s.angular_velocity],
+                                                       vectors)))
+        where = f"With {values}, " if i == 1 and values else ""
+        steps.append(st.result(f"{where}solution {i} in floating point (least squares from {a.starts} starts):",
+                               *found))
+    return tuple(steps)
+
+
+def kinematics_step(vectors, Omega_T, omega, v_G) -> st.Step:
+    return st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
+                         f"{', '.join(vectors)} (which turns at Ω_T):",
+                         Relation(sp.Symbol("Omega_T"), show(Omega_T, vectors)),
+                         Relation(sp.Symbol("omega"), show(omega, vectors)),
+                         Relation(sp.Symbol("v_G"), show(v_G, vectors)))
+
+
+def rolling_steps(opts: SteadyMotionOptions, v_C, rates: dict, omega, vectors) -> list[st.Step]:
+    """v_G + ω × (r_C − r_G) = 0 at each contact, the rates it gives, and ω with them."""
+    where = " and ".join(C.text for C in opts.contacts)
+    steps = [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
+                         "v_G + ω × (r_C − r_G) = 0:", *[Relation(show(v, vectors), sp.Integer(0)) for v in v_C])]
+    if rates:
+        steps.append(st.result("which gives", *[Relation(a, b) for a, b in rates.items()]))
+        steps.append(st.result("so the angular velocity is", Relation(sp.Symbol("omega"), show(omega, vectors))))
+    return steps

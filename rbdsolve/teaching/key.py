@@ -1,0 +1,126 @@
+"""An exam's answer key: each problem's statement, its pictures and its worked
+solution, as one document (PDF, LaTeX, Markdown or HTML).
+
+    write_key(output, title, problems, figures, values) -> notes
+
+The problems come solved (the CLI solves them, in processes with ``--jobs``); this
+draws each planar scene and its mode shapes at the values the solution used, lays the
+key out (report.key.AnswerKey, rendered by render/) and writes it. A .tex or .md key
+keeps its pictures in a folder beside it (``key-figures/``); a .pdf or .html key is one
+file. A picture that cannot be drawn is left out with a note: the key keeps the
+solution.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import tempfile
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import Callable, Mapping, Sequence
+
+from rbdsolve.errors import InputError
+from rbdsolve.problem.schema import Problem
+from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
+from rbdsolve.report.steps import ProblemReport
+
+KINDS = (".pdf", ".tex", ".md", ".html")
+
+
+@dataclass(frozen=True)
+class Solved:
+    """One problem of the exam as solved: its report, or why it has none (a bad file),
+    and how to load it again for its pictures."""
+
+    name: str
+    load: Callable[[], Problem]
+    report: ProblemReport | None
+    failure: str | None = None
+
+
+def check_output(output: Path) -> None:
+    """Before any solving: a key's format and a folder to write it in."""
+    if output.suffix not in KINDS:
+        raise InputError(f"-o {output}: the key is written as {', '.join(KINDS)}; found '{output.suffix or output.name}'")
+    if not output.parent.is_dir():
+        raise InputError(f"-o {output}: there is no folder {output.parent}/ to write the key in")
+
+
+def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:
+    """The problems' common source, else the folder's name (report.key.default_title)."""
+    return default_title(list(paths), [p.report.source if p.report else "" for p in problems])
+
+
+def write_key(output: Path, title: str, problems: Sequence[Solved], figures: bool,
+              values: Mapping[str, Fraction]) -> tuple[str, ...]:
+    """Write the key to ``output`` (its suffix picks the format); return notes about
+    pictures left out."""
+    check_output(output)
+    notes: list[str] = []
+    with tempfile.TemporaryDirectory(prefix="rbdsolve-key-") as scratch:
+        single_file = output.suffix in (".pdf", ".html")
+        home = Path(scratch) if single_file else output.parent
+        folder = home / f"{safe_name(output.stem)}-figures"
+        suffix = ".svg" if output.suffix == ".html" else ".png"
+        entries = []
+        for n, problem in enumerate(problems, start=1):
+            stem = f"{n:02d}-{safe_name(Path(problem.name).stem)}"
+            pictures = (_pictures(problem, folder, home, stem, suffix, values, notes)
+                        if figures and problem.report is not None else ())
+            entries.append(KeyEntry(problem.name, problem.report, problem.failure, pictures))
+        _document(AnswerKey(title, tuple(entries)), output, home, Path(scratch))
+    return tuple(notes)
+
+
+def safe_name(name: str) -> str:
+    """A file name TeX, Markdown and HTML all read as it is: letters, digits, . _ -."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "-", name).strip("-") or "key"
+
+
+def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) -> None:
+    if output.suffix == ".md":
+        from rbdsolve.render.markdown import render_key
+
+        _write_text(render_key(answer_key), output)
+    elif output.suffix == ".html":
+        from rbdsolve.render.html import render_key
+
+        _write_text(render_key(answer_key, home), output)
+    else:
+        from rbdsolve.render.latex import render_key
+
+        tex = render_key(answer_key)
+        if output.suffix == ".tex":
+            _write_text(tex, output)
+            return
+        from rbdsolve.render.pdf import compile_pdf
+
+        shutil.copyfile(compile_pdf(tex, scratch), output)
+
+
+def _write_text(text: str, output: Path) -> None:
+    try:
+        output.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot write {output}: {exc.strerror}") from None
+
+
+def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
+              values: Mapping[str, Fraction], notes: list[str]) -> tuple[Picture, ...]:
+    """The scene and its mode shapes, drawn at the values the solution used; none for a
+    scene that is not planar. A picture that fails is noted and left out."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.render.drawing.figures import save_figures
+
+    try:
+        model = build_model(problem.load())
+        if values:
+            model = model.with_values(dict(values))
+        folder.mkdir(parents=True, exist_ok=True)
+        drawn = save_figures(model, folder, stem, suffix)
+    except Exception as exc:  # noqa: BLE001 - a picture must not lose the key
+        notes.append(f"{problem.name}: no picture in the key: {type(exc).__name__}: {exc}")
+        return ()
+    return tuple(Picture(f.path.relative_to(home), f.caption) for f in drawn)

@@ -1,0 +1,124 @@
+"""The planar sketch: positions and sizes against hand values, refusals of 3D scenes."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_file, load_text
+from rbdsolve.render.drawing.sketch import (
+    Circle,
+    Dot,
+    NotDrawable,
+    Polygon,
+    Segment,
+    convex_hull,
+    sketch,
+)
+
+from conftest import PROBLEMS
+
+EXAM = PROBLEMS / "sg2150-2015-10-29"
+
+
+def model_of(path, **values):
+    model = build_model(load_file(str(path)))
+    return model.with_values({k: Fraction(v) for k, v in values.items()}) if values else model
+
+
+def close(a, b, tol=1e-12) -> bool:
+    return all(abs(x - y) <= tol for x, y in zip(a, b))
+
+
+def segment_of(drawing, body: str) -> Segment:
+    return next(s for s in drawing.shapes if s.body == body)
+
+
+def test_p1_at_rest_hand_values() -> None:
+    # r = 1: G1 = (0, -r/2); the chord of length √3 r is horizontal at θ = 0, its ends
+    # (±√3/2, -1/2); the short rod of length r hangs from G1 down to (0, -3/2).
+    drawing = sketch(model_of(EXAM / "p1-two-rods.yaml", r=1), {"theta": 0.0, "phi": 0.0})
+    long_rod, short_rod = segment_of(drawing, "long_rod"), segment_of(drawing, "short_rod")
+    ends = sorted([long_rod.start, long_rod.end])
+    assert close(ends[0], (-math.sqrt(3) / 2, -0.5)) and close(ends[1], (math.sqrt(3) / 2, -0.5))
+    assert close(sorted([short_rod.start, short_rod.end])[0], (0, -1.5))
+    assert close(sorted([short_rod.start, short_rod.end])[1], (0, -0.5))
+    points = {p.name: p.at for p in drawing.points}
+    assert close(points["G2"], (0, -1.0)) and drawing.gravity == (0.0, -1.0)
+    assert drawing.notes == ("m = g = 1: no values given",)
+
+
+def test_p1_scales_with_r_and_turns_with_theta() -> None:
+    # r = 2, θ = π/2: G1 = r/2 (1, 0) = (1, 0); the chord turned a quarter turn is vertical.
+    drawing = sketch(model_of(EXAM / "p1-two-rods.yaml", r=2), {"theta": math.pi / 2, "phi": 0.0})
+    ends = sorted([segment_of(drawing, "long_rod").start, segment_of(drawing, "long_rod").end], key=lambda p: p[1])
+    assert close(ends[0], (1, -math.sqrt(3)), 1e-9) and close(ends[1], (1, math.sqrt(3)), 1e-9)
+
+
+def test_pendulum_is_horizontal_at_a_quarter_turn() -> None:
+    # G = l/2 (sin θ, -cos θ): at θ = π/2 the rod (axis y, turned by θ) lies along x from O to (l, 0).
+    drawing = sketch(model_of(PROBLEMS / "examples" / "pendulum.yaml", l=2), {"theta": math.pi / 2})
+    rod = segment_of(drawing, "rod")
+    assert close(sorted([rod.start, rod.end])[0], (0, 0), 1e-9)
+    assert close(sorted([rod.start, rod.end])[1], (2, 0), 1e-9)
+
+
+def test_default_configuration_is_the_modes_equilibrium_or_the_impact() -> None:
+    assert dict(sketch(model_of(EXAM / "p1-two-rods.yaml")).configuration) == {"theta": 0.0, "phi": 0.0}
+    falling = sketch(model_of(PROBLEMS / "impact" / "falling-rod-hits-floor.yaml", alpha=Fraction(1, 2)))
+    assert dict(falling.configuration) == {"x": 0.0, "y": 0.0, "theta": 0.5}
+
+
+def test_plate_with_a_hole() -> None:
+    # a = 1: the plate 2a × 2a about O, the hole a disk of radius a/2 at (a/2, 0), seen face-on.
+    drawing = sketch(model_of(PROBLEMS / "inertia" / "plate-with-hole.yaml", a=1))
+    plate, hole = drawing.shapes
+    assert isinstance(plate, Polygon) and sorted(plate.vertices) == [(-1, -1), (-1, 1), (1, -1), (1, 1)]
+    assert hole == Circle((0.5, 0.0), 0.5, "holed_plate", True, True)
+
+
+SHAPES = """
+title: shapes
+parameters:
+  r: radius
+coordinates: [x]
+points:
+  A: [x, 0]
+bodies:
+  wheel: {shape: disk, mass: 1, radius: r, at: A}
+  edge: {shape: disk, mass: 1, radius: r, at: [0, 3], axis: x}
+  block: {shape: box, mass: 1, width: 2, depth: 1, height: 4, at: [5, 0], angle: pi/2}
+  bob: {shape: particle, mass: 1, at: [0, -2]}
+questions: [eom]
+"""
+
+
+def test_shapes_seen_along_z() -> None:
+    model = build_model(load_text(SHAPES, "shapes.yaml")).with_values({"r": Fraction(1)})
+    wheel, edge, block, bob = sketch(model, {"x": 2.0}).shapes
+    assert wheel == Circle((2.0, 0.0), 1.0, "wheel")  # in the plane: a circle
+    # own axis along x: the disk stands in the yz-plane, seen edge-on as a segment along y
+    assert isinstance(edge, Polygon) and close(sorted(edge.vertices)[0], (0, 2)) and close(sorted(edge.vertices)[-1], (0, 4))
+    assert len(edge.vertices) == 2
+    # 2 (x) by 1 (y), turned a quarter turn: 1 wide, 2 tall about (5, 0)
+    corners = sorted((round(x, 9), round(y, 9)) for x, y in block.vertices)
+    assert corners == [(4.5, -1), (4.5, 1), (5.5, -1), (5.5, 1)]
+    assert bob == Dot((0.0, -2.0), "bob")
+
+
+@pytest.mark.parametrize("path, words", [
+    (EXAM / "p3-rolling-ring.yaml", "turns in 3D"),
+    (EXAM / "p2-rod-impact.yaml", "velocity at one instant"),
+    (PROBLEMS / "frames" / "rotating-hoop-slow.yaml", "leaves the xy-plane"),
+])
+def test_scenes_that_are_not_planar_are_refused(path, words) -> None:
+    with pytest.raises(NotDrawable, match=words):
+        sketch(model_of(path))
+
+
+def test_convex_hull_drops_inner_points() -> None:
+    square = [(0, 0), (1, 0), (1, 1), (0, 1), (0.5, 0.5), (0.5, 0)]
+    assert convex_hull(square) == ((0, 0), (1, 0), (1, 1), (0, 1))

@@ -1,0 +1,69 @@
+"""Equilibria on small scenes whose answers are known by hand: refusals, neutral
+directions, equilibria that exist only for some parameters."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+from conftest import CART_PENDULUM, ROD_PENDULUM
+
+ROD = "\n" + ROD_PENDULUM
+CART = "\n" + CART_PENDULUM
+
+def solve(text: str):
+    return solve_problem(build_model(load_text(text, "scene.yaml")))
+
+
+def test_transcendental_equilibria_are_refused_with_the_reason() -> None:
+    scene = ROD + "springs:\n  s: {stiffness: c, angle: theta}\nquestions: [equilibria]\n"
+    result = solve(scene).solutions[0]
+    assert not result.solved
+    assert "transcendental" in result.error and "theta" in result.error
+
+
+def test_a_coordinate_that_v_ignores_is_neutral() -> None:
+    # A cart (x) carrying a pendulum (θ): V depends on θ only; x is a neutral direction.
+    report = solve(CART + "questions: [equilibria, modes]\n")
+    equilibria = report.solutions[0]
+    stable = [e for e in equilibria.answers.equilibria if e.at["theta"] == 0]
+    assert stable[0].stability.value == "neutral"
+    assert any("does not depend on x" in w for w in equilibria.warnings)
+    # Modes: λ = 0 (the cart drifts) and λ = (M + m) g/(M l) (by hand: K = diag(0, m g l),
+    # M = [[M + m, m l], [m l, m l²]], det(K − λM) = λ (λ M m l² − (M + m) m g l)).
+    # With no stable equilibrium (only neutral ones) the default 'modes' refuses.
+    assert not report.solutions[1].solved
+    assert "no stable equilibrium" in report.solutions[1].error
+
+
+COND = """
+parameters: {m: mass, l: length, g: gravity, k: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+  A: [0, -l*cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, A]}
+questions: [equilibria]
+"""
+
+
+def test_equilibria_that_exist_only_for_some_parameters() -> None:
+    # By hand: ∂V/∂θ = l (m g + k l cos θ) sin θ: θ = 0, π, and cos θ = −m g/(k l),
+    # which exists only when k l ≥ m g.
+    found = solve(COND).solutions[0].answers.equilibria
+    assert len(found) == 4
+    conditional = [e for e in found if e.conditions]
+    assert len(conditional) == 2
+    g, m, k, l = sp.symbols("g m k l", positive=True)
+    assert sp.simplify(conditional[0].conditions[0] - (1 - (m * g / (k * l)) ** 2)) == 0
+    low = solve(COND + "values: {m: 1, l: 1, g: 10, k: 1}\n").solutions[0].answers.equilibria
+    assert sorted(float(e.at["theta"]) for e in low) == [0.0, float(sp.pi)]
+    high = solve(COND + "values: {m: 1, l: 1, g: 10, k: 20}\n").solutions[0].answers.equilibria
+    assert len(high) == 4

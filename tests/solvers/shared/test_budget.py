@@ -1,0 +1,148 @@
+"""The time budget: a slow question ends on time with exit code 1 and a message, the
+alarm gets through sympy's ``except Exception`` blocks, and nothing is left armed."""
+
+from __future__ import annotations
+
+import json
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rbdsolve import solvers
+from rbdsolve.cli import main
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import Options, solve_file
+from rbdsolve.solvers.shared.budget import OutOfTime, available, within
+
+from conftest import ROOT
+
+pytestmark = pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
+
+# Two pendulums and a spring with a natural length to a point off the axis: sympy's
+# solve of the equilibrium equations runs for minutes (measured: over 40 s).
+SLOW = """\
+title: slow equilibria
+parameters: [m, l, g, k, a]
+coordinates: [theta, phi]
+gravity: [0, -g]
+points:
+  A: [a, 0]
+  P: l * [sin(theta), -cos(theta)]
+  Q: P + l * [sin(phi), -cos(phi)]
+bodies:
+  b1: {shape: particle, mass: m, at: P}
+  b2: {shape: particle, mass: m, at: Q}
+springs:
+  s: {stiffness: k, between: [Q, A], natural_length: l}
+questions:
+  - equilibria
+  - eom
+"""
+
+
+def busy_swallowing(swallow_first: bool) -> None:
+    """Work in a loop that catches Exception, as sympy does; the first ring may even be
+    swallowed by a bare except."""
+    swallowed = False
+    while True:
+        try:
+            sum(range(1000))
+        except Exception:  # noqa: BLE001 - what sympy does; OutOfTime must get through
+            pass
+        except BaseException:
+            if not swallow_first or swallowed:
+                raise
+            swallowed = True
+
+
+def assert_disarmed(previous) -> None:
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    assert signal.getsignal(signal.SIGALRM) is previous
+
+
+@pytest.mark.parametrize("swallow_first", [False, True])
+def test_the_alarm_gets_through_except_exception(swallow_first: bool) -> None:
+    previous = signal.getsignal(signal.SIGALRM)
+    start = time.perf_counter()
+    with pytest.raises(OutOfTime, match="'work' ran out of its 0.1 s budget"):
+        with within(0.1, "'work'"):
+            busy_swallowing(swallow_first)
+    assert time.perf_counter() - start < 0.5
+    assert_disarmed(previous)
+
+
+def test_nothing_is_left_armed_after_work_that_ends_in_time() -> None:
+    previous = signal.getsignal(signal.SIGALRM)
+    with within(5, "'work'"):
+        pass
+    assert_disarmed(previous)
+    time.sleep(0.1)  # a stray SIGALRM would kill the test process here
+
+
+def test_no_budget_and_other_threads_arm_nothing() -> None:
+    with within(None, "'work'"):
+        assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    seen = []
+    thread = threading.Thread(target=lambda: seen.append(_armed_in_a_thread()))
+    thread.start()
+    thread.join(5)
+    assert seen == [False]
+
+
+def _armed_in_a_thread() -> bool:
+    with within(0.01, "'work'"):
+        return signal.getitimer(signal.ITIMER_REAL) != (0.0, 0.0)
+
+
+def test_a_slow_question_is_left_unanswered_and_the_next_one_runs() -> None:
+    start = time.perf_counter()
+    report = solve_file(load_text(SLOW, "slow.yaml"), Options(budget=1.0))
+    elapsed = time.perf_counter() - start
+    first, second = report.solutions
+    assert first.error == "'equilibria' ran out of its 1 s budget (--budget to change it)"
+    assert second.error is None and second.answers
+    assert elapsed < 1.0 + 1.0 + 1.0  # the second question (eom) takes well under 1 s
+    assert first.seconds < 1.0 + 0.2  # the overrun margin of one question
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+
+
+def test_a_model_past_its_budget_fails_the_file_in_one_line(monkeypatch, tmp_path: Path) -> None:
+    def endless(problem):
+        while True:
+            time.sleep(0.01)
+
+    monkeypatch.setattr(solvers, "build_model", endless)
+    with pytest.raises(UnsolvedError, match=r"slow.yaml: the model \(T and V\) ran out of its 0.2 s budget"):
+        solve_file(load_text(SLOW, "slow.yaml"), Options(budget=0.2))
+    path = tmp_path / "slow.yaml"
+    path.write_text(SLOW, encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--budget", "0.2"])
+    assert result.exit_code == 1
+    assert result.stderr.splitlines() == [
+        f"{path}: the model (T and V) ran out of its 0.2 s budget (--budget to change it)"]
+
+
+def test_budget_must_be_positive() -> None:
+    result = CliRunner().invoke(main, ["solve", "x.yaml", "--budget", "0"])
+    assert result.exit_code == 2 and "--budget" in result.output
+
+
+def test_the_whole_process_ends_within_its_budget(tmp_path: Path) -> None:
+    path = tmp_path / "slow.yaml"
+    path.write_text(SLOW.replace("  - eom\n", ""), encoding="utf-8")
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(path), "--budget", "0.5", "-f", "json"],
+                          capture_output=True, text=True, timeout=60, cwd=ROOT)
+    elapsed = time.perf_counter() - start
+    assert done.returncode == 1, done.stderr
+    result = json.loads(done.stdout)["results"][0]
+    assert result["error"] == "'equilibria' ran out of its 0.5 s budget (--budget to change it)"
+    assert "Traceback" not in done.stderr
+    assert elapsed < 0.5 + 2.5  # start-up (imports) is about 0.7 s of it
