@@ -1,0 +1,35 @@
+"""Start-up: the commands that do no algebra load none (docs/architecture.md, rule 5).
+Each runs in a fresh interpreter, which then reports what it imported."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT, SEED
+
+HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
+
+
+def loaded_after(*args: str) -> set[str]:
+    code = ("import sys; from rbdsolve.cli import main\n"
+            f"try: main({list(args)!r}, standalone_mode=False)\n"
+            f"finally: print(','.join(m for m in {HEAVY!r} if m in sys.modules), file=sys.stderr)")
+    done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True,
+                          text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=60)
+    assert done.returncode == 0, done.stderr
+    last = done.stderr.rstrip("\n").rpartition("\n")[2]
+    return {m for m in last.split(",") if m}
+
+
+@pytest.mark.parametrize("args", [["--help"], ["solve", "--help"], ["key", "--help"],
+                                  ["check", str(SEED / "p1-two-rods.yaml")]])
+def test_commands_without_algebra_load_no_sympy(args: list[str]) -> None:
+    assert loaded_after(*args) == set()
+
+
+def test_the_probe_sees_an_import() -> None:
+    """The check itself: solving loads sympy, and the probe says so."""
+    assert "sympy" in loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
