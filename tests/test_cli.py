@@ -247,5 +247,5 @@ def test_steady_motion_numeric_route_without_a_value_exits_1() -> None:
     assert result.exit_code == 1, result.output
     (answer,) = _strict(result.stdout)["results"]
     assert answer["route"] == "numeric" and answer["answers"] is None
-    assert answer["error"].startswith("the numeric route needs a value for every parameter; give h, J1, J3, g, "
+    assert answer["error"].startswith("the numeric route needs a value for every parameter the answer depends on; give h, J1, J3, g, "
                                       "theta, Omega (")

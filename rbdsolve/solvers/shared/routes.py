@@ -26,7 +26,7 @@ from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model
-from rbdsolve.solvers.shared.values import missing_values, numeric
+from rbdsolve.solvers.shared.values import missing_for, missing_values, numeric, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 
@@ -78,12 +78,13 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
     parameter lacks a value. Each route gets the whole budget (auto may take twice it).
     The Solution's route is the route that ran last; when both fail, its error gives
     both routes' reasons."""
+    filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
     if options.route is RouteChoice.NUMERIC:
-        return _attempt(Route.NUMERIC, family.numeric, question, model, options)
+        return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
     exact = _attempt(Route.EXACT, family.exact, question, model, options)
-    if options.route is RouteChoice.EXACT or exact.solved or missing_values(model):
+    if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question):
         return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, model, options, " (numeric route)")
+    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
     if not solution.solved:
         return replace(solution, error=f"the exact route could not answer ({exact.error}); "
                                        f"nor could the numeric route ({solution.error})")

@@ -338,7 +338,7 @@ def test_missing_values_names_them_in_order_and_auto_does_not_fall_back(monkeypa
     assert (auto.route.value, auto.error) == ("exact", "too hard")
     (numeric,) = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions
     assert numeric.route.value == "numeric"
-    assert numeric.error.startswith("the numeric route needs a value for every parameter; give m, g ")
+    assert numeric.error.startswith("the numeric route needs a value for every parameter the answer depends on; give m, g ")
 
 
 def _summary_out_of_time(monkeypatch) -> None:

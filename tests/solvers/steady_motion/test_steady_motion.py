@@ -185,7 +185,7 @@ def test_numeric_route_reports_both_roots_of_a_real_omega0() -> None:
     "old, new, words",
     [
         (VALUES, "values: {m: 1, r: 1/5, theta: 1/2}\n",
-         "the numeric route needs a value for every parameter except omega0 (solved for); give R, g "),
+         "the numeric route needs a value for every parameter the answer depends on except omega0 (solved for); give R, g "),
         ("solve_for: omega0**2", "solve_for: [omega0, R]", "is singular at the solution"),
         ("solve_for: omega0**2", "solve_for: spin", "found no solution of the relations"),
     ],
