@@ -53,3 +53,55 @@ def test_a_parameter_the_answer_depends_on_is_still_asked_for() -> None:
     (solution,) = _report(YOYO.replace("R: 0.05, ", ""), RouteChoice.NUMERIC).solutions
     assert not solution.solved
     assert "give R " in solution.error and "b" not in solution.error.split("give ")[1].split("(")[0]
+
+
+# --- 4. a swinging body without `angle` ------------------------------------------------
+
+# A rod (m, l) hung from O by its centre G = l/2 (sin θ, −cos θ), written without
+# `angle`: it translates, T = ½ m (l/2)² θ̇² = m l² θ̇²/8 instead of the rod's
+# m l² θ̇²/6. The answer stays what the scene says; every question on T warns.
+SWING = """\
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  G: O + l/2*[sin(theta), -cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G}
+questions: [eom, equilibria, modes]
+"""
+
+# A slider driven by a crank: its centre moves along x with θ but not on a circle
+# about any named point, so it may well just slide: the plain note, no warning.
+SLIDER = """\
+parameters: {m: mass, a: crank, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  A: a*[cos(theta), sin(theta)]
+  B: [a*cos(theta) + 2*a, 0]
+bodies:
+  slider: {shape: box, mass: m, width: a, height: a, depth: a, at: B}
+questions: [eom]
+"""
+
+
+def test_a_body_that_swings_without_an_angle_is_warned_about_on_every_question_using_T() -> None:
+    report = _report(SWING)
+    eom, equilibria, modes = report.solutions
+    for solution in (eom, modes):
+        (warning,) = solution.warnings
+        assert "'rod' has no angle" in warning and "add `angle: theta`" in warning and "about O" in warning
+    assert equilibria.warnings == ()  # V alone: no rotational energy involved
+    l, m = sp.symbols("l m", positive=True)
+    (equation,) = eom.answers.equations
+    (thdd,) = [d for d in equation.atoms(sp.Derivative) if d.derivative_count == 2]
+    assert sp.simplify(equation.coeff(thdd) - m * l**2 / 4) == 0  # 2 × m l²/8: the answer is unchanged
+
+
+def test_a_body_that_may_just_slide_keeps_the_plain_note() -> None:
+    report = _report(SLIDER)
+    assert report.solutions[0].warnings == ()
+    assert any("slider has no 'angle'" in str(step) for step in report.model.steps)

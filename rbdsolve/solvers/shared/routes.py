@@ -19,13 +19,13 @@ from typing import Callable
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import Problem, Question
+from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model
+from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
 from rbdsolve.solvers.shared.values import missing_for, missing_values, numeric, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
@@ -56,9 +56,20 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
-    solution = _routed(family, question, model, options)
+    solution = _with_swing_warnings(question, model, _routed(family, question, model, options))
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
+
+
+USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT})
+
+
+def _with_swing_warnings(question: Question, model: Model, solution: Solution) -> Solution:
+    """A question whose answer rests on T warns of bodies that swing without turning
+    (``summary.unturned``): their T lacks the rotational part. The answer is unchanged."""
+    if question.kind not in USES_T or model.instant:
+        return solution
+    return replace(solution, warnings=(*solution.warnings, *swing_warnings(model)))
 
 
 def _finite_estimate(solution: Solution) -> Solution:

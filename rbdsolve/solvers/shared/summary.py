@@ -3,6 +3,9 @@ problem 1: T₁, T₂, then T = T₁ + T₂ with its common scale pulled out."""
 
 from __future__ import annotations
 
+import random
+from dataclasses import dataclass
+
 import sympy as sp
 
 from rbdsolve.form.arrange import subscript
@@ -43,17 +46,69 @@ def summarize_model(model: Model) -> ModelSummary:
                         tuple(steps))
 
 
-def _unturned(model: Model) -> list[st.Step]:
-    """A body with rotational inertia that moves with an angle but has no ``angle`` does
-    not turn, and its rotational energy is zero: say so, in case that was not meant."""
+@dataclass(frozen=True)
+class Unturned:
+    """A body with rotational inertia that moves with angle coordinates but has no
+    ``angle`` or ``orientation``: it translates, and its rotational energy is zero.
+    ``pivot``: a named point it keeps a constant distance to while it moves, so it
+    evidently swings about it (a likely mistake); None: it may just slide."""
+
+    body: str
+    coordinates: tuple[str, ...]
+    pivot: str | None
+
+    def text(self) -> str:
+        moves = ", ".join(self.coordinates)
+        if self.pivot is None:
+            return (f"Note: {self.body} has no 'angle', so it moves with {moves} without turning "
+                    "(no rotational energy). If it turns, give its angle.")
+        return (f"body '{self.body}' has no angle: it moves with {moves} without turning (no rotational "
+                f"energy), though it keeps its distance to {self.pivot}; if it swings about {self.pivot}, "
+                f"add `angle: {self.coordinates[0]}` (or the angle it turns by)")
+
+
+def unturned(model: Model) -> tuple[Unturned, ...]:
+    """The bodies that move with an angle coordinate without turning (see Unturned)."""
     out = []
     for body in model.bodies:
-        moves = [n for q, n in zip(model.q, model.coordinate_names())
-                 if q in model.angles and body.position.has(q)]
-        if body.angle is None and not body.turns_3d and moves and body.inertia != sp.zeros(3, 3):
-            out.append(st.note(f"Note: {body.name} has no 'angle', so it moves with {', '.join(moves)} "
-                               "without turning (no rotational energy). If it turns, give its angle."))
-    return out
+        if body.angle is not None or body.turns_3d or body.position is None or body.inertia == sp.zeros(3, 3):
+            continue
+        moves = tuple(n for q, n in zip(model.q, model.coordinate_names())
+                      if q in model.angles and body.position.has(q))
+        if moves:
+            out.append(Unturned(body.name, moves, _pivot(model, body.position)))
+    return tuple(out)
+
+
+def _pivot(model: Model, position: sp.Matrix) -> str | None:
+    """A named point P with |r_G − r_P| the same at random samples of the coordinates
+    (the parameters at one sample), while r_G − r_P is not: G turns about P. Sampled, not
+    simplified: a constant distance needs sin² + cos² = 1 and its like, which the
+    samples see at once."""
+    rng = random.Random(26)
+    draw = lambda: sp.Rational(rng.randint(1100, 2900), 1000)  # noqa: E731
+    parameters = {s: model.values.get(s, draw()) for s in model.symbols.parameters.values()}
+    samples = [{**parameters, **{q: draw() for q in model.q}} for _ in range(3)]
+    for name, point in model.points.items():
+        r = position - point
+        if not r.free_symbols & set(model.q):
+            continue
+        d = r.dot(r)
+        lengths = {round(float(sp.N(d.xreplace(x), 30)), 9) for x in samples}
+        if len(lengths) == 1 and next(iter(lengths)) > 0:
+            return name
+    return None
+
+
+def swing_warnings(model: Model) -> tuple[str, ...]:
+    """The warnings for bodies that evidently swing without an angle (``Unturned`` with
+    a pivot), for every question that uses T."""
+    return tuple(u.text() for u in unturned(model) if u.pivot is not None)
+
+
+def _unturned(model: Model) -> list[st.Step]:
+    """The model section's note (a warning where the body evidently swings)."""
+    return [st.note(u.text() if u.pivot is None else f"warning: {u.text()}") for u in unturned(model)]
 
 
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:
