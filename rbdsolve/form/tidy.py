@@ -91,20 +91,32 @@ def _leading_plus(expr: sp.Expr) -> sp.Expr:
 
 
 def _pythagoras(expr: sp.Expr) -> sp.Expr:
-    """Use sin²x + cos²x = 1 for each angle x to shorten ``expr``."""
-    angles = {p.base.args[0] for p in expr.atoms(sp.Pow)
-              if isinstance(p.base, (sp.sin, sp.cos)) and p.exp.is_even and p.exp > 0}
-    for x in sorted(angles, key=sp.default_sort_key):
-        best = expr
-        for square, other in ((sp.sin(x), sp.cos(x)), (sp.cos(x), sp.sin(x))):
-            candidate = sp.expand(expr.replace(
-                lambda e: e.is_Pow and e.base == square and e.exp.is_even and e.exp > 0,
-                lambda e: (1 - other**2) ** (e.exp // 2),
-            ))
-            if sp.count_ops(candidate) < sp.count_ops(best):
-                best = candidate
-        expr = best
+    """Use sin²x + cos²x = 1 for each angle x to shorten ``expr``, angle by angle, in
+    rounds while a round shortens it: a turned body's sin²α sin²β + sin²α cos²β + cos²α
+    shortens only once β is reduced first, then α (at most one round per angle)."""
+    angles = sorted({p.base.args[0] for p in expr.atoms(sp.Pow)
+                     if isinstance(p.base, (sp.sin, sp.cos)) and p.exp.is_even and p.exp > 0},
+                    key=sp.default_sort_key)
+    for _ in range(max(1, len(angles))):
+        before = expr
+        for x in angles:
+            expr = _pythagoras_in(expr, x)
+        if expr == before:
+            break
     return expr
+
+
+def _pythagoras_in(expr: sp.Expr, x: sp.Expr) -> sp.Expr:
+    """sin²x → 1 − cos²x or cos²x → 1 − sin²x, whichever is shorter (or neither)."""
+    best = expr
+    for square, other in ((sp.sin(x), sp.cos(x)), (sp.cos(x), sp.sin(x))):
+        candidate = sp.expand(expr.replace(
+            lambda e: e.is_Pow and e.base == square and e.exp.is_even and e.exp > 0,
+            lambda e: (1 - other**2) ** (e.exp // 2),
+        ))
+        if sp.count_ops(candidate) < sp.count_ops(best):
+            best = candidate
+    return best
 
 
 def tidy_matrix(matrix: sp.Matrix) -> sp.Matrix:

@@ -8,6 +8,8 @@ by an independent computation (numpy/mpmath on the formula written out by hand).
 
 from __future__ import annotations
 
+import json
+
 import pytest
 import sympy as sp
 
@@ -105,3 +107,91 @@ def test_a_body_that_may_just_slide_keeps_the_plain_note() -> None:
     report = _report(SLIDER)
     assert report.solutions[0].warnings == ()
     assert any("slider has no 'angle'" in str(step) for step in report.model.steps)
+
+
+# --- 3. numbers wherever an entry has a value -------------------------------------------
+
+# A cube (m, edge a) hanging from a ball joint O by G = −a e3, turned by α, β, γ about
+# x, then the new y, then the new z. About G a cube is isotropic, J_G = m a²/6 · 1, in
+# every orientation: R J Rᵀ = J. About O (Steiner, d_b = (0, 0, −a) in body axes)
+# J_O = Q diag(7/6, 7/6, 1/6) m a² Qᵀ: moments m a²/6 once and 7 m a²/6 twice, the
+# axis of the smallest along OG, (sin β, −sin α cos β, cos α cos β) — defined everywhere.
+CUBE = """\
+parameters: {m: mass, a: edge, g: gravity}
+values: {m: 2, a: 3/10, g: 9.81}
+coordinates: [alpha, beta, gamma]
+gravity: [0, 0, -g]
+triads:
+  B: {turns: [[x, alpha], [y, beta], [z, gamma]], vectors: [e1, e2, e3]}
+points:
+  O: [0, 0, 0]
+  G: -a*e3
+bodies:
+  cube: {shape: box, mass: m, width: a, height: a, depth: a, at: G, orientation: [B]}
+questions:
+"""
+
+
+def _plain(value):
+    """Coordinates, which answers write as functions of time, as plain symbols."""
+    from sympy.core.function import AppliedUndef
+
+    return value.xreplace({f: sp.Symbol(f.func.__name__) for f in value.atoms(AppliedUndef)})
+
+
+def _cli(*args: str, input: str):
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    return CliRunner().invoke(main, list(args), input=input)
+
+
+def test_a_turned_cube_has_numbers_in_json_equal_to_the_terminal() -> None:
+    text = CUBE + "  - inertia: {body: cube}\n"
+    (answer,) = json.loads(_cli("solve", "-", "--format", "json", input=text).stdout)["results"]
+    J = m_a2 = 2 * 0.09 / 6  # m a²/6 = 0.03
+    assert sum(answer["values"]["J_G"], []) == pytest.approx([J, 0, 0, 0, J, 0, 0, 0, J], abs=1e-15)
+    assert answer["values"]["principal_moments"] == pytest.approx([m_a2] * 3, abs=1e-15)
+    terminal = _cli("solve", "-", input=text).output
+    assert "J_G = a² m [[1/6, 0, 0], [0, 1/6, 0], [0, 0, 1/6]]" in terminal
+    assert "J_G[1] = [0.03, 0, 0]" in terminal and "—" not in terminal
+
+
+def test_principal_axes_of_a_turning_tensor_are_defined_at_every_configuration() -> None:
+    (solution,) = _report(CUBE + "  - inertia: {body: cube, about: O}\n").solutions
+    a, m = sp.symbols("a m", positive=True)
+    moments = [sp.simplify(x.subs({sp.Symbol("a", positive=True): a})) for x in solution.answers.principal_moments]
+    assert [sp.simplify(x / (m * a**2)) for x in moments] == [sp.Rational(1, 6), sp.Rational(7, 6), sp.Rational(7, 6)]
+    axis = _plain(sp.Matrix(solution.answers.principal_axes[0]))
+    al, be = sp.symbols("alpha beta")
+    assert sp.simplify(axis - sp.Matrix([sp.sin(be), -sp.sin(al) * sp.cos(be), sp.cos(al) * sp.cos(be)])) == sp.zeros(3, 1)
+    for e in solution.answers.principal_axes:  # no denominators: defined where sin β = 0 or cos α = 0
+        assert all(sp.fraction(sp.together(x))[1] == 1 for x in e)
+    assert solution.warnings == ()
+
+
+# A disk (m, R) whose centre circles O at distance e, G = e (cos θ, sin θ), while it
+# turns by 2θ. About O: J = m [[R²/4 + e² sin²θ, −e² sin θ cos θ, 0], [·, R²/4 + e² cos²θ,
+# 0], [0, 0, R²/2 + e²]]; its in-plane eigenvectors are along OG, (cos θ, sin θ, 0), with
+# R²/4 m, and across it, (sin θ, −cos θ, 0), with (R²/4 + e²) m — at every θ, where the
+# cofactor formula (1, tan θ, 0) fails at θ = π/2.
+DISK = """\
+parameters: {m: mass, R: radius, e: offset}
+coordinates: [theta]
+points:
+  O: [0, 0]
+bodies:
+  disk: {shape: disk, mass: m, radius: R, at: "e*[cos(theta), sin(theta)]", angle: 2*theta}
+questions:
+  - inertia: {body: disk, about: O}
+"""
+
+
+def test_principal_axes_that_turn_have_no_denominator() -> None:
+    (solution,) = _report(DISK).solutions
+    th = sp.Symbol("theta")
+    axes = [_plain(sp.Matrix(e)) for e in solution.answers.principal_axes]
+    assert axes[0] == sp.Matrix([sp.cos(th), sp.sin(th), 0])
+    assert axes[1] == sp.Matrix([sp.sin(th), -sp.cos(th), 0])
+    assert axes[2] == sp.Matrix([0, 0, 1])

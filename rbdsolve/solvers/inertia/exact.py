@@ -18,11 +18,14 @@ the tensor's off-diagonal entries, J_xy = −∫ x y dm, as in SG2150.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.arrange import common_scale
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.arrange import common_scale, scaled_matrix
+from rbdsolve.form.display import Relation
+from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.problem.schema import InertiaOptions, Question
@@ -51,8 +54,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     symbols = set(model.symbols.parameters.values())
     steps: list[st.Step] = list(_centre_steps(body, model, symbols))
     J_G = body.inertia_in_scene().applyfunc(tidy)
-    if body.rotation != sp.eye(3):
+    if J_G != body.inertia:
         steps.append(scene_axes_step(J_G, symbols))
+    view = body.rotation  # body axes -> the axes J is written in
     J, about = J_G, None
     if opts.about is not None:
         about = model.symbols.with_points(model.points).vector(opts.about)
@@ -63,7 +67,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         A = frame_matrix(opts, model)
         J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
         steps.append(frame_step(A, J, symbols))
-    found = principal(J, symbols, model)
+        view = A * view
+    found = _principal_turned(J, view, symbols, model) or principal(J, symbols, model)
     steps += [*found.steps, st.note(CONVENTION)]
     answers = InertiaAnswers(
         body.mass, tuple(tidy(x) for x in body.position),
@@ -71,7 +76,22 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), found.moments, found.axes, found.repeated,
     )
     return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps),
-                    warnings=found.warnings)
+                    warnings=(*found.warnings, *_undefined_axes(found, model)))
+
+
+def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
+    """A warning where a principal axis is a formula in the coordinates that divides by
+    something that vanishes at some configurations (sin β, cos α): there it is
+    undefined, and the axis must be found at that configuration itself."""
+    q = set(model.q)
+    divisors = {factor for axis in found.axes for x in axis
+                for factor in sp.Mul.make_args(sp.factor(sp.fraction(sp.together(x))[1]))
+                if factor.free_symbols & q}
+    if not divisors:
+        return ()
+    shown = ", ".join(sorted(sp.sstr(model.readable(d)) for d in divisors))
+    return (f"the principal axes depend on the configuration and divide by {shown}: they are undefined "
+            "where that is zero; ask at that configuration (values for the coordinates) instead",)
 
 
 def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: set):
@@ -103,6 +123,7 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     scale = -scale if scale.could_extract_minus_sign() else scale
     J_hat = (J / scale).applyfunc(tidy)
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
+    poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
     steps = [characteristic_step(scale, poly)]
     found = _closed_form(J_hat, poly)
     if found is None:
@@ -119,6 +140,32 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
             repeated.append(tidy(scale * root))
     steps += principal_steps(moments, axes, repeated)
     return Principal(tuple(moments), tuple(_unit(d) for d in axes), tuple(repeated), tuple(steps), ())
+
+
+def _principal_turned(J: sp.Matrix, Q: sp.Matrix, symbols: set, model: Model) -> Principal | None:
+    """The principal moments and axes of a tensor that turns with the coordinates.
+
+    With Q the rotation from body axes to the axes J is written in, J = Q J_b Qᵀ and
+    J_b = Qᵀ J Q. When J_b is free of the coordinates (always about G; about a point
+    fixed in the body), the moments are J_b's and each axis is Q e_b, e_b an axis of
+    J_b: defined at every configuration, where the cofactors of J itself divide by
+    sin β or cos α somewhere. None: J does not turn, or J_b still moves (then J is
+    treated as it is, and a warning names the configurations where that fails).
+    """
+    q = set(model.q)
+    if not J.free_symbols & q:
+        return None
+    J_b = (Q.T * J * Q).applyfunc(tidy_fraction)
+    if J_b.free_symbols & q:
+        return None
+    found = principal(J_b, symbols, model)
+    axes = [tuple(tidy(x) for x in Q * sp.Matrix(axis)) for axis in found.axes]
+    steps = [st.equation("The tensor turns with the body: in body axes, J_b = Qᵀ J Q (Q: body axes to "
+                         "these axes) is constant, so the moments are J_b's and each axis is Q e_b:",
+                         Relation(sp.Symbol("J_b"), scaled_matrix(J_b, symbols))),
+             found.steps[0], *principal_steps(list(found.moments), [sp.Matrix(a) for a in axes],
+                                              list(found.repeated))]
+    return replace(found, axes=tuple(axes), steps=tuple(steps))
 
 
 def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
@@ -163,7 +210,7 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
     nonzero entry positive: (0, 12, √145 − 1). A repeated moment's plane gets an
     orthogonal pair (Gram–Schmidt). Divide by the length for unit vectors."""
     if multiplicity == 1 and not _surd(root):
-        return [_first_positive(_adjugate_column(J_hat, root))]
+        return [_first_positive(_polynomial_direction(_adjugate_column(J_hat, root)))]
     null = (J_hat - root * sp.eye(3)).applyfunc(tidy).nullspace(simplify=True)
     if len(null) != multiplicity:
         raise UnsolvedError(f"could not find the principal axes for the moment {sp.sstr(root)}")
@@ -172,14 +219,15 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
         for u in directions:
             v = v - (u.dot(v) / u.dot(u)) * u
         first = next(x for x in v if tidy(x) != 0)
-        directions.append(_first_positive(_integral((v / first).applyfunc(tidy))))
+        directions.append(_first_positive(_polynomial_direction(_integral((v / first).applyfunc(tidy)))))
     return directions
 
 
 def _unit(direction: sp.Matrix) -> tuple[sp.Expr, ...]:
     """direction/|direction|; tidied when it is made of surds (else left as it is: a
     trigonometric cubic root does not shorten, and expanding it is slow)."""
-    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    length = sp.sqrt(tidy_fraction(direction.dot(direction)) if direction.free_symbols
+                     else sp.expand(direction.dot(direction)))
     unit = [x / length for x in direction]
     return tuple(tidy(x) if _surd(x) else x for x in unit)
 
@@ -198,6 +246,22 @@ def _adjugate_column(J_hat: sp.Matrix, root: sp.Expr) -> sp.Matrix:
     columns = [adjugate[:, j].xreplace({kappa: root}) for j in range(3)]
     size = [sum(abs(complex(sp.N(x.xreplace({s: 1 for s in x.free_symbols})))) for x in c) for c in columns]
     return columns[max(range(3), key=lambda j: size[j])].applyfunc(sp.expand)
+
+
+def _polynomial_direction(v: sp.Matrix) -> sp.Matrix:
+    """The same direction with no denominator that holds a coordinate: (1, tan θ, 0)
+    becomes (cos θ, sin θ, 0), defined at every θ (sin and cos taken as symbols, the
+    entries multiplied by their common denominator and divided by their common
+    factor). Directions free of functions are left as they are."""
+    if not v.atoms(sp.Function):
+        return v
+    table = {f: sp.Dummy() for f in v.atoms(sp.Function)}
+    back = {d: f for f, d in table.items()}
+    parts = [sp.fraction(sp.cancel(sp.together(x.xreplace(table)))) for x in v]
+    denominator = sp.lcm([den for _, den in parts])
+    entries = [sp.cancel(num * denominator / den) for num, den in parts]
+    common = sp.gcd([e for e in entries if e != 0]) if any(e != 0 for e in entries) else 1
+    return sp.Matrix([tidy(sp.cancel(e / common).xreplace(back)) for e in entries])
 
 
 def _integral(v: sp.Matrix) -> sp.Matrix:

@@ -8,7 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import scaled_matrix
 from rbdsolve.form.display import Label, Product, Relation, Scaled, Terms
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.report import steps as st
@@ -61,7 +61,7 @@ def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
 
 def _unit_display(direction: sp.Matrix):
     """1/√(290 − 2√145) (0, 12, √145 − 1): a unit vector as its direction over its length."""
-    length = sp.sqrt(sp.expand(direction.dot(direction)))
+    length = sp.sqrt(tidy_fraction(direction.dot(direction)))  # sin² + cos² = 1 for a turned axis
     vector = sp.ImmutableMatrix([list(direction)])
     return vector if length == 1 else Scaled(1 / length, vector)
 

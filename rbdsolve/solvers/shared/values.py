@@ -12,6 +12,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.problem.expr import Expr
 from rbdsolve.report.tree import map_leaves
 
@@ -53,7 +54,9 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
     if roots is not None and number.has(sp.CRootOf):
         number = number.xreplace(_root_values(number, roots))
     if number.free_symbols or number.atoms(AppliedUndef) or number.has(sp.Derivative):
-        return None
+        number = _constant(number)
+        if number is None:
+            return None
     try:
         z = complex(sp.N(number, 17))
     except (TypeError, ValueError):
@@ -61,6 +64,20 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
     if not (math.isfinite(z.real) and math.isfinite(z.imag)):
         return None
     return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
+
+
+MAX_CONSTANT_OPS = 400  # larger leaves are not worth the reduction (they are rarely constant)
+
+
+def _constant(number: sp.Expr) -> sp.Expr | None:
+    """An entry that depends on the coordinates only through identities, as a turned
+    cube's isotropic tensor R J Rᵀ = J does (sin² + cos² = 1), reduced to its constant
+    value (``tidy_fraction``: sin and cos as symbols on the unit circle, exact); None
+    when it does depend on them, or on a parameter without a value."""
+    if number.has(sp.Derivative) or sp.count_ops(number) > MAX_CONSTANT_OPS:
+        return None
+    reduced = tidy_fraction(sp.expand_trig(number))
+    return None if reduced.free_symbols or reduced.atoms(AppliedUndef) else reduced
 
 
 def _root_values(number: sp.Expr, roots: dict[sp.Expr, sp.Expr]) -> dict[sp.Expr, sp.Expr]:
