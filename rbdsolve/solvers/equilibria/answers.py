@@ -23,11 +23,24 @@ class Equilibrium:
     hessian: sp.ImmutableMatrix
     reason: str  # why this stability: the eigenvalue signs, or what is undecided
     conditions: tuple[sp.Expr, ...] = ()  # it exists only where each is ≥ 0
+    equivalent: tuple[Mapping[str, sp.Expr], ...] = ()  # other coordinate values of the same configuration
+
+
+@dataclass(frozen=True)
+class SingularPoint:
+    """A solution of ∂V/∂q = 0 where the coordinates are singular (solvers/shared/
+    placement.py): not reported as an equilibrium."""
+
+    at: Mapping[str, sp.Expr]
+    verdict: str  # "not an equilibrium" or "undecided"
+    reason: str
+    lost: tuple[tuple[float, ...], ...]  # directions of q that do not move the scene there
 
 
 @dataclass(frozen=True)
 class EquilibriaAnswers:
     equilibria: tuple[Equilibrium, ...]
+    singular_points: tuple[SingularPoint, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -36,9 +49,11 @@ class NumericEquilibrium:
     stability: Stability
     curvatures: tuple[float, ...]  # eigenvalues of the Hessian of V there, ascending
     free: tuple[tuple[float, ...], ...] = ()  # directions of a continuum it represents (unit vectors)
+    equivalent: tuple[Mapping[str, float], ...] = ()  # other coordinate values of the same configuration
 
 
 @dataclass(frozen=True)
 class NumericEquilibriaAnswers:
     equilibria: tuple[NumericEquilibrium, ...]
     starts: int  # Newton starts
+    singular_points: tuple[SingularPoint, ...] = ()

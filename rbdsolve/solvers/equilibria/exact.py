@@ -19,7 +19,7 @@ entries are symbolic:
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Mapping
 
 import sympy as sp
@@ -30,10 +30,11 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, memoized, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, Stability
+from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
 from rbdsolve.solvers.shared.values import sample
 
@@ -239,14 +240,94 @@ def _coinciding(solutions: list[dict], model: Model) -> list[str]:
     return lines
 
 
+@dataclass(frozen=True)
+class Listed:
+    """A solution of ∂V/∂q = 0 kept as an equilibrium, with the other solutions that
+    describe the same configuration, and its singular point if the coordinates are
+    singular there (and the fibre test found it an equilibrium)."""
+
+    at: dict
+    equivalent: tuple[dict, ...]
+    singular: Singularity | None
+
+
+@dataclass(frozen=True)
+class Listing:
+    equilibria: tuple[Listed, ...]
+    singular_points: tuple[tuple[dict, Singularity], ...]  # not equilibria, or undecided
+    warnings: tuple[str, ...]
+
+
+@memoized
+def listing(model: Model) -> Listing:
+    """The equilibria as the report lists them: solutions of ∂V/∂q = 0 at singular
+    points of the coordinates set apart unless the fibre test shows an equilibrium
+    (solvers/shared/placement.py), and solutions that are one configuration (the same
+    orientation, or the same up to a coordinate V does not depend on) merged into the
+    first, the others named as equivalent."""
+    solutions, warnings = find_equilibria(model)
+    free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
+    kept: list[Listed] = []
+    apart: list[tuple[dict, Singularity]] = []
+    for sol in solutions:
+        singular = singularity(model, sol)
+        if singular is not None and singular.verdict is not Verdict.EQUILIBRIUM:
+            apart.append((sol, singular))
+            continue
+        same = next((i for i, k in enumerate(kept) if same_placement(model, k.at, sol, free)), None)
+        if same is None:
+            kept.append(Listed(sol, (), singular))
+        else:
+            kept[same] = replace(kept[same], equivalent=(*kept[same].equivalent, sol))
+    return Listing(tuple(kept), tuple(apart), tuple(warnings))
+
+
+def classify_listed(model: Model, listed: Listed) -> Equilibrium:
+    """``classify``, with the equivalents named; at a singular point that is an
+    equilibrium, on the Hessian across the directions that move the scene."""
+    names = dict(zip(model.q, model.coordinate_names()))
+    found = classify(model, listed.at) if listed.singular is None else _classify_singular(model, listed.at)
+    return replace(found, equivalent=tuple({names[q]: v for q, v in e.items()} for e in listed.equivalent))
+
+
+def _classify_singular(model: Model, at: dict) -> Equilibrium:
+    """Bᵀ K B, B a basis of the directions the kernel of ∂φ/∂q leaves (the coordinates
+    see only these at a singular point)."""
+    found = classify(model, at)
+    kernel = exact_kernel(model, at)
+    if not kernel:
+        return found
+    B = sp.Matrix.hstack(*sp.Matrix.hstack(*kernel).T.nullspace())
+    reduced = (B.T * found.hessian * B).applyfunc(tidy)
+    inertia = matrix_inertia(sp.ImmutableMatrix(reduced), model.values)
+    how = "at a singular point of the coordinates, the Hessian across the directions that move the scene"
+    if isinstance(inertia, Undecided):
+        return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} has a sign that depends on the "
+                       f"parameters ({sp.sstr(inertia.expr)})")
+    if inertia.negative:
+        return replace(found, stability=Stability.UNSTABLE, reason=f"{how} has a negative eigenvalue")
+    if inertia.zero:
+        return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} is singular: higher-order terms decide")
+    return replace(found, stability=Stability.STABLE, reason=f"{how} is positive definite")
+
+
+def singular_answers(model: Model, points) -> tuple[SingularPoint, ...]:
+    names = dict(zip(model.q, model.coordinate_names()))
+    return tuple(SingularPoint({names[q]: v for q, v in at.items()}, sing.verdict.value, sing.reason, sing.kernel)
+                 for at, sing in points)
+
+
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "the equilibria")
     grad = gradient(model)
-    solutions, warnings = find_equilibria(model)
-    if not solutions:
+    listed = listing(model)
+    if not listed.equilibria and not listed.singular_points:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
-    equilibria = tuple(classify(model, sol) for sol in solutions)
-    warnings += _coinciding(solutions, model)
-    answers = EquilibriaAnswers(equilibria)
+    equilibria = tuple(classify_listed(model, x) for x in listed.equilibria)
+    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]
+    if listed.singular_points:
+        warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
+                        "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
+    answers = EquilibriaAnswers(equilibria, singular_answers(model, listed.singular_points))
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, bool(periodic_angles(model))),
                     warnings=tuple(warnings))

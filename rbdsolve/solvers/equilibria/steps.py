@@ -34,11 +34,27 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
         exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
         steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
                                *[Relation(c, sp.Integer(0), "≥") for c in eq.conditions]))
+        if eq.equivalent:
+            steps.append(st.note("The same configuration (the same orientation, or up to a coordinate V does "
+                                 "not depend on) is also written", *[configuration(coordinates, list(e.values()))
+                                                                      for e in eq.equivalent]))
         steps.append(st.equation(
             f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
             Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
         ))
-    return tuple(steps)
+    return tuple(steps) + singular_steps(answers.singular_points, model)
+
+
+def singular_steps(points, model: Model) -> tuple[st.Step, ...]:
+    """The solutions of ∂V/∂q = 0 at singular points of the coordinates, set apart."""
+    if not points:
+        return ()
+    coordinates = model.state.functions()
+    head = st.note(f"{len(points)} more solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates "
+                   "(∂r/∂q loses rank: some motion of the scene has no coordinate there); they are not "
+                   "listed as equilibria:")
+    return (head, *[st.note(f"{p.verdict.capitalize()}: {p.reason}.",
+                            configuration(coordinates, [sp.sympify(v) for v in p.at.values()])) for p in points])
 
 
 def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:

@@ -1,0 +1,217 @@
+"""Where the scene is for given coordinates, and where the coordinates fail to say it.
+
+The placement φ(q) lists what the energies can see of a configuration: each body's
+centre r_G, the rotation R of each body that has rotational inertia and turns, and each
+spring's stretch. Two coordinate values describe the same configuration when their
+placements are equal; the coordinates are singular at q₀ where the Jacobian ∂φ/∂q
+loses rank there while it has full rank nearby (gimbal lock of three successive
+turns at β = ±π/2; the pole of spherical angles). There ∂V/∂q = Jᵀ ∂V/∂φ = 0 is no
+longer enough for an equilibrium: it tests fewer directions than the scene can move
+in (e.g. Goldstein, ch. 4.4, on Euler angles at θ = 0).
+
+The fibre test decides. Along a direction k of the kernel of J at q₀, the points
+q₀ + t k with the same placement (a straight fibre, as gimbal lock's α ± γ = const)
+are the same configuration written otherwise, and the coordinates there test other
+directions: a nonzero ∂V/∂q at any of them shows that V changes to first order along
+a path through the configuration, which is then no equilibrium; zero at all of them,
+with their Jacobians together reaching the full rank, shows that it is one.
+
+Rank and fibre tests are numeric: 30 digits, the parameters at their values or at fixed
+random samples, rank against a relative 1e-20; they classify, never print, a number.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from enum import Enum
+from typing import Mapping
+
+import mpmath as mp
+import sympy as sp
+
+from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.model.build import Model
+from rbdsolve.model.energy import memoized, potential_energy
+
+DIGITS = 30
+RANK_TOL = mp.mpf(10) ** -20
+FIBRE_STEPS = (mp.mpf("0.37"), mp.mpf("1.3"), mp.mpf("-2.2"))
+
+SUGGESTION = ("choose angles whose singular points lie away from the configurations asked about (e.g. "
+              "turns in another order, or a triad that starts turned so that the lock falls elsewhere)")
+
+
+class Verdict(Enum):
+    EQUILIBRIUM = "equilibrium"  # the same configuration is an equilibrium in a regular chart too
+    NOT_AN_EQUILIBRIUM = "not an equilibrium"  # ∂V/∂q ≠ 0 at the same configuration written otherwise
+    UNDECIDED = "undecided"  # the fibre test could not decide
+
+
+@dataclass(frozen=True)
+class Singularity:
+    """A singular point of the coordinates: the directions (numeric) of q that do not
+    move the scene there, and the verdict of the fibre test with its reason."""
+
+    kernel: tuple[tuple[float, ...], ...]
+    verdict: Verdict
+    reason: str
+
+
+@memoized
+def placement(model: Model) -> sp.Matrix:
+    """φ(q): r_G of every body, R of every body with rotational inertia that turns, the
+    stretch of every spring, stacked in one column."""
+    parts: list[sp.Expr] = []
+    for body in model.bodies:
+        if body.position is not None:
+            parts += list(body.position)
+        if body.inertia != sp.zeros(3, 3) and (body.angle is not None or body.turns_3d):
+            parts += list(body.rotation)
+    parts += [s.stretch for s in model.springs]
+    return sp.Matrix(parts)
+
+
+@memoized
+def _jacobian(model: Model) -> sp.Matrix:
+    return placement(model).jacobian(sp.Matrix(model.q))
+
+
+@memoized
+def _gradient(model: Model) -> sp.Matrix:
+    V = potential_energy(model).total
+    return sp.Matrix([sp.diff(V, q) for q in model.q])
+
+
+@memoized
+def _sample(model: Model) -> dict[sp.Symbol, sp.Expr]:
+    """The parameters at their values, or at fixed random samples in [1.1, 2.9]."""
+    rng = random.Random(2026)
+    return {s: model.values.get(s, sp.Rational(rng.randint(1100, 2900), 1000))
+            for s in model.symbols.parameters.values()}
+
+
+def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> Singularity | None:
+    """None where the coordinates are regular at ``at`` (or it is not real at the
+    sampled parameters); else the kernel and the fibre test's verdict."""
+    if not model.q or placement(model).rows == 0:
+        return None
+    with mp.workdps(DIGITS):
+        q0 = _point(model, at)
+        if q0 is None:
+            return None
+        rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0))
+        if rank >= _generic_rank(model) or not kernel:
+            return None
+        verdict, reason = _fibre_test(model, q0, kernel)
+        shown = tuple(tuple(0.0 if abs(x) < 1e-15 else float(x) for x in k) for k in kernel)
+        return Singularity(shown, verdict, reason)
+
+
+def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
+    sample = _sample(model)
+    out = []
+    for q in model.q:
+        real, imag = sp.N(sp.sympify(at.get(q, 0)).xreplace(sample), DIGITS).as_real_imag()
+        if abs(imag) > 1e-12 * max(1, abs(real)):
+            return None
+        out.append(mp.mpf(str(real)))
+    return out
+
+
+def _evaluate(matrix: sp.Matrix, model: Model, q: list) -> mp.matrix:
+    subs = {**_sample(model), **{qi: sp.Float(str(x), DIGITS) for qi, x in zip(model.q, q)}}
+    return mp.matrix([[mp.mpf(sp.N(x.xreplace(subs), DIGITS)) for x in matrix.row(i)]
+                      for i in range(matrix.rows)])
+
+
+def _numeric_jacobian(model: Model, q: list) -> mp.matrix:
+    return _evaluate(_jacobian(model), model, q)
+
+
+@memoized
+def _generic_rank(model: Model) -> int:
+    """The rank of ∂φ/∂q at two random configurations (the larger)."""
+    rng = random.Random(7)
+    with mp.workdps(DIGITS):
+        ranks = [_rank_and_kernel(_numeric_jacobian(model, [mp.mpf(rng.uniform(-3, 3)) for _ in model.q]))[0]
+                 for _ in range(2)]
+    return max(ranks)
+
+
+def _rank_and_kernel(J: mp.matrix) -> tuple[int, list[list]]:
+    """Rank of J (singular values above RANK_TOL × the largest) and a basis of its
+    kernel (right singular vectors of the others)."""
+    n = J.cols
+    if J.rows < n:  # pad: svd wants rows ≥ cols
+        J = mp.matrix([[J[i, j] if i < J.rows else 0 for j in range(n)] for i in range(n)])
+    _, S, V = mp.svd_r(J)
+    largest = max(abs(S[i]) for i in range(len(S))) or mp.mpf(1)
+    rank = sum(1 for i in range(len(S)) if abs(S[i]) > RANK_TOL * largest)
+    kernel = [[V[i, j] for j in range(n)] for i in range(len(S)) if abs(S[i]) <= RANK_TOL * largest]
+    return rank, kernel
+
+
+def _fibre_test(model: Model, q0: list, kernel: list[list]) -> tuple[Verdict, str]:
+    """Walk each kernel direction; where the placement stays the same, ∂V/∂q decides."""
+    phi0 = _evaluate(placement(model), model, q0)
+    scale = max([abs(x) for x in phi0] + [mp.mpf(1)])
+    gradient = _gradient(model)
+    jacobians = [_numeric_jacobian(model, q0)]
+    same_seen = False
+    for k in kernel:
+        for t in FIBRE_STEPS:
+            q1 = [a + t * b for a, b in zip(q0, k)]
+            if mp.norm(_evaluate(placement(model), model, q1) - phi0) > RANK_TOL * scale:
+                continue
+            same_seen = True
+            g = _evaluate(gradient, model, q1)
+            if mp.norm(g) > mp.mpf(10) ** -15 * max(scale, 1):
+                where = ", ".join(f"{n} = {float(x):.6g}" for n, x in zip(model.coordinate_names(), q1))
+                return (Verdict.NOT_AN_EQUILIBRIUM,
+                        f"the same configuration is also written ({where}), where ∂V/∂q ≠ 0")
+            jacobians.append(_numeric_jacobian(model, q1))
+    if not same_seen:
+        return Verdict.UNDECIDED, "the configurations along the lost directions could not be followed"
+    stacked = mp.matrix([[J[i, j] for j in range(J.cols)] for J in jacobians for i in range(J.rows)])
+    if _rank_and_kernel(stacked)[0] < _generic_rank(model):
+        return Verdict.UNDECIDED, "the configurations along the lost directions do not test every direction"
+    return Verdict.EQUILIBRIUM, "∂V/∂q = 0 also where the same configuration is written with regular coordinates"
+
+
+def exact_kernel(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list[sp.Matrix]:
+    """The kernel of ∂φ/∂q at ``at``, exactly (sin and cos reduced on the unit circle)."""
+    J = _jacobian(model).xreplace(dict(at)).applyfunc(tidy_fraction)
+    return [v.applyfunc(tidy) for v in J.nullspace(simplify=True)]
+
+
+def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.Symbol, sp.Expr],
+                   free: tuple[sp.Symbol, ...] = ()) -> bool:
+    """Do ``a`` and ``b`` describe one configuration, for some values of the ``free``
+    coordinates (those V does not depend on) in ``b``? Exact: φ(a) − φ(b) reduced with
+    sin² + cos² = 1 vanishes, or, with free angles, the polynomial system in their sines
+    and cosines on the unit circle has a real solution."""
+    phi = placement(model)
+    left = phi.xreplace(dict(a))
+    fixed = {q: v for q, v in b.items() if q not in free}
+    right = phi.xreplace(fixed)
+    difference = [tidy_fraction(sp.expand_trig(x)) for x in (left - right)]
+    if not free:
+        return all(x == 0 for x in difference)
+    return _solvable(difference, free, model)
+
+
+def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Model) -> bool:
+    s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in free if q in model.angles}
+    c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in free if q in model.angles}
+    system = [sp.numer(sp.together(e.xreplace({sp.sin(q): s[q] for q in s} | {sp.cos(q): c[q] for q in c})))
+              for e in equations]
+    system = [e for e in system if e != 0]
+    if not system:
+        return True
+    unknowns = [*s.values(), *c.values(), *[q for q in free if q not in s]]
+    if any(e.has(*free) for e in system):
+        return False  # a free coordinate outside sin and cos: not decided here
+    system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
+    roots = sp.solve(system, unknowns, dict=True)
+    return any(all(sp.sympify(v).is_real is not False for v in r.values()) for r in roots)
