@@ -195,3 +195,56 @@ def test_principal_axes_that_turn_have_no_denominator() -> None:
     assert axes[0] == sp.Matrix([sp.cos(th), sp.sin(th), 0])
     assert axes[1] == sp.Matrix([sp.sin(th), -sp.cos(th), 0])
     assert axes[2] == sp.Matrix([0, 0, 1])
+
+
+# --- 1. singular points of the coordinates; one configuration written twice ------------
+
+# The cube on its ball joint: V = −m g·r_G = m g a cos α cos β (G = −a e3, e3 =
+# (sin β, −sin α cos β, cos α cos β)). Physically an equilibrium has G straight below
+# O (hanging) or above it (upside down); γ, a turn about OG, is free. ∂V/∂q = 0 also
+# holds at (α, β) = (±π/2, ±π/2), where e3 is horizontal: there the turns are in
+# gimbal lock (β = ±π/2 makes the x and z turns one axis), and the cube is not in
+# equilibrium (gravity has a moment about O). (π, π, γ) is R_x(π) R_y(π) R_z(γ) =
+# R_z(π + γ): the hanging cube again; (π, 0, γ) = R_z(π) · (0, π, γ): upside down again.
+EQUILIBRIA = CUBE + "  - equilibria\n"
+
+
+def _values(at) -> tuple:
+    return tuple(round(float(sp.sympify(v)), 9) for v in at.values())
+
+
+@pytest.mark.parametrize("route", [RouteChoice.EXACT, RouteChoice.NUMERIC])
+def test_the_cube_on_a_ball_joint_lists_its_physical_equilibria_once(route) -> None:
+    (solution,) = _report(EQUILIBRIA, route).solutions
+    pi = round(float(sp.pi), 9)
+    listed = {_values(eq.at): (eq.stability.value, {_values(e) for e in eq.equivalent})
+              for eq in solution.answers.equilibria}
+    assert listed == {(0.0, 0.0, 0.0): ("neutral", {(pi, pi, 0.0)}),
+                      (0.0, pi, 0.0): ("unstable", {(pi, 0.0, 0.0)})}
+    singular = {_values(p.at) for p in solution.answers.singular_points}
+    h = round(float(sp.pi / 2), 9)
+    assert singular == {(s * h, t * h, 0.0) for s in (-1, 1) for t in (-1, 1)}
+    assert all(p.verdict == "not an equilibrium" for p in solution.answers.singular_points)
+    assert any("singular points of the coordinates" in w for w in solution.warnings)
+
+
+# A spherical pendulum, P = l (sin θ cos φ, sin θ sin φ, −cos θ): the poles θ = 0, π
+# are singular points of the angles (φ does not move P there) and real equilibria
+# (P straight below or above O): they stay listed, the bottom stable, the top not.
+SPHERICAL = """\
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [theta, phi]
+gravity: [0, 0, -g]
+points:
+  P: l*[sin(theta)*cos(phi), sin(theta)*sin(phi), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions: [equilibria]
+"""
+
+
+def test_singular_points_that_are_equilibria_stay_listed() -> None:
+    (solution,) = _report(SPHERICAL, RouteChoice.EXACT).solutions
+    listed = [(_values(eq.at), eq.stability.value, eq.equivalent) for eq in solution.answers.equilibria]
+    assert listed == [((0.0, 0.0), "stable", ()), ((round(float(sp.pi), 9), 0.0), "unstable", ())]
+    assert solution.answers.singular_points == ()

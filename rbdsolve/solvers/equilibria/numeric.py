@@ -26,6 +26,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import (
     NumericEquilibriaAnswers,
     NumericEquilibrium,
+    SingularPoint,
     Stability,
 )
 from rbdsolve.solvers.equilibria.steps import numeric_steps
@@ -39,6 +40,13 @@ from rbdsolve.solvers.shared.numeric_model import (
     periodic_angles,
 )
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.placement import (
+    NUMERIC_TOL,
+    SUGGESTION,
+    Verdict,
+    numeric_same_placement,
+    singularity,
+)
 from rbdsolve.solvers.shared.values import require_values
 
 EPS = float(np.finfo(float).eps)
@@ -52,18 +60,46 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
     g, H = compiled_gradient(model)
     names = model.coordinate_names()
+    kept, apart = numeric_listing(model, found.equilibria)
     equilibria, errors = [], []
-    for r in found.equilibria:
+    for r, equivalent in kept:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
         equilibria.append(NumericEquilibrium(dict(zip(names, r.at)), Stability(r.kind),
-                                             tuple(float(c) for c in curvatures), r.free))
+                                             tuple(float(c) for c in curvatures), r.free,
+                                             tuple(dict(zip(names, e.at)) for e in equivalent)))
         errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
-    answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts)
+    singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
+    answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
+    if singular:
+        warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
+                     "not equilibria of the scene (listed apart); " + SUGGESTION,)
     return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model, found.sampling),
                     warnings=warnings, error_estimate=float(max(errors)))
+
+
+def numeric_listing(model: Model, roots) -> tuple[list, list]:
+    """The roots as the report lists them (as the exact route's ``listing``): those at
+    singular points of the coordinates set apart unless the fibre test finds an
+    equilibrium; roots that are one configuration (up to the continuum a root stands
+    for) merged into the first, with the others as its equivalents."""
+    kept: list[tuple] = []
+    apart: list[tuple] = []
+    for r in roots:
+        at = dict(zip(model.q, r.at))
+        singular = singularity(model, at, NUMERIC_TOL)
+        if singular is not None and singular.verdict is not Verdict.EQUILIBRIUM:
+            apart.append((r, singular))
+            continue
+        same = next((i for i, (k, _) in enumerate(kept)
+                     if numeric_same_placement(model, dict(zip(model.q, k.at)), at, r.free)), None)
+        if same is None:
+            kept.append((r, []))
+        else:
+            kept[same][1].append(r)
+    return kept, apart
 
 
 def searched(model: Model, found) -> str:

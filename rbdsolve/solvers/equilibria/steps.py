@@ -73,4 +73,8 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> t
         family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
-    return tuple(steps)
+        if eq.equivalent:
+            steps.append(st.note("The same configuration is also written",
+                                 *[configuration(model.state.functions(), [sp.Float(v, 12) for v in e.values()])
+                                   for e in eq.equivalent]))
+    return tuple(steps) + singular_steps(a.singular_points, model)

@@ -91,19 +91,24 @@ def _sample(model: Model) -> dict[sp.Symbol, sp.Expr]:
             for s in model.symbols.parameters.values()}
 
 
-def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> Singularity | None:
+NUMERIC_TOL = mp.mpf(10) ** -7  # for a point known to floating-point accuracy only
+
+
+def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> Singularity | None:
     """None where the coordinates are regular at ``at`` (or it is not real at the
-    sampled parameters); else the kernel and the fibre test's verdict."""
+    sampled parameters); else the kernel and the fibre test's verdict. ``tol``: the
+    relative size below which a singular value, a change of placement and (times 10⁵)
+    a gradient count as zero (NUMERIC_TOL for a floating-point root)."""
     if not model.q or placement(model).rows == 0:
         return None
     with mp.workdps(DIGITS):
         q0 = _point(model, at)
         if q0 is None:
             return None
-        rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0))
+        rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0), tol)
         if rank >= _generic_rank(model) or not kernel:
             return None
-        verdict, reason = _fibre_test(model, q0, kernel)
+        verdict, reason = _fibre_test(model, q0, kernel, tol)
         shown = tuple(tuple(0.0 if abs(x) < 1e-15 else float(x) for x in k) for k in kernel)
         return Singularity(shown, verdict, reason)
 
@@ -139,7 +144,12 @@ def _generic_rank(model: Model) -> int:
     return max(ranks)
 
 
-def _rank_and_kernel(J: mp.matrix) -> tuple[int, list[list]]:
+def _image_rank(J: mp.matrix, tol) -> int:
+    """The dimension of the column space of J (rank of Jᵀ: svd wants rows ≥ cols)."""
+    return _rank_and_kernel(J.T if J.rows < J.cols else J, tol)[0]
+
+
+def _rank_and_kernel(J: mp.matrix, tol=RANK_TOL) -> tuple[int, list[list]]:
     """Rank of J (singular values above RANK_TOL × the largest) and a basis of its
     kernel (right singular vectors of the others)."""
     n = J.cols
@@ -147,12 +157,12 @@ def _rank_and_kernel(J: mp.matrix) -> tuple[int, list[list]]:
         J = mp.matrix([[J[i, j] if i < J.rows else 0 for j in range(n)] for i in range(n)])
     _, S, V = mp.svd_r(J)
     largest = max(abs(S[i]) for i in range(len(S))) or mp.mpf(1)
-    rank = sum(1 for i in range(len(S)) if abs(S[i]) > RANK_TOL * largest)
-    kernel = [[V[i, j] for j in range(n)] for i in range(len(S)) if abs(S[i]) <= RANK_TOL * largest]
+    rank = sum(1 for i in range(len(S)) if abs(S[i]) > tol * largest)
+    kernel = [[V[i, j] for j in range(n)] for i in range(len(S)) if abs(S[i]) <= tol * largest]
     return rank, kernel
 
 
-def _fibre_test(model: Model, q0: list, kernel: list[list]) -> tuple[Verdict, str]:
+def _fibre_test(model: Model, q0: list, kernel: list[list], tol) -> tuple[Verdict, str]:
     """Walk each kernel direction; where the placement stays the same, ∂V/∂q decides."""
     phi0 = _evaluate(placement(model), model, q0)
     scale = max([abs(x) for x in phi0] + [mp.mpf(1)])
@@ -162,21 +172,32 @@ def _fibre_test(model: Model, q0: list, kernel: list[list]) -> tuple[Verdict, st
     for k in kernel:
         for t in FIBRE_STEPS:
             q1 = [a + t * b for a, b in zip(q0, k)]
-            if mp.norm(_evaluate(placement(model), model, q1) - phi0) > RANK_TOL * scale:
+            if mp.norm(_evaluate(placement(model), model, q1) - phi0) > tol * scale:
                 continue
             same_seen = True
             g = _evaluate(gradient, model, q1)
-            if mp.norm(g) > mp.mpf(10) ** -15 * max(scale, 1):
+            if mp.norm(g) > 10**5 * tol * _force_scale(model, q1):
                 where = ", ".join(f"{n} = {float(x):.6g}" for n, x in zip(model.coordinate_names(), q1))
                 return (Verdict.NOT_AN_EQUILIBRIUM,
                         f"the same configuration is also written ({where}), where ∂V/∂q ≠ 0")
             jacobians.append(_numeric_jacobian(model, q1))
     if not same_seen:
         return Verdict.UNDECIDED, "the configurations along the lost directions could not be followed"
-    stacked = mp.matrix([[J[i, j] for j in range(J.cols)] for J in jacobians for i in range(J.rows)])
-    if _rank_and_kernel(stacked)[0] < _generic_rank(model):
+    # the images side by side: together they must span as many directions of the
+    # scene's motion as the coordinates reach at a regular point
+    rows = jacobians[0].rows
+    side_by_side = mp.matrix([[J[i, j] for J in jacobians for j in range(J.cols)] for i in range(rows)])
+    if _image_rank(side_by_side, tol) < _generic_rank(model):
         return Verdict.UNDECIDED, "the configurations along the lost directions do not test every direction"
     return Verdict.EQUILIBRIUM, "∂V/∂q = 0 also where the same configuration is written with regular coordinates"
+
+
+def _force_scale(model: Model, q: list):
+    """A size for ∂V/∂q: the largest |∂V/∂qᵢ| at two nearby generic points, at least 1."""
+    rng = random.Random(11)
+    sizes = [mp.norm(_evaluate(_gradient(model), model, [x + mp.mpf(rng.uniform(0.3, 1)) for x in q]))
+             for _ in range(2)]
+    return max(sizes + [mp.mpf(1)])
 
 
 def exact_kernel(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list[sp.Matrix]:
@@ -212,6 +233,44 @@ def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Mode
     unknowns = [*s.values(), *c.values(), *[q for q in free if q not in s]]
     if any(e.has(*free) for e in system):
         return False  # a free coordinate outside sin and cos: not decided here
+    if any(not e.has(*unknowns) for e in system):
+        return False  # a nonzero difference the free coordinates cannot change
     system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
     roots = sp.solve(system, unknowns, dict=True)
     return any(all(sp.sympify(v).is_real is not False for v in r.values()) for r in roots)
+
+
+def numeric_same_placement(model: Model, a: Mapping[sp.Symbol, float], b: Mapping[sp.Symbol, float],
+                           free: tuple[tuple[float, ...], ...] = ()) -> bool:
+    """Floating-point ``same_placement``: φ(a) = φ(b + Σ tᵢ fᵢ) for some t along the
+    directions ``free`` of a continuum b represents, to 1e-9 relative (least squares
+    from starts across a turn in each t)."""
+    import numpy as np
+    from scipy.optimize import least_squares
+
+    phi = _compiled(model)
+    target = phi(np.array([a[q] for q in model.q], dtype=float))
+    base = np.array([b[q] for q in model.q], dtype=float)
+    scale = max(1.0, float(np.max(np.abs(target))))
+    directions = np.array(free, dtype=float).reshape(len(free), len(model.q))
+
+    def residual(t):
+        return (phi(base + t @ directions) - target) / scale
+
+    if not free:
+        return bool(np.max(np.abs(residual(np.zeros(0))), initial=0.0) <= 1e-9)
+    for start in np.linspace(-np.pi, np.pi, 9):
+        fit = least_squares(residual, np.full(len(free), start), xtol=1e-14, ftol=1e-14, gtol=1e-14)
+        if np.max(np.abs(fit.fun)) <= 1e-9:
+            return True
+    return False
+
+
+@memoized
+def _compiled(model: Model):
+    """φ(q) as a numpy function, the parameters at their values."""
+    import numpy as np
+
+    values = _sample(model)
+    f = sp.lambdify([model.q], placement(model).xreplace(values), "numpy")
+    return lambda x: np.asarray(f(x), dtype=float).ravel()
