@@ -81,8 +81,11 @@ class QuestionReader:
             return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.MODES:
             about = get("about")
-            return Question(kind, ModesOptions(self.equilibrium(about) if about else None, self.frame(get("frame")),
-                                               amplitudes(get("check_amplitudes"), get("frame"))), key.loc)
+            number = self.equilibrium_number(about) if about else None
+            point = self.equilibrium(about) if about and number is None else None
+            return Question(kind, ModesOptions(point, self.frame(get("frame")),
+                                               amplitudes(get("check_amplitudes"), get("frame")), number,
+                                               about.loc if about else None), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:
@@ -114,6 +117,17 @@ class QuestionReader:
         if given:
             raise InputError(f"'{kind.value}' needs positions, but {given[0]} is given by its velocity "
                              "at one instant (such a scene answers 'impact' questions)", key.loc)
+
+    def equilibrium_number(self, node: Node) -> int | None:
+        """'about: {equilibrium: N}' (unless a coordinate is named 'equilibrium'): N ≥ 1."""
+        if not isinstance(node, Map) or node.keys() != ["equilibrium"] or "equilibrium" in self.coordinates:
+            return None
+        ((_, value),) = node.entries
+        text = expect_scalar(value, "an equilibrium's number").text.strip()
+        if not text.isdigit() or int(text) < 1 or len(text) > 6:
+            raise InputError(f"'equilibrium' takes the number 'equilibria' prints (1, 2, …), not '{text[:40]}'",
+                             value.loc)
+        return int(text)
 
     def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
         return self.reading.coordinate_values(node, "an equilibrium", complete=True)

@@ -231,9 +231,11 @@ class EquilibriaOptions:
 
 @dataclass(frozen=True)
 class ModesOptions:
-    about: tuple[tuple[str, Expr], ...] | None  # the equilibrium; None: the stable one
+    about: tuple[tuple[str, Expr], ...] | None  # the equilibrium (refined if near one); None: see equilibrium
     frame: str | None = None
     check_amplitudes: tuple[Fraction, ...] = ()  # amplitudes to simulate each mode at (solvers/modes/amplitude.py)
+    equilibrium: int | None = None  # 'about: {equilibrium: N}', as 'equilibria' numbers them; neither: the stable one
+    loc: Location | None = None  # where 'about' is
 
 
 @dataclass(frozen=True)

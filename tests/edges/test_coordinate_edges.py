@@ -248,3 +248,85 @@ def test_singular_points_that_are_equilibria_stay_listed() -> None:
     listed = [(_values(eq.at), eq.stability.value, eq.equivalent) for eq in solution.answers.equilibria]
     assert listed == [((0.0, 0.0), "stable", ()), ((round(float(sp.pi), 9), 0.0), "unstable", ())]
     assert solution.answers.singular_points == ()
+
+
+# --- 2. a rounded root; an equilibrium by its number ------------------------------------
+
+# An inverted rod (m = 1, l = 2, g = 1) on a pivot with a torsional spring c = 3/10:
+# V = ½ c θ² + m g (l/2) cos θ, equilibria θ = k sin θ with k = m g l/(2 c) = 10/3,
+# V'' = c (1 − k cos θ), M = m l²/3 = 4/3 about the pivot. The nonzero roots ±θ* are
+# stable; mpmath gives θ* below, and the single mode λ = V''(θ*)/M.
+ROD = """\
+parameters: {m: mass, l: length, g: gravity, c: stiffness}
+values: {m: 1, l: 2, g: 1, c: 3/10}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: l/2 * [sin(theta), cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+springs:
+  s: {stiffness: c, angle: theta}
+questions:
+"""
+
+
+def _rod_root() -> tuple[float, float]:
+    import mpmath as mp
+
+    k, c = mp.mpf(10) / 3, mp.mpf(3) / 10
+    root = mp.findroot(lambda x: x - k * mp.sin(x), 2.5)
+    return float(root), float(c * (1 - k * mp.cos(root)) / (mp.mpf(4) / 3))
+
+
+def test_a_root_rounded_to_six_digits_is_refined_and_said() -> None:
+    root, lam = _rod_root()
+    (solution,) = _report(ROD + f"  - modes: {{about: {{theta: {root:.6g}}}}}\n").solutions
+    assert solution.solved, solution.error
+    assert solution.answers.about["theta"] == pytest.approx(root, abs=1e-12)
+    assert solution.answers.eigenvalues[0] == pytest.approx(lam, rel=1e-9)
+    assert any("refined by Newton's method" in w for w in solution.warnings)
+
+
+def test_a_point_far_from_every_equilibrium_is_refused_with_a_number() -> None:
+    (solution,) = _report(ROD + "  - modes: {about: {theta: 2.3}}\n").solutions
+    # ∂V/∂θ = c θ − (m g l/2) sin θ = 0.3 · 2.3 − sin 2.3
+    expected = 0.3 * 2.3 - __import__("math").sin(2.3)
+    assert not solution.solved and f"∂V/∂theta = {expected:.6g} there" in solution.error
+    import re
+
+    assert re.findall(r"∂V/∂theta = (\S+)", solution.error) == [f"{expected:.6g}"] * 2  # both routes: a number
+
+
+def test_an_equilibrium_named_by_its_number() -> None:
+    root, lam = _rod_root()
+    equilibria, modes = _report(ROD + "  - equilibria\n  - modes: {about: {equilibrium: 3}}\n").solutions
+    assert equilibria.answers.equilibria[2].at["theta"] == pytest.approx(root, abs=1e-9)  # −θ*, 0, θ*
+    assert modes.answers.about["theta"] == pytest.approx(root, abs=1e-12)
+    (missing,) = _report(ROD + "  - modes: {about: {equilibrium: 4}}\n").solutions
+    assert "there is no equilibrium 4" in missing.error and "finds 3" in missing.error
+
+
+# The hoop turning at Ω (R = 1, g = 9.81, Ω = 5): equilibria 0, ±acos(g/(R Ω²)), π
+# (by hand: ∂V'/∂θ = m R sin θ (g − R Ω² cos θ)); the rounded root is taken as the
+# exact one, acos(9.81/25), on the exact route.
+def test_a_rounded_root_is_taken_as_the_exact_equilibrium_on_the_exact_route() -> None:
+    from conftest import PROBLEMS
+
+    text = (PROBLEMS / "frames" / "rotating-hoop-fast.yaml").read_text()
+    text = text.replace("about: {theta: acos(g/(R*Omega**2))}", "about: {theta: 1.16756}")
+    modes = _report(text).solutions[-1]
+    assert modes.route.value == "exact"
+    R, g, Om = sp.symbols("R g Omega", positive=True)
+    assert _plain(sp.sympify(modes.answers.about["theta"])) == sp.acos(g / (R * Om**2))
+    assert any("from equilibrium 3" in w for w in modes.warnings)
+
+
+# --- 5. a choice among stable equilibria is said ----------------------------------------
+
+def test_modes_without_about_names_the_other_stable_equilibria() -> None:
+    root, _ = _rod_root()
+    (modes,) = _report(ROD + "  - modes\n").solutions
+    assert modes.answers.about["theta"] == pytest.approx(-root, abs=1e-12)  # the first stable one
+    (note,) = [w for w in modes.warnings if "are stable" in w]
+    assert "equilibrium 1" in note and f"equilibrium 3: theta = {root:.9g}" in note

@@ -60,7 +60,8 @@ class ModeShapes:
 def mode_shapes(model: Model, question: Question) -> ModeShapes:
     """The mode pictures of a modes question; NotDrawable for a scene that is not planar,
     UnsolvedError where the numeric route cannot answer (no stable equilibrium, singular M)."""
-    from rbdsolve.solvers.shared.numeric_model import equilibrium_for_modes, linearized
+    from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
+    from rbdsolve.solvers.shared.numeric_model import linearized
 
     require_planar(model)
     filled = model.with_values({name: Fraction(1) for name in unvalued(model)})

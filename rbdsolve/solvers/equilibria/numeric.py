@@ -40,13 +40,7 @@ from rbdsolve.solvers.shared.numeric_model import (
     periodic_angles,
 )
 from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.placement import (
-    NUMERIC_TOL,
-    SUGGESTION,
-    Verdict,
-    numeric_same_placement,
-    singularity,
-)
+from rbdsolve.solvers.shared.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.shared.values import require_values
 
 EPS = float(np.finfo(float).eps)
@@ -78,28 +72,6 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)
     return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model, found.sampling),
                     warnings=warnings, error_estimate=float(max(errors)))
-
-
-def numeric_listing(model: Model, roots) -> tuple[list, list]:
-    """The roots as the report lists them (as the exact route's ``listing``): those at
-    singular points of the coordinates set apart unless the fibre test finds an
-    equilibrium; roots that are one configuration (up to the continuum a root stands
-    for) merged into the first, with the others as its equivalents."""
-    kept: list[tuple] = []
-    apart: list[tuple] = []
-    for r in roots:
-        at = dict(zip(model.q, r.at))
-        singular = singularity(model, at, NUMERIC_TOL)
-        if singular is not None and singular.verdict is not Verdict.EQUILIBRIUM:
-            apart.append((r, singular))
-            continue
-        same = next((i for i, (k, _) in enumerate(kept)
-                     if numeric_same_placement(model, dict(zip(model.q, k.at)), at, r.free)), None)
-        if same is None:
-            kept.append((r, []))
-        else:
-            kept[same][1].append(r)
-    return kept, apart
 
 
 def searched(model: Model, found) -> str:

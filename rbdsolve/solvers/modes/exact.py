@@ -36,8 +36,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.equilibria.answers import Stability
-from rbdsolve.solvers.equilibria.exact import classify, find_equilibria, gradient
+from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.amplitude import with_check
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion
 from rbdsolve.solvers.modes.steps import descending, exact_steps
@@ -56,7 +55,8 @@ DET = sp.Function("det")(sp.Symbol("K", commutative=False)
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
-    at, chosen = _equilibrium(question, model)
+    at, notes = exact_equilibrium(question, model)
+    chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
     K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
@@ -71,7 +71,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     rates = tuple(tidy(sp.sqrt(-lam)) if mo is Motion.GROWTH else None for lam, mo in zip(eigenvalues, motions))
     answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
                            rates, tuple(eigenvalues.count(lam) for lam in eigenvalues))
-    return with_check(question, model, Solution("modes", Route.EXACT, answers, exact_steps(answers, model, spectrum.steps)))
+    return with_check(question, model, Solution("modes", Route.EXACT, answers, exact_steps(answers, model, spectrum.steps),
+                                                warnings=notes))
 
 
 @dataclass(frozen=True)
@@ -103,26 +104,6 @@ def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectr
     pairs = [(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
     steps = (Relation(DET, sp.Integer(0)), Relation(descending(poly), sp.Integer(0), lead="⇒"))
     return _Spectrum(K, M, LAMBDA, _ascending(pairs, model), steps, tidy(poly.as_expr()))
-
-
-def _equilibrium(question: Question, model: Model) -> tuple[dict, dict[str, sp.Expr]]:
-    names = model.coordinate_names()
-    about = question.options.about
-    if about is not None:
-        symbols = model.symbols
-        at = {q: symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
-        residual = [tidy(g.xreplace(at)) for g in gradient(model)]
-        for (name, expr), r in zip(about, residual):
-            if sp.simplify(r) != 0:
-                raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = "
-                                    f"{sp.sstr(model.readable(r))} there")
-        return at, {n: at[q] for n, q in zip(names, model.q)}
-    solutions, _ = find_equilibria(model)
-    stable = [s for s in solutions if classify(model, s).stability is Stability.STABLE]
-    if not stable:
-        raise UnsolvedError("no stable equilibrium found; choose one with "
-                            "'modes: {about: {...}}'")
-    return stable[0], {n: stable[0][q] for n, q in zip(names, model.q)}
 
 
 def _rational(matrix: sp.Matrix) -> bool:

@@ -46,7 +46,8 @@ from rbdsolve.solvers.modes.answers import Motion, NumericModesAnswers
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.shared.frames import require_static
-from rbdsolve.solvers.shared.numeric_model import equilibrium_for_modes, linearized
+from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
+from rbdsolve.solvers.shared.numeric_model import linearized
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.singular import float_reason
 from rbdsolve.solvers.shared.values import require_values

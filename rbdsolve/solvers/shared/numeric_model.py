@@ -54,7 +54,6 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene
-from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.shared.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.shared.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.shared.scan import scan
@@ -128,40 +127,6 @@ def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
         return NumericScene.build(model.problem, values, arithmetic)
     except NotNumeric:
         return None
-
-
-def equilibrium_for_modes(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tuple[str, ...]]:
-    """The question's ``about`` (checked to be an equilibrium in floating point), or the
-    first stable equilibrium found numerically, else the first one stable across a
-    continuum of equilibria (its representative: see ``continua``); and notes saying
-    which was chosen when it lies on a continuum."""
-    names = model.coordinate_names()
-    if question.options.about is not None:
-        return _checked_about(question, model), ()
-    found = find_numeric(model)
-    stable = [r for r in found.equilibria if r.kind == "stable"]
-    across = [r for r in found.equilibria if r.kind == "neutral" and r.free and r.stable_across]
-    if not stable and not across:
-        raise UnsolvedError("no stable equilibrium found numerically; choose one with 'modes: {about: {...}}'")
-    chosen = (stable or across)[0]
-    notes = () if not chosen.free else (
-        continuum_text(chosen.free, names) + "; the modes are taken about it, the first equilibrium found that is "
-        "stable across the continuum (choose another with 'modes: {about: {...}}'); along the continuum λ = 0: neutral",)
-    return {n: sp.Float(v, 17) for n, v in zip(names, chosen.at)}, notes
-
-
-def _checked_about(question: Question, model: Model) -> dict[str, sp.Expr]:
-    """The question's ``about``, refused unless ∂V/∂q vanishes there (relative to H)."""
-    about = question.options.about
-    at = {name: model.symbols.scalar(e) for name, (_, e) in zip(model.coordinate_names(), about)}
-    point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
-    g, H = compiled_gradient(model)
-    residual = np.asarray(g(point), dtype=float)
-    scale = max(np.max(np.abs(np.asarray(H(point), dtype=float))), 1e-300)  # |∂V/∂q| per unit of q
-    if np.max(np.abs(residual)) > ROOT_TOL * scale:
-        (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
-        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
-    return at
 
 
 def continuum_text(free: tuple[tuple[float, ...], ...], names: list[str]) -> str:
@@ -238,7 +203,7 @@ def find_numeric(model: Model) -> NumericEquilibria:
         candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
     else:
         starts, sampling = _starts(model, GRID_POINTS)
-        candidates, unresolved = (_newton(x, g, H) for x in starts), ()
+        candidates, unresolved = (newton(x, g, H) for x in starts), ()
     roots: list[Root] = []
     for x in candidates:
         try:
@@ -250,7 +215,7 @@ def find_numeric(model: Model) -> NumericEquilibria:
     return NumericEquilibria(tuple(sorted(roots, key=lambda r: r.at)), len(starts), sampling, unresolved)
 
 
-def _newton(start: np.ndarray, g, H) -> np.ndarray | None:
+def newton(start: np.ndarray, g, H) -> np.ndarray | None:
     """Newton's method (hybr) from a start, polished; None where V has no value."""
     from scipy.optimize import root
 
@@ -297,7 +262,7 @@ def _accepted(model: Model, x, g, H, tol: float, curvature: float, roots: list[R
     if np.max(np.abs(g(x))) > tol or not _inside(model, x) or _on_a_family(model, x, roots):
         return None
     found = _as_root(model, x, g, H, tol, curvature)
-    if any(np.max(np.abs(_difference(model, np.array(found.at), np.array(r.at)))) <= MERGE_TOL for r in roots):
+    if any(np.max(np.abs(difference(model, np.array(found.at), np.array(r.at)))) <= MERGE_TOL for r in roots):
         return None
     return found
 
@@ -306,7 +271,7 @@ def _on_a_family(model: Model, x: np.ndarray, roots: list[Root]) -> bool:
     """x differs from a continuum's representative only along its free directions."""
     for r in roots:
         if r.free:
-            d = _difference(model, x, np.array(r.at))
+            d = difference(model, x, np.array(r.at))
             F = np.array(r.free, dtype=float).T
             if np.max(np.abs(d - F @ (F.T @ d))) <= MERGE_TOL:
                 return True
@@ -435,7 +400,7 @@ def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:
     return out
 
 
-def _difference(model: Model, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+def difference(model: Model, x: np.ndarray, y: np.ndarray) -> np.ndarray:
     d = x - y
     angles = periodic_angles(model)
     for i, q in enumerate(model.q):

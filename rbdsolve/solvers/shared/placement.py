@@ -240,6 +240,28 @@ def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Mode
     return any(all(sp.sympify(v).is_real is not False for v in r.values()) for r in roots)
 
 
+def numeric_listing(model: Model, roots) -> tuple[list, list]:
+    """The roots as the report lists them (as the exact route's ``listing``): those at
+    singular points of the coordinates set apart unless the fibre test finds an
+    equilibrium; roots that are one configuration (up to the continuum a root stands
+    for) merged into the first, with the others as its equivalents."""
+    kept: list[tuple] = []
+    apart: list[tuple] = []
+    for r in roots:
+        at = dict(zip(model.q, r.at))
+        singular = singularity(model, at, NUMERIC_TOL)
+        if singular is not None and singular.verdict is not Verdict.EQUILIBRIUM:
+            apart.append((r, singular))
+            continue
+        same = next((i for i, (k, _) in enumerate(kept)
+                     if numeric_same_placement(model, dict(zip(model.q, k.at)), at, r.free)), None)
+        if same is None:
+            kept.append((r, []))
+        else:
+            kept[same][1].append(r)
+    return kept, apart
+
+
 def numeric_same_placement(model: Model, a: Mapping[sp.Symbol, float], b: Mapping[sp.Symbol, float],
                            free: tuple[tuple[float, ...], ...] = ()) -> bool:
     """Floating-point ``same_placement``: φ(a) = φ(b + Σ tᵢ fᵢ) for some t along the

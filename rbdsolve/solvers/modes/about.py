@@ -1,0 +1,100 @@
+"""Which equilibrium the exact modes route takes small oscillations about.
+
+``about: {θ: …}``: the point itself where ∂V/∂q vanishes there exactly; otherwise, with
+values for the parameters, the listed exact equilibrium (``equilibria.exact.listing``)
+within REFINE_TOL of it in every coordinate (angles modulo 2π), so that a root copied
+with 6 digits is taken as the root itself, and a note says so. Farther away, refused,
+with the residual as a number. ``about: {equilibrium: N}``: the N-th listed
+equilibrium. Neither: the first stable one; when several are stable, a note names the
+others (the numeric route does the same, ``shared/chosen.py``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.solvers.equilibria.answers import Stability
+from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, listing
+from rbdsolve.solvers.shared.chosen import REFINE_TOL, several_stable
+from rbdsolve.solvers.shared.values import missing_for
+
+
+def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
+    """{q: value} to linearize about, and notes on how it was chosen."""
+    options = question.options
+    if options.about is not None:
+        return _given(question, model)
+    listed = listing(model).equilibria
+    if options.equilibrium is not None:
+        if options.equilibrium > len(listed):
+            raise UnsolvedError(f"{options.loc}: there is no equilibrium {options.equilibrium}: 'equilibria' "
+                                f"lists {len(listed)} here")
+        return listed[options.equilibrium - 1].at, ()
+    stable = [k for k, x in enumerate(listed, 1) if classify_listed(model, x).stability is Stability.STABLE]
+    if not stable:
+        raise UnsolvedError("no stable equilibrium found; choose one with 'modes: {about: {...}}'")
+    notes = ()
+    if len(stable) > 1:
+        others = [(k, _shown(model, listed[k - 1].at)) for k in stable[1:]]
+        notes = (several_stable(stable[0], others),)
+    return listed[stable[0] - 1].at, notes
+
+
+def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
+    about = question.options.about
+    at = {q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
+    residual = [tidy(g.xreplace(at)) for g in gradient(model)]
+    if all(sp.simplify(r) == 0 for r in residual):
+        return at, ()
+    if missing_for(model, question):
+        (name, expr), r = next((a, r) for a, r in zip(about, residual) if sp.simplify(r) != 0)
+        shown = sp.sstr(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
+        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {shown} there (give values for "
+                            "the parameters to have a nearby equilibrium found)")
+    try:
+        listing(model)
+    except UnsolvedError as exc:
+        (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
+        raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{name} = {_number(r, model):.6g} there), "
+                            f"and the exact route cannot list the equilibria to find the one near it ({exc})") from None
+    near = _nearest_listed(model, at)
+    if near is not None:
+        note = (f"about: the point given is {near[1]:.2g} from equilibrium {near[0]} as 'equilibria' lists it; "
+                f"taken there, {_shown(model, listing(model).equilibria[near[0] - 1].at)}")
+        return listing(model).equilibria[near[0] - 1].at, (note,)
+    (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
+    raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {_number(r, model):.6g} there, and no "
+                        f"equilibrium lies within {REFINE_TOL:g} of it")
+
+
+def _nearest_listed(model: Model, at: dict) -> tuple[int, float] | None:
+    """(number, distance) of the listed equilibrium within REFINE_TOL of ``at``, if any."""
+    listed = listing(model).equilibria
+    best = None
+    for k, x in enumerate(listed, 1):
+        gap = max(_gap(model, q, _number(at[q], model), _number(x.at[q], model)) for q in model.q)
+        if gap <= REFINE_TOL and (best is None or gap < best[1]):
+            best = (k, gap)
+    return best
+
+
+def _gap(model: Model, q, a: float, b: float) -> float:
+    d = a - b
+    if q in model.angles:
+        d = (d + math.pi) % (2 * math.pi) - math.pi
+    return abs(d)
+
+
+def _number(value: sp.Expr, model: Model) -> float:
+    z = complex(sp.N(sp.sympify(value).xreplace(dict(model.values)), 20))
+    return z.real if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) else math.inf
+
+
+def _shown(model: Model, at: dict) -> str:
+    return ", ".join(f"{n} = {sp.sstr(v)}" for n, v in zip(model.coordinate_names(), at.values()))
