@@ -330,3 +330,58 @@ def test_modes_without_about_names_the_other_stable_equilibria() -> None:
     assert modes.answers.about["theta"] == pytest.approx(-root, abs=1e-12)  # the first stable one
     (note,) = [w for w in modes.warnings if "are stable" in w]
     assert "equilibrium 1" in note and f"equilibrium 3: theta = {root:.9g}" in note
+
+
+# --- 6. a false "no solution"; copies of one motion --------------------------------------
+
+# A thrown coin (a disk: J1 = m r²/4 across, J3 = m r²/2 along its axis e3), torque
+# free, so L is constant (along z). Its angular velocity has magnitude ω₀ at α from
+# e3. The axis precesses about L at φ̇ at the tilt β: ω = φ̇ ẑ + ψ̇ e3 has φ̇ sin β =
+# ω₀ sin α across the axis and ω₀ cos α along it. L ∥ ẑ means J1 ω⊥ cos β = J3 ω₃ sin β,
+# tan β = (J1/J3) tan α = tan α/2 (by hand; e.g. Goldstein ch. 5.6), and then
+# φ̇ = ω₀ sin α/sin β = ω₀ √(4 − 3 sin²α).
+COIN = """\
+parameters: {m: mass, r: radius, omega0: angular speed, alpha: angle of omega from the axis}
+unknowns: [beta]
+triads:
+  T: {turns: [["z", "omega0*sin(alpha)/sin(beta)*t"], [x, beta]], vectors: [e1, e2, e3]}
+points:
+  O: [0, 0, 0]
+bodies:
+  coin: {shape: disk, mass: m, radius: r, at: O, orientation: [T, [z, "(omega0*cos(alpha) - omega0*sin(alpha)*cos(beta)/sin(beta))*t"]]}
+questions:
+  - steady_motion: {about: O, solve_for: beta}
+"""
+
+
+def test_the_coin_s_precession_is_solved_exactly_once() -> None:
+    (solution,) = _report(COIN, RouteChoice.EXACT).solutions
+    assert solution.solved, solution.error
+    (beta,) = solution.answers.solved.values()
+    alpha = sp.Symbol("alpha", positive=True)
+    beta = beta.xreplace({s: alpha for s in beta.free_symbols if s.name == "alpha"})
+    for a in (0.2, 0.5, 1.0, 1.4):  # tan β = tan α/2, with the axis on L's side (cos β > 0)
+        b = float(beta.subs(alpha, a))
+        assert b == pytest.approx(__import__("math").atan(__import__("math").tan(a) / 2), abs=1e-14)
+    # φ̇ = ω₀ sin α / sin β = ω₀ √(4 − 3 sin²α)
+    phidot = sp.sin(alpha) / sp.sin(beta)
+    assert float(phidot.subs(alpha, 0.5)) == pytest.approx(__import__("math").sqrt(4 - 3 * __import__("math").sin(0.5) ** 2))
+
+
+def test_the_numeric_route_lists_the_coin_s_motion_once_in_one_turn() -> None:
+    import math
+
+    (solution,) = _report(COIN + "values: {m: 1, r: 1, omega0: 3, alpha: 1/2}\n", RouteChoice.NUMERIC).solutions
+    assert solution.solved, solution.error
+    (only,) = solution.answers.solutions
+    assert only.unknowns["beta"] == pytest.approx(math.atan(math.tan(0.5) / 2), abs=1e-12)
+
+
+def test_an_open_quantity_is_not_called_no_solution() -> None:
+    # φ̇ and β both unknown but only L ∥ ẑ to hold them: a family, not "no solution"
+    text = COIN.replace("unknowns: [beta]", "unknowns: [phidot, beta]").replace(
+        '"omega0*sin(alpha)/sin(beta)*t"', "phidot*t").replace(
+        '"(omega0*cos(alpha) - omega0*sin(alpha)*cos(beta)/sin(beta))*t"', '"(omega0*cos(alpha) - phidot*cos(beta))*t"'
+    ).replace("solve_for: beta", "solve_for: [phidot, beta]")
+    (solution,) = _report(text, RouteChoice.EXACT).solutions
+    assert "leave some of them open" in solution.error and "no real solution" not in solution.error

@@ -197,3 +197,73 @@ def sin_cos(x: sp.Expr) -> sp.Expr:
 
 def unknown_symbols(model: Model) -> set[sp.Symbol]:
     return {model.symbols.parameters[u] for u in model.problem.unknowns}
+
+
+def angle_unknown(u: sp.Symbol, relations) -> bool:
+    """Do the relations hold u only through sin u and cos u (and tan u), as an angle?"""
+    held = False
+    for r in relations:
+        r = sin_cos(r)
+        if not r.has(u):
+            continue
+        held = True
+        if r.xreplace({sp.sin(u): sp.Dummy(), sp.cos(u): sp.Dummy()}).has(u):
+            return False
+    return held
+
+
+def angle_of(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
+    """The angle in (−π, π] with this sine and cosine."""
+    if sin_value.is_zero:
+        return sp.Integer(0) if cos_value.is_positive else sp.pi
+    y, x = sp.factor_terms(sin_value), sp.factor_terms(cos_value)
+    common = [f for f in sp.Mul.make_args(y) if f in sp.Mul.make_args(x) and f.is_positive]
+    # atan2(k y, k x) = atan2(y, x) for k > 0: √(…) common to both is dropped
+    y, x = y / sp.Mul(*common), x / sp.Mul(*common)
+    if not common:
+        positive = [f for f in sp.Mul.make_args(y) if f.is_Pow and f.exp == sp.Rational(1, 2)
+                    and f in sp.Mul.make_args(x)]
+        y, x = y / sp.Mul(*positive), x / sp.Mul(*positive)  # a real root's √ is positive
+    angle = sp.atan2(y, x)
+    return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
+
+
+def twin(a: dict, b: dict, relations, sample: dict, tol: float = 1e-20) -> bool:
+    """Are two solutions one motion: each angle unknown the same or turned by π (at
+    least one turned, unless all are the same), every other unknown the same or of the
+    opposite sign (compared at ``sample``, parameter values, to 30 digits), and the
+    change (u → u + π on the turned angles, v → −v on the others) a symmetry of the
+    relations, mapping each to ± itself — the motion turned over (β + π with −φ̇)? ``tol``: relative, for values known to it only."""
+    if set(a) != set(b):
+        return False
+    change = {}
+    for u in a:
+        kind = _compare(a[u], b[u], angle_unknown(u, relations), sample, tol)
+        if kind is None:
+            return False
+        if kind != "same":
+            change[u] = u + sp.pi if kind == "half turn" else -u
+    if change and not any(v == u + sp.pi for u, v in change.items()):
+        return False  # signs turned alone (±ω₀): the motion reversed, not turned over
+    for r in relations:
+        turned, plain = tidy_fraction(sin_cos(r.xreplace(change))), tidy_fraction(sin_cos(r))
+        if tidy_fraction(turned - plain) != 0 and tidy_fraction(turned + plain) != 0:
+            return False
+    return True
+
+
+def _compare(x: sp.Expr, y: sp.Expr, angle: bool, sample: dict, tol: float) -> str | None:
+    """"same", "half turn" (an angle: sin and cos both turned), "opposite" (−x), or None."""
+    def number(v):
+        return complex(sp.N(sp.sympify(v).xreplace(sample), 30))
+
+    if angle:
+        (sx, cx), (sy, cy) = (number(sp.sin(x)), number(sp.cos(x))), (number(sp.sin(y)), number(sp.cos(y)))
+        if abs(sx - sy) + abs(cx - cy) <= tol:
+            return "same"
+        return "half turn" if abs(sx + sy) + abs(cx + cy) <= tol else None
+    vx, vy = number(x), number(y)
+    scale = max(1.0, abs(vx))
+    if abs(vx - vy) <= tol * scale:
+        return "same"
+    return "opposite" if abs(vx + vy) <= tol * scale else None

@@ -27,6 +27,8 @@ In a steady motion every component in a triad T (turning at Ω_T) is constant. T
 
 from __future__ import annotations
 
+import random
+
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
@@ -37,11 +39,14 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers
 from rbdsolve.solvers.steady_motion.balances import (
+    angle_of,
+    angle_unknown,
     balances,
     relation,
     rolling_velocities,
     setup,
     sin_cos,
+    twin,
     unknown_symbols,
 )
 from rbdsolve.solvers.steady_motion.steps import balance_steps, kinematics_step, rolling_steps
@@ -97,13 +102,23 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
     X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
     replaced = [r.subs(dict(zip(targets, X))) for r in relations]
     holding = [r for r in replaced if r.has(*X, *along) and not r.has(*held)]
-    found = [f for f in (sp.solve(holding, X + along, dict=True) if holding else [])
+    asked = ", ".join(x.text for x in opts.solve_for)
+    if not holding:
+        raise UnsolvedError(f"the relations do not give {asked}: no relation holds {asked}")
+    solutions, proved = _solved(holding, X + along)
+    if solutions and not any(all(d in f for d in X) for f in solutions):
+        raise UnsolvedError(f"the relations do not give {asked} uniquely: they leave some of them open "
+                            f"({len(holding)} relation{'s' if len(holding) > 1 else ''} for {len(X)} quantities)")
+    found = [f for f in solutions
              if all(d in f for d in X) and not any(x.is_positive and (f[d].is_negative or f[d].could_extract_minus_sign())
                                                    for x, d in zip(targets, X))]
-    asked = ", ".join(x.text for x in opts.solve_for)
+    found = _once(found, holding, model)
+    if not found:
+        raise UnsolvedError(f"no steady motion: the relations have no real solution for {asked} (proved: they are "
+                            "polynomial in the unknowns and the sines and cosines of the angles, solved completely)"
+                            if proved else f"the relations could not be solved exactly for {asked}")
     if len(found) != 1:
-        raise UnsolvedError(f"the relations do not give {asked} uniquely "
-                            f"({'no relation holds ' + asked if not holding else f'{len(found)} solutions'})")
+        raise UnsolvedError(f"the relations do not give {asked} uniquely ({len(found)} solutions)")
     back = dict(zip(X, targets))
     values = {x: tidy_fraction(sin_cos(found[0][d].xreplace(back))) for x, d in zip(targets, X)}
     _require_known(values, unknown_symbols(model) | held)
@@ -111,6 +126,66 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
                    if u in found[0] and not found[0][u].has(*X, *unknown_symbols(model))}
     _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
     return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along
+
+
+def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[dict], bool]:
+    """Every solution, and whether the list is complete. Unknowns that the relations
+    hold only through sin and cos (a tilt β) are solved for on the unit circle: sin β =
+    s, cos β = c, s² + c² = 1, which makes the relations polynomial; sympy then solves
+    them completely (Gröbner bases) and β = atan2(s, c) in (−π, π], so "no solution" is
+    proved. Otherwise sympy's solve, which may miss solutions (not complete)."""
+    polynomial = _on_unit_circle(relations, unknowns)
+    if polynomial is not None:
+        system, symbols, back, determined = polynomial
+        roots = sp.solve(system, symbols, dict=True)
+        out = []
+        for root in roots:
+            if any(sp.sympify(v).is_real is False for v in root.values()):
+                continue
+            # a family (some symbols left free) keeps only the unknowns it determines
+            out.append({u: back[u](root) for u in unknowns if determined[u] <= set(root)})
+        return out, True
+    try:
+        return sp.solve(relations, unknowns, dict=True), False
+    except NotImplementedError:
+        return [], False
+
+
+def _on_unit_circle(relations, unknowns):
+    """(system, symbols, {unknown: its value from a root}, {unknown: the symbols a root
+    must give for it}) with each angle unknown's sin and cos as symbols on the unit
+    circle; None unless the relations become polynomial."""
+    angles = [u for u in unknowns if angle_unknown(u, relations)]
+    if not angles:
+        return None
+    s = {u: sp.Dummy(f"s_{u}", real=True) for u in angles}
+    c = {u: sp.Dummy(f"c_{u}", real=True) for u in angles}
+    plain = [u for u in unknowns if u not in s]
+    table = {sp.sin(u): s[u] for u in s} | {sp.cos(u): c[u] for u in c}
+    system = [sp.numer(sp.together(sin_cos(r).xreplace(table))) for r in relations]
+    symbols = [*s.values(), *c.values(), *plain]
+    if any(e.has(*angles) or not e.is_polynomial(*symbols) for e in system):
+        return None
+    system += [s[u] ** 2 + c[u] ** 2 - 1 for u in angles]
+    back = {u: (lambda root, u=u: angle_of(root[s[u]], root[c[u]])) for u in angles}
+    back |= {u: (lambda root, u=u: root[u]) for u in plain}
+    determined = {u: {s[u], c[u]} for u in angles} | {u: {u} for u in plain}
+    return system, symbols, back, determined
+
+
+def _once(found: list[dict], relations, model: Model) -> list[dict]:
+    """Solutions that are the same motion listed once: angles that differ by a whole
+    turn, or twins, a half turn of every angle unknown with the other unknowns' signs
+    turned where that leaves the relations as they are (β + π with −φ̇: the motion
+    turned over). The representative: the least in size at a sample."""
+    rng = random.Random(26)
+    sample = {s: model.values.get(s, sp.Rational(rng.randint(1100, 2900), 1000))
+              for s in model.symbols.parameters.values()}
+    out: list[dict] = []
+    for f in sorted(found, key=lambda f: [abs(complex(sp.N(sp.sympify(v).xreplace(sample), 15))) for v in f.values()]):
+        if not any(twin(f, g, relations, sample) for g in out):
+            out.append(f)
+    return out
 
 
 def _require_known(values: dict, unknown: set) -> None:

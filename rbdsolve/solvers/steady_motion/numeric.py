@@ -42,7 +42,14 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.values import require_values
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotion, NumericSteadyMotionAnswers
-from rbdsolve.solvers.steady_motion.balances import balances, relation, rolling_velocities, setup
+from rbdsolve.solvers.steady_motion.balances import (
+    angle_unknown,
+    balances,
+    relation,
+    rolling_velocities,
+    setup,
+    twin,
+)
 from rbdsolve.solvers.steady_motion.steps import numeric_steps
 
 EPS = float(np.finfo(float).eps)
@@ -79,11 +86,11 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     relations = tuple(relation(x, None) for x in (*rolling, *b.components) if tidy_fraction(x) != 0)
     system = _compile(relations, _unknowns(model, free, relations, opts), model)
     roots, closest = _search(system, _scale(model))
-    kept = [x for x in roots if _admissible(x, system.unknowns, free)]
+    kept = [_turned(x, system) for x in roots if _admissible(x, system.unknowns, free)]
     if not kept:
         raise UnsolvedError(_none_found(roots, free, closest))
     quantities = _Quantities.of(b.omega, targets, opts, system.unknowns, model)
-    solutions = _distinct([_analyse(x, system, quantities) for x in kept])
+    solutions = _once(_distinct([_analyse(x, system, quantities) for x in kept]), system, model)
     answers = NumericSteadyMotionAnswers(vectors, relations, _summary([s.angular_velocity for s in solutions]),
                                          _solved_summary(solutions), tuple(solutions), STARTS)
     return Solution("steady_motion", Route.NUMERIC, answers, numeric_steps(answers, opts, omega, v_G, model),
@@ -258,6 +265,33 @@ def _singular(x: np.ndarray, system: _System, bad: frozenset[int], A: np.ndarray
     return (f"the relations' Jacobian is singular at the solution {at} (σ_min/σ_max = {ratio:.2g}, below "
             f"{SINGULAR_TOL:g}): {names} {'is' if len(bad) == 1 else 'are'} not fixed there (a double root, or "
             "a quantity the relations leave open); the error cannot be bounded")
+
+
+def _turned(x: np.ndarray, system: _System) -> np.ndarray:
+    """Each angle unknown (held by the relations only through sin and cos) in (−π, π]:
+    the same motion whatever whole turns a start led to."""
+    out = np.array(x, dtype=float)
+    for i, u in enumerate(system.unknowns):
+        if angle_unknown(u, system.relations):
+            out[i] = np.pi - (np.pi - out[i]) % (2 * np.pi)
+    return out
+
+
+TWIN_TOL = 1e-8  # values found to about √ε: compared relative to this
+
+
+def _once(solutions: list[NumericSteadyMotion], system: _System, model: Model) -> list[NumericSteadyMotion]:
+    """Twins merged as on the exact route (``balances.twin``: β + π with −φ̇, the motion
+    turned over), the representative the least in size, so the list does not depend
+    on which starts found which copy."""
+    out: list[NumericSteadyMotion] = []
+    for s in sorted(solutions, key=lambda s: [abs(v) if v is not None else 0.0 for v in s.unknowns.values()]):
+        a = {u: s.unknowns[str(u)] for u in system.unknowns}
+        if any(None in a.values() or twin(a, {u: t.unknowns[str(u)] for u in system.unknowns}, system.relations,
+                                          dict(model.values), TWIN_TOL) for t in out):
+            continue
+        out.append(s)
+    return out
 
 
 def _distinct(solutions: list[NumericSteadyMotion]) -> list[NumericSteadyMotion]:
