@@ -294,6 +294,23 @@ def to_latex(value: Math) -> str:
     return _TEX.doprint(value)
 
 
+LATEX_OPS = {"≥": r"\geq", "≤": r"\leq", "≠": r"\neq", "<": "<", ">": ">", "=": "="}
+
+
+def relation_latex(rel) -> str:
+    """A Relation in LaTeX math: ⇒ as \\Rightarrow, a worded lead ("stable when") as
+    text, ≥ and ≤ as \\geq and \\leq (one home for every renderer that writes TeX)."""
+    lead = "" if not rel.lead else r"\Rightarrow" if rel.lead == "⇒" else rf"\text{{{_tex_text(rel.lead)}}}\;"
+    parts = [lead, to_latex(rel.lhs), LATEX_OPS.get(rel.op, rel.op), to_latex(rel.rhs)]
+    parts += [f"= {to_latex(m)}" for m in rel.more]
+    return " ".join(p for p in parts if p)
+
+
+def _tex_text(words: str) -> str:
+    """Plain words for \\text{…}: letters, digits and spaces only (they are ours)."""
+    return "".join(ch for ch in words if ch.isalnum() or ch == " ")
+
+
 def relation_text(rel) -> str:
     """A Relation (report.steps) in readable unicode: ⇒ T = T₁ + T₂ = …"""
     parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]

@@ -18,7 +18,7 @@ from enum import Enum
 import sympy as sp
 
 from rbdsolve.errors import InputError, InternalError, UnsolvedError
-from rbdsolve.form.printers import to_latex
+from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.display import Math, plain
 from rbdsolve.report.tree import map_leaves
 from rbdsolve.report.steps import ProblemReport, Solution, Step
@@ -50,10 +50,7 @@ def relation(rel: Relation) -> dict:
         out["more"] = [_math(m) for m in rel.more]
     if rel.lead:
         out["lead"] = rel.lead
-    out["latex"] = " ".join(
-        filter(None, [rel.lead and "\\Rightarrow", to_latex(rel.lhs), rel.op, to_latex(rel.rhs),
-                      *[f"= {to_latex(m)}" for m in rel.more]])
-    ).replace("⇒", "\\Rightarrow")
+    out["latex"] = relation_latex(rel)
     return out
 
 

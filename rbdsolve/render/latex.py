@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rbdsolve.render.markdown import relation_latex
+from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.printers import GREEK
 from rbdsolve.render.numbers import numeric_lines
 from rbdsolve.report.key import AnswerKey, Picture

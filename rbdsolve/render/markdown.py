@@ -2,17 +2,10 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import to_latex
+from rbdsolve.form.printers import relation_latex
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
-from rbdsolve.form.display import Relation
-
-
-def relation_latex(rel: Relation) -> str:
-    parts = ["\\Rightarrow" if rel.lead else "", to_latex(rel.lhs), rel.op, to_latex(rel.rhs)]
-    parts += [f"= {to_latex(m)}" for m in rel.more]
-    return " ".join(p for p in parts if p)
 
 
 def _step(step: Step) -> list[str]:

@@ -42,7 +42,7 @@ def test_answers_read_back(path) -> None:
     for result in line["results"]:
         for text in strings(result["answers"] or {}):
             expr = sp.sympify(text, locals=names)  # raises if not readable
-            assert isinstance(expr, sp.Basic), text
+            assert isinstance(expr, (sp.Basic, bool)), text  # a condition that always holds is "True"
 
 
 def test_a_number_that_is_not_finite_is_a_bug_not_a_nan_token() -> None:

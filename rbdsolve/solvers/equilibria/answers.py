@@ -14,6 +14,19 @@ class Stability(Enum):
     UNSTABLE = "unstable"
     NEUTRAL = "neutral"
     UNDETERMINED = "undetermined"
+    DEPENDS = "depends"  # on the parameters: see stability_cases
+
+
+@dataclass(frozen=True)
+class StabilityCase:
+    when: sp.Basic  # a condition on the parameters (a sympy relational)
+    stability: Stability
+
+
+@dataclass(frozen=True)
+class CriticalValue:
+    parameter: str
+    value: sp.Expr
 
 
 @dataclass(frozen=True)
@@ -24,6 +37,8 @@ class Equilibrium:
     reason: str  # why this stability: the eigenvalue signs, or what is undecided
     conditions: tuple[sp.Expr, ...] = ()  # it exists only where each is ≥ 0
     equivalent: tuple[Mapping[str, sp.Expr], ...] = ()  # other coordinate values of the same configuration
+    exists_when: sp.Basic = sp.true  # the conditions solved for one parameter (true: always)
+    stability_cases: tuple[StabilityCase, ...] = ()  # with stability DEPENDS: one per case
 
 
 @dataclass(frozen=True)
@@ -41,6 +56,7 @@ class SingularPoint:
 class EquilibriaAnswers:
     equilibria: tuple[Equilibrium, ...]
     singular_points: tuple[SingularPoint, ...] = ()
+    critical: tuple[CriticalValue, ...] = ()  # where an existence or a stability changes
 
 
 @dataclass(frozen=True)

@@ -31,6 +31,7 @@ from rbdsolve.model.energy import hessian, memoized, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
+from rbdsolve.solvers.equilibria.cases import critical_values, with_cases
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
@@ -139,18 +140,23 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
 def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
     """Where an equilibrium exists: None if it is not real at the given parameter values,
     else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
-    needed = set()
-    for value in at.values():
-        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
-        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
     conditions = []
-    for condition in sorted(needed, key=sp.default_sort_key):
+    for condition in needed_conditions(at):
         sign = sign_of(tidy(condition), model.values)
         if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
             return None  # not real for these parameter values
         if isinstance(sign, Undecided):
             conditions.append(tidy(condition))
     return tuple(conditions)
+
+
+def needed_conditions(at: Mapping) -> list[sp.Expr]:
+    """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
+    needed = set()
+    for value in at.values():
+        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
+    return sorted(needed, key=sp.default_sort_key)
 
 
 def _numeric(expr: sp.Expr, model: Model) -> bool:
@@ -323,11 +329,13 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
-    equilibria = tuple(classify_listed(model, x) for x in listed.equilibria)
+    classified = [with_cases(classify_listed(model, x), model, needed_conditions(x.at)) for x in listed.equilibria]
+    equilibria = tuple(eq for eq, _ in classified)
+    critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
-    answers = EquilibriaAnswers(equilibria, singular_answers(model, listed.singular_points))
+    answers = EquilibriaAnswers(equilibria, singular_answers(model, listed.singular_points), critical)
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, bool(periodic_angles(model))),
                     warnings=tuple(warnings))

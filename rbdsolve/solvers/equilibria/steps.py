@@ -30,10 +30,16 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
                   + (" (angles in (−π, π])" if periodic else "") + ":"),
     ]
     coordinates = model.state.functions()
+    named = {sp.Symbol(c.parameter, positive=True): c for c in answers.critical}
     for number, eq in enumerate(equilibria, start=1):
-        exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
-        steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
-                               *[Relation(c, sp.Integer(0), "≥") for c in eq.conditions]))
+        if eq.exists_when is not sp.true:
+            steps.append(st.result(f"Equilibrium {number} (it exists only where the following holds):",
+                                   configuration(coordinates, list(eq.at.values())),
+                                   *[_condition(c, named) for c in sp.And.make_args(eq.exists_when)]))
+        else:
+            exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
+            steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
+                                   *[Relation(c, sp.Integer(0), "≥") for c in eq.conditions]))
         if eq.equivalent:
             steps.append(st.note("The same configuration (the same orientation, or up to a coordinate V does "
                                  "not depend on) is also written", *[configuration(coordinates, list(e.values()))
@@ -42,7 +48,31 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
             f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
             Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
         ))
+        if eq.stability_cases:
+            steps.append(st.result("Its stability, case by case:",
+                                   *[_condition(c.when, named, f"{c.stability.value} when")
+                                     for c in eq.stability_cases]))
+    steps += critical_steps(answers.critical)
     return tuple(steps) + singular_steps(answers.singular_points, model)
+
+
+def critical_steps(critical) -> list[st.Step]:
+    """The critical values by name: Ω_c = √(g/R)."""
+    if not critical:
+        return []
+    return [st.result("Critical value" + ("s" if len(critical) > 1 else "") + ", where an equilibrium appears "
+                      "or its stability changes:",
+                      *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in critical])]
+
+
+def _condition(condition, named: dict, lead: str = "") -> Relation:
+    """p < p_c with p_c by name where it is a critical value: Ω < Ω_c."""
+    ops = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
+    lhs, rhs = condition.lhs, condition.rhs
+    for c in named.values():
+        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
+            rhs = sp.Symbol(f"{c.parameter}_c")
+    return Relation(lhs, rhs, ops.get(type(condition), "?"), lead=lead)
 
 
 def singular_steps(points, model: Model) -> tuple[st.Step, ...]:

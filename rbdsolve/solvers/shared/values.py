@@ -10,6 +10,8 @@ from typing import Mapping
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.core.relational import Relational
+from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
@@ -50,6 +52,9 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
         return value  # a numeric route's answer
     if not isinstance(value, sp.Basic):
         return None  # enums, text: not numbers
+    if isinstance(value, (Relational, BooleanAtom, BooleanFunction)):  # a condition: true or false at the values, if they decide it
+        decided = value.xreplace(subs)
+        return bool(decided) if isinstance(decided, BooleanAtom) else None
     number = value.xreplace(subs)
     if roots is not None and number.has(sp.CRootOf):
         number = number.xreplace(_root_values(number, roots))

@@ -1,0 +1,90 @@
+"""Equilibria whose existence or stability depends on the parameters, as exams state
+them: "exists when Ω ≥ Ω_c", "stable when Ω < Ω_c, unstable when Ω > Ω_c", with
+Ω_c = √(g/R) (``solvers/shared/conditions.py`` finds the critical value and the sign
+on each side).
+
+Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos) that the parameters'
+signs do not decide, split at its critical value, holds on the sides where c > 0,
+boundary included. Stability: the quantity whose
+sign decides it (``signs.matrix_inertia``'s undecided expression) is split, and on each
+side where the equilibrium exists the Hessian is classified again with the parameter
+put in as p_c (1 + δ)^{±1}, δ > 0. What cannot be split stays as before: undetermined,
+with the conditions as they were.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import sympy as sp
+
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.equilibria.answers import CriticalValue, Equilibrium, Stability, StabilityCase
+from rbdsolve.solvers.shared.conditions import Critical, Side, on_side, split
+from rbdsolve.form.tidy import tidy
+from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
+
+
+def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple[Equilibrium, tuple[Critical, ...]]:
+    """The equilibrium with ``exists_when`` and ``stability_cases`` where they depend on
+    the parameters (``needed``: what must be ≥ 0 for it to be real), and the critical
+    values used. Found from the symbols, whatever values are given: with values the
+    stability itself is decided by them, and the cases say where that holds."""
+    criticals: list[Critical] = []
+    exists, sides = sp.true, set(Side)
+    for condition in (c for c in needed if not isinstance(sign_of(tidy(c), {}), int)):
+        s = split(tidy(condition), model)
+        if s is None:
+            return found, ()
+        held = s.sides((1,))
+        if criticals and not _same(s.critical, criticals[0]):
+            return found, ()
+        criticals.append(s.critical)
+        sides &= set(held)
+        exists = sp.And(exists, s.critical.when(held[0], closed=True)) if len(held) == 1 else exists
+    found = replace(found, exists_when=exists)
+    inertia = matrix_inertia(found.hessian, {})
+    if not isinstance(inertia, Undecided):
+        return found, tuple(criticals)
+    s = split(inertia.expr, model)
+    if s is None or (criticals and not _same(s.critical, criticals[0])):
+        return found, tuple(criticals)
+    cases = tuple(StabilityCase(s.critical.when(side), _stability_on(found.hessian, s.critical, side))
+                  for side in Side if side in sides)
+    # with values for what decides it, the values decide (at the boundary itself: undetermined)
+    decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
+    p = s.critical.parameter
+    if len(cases) == 1:
+        where = f"{p} > {p}_c" if cases[0].when.rel_op == ">" else f"{p} < {p}_c"
+        reason = found.reason if decided else f"the Hessian of V keeps one sign where it exists ({where})"
+        return replace(found, stability=found.stability if decided else cases[0].stability,
+                       reason=reason), (*criticals, s.critical)
+    if decided:  # the values decide; the cases say where that holds
+        return replace(found, stability_cases=cases), (*criticals, s.critical)
+    return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
+                    reason=f"the Hessian of V changes sign at {p} = {p}_c"), (*criticals, s.critical))
+
+
+def critical_values(criticals) -> tuple[CriticalValue, ...]:
+    """Each critical value once, in the order found."""
+    out: list[CriticalValue] = []
+    for c in criticals:
+        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
+            out.append(CriticalValue(str(c.parameter), c.value))
+    return tuple(out)
+
+
+def _same(a: Critical, b: Critical) -> bool:
+    return a.parameter == b.parameter and sp.simplify(a.value - b.value) == 0
+
+
+def _stability_on(H: sp.Matrix, critical: Critical, side: Side) -> Stability:
+    value, _ = on_side(sp.Matrix(H), critical, side)
+    inertia = matrix_inertia(value.applyfunc(sp.factor), {})
+    if isinstance(inertia, Undecided):
+        return Stability.UNDETERMINED
+    if inertia.negative:
+        return Stability.UNSTABLE
+    if inertia.zero:
+        return Stability.UNDETERMINED
+    return Stability.STABLE

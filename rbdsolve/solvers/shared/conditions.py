@@ -1,0 +1,157 @@
+"""Conditions on the parameters: where a quantity changes sign, its critical value, and
+the sign on each side — the "stable iff Ω < √(g/R)" of an exam answer.
+
+For a quantity f whose sign the parameters' own signs do not decide, one parameter p
+is chosen in which f vanishes at exactly one positive value p_c (solved exactly, every
+parameter positive): a rate first (a parameter named or described as a rate, a speed
+or a spin: exams ask "above which rate"), then a stiffness, otherwise the first in
+the file's order.
+The sign of f on each side is decided exactly by putting in
+
+    p = p_c (1 + δ)  (above)   or   p = p_c / (1 + δ)  (below),   δ > 0,
+
+which keeps p positive, and asking sympy for the sign of the result (factored). Where
+sympy cannot tell, f is evaluated at SAMPLES random points on that side (the other
+parameters and δ drawn at random); the side gets a sign only if every sample agrees.
+A physical f is dimensionally homogeneous, so p_c is a formula in the others, such as
+√(g/R), and a condition in one parameter is the simplest an exam would write.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from enum import Enum
+from typing import Iterable
+
+import sympy as sp
+
+from rbdsolve.form.tidy import tidy
+
+SAMPLES = 8
+RATE_WORDS = ("omega", "spin", "rate", "speed", "angular")  # exams ask "above which rate"
+STIFFNESS_WORDS = ("stiff", "spring", "torsion")  # then "how stiff a spring"
+
+
+class Side(Enum):
+    BELOW = "below"
+    ABOVE = "above"
+
+
+@dataclass(frozen=True)
+class Critical:
+    """p_c: the value of one parameter where a sign changes."""
+
+    parameter: sp.Symbol
+    value: sp.Expr
+
+    @property
+    def name(self) -> sp.Symbol:
+        return sp.Symbol(f"{self.parameter.name}_c", positive=True)
+
+    def when(self, side: Side, closed: bool = False) -> sp.Boolean:
+        """p < p_c or p > p_c (≤, ≥ with ``closed``), in the parameters' own symbols."""
+        p, c = self.parameter, self.value
+        if side is Side.BELOW:
+            return sp.Le(p, c) if closed else sp.Lt(p, c)
+        return sp.Ge(p, c) if closed else sp.Gt(p, c)
+
+
+@dataclass(frozen=True)
+class Split:
+    """The sign of a quantity below and above a critical value."""
+
+    critical: Critical
+    below: int
+    above: int
+
+    def sides(self, wanted: Iterable[int]) -> tuple[Side, ...]:
+        """The sides where the sign is one of ``wanted``."""
+        wanted = set(wanted)
+        return tuple(s for s, sign in ((Side.BELOW, self.below), (Side.ABOVE, self.above)) if sign in wanted)
+
+
+def split(f: sp.Expr, model) -> Split | None:
+    """The critical value of one parameter where f changes sign, and its sign on each
+    side; None where no parameter has exactly one positive root of f, or a side's sign
+    cannot be told."""
+    for p in _candidates(f, model):
+        critical = _critical(f, p)
+        if critical is None:
+            continue
+        below, above = (_sign_on(f, critical, side, model) for side in Side)
+        if below is not None and above is not None and below != above:
+            return Split(critical, below, above)
+    return None
+
+
+def on_side(expr: sp.Expr, critical: Critical, side: Side) -> tuple[sp.Expr, sp.Symbol]:
+    """expr with p = p_c (1 + δ) or p_c/(1 + δ), and δ (positive)."""
+    delta = sp.Dummy("delta", positive=True)
+    factor = (1 + delta) if side is Side.ABOVE else 1 / (1 + delta)
+    return expr.xreplace({critical.parameter: critical.value * factor}), delta
+
+
+def _candidates(f: sp.Expr, model) -> list[sp.Symbol]:
+    """The parameters in f, rates first, then in the file's order."""
+    order = [model.symbols.parameters[p.name] for p in model.problem.parameters]
+    held = [p for p in order if p in f.free_symbols and p.is_positive]
+    described = {model.symbols.parameters[p.name]: f"{p.name} {p.description}".lower()
+                 for p in model.problem.parameters}
+    return sorted(held, key=lambda p: (not any(w in described[p] for w in RATE_WORDS),
+                                       not any(w in described[p] for w in STIFFNESS_WORDS)))
+
+
+def _critical(f: sp.Expr, p: sp.Symbol) -> Critical | None:
+    """The one positive root of f in p (the others positive), if there is exactly one."""
+    try:
+        roots = sp.solve(sp.numer(sp.together(f)), p)
+    except (NotImplementedError, ValueError):
+        return None
+    positive = []
+    for r in roots:
+        r = tidy(r)
+        if r.is_positive or (r.is_real is not False and _positive_at_samples(r)):
+            if not any(sp.simplify(r - x) == 0 for x in positive):
+                positive.append(r)
+    if len(positive) != 1:
+        return None
+    return Critical(p, _one_root(positive[0]))
+
+
+def _one_root(value: sp.Expr) -> sp.Expr:
+    """√g/√R as √(g/R), the form an exam writes (kept unevaluated: sympy would split
+    the root of a quotient of positive symbols again)."""
+    square = sp.factor(value**2)
+    if value.has(sp.Pow) and not square.has(sp.sqrt) and not square.is_Pow:
+        return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
+    return value
+
+
+def _positive_at_samples(r: sp.Expr) -> bool:
+    rng = random.Random(19)
+    for _ in range(SAMPLES):
+        z = complex(sp.N(r.xreplace({s: sp.Rational(rng.randint(200, 5000), 1000) for s in r.free_symbols}), 20))
+        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real <= 0:
+            return False
+    return True
+
+
+def _sign_on(f: sp.Expr, critical: Critical, side: Side, model) -> int | None:
+    """f's sign on one side: exactly (δ positive), else by agreeing samples."""
+    value, delta = on_side(f, critical, side)
+    for form in (value, sp.factor(tidy(value))):
+        if form.is_positive:
+            return 1
+        if form.is_negative:
+            return -1
+    rng = random.Random(20)
+    signs = set()
+    for _ in range(SAMPLES):
+        point = {s: sp.Rational(rng.randint(200, 5000), 1000) for s in value.free_symbols if s != delta}
+        point[delta] = sp.Rational(rng.randint(50, 3000), 1000)
+        z = complex(sp.N(value.xreplace(point), 30))
+        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
+            return None
+        signs.add(1 if z.real > 0 else -1)
+    return signs.pop() if len(signs) == 1 else None
