@@ -8,6 +8,8 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.solvers.shared.conditions import CriticalValue
+
 
 class Stability(Enum):
     STABLE = "stable"
@@ -23,10 +25,6 @@ class StabilityCase:
     stability: Stability
 
 
-@dataclass(frozen=True)
-class CriticalValue:
-    parameter: str
-    value: sp.Expr
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.equilibria.answers import CriticalValue, Equilibrium, Stability, StabilityCase
+from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.shared.conditions import Critical, Side, on_side, split
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
@@ -63,15 +63,6 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
         return replace(found, stability_cases=cases), (*criticals, s.critical)
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
                     reason=f"the Hessian of V changes sign at {p} = {p}_c"), (*criticals, s.critical))
-
-
-def critical_values(criticals) -> tuple[CriticalValue, ...]:
-    """Each critical value once, in the order found."""
-    out: list[CriticalValue] = []
-    for c in criticals:
-        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
-            out.append(CriticalValue(str(c.parameter), c.value))
-    return tuple(out)
 
 
 def _same(a: Critical, b: Critical) -> bool:

@@ -31,7 +31,8 @@ from rbdsolve.model.energy import hessian, memoized, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
-from rbdsolve.solvers.equilibria.cases import critical_values, with_cases
+from rbdsolve.solvers.equilibria.cases import with_cases
+from rbdsolve.solvers.shared.conditions import critical_values
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options

@@ -56,12 +56,11 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
     return tuple(steps) + singular_steps(answers.singular_points, model)
 
 
-def critical_steps(critical) -> list[st.Step]:
+def critical_steps(critical, where: str = "where an equilibrium appears or its stability changes") -> list[st.Step]:
     """The critical values by name: Ω_c = √(g/R)."""
     if not critical:
         return []
-    return [st.result("Critical value" + ("s" if len(critical) > 1 else "") + ", where an equilibrium appears "
-                      "or its stability changes:",
+    return [st.result("Critical value" + ("s" if len(critical) > 1 else "") + f", {where}:",
                       *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in critical])]
 
 

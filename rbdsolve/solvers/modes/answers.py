@@ -8,11 +8,20 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.solvers.shared.conditions import CriticalValue
+
 
 class Motion(Enum):
     OSCILLATION = "oscillation"
     GROWTH = "growth"
     NEUTRAL = "neutral"
+    DEPENDS = "depends"  # on the parameters: see cases
+
+
+@dataclass(frozen=True)
+class MotionCase:
+    when: sp.Basic  # a condition on the parameters
+    kind: Motion
 
 
 @dataclass(frozen=True)
@@ -28,6 +37,8 @@ class ModesAnswers:
     growth_rates: tuple[sp.Expr | None, ...] = ()  # γ = √(−λ) where λ < 0
     multiplicities: tuple[int, ...] = ()  # of each λ as a root of det(K − λM)
     amplitude_check: object = None  # solvers/modes/amplitude.py, with 'check_amplitudes'
+    cases: tuple[tuple[MotionCase, ...], ...] = ()  # per λ: its kind case by case (empty: decided)
+    critical: tuple[CriticalValue, ...] = ()  # where a λ changes sign
 
 
 @dataclass(frozen=True)

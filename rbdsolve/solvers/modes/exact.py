@@ -38,8 +38,9 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.amplitude import with_check
-from rbdsolve.solvers.modes.answers import ModesAnswers, Motion
+from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, MotionCase
 from rbdsolve.solvers.modes.steps import descending, exact_steps
+from rbdsolve.solvers.shared.conditions import Side, critical_values, split
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
@@ -64,13 +65,15 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError(singular)
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [lam for lam, _, _ in spectrum.pairs]
-    motions = _motions(eigenvalues, K, model)
-    frequencies = tuple(tidy(sp.sqrt(lam)) if mo is Motion.OSCILLATION else None
+    motions, cases, criticals = _motions(eigenvalues, K, model)
+    frequencies = tuple(tidy(sp.sqrt(lam)) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(spectrum, model.values)
-    rates = tuple(tidy(sp.sqrt(-lam)) if mo is Motion.GROWTH else None for lam, mo in zip(eigenvalues, motions))
+    rates = tuple(tidy(sp.sqrt(-lam)) if mo in (Motion.GROWTH, Motion.DEPENDS) else None
+                  for lam, mo in zip(eigenvalues, motions))
     answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
-                           rates, tuple(eigenvalues.count(lam) for lam in eigenvalues))
+                           rates, tuple(eigenvalues.count(lam) for lam in eigenvalues), None,
+                           cases if any(cases) else (), critical_values(criticals))
     return with_check(question, model, Solution("modes", Route.EXACT, answers, exact_steps(answers, model, spectrum.steps),
                                                 warnings=notes))
 
@@ -180,23 +183,45 @@ def _ascending(pairs: list[tuple], model: Model) -> list:
     return sorted(pairs, key=key)
 
 
-def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model) -> tuple[Motion, ...]:
-    """Oscillation, growth or neutral for each λ. When a λ's sign is not decided by
-    itself, Sylvester's law of inertia decides it: with M positive definite, K a = λ M a
-    has as many positive, zero and negative λ as K has eigenvalues of each sign, so a
-    positive definite K (a stable equilibrium) makes every λ positive."""
+def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
+    """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
+    parameters decide (its critical value: ``shared/conditions.py``). When a λ's sign
+    is not decided by itself, Sylvester's law of inertia decides it: with M positive
+    definite, K a = λ M a has as many positive, zero and negative λ as K has
+    eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
+    every λ positive."""
     counts = matrix_inertia(K, model.values)
-    out = []
+    motions, cases, criticals = [], [], []
     for lam in eigenvalues:
         sign = sign_of(lam, model.values)
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
         if isinstance(sign, Undecided):
-            raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the "
-                                "parameters; give values to decide")
-        out.append({1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}[sign])
-    return tuple(out)
+            found = _cases(lam, model)
+            if found is None:
+                raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters in a "
+                                    f"way rbdsolve cannot split into cases; give values for "
+                                    f"{', '.join(sorted(str(s) for s in lam.free_symbols))} to decide")
+            motions.append(Motion.DEPENDS)
+            cases.append(found[0])
+            criticals.append(found[1])
+            continue
+        motions.append(KIND[sign])
+        cases.append(())
+    return tuple(motions), tuple(cases), criticals
+
+
+KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
+
+
+def _cases(lam: sp.Expr, model: Model):
+    """(cases, critical) for a λ whose sign changes at a critical value, else None."""
+    s = split(lam, model)
+    if s is None:
+        return None
+    signs = {Side.BELOW: s.below, Side.ABOVE: s.above}
+    return tuple(MotionCase(s.critical.when(side), KIND[signs[side]]) for side in Side), s.critical
 
 
 def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:

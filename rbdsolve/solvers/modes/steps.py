@@ -12,7 +12,9 @@ from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
 from rbdsolve.form.display import Product, Relation, Terms
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.equilibria.steps import critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
 
 
@@ -62,13 +64,28 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
         elif motion is Motion.GROWTH:
             rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
             text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
+        elif motion is Motion.DEPENDS:
+            rel = [_case(c, i, lam) for c in a.cases[i - 1]]
+            text = f"Mode {i}: the sign of λ depends on the parameters, case by case:"
         else:
             rel = []
             text = f"Mode {i}: λ = 0, neutral (no restoring force along this mode):"
         if vector is not None:
             rel.append(Relation(sp.Symbol(f"a_{i}"), vector))
         steps.append(st.result(text, *rel))
+    steps += critical_steps(a.critical, "where a mode changes from oscillation to growth")
     return tuple(steps)
+
+
+def _case(case, i: int, lam: sp.Expr) -> Relation:
+    """oscillation when Ω < Ω_c: ω₁ = √λ; growth when Ω > Ω_c: γ₁ = √(−λ)."""
+    p = case.when.lhs
+    when = f"{case.kind.value} when {to_unicode(p)} {case.when.rel_op} {to_unicode(sp.Symbol(f'{p.name}_c'))}"
+    if case.kind is Motion.OSCILLATION:
+        return Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)), lead=f"{when}:")
+    if case.kind is Motion.GROWTH:
+        return Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)), lead=f"{when}:")
+    return Relation(sp.Symbol(f"lambda_{i}"), sp.Integer(0), lead=f"{when}:")
 
 
 EPS = 2.0**-52  # binary64's machine epsilon, in which the numeric route works

@@ -58,6 +58,23 @@ class Critical:
 
 
 @dataclass(frozen=True)
+class CriticalValue:
+    """A critical value as answers give it (docs/json.md, ``critical``)."""
+
+    parameter: str
+    value: sp.Expr
+
+
+def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
+    """Each critical value once, in the order found."""
+    out: list[CriticalValue] = []
+    for c in criticals:
+        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
+            out.append(CriticalValue(str(c.parameter), c.value))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
 class Split:
     """The sign of a quantity below and above a critical value."""
 
