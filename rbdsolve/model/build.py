@@ -14,6 +14,8 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError
+from rbdsolve.model.assumptions import assumed, decided_by, substitutions
+from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
@@ -85,6 +87,18 @@ class Model:
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
     triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
+    assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:'
+
+    @property
+    def decided_by(self) -> dict:
+        """What sign decisions may use: the values, and the assumptions' substitutions
+        (R = r + δ under R > r) for the parameters without one (model/assumptions.py)."""
+        return decided_by(self.assumed, self.values)
+
+    @property
+    def assumed(self) -> dict:
+        """The assumptions' substitutions alone (signs that hold for every value allowed)."""
+        return substitutions(self.assumptions, self.symbols) if self.assumptions else {}
 
     @property
     def instant(self) -> bool:
@@ -140,6 +154,7 @@ class Model:
         for name, value in values.items():
             table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
         check_values(self.problem, self.symbols, table)
+        check_assumptions(self.assumptions, table, self.symbols)
         return replace(self, values=table)
 
 
@@ -166,7 +181,8 @@ def build_model(problem: Problem) -> Model:
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
     check_values(problem, names, values)
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
-                  triads=triads)
+                  triads=triads, assumptions=assumed(problem, names))
+    check_assumptions(model.assumptions, values, names)
     periodic = _periodic_coordinates(model)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q)
                        if c.kind is CoordinateKind.ANGLE or (c.kind is CoordinateKind.AUTO and qi in periodic))

@@ -6,11 +6,13 @@ Every error names file:line:column, the key path, what was expected and what was
 from __future__ import annotations
 
 from fractions import Fraction
+import re
 from pathlib import Path
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import (
+    Assumption,
     Body,
     Coordinate,
     CoordinateKind,
@@ -33,7 +35,7 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
-            "bodies", "springs", "gravity", "values", "questions")  # fmt: skip
+            "bodies", "springs", "gravity", "values", "assumptions", "questions")  # fmt: skip
 
 
 def load_file(path: str | Path) -> Problem:
@@ -116,7 +118,35 @@ class _Loader:
             unknowns=unknowns,
             triads=triads,
             ranges=ranges,
+            assumptions=self.assumptions(get("assumptions")),
         )
+
+    def assumptions(self, node: Node | None) -> tuple[Assumption, ...]:
+        """A list of inequalities between constant expressions: [R > r, a < 2*R]."""
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ()
+        if not isinstance(node, Seq):
+            raise InputError(f"'assumptions' takes a list of inequalities such as [R > r], found {describe(node)}",
+                             node.loc)
+        return tuple(self.assumption(item) for item in node.items)
+
+    def assumption(self, node: Node) -> Assumption:
+        scalar = expect_scalar(node, "an inequality such as R > r")
+        text = scalar.text
+        found = [(m.start(), m.group()) for m in re.finditer(r"<=|>=|<|>", text)]
+        if len(found) != 1:
+            raise InputError(f"an assumption is one inequality between parameter expressions, such as 'R > r' "
+                             f"or 'a <= 2*R'; found {'no' if not found else len(found)} comparison"
+                             f"{'s' if len(found) > 1 else ''} in '{text[:60]}'", scalar.loc)
+        (at, op), = found
+        scope = self.reading.scope.constants("an assumption is between constants (parameters and numbers only)")
+        left = ex.parse(text[:at], scalar.loc, scope, scalar.plain)
+        right = ex.parse(text[at + len(op):], scalar.loc.shifted(at + len(op)) if scalar.plain else scalar.loc,
+                         scope, scalar.plain)
+        for side in (left, right):
+            if side.kind is not ex.Kind.SCALAR:
+                raise InputError(f"an assumption compares scalars; '{side.text}' is a {side.kind.value}", scalar.loc)
+        return Assumption(left, op, right, text.strip(), scalar.loc)
 
     def gravity(self, node: Node | None) -> ex.Expr | None:
         if node is None or (isinstance(node, Scalar) and node.null):

@@ -340,6 +340,17 @@ class ValueRange:
 
 
 @dataclass(frozen=True)
+class Assumption:
+    """``lhs op rhs`` between constant expressions, op one of < ≤ > ≥ (assumptions:)."""
+
+    lhs: Expr
+    op: str  # "<", "<=", ">" or ">="
+    rhs: Expr
+    text: str
+    loc: Location
+
+
+@dataclass(frozen=True)
 class Problem:
     file: str
     title: str
@@ -358,6 +369,7 @@ class Problem:
     unknowns: tuple[str, ...] = ()  # constant unknowns, such as a steady spin rate
     triads: tuple[Triad, ...] = ()
     ranges: tuple[ValueRange, ...] = ()  # parameters drawn per variant; symbolic otherwise
+    assumptions: tuple[Assumption, ...] = ()  # inequalities between parameters (R > r)
 
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)

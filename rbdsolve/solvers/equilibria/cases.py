@@ -32,7 +32,7 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
     stability itself is decided by them, and the cases say where that holds."""
     criticals: list[Critical] = []
     exists, sides = sp.true, set(Side)
-    for condition in (c for c in needed if not isinstance(sign_of(tidy(c), {}), int)):
+    for condition in (c for c in needed if not isinstance(sign_of(tidy(c), model.assumed), int)):
         s = split(tidy(condition), model)
         if s is None:
             return found, ()
@@ -43,7 +43,7 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
         sides &= set(held)
         exists = sp.And(exists, s.critical.when(held[0], closed=True)) if len(held) == 1 else exists
     found = replace(found, exists_when=exists)
-    inertia = matrix_inertia(found.hessian, {})
+    inertia = matrix_inertia(found.hessian, model.assumed)
     if not isinstance(inertia, Undecided):
         return found, tuple(criticals)
     s = split(inertia.expr, model)
@@ -53,16 +53,16 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
                   for side in Side if side in sides)
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
-    p = s.critical.parameter
+    p, named = s.critical.parameter, s.critical.name
     if len(cases) == 1:
-        where = f"{p} > {p}_c" if cases[0].when.rel_op == ">" else f"{p} < {p}_c"
+        where = f"{p} {cases[0].when.rel_op} {named}"
         reason = found.reason if decided else f"the Hessian of V keeps one sign where it exists ({where})"
         return replace(found, stability=found.stability if decided else cases[0].stability,
                        reason=reason), (*criticals, s.critical)
     if decided:  # the values decide; the cases say where that holds
         return replace(found, stability_cases=cases), (*criticals, s.critical)
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
-                    reason=f"the Hessian of V changes sign at {p} = {p}_c"), (*criticals, s.critical))
+                    reason=f"the Hessian of V changes sign at {p} = {named}"), (*criticals, s.critical))
 
 
 def _same(a: Critical, b: Critical) -> bool:

@@ -143,7 +143,7 @@ def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
     else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
     conditions = []
     for condition in needed_conditions(at):
-        sign = sign_of(tidy(condition), model.values)
+        sign = sign_of(tidy(condition), model.decided_by)
         if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
             return None  # not real for these parameter values
         if isinstance(sign, Undecided):
@@ -210,7 +210,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
-    inertia = matrix_inertia(H, model.values)
+    inertia = matrix_inertia(H, model.decided_by)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            f"the sign of {sp.sstr(inertia.expr)} depends on the parameters")
@@ -306,7 +306,7 @@ def _classify_singular(model: Model, at: dict) -> Equilibrium:
         return found
     B = sp.Matrix.hstack(*sp.Matrix.hstack(*kernel).T.nullspace())
     reduced = (B.T * found.hessian * B).applyfunc(tidy)
-    inertia = matrix_inertia(sp.ImmutableMatrix(reduced), model.values)
+    inertia = matrix_inertia(sp.ImmutableMatrix(reduced), model.decided_by)
     how = "at a singular point of the coordinates, the Hessian across the directions that move the scene"
     if isinstance(inertia, Undecided):
         return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} has a sign that depends on the "

@@ -58,10 +58,11 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
 
 def critical_steps(critical, where: str = "where an equilibrium appears or its stability changes") -> list[st.Step]:
     """The critical values by name: Ω_c = √(g/R)."""
-    if not critical:
+    named = [c for c in critical if not isinstance(c.value, sp.Symbol)]  # r < R needs no name
+    if not named:
         return []
-    return [st.result("Critical value" + ("s" if len(critical) > 1 else "") + f", {where}:",
-                      *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in critical])]
+    return [st.result("Critical value" + ("s" if len(named) > 1 else "") + f", {where}:",
+                      *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in named])]
 
 
 def _condition(condition, named: dict, lead: str = "") -> Relation:
@@ -69,7 +70,8 @@ def _condition(condition, named: dict, lead: str = "") -> Relation:
     ops = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
     lhs, rhs = condition.lhs, condition.rhs
     for c in named.values():
-        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
+        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0 \
+                and not isinstance(c.value, sp.Symbol):
             rhs = sp.Symbol(f"{c.parameter}_c")
     return Relation(lhs, rhs, ops.get(type(condition), "?"), lead=lead)
 

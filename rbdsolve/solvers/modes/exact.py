@@ -190,10 +190,10 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
     definite, K a = λ M a has as many positive, zero and negative λ as K has
     eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
     every λ positive."""
-    counts = matrix_inertia(K, model.values)
+    counts = matrix_inertia(K, model.decided_by)
     motions, cases, criticals = [], [], []
     for lam in eigenvalues:
-        sign = sign_of(lam, model.values)
+        sign = sign_of(lam, model.decided_by)
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign

@@ -79,8 +79,9 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
 
 def _case(case, i: int, lam: sp.Expr) -> Relation:
     """oscillation when Ω < Ω_c: ω₁ = √λ; growth when Ω > Ω_c: γ₁ = √(−λ)."""
-    p = case.when.lhs
-    when = f"{case.kind.value} when {to_unicode(p)} {case.when.rel_op} {to_unicode(sp.Symbol(f'{p.name}_c'))}"
+    p, value = case.when.lhs, case.when.rhs
+    named = value if isinstance(value, sp.Symbol) else sp.Symbol(f"{p.name}_c")
+    when = f"{case.kind.value} when {to_unicode(p)} {case.when.rel_op} {to_unicode(named)}"
     if case.kind is Motion.OSCILLATION:
         return Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)), lead=f"{when}:")
     if case.kind is Motion.GROWTH:

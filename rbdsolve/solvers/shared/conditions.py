@@ -47,6 +47,9 @@ class Critical:
 
     @property
     def name(self) -> sp.Symbol:
+        """Ω_c; or, where the critical value is another parameter (R > r), that one."""
+        if isinstance(self.value, sp.Symbol):
+            return self.value
         return sp.Symbol(f"{self.parameter.name}_c", positive=True)
 
     def when(self, side: Side, closed: bool = False) -> sp.Boolean:
@@ -93,7 +96,7 @@ def split(f: sp.Expr, model) -> Split | None:
     side; None where no parameter has exactly one positive root of f, or a side's sign
     cannot be told."""
     for p in _candidates(f, model):
-        critical = _critical(f, p)
+        critical = _critical(f, p, model)
         if critical is None:
             continue
         below, above = (_sign_on(f, critical, side, model) for side in Side)
@@ -119,16 +122,17 @@ def _candidates(f: sp.Expr, model) -> list[sp.Symbol]:
                                        not any(w in described[p] for w in STIFFNESS_WORDS)))
 
 
-def _critical(f: sp.Expr, p: sp.Symbol) -> Critical | None:
+def _critical(f: sp.Expr, p: sp.Symbol, model) -> Critical | None:
     """The one positive root of f in p (the others positive), if there is exactly one."""
-    try:
-        roots = sp.solve(sp.numer(sp.together(f)), p)
+    numerator, denominator = sp.fraction(sp.together(f))
+    try:  # f changes sign where its numerator or its denominator does (2g/(3(R − r)) at R = r)
+        roots = sp.solve(numerator * denominator, p)
     except (NotImplementedError, ValueError):
         return None
     positive = []
     for r in roots:
         r = tidy(r)
-        if r.is_positive or (r.is_real is not False and _positive_at_samples(r)):
+        if r.is_positive or (r.is_real is not False and _positive_at_samples(r, model)):
             if not any(sp.simplify(r - x) == 0 for x in positive):
                 positive.append(r)
     if len(positive) != 1:
@@ -145,13 +149,26 @@ def _one_root(value: sp.Expr) -> sp.Expr:
     return value
 
 
-def _positive_at_samples(r: sp.Expr) -> bool:
+def _positive_at_samples(r: sp.Expr, model) -> bool:
     rng = random.Random(19)
     for _ in range(SAMPLES):
-        z = complex(sp.N(r.xreplace({s: sp.Rational(rng.randint(200, 5000), 1000) for s in r.free_symbols}), 20))
+        point = _sample(model, rng)
+        if point is None:
+            return False
+        z = complex(sp.N(r.xreplace(point), 20))
         if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real <= 0:
             return False
     return True
+
+
+def _sample(model, rng: random.Random, leave: tuple = ()) -> dict | None:
+    """Random parameter values that satisfy the problem's assumptions (the parameter
+    of the split left out: it is set by the side), or None if none is found."""
+    from rbdsolve.model.assumptions import admissible_sample
+
+    symbols = [s for s in model.symbols.parameters.values() if s not in leave]
+    kept = [a for a in model.assumptions if not a.difference.free_symbols & set(leave)]
+    return admissible_sample(kept, model.symbols, rng, symbols=symbols, tries=200)
 
 
 def _sign_on(f: sp.Expr, critical: Critical, side: Side, model) -> int | None:
@@ -165,8 +182,10 @@ def _sign_on(f: sp.Expr, critical: Critical, side: Side, model) -> int | None:
     rng = random.Random(20)
     signs = set()
     for _ in range(SAMPLES):
-        point = {s: sp.Rational(rng.randint(200, 5000), 1000) for s in value.free_symbols if s != delta}
-        point[delta] = sp.Rational(rng.randint(50, 3000), 1000)
+        drawn = _sample(model, rng, (critical.parameter,))
+        if drawn is None:
+            return None
+        point = {**drawn, delta: sp.Rational(rng.randint(50, 3000), 1000)}
         z = complex(sp.N(value.xreplace(point), 30))
         if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
             return None

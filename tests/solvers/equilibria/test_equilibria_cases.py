@@ -79,3 +79,47 @@ def test_with_values_the_case_is_decided(values) -> None:
     report = solve_problem(build_model(load_text(HOOP + "\n" + values + "\n", "hoop.yaml")))
     (solution,) = [s for s in report.solutions if s.question == "equilibria"]
     assert all(eq.stability.value != "depends" for eq in solution.answers.equilibria)
+
+
+# A cylinder (m, r) rolling inside a fixed hollow cylinder (R): G on a circle of radius
+# R − r, V = −m g (R − r) cos θ; rolling, it turns by −(R − r) θ/r, so
+# T = ½ m (R − r)² θ̇² + ½ (m r²/2) ((R − r) θ̇/r)² = ¾ m (R − r)² θ̇².
+# θ = 0: V'' = m g (R − r): stable iff R > r; ω² = m g (R − r)/(3/2 m (R − r)²) = 2g/(3(R − r)).
+CYLINDER = """\
+parameters: {m: mass, r: radius of the cylinder, R: radius of the hollow, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: (R - r)*[sin(theta), -cos(theta)]
+bodies:
+  cylinder: {shape: disk, mass: m, radius: r, at: G, angle: -(R - r)*theta/r}
+questions:
+  - equilibria
+  - modes: {about: {theta: 0}}
+"""
+
+
+def test_without_the_assumption_the_condition_is_r_below_R() -> None:
+    report = solve_problem(build_model(load_text(CYLINDER, "cylinder.yaml")))
+    bottom = report.solutions[0].answers.equilibria[0]
+    assert str(bottom.at["theta"]) == "0" and bottom.stability.value == "depends"
+    stable = [c for c in bottom.stability_cases if c.stability.value == "stable"]
+    R, r = sp.symbols("R r", positive=True)
+    (case,) = stable
+    assert sp.simplify(_names_in(case.when, R, r)) in (sp.Lt(r, R), sp.Gt(R, r))
+
+
+def _names_in(when, R, r):
+    return sp.parse_expr(str(when), local_dict={"R": R, "r": r})
+
+
+def test_with_the_assumption_it_is_stable_and_the_frequency_is_real() -> None:
+    report = solve_problem(build_model(load_text(CYLINDER + "assumptions: [R > r]\n", "cylinder.yaml")))
+    equilibria, modes = report.solutions
+    assert equilibria.answers.equilibria[0].stability.value == "stable"
+    assert modes.solved and modes.answers.motions[0].value == "oscillation"
+    R, r, g = sp.symbols("R r g", positive=True)
+    (w,) = modes.answers.frequencies
+    w = sp.parse_expr(str(w), local_dict={"R": R, "r": r, "g": g})
+    for values in ({R: 2, r: 1, g: 9.81}, {R: 5, r: sp.Rational(1, 3), g: 1}):
+        assert float(w.subs(values)) == pytest.approx(math.sqrt(2 * float(values[g]) / (3 * float(values[R] - values[r]))))

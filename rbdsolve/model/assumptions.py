@@ -1,0 +1,113 @@
+"""The problem's ``assumptions:`` as sympy: checked against the values and against each
+other, and turned into substitutions that let sympy decide signs under them.
+
+An assumption L > R (or L ≥ R) that is linear in some parameter p with a coefficient
+of known sign on the larger side (a positive coefficient) is solved for p, p = p₀ + δ with δ a new
+positive symbol: R > r becomes
+R = r + δ, and any sign that holds for every δ > 0 holds under the assumption
+(``decided_by``). One substitution per parameter, in the file's order; an assumption
+that is not linear in a free parameter is still checked, and used by the sampling in
+``solvers/shared/conditions.py``, but decides no sign exactly.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.symbols import Symbols
+from rbdsolve.problem.schema import Assumption, Problem
+
+SAMPLES = 4000  # random points tried before assumptions are called contradictory
+
+OPS = {"<": sp.StrictLessThan, "<=": sp.LessThan, ">": sp.StrictGreaterThan, ">=": sp.GreaterThan}
+
+
+@dataclass(frozen=True)
+class Assumed:
+    """An assumption as ``difference`` > 0 (≥ 0 when not ``strict``), with its source."""
+
+    difference: sp.Expr
+    strict: bool
+    source: Assumption
+
+    @property
+    def relation(self) -> sp.Basic:
+        return sp.StrictGreaterThan(self.difference, 0) if self.strict else sp.GreaterThan(self.difference, 0)
+
+
+def assumed(problem: Problem, names: Symbols) -> tuple[Assumed, ...]:
+    out = []
+    for a in problem.assumptions:
+        left, right = names.scalar(a.lhs), names.scalar(a.rhs)
+        difference = left - right if a.op in (">", ">=") else right - left
+        out.append(Assumed(sp.expand(difference), a.op in ("<", ">"), a))
+    return tuple(out)
+
+
+def check(assumptions: tuple[Assumed, ...], values: Mapping[sp.Symbol, sp.Expr], names: Symbols) -> None:
+    """Values that break an assumption, and assumptions that cannot hold together (with
+    the parameters' declared signs), are bad input, located at the assumption."""
+    for a in assumptions:
+        number = a.difference.xreplace(dict(values))
+        if number.is_number and not _holds(number, a.strict):
+            given = ", ".join(f"{k} = {v}" for k, v in values.items() if k in a.difference.free_symbols)
+            raise InputError(f"the values given ({given}) break the assumption '{a.source.text}'", a.source.loc)
+    if assumptions and admissible_sample(assumptions, names, random.Random(1), values) is None:
+        raise InputError("the assumptions cannot all hold (with the parameters' signs): no values satisfy "
+                         f"{', '.join(repr(a.source.text) for a in assumptions)}", assumptions[0].source.loc)
+
+
+def admissible_sample(assumptions, names: Symbols, rng: random.Random, fixed: Mapping = (),
+                      symbols=None, tries: int = SAMPLES) -> dict | None:
+    """Random values for the parameters (positive where declared so, within 1/20 to 20
+    times 1, in a log-uniform draw) satisfying every assumption; None after ``tries``."""
+    fixed = dict(fixed)
+    symbols = [s for s in (symbols or names.parameters.values()) if s not in fixed]
+    for _ in range(tries):
+        point = {s: _draw(s, rng) for s in symbols} | fixed
+        if all(_holds(a.difference.xreplace(point), a.strict) for a in assumptions):
+            return point
+    return None
+
+
+def _draw(s: sp.Symbol, rng: random.Random) -> sp.Expr:
+    size = sp.Rational(round(20 ** rng.uniform(-1, 1) * 1000), 1000)
+    return size if s.is_positive or rng.random() < 0.5 else -size
+
+
+def _holds(number: sp.Expr, strict: bool) -> bool:
+    value = complex(sp.N(number, 30))
+    if abs(value.imag) > 1e-12 * max(1.0, abs(value.real)):
+        return False
+    return value.real > 0 if strict else value.real >= 0
+
+
+def substitutions(assumptions: tuple[Assumed, ...], names: Symbols) -> dict[sp.Symbol, sp.Expr]:
+    """{p: p₀ + δ} from the assumptions that are linear in a parameter (see the module)."""
+    out: dict[sp.Symbol, sp.Expr] = {}
+    order = list(names.parameters.values())
+    for k, a in enumerate(assumptions):
+        difference = a.difference.xreplace(out)
+        for p in sorted(difference.free_symbols & set(order), key=order.index):
+            coefficient = sp.diff(difference, p)
+            if p in out or coefficient.has(p) or coefficient == 0:
+                continue
+            if not coefficient.is_positive:  # solve for the larger side: R > r gives R = r + δ
+                continue
+            delta = sp.Dummy(f"delta{k}", positive=True) if a.strict else sp.Dummy(f"delta{k}", nonnegative=True)
+            rest = difference - coefficient * p
+            out = {q: v.xreplace({p: (delta - rest) / coefficient}) for q, v in out.items()}
+            out[p] = (delta - rest) / coefficient
+            break
+    return out
+
+
+def decided_by(substituted: Mapping[sp.Symbol, sp.Expr], values: Mapping[sp.Symbol, sp.Expr]) -> dict:
+    """One mapping for sign decisions: the values, and the assumptions' substitutions for
+    the parameters without a value (with the values put in them)."""
+    return {**{p: v.xreplace(dict(values)) for p, v in substituted.items() if p not in values}, **values}
