@@ -165,8 +165,16 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
 
 
 def internal_message(exc: BaseException) -> str:
-    return (f"rbdsolve: internal error: {type(exc).__name__}: {exc} "
-            "(run with --debug for the traceback)")
+    return f"rbdsolve: internal error: {describe(exc)} (run with --debug for the traceback)"
+
+
+def describe(exc: BaseException) -> str:
+    """The exception's class and text; the class alone when its text cannot be made
+    (a sympy relational asked for its truth value fails even to say why)."""
+    try:
+        return f"{type(exc).__name__}: {exc}"
+    except Exception:  # noqa: BLE001 - the message of a bug must not be a second bug
+        return type(exc).__name__
 
 
 def append_help(command: click.Command, text: str) -> None:

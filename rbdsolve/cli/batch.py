@@ -9,11 +9,12 @@ import pickle
 import time
 import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Callable, Iterable
 
-from rbdsolve.cli.app import Source, check_sets, internal_message
+from rbdsolve.cli.app import Source, check_sets, describe, internal_message
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError
 
 if TYPE_CHECKING:  # the report module imports sympy: not at start-up
@@ -74,9 +75,14 @@ def solve_source(source: Source, settings: Settings) -> Outcome:
     except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others
         if settings.debug:
             traceback.print_exc()
-        failure = Failure(str(exc), None, ExitCode.INTERNAL, f"{source.name}: {internal_message(exc)}")
-        return Outcome(source.name, None, failure, time.perf_counter() - start)
+        return crashed(source.name, exc, time.perf_counter() - start)
     return Outcome(source.name, report, None, time.perf_counter() - start)
+
+
+def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:
+    """The Outcome of a file whose solving hit a bug: exit code 3 for it alone."""
+    failure = Failure(describe(exc), None, ExitCode.INTERNAL, f"{name}: {internal_message(exc)}")
+    return Outcome(name, None, failure, seconds)
 
 
 def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
@@ -91,11 +97,27 @@ def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
 def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
     outcomes: list[Outcome | None] = [None] * len(items)
+    lost: list[int] = []  # files whose worker died (with the pool, every file it still had)
     with ProcessPoolExecutor(max_workers=jobs) as pool:
         futures = {pool.submit(_solve_pickled, s, settings): i for i, s in enumerate(items)}
         for future in as_completed(futures):
-            outcomes[futures[future]] = _advanced(pickle.loads(future.result()), advance)
+            i = futures[future]
+            try:
+                outcomes[i] = _advanced(pickle.loads(future.result()), advance)
+            except BrokenProcessPool:
+                lost.append(i)
+    for i in sorted(lost):  # each alone, so that the one that kills its process is found
+        outcomes[i] = _advanced(_alone(items[i], settings), advance)
     return outcomes
+
+
+def _alone(source: Source, settings: Settings) -> Outcome:
+    start = time.perf_counter()
+    try:
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            return pickle.loads(pool.submit(_solve_pickled, source, settings).result())
+    except Exception as exc:  # noqa: BLE001 - the process died (memory, a signal): this file only
+        return crashed(source.name, exc, time.perf_counter() - start)
 
 
 def _solve_pickled(source: Source, settings: Settings) -> bytes:
@@ -103,17 +125,21 @@ def _solve_pickled(source: Source, settings: Settings) -> bytes:
     sympy rebuilds an expression from its arguments and, by default, evaluates them
     again, which would fold a display form the solver kept on purpose (√(24g/(25r))
     into 2√6 √g/(5√r)). Those three are rebuilt unevaluated; their arguments are
-    already in canonical order, so nothing else changes."""
+    already in canonical order, so nothing else changes. A file's functions of time
+    are rebuilt as such (sympy would rebuild a plain function, without the namespace
+    that keeps a coordinate called Float from being printed as a number)."""
     import copyreg
     import io
 
     import sympy as sp
+    from sympy.core.function import UndefinedFunction
 
     buffer = io.BytesIO()
     pickler = pickle.Pickler(buffer)
     pickler.dispatch_table = copyreg.dispatch_table.copy()
     for kind in (sp.Add, sp.Mul, sp.Pow):
         pickler.dispatch_table[kind] = _reduce_unevaluated
+    pickler.dispatch_table[UndefinedFunction] = _reduce_function
     pickler.dump(solve_source(source, settings))
     return buffer.getvalue()
 
@@ -124,6 +150,20 @@ def _reduce_unevaluated(expr):
 
 def _unevaluated(kind, args):
     return kind(*args, evaluate=False)
+
+
+def _reduce_function(function):
+    from sympy.core.function import _reduce_undef
+
+    if "precedence" not in vars(function):
+        return _reduce_undef(function)
+    return _user_function, (function.name,)
+
+
+def _user_function(name: str):
+    from rbdsolve.model.state import user_function
+
+    return user_function(name)
 
 
 def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:

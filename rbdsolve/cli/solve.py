@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, open_output, parse_sets, run_guarded, \
-    sources, stderr_is_terminal, write_text
+from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, run_guarded, sources, \
+    stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
 
@@ -84,10 +84,14 @@ append_help(solve, SOLVE_EXAMPLES)
 
 def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 1,
            quiet: bool = False) -> ExitCode:
+    from rbdsolve.cli.writing import Look, joined, rendered
+
     items = sources(paths)
-    outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    solved = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
+    outcomes = [p.outcome for p in pieces]
     say_failures(outcomes)
-    _write(fmt, outcomes, output)
+    write_text(joined(fmt, pieces), output)
     if len(outcomes) > 1 and not quiet:
         print_summary(outcomes)
     return worst(outcomes)
@@ -98,42 +102,6 @@ def say_failures(outcomes: list[Outcome]) -> None:
     for outcome in outcomes:
         if outcome.failure is not None:
             click.echo(outcome.failure.line, err=True)
-
-
-def _write(fmt: str, outcomes: list[Outcome], output: str | None) -> None:
-    reports = [o.report for o in outcomes if o.report is not None]
-    if fmt == "json":
-        from rbdsolve.render.json import render_error, render_report
-
-        write_text("".join(render_report(o.report) if o.report is not None else render_error(o.source, o.failure)
-                           for o in outcomes), output)
-    elif fmt == "markdown":
-        from rbdsolve.render.markdown import render
-
-        write_text("\n".join(render(r) for r in reports), output)
-    elif fmt == "latex":
-        if reports:
-            from rbdsolve.render.latex import render_document
-
-            write_text(render_document(reports), output)
-    else:
-        _write_terminal(reports, output)
-
-
-def _write_terminal(reports, output: str | None) -> None:
-    from rich.console import Console
-
-    from rbdsolve.render.terminal import render
-
-    if output:
-        with open_output(output) as handle:
-            console = Console(file=handle, color_system=None, width=100, highlight=False)
-            for report in reports:
-                console.print(render(report))
-        return
-    console = Console(highlight=False)
-    for report in reports:
-        console.print(render(report))
 
 
 def print_summary(outcomes: list[Outcome]) -> None:

@@ -13,7 +13,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError
-from rbdsolve.model.state import State, t
+from rbdsolve.model.state import State, t, user_function
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
@@ -44,7 +44,7 @@ class Symbols:
         params.update({name: sp.Symbol(name, real=True) for name in problem.unknowns})
         state = State.of(tuple(c.name for c in problem.coordinates))
         names = Symbols(params, state, {})
-        prescribed = {p.name: sp.Function(p.name, real=True)(t) if p.value is None else names.scalar(p.value)
+        prescribed = {p.name: user_function(p.name)(t) if p.value is None else names.scalar(p.value)
                       for p in problem.prescribed}
         return Symbols(params, state, {}, prescribed)
 

@@ -125,9 +125,13 @@ def render_key(key: AnswerKey) -> str:
 
 
 def render_document(reports: list[ProblemReport]) -> str:
-    title = reports[0].title if len(reports) == 1 else "Solutions"
-    lines = [PREAMBLE, f"\\title{{{text(title)}}}", "\\date{}", "\\begin{document}"]
-    for report in reports:
-        lines += body(report)
-    lines.append("\\end{document}")
+    return document(reports[0].title if len(reports) == 1 else "Solutions",
+                    ["\n".join(body(report)) for report in reports])
+
+
+def document(title: str, bodies: list[str]) -> str:
+    """One document around problems' bodies, each rendered on its own (so that one
+    problem that cannot be rendered leaves the others whole)."""
+    lines = [PREAMBLE, f"\\title{{{text(title)}}}", "\\date{}", "\\begin{document}", *bodies,
+             "\\end{document}"]
     return "\n".join(lines) + "\n"
