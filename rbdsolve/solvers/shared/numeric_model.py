@@ -88,8 +88,8 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     scene = numeric_scene(model)
     if scene is not None:
         q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
-        K = finite(lambda x: scene.potential(x)[2])(q0)
-        M = finite(scene.mass_matrix)(q0)
+        K = finite(lambda x: scene.potential(x)[2], model)(q0)
+        M = finite(scene.mass_matrix, model)(q0)
         return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
@@ -97,23 +97,36 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
 
 
-def finite(evaluate):
+def finite(evaluate, model: Model):
     """``evaluate`` at a configuration, as a float array, or an UnsolvedError where the
-    scene has no finite value there (a spring of zero length has no direction)."""
+    scene has no finite value there, naming the causes this scene can have."""
 
     def at(x):
         try:
             with np.errstate(all="ignore"):
                 value = np.asarray(evaluate(x), dtype=float)
         except (ArithmeticError, ValueError) as exc:
-            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): a spring of zero "
-                                "length, or a square root or logarithm out of its domain?") from None
+            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): "
+                                f"{_causes(model, 'a square root or logarithm out of its domain')}?") from None
         if not np.all(np.isfinite(value)):
-            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: a spring of zero length, or a "
-                                "division by zero there?")
+            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: {_causes(model, 'a division by zero there')}?")
         return value
 
     return at
+
+
+HUGE = 1e100  # a parameter value this far from 1 (or its inverse) can overflow a float in T or V
+
+
+def _causes(model: Model, otherwise: str) -> str:
+    """What makes T or V infinite in this scene: parameter values past floating point's
+    range first, a spring of zero length only where there is a spring."""
+    extreme = [f"{k} = {float(v):.3g}" for k, v in model.values.items()
+               if v != 0 and not 1 / HUGE < abs(float(v)) < HUGE]
+    causes = [f"an overflow of floating point from the parameter values ({', '.join(extreme)})"] if extreme else []
+    if model.problem.springs:
+        causes.append("a spring of zero length")
+    return ", or ".join(causes + [otherwise])
 
 
 def _shown(x) -> str:
@@ -154,7 +167,7 @@ def _checked_about(question: Question, model: Model) -> dict[str, sp.Expr]:
     """The question's ``about``, refused unless ∂V/∂q vanishes there (relative to H)."""
     about = question.options.about
     at = {name: model.symbols.scalar(e) for name, (_, e) in zip(model.coordinate_names(), about)}
-    point = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in at.values()])
+    point = np.array([_real_at_values(v, name, e, model) for (name, e), v in zip(about, at.values())])
     g, H = compiled_gradient(model)
     residual = np.asarray(g(point), dtype=float)
     scale = max(np.max(np.abs(np.asarray(H(point), dtype=float))), 1e-300)  # |∂V/∂q| per unit of q
@@ -162,6 +175,16 @@ def _checked_about(question: Question, model: Model) -> dict[str, sp.Expr]:
         (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
         raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there")
     return at
+
+
+def _real_at_values(value: sp.Expr, name: str, expr, model: Model) -> float:
+    """A coordinate of ``about`` as a float at the parameter values, refused where it is
+    not a real number there (acos(g/l) with g > l)."""
+    number = complex(sp.N(value.xreplace(dict(model.values)), 20))
+    if number.imag != 0 or not np.isfinite(number.real):
+        raise UnsolvedError(f"{expr.loc}: {name} = {expr.text} is not a real number at the parameter values "
+                            f"({number:.6g}); choose a configuration that exists there")
+    return number.real
 
 
 def continuum_text(free: tuple[tuple[float, ...], ...], names: list[str]) -> str:
@@ -183,13 +206,13 @@ def compiled_gradient(model: Model):
     from the numeric scene where it applies, else compiled from the symbolic V."""
     scene = numeric_scene(model)
     if scene is not None:
-        return finite(lambda x: scene.potential(x)[1]), finite(lambda x: scene.potential(x)[2])
+        return finite(lambda x: scene.potential(x)[1], model), finite(lambda x: scene.potential(x)[2], model)
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
     grad = [sp.diff(V, x) for x in q]
     H = hessian(V, tuple(q))
-    return finite(sp.lambdify([q], grad, "numpy")), finite(sp.lambdify([q], H.tolist(), "numpy"))
+    return finite(sp.lambdify([q], grad, "numpy"), model), finite(sp.lambdify([q], H.tolist(), "numpy"), model)
 
 
 def gradient_scale(model: Model, g) -> float:
@@ -278,7 +301,7 @@ def _slope_and_curvature(model: Model, g, H):
     scene = numeric_scene(model)
     if scene is None:
         return lambda x: (g(np.array([x]))[0], H(np.array([x]))[0][0])
-    both = finite(lambda x: _first_derivatives(scene.potential(x)))
+    both = finite(lambda x: _first_derivatives(scene.potential(x)), model)
     return lambda x: tuple(both(np.array([x])))
 
 
