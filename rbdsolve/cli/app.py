@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import glob
 import inspect
+import os
 import sys
 import traceback
 from dataclasses import dataclass
@@ -122,20 +123,44 @@ def check_sets(values: dict[str, Fraction], problem) -> None:
             raise InputError(f"--set {name}: the parameter is positive, found {value}")
 
 
-def open_output(output: str, mode: str = "w"):
-    try:
-        return open(output, mode, encoding=None if "b" in mode else "utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write {output}: {exc.strerror}") from None
-
-
 def write_text(text: str, output: str | None) -> None:
-    """To ``output``, or to standard output when there is none."""
+    """To ``output`` (whole or not at all: render.files), or to standard output when
+    there is none; a write that fails is one line, exit code 2."""
     if output:
-        with open_output(output) as handle:
-            handle.write(text)
-    else:
+        from rbdsolve.render.files import write_file
+
+        write_file(output, text)
+        return
+    try:
         click.echo(text, nl=False)
+    except OSError as exc:
+        _silence_stdout()
+        raise InputError(f"cannot write to standard output: {exc.strerror or exc}") from None
+
+
+def _silence_stdout() -> None:
+    """Standard output to /dev/null once a write to it failed: what is still buffered
+    would fail again when Python flushes it at exit, with a second message."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no file descriptor (a test's stream)
+        pass
+
+
+def refuse_overwriting_inputs(output: str | None, items: list[Source]) -> None:
+    """``-o`` naming one of the problem files: refused before anything is solved."""
+    if not output:
+        return
+    for item in items:
+        if item.text is None and _same_file(output, item.name):
+            raise InputError(f"-o {output}: this is one of the problem files; choose another output")
+
+
+def _same_file(a: str, b: str) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
 
 
 def stderr_is_terminal() -> bool:
@@ -144,8 +169,65 @@ def stderr_is_terminal() -> bool:
 
 def run_guarded(debug: bool, run: Callable[[], ExitCode]) -> None:
     """Run a command's body and exit with its code: an RbdError is one line and its
-    exit code, anything else a bug (exit code 3, the traceback with --debug)."""
-    sys.exit(int(guard(debug, run)))
+    exit code, anything else a bug (exit code 3, the traceback with --debug). Standard
+    error cannot fail it (closed, or on a full disk): messages are a courtesy there,
+    the exit code is the contract."""
+    stderr = sys.stderr
+    sys.stderr = Unfailing(stderr)
+    try:
+        code = guard(debug, run)
+        code = max(code, _flushed())
+    finally:
+        sys.stderr = stderr
+    sys.exit(int(code))
+
+
+def _flushed() -> ExitCode:
+    """Standard output flushed now, while a failure can still be said and counted."""
+    try:
+        sys.stdout.flush()
+    except OSError as exc:
+        _silence_stdout()
+        click.echo(f"rbdsolve: cannot write to standard output: {exc.strerror or exc}", err=True)
+        return ExitCode.BAD_INPUT
+    except (ValueError, AttributeError):  # closed or absent: nothing was written to it
+        pass
+    return ExitCode.OK
+
+
+class Unfailing:
+    """A text stream whose writes never raise: standard error closed (``2>&-``, then
+    Python's sys.stderr is None) or full (``2>/dev/full``) must not cost the answers."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.encoding = getattr(stream, "encoding", None) or "utf-8"
+        self.errors = getattr(stream, "errors", None) or "strict"
+
+    def write(self, text: str) -> int:
+        if not isinstance(text, str):  # so that click takes this for the text stream it is
+            raise TypeError("a text stream")
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        return len(text)
+
+    def flush(self) -> None:
+        try:
+            self.stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+
+    def isatty(self) -> bool:
+        try:
+            return self.stream.isatty()
+        except (OSError, ValueError, AttributeError):
+            return False
+
+    def writable(self) -> bool:
+        return True
 
 
 def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:

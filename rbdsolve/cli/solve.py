@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, run_guarded, sources, \
-    stderr_is_terminal, write_text
+from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, refuse_overwriting_inputs, \
+    run_guarded, sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
 
@@ -35,8 +35,27 @@ route_option = click.option(
     "--route", type=click.Choice(ROUTES), default="auto", show_default=True,
     help="exact (sympy), numeric (floating point; every parameter needs a value) or auto "
          "(exact, then numeric where exact cannot answer or runs out of its budget).")
+MIN_BUDGET, MAX_BUDGET = 0.001, 1e6  # seconds: a timer's resolution; eleven days, far inside its range
+
+
+class Budget(click.ParamType):
+    """Seconds, finite, from a millisecond to MAX_BUDGET: ``nan``, ``inf`` and ``1e308``
+    are refused here, as usage errors, not deep in the timer."""
+
+    name = "seconds"
+
+    def convert(self, value, param, ctx) -> float:
+        try:
+            seconds = float(value)
+        except (TypeError, ValueError):
+            self.fail(f"expected a number of seconds, found '{value}'", param, ctx)
+        if not MIN_BUDGET <= seconds <= MAX_BUDGET:  # NaN compares false: refused too
+            self.fail(f"expected seconds from {MIN_BUDGET:g} to {MAX_BUDGET:g}, found '{value}'", param, ctx)
+        return seconds
+
+
 budget_option = click.option(
-    "--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+    "--budget", type=Budget(), default=DEFAULT_BUDGET,
     show_default=True, metavar="SECONDS",
     help="Time budget for building each file's model and for each route of each question; "
          "a question past it is left unanswered (exit code 1), or, with --route auto and "
@@ -87,6 +106,7 @@ def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 
     from rbdsolve.cli.writing import Look, joined, rendered
 
     items = sources(paths)
+    refuse_overwriting_inputs(output, items)
     solved = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
     pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
     outcomes = [p.outcome for p in pieces]

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.app import Source, append_help, debug_option, main, refuse_overwriting_inputs, run_guarded, \
+    write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
@@ -86,6 +87,7 @@ def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | N
 
     kind = output_format(output, fmt)
     source = Source("<stdin>", sys.stdin.read()) if path == "-" else Source(path)
+    refuse_overwriting_inputs(output, [source])
     table = make(source.load(), count, seed, Options(route=RouteChoice(route), budget=budget), verify)
     for line in (*table.notes, *(f"warning: {w}" for w in table.warnings)):
         click.echo(f"{table.file}: {line}", err=True)

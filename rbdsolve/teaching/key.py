@@ -14,7 +14,6 @@ solution.
 from __future__ import annotations
 
 import re
-import shutil
 import tempfile
 from dataclasses import dataclass
 from fractions import Fraction
@@ -25,6 +24,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.problem.schema import Problem
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
+from rbdsolve.render.files import write_file
 
 KINDS = (".pdf", ".tex", ".md", ".html")
 
@@ -97,14 +97,11 @@ def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) ->
             return
         from rbdsolve.render.pdf import compile_pdf
 
-        shutil.copyfile(compile_pdf(tex, scratch), output)
+        write_file(output, compile_pdf(tex, scratch).read_bytes())
 
 
 def _write_text(text: str, output: Path) -> None:
-    try:
-        output.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write {output}: {exc.strerror}") from None
+    write_file(output, text)
 
 
 def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
