@@ -17,7 +17,7 @@ from typing import Callable
 import click
 
 from rbdsolve import __version__
-from rbdsolve.errors import ExitCode, InputError, RbdError
+from rbdsolve.errors import ExitCode, InputError, RbdError, printable
 
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
 STDIN = "-"
@@ -85,10 +85,22 @@ def sources(paths: tuple[str, ...]) -> list[Source]:
     out: list[Source] = []
     for raw in paths:
         if raw == STDIN:
-            out.append(Source("<stdin>", sys.stdin.read()))
+            out.append(Source(STDIN_NAME, read_stdin()))
         else:
             out += [Source(str(p)) for p in expand_paths((raw,))]
     return out
+
+
+STDIN_NAME = "<stdin>"
+
+
+def read_stdin() -> str:
+    """Standard input as a problem's text, under the limits of a file: no more than
+    one byte past the size limit is read, and a pipe that sends no end of file within
+    the read deadline is refused rather than waited for."""
+    from rbdsolve.problem.yamlnodes import read_stream, read_text
+
+    return read_text(STDIN_NAME, read_stream(sys.stdin.buffer, STDIN_NAME))
 
 
 def _is_problem(path: Path) -> bool:
@@ -254,7 +266,7 @@ def describe(exc: BaseException) -> str:
     """The exception's class and text; the class alone when its text cannot be made
     (a sympy relational asked for its truth value fails even to say why)."""
     try:
-        return f"{type(exc).__name__}: {exc}"
+        return printable(f"{type(exc).__name__}: {exc}")
     except Exception:  # noqa: BLE001 - the message of a bug must not be a second bug
         return type(exc).__name__
 

@@ -15,7 +15,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Callable, Iterable
 
 from rbdsolve.cli.app import Source, check_sets, describe, internal_message
-from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError
+from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, printable
 
 if TYPE_CHECKING:  # the report module imports sympy: not at start-up
     from rbdsolve.report.steps import ProblemReport
@@ -81,7 +81,7 @@ def solve_source(source: Source, settings: Settings) -> Outcome:
 
 def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:
     """The Outcome of a file whose solving hit a bug: exit code 3 for it alone."""
-    failure = Failure(describe(exc), None, ExitCode.INTERNAL, f"{name}: {internal_message(exc)}")
+    failure = Failure(describe(exc), None, ExitCode.INTERNAL, f"{printable(name)}: {internal_message(exc)}")
     return Outcome(name, None, failure, seconds)
 
 
@@ -188,7 +188,9 @@ class _bar:
                                  console=Console(stderr=True), transient=True)
         self.progress.start()
         task = self.progress.add_task("", total=self.total)
-        return lambda outcome: self.progress.update(task, advance=1, description=outcome.source)
+        from rich.markup import escape
+
+        return lambda outcome: self.progress.update(task, advance=1, description=escape(printable(outcome.source)))
 
     def __exit__(self, *exc) -> None:
         if self.progress is not None:

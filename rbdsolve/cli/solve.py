@@ -131,12 +131,17 @@ def print_summary(outcomes: list[Outcome]) -> None:
     from rich.table import Table
 
     folder, names = _short_names([o.source for o in outcomes])
-    table = Table(title=f"Summary ({folder})" if folder else "Summary", title_justify="left")
+    from rich.markup import escape
+
+    from rbdsolve.errors import printable
+
+    shown = escape(printable(folder))  # file names are text from outside: neither markup nor controls
+    table = Table(title=f"Summary ({shown})" if folder else "Summary", title_justify="left")
     table.add_column("file", overflow="fold")
     for name in ("answered", "route", "seconds", "result"):
         table.add_column(name, justify="right" if name in ("answered", "seconds") else "left", no_wrap=True)
     for name, o in zip(names, outcomes):
-        table.add_row(name, *_row(o))
+        table.add_row(escape(printable(name)), *_row(o))
     Console(stderr=True, highlight=False).print(table)
 
 

@@ -61,6 +61,14 @@ class Symbols:
     def vector(self, expr: ex.Expr) -> sp.Matrix:
         return _real(to_sympy(expr.tree, self), expr)
 
+    def axis(self, expr: ex.Expr) -> sp.Matrix:
+        """A direction: refused when it is the zero vector, written as zeros or zero by
+        arithmetic ([m - m, 0, 0]: the loader, without sympy, sees only the former)."""
+        value = self.vector(expr)
+        if all(sp.simplify(c) == 0 for c in value):
+            raise InputError(f"an axis direction must not be the zero vector ('{expr.text}' is zero)", expr.loc)
+        return value
+
 
 def _real(value, expr: ex.Expr):
     """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show."""
