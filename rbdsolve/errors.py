@@ -49,6 +49,8 @@ class ExitCode(IntEnum):
     UNSOLVED = 1
     BAD_INPUT = 2
     INTERNAL = 3
+    INTERRUPTED = 130  # 128 + SIGINT, the shells' convention
+    TERMINATED = 143  # 128 + SIGTERM
 
 
 @dataclass(frozen=True)

@@ -186,12 +186,34 @@ def run_guarded(debug: bool, run: Callable[[], ExitCode]) -> None:
     the exit code is the contract."""
     stderr = sys.stderr
     sys.stderr = Unfailing(stderr)
+    previous = _on_sigterm(_terminate)
     try:
         code = guard(debug, run)
         code = max(code, _flushed())
     finally:
+        _on_sigterm(previous)
         sys.stderr = stderr
     sys.exit(int(code))
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised where the main thread is, so that every ``finally`` and ``with``
+    runs on the way out: scratch folders removed, half-written outputs deleted."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated()
+
+
+def _on_sigterm(handler):
+    """Install ``handler`` for SIGTERM and return the previous one (None where signal
+    handlers cannot be set: not the main thread)."""
+    import signal
+    import threading
+
+    if handler is None or threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGTERM, handler)
 
 
 def _flushed() -> ExitCode:
@@ -250,7 +272,10 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
         return exc.exit_code
     except KeyboardInterrupt:
         click.echo("rbdsolve: interrupted", err=True)
-        return ExitCode.INTERNAL
+        return ExitCode.INTERRUPTED
+    except Terminated:
+        click.echo("rbdsolve: terminated", err=True)
+        return ExitCode.TERMINATED
     except Exception as exc:  # noqa: BLE001 - the one place that reports a bug
         if debug:
             traceback.print_exc()

@@ -98,7 +98,8 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
     outcomes: list[Outcome | None] = [None] * len(items)
     lost: list[int] = []  # files whose worker died (with the pool, every file it still had)
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_quiet_worker)
+    try:
         futures = {pool.submit(_solve_pickled, s, settings): i for i, s in enumerate(items)}
         for future in as_completed(futures):
             i = futures[future]
@@ -106,6 +107,10 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                 outcomes[i] = _advanced(pickle.loads(future.result()), advance)
             except BrokenProcessPool:
                 lost.append(i)
+    except BaseException:  # Ctrl-C, SIGTERM: stop the workers now, not after their files
+        _stop(pool)
+        raise
+    pool.shutdown()
     for i in sorted(lost):  # each alone, so that the one that kills its process is found
         outcomes[i] = _advanced(_alone(items[i], settings), advance)
     return outcomes
@@ -113,11 +118,37 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
 
 def _alone(source: Source, settings: Settings) -> Outcome:
     start = time.perf_counter()
+    pool = ProcessPoolExecutor(max_workers=1, initializer=_quiet_worker)
     try:
-        with ProcessPoolExecutor(max_workers=1) as pool:
-            return pickle.loads(pool.submit(_solve_pickled, source, settings).result())
+        return pickle.loads(pool.submit(_solve_pickled, source, settings).result())
     except Exception as exc:  # noqa: BLE001 - the process died (memory, a signal): this file only
         return crashed(source.name, exc, time.perf_counter() - start)
+    except BaseException:
+        _stop(pool)
+        raise
+    finally:
+        pool.shutdown()
+
+
+def _quiet_worker() -> None:
+    """A worker leaves interrupts to its parent: Ctrl-C reaches every process of the
+    terminal's group, and a worker's KeyboardInterrupt would print its traceback. The
+    parent stops the workers itself (``_stop``); SIGTERM kills a worker outright."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """End the workers at once and drop the files not yet started: the parent exits
+    within a second of Ctrl-C, not after the files under way are solved."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join(timeout=1)
 
 
 def _solve_pickled(source: Source, settings: Settings) -> bytes:

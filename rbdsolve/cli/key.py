@@ -49,7 +49,8 @@ def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, job
     say_failures(outcomes)
     problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None)
                 for s, o in zip(items, outcomes)]
-    notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values))
+    notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values),
+                      settings.budget)
     for note in notes:
         click.echo(note, err=True)
     if not quiet:
