@@ -13,8 +13,35 @@ The CLI maps each class to an exit code (documented in the README):
 from __future__ import annotations
 
 import difflib
+import re
 from dataclasses import dataclass
 from enum import IntEnum
+
+# C0 controls but tab and newline, DEL, C1 (NEL U+0085 included), the bidirectional
+# overrides and isolates (text that reads backwards), and the line and paragraph
+# separators U+2028/U+2029: what can move a terminal's cursor, set its title, clear
+# it, or make a line look other than it is.
+_UNPRINTABLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200e\u200f\u202a-\u202e\u2028\u2029\u2066-\u2069]")
+_ALSO_IN_ONE_LINE = re.compile("[\t\n]")
+
+
+def printable(text: str, lines: bool = False) -> str:
+    """Text from a file or the command line, safe to show: each control character as
+    its escape (ESC as \\x1b, U+202E as \\u202e). A message is one line, so tabs and
+    newlines are escaped too unless ``lines`` (a statement keeps its lines)."""
+    text = _UNPRINTABLE.sub(_escaped, text)
+    return text if lines else _ALSO_IN_ONE_LINE.sub(_escaped, text)
+
+
+def unprintable(text: str) -> str | None:
+    """The first character ``printable`` would escape (tabs and newlines allowed), or None."""
+    found = _UNPRINTABLE.search(text)
+    return found.group() if found else None
+
+
+def _escaped(match: re.Match) -> str:
+    code = ord(match.group())
+    return f"\\x{code:02x}" if code <= 0xFF else f"\\u{code:04x}"
 
 
 class ExitCode(IntEnum):
@@ -22,6 +49,8 @@ class ExitCode(IntEnum):
     UNSOLVED = 1
     BAD_INPUT = 2
     INTERNAL = 3
+    INTERRUPTED = 130  # 128 + SIGINT, the shells' convention
+    TERMINATED = 143  # 128 + SIGTERM
 
 
 @dataclass(frozen=True)
@@ -46,8 +75,8 @@ class Location:
         return Location(self.file, self.line, self.column + columns, self.path)
 
     def __str__(self) -> str:
-        head = f"{self.file}:{self.line}:{self.column}"
-        path = self.key_path()
+        head = f"{printable(self.file)}:{self.line}:{self.column}"
+        path = printable(self.key_path())
         return f"{head}: {path}" if path else head
 
 
@@ -68,7 +97,8 @@ class InputError(RbdError):
         super().__init__(str(self))
 
     def __str__(self) -> str:
-        return f"{self.location}: {self.message}" if self.location else self.message
+        message = printable(self.message)
+        return f"{self.location}: {message}" if self.location else message
 
 
 class InternalError(RbdError):
@@ -91,6 +121,9 @@ class UnsolvedError(RbdError):
         self.message = message
         self.location = None
         super().__init__(message)
+
+    def __str__(self) -> str:
+        return printable(self.message)
 
 
 def did_you_mean(word: str, choices: object) -> str:

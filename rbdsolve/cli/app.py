@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import glob
 import inspect
+import os
 import sys
 import traceback
 from dataclasses import dataclass
@@ -16,7 +17,7 @@ from typing import Callable
 import click
 
 from rbdsolve import __version__
-from rbdsolve.errors import ExitCode, InputError, RbdError
+from rbdsolve.errors import ExitCode, InputError, RbdError, printable
 
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
 STDIN = "-"
@@ -84,10 +85,22 @@ def sources(paths: tuple[str, ...]) -> list[Source]:
     out: list[Source] = []
     for raw in paths:
         if raw == STDIN:
-            out.append(Source("<stdin>", sys.stdin.read()))
+            out.append(Source(STDIN_NAME, read_stdin()))
         else:
             out += [Source(str(p)) for p in expand_paths((raw,))]
     return out
+
+
+STDIN_NAME = "<stdin>"
+
+
+def read_stdin() -> str:
+    """Standard input as a problem's text, under the limits of a file: no more than
+    one byte past the size limit is read, and a pipe that sends no end of file within
+    the read deadline is refused rather than waited for."""
+    from rbdsolve.problem.yamlnodes import read_stream, read_text
+
+    return read_text(STDIN_NAME, read_stream(sys.stdin.buffer, STDIN_NAME))
 
 
 def _is_problem(path: Path) -> bool:
@@ -122,20 +135,44 @@ def check_sets(values: dict[str, Fraction], problem) -> None:
             raise InputError(f"--set {name}: the parameter is positive, found {value}")
 
 
-def open_output(output: str, mode: str = "w"):
-    try:
-        return open(output, mode, encoding=None if "b" in mode else "utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write {output}: {exc.strerror}") from None
-
-
 def write_text(text: str, output: str | None) -> None:
-    """To ``output``, or to standard output when there is none."""
+    """To ``output`` (whole or not at all: render.files), or to standard output when
+    there is none; a write that fails is one line, exit code 2."""
     if output:
-        with open_output(output) as handle:
-            handle.write(text)
-    else:
+        from rbdsolve.render.files import write_file
+
+        write_file(output, text)
+        return
+    try:
         click.echo(text, nl=False)
+    except OSError as exc:
+        _silence_stdout()
+        raise InputError(f"cannot write to standard output: {exc.strerror or exc}") from None
+
+
+def _silence_stdout() -> None:
+    """Standard output to /dev/null once a write to it failed: what is still buffered
+    would fail again when Python flushes it at exit, with a second message."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no file descriptor (a test's stream)
+        pass
+
+
+def refuse_overwriting_inputs(output: str | None, items: list[Source]) -> None:
+    """``-o`` naming one of the problem files: refused before anything is solved."""
+    if not output:
+        return
+    for item in items:
+        if item.text is None and _same_file(output, item.name):
+            raise InputError(f"-o {output}: this is one of the problem files; choose another output")
+
+
+def _same_file(a: str, b: str) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
 
 
 def stderr_is_terminal() -> bool:
@@ -144,8 +181,87 @@ def stderr_is_terminal() -> bool:
 
 def run_guarded(debug: bool, run: Callable[[], ExitCode]) -> None:
     """Run a command's body and exit with its code: an RbdError is one line and its
-    exit code, anything else a bug (exit code 3, the traceback with --debug)."""
-    sys.exit(int(guard(debug, run)))
+    exit code, anything else a bug (exit code 3, the traceback with --debug). Standard
+    error cannot fail it (closed, or on a full disk): messages are a courtesy there,
+    the exit code is the contract."""
+    stderr = sys.stderr
+    sys.stderr = Unfailing(stderr)
+    previous = _on_sigterm(_terminate)
+    try:
+        code = guard(debug, run)
+        code = max(code, _flushed())
+    finally:
+        _on_sigterm(previous)
+        sys.stderr = stderr
+    sys.exit(int(code))
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised where the main thread is, so that every ``finally`` and ``with``
+    runs on the way out: scratch folders removed, half-written outputs deleted."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated()
+
+
+def _on_sigterm(handler):
+    """Install ``handler`` for SIGTERM and return the previous one (None where signal
+    handlers cannot be set: not the main thread)."""
+    import signal
+    import threading
+
+    if handler is None or threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGTERM, handler)
+
+
+def _flushed() -> ExitCode:
+    """Standard output flushed now, while a failure can still be said and counted."""
+    try:
+        sys.stdout.flush()
+    except OSError as exc:
+        _silence_stdout()
+        click.echo(f"rbdsolve: cannot write to standard output: {exc.strerror or exc}", err=True)
+        return ExitCode.BAD_INPUT
+    except (ValueError, AttributeError):  # closed or absent: nothing was written to it
+        pass
+    return ExitCode.OK
+
+
+class Unfailing:
+    """A text stream whose writes never raise: standard error closed (``2>&-``, then
+    Python's sys.stderr is None) or full (``2>/dev/full``) must not cost the answers."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.encoding = getattr(stream, "encoding", None) or "utf-8"
+        self.errors = getattr(stream, "errors", None) or "strict"
+
+    def write(self, text: str) -> int:
+        if not isinstance(text, str):  # so that click takes this for the text stream it is
+            raise TypeError("a text stream")
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        return len(text)
+
+    def flush(self) -> None:
+        try:
+            self.stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+
+    def isatty(self) -> bool:
+        try:
+            return self.stream.isatty()
+        except (OSError, ValueError, AttributeError):
+            return False
+
+    def writable(self) -> bool:
+        return True
 
 
 def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
@@ -156,7 +272,10 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
         return exc.exit_code
     except KeyboardInterrupt:
         click.echo("rbdsolve: interrupted", err=True)
-        return ExitCode.INTERNAL
+        return ExitCode.INTERRUPTED
+    except Terminated:
+        click.echo("rbdsolve: terminated", err=True)
+        return ExitCode.TERMINATED
     except Exception as exc:  # noqa: BLE001 - the one place that reports a bug
         if debug:
             traceback.print_exc()
@@ -165,8 +284,16 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
 
 
 def internal_message(exc: BaseException) -> str:
-    return (f"rbdsolve: internal error: {type(exc).__name__}: {exc} "
-            "(run with --debug for the traceback)")
+    return f"rbdsolve: internal error: {describe(exc)} (run with --debug for the traceback)"
+
+
+def describe(exc: BaseException) -> str:
+    """The exception's class and text; the class alone when its text cannot be made
+    (a sympy relational asked for its truth value fails even to say why)."""
+    try:
+        return printable(f"{type(exc).__name__}: {exc}")
+    except Exception:  # noqa: BLE001 - the message of a bug must not be a second bug
+        return type(exc).__name__
 
 
 def append_help(command: click.Command, text: str) -> None:

@@ -9,12 +9,13 @@ import pickle
 import time
 import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Callable, Iterable
 
-from rbdsolve.cli.app import Source, check_sets, internal_message
-from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError
+from rbdsolve.cli.app import Source, check_sets, describe, internal_message
+from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, printable
 
 if TYPE_CHECKING:  # the report module imports sympy: not at start-up
     from rbdsolve.report.steps import ProblemReport
@@ -74,9 +75,14 @@ def solve_source(source: Source, settings: Settings) -> Outcome:
     except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others
         if settings.debug:
             traceback.print_exc()
-        failure = Failure(str(exc), None, ExitCode.INTERNAL, f"{source.name}: {internal_message(exc)}")
-        return Outcome(source.name, None, failure, time.perf_counter() - start)
+        return crashed(source.name, exc, time.perf_counter() - start)
     return Outcome(source.name, report, None, time.perf_counter() - start)
+
+
+def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:
+    """The Outcome of a file whose solving hit a bug: exit code 3 for it alone."""
+    failure = Failure(describe(exc), None, ExitCode.INTERNAL, f"{printable(name)}: {internal_message(exc)}")
+    return Outcome(name, None, failure, seconds)
 
 
 def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
@@ -91,11 +97,58 @@ def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
 def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
     outcomes: list[Outcome | None] = [None] * len(items)
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
+    lost: list[int] = []  # files whose worker died (with the pool, every file it still had)
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_quiet_worker)
+    try:
         futures = {pool.submit(_solve_pickled, s, settings): i for i, s in enumerate(items)}
         for future in as_completed(futures):
-            outcomes[futures[future]] = _advanced(pickle.loads(future.result()), advance)
+            i = futures[future]
+            try:
+                outcomes[i] = _advanced(pickle.loads(future.result()), advance)
+            except BrokenProcessPool:
+                lost.append(i)
+    except BaseException:  # Ctrl-C, SIGTERM: stop the workers now, not after their files
+        _stop(pool)
+        raise
+    pool.shutdown()
+    for i in sorted(lost):  # each alone, so that the one that kills its process is found
+        outcomes[i] = _advanced(_alone(items[i], settings), advance)
     return outcomes
+
+
+def _alone(source: Source, settings: Settings) -> Outcome:
+    start = time.perf_counter()
+    pool = ProcessPoolExecutor(max_workers=1, initializer=_quiet_worker)
+    try:
+        return pickle.loads(pool.submit(_solve_pickled, source, settings).result())
+    except Exception as exc:  # noqa: BLE001 - the process died (memory, a signal): this file only
+        return crashed(source.name, exc, time.perf_counter() - start)
+    except BaseException:
+        _stop(pool)
+        raise
+    finally:
+        pool.shutdown()
+
+
+def _quiet_worker() -> None:
+    """A worker leaves interrupts to its parent: Ctrl-C reaches every process of the
+    terminal's group, and a worker's KeyboardInterrupt would print its traceback. The
+    parent stops the workers itself (``_stop``); SIGTERM kills a worker outright."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """End the workers at once and drop the files not yet started: the parent exits
+    within a second of Ctrl-C, not after the files under way are solved."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join(timeout=1)
 
 
 def _solve_pickled(source: Source, settings: Settings) -> bytes:
@@ -103,17 +156,21 @@ def _solve_pickled(source: Source, settings: Settings) -> bytes:
     sympy rebuilds an expression from its arguments and, by default, evaluates them
     again, which would fold a display form the solver kept on purpose (√(24g/(25r))
     into 2√6 √g/(5√r)). Those three are rebuilt unevaluated; their arguments are
-    already in canonical order, so nothing else changes."""
+    already in canonical order, so nothing else changes. A file's functions of time
+    are rebuilt as such (sympy would rebuild a plain function, without the namespace
+    that keeps a coordinate called Float from being printed as a number)."""
     import copyreg
     import io
 
     import sympy as sp
+    from sympy.core.function import UndefinedFunction
 
     buffer = io.BytesIO()
     pickler = pickle.Pickler(buffer)
     pickler.dispatch_table = copyreg.dispatch_table.copy()
     for kind in (sp.Add, sp.Mul, sp.Pow):
         pickler.dispatch_table[kind] = _reduce_unevaluated
+    pickler.dispatch_table[UndefinedFunction] = _reduce_function
     pickler.dump(solve_source(source, settings))
     return buffer.getvalue()
 
@@ -124,6 +181,20 @@ def _reduce_unevaluated(expr):
 
 def _unevaluated(kind, args):
     return kind(*args, evaluate=False)
+
+
+def _reduce_function(function):
+    from sympy.core.function import _reduce_undef
+
+    if "precedence" not in vars(function):
+        return _reduce_undef(function)
+    return _user_function, (function.name,)
+
+
+def _user_function(name: str):
+    from rbdsolve.model.state import user_function
+
+    return user_function(name)
 
 
 def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:
@@ -148,7 +219,9 @@ class _bar:
                                  console=Console(stderr=True), transient=True)
         self.progress.start()
         task = self.progress.add_task("", total=self.total)
-        return lambda outcome: self.progress.update(task, advance=1, description=outcome.source)
+        from rich.markup import escape
+
+        return lambda outcome: self.progress.update(task, advance=1, description=escape(printable(outcome.source)))
 
     def __exit__(self, *exc) -> None:
         if self.progress is not None:

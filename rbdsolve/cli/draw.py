@@ -7,8 +7,8 @@ from pathlib import Path
 import click
 
 from rbdsolve.cli.app import Source, append_help, check_sets, debug_option, main, parse_sets, run_guarded
-from rbdsolve.cli.solve import sets_option
-from rbdsolve.errors import ExitCode, InputError, Location, did_you_mean
+from rbdsolve.cli.solve import DEFAULT_BUDGET, Budget, sets_option
+from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, did_you_mean
 
 DRAW_EXAMPLES = """
 \b
@@ -35,22 +35,27 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
 @sets_option
 @click.option("--modes/--no-modes", default=True, show_default=True,
               help="With a modes question, also draw its mode shapes (OUTPUT's name + '-modes').")
+@click.option("--budget", type=Budget(), default=DEFAULT_BUDGET, show_default=True,
+              metavar="SECONDS", help="Time budget for the model and for each picture of mode shapes; "
+                                      "past it the picture is not drawn (exit code 1).")
 @debug_option
-def draw(path, output, at, sets, modes, debug):
+def draw(path, output, at, sets, modes, budget, debug):
     """Draw a planar scene to scale: bodies by shape, points labelled, gravity.
 
     Lengths come from the file's values and --set; a parameter without a value is
     drawn as 1 (the picture says so). Scenes turned in 3D are refused (exit code 2).
     """
-    run_guarded(debug, lambda: _draw(path, Path(output), at, sets, modes))
+    run_guarded(debug, lambda: _draw(path, Path(output), at, sets, modes, budget))
 
 
 append_help(draw, DRAW_EXAMPLES)
 
 
-def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], modes: bool) -> ExitCode:
+def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], modes: bool,
+          budget: float = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.errors import RbdError
     from rbdsolve.model.build import build_model
+    from rbdsolve.solvers.shared.budget import OutOfTime, within
     from rbdsolve.render.drawing.figures import (
         check_suffix,
         modes_questions,
@@ -62,17 +67,22 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     problem = Source(path).load()
     values = parse_sets(sets)
     check_sets(values, problem)
-    model = build_model(problem)
+    try:
+        with within(budget, "the model (T and V)"):
+            model = build_model(problem)
+    except OutOfTime as exc:
+        raise UnsolvedError(f"{path}: {exc}") from None
     model = model.with_values(values) if values else model
     click.echo(save_scene(model, output, configuration(model, at)).path)
     code = ExitCode.OK
     for n, question in enumerate(modes_questions(model) if modes else [], 1):
         name = f"{output.stem}-modes{'' if n == 1 else f'-{n}'}{output.suffix}"
         try:
-            click.echo(save_modes(model, question, output.with_name(name)).path)
-        except RbdError as exc:  # the scene is drawn; say why the modes are not
+            with within(budget, "the mode shapes"):
+                click.echo(save_modes(model, question, output.with_name(name)).path)
+        except (RbdError, OutOfTime) as exc:  # the scene is drawn; say why the modes are not
             click.echo(f"{question.loc}: no mode shapes: {exc}", err=True)
-            code = max(code, exc.exit_code)
+            code = max(code, getattr(exc, "exit_code", ExitCode.UNSOLVED))
     return code
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import main, parse_sets, run_guarded, sources, stderr_is_terminal
+from rbdsolve.cli.app import main, parse_sets, refuse_overwriting_inputs, run_guarded, sources, stderr_is_terminal
 from rbdsolve.cli.batch import Settings, solve_all, worst
 from rbdsolve.cli.solve import batch_options, print_summary, say_failures
 from rbdsolve.errors import ExitCode
@@ -44,11 +44,13 @@ def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, job
 
     check_output(output)
     items = sources(paths)
+    refuse_overwriting_inputs(str(output), items)
     outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
     say_failures(outcomes)
     problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None)
                 for s, o in zip(items, outcomes)]
-    notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values))
+    notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values),
+                      settings.budget)
     for note in notes:
         click.echo(note, err=True)
     if not quiet:

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, open_output, parse_sets, run_guarded, \
-    sources, stderr_is_terminal, write_text
+from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, refuse_overwriting_inputs, \
+    run_guarded, sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
 
@@ -35,8 +35,27 @@ route_option = click.option(
     "--route", type=click.Choice(ROUTES), default="auto", show_default=True,
     help="exact (sympy), numeric (floating point; every parameter needs a value) or auto "
          "(exact, then numeric where exact cannot answer or runs out of its budget).")
+MIN_BUDGET, MAX_BUDGET = 0.001, 1e6  # seconds: a timer's resolution; eleven days, far inside its range
+
+
+class Budget(click.ParamType):
+    """Seconds, finite, from a millisecond to MAX_BUDGET: ``nan``, ``inf`` and ``1e308``
+    are refused here, as usage errors, not deep in the timer."""
+
+    name = "seconds"
+
+    def convert(self, value, param, ctx) -> float:
+        try:
+            seconds = float(value)
+        except (TypeError, ValueError):
+            self.fail(f"expected a number of seconds, found '{value}'", param, ctx)
+        if not MIN_BUDGET <= seconds <= MAX_BUDGET:  # NaN compares false: refused too
+            self.fail(f"expected seconds from {MIN_BUDGET:g} to {MAX_BUDGET:g}, found '{value}'", param, ctx)
+        return seconds
+
+
 budget_option = click.option(
-    "--budget", type=click.FloatRange(min=0, min_open=True), default=DEFAULT_BUDGET,
+    "--budget", type=Budget(), default=DEFAULT_BUDGET,
     show_default=True, metavar="SECONDS",
     help="Time budget for building each file's model and for each route of each question; "
          "a question past it is left unanswered (exit code 1), or, with --route auto and "
@@ -84,10 +103,15 @@ append_help(solve, SOLVE_EXAMPLES)
 
 def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 1,
            quiet: bool = False) -> ExitCode:
+    from rbdsolve.cli.writing import Look, joined, rendered
+
     items = sources(paths)
-    outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    refuse_overwriting_inputs(output, items)
+    solved = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
+    outcomes = [p.outcome for p in pieces]
     say_failures(outcomes)
-    _write(fmt, outcomes, output)
+    write_text(joined(fmt, pieces), output)
     if len(outcomes) > 1 and not quiet:
         print_summary(outcomes)
     return worst(outcomes)
@@ -100,42 +124,6 @@ def say_failures(outcomes: list[Outcome]) -> None:
             click.echo(outcome.failure.line, err=True)
 
 
-def _write(fmt: str, outcomes: list[Outcome], output: str | None) -> None:
-    reports = [o.report for o in outcomes if o.report is not None]
-    if fmt == "json":
-        from rbdsolve.render.json import render_error, render_report
-
-        write_text("".join(render_report(o.report) if o.report is not None else render_error(o.source, o.failure)
-                           for o in outcomes), output)
-    elif fmt == "markdown":
-        from rbdsolve.render.markdown import render
-
-        write_text("\n".join(render(r) for r in reports), output)
-    elif fmt == "latex":
-        if reports:
-            from rbdsolve.render.latex import render_document
-
-            write_text(render_document(reports), output)
-    else:
-        _write_terminal(reports, output)
-
-
-def _write_terminal(reports, output: str | None) -> None:
-    from rich.console import Console
-
-    from rbdsolve.render.terminal import render
-
-    if output:
-        with open_output(output) as handle:
-            console = Console(file=handle, color_system=None, width=100, highlight=False)
-            for report in reports:
-                console.print(render(report))
-        return
-    console = Console(highlight=False)
-    for report in reports:
-        console.print(render(report))
-
-
 def print_summary(outcomes: list[Outcome]) -> None:
     """One row per file on standard error: questions answered, routes, seconds, result.
     Files are named from their common folder (in the title), whole, never cut short."""
@@ -143,12 +131,17 @@ def print_summary(outcomes: list[Outcome]) -> None:
     from rich.table import Table
 
     folder, names = _short_names([o.source for o in outcomes])
-    table = Table(title=f"Summary ({folder})" if folder else "Summary", title_justify="left")
+    from rich.markup import escape
+
+    from rbdsolve.errors import printable
+
+    shown = escape(printable(folder))  # file names are text from outside: neither markup nor controls
+    table = Table(title=f"Summary ({shown})" if folder else "Summary", title_justify="left")
     table.add_column("file", overflow="fold")
     for name in ("answered", "route", "seconds", "result"):
         table.add_column(name, justify="right" if name in ("answered", "seconds") else "left", no_wrap=True)
     for name, o in zip(names, outcomes):
-        table.add_row(name, *_row(o))
+        table.add_row(escape(printable(name)), *_row(o))
     Console(stderr=True, highlight=False).print(table)
 
 

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.app import STDIN_NAME, Source, append_help, debug_option, main, read_stdin, \
+    refuse_overwriting_inputs, run_guarded, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
@@ -78,14 +79,13 @@ def output_format(output: str | None, fmt: str | None) -> str:
 
 def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | None, verify: int,
               route: str, budget: float = DEFAULT_BUDGET) -> ExitCode:
-    import sys
-
     from rbdsolve.render.variants import RENDERERS
     from rbdsolve.solvers import Options, RouteChoice
     from rbdsolve.teaching.variants import variants as make
 
     kind = output_format(output, fmt)
-    source = Source("<stdin>", sys.stdin.read()) if path == "-" else Source(path)
+    source = Source(STDIN_NAME, read_stdin()) if path == "-" else Source(path)
+    refuse_overwriting_inputs(output, [source])
     table = make(source.load(), count, seed, Options(route=RouteChoice(route), budget=budget), verify)
     for line in (*table.notes, *(f"warning: {w}" for w in table.warnings)):
         click.echo(f"{table.file}: {line}", err=True)

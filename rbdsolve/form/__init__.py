@@ -7,3 +7,5 @@
 
 Used by the model (tidy coefficients), the solvers' steps and every renderer; imports
 nothing of rbdsolve but itself."""
+
+from rbdsolve.form import sympy_fixes  # noqa: E402,F401 - sympy#28621, before any solving

@@ -51,11 +51,20 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
-        num, den = sp.fraction(value)
-        for s, c in pairs:  # the remainder modulo s² + c² − 1, in s
-            num, den = sp.rem(num, s**2 + c**2 - 1, s), sp.rem(den, s**2 + c**2 - 1, s)
-        value = sp.cancel(num / den, extension=True)
+        value = _reduced(value, pairs)
     return _leading_plus(sp.factor_terms(value.xreplace(back)))
+
+
+def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]]) -> sp.Expr:
+    """Numerator and denominator modulo s² + c² − 1, in s; unchanged when they are not
+    polynomials in s (a root of sin α, which a target such as 1/ω₀ gives)."""
+    num, den = sp.fraction(value)
+    try:
+        for s, c in pairs:
+            num, den = sp.rem(num, s**2 + c**2 - 1, s), sp.rem(den, s**2 + c**2 - 1, s)
+    except sp.PolynomialError:
+        return value
+    return sp.cancel(num / den, extension=True)
 
 
 def _cancel(expr: sp.Expr) -> sp.Expr:

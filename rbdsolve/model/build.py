@@ -230,7 +230,7 @@ def _require(value: sp.Expr, expr, what: str, zero_ok: bool = False) -> sp.Expr:
 
 
 def _turns(turns, names: Symbols, start: sp.Matrix | None = None) -> sp.Matrix:
-    R = sequence_rotation([(names.vector(turn.axis), names.scalar(turn.angle)) for turn in turns])
+    R = sequence_rotation([(names.axis(turn.axis), names.scalar(turn.angle)) for turn in turns])
     return R if start is None else (start * R).applyfunc(tidy)
 
 
@@ -277,7 +277,7 @@ def part_properties(part: Part, names: Symbols) -> MassProperties:
         dims = {k: names.scalar(v) if k in POSITIONS else _require(names.scalar(v), v, _article(k))
                 for k, v in part.dimensions}
         _check_tube(part, dims)
-        axis = names.vector(part.axis) if part.axis is not None else OWN_AXIS.get(part.shape, sp.Matrix([0, 0, 1]))
+        axis = names.axis(part.axis) if part.axis is not None else OWN_AXIS.get(part.shape, sp.Matrix([0, 0, 1]))
         props = body_properties(part.shape, mass, dims, axis)
     offset = names.vector(part.at) if part.at is not None else sp.zeros(3, 1)
     sign = -1 if part.hole else 1

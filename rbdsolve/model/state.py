@@ -14,8 +14,21 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.core.function import UndefinedFunction
+from sympy.printing.precedence import PRECEDENCE
 
 t = sp.Symbol("t", real=True)
+
+
+def user_function(name: str) -> UndefinedFunction:
+    """The real function of time that a name from a problem file stands for (θ(t)).
+
+    sympy names a function's class after the function, and its printers look a
+    precedence up by class name: a coordinate called ``Integer``, ``Rational`` or
+    ``Float`` would be printed as if it were that number class, and crash. An object's
+    own ``precedence`` is asked first, so giving the class one (that of any function)
+    keeps the user's names in a namespace of their own."""
+    return UndefinedFunction(name, __dict__={"precedence": PRECEDENCE["Func"]}, real=True)
 
 
 @dataclass(frozen=True)
@@ -42,7 +55,7 @@ class State:
         return out
 
     def functions(self) -> tuple[sp.Expr, ...]:
-        return tuple(sp.Function(n, real=True)(t) for n in self.names)
+        return tuple(user_function(n)(t) for n in self.names)
 
     def to_time(self, expr):
         """q -> q(t), q̇ -> Derivative(q(t), t), q̈ -> Derivative(q(t), (t, 2))."""

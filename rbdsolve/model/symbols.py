@@ -13,7 +13,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError
-from rbdsolve.model.state import State, t
+from rbdsolve.model.state import State, t, user_function
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
@@ -44,7 +44,7 @@ class Symbols:
         params.update({name: sp.Symbol(name, real=True) for name in problem.unknowns})
         state = State.of(tuple(c.name for c in problem.coordinates))
         names = Symbols(params, state, {})
-        prescribed = {p.name: sp.Function(p.name, real=True)(t) if p.value is None else names.scalar(p.value)
+        prescribed = {p.name: user_function(p.name)(t) if p.value is None else names.scalar(p.value)
                       for p in problem.prescribed}
         return Symbols(params, state, {}, prescribed)
 
@@ -60,6 +60,14 @@ class Symbols:
 
     def vector(self, expr: ex.Expr) -> sp.Matrix:
         return _real(to_sympy(expr.tree, self), expr)
+
+    def axis(self, expr: ex.Expr) -> sp.Matrix:
+        """A direction: refused when it is the zero vector, written as zeros or zero by
+        arithmetic ([m - m, 0, 0]: the loader, without sympy, sees only the former)."""
+        value = self.vector(expr)
+        if all(sp.simplify(c) == 0 for c in value):
+            raise InputError(f"an axis direction must not be the zero vector ('{expr.text}' is zero)", expr.loc)
+        return value
 
 
 def _real(value, expr: ex.Expr):

@@ -266,6 +266,8 @@ class _Checker:
         if name in SCALAR_FUNCTIONS or name in DERIVATIVE_FUNCTIONS or name in VECTOR_FUNCTIONS:
             raise self.fail(node, f"'{name}' is a function: call it, as in {name}(...)")
         hint = did_you_mean(name, sorted(self.scope.all_names() | CONSTANTS))
+        if not hint and not self.scope.functions_of_time and not self.scope.refused:
+            hint = " (the file declares no coordinates: list them as 'coordinates: [...]')"
         raise self.fail(node, f"unknown symbol '{name}'{hint}")
 
     def visit_UnaryOp(self, node: ast.UnaryOp) -> tuple[Tree, Kind]:

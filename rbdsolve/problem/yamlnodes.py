@@ -8,13 +8,19 @@ so ``mass: 3`` and ``mass: 3*m`` go through the same expression parser.
 
 from __future__ import annotations
 
+import bisect
 import os
+import re
+import select
+import stat
+import time
 from dataclasses import dataclass
 
 import yaml
 
-from rbdsolve.errors import InputError, Location
+from rbdsolve.errors import InputError, Location, printable, unprintable
 
+READ_SECONDS = 30.0  # a pipe or FIFO that sends no end of file by then is refused
 MAX_FILE_BYTES = 256 * 1024
 MAX_NODES = 20_000
 MAX_DEPTH = 40
@@ -61,12 +67,46 @@ Node = Scalar | Seq | Map
 
 def read_bytes(path: str) -> bytes:
     """A file's bytes, reading no more than one byte past the size limit, so a huge
-    file (or /dev/zero) is refused without being read into memory."""
-    with open(path, "rb") as handle:
-        size = os.fstat(handle.fileno()).st_size
-        if size > MAX_FILE_BYTES:
-            raise InputError(f"file is {size} bytes; the limit is {MAX_FILE_BYTES} bytes", Location(path, 1, 1))
+    file (or /dev/zero) is refused without being read into memory. A FIFO is opened
+    without waiting for its writer and read under the deadline of a pipe."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    with open(fd, "rb", buffering=0) as handle:
+        info = os.fstat(fd)
+        if stat.S_ISFIFO(info.st_mode) or stat.S_ISSOCK(info.st_mode):
+            return read_stream(handle, path)
+        os.set_blocking(fd, True)
+        if info.st_size > MAX_FILE_BYTES:
+            raise InputError(f"file is {info.st_size} bytes; the limit is {MAX_FILE_BYTES} bytes", Location(path, 1, 1))
         return handle.read(MAX_FILE_BYTES + 1)
+
+
+def read_stream(stream, name: str, seconds: float | None = None) -> bytes:
+    """At most one byte past the size limit from a pipe, a FIFO or standard input, for
+    no longer than ``seconds`` (READ_SECONDS): a writer that never finishes is refused,
+    not waited for. A terminal has no deadline (its user ends it with Ctrl-D or Ctrl-C);
+    a stream without a file descriptor (a test's) is read up to the limit."""
+    try:
+        fd = stream.fileno()
+    except (OSError, ValueError, AttributeError):
+        return stream.read(MAX_FILE_BYTES + 1)
+    seconds = READ_SECONDS if seconds is None else seconds
+    deadline = None if os.isatty(fd) else time.monotonic() + seconds
+    chunks: list[bytes] = []
+    size = 0
+    while size <= MAX_FILE_BYTES:
+        if deadline is not None and not select.select([fd], [], [], max(deadline - time.monotonic(), 0))[0]:
+            raise InputError(f"no end of file within {seconds:g} s: a problem file is read whole, and this "
+                             "stream is still open", Location(name, 1, 1))
+        try:
+            chunk = os.read(fd, 64 * 1024)
+        except BlockingIOError:  # a FIFO whose writer has not come yet
+            time.sleep(0.01)
+            continue
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size += len(chunk)
+    return b"".join(chunks)
 
 
 def read_text(path: str, data: bytes) -> str:
@@ -106,7 +146,7 @@ def parse_yaml(text: str, path: str) -> Map:
         raise InputError("the YAML is nested too deeply", Location(path, 1, 1)) from None
     if root is None:
         raise InputError("the file holds no YAML document", Location(path, 1, 1))
-    tree = _Converter(path).convert(root, (), 0)
+    tree = _Converter(path, Lines(text)).convert(root, (), 0)
     if not isinstance(tree, Map):
         raise InputError(
             f"expected a mapping at the top of the file, found {tree.kind_name}", tree.loc
@@ -144,26 +184,26 @@ def _compose(text: str, path: str) -> yaml.Node | None:
 
 def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputError:
     mark = exc.problem_mark or exc.context_mark
-    loc = Location(path, mark.line + 1, mark.column + 1) if mark else Location(path, 1, 1)
+    loc = Lines(text).at(path, mark) if mark else Location(path, 1, 1)
     problem = exc.problem or "invalid YAML"
     if "'\\t'" in problem or "tab" in problem.lower():
         problem = "a tab character: YAML indents with spaces only"
     else:
-        problem = f"YAML syntax error: {problem}"
+        problem = f"YAML syntax error: {printable(problem)}"
         if exc.context:
-            problem += f" ({exc.context})"
-        problem += _bracket_hint(text, mark.line if mark else 0)
+            problem += f" ({printable(exc.context)})"
+        problem += _bracket_hint(text, loc.line - 1)
     return InputError(problem, loc)
 
 
 def _bracket_hint(text: str, line: int) -> str:
     """YAML reads a value that starts with '[' as a list, so [3, 0] + l*[…] breaks the
     file there: say to quote it."""
-    lines = text.splitlines()
+    lines = Lines.split(text)
     for row in (line, line - 1):
         value = lines[row].split(":", 1)[-1].strip() if 0 <= row < len(lines) else ""
         if value.startswith("[") and "]" in value and value[value.index("]") + 1:].strip():
-            return f'; an expression that starts with \'[\' must be quoted: "{value}"'
+            return f'; an expression that starts with \'[\' must be quoted: "{printable(value)}"'
     return ""
 
 
@@ -174,13 +214,43 @@ def _reader_error(exc: yaml.reader.ReaderError, text: str, path: str) -> InputEr
     return InputError(f"the control character U+{code:04X} is not allowed in a YAML file", Location(path, line, column))
 
 
+class Lines:
+    """Line and column as an editor shows them. PyYAML also breaks lines at U+0085,
+    U+2028 and U+2029, which editors show inside a line: positions are counted here
+    from the mark's character index, with \\n, \\r\\n and \\r as the only breaks."""
+
+    _BREAK = re.compile("\r\n|\r|\n")
+
+    def __init__(self, text: str):
+        self.starts = [0] + [m.end() for m in self._BREAK.finditer(text)]
+
+    @classmethod
+    def split(cls, text: str) -> list[str]:
+        return cls._BREAK.split(text)
+
+    def at(self, path: str, mark, keypath: tuple = ()) -> Location:
+        line = bisect.bisect_right(self.starts, mark.index) - 1
+        return Location(path, line + 1, mark.index - self.starts[line] + 1, keypath)
+
+
+# The tags PyYAML's safe resolver gives plain YAML; any other (!!python/name:…, !include)
+# would be dropped or kept as text without a word, so it is refused.
+_KNOWN_TAGS = {f"tag:yaml.org,2002:{name}" for name in
+               ("str", "int", "float", "bool", "null", "timestamp", "seq", "map", "merge", "value")}
+
+
 class _Converter:
-    def __init__(self, path: str):
+    def __init__(self, path: str, lines: Lines):
         self.path = path
+        self.lines = lines
         self.count = 0
 
     def convert(self, node: yaml.Node, keypath: tuple, depth: int) -> Node:
-        loc = Location(self.path, node.start_mark.line + 1, node.start_mark.column + 1, keypath)
+        loc = self.lines.at(self.path, node.start_mark, keypath)
+        if node.tag not in _KNOWN_TAGS:
+            tag = node.tag.replace("tag:yaml.org,2002:", "!!", 1)
+            raise InputError(f"the YAML tag '{printable(tag)}' is not supported: a problem file is "
+                             "plain YAML; remove the tag", loc)
         self.count += 1
         if self.count > MAX_NODES:
             raise InputError(
@@ -191,6 +261,7 @@ class _Converter:
         if depth > MAX_DEPTH:
             raise InputError(f"nesting deeper than {MAX_DEPTH} levels", loc)
         if isinstance(node, yaml.ScalarNode):
+            _check_printable(node.value, loc)
             one_line = node.start_mark.line == node.end_mark.line
             null = node.tag == "tag:yaml.org,2002:null" and node.style is None
             return Scalar(node.value, loc, plain=node.style is None and one_line, null=null)
@@ -222,3 +293,12 @@ class _Converter:
             value = self.convert(value_node, (*keypath, key.text), depth + 1)
             entries.append((Scalar(key.text, key_loc, key.plain), value))
         return Map(tuple(entries), loc)
+
+
+def _check_printable(text: str, loc: Location) -> None:
+    """No control character in a string: the byte check before YAML catches those typed
+    in the file, this one those YAML makes from escapes ("\\e]0;title\\a", "\\x85")."""
+    found = unprintable(text)
+    if found is not None:
+        raise InputError(f"a control character ({printable(found)}) in a string, from a YAML escape such "
+                         "as \"\\e\" or \"\\x1b\"; remove it", loc)

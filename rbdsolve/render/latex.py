@@ -46,18 +46,20 @@ def text(value: str) -> str:
     while i < len(chars):
         ch = chars[i]
         nxt = chars[i + 1] if i + 1 < len(chars) else ""
-        if nxt in ("\u0307", "\u0308"):  # combining dot(s): q̇, q̈
+        if nxt in ("\u0307", "\u0308") and ch.isalpha():  # combining dot(s) over a letter: q̇, q̈
             base = _GREEK_CHARS.get(ch, ch)
             out.append(f"\\ensuremath{{\\{'dot' if nxt == chr(0x307) else 'ddot'}{{{base}}}}}")
             i += 2
             continue
         if ch in _SPECIAL:
             out.append(_SPECIAL[ch])
+        elif unicodedata.category(ch) == "Cc" and ch not in "\n\t":
+            out.append(f"[U+{ord(ch):04X}]")  # a control character: say what it was
         elif ch in _GREEK_CHARS:
             out.append(f"\\ensuremath{{{_GREEK_CHARS[ch]}}}")
         elif ch in _MATH_CHARS:
             out.append(f"\\ensuremath{{{_MATH_CHARS[ch]}}}")
-        elif ord(ch) > 0xFF and not unicodedata.combining(ch):
+        elif ord(ch) > 0xFF:  # a combining mark too, unless over a letter (above)
             out.append(f"[U+{ord(ch):04X}]")  # not in pdflatex's fonts: say what it was
         else:
             out.append(ch)
@@ -125,9 +127,13 @@ def render_key(key: AnswerKey) -> str:
 
 
 def render_document(reports: list[ProblemReport]) -> str:
-    title = reports[0].title if len(reports) == 1 else "Solutions"
-    lines = [PREAMBLE, f"\\title{{{text(title)}}}", "\\date{}", "\\begin{document}"]
-    for report in reports:
-        lines += body(report)
-    lines.append("\\end{document}")
+    return document(reports[0].title if len(reports) == 1 else "Solutions",
+                    ["\n".join(body(report)) for report in reports])
+
+
+def document(title: str, bodies: list[str]) -> str:
+    """One document around problems' bodies, each rendered on its own (so that one
+    problem that cannot be rendered leaves the others whole)."""
+    lines = [PREAMBLE, f"\\title{{{text(title)}}}", "\\date{}", "\\begin{document}", *bodies,
+             "\\end{document}"]
     return "\n".join(lines) + "\n"

@@ -6,6 +6,17 @@ from rbdsolve.form.printers import relation_latex
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
+from rbdsolve.errors import printable
+
+
+_MARKUP = {"<": "&lt;", ">": "&gt;", "&": "&amp;"} | {c: "\\" + c for c in "\\`*_[]()#$|!~"}
+
+
+def md(text: str, lines: bool = False) -> str:
+    """Text from a file as Markdown text: control characters escaped (printable), HTML
+    as entities (no <script>, no <img onerror>), and Markdown's own marks backslashed (no
+    links, images, emphasis, headings or $math$ a file did not mean)."""
+    return "".join(_MARKUP.get(c, c) for c in printable(text, lines))
 
 
 def _step(step: Step) -> list[str]:
@@ -20,12 +31,12 @@ def _step(step: Step) -> list[str]:
 
 def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int = 1) -> str:
     head = "#" * level
-    lines = [f"{head} {report.title}", ""]
+    lines = [f"{head} {md(report.title)}", ""]
     if report.source:
-        lines += [f"*{report.source}* — `{report.file}`", ""]
+        lines += [f"*{md(report.source)}* — {md(report.file)}", ""]
     if report.statement:
-        lines += [report.statement, ""]
-    lines += [f"![{p.caption}]({p.path.as_posix()})\n\n*{p.caption}*\n" for p in pictures]
+        lines += [md(report.statement, lines=True), ""]
+    lines += [f"![{md(p.caption)}]({p.path.as_posix()})\n\n*{md(p.caption)}*\n" for p in pictures]
     if report.values:
         lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()), ""]
     if report.model.steps:
@@ -36,9 +47,9 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [f"{head}# Question {number}: {s.question}", "", f"*Route: {route_text(s)}.*", ""]
         for step in s.steps:
             lines += _step(step)
-        lines += [f"> **Warning:** {w}" for w in s.warnings]
+        lines += [f"> **Warning:** {md(w)}" for w in s.warnings]
         if s.error:
-            lines += [f"> **Could not answer:** {s.error}", ""]
+            lines += [f"> **Could not answer:** {md(s.error)}", ""]
         numbers = numeric_lines(s.values)
         if numbers:
             lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numbers] + [""]
@@ -47,10 +58,10 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
 
 def render_key(key: AnswerKey) -> str:
     """The answer key as one Markdown document: a title, then each problem a section."""
-    parts = [f"# {key.title}\n"]
+    parts = [f"# {md(key.title)}\n"]
     for entry in key.entries:
         if entry.report is None:
-            parts.append(f"## {entry.source}\n\n> **Not solved:** {entry.failure}\n")
+            parts.append(f"## {md(entry.source)}\n\n> **Not solved:** {md(entry.failure or '')}\n")
         else:
             parts.append(render(entry.report, entry.pictures, level=2))
     return "\n".join(parts)

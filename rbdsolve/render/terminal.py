@@ -8,6 +8,7 @@ from rich.padding import Padding
 from rich.rule import Rule
 from rich.text import Text
 
+from rbdsolve.errors import printable
 from rbdsolve.form.printers import relation_text
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
@@ -29,10 +30,10 @@ def step_lines(step: Step) -> list[Text]:
 
 
 def render(report: ProblemReport) -> Group:
-    parts: list = [Rule(Text(report.title, style="bold"), align="left")]
-    parts.append(Text(" · ".join(x for x in (report.source, report.file) if x), style="dim"))
-    if report.statement:
-        parts.append(Padding(Text(report.statement), (1, 0, 0, 0)))
+    parts: list = [Rule(Text(printable(report.title), style="bold"), align="left")]
+    parts.append(Text(" · ".join(printable(x) for x in (report.source, report.file) if x), style="dim"))
+    if report.statement:  # text from the file: no control character reaches the terminal
+        parts.append(Padding(Text(printable(report.statement, lines=True)), (1, 0, 0, 0)))
     if report.values:
         given = ", ".join(f"{k} = {v:g}" for k, v in report.values.items())
         parts.append(Text(f"Parameter values: {given}", style="dim"))
@@ -53,9 +54,9 @@ def _solution(number: int, s: Solution) -> list:
     for step in s.steps:
         out += step_lines(step)
     for warning in s.warnings:
-        out.append(Text(f"warning: {warning}", style="yellow"))
+        out.append(Text(f"warning: {printable(warning)}", style="yellow"))
     if s.error:
-        out.append(Text(f"could not answer: {s.error}", style="bold red"))
+        out.append(Text(f"could not answer: {printable(s.error)}", style="bold red"))
     numbers = numeric_lines(s.values)
     if numbers:
         out += [Text("Numeric values:")]

@@ -14,7 +14,6 @@ solution.
 from __future__ import annotations
 
 import re
-import shutil
 import tempfile
 from dataclasses import dataclass
 from fractions import Fraction
@@ -25,6 +24,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.problem.schema import Problem
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
+from rbdsolve.render.files import write_file
 
 KINDS = (".pdf", ".tex", ".md", ".html")
 
@@ -54,7 +54,7 @@ def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:
 
 
 def write_key(output: Path, title: str, problems: Sequence[Solved], figures: bool,
-              values: Mapping[str, Fraction]) -> tuple[str, ...]:
+              values: Mapping[str, Fraction], budget: float | None = None) -> tuple[str, ...]:
     """Write the key to ``output`` (its suffix picks the format); return notes about
     pictures left out."""
     check_output(output)
@@ -67,7 +67,7 @@ def write_key(output: Path, title: str, problems: Sequence[Solved], figures: boo
         entries = []
         for n, problem in enumerate(problems, start=1):
             stem = f"{n:02d}-{safe_name(Path(problem.name).stem)}"
-            pictures = (_pictures(problem, folder, home, stem, suffix, values, notes)
+            pictures = (_pictures(problem, folder, home, stem, suffix, values, notes, budget)
                         if figures and problem.report is not None else ())
             entries.append(KeyEntry(problem.name, problem.report, problem.failure, pictures))
         _document(AnswerKey(title, tuple(entries)), output, home, Path(scratch))
@@ -97,30 +97,29 @@ def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) ->
             return
         from rbdsolve.render.pdf import compile_pdf
 
-        shutil.copyfile(compile_pdf(tex, scratch), output)
+        write_file(output, compile_pdf(tex, scratch).read_bytes())
 
 
 def _write_text(text: str, output: Path) -> None:
-    try:
-        output.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write {output}: {exc.strerror}") from None
+    write_file(output, text)
 
 
 def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
-              values: Mapping[str, Fraction], notes: list[str]) -> tuple[Picture, ...]:
-    """The scene and its mode shapes, drawn at the values the solution used; none for a
-    scene that is not planar. A picture that fails is noted and left out."""
+              values: Mapping[str, Fraction], notes: list[str], budget: float | None) -> tuple[Picture, ...]:
+    """The scene and its mode shapes, drawn at the values the solution used, within the
+    budget; none for a scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model
     from rbdsolve.render.drawing.figures import save_figures
+    from rbdsolve.solvers.shared.budget import OutOfTime, within
 
     try:
-        model = build_model(problem.load())
-        if values:
-            model = model.with_values(dict(values))
-        folder.mkdir(parents=True, exist_ok=True)
-        drawn = save_figures(model, folder, stem, suffix)
-    except Exception as exc:  # noqa: BLE001 - a picture must not lose the key
+        with within(budget, "the pictures"):
+            model = build_model(problem.load())
+            if values:
+                model = model.with_values(dict(values))
+            folder.mkdir(parents=True, exist_ok=True)
+            drawn = save_figures(model, folder, stem, suffix)
+    except (Exception, OutOfTime) as exc:  # noqa: BLE001 - a picture must not lose the key
         notes.append(f"{problem.name}: no picture in the key: {type(exc).__name__}: {exc}")
         return ()
     return tuple(Picture(f.path.relative_to(home), f.caption) for f in drawn)

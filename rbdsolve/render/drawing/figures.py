@@ -18,6 +18,7 @@ from typing import Mapping
 
 from rbdsolve.errors import InputError, RbdError
 from rbdsolve.model.build import Model
+from rbdsolve.render.files import replacing
 from rbdsolve.render.drawing.sketch import Circle, Dot, Polygon, Segment, Sketch, sketch
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.form.printers import unicode_name
@@ -132,10 +133,8 @@ def save(fig, path: Path) -> None:
     """PNG or SVG by the suffix; an unwritable place is an InputError."""
     check_suffix(path)
     metadata = {"Date": None} if Path(path).suffix.lower() == ".svg" else {}  # the same scene, the same file
-    try:
-        fig.savefig(path, dpi=DPI, metadata=metadata)
-    except OSError as exc:
-        raise InputError(f"cannot write {path}: {exc.strerror}") from None
+    with replacing(path) as temporary:  # an interrupted run leaves the old picture or none
+        fig.savefig(temporary, dpi=DPI, metadata=metadata, format=Path(path).suffix.lower()[1:])
 
 
 def configuration_text(drawing: Sketch) -> str:

@@ -53,9 +53,9 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
             hook(info)
 
     previous, hook = signal.signal(signal.SIGALRM, ring), sys.unraisablehook
-    sys.unraisablehook = unraisable
-    signal.setitimer(signal.ITIMER_REAL, seconds, REPEAT)
-    try:
+    try:  # armed inside: a budget so short that it rings at once still disarms
+        sys.unraisablehook = unraisable
+        signal.setitimer(signal.ITIMER_REAL, seconds, REPEAT)
         yield
     finally:
         _disarm(previous)
@@ -64,11 +64,16 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
 
 def _disarm(previous) -> None:
     # The alarm may ring between the body's end and the disarming: retry until the
-    # timer is off, then put the previous handler back.
+    # timer is off, then put the previous handler back. Never the default action: a
+    # ring that was already on its way would kill the process ("Alarm clock").
     while True:
         try:
             signal.setitimer(signal.ITIMER_REAL, 0)
             break
         except OutOfTime:
             continue
-    signal.signal(signal.SIGALRM, previous)
+    signal.signal(signal.SIGALRM, _stray if previous in (signal.SIG_DFL, None) else previous)
+
+
+def _stray(signum, frame) -> None:
+    """A ring that arrives after its budget was disarmed: nothing is left to stop."""

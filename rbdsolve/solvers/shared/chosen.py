@@ -71,7 +71,7 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     from rbdsolve.solvers.shared.numeric_model import ROOT_TOL, compiled_gradient, difference, gradient_scale, newton
 
     about = question.options.about
-    given = np.array([_real(model.symbols.scalar(e), model, e) for _, e in about])
+    given = np.array([_real(model.symbols.scalar(e), model, e, name) for name, e in about])
     g, H = compiled_gradient(model)
     residual = np.asarray(g(given), dtype=float)
     tol = ROOT_TOL * gradient_scale(model, g)
@@ -88,11 +88,15 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
                         f"within {REFINE_TOL:g} of it")
 
 
-def _real(value: sp.Expr, model: Model, expr) -> float:
-    """A coordinate value as a float at the parameter values; refused where complex."""
+def _real(value: sp.Expr, model: Model, expr, name: str) -> float:
+    """A coordinate of ``about`` as a float at the parameter values, refused where it is
+    not a real number there (acos(g/l) with g > l)."""
+    import math
+
     number = complex(sp.N(value.xreplace(dict(model.values)), 20))
-    if abs(number.imag) > 1e-12 * max(1.0, abs(number.real)):
-        raise UnsolvedError(f"{expr.loc}: '{expr.text}' is not a real number at the given values ({number:.6g})")
+    if number.imag != 0 or not math.isfinite(number.real):
+        raise UnsolvedError(f"{expr.loc}: {name} = {expr.text} is not a real number at the parameter values "
+                            f"({number:.6g}); choose a configuration that exists there")
     return number.real
 
 

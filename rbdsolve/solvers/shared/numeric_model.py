@@ -87,8 +87,8 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     scene = numeric_scene(model)
     if scene is not None:
         q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
-        K = finite(lambda x: scene.potential(x)[2])(q0)
-        M = finite(scene.mass_matrix)(q0)
+        K = finite(lambda x: scene.potential(x)[2], model)(q0)
+        M = finite(scene.mass_matrix, model)(q0)
         return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
@@ -96,23 +96,36 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
 
 
-def finite(evaluate):
+def finite(evaluate, model: Model):
     """``evaluate`` at a configuration, as a float array, or an UnsolvedError where the
-    scene has no finite value there (a spring of zero length has no direction)."""
+    scene has no finite value there, naming the causes this scene can have."""
 
     def at(x):
         try:
             with np.errstate(all="ignore"):
                 value = np.asarray(evaluate(x), dtype=float)
         except (ArithmeticError, ValueError) as exc:
-            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): a spring of zero "
-                                "length, or a square root or logarithm out of its domain?") from None
+            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): "
+                                f"{_causes(model, 'a square root or logarithm out of its domain')}?") from None
         if not np.all(np.isfinite(value)):
-            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: a spring of zero length, or a "
-                                "division by zero there?")
+            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: {_causes(model, 'a division by zero there')}?")
         return value
 
     return at
+
+
+HUGE = 1e100  # a parameter value this far from 1 (or its inverse) can overflow a float in T or V
+
+
+def _causes(model: Model, otherwise: str) -> str:
+    """What makes T or V infinite in this scene: parameter values past floating point's
+    range first, a spring of zero length only where there is a spring."""
+    extreme = [f"{k} = {float(v):.3g}" for k, v in model.values.items()
+               if v != 0 and not 1 / HUGE < abs(float(v)) < HUGE]
+    causes = [f"an overflow of floating point from the parameter values ({', '.join(extreme)})"] if extreme else []
+    if model.problem.springs:
+        causes.append("a spring of zero length")
+    return ", or ".join(causes + [otherwise])
 
 
 def _shown(x) -> str:
@@ -148,13 +161,13 @@ def compiled_gradient(model: Model):
     from the numeric scene where it applies, else compiled from the symbolic V."""
     scene = numeric_scene(model)
     if scene is not None:
-        return finite(lambda x: scene.potential(x)[1]), finite(lambda x: scene.potential(x)[2])
+        return finite(lambda x: scene.potential(x)[1], model), finite(lambda x: scene.potential(x)[2], model)
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
     grad = [sp.diff(V, x) for x in q]
     H = hessian(V, tuple(q))
-    return finite(sp.lambdify([q], grad, "numpy")), finite(sp.lambdify([q], H.tolist(), "numpy"))
+    return finite(sp.lambdify([q], grad, "numpy"), model), finite(sp.lambdify([q], H.tolist(), "numpy"), model)
 
 
 def gradient_scale(model: Model, g) -> float:
@@ -243,7 +256,7 @@ def _slope_and_curvature(model: Model, g, H):
     scene = numeric_scene(model)
     if scene is None:
         return lambda x: (g(np.array([x]))[0], H(np.array([x]))[0][0])
-    both = finite(lambda x: _first_derivatives(scene.potential(x)))
+    both = finite(lambda x: _first_derivatives(scene.potential(x)), model)
     return lambda x: tuple(both(np.array([x])))
 
 

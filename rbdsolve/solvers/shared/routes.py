@@ -26,7 +26,7 @@ from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
-from rbdsolve.solvers.shared.values import missing_for, missing_values, numeric, with_irrelevant_filled
+from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 
@@ -58,6 +58,8 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     start = time.perf_counter()
     solution = _with_swing_warnings(question, model, _routed(family, question, model, options))
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
+    overflow = not_finite(solution.answers, model.values) if values else None
+    solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
     return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
 
 

@@ -16,7 +16,7 @@ from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.problem.expr import Expr
-from rbdsolve.report.tree import map_leaves
+from rbdsolve.report.tree import label, leaves, map_leaves
 
 
 def sample(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> complex:
@@ -38,6 +38,32 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     """
     roots: dict[sp.Expr, sp.Expr] = {}
     return map_leaves(value, lambda leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf))
+
+
+def not_finite(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> str | None:
+    """A warning naming the answers that hold no free symbol yet have no finite value at
+    the parameter values (1e300**3 overflows a float; 1/(1 - 1) divides by zero), which
+    the numbers show as null; None when there are none."""
+    bad = []
+    for path, leaf in leaves(value):
+        if isinstance(leaf, sp.Basic) and not isinstance(leaf, sp.MatrixBase) and _overflows(leaf, subs):
+            bad.append(label(path))
+    if not bad:
+        return None
+    shown = ", ".join(bad[:6]) + (f" and {len(bad) - 6} more" if len(bad) > 6 else "")
+    return (f"no numeric value for {shown}: not a finite floating-point number at the parameter values "
+            "(an overflow past about 1.8e308, or a division by zero); shown as null")
+
+
+def _overflows(leaf: sp.Basic, subs: Mapping[sp.Symbol, sp.Expr]) -> bool:
+    number = leaf.xreplace(subs)
+    if number.free_symbols or number.atoms(AppliedUndef) or number.has(sp.Derivative, sp.CRootOf):
+        return False
+    try:
+        z = complex(sp.N(number, 17))
+    except (TypeError, ValueError):
+        return False
+    return not (math.isfinite(z.real) and math.isfinite(z.imag))
 
 
 def _plain(leaf: object) -> object:

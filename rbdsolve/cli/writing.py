@@ -1,0 +1,107 @@
+"""Each file's answer turned into text on its own: a file whose report cannot be
+rendered (a bug in a renderer) becomes that file's failure, and every other file's
+solution and JSON line is still written."""
+
+from __future__ import annotations
+
+import io
+import time
+import traceback
+from dataclasses import dataclass
+from typing import Callable
+
+from rbdsolve.cli.batch import Outcome, crashed
+
+
+@dataclass(frozen=True)
+class Piece:
+    """One file's text in the chosen format ('' for a failure outside JSON), and its
+    outcome (a rendering failure folded in)."""
+
+    outcome: Outcome
+    text: str
+
+
+@dataclass(frozen=True)
+class Look:
+    """How terminal output looks where it goes: a file gets 100 columns, no colour."""
+
+    width: int = 100
+    color_system: str | None = None
+    terminal: bool = False
+    no_color: bool = False
+
+    @staticmethod
+    def of_stdout() -> Look:
+        from rich.console import Console
+
+        console = Console()
+        return Look(console.width, console.color_system, console.is_terminal, console.no_color)
+
+
+def rendered(outcomes: list[Outcome], fmt: str, look: Look = Look(), debug: bool = False) -> list[Piece]:
+    """Every outcome's text, each rendered inside its own guard."""
+    render = _renderer(fmt, look)
+    return [_guarded(outcome, render, fmt, debug) for outcome in outcomes]
+
+
+def _guarded(outcome: Outcome, render: Callable, fmt: str, debug: bool) -> Piece:
+    if outcome.report is None:
+        return Piece(outcome, _error_line(outcome) if fmt == "json" else "")
+    start = time.perf_counter()
+    try:
+        return Piece(outcome, render(outcome.report))
+    except Exception as exc:  # noqa: BLE001 - one file's rendering bug must not lose the others
+        if debug:
+            traceback.print_exc()
+        failed = crashed(outcome.source, exc, outcome.seconds + time.perf_counter() - start)
+        return Piece(failed, _error_line(failed) if fmt == "json" else "")
+
+
+def _error_line(outcome: Outcome) -> str:
+    from rbdsolve.render.json import render_error
+
+    return render_error(outcome.source, outcome.failure)
+
+
+def _renderer(fmt: str, look: Look) -> Callable:
+    if fmt == "json":
+        from rbdsolve.render.json import render_report
+
+        return render_report
+    if fmt == "markdown":
+        from rbdsolve.render.markdown import render
+
+        return lambda report: render(report) + "\n"
+    if fmt == "latex":
+        from rbdsolve.render.latex import body
+
+        return lambda report: "\n".join(body(report))
+    return lambda report: _terminal_text(report, look)
+
+
+def _terminal_text(report, look: Look) -> str:
+    """The rich rendering of one report, as the text (and colours) the console shows."""
+    from rich.console import Console
+
+    from rbdsolve.render.terminal import render
+
+    console = Console(file=io.StringIO(), width=look.width, highlight=False, no_color=look.no_color,
+                      color_system=look.color_system, force_terminal=look.terminal)
+    console.print(render(report))
+    return console.file.getvalue()
+
+
+def joined(fmt: str, pieces: list[Piece]) -> str:
+    """The whole output: the pieces in file order (a LaTeX document around them)."""
+    texts = [p.text for p in pieces if p.text]
+    if fmt == "markdown":
+        return "".join(texts)[:-1]  # one blank line between problems, none after the last
+    if fmt == "latex":
+        if not texts:
+            return ""
+        from rbdsolve.render.latex import document
+
+        reports = [p.outcome.report for p in pieces if p.text]
+        return document(reports[0].title if len(reports) == 1 else "Solutions", texts)
+    return "".join(texts)
