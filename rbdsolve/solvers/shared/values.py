@@ -40,6 +40,9 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     return map_leaves(value, lambda leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf))
 
 
+CONDITIONS = (Relational, BooleanAtom, BooleanFunction)  # exists_when, a case's when
+
+
 def not_finite(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> str | None:
     """A warning naming the answers that hold no free symbol yet have no finite value at
     the parameter values (1e300**3 overflows a float; 1/(1 - 1) divides by zero), which
@@ -56,6 +59,8 @@ def not_finite(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> str | None:
 
 
 def _overflows(leaf: sp.Basic, subs: Mapping[sp.Symbol, sp.Expr]) -> bool:
+    if isinstance(leaf, CONDITIONS):
+        return False  # a condition is true or false, never a number
     number = leaf.xreplace(subs)
     if number.free_symbols or number.atoms(AppliedUndef) or number.has(sp.Derivative, sp.CRootOf):
         return False
@@ -78,7 +83,7 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
         return value  # a numeric route's answer
     if not isinstance(value, sp.Basic):
         return None  # enums, text: not numbers
-    if isinstance(value, (Relational, BooleanAtom, BooleanFunction)):  # a condition: true or false at the values, if they decide it
+    if isinstance(value, CONDITIONS):  # a condition: true or false at the values, if they decide it
         decided = value.xreplace(subs)
         return bool(decided) if isinstance(decided, BooleanAtom) else None
     number = value.xreplace(subs)
