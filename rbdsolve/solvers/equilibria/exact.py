@@ -32,7 +32,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
-from rbdsolve.solvers.shared.conditions import critical_values
+from rbdsolve.solvers.shared.conditions import critical_values, real_where
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
@@ -142,22 +142,13 @@ def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
     """Where an equilibrium exists: None if it is not real at the given parameter values,
     else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
     conditions = []
-    for condition in needed_conditions(at):
+    for condition in real_where(at.values()):
         sign = sign_of(tidy(condition), model.decided_by)
         if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
             return None  # not real for these parameter values
         if isinstance(sign, Undecided):
             conditions.append(tidy(condition))
     return tuple(conditions)
-
-
-def needed_conditions(at: Mapping) -> list[sp.Expr]:
-    """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
-    needed = set()
-    for value in at.values():
-        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
-        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
-    return sorted(needed, key=sp.default_sort_key)
 
 
 def _numeric(expr: sp.Expr, model: Model) -> bool:
@@ -330,7 +321,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
-    classified = [with_cases(classify_listed(model, x), model, needed_conditions(x.at)) for x in listed.equilibria]
+    classified = [with_cases(classify_listed(model, x), model, real_where(x.at.values())) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]

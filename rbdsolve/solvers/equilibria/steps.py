@@ -11,6 +11,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
+from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 
 
 def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Model,
@@ -35,7 +36,7 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
         if eq.exists_when is not sp.true:
             steps.append(st.result(f"Equilibrium {number} (it exists only where the following holds):",
                                    configuration(coordinates, list(eq.at.values())),
-                                   *[_condition(c, named) for c in sp.And.make_args(eq.exists_when)]))
+                                   *[condition_relation(c, named) for c in sp.And.make_args(eq.exists_when)]))
         else:
             exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
             steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
@@ -50,30 +51,10 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
         ))
         if eq.stability_cases:
             steps.append(st.result("Its stability, case by case:",
-                                   *[_condition(c.when, named, f"{c.stability.value} when")
+                                   *[condition_relation(c.when, named, f"{c.stability.value} when")
                                      for c in eq.stability_cases]))
     steps += critical_steps(answers.critical)
     return tuple(steps) + singular_steps(answers.singular_points, model)
-
-
-def critical_steps(critical, where: str = "where an equilibrium appears or its stability changes") -> list[st.Step]:
-    """The critical values by name: Ω_c = √(g/R)."""
-    named = [c for c in critical if not isinstance(c.value, sp.Symbol)]  # r < R needs no name
-    if not named:
-        return []
-    return [st.result("Critical value" + ("s" if len(named) > 1 else "") + f", {where}:",
-                      *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in named])]
-
-
-def _condition(condition, named: dict, lead: str = "") -> Relation:
-    """p < p_c with p_c by name where it is a critical value: Ω < Ω_c."""
-    ops = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
-    lhs, rhs = condition.lhs, condition.rhs
-    for c in named.values():
-        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0 \
-                and not isinstance(c.value, sp.Symbol):
-            rhs = sp.Symbol(f"{c.parameter}_c")
-    return Relation(lhs, rhs, ops.get(type(condition), "?"), lead=lead)
 
 
 def singular_steps(points, model: Model) -> tuple[st.Step, ...]:

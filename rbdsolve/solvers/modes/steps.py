@@ -14,7 +14,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.equilibria.steps import critical_steps
+from rbdsolve.solvers.shared.present_conditions import critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
 
 

@@ -77,6 +77,35 @@ def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
     return tuple(out)
 
 
+def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
+    """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
+    needed = set()
+    for value in values:
+        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
+    return sorted(needed, key=sp.default_sort_key)
+
+
+def exists_when(values: Iterable[sp.Expr], model) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
+    """Where values are real, solved for one parameter: (condition, its critical values);
+    (true, ()) where they always are; None where a condition cannot be split."""
+    from rbdsolve.solvers.shared.signs import sign_of
+
+    exists, criticals = sp.true, []
+    for condition in real_where(values):
+        condition = tidy(condition)
+        if isinstance(sign_of(condition, model.assumed), int):
+            continue
+        s = split(condition, model)
+        if s is None or (criticals and not (s.critical.parameter == criticals[0].parameter
+                                            and sp.simplify(s.critical.value - criticals[0].value) == 0)):
+            return None
+        criticals.append(s.critical)
+        held = s.sides((1,))
+        exists = sp.And(exists, s.critical.when(held[0], closed=True)) if len(held) == 1 else exists
+    return exists, tuple(criticals)
+
+
 @dataclass(frozen=True)
 class Split:
     """The sign of a quantity below and above a critical value."""

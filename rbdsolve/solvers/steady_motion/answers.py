@@ -6,6 +6,16 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from rbdsolve.solvers.shared.conditions import CriticalValue
+
+
+@dataclass(frozen=True)
+class Branch:
+    """One solution of the relations for the asked quantities, and where it is real."""
+
+    solved: dict[str, sp.Expr]
+    exists_when: sp.Basic = sp.true
+
 
 @dataclass(frozen=True)
 class SteadyMotionAnswers:
@@ -18,6 +28,8 @@ class SteadyMotionAnswers:
     solved: dict[str, sp.Expr]  # the asked quantities, from the relations
     # the reactions' other unknowns (not asked for), solved together with the asked ones
     found_along: dict[str, sp.Expr] = field(default_factory=dict)
+    branches: tuple[Branch, ...] = ()  # every solution when there are several (``solved`` is then {})
+    critical: tuple[CriticalValue, ...] = ()  # where a branch stops being real
 
 
 @dataclass(frozen=True)

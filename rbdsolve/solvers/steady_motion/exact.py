@@ -37,7 +37,8 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers
+from rbdsolve.solvers.shared.conditions import critical_values, exists_when
+from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers
 from rbdsolve.solvers.steady_motion.balances import (
     angle_of,
     angle_unknown,
@@ -64,9 +65,12 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     target = targets[0] if len(targets) == 1 else None
     relations = tuple(relation(x, target) for x in b.components if tidy_fraction(x) != 0)
     names = model.symbols.with_points(model.points)
-    solved, along = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
+    branches = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
+    solved, along = branches[0] if len(branches) == 1 else ({}, {})
+    several, critical = _branches(branches, model) if len(branches) > 1 else ((), ())
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
-                                  tuple(b.M), relations, solved, {str(u): v for u, v in along.items()})
+                                  tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
+                                  several, critical)
     steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
 
@@ -86,17 +90,18 @@ def _rolling(opts: SteadyMotionOptions, model: Model, v_C: list[sp.Matrix], omeg
 
 def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,
                rates: dict, reaction_unknowns: tuple[sp.Symbol, ...] = ()):
-    """The asked quantities from the relations that hold them, solved together with the
+    """Every solution [(asked values, the reactions' other unknowns found)]: the asked
+    quantities from the relations that hold them, solved together with the
     reactions' other unknowns (x_N alone needs N too: N x_N = … and N = m g hold them
     together), so that no answer keeps an unknown; an answer that still holds one (a
     reaction's unknown or a rate the rolling conditions leave open) is refused. Every
     other relation must then hold too (unless it holds an unknown not found), or there
     is no such steady motion. A positive quantity (ω₀²) takes only positive roots.
-    Returns the asked values and those of the reactions' other unknowns."""
+    """
     if not targets:
-        return {}, {}
+        return [({}, {})]
     if all(x in rates for x in targets):
-        return {x.text: rates[y] for x, y in zip(opts.solve_for, targets)}, {}
+        return [({x.text: rates[y] for x, y in zip(opts.solve_for, targets)}, {})]
     held = set().union(*(x.free_symbols for x in targets))
     along = [u for u in reaction_unknowns if u not in held]
     X = [sp.Dummy(f"X{i}") for i in range(len(targets))]
@@ -117,15 +122,28 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
         raise UnsolvedError(f"no steady motion: the relations have no real solution for {asked} (proved: they are "
                             "polynomial in the unknowns and the sines and cosines of the angles, solved completely)"
                             if proved else f"the relations could not be solved exactly for {asked}")
-    if len(found) != 1:
-        raise UnsolvedError(f"the relations do not give {asked} uniquely ({len(found)} solutions)")
     back = dict(zip(X, targets))
-    values = {x: tidy_fraction(sin_cos(found[0][d].xreplace(back))) for x, d in zip(targets, X)}
-    _require_known(values, unknown_symbols(model) | held)
-    found_along = {u: tidy_fraction(sin_cos(found[0][u])) for u in along
-                   if u in found[0] and not found[0][u].has(*X, *unknown_symbols(model))}
-    _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
-    return {x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along
+    out = []
+    for f in found:
+        values = {x: tidy_fraction(sin_cos(f[d].xreplace(back))) for x, d in zip(targets, X)}
+        _require_known(values, unknown_symbols(model) | held)
+        found_along = {u: tidy_fraction(sin_cos(f[u])) for u in along
+                       if u in f and not f[u].has(*X, *unknown_symbols(model))}
+        _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
+        out.append(({x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along))
+    return out
+
+
+def _branches(branches, model: Model):
+    """Every solution with where it is real (solved for one parameter: the least spin for
+    which a top's two precession rates exist), and the critical values."""
+    out, criticals = [], []
+    for solved, _ in branches:
+        found = exists_when(solved.values(), model)
+        exists, critical = found if found is not None else (sp.true, ())
+        out.append(Branch(solved, exists))
+        criticals += critical
+    return tuple(out), critical_values(criticals)
 
 
 def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[dict], bool]:

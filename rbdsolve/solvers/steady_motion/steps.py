@@ -11,6 +11,7 @@ from rbdsolve.form.display import Label, Product, Relation, Terms
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
 
 
@@ -46,6 +47,8 @@ def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptio
 def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
     """The asked values; with the reactions' other unknowns found together with them
     first (N = m g before the x_N it fixes), as a worked solution would find them."""
+    if answers.branches:
+        return _branch_steps(answers, targets)
     if not answers.solved:
         return []
     asked = [Relation(x, v) for x, v in zip(targets, answers.solved.values())]
@@ -53,6 +56,18 @@ def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
         return [st.result("Solved:", *asked)]
     return [st.result("Solved, together with the reactions' other unknowns:",
                       *[Relation(sp.Symbol(u), v) for u, v in answers.found_along.items()], *asked)]
+
+
+def _branch_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
+    """Every solution, each with where it is real, then the critical values."""
+    named = {sp.Symbol(c.parameter, positive=True): c for c in answers.critical}
+    steps = []
+    for k, branch in enumerate(answers.branches, 1):
+        where = [condition_relation(c, named) for c in sp.And.make_args(branch.exists_when)
+                 if branch.exists_when is not sp.true]
+        steps.append(st.result(f"Solution {k}" + (" (real only where the following holds)" if where else "") + ":",
+                               *[Relation(x, v) for x, v in zip(targets, branch.solved.values())], *where))
+    return steps + critical_steps(answers.critical, "where the solutions stop being real")
 
 
 def _target_first(relation: sp.Expr, target: sp.Expr | None):

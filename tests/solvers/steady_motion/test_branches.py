@@ -1,0 +1,72 @@
+"""Every branch of a steady motion (issue 19): a heavy top's two precession rates and
+the least spin for which they exist, checked by sampling.
+
+By hand (about the fixed point O, I₁ = J₁ + m h² across the axis, I₃ = J₃ along it,
+spin s relative to the precessing triad, ω₃ = s + Ω cos θ): the moment balance
+m g h sin θ = Ω sin θ (I₃ ω₃ − I₁ Ω cos θ) gives (I₁ − I₃) cos θ Ω² − I₃ s Ω + m g h = 0,
+two real rates iff I₃² s² ≥ 4 (I₁ − I₃) m g h cos θ, i.e. s ≥ s_c = 2 √((I₁ − I₃) m g h cos θ)/I₃.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+import pytest
+import sympy as sp
+
+from conftest import PROBLEMS
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+TOP = (PROBLEMS / "steady" / "heavy-top.yaml").read_text()
+TOP = (TOP.replace("solve_for: spin", "solve_for: Omega").replace("unknowns: [spin]", "unknowns: [Omega]")
+       .replace("  Omega: rate of precession\n", "  spin: spin rate relative to the precessing triad\n")
+       + "assumptions: [J1 > J3, theta < pi/2]\n")
+NAMES = ("m", "h", "J1", "J3", "g", "theta", "spin")
+
+
+def test_both_precession_rates_and_the_least_spin() -> None:
+    (solution,) = solve_problem(build_model(load_text(TOP, "top.yaml"))).solutions
+    assert solution.solved, solution.error
+    answers = solution.answers
+    assert len(answers.branches) == 2
+    symbols = {n: sp.Symbol(n, positive=True) for n in NAMES}
+    (critical,) = answers.critical
+    assert critical.parameter == "spin"
+    s_c = sp.parse_expr(str(critical.value), local_dict=symbols)
+    rng = random.Random(19)
+    for _ in range(30):
+        v = {"m": rng.uniform(0.2, 3), "h": rng.uniform(0.1, 1), "J3": rng.uniform(0.05, 1), "g": 9.81,
+             "theta": rng.uniform(0.05, 1.5)}
+        v["J1"] = v["J3"] * rng.uniform(1.05, 3)
+        I1, I3 = v["J1"] + v["m"] * v["h"] ** 2, v["J3"]
+        least = 2 * math.sqrt((I1 - I3) * v["m"] * 9.81 * v["h"] * math.cos(v["theta"])) / I3
+        at = {symbols[n]: x for n, x in v.items()}
+        assert float(s_c.subs(at)) == pytest.approx(least, rel=1e-12)
+        v["spin"] = least * rng.choice([rng.uniform(0.3, 0.97), rng.uniform(1.03, 3)])
+        at[symbols["spin"]] = v["spin"]
+        for branch in answers.branches:
+            exists = bool(sp.parse_expr(str(branch.exists_when), local_dict=symbols).subs(at))
+            assert exists == (v["spin"] >= least)
+            if exists:  # the rate solves the balance by hand
+                (rate,) = branch.solved.values()
+                W = complex(sp.N(sp.parse_expr(str(rate), local_dict=symbols).subs(at)))
+                assert abs(W.imag) < 1e-12
+                W = W.real
+                residual = (I1 - I3) * math.cos(v["theta"]) * W**2 - I3 * v["spin"] * W + v["m"] * 9.81 * v["h"]
+                assert abs(residual) < 1e-9 * (v["m"] * 9.81 * v["h"])
+
+
+def test_a_rate_under_a_root_is_solved_for() -> None:
+    # the rolling coin asked for ω₀ itself, not ω₀²: ω₀² cos θ (6R + r sin θ) = 4 g sin θ (by hand)
+    text = (PROBLEMS / "steady" / "rolling-coin.yaml").read_text().replace("solve_for: omega0**2", "solve_for: omega0")
+    (solution,) = solve_problem(build_model(load_text(text, "coin.yaml"))).solutions
+    assert solution.solved, solution.error
+    (w,) = solution.answers.solved.values()
+    R, r, g, th = sp.symbols("R r g theta", positive=True)
+    w = sp.parse_expr(str(w), local_dict={"R": R, "r": r, "g": g, "theta": th})
+    at = {R: 0.4, r: 0.02, g: 9.81, th: 0.3}
+    want = math.sqrt(4 * 9.81 * math.sin(0.3) / (math.cos(0.3) * (6 * 0.4 + 0.02 * math.sin(0.3))))
+    assert float(w.subs(at)) == pytest.approx(want, rel=1e-12)
