@@ -109,7 +109,9 @@ def test_a_slow_question_is_left_unanswered_and_the_next_one_runs() -> None:
     assert first.error == "'equilibria' ran out of its 1 s budget (--budget to change it)"
     assert second.error is None and second.answers
     assert elapsed < 1.0 + 1.0 + 1.0  # the second question (eom) takes well under 1 s
-    assert first.seconds < 1.0 + 0.2  # the overrun margin of one question
+    # the overrun of one question: sympy sees the alarm between its own steps, later on a
+    # loaded machine (1.2 s was seen with the suite running twice at once)
+    assert first.seconds < 1.0 + 0.5
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
 
 
