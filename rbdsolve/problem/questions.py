@@ -81,11 +81,15 @@ class QuestionReader:
             return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.MODES:
             about = get("about")
-            number = self.equilibrium_number(about) if about else None
-            point = self.equilibrium(about) if about and number is None else None
+            each = isinstance(about, Scalar) and about.text.strip() == "each"
+            if each and get("check_amplitudes") is not None:
+                raise InputError("'check_amplitudes' takes one equilibrium; with 'about: each' ask it in a "
+                                 "question of its own", get("check_amplitudes").loc)
+            number = self.equilibrium_number(about) if about and not each else None
+            point = self.equilibrium(about) if about and number is None and not each else None
             return Question(kind, ModesOptions(point, self.frame(get("frame")),
-                                               amplitudes(get("check_amplitudes"), get("frame")), number,
-                                               about.loc if about else None), key.loc)
+                                               amplitudes(get("check_amplitudes"), get("frame")), equilibrium=number,
+                                               each=each, loc=about.loc if about else None), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:

@@ -235,6 +235,7 @@ class ModesOptions:
     frame: str | None = None
     check_amplitudes: tuple[Fraction, ...] = ()  # amplitudes to simulate each mode at (solvers/modes/amplitude.py)
     equilibrium: int | None = None  # 'about: {equilibrium: N}', as 'equilibria' numbers them; neither: the stable one
+    each: bool = False  # 'about: each': the modes at every equilibrium
     loc: Location | None = None  # where 'about' is
 
 

@@ -32,7 +32,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
-from rbdsolve.solvers.shared.conditions import critical_values, real_where
+from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
@@ -204,7 +204,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     inertia = matrix_inertia(H, model.decided_by)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
-                           f"the sign of {sp.sstr(inertia.expr)} depends on the parameters")
+                           f"the sign of {sp.sstr(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
     if inertia.negative:
         return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
     if inertia.zero:

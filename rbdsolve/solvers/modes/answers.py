@@ -60,3 +60,19 @@ class NumericModesAnswers:
     conditions: tuple[float | None, ...] = ()  # relative condition number κ(λ) of each λ; None where neutral
     spread: float | None = None  # max |λ|/min |λ| over the modes that are not neutral
     amplitude_check: object = None  # solvers/modes/amplitude.py, with 'check_amplitudes'
+
+
+@dataclass(frozen=True)
+class Skipped:
+    """An equilibrium whose small oscillations were not answered, and why."""
+
+    about: Mapping[str, object]
+    reason: str
+
+
+@dataclass(frozen=True)
+class EachModesAnswers:
+    """'about: each': the modes at every equilibrium ``equilibria`` lists (both routes)."""
+
+    modes: tuple  # a ModesAnswers (or NumericModesAnswers) per equilibrium answered
+    skipped: tuple[Skipped, ...] = ()  # the others (a singular mass matrix, an undecidable sign)

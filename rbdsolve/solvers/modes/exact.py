@@ -29,7 +29,7 @@ import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.arrange import common_scale
+from rbdsolve.form.arrange import common_scale, configuration
 from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
@@ -38,9 +38,12 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.amplitude import with_check
-from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, MotionCase
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.equilibria.exact import listing
+from rbdsolve.solvers.shared.present_conditions import condition_relation
+from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
 from rbdsolve.solvers.modes.steps import descending, exact_steps
-from rbdsolve.solvers.shared.conditions import Side, critical_values, split
+from rbdsolve.solvers.shared.conditions import Side, critical_values, exists_when, split, what_decides
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
@@ -56,7 +59,42 @@ DET = sp.Function("det")(sp.Symbol("K", commutative=False)
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
+    if question.options.each:
+        return _at_each(model)
     at, notes = exact_equilibrium(question, model)
+    answers, steps = modes_at(at, model)
+    return with_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
+
+
+def _at_each(model: Model) -> Solution:
+    """The modes at every listed equilibrium, each under its own heading; one that
+    cannot be answered (a singular M, a sign rbdsolve cannot split) says why."""
+    names = model.coordinate_names()
+    found, skipped, steps = [], [], []
+    for k, listed in enumerate(listing(model).equilibria, 1):
+        about = {n: listed.at[q] for n, q in zip(names, model.q)}
+        where = (exists_when(listed.at.values(), model) or (sp.true, ()))[0]
+        bounds = [] if where is sp.true else [condition_relation(c, {}) for c in sp.And.make_args(where)]
+        steps.append(st.result(f"About equilibrium {k}" + (" (it exists only where the following holds)"
+                                                            if bounds else "") + ":",
+                               configuration(model.state.functions(), list(about.values())), *bounds))
+        try:
+            answers, more = modes_at(listed.at, model, where)
+        except UnsolvedError as exc:
+            skipped.append(Skipped(about, str(exc)))
+            steps.append(st.note(f"Not answered here: {exc}."))
+            continue
+        found.append(answers)
+        steps += more
+    if not found:
+        raise UnsolvedError("no equilibrium's small oscillations could be answered: " +
+                            "; ".join(s.reason for s in skipped))
+    return Solution("modes", Route.EXACT, EachModesAnswers(tuple(found), tuple(skipped)), tuple(steps))
+
+
+def modes_at(at: dict, model: Model, where: sp.Basic = sp.true) -> tuple[ModesAnswers, tuple]:
+    """The small oscillations about the equilibrium ``at`` ({q: value}) and their steps;
+    ``where``: where it exists (a case outside it is dropped)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
     K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
@@ -65,7 +103,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError(singular)
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [lam for lam, _, _ in spectrum.pairs]
-    motions, cases, criticals = _motions(eigenvalues, K, model)
+    motions, cases, criticals = _within(where, *_motions(eigenvalues, K, model))
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(spectrum, model.values)
@@ -74,8 +112,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
                            rates, tuple(eigenvalues.count(lam) for lam in eigenvalues), None,
                            cases if any(cases) else (), critical_values(criticals))
-    return with_check(question, model, Solution("modes", Route.EXACT, answers, exact_steps(answers, model, spectrum.steps),
-                                                warnings=notes))
+    return answers, exact_steps(answers, model, spectrum.steps)
 
 
 @dataclass(frozen=True)
@@ -201,8 +238,7 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
             found = _cases(lam, model)
             if found is None:
                 raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters in a "
-                                    f"way rbdsolve cannot split into cases; give values for "
-                                    f"{', '.join(sorted(str(s) for s in lam.free_symbols))} to decide")
+                                    f"way rbdsolve cannot split into cases; {what_decides(lam)}")
             motions.append(Motion.DEPENDS)
             cases.append(found[0])
             criticals.append(found[1])
@@ -210,6 +246,31 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
         motions.append(KIND[sign])
         cases.append(())
     return tuple(motions), tuple(cases), criticals
+
+
+def _within(where: sp.Basic, motions, cases, criticals):
+    """Cases outside where the equilibrium exists dropped; a λ left with one case is of
+    that kind (an off-axis equilibrium that exists only above Ω_c oscillates there)."""
+    if where is sp.true:
+        return motions, cases, criticals
+    bounds = sp.And.make_args(where)
+    kept_motions, kept_cases = [], []
+    for motion, found in zip(motions, cases):
+        found = tuple(c for c in found if not any(_opposite(c.when, b) for b in bounds))
+        if motion is Motion.DEPENDS and len(found) == 1:
+            motion, found = found[0].kind, ()
+        kept_motions.append(motion)
+        kept_cases.append(found)
+    return tuple(kept_motions), tuple(kept_cases), criticals if any(kept_cases) else []
+
+
+def _opposite(a: sp.Basic, b: sp.Basic) -> bool:
+    """p < c against p ≥ c (or p > c against p ≤ c): the two cannot both hold."""
+    if not (isinstance(a, sp.core.relational.Relational) and isinstance(b, sp.core.relational.Relational)):
+        return False
+    if a.lhs != b.lhs or sp.simplify(a.rhs - b.rhs) != 0:
+        return False
+    return {a.rel_op[0], b.rel_op[0]} == {"<", ">"}
 
 
 KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}

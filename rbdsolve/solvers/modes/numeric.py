@@ -42,7 +42,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.amplitude import with_check
-from rbdsolve.solvers.modes.answers import Motion, NumericModesAnswers
+from rbdsolve.form.arrange import configuration
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Motion, NumericModesAnswers, Skipped
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.shared.frames import require_static
@@ -58,7 +60,46 @@ EPS = float(np.finfo(float).eps)
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     require_static(model, "small oscillations")
+    if question.options.each:
+        return _at_each(model)
     about, notes = equilibrium_for_modes(question, model)
+    answers, steps, warned, estimate = modes_at(about, model)
+    return with_check(question, model, Solution("modes", Route.NUMERIC, answers, steps,
+                                                warnings=tuple(notes) + warned, error_estimate=estimate))
+
+
+def _at_each(model: Model) -> Solution:
+    """The modes at every equilibrium the numeric search lists (as 'equilibria' numbers
+    them), each under its own heading; one that cannot be answered says why."""
+    from rbdsolve.solvers.shared.numeric_model import find_numeric
+    from rbdsolve.solvers.shared.placement import numeric_listing
+
+    names = model.coordinate_names()
+    found, skipped, steps, warned, estimates = [], [], [], [], []
+    for k, (root, _) in enumerate(numeric_listing(model, find_numeric(model).equilibria)[0], 1):
+        about = {n: sp.Float(float(x), 17) for n, x in zip(names, root.at)}
+        steps.append(st.result(f"About equilibrium {k}:", configuration(model.state.functions(),
+                                                                        [sp.Float(float(x), 12) for x in root.at])))
+        try:
+            answers, more, w, estimate = modes_at(about, model)
+        except UnsolvedError as exc:
+            skipped.append(Skipped({n: float(x) for n, x in zip(names, root.at)}, str(exc)))
+            steps.append(st.note(f"Not answered here: {exc}."))
+            continue
+        found.append(answers)
+        steps += more
+        warned += [f"equilibrium {k}: {x}" for x in w]
+        estimates += [estimate] if estimate is not None else []
+    if not found:
+        raise UnsolvedError("no equilibrium's small oscillations could be answered: " +
+                            "; ".join(s.reason for s in skipped))
+    return Solution("modes", Route.NUMERIC, EachModesAnswers(tuple(found), tuple(skipped)), tuple(steps),
+                    warnings=tuple(warned), error_estimate=max(estimates, default=None))
+
+
+def modes_at(about: dict, model: Model):
+    """(answers, steps, warnings, error estimate) of the small oscillations about one
+    equilibrium ({name: value})."""
     M, K, how = linearized(model, about)
     if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
         raise UnsolvedError(singular)
@@ -76,9 +117,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         spaces.condition_M, spaces.conditions, spaces.spread)
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
-    return with_check(question, model, Solution("modes", Route.NUMERIC, answers, numeric_steps(answers, model, how),
-                                                warnings=tuple(notes) + warnings(spaces, lam, relative),
-                                                error_estimate=estimate))
+    return answers, numeric_steps(answers, model, how), warnings(spaces, lam, relative), estimate
 
 
 def classify(lam: float, bound: float) -> Motion:

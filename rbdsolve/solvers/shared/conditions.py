@@ -77,6 +77,14 @@ def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
     return tuple(out)
 
 
+def what_decides(f: sp.Expr) -> str:
+    """What a user can give to decide the sign of f, for a message: its parameters'
+    values, or an assumption."""
+    names = ", ".join(sorted(str(s) for s in f.free_symbols))
+    return (f"give values for {names}, or state the sign of {sp.sstr(f)} under 'assumptions:' "
+            "(such as [R > r])")
+
+
 def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
     """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
     needed = set()

@@ -9,8 +9,10 @@ M = m l²/3, K = c − m g l/2, λ = 3 (2c − m g l)/(2 m l²): an oscillation 
 
 from __future__ import annotations
 
+import math
 import random
 
+import pytest
 import sympy as sp
 
 from conftest import PROBLEMS
@@ -64,3 +66,43 @@ def test_the_inverted_rod_oscillates_when_the_spring_is_stiff_enough() -> None:
     m, l, g, c = (sp.Symbol(n, positive=True) for n in "mlgc")
     assert sp.simplify(sp.parse_expr(str(lam), local_dict={"m": m, "l": l, "g": g, "c": c})
                        - 3 * (2 * c - m * g * l) / (2 * m * l**2)) == 0
+
+
+def test_modes_at_every_equilibrium_with_their_cases() -> None:
+    """about: each on the hoop (no values): θ = 0 oscillates below Ω_c and grows above;
+    ±acos(g/(R Ω²)) exist only above Ω_c, where they oscillate with
+    λ = Ω² − g²/(Ω² R²) (K/M by hand); θ = π grows at γ = √(g/R + Ω²)."""
+    text = _without_values(PROBLEMS / "frames" / "rotating-hoop-slow.yaml")
+    text = text[:text.index("questions:")] + "questions:\n  - modes: {frame: hoop, about: each}\n"
+    report = solve_problem(build_model(load_text(text, "hoop.yaml")))
+    (solution,) = report.solutions
+    assert solution.solved, solution.error
+    bottom, left, right, top = solution.answers.modes
+    assert [m.value for m in bottom.motions] == ["depends"]
+    R, g, Om = (sp.Symbol(n, positive=True) for n in ("R", "g", "Omega"))
+    local = {"R": R, "g": g, "Omega": Om}
+    for side in (left, right):
+        assert [m.value for m in side.motions] == ["oscillation"]
+        (lam,) = side.eigenvalues
+        assert sp.simplify(sp.parse_expr(str(lam), local_dict=local) - (Om**2 - g**2 / (Om**2 * R**2))) == 0
+    assert [m.value for m in top.motions] == ["growth"]
+    (gamma,) = top.growth_rates
+    assert sp.simplify(sp.parse_expr(str(gamma), local_dict=local) ** 2 - (g / R + Om**2)) == 0
+
+
+def test_about_each_on_the_numeric_route() -> None:
+    """The inverted rod with c = 3/10 (m = 1, l = 2, g = 1): equilibria −θ*, 0, θ* with
+    λ = c (1 − k cos θ)/M, k = 10/3, M = 4/3 (by hand; θ* by mpmath)."""
+    import mpmath as mp
+
+    text = (PROBLEMS / "edges" / "inverted-rod-torsion-spring.yaml").read_text()
+    text = text[:text.index("values:")] + "values: {m: 1, l: 2, g: 1, c: 3/10}\n" + text[text.index("coordinates:"):]
+    text = text[:text.index("questions:")] + "questions:\n  - modes: {about: each}\n"
+    (solution,) = solve_problem(build_model(load_text(text, "rod.yaml"))).solutions
+    assert solution.solved and solution.route.value == "numeric", solution.error
+    k = mp.mpf(10) / 3
+    root = float(mp.findroot(lambda x: x - k * mp.sin(x), 2.5))
+    for modes, theta in zip(solution.answers.modes, (-root, 0.0, root)):
+        assert modes.about["theta"] == pytest.approx(theta, abs=1e-9)
+        (lam,) = modes.eigenvalues
+        assert lam == pytest.approx(0.3 * (1 - float(k) * math.cos(theta)) / (4 / 3), rel=1e-9)
