@@ -308,7 +308,7 @@ def relation_latex(rel) -> str:
 
 def _tex_text(words: str) -> str:
     """Plain words for \\text{…}: letters, digits and spaces only (they are ours)."""
-    return "".join(ch for ch in words if ch.isalnum() or ch == " ")
+    return "".join(ch for ch in words if (ch.isascii() and ch.isalnum()) or ch == " ")
 
 
 def relation_text(rel) -> str:

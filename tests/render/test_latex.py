@@ -35,6 +35,24 @@ def test_the_corpus_compiles(tmp_path) -> None:
     assert (tmp_path / "all.pdf").stat().st_size > 10_000
 
 
+def test_cases_and_conditions_compile(tmp_path) -> None:
+    """Answers case by case (issue 19): "stable when Ω < Ω_c", a mode's cases, a critical
+    value, an equilibrium that exists only where Ω ≥ Ω_c, in one document."""
+    needs_tex()
+    from rbdsolve.problem import load_text
+
+    text = "\n".join(line for line in (PROBLEMS / "frames" / "rotating-hoop-slow.yaml").read_text().splitlines()
+                     if not line.startswith("values:"))
+    text = text[:text.index("questions:")] + "questions:\n  - equilibria: {frame: hoop}\n  - modes: {frame: hoop, about: each}\n"
+    report = solve_problem(build_model(load_text(text, "hoop.yaml")))
+    source = tmp_path / "cases.tex"
+    source.write_text(render_document([report]), encoding="utf-8")
+    assert "\\text{stable when}" in source.read_text() and "\\text{oscillation when}" in source.read_text()
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", source.name],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+
+
 def test_accented_text_passes_through() -> None:
     assert text("Müller, café, Å, ö") == "Müller, café, Å, ö"
     assert text("M u\u0308 + K u = 0") == "M \\ensuremath{\\ddot{u}} + K u = 0"

@@ -12,9 +12,9 @@ from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
 from rbdsolve.form.display import Product, Relation, Terms
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.form.printers import to_unicode
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.present_conditions import critical_steps
+from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
 
 
@@ -65,7 +65,7 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
             rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
             text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
         elif motion is Motion.DEPENDS:
-            rel = [_case(c, i, lam) for c in a.cases[i - 1]]
+            rel = [r for c in a.cases[i - 1] for r in _case(c, i, lam)]
             text = f"Mode {i}: the sign of λ depends on the parameters, case by case:"
         else:
             rel = []
@@ -77,16 +77,16 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
     return tuple(steps)
 
 
-def _case(case, i: int, lam: sp.Expr) -> Relation:
-    """oscillation when Ω < Ω_c: ω₁ = √λ; growth when Ω > Ω_c: γ₁ = √(−λ)."""
+def _case(case, i: int, lam: sp.Expr) -> list[Relation]:
+    """oscillation when Ω < Ω_c, ω₁ = √λ; growth when Ω > Ω_c, γ₁ = √(−λ)."""
     p, value = case.when.lhs, case.when.rhs
-    named = value if isinstance(value, sp.Symbol) else sp.Symbol(f"{p.name}_c")
-    when = f"{case.kind.value} when {to_unicode(p)} {case.when.rel_op} {to_unicode(named)}"
+    named = {p: CriticalValue(p.name, value)}
+    condition = condition_relation(case.when, named, lead=f"{case.kind.value} when")
     if case.kind is Motion.OSCILLATION:
-        return Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)), lead=f"{when}:")
+        return [condition, Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)))]
     if case.kind is Motion.GROWTH:
-        return Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)), lead=f"{when}:")
-    return Relation(sp.Symbol(f"lambda_{i}"), sp.Integer(0), lead=f"{when}:")
+        return [condition, Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
+    return [condition, Relation(sp.Symbol(f"lambda_{i}"), sp.Integer(0))]
 
 
 EPS = 2.0**-52  # binary64's machine epsilon, in which the numeric route works
