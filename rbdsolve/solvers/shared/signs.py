@@ -65,13 +65,9 @@ def matrix_inertia(H: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> Inertia
 def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undecided:
     """−1, 0 or 1 if the parameters' signs decide it, or ``values``: numbers, or the
     substitutions of the problem's assumptions (``Model.decided_by``)."""
-    for form in (value, sp.factor(value)):
-        if form.is_zero:
-            return 0
-        if form.is_positive:
-            return 1
-        if form.is_negative:
-            return -1
+    sign = symbolic_sign(value)
+    if sign is not None:
+        return sign
     if values:
         number = value.xreplace(values)
         if number.is_number:
@@ -79,11 +75,19 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
             if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
                 return Undecided(value)  # not real at these values
             return 0 if z.real == 0 else (1 if z.real > 0 else -1)
-        for form in (number, sp.factor(number)):  # an assumption's substitution, R = r + δ with δ > 0
-            if form.is_zero:
-                return 0
-            if form.is_positive:
-                return 1
-            if form.is_negative:
-                return -1
+        sign = symbolic_sign(number)  # an assumption's substitution, R = r + δ with δ > 0
+        if sign is not None:
+            return sign
     return Undecided(value)
+
+
+def symbolic_sign(value: sp.Expr) -> int | None:
+    """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored)."""
+    for form in (value, sp.factor(value)):
+        if form.is_zero:
+            return 0
+        if form.is_positive:
+            return 1
+        if form.is_negative:
+            return -1
+    return None
