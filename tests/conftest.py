@@ -34,7 +34,7 @@ def positive_names(*texts: str) -> dict[str, sp.Symbol]:
     """Positive symbols for every free name in these strings, except t."""
     out: dict[str, sp.Symbol] = {}
     for text in texts:
-        for s in sp.sympify(text).free_symbols:
+        for s in getattr(sp.sympify(text), "free_symbols", set()):
             if s.name != "t":
                 out[s.name] = sp.Symbol(s.name, positive=True)
     out["t"] = sp.Symbol("t", real=True)
@@ -46,7 +46,24 @@ def same(a: str, b: str) -> bool:
     radicand in factored form (so √((m1+m2)(…)) and √(m1+m2)·√(expanded …) meet)."""
     names = positive_names(a, b)
     x, y = sp.sympify(a, locals=names), sp.sympify(b, locals=names)
+    if isinstance(x, (bool, sp.logic.boolalg.BooleanAtom)) or isinstance(y, (bool, sp.logic.boolalg.BooleanAtom)):
+        return bool(x) == bool(y)  # a condition that always holds: "True"
+    if isinstance(x, sp.core.relational.Relational) or isinstance(y, sp.core.relational.Relational):
+        return _same_condition(x, y)
     return sp.simplify(_canonical_radicands(x - y)) == 0
+
+
+def _same_condition(x, y) -> bool:
+    """One inequality written two ways: the same direction after moving everything to
+    one side (p < c as c > p), and the sides equal."""
+    def normal(r):
+        if r.rel_op in ("<", "<="):
+            return r.rel_op.replace("<", ">"), r.rhs - r.lhs
+        return r.rel_op, r.lhs - r.rhs
+    if not (isinstance(x, sp.core.relational.Relational) and isinstance(y, sp.core.relational.Relational)):
+        return False
+    (op_x, dx), (op_y, dy) = normal(x), normal(y)
+    return op_x == op_y and sp.simplify(_canonical_radicands(dx - dy)) == 0
 
 
 def _canonical_radicands(expr: sp.Expr) -> sp.Expr:
