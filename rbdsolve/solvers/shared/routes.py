@@ -95,7 +95,7 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
     if options.route is RouteChoice.NUMERIC:
         return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
     exact = _attempt(Route.EXACT, family.exact, question, model, options)
-    if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question):
+    if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question, _solved_for(question)):
         return exact
     solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
     if not solution.solved:
@@ -103,6 +103,12 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
                                        f"nor could the numeric route ({solution.error})")
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _solved_for(question: Question) -> tuple[str, ...]:
+    """The parameters a question solves for (steady_motion's ``solve_for: theta``): the
+    numeric route needs no value for them."""
+    return tuple(sorted({n for e in getattr(question.options, "solve_for", ()) for n in e.names()}))
 
 
 def _attempt(route: Route, solver, question: Question, model: Model, options: Options, label: str = "") -> Solution:

@@ -155,6 +155,7 @@ def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[d
     polynomial = _on_unit_circle(relations, unknowns)
     if polynomial is not None:
         system, symbols, back, determined = polynomial
+        _require_low_degree(system, symbols)
         roots = sp.solve(system, symbols, dict=True)
         out = []
         for root in roots:
@@ -167,6 +168,25 @@ def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[d
         return sp.solve(relations, unknowns, dict=True), False
     except NotImplementedError:
         return [], False
+
+
+MAX_DEGREE = 2  # in one sine after eliminating its cosine: beyond, closed forms swell (a quartic)
+
+
+def _require_low_degree(system: list[sp.Expr], symbols: list) -> None:
+    """One relation in one angle (s, c on the unit circle): eliminating c leaves a
+    polynomial in s; past MAX_DEGREE with symbolic coefficients its closed-form roots
+    are no answer (Ferrari's formula, after minutes), so say so at once (``auto`` then
+    takes the numeric route where every value is given)."""
+    if len(system) != 2 or len(symbols) != 2:
+        return
+    relation, circle = system
+    s, c = symbols
+    eliminated = sp.Poly(sp.resultant(relation, circle, c), s)
+    if eliminated.degree() > MAX_DEGREE and eliminated.free_symbols - {s}:
+        raise UnsolvedError(f"the relation is a polynomial of degree {eliminated.degree()} in the sine of the "
+                            "angle asked for, with symbolic coefficients: no compact closed form; give values "
+                            "for the parameters to solve it numerically")
 
 
 def _on_unit_circle(relations, unknowns):

@@ -70,3 +70,21 @@ def test_a_rate_under_a_root_is_solved_for() -> None:
     at = {R: 0.4, r: 0.02, g: 9.81, th: 0.3}
     want = math.sqrt(4 * 9.81 * math.sin(0.3) / (math.cos(0.3) * (6 * 0.4 + 0.02 * math.sin(0.3))))
     assert float(w.subs(at)) == pytest.approx(want, rel=1e-12)
+
+
+def test_a_tilt_with_no_compact_closed_form_falls_back_to_the_numeric_route() -> None:
+    """The rolling coin asked for its tilt θ at a given ω₀: ω₀² cos θ (6R + r sin θ) =
+    4 g sin θ is a quartic in sin θ. The exact route says so at once; auto takes the
+    numeric route (θ needs no value there), whose solutions satisfy the relation by hand."""
+    from rbdsolve.solvers import solve_file
+    from rbdsolve.solvers.shared.options import Options
+
+    text = (PROBLEMS / "steady" / "rolling-coin.yaml").read_text().replace("solve_for: omega0**2", "solve_for: theta")
+    text += "values: {m: 1, r: 1/50, R: 2/5, g: 981/100, omega0: 3}\n"
+    (solution,) = solve_file(load_text(text, "coin.yaml"), Options(budget=30)).solutions
+    assert solution.solved and solution.route.value == "numeric", solution.error
+    assert any("degree 4 in the sine" in w for w in solution.warnings)
+    for found in solution.answers.solutions:
+        th = found.unknowns["theta"]
+        residual = -6 * 0.4 * 9 * math.cos(th) + 4 * 9.81 * math.sin(th) - 9 * 0.02 * math.sin(th) * math.cos(th)
+        assert abs(residual) < 1e-9
