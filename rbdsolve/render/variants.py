@@ -34,13 +34,18 @@ def _parameter(value: Fraction) -> str:
     return NUMBER_FORMAT.format(float(value))
 
 
+def _kinds(table: VariantTable) -> tuple[tuple[str | None, ...], ...]:
+    """Each variant's kinds (a stability, a motion), or none per variant without kinds."""
+    return table.kinds or tuple(() for _ in table.draws)
+
+
 def render_csv(table: VariantTable) -> str:
     """Header: variant, seed, the ranged parameters, the answer labels; one row per variant."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["variant", "seed", *table.parameters, *table.columns])
-    for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1):
-        writer.writerow([n, table.seed, *map(_parameter, draw), *map(_number, answers)])
+    writer.writerow(["variant", "seed", *table.parameters, *table.columns, *table.kind_columns])
+    for n, (draw, answers, kinds) in enumerate(zip(table.draws, table.answers, _kinds(table)), start=1):
+        writer.writerow([n, table.seed, *map(_parameter, draw), *map(_number, answers), *(k or "" for k in kinds)])
     return out.getvalue()
 
 
@@ -53,8 +58,10 @@ def render_json(table: VariantTable) -> str:
         "fixed": {name: float(value) for name, value in table.fixed},
         "parameters": list(table.parameters),
         "columns": list(table.columns),
-        "rows": [{"variant": n, "values": [float(v) for v in draw], "answers": list(answers)}
-                 for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1)],
+        "kind_columns": list(table.kind_columns),
+        "rows": [{"variant": n, "values": [float(v) for v in draw], "answers": list(answers), "kinds": list(kinds)}
+                 for n, (draw, answers, kinds) in enumerate(zip(table.draws, table.answers, _kinds(table)),
+                                                            start=1)],
         "verified": list(table.verified),
         "notes": list(table.notes),
         "warnings": list(table.warnings),
@@ -95,10 +102,11 @@ def _answers(table: VariantTable) -> list[str]:
              f"{', '.join(map(str, table.verified)) or 'none'}.", ""]
     lines += [f"\\emph{{{text(note)}}}\\par" for note in table.notes]
     lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in table.warnings]
-    for n, (draw, answers) in enumerate(zip(table.draws, table.answers), start=1):
+    for n, (draw, answers, kinds) in enumerate(zip(table.draws, table.answers, _kinds(table)), start=1):
         lines += [f"\\subsection*{{Variant {n}}}", _values_line(table, draw) + "\\par",
                   "{\\footnotesize\\begin{longtable}{ll}"]
         lines += [f"\\texttt{{{text(c)}}} & {_number(a) or '---'} \\\\" for c, a in zip(table.columns, answers)]
+        lines += [f"\\texttt{{{text(c)}}} & {text(k or '---')} \\\\" for c, k in zip(table.kind_columns, kinds)]
         lines.append("\\end{longtable}}")
     return lines
 

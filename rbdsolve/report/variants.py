@@ -25,3 +25,5 @@ class VariantTable:
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
     verified: tuple[int, ...] = ()  # variant numbers (1-based) checked by a full solve
+    kind_columns: tuple[str, ...] = ()  # answers that are kinds ('equilibria[1].stability')
+    kinds: tuple[tuple[str | None, ...], ...] = ()  # per variant, per kind column (None: none claimed)

@@ -38,6 +38,7 @@ from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, ValueRange
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.report.variants import VariantTable
+from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
 from rbdsolve.report.tree import Path, label, leaves
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.shared.options import Options, RouteChoice
@@ -107,9 +108,12 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     warnings += _not_real(found, cells, report)
     warnings += _unvalued(problem)
     table = _table(problem, report, seed, draws, found, cells, warnings, left_out)
+    found_kinds = kinds(report.solutions, dict(model.values))
+    table = replace(table, kind_columns=tuple(label((labels[k.question], *k.path)) for k in found_kinds),
+                    kinds=per_variant(found_kinds, symbols, draws))
     checked = _spread(count, verify)
     for k in checked:
-        _verify(model, options, table, found, k)
+        _verify(model, options, table, found, found_kinds, k)
     return replace(table, verified=tuple(k + 1 for k in checked))
 
 
@@ -155,7 +159,8 @@ def _answers(report: ProblemReport, model: Model, ranged: set[sp.Symbol]
                 conditions.append((record, _fixed(leaf, model)))
             elif _is_number(leaf, model, ranged):
                 found.append(_Leaf(q, path, _fixed(leaf, model)))
-            elif leaf is not None:
+            elif leaf is not None and not is_kind(path, leaf) and "stability_cases" not in path \
+                    and "cases" not in path and "exists_when" not in path:
                 name = label((s.question, *(p for p in path if isinstance(p, str))))
                 left_out.append(name)
     return found, conditions, list(dict.fromkeys(left_out))
@@ -373,7 +378,8 @@ def _spread(count: int, verify: int) -> list[int]:
     return sorted({int(round(x)) for x in np.linspace(0, count - 1, min(verify, count))})
 
 
-def _verify(model: Model, options: Options, table: VariantTable, found: list[_Leaf], k: int) -> None:
+def _verify(model: Model, options: Options, table: VariantTable, found: list[_Leaf], found_kinds: list, k: int
+            ) -> None:
     """Solve variant ``k`` again with its values given (the ordinary solve, any route)
     and compare every number of its row; UnsolvedError on any disagreement."""
     values = dict(zip(table.parameters, table.draws[k]))
@@ -388,6 +394,7 @@ def _verify(model: Model, options: Options, table: VariantTable, found: list[_Le
         theirs.update({(q, *path): numeric(leaf, given.values) for path, leaf in leaves(s.answers)})
     row = {leaf.key: x for leaf, x in zip(found, table.answers[k])}
     _same_count(row, theirs, table.file, where)
+    _same_kinds(table, found_kinds, k, row, theirs, where)
     for column, leaf, ours in zip(table.columns, found, table.answers[k]):
         if ours is None:
             continue  # an empty cell claims nothing
@@ -398,6 +405,16 @@ def _verify(model: Model, options: Options, table: VariantTable, found: list[_Le
         if not _close(ours, other):
             raise UnsolvedError(f"{table.file}: {where}: {column} is {ours:.10g} in the table, but a full "
                                 f"solve at these values gives {other:.10g}; the table is not written")
+
+
+def _same_kinds(table: VariantTable, found_kinds: list, k: int, row: dict, theirs: dict, where: str) -> None:
+    """Each kind the table gives the variant (its case) is the full solve's there (an
+    equilibrium matched by where it is, as for the numbers)."""
+    for column, kind, ours in zip(table.kind_columns, found_kinds, table.kinds[k]):
+        other = theirs.get(_matched(kind.key, row, theirs))
+        if ours is not None and other is not None and other != ours:
+            raise UnsolvedError(f"{table.file}: {where}: {column} is {ours} in the table, but a full solve at "
+                                f"these values gives {other}; the table is not written")
 
 
 def _same_count(row: dict[tuple, float | None], theirs: dict[tuple, object], file: str, where: str) -> None:

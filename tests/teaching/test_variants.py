@@ -141,6 +141,24 @@ def test_equilibria_that_exist_only_above_the_critical_rate_are_empty_below_it()
             assert lower == pytest.approx(-upper, abs=1e-12)
 
 
+def test_each_student_gets_the_stability_of_their_case() -> None:
+    """Issue 19: the exact solve gives θ = 0 stable when Ω² < g/R and unstable above (by
+    hand: V'' = m R (g − Ω² R), here g = 9, R = 1), ±acos(g/(R Ω²)) stable where they
+    exist, π unstable; each variant's kinds are read off its own Ω, and 8 variants are
+    checked against a full solve at their values."""
+    table = variants(load_text(hoop("{range: [1, 5], step: 0.5}"), "hoop.yaml"), 30, 2, verify=8)
+    kinds = {c: [row[i] for row in table.kinds] for i, c in enumerate(table.kind_columns)}
+    for o, bottom, side, top in zip(params(table, "Omega"), kinds["equilibria.equilibria[1].stability"],
+                                    kinds["equilibria.equilibria[3].stability"],
+                                    kinds["equilibria.equilibria[4].stability"]):
+        if o**2 == 9:
+            assert bottom is None  # on the boundary: the cases do not say
+        else:
+            assert bottom == ("stable" if o**2 < 9 else "unstable")
+        assert side == (None if o**2 <= 9 else "stable")
+        assert top == "unstable"
+
+
 def test_at_the_critical_rate_the_meeting_branches_are_one_equilibrium() -> None:
     # sin θ (g − Ω²R cos θ) = 0 at Ω²R = g: θ = 0 and θ = π only (cos θ = 1 is θ = 0 again)
     table = variants(load_text(hoop("{choices: [3, 2]}"), "hoop.yaml"), 12, 0, verify=12)

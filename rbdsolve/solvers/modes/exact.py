@@ -244,7 +244,10 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
             criticals.append(found[1])
             continue
         motions.append(KIND[sign])
-        cases.append(())
+        # decided by the values: the cases still say where that holds, as for equilibria
+        found = _cases(lam, model) if model.values and isinstance(sign_of(lam, model.assumed), Undecided) else None
+        cases.append(found[0] if found else ())
+        criticals += [found[1]] if found else []
     return tuple(motions), tuple(cases), criticals
 
 
