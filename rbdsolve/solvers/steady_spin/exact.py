@@ -35,6 +35,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.exact import principal
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.steady_spin.answers import (
     Condition,
     SpinCase,
@@ -89,11 +90,10 @@ def _together(pattern, i: int, j: int) -> bool:
 
 
 def _possible(J, i: int, j: int, equal: bool, model: Model) -> bool:
-    difference = tidy_fraction(J[i] - J[j])
-    value = difference.xreplace(model.values)
-    if difference == 0 or (value.is_number and value == 0):
+    sign = sign_of(tidy_fraction(J[i] - J[j]), model.decided_by)  # values, or assumptions such as A > B
+    if sign == 0:
         return equal
-    if difference.is_nonzero or (value.is_number and value != 0):
+    if isinstance(sign, int):
         return not equal
     return True  # symbolic: both may happen
 
@@ -112,8 +112,7 @@ def _condition(pattern, J, model: Model) -> Condition:
         if tidy_fraction(J[i] - J[j]) == 0:
             root[find(j)] = find(i)
     for i, j in combinations(range(3), 2):
-        difference = tidy_fraction(J[i] - J[j])
-        if difference == 0 or difference.is_nonzero or difference.xreplace(model.values).is_number:
+        if isinstance(sign_of(tidy_fraction(J[i] - J[j]), model.decided_by), int):
             continue
         if _together(pattern, i, j):
             if find(i) != find(j):
@@ -155,9 +154,8 @@ def _distinct(k: int, J, model: Model) -> SpinStability:
     """Spin Ω e_k with three different moments: the sign of (J_k − J_i)(J_k − J_j)."""
     i, j = (n for n in range(3) if n != k)
     product = sp.factor(tidy_fraction((J[k] - J[i]) * (J[k] - J[j])))
-    value = product.xreplace(model.values)
-    positive = product.is_positive or (value.is_number and value > 0)
-    negative = product.is_negative or (value.is_number and value < 0)
+    sign = sign_of(product, model.decided_by)  # values, or assumptions such as A > B > C
+    positive, negative = sign == 1, sign == -1
     frequency = tidy(OMEGA * sp.sqrt(tidy_fraction(product / (J[i] * J[j]))))
     growth = tidy(OMEGA * sp.sqrt(tidy_fraction(-product / (J[i] * J[j]))))
     if positive:
