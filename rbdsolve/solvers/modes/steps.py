@@ -73,6 +73,10 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
         if vector is not None:
             rel.append(Relation(sp.Symbol(f"a_{i}"), vector))
         steps.append(st.result(text, *rel))
+        if motion is not Motion.DEPENDS and a.cases and a.cases[i - 1]:  # decided by the values
+            steps.append(st.note("Where that holds, case by case:", *[
+                condition_relation(c.when, {c.when.lhs: CriticalValue(c.when.lhs.name, c.when.rhs)},
+                                   lead=f"{c.kind.value} when") for c in a.cases[i - 1]]))
     steps += critical_steps(a.critical, "where a mode changes from oscillation to growth")
     return tuple(steps)
 
