@@ -21,6 +21,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.shared.conditions import Critical, Side, on_side, split
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
 
@@ -53,7 +54,7 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
                   for side in Side if side in sides)
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
-    p, named = s.critical.parameter, s.critical.name
+    p, named = to_unicode(s.critical.parameter), to_unicode(s.critical.name)
     if len(cases) == 1:
         where = f"{p} {cases[0].when.rel_op} {named}"
         reason = found.reason if decided else f"the Hessian of V keeps one sign where it exists ({where})"
