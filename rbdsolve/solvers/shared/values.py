@@ -19,10 +19,24 @@ from rbdsolve.problem.expr import Expr
 from rbdsolve.report.tree import label, leaves, map_leaves
 
 
+SAMPLE_POINTS = (1, sp.Rational(13, 10), sp.Rational(17, 7))  # each symbol without a value, in turn
+
+
 def sample(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> complex:
-    """The value at the given parameter values, every other symbol set to 1: used to
-    order symbolic results (eigenvalues, moments, equilibria) as they are at a sample."""
-    return complex(sp.N(value.xreplace({s: values.get(s, 1) for s in value.free_symbols})))
+    """The value at the given parameter values, every other symbol set to 1 (or, where
+    that divides by zero, as k − m Ω² does, to other plain numbers, each symbol its
+    own): used to order symbolic results (eigenvalues, moments, equilibria) as they are
+    at a sample. NaN where no sample gives a number."""
+    free = sorted(value.free_symbols - set(values), key=str)
+    for k, base in enumerate(SAMPLE_POINTS):
+        point = {s: base + sp.Rational(k * i, 11) for i, s in enumerate(free)}
+        try:
+            z = complex(sp.N(value.xreplace({**point, **{s: values[s] for s in value.free_symbols if s in values}})))
+        except (TypeError, ValueError):
+            continue
+        if math.isfinite(z.real) and math.isfinite(z.imag):
+            return z
+    return complex(math.nan, 0)
 
 
 # --- numeric values --------------------------------------------------------------------
