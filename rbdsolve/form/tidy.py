@@ -100,19 +100,28 @@ def _leading_plus(expr: sp.Expr) -> sp.Expr:
 
 
 def _pythagoras(expr: sp.Expr) -> sp.Expr:
-    """Use sin²x + cos²x = 1 for each angle x to shorten ``expr``, angle by angle, in
-    rounds while a round shortens it: a turned body's sin²α sin²β + sin²α cos²β + cos²α
-    shortens only once β is reduced first, then α (at most one round per angle)."""
-    angles = sorted({p.base.args[0] for p in expr.atoms(sp.Pow)
-                     if isinstance(p.base, (sp.sin, sp.cos)) and p.exp.is_even and p.exp > 0},
-                    key=sp.default_sort_key)
-    for _ in range(max(1, len(angles))):
+    """Use sin²x + cos²x = 1 for each angle x to shorten ``expr``, angle by angle. A
+    turned body's sin²α sin²β + sin²α cos²β + cos²α shortens only once β is reduced
+    first, then α: later rounds take only a rewrite that removes an angle altogether
+    (so a form that merely trades terms, as a cone's cos²α tan²α, is left as it is)."""
+    angles = _squared_angles(expr)
+    for x in angles:
+        expr = _pythagoras_in(expr, x)
+    for _ in range(len(angles)):  # later rounds: only a rewrite that removes an angle
         before = expr
-        for x in angles:
-            expr = _pythagoras_in(expr, x)
+        for x in _squared_angles(expr):
+            candidate = _pythagoras_in(expr, x)
+            if x not in _squared_angles(candidate):
+                expr = candidate
         if expr == before:
             break
     return expr
+
+
+def _squared_angles(expr: sp.Expr) -> list:
+    return sorted({p.base.args[0] for p in expr.atoms(sp.Pow)
+                   if isinstance(p.base, (sp.sin, sp.cos)) and p.exp.is_even and p.exp > 0},
+                  key=sp.default_sort_key)
 
 
 def _pythagoras_in(expr: sp.Expr, x: sp.Expr) -> sp.Expr:

@@ -54,8 +54,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     symbols = set(model.symbols.parameters.values())
     steps: list[st.Step] = list(_centre_steps(body, model, symbols))
     J_G = body.inertia_in_scene().applyfunc(tidy)
-    if J_G != body.inertia:
-        steps.append(scene_axes_step(J_G, symbols))
+    if body.rotation != sp.eye(3) and (J_G - body.inertia).applyfunc(tidy_fraction) != sp.zeros(3, 3):
+        steps.append(scene_axes_step(J_G, symbols))  # not when turning leaves it as it is (a cube)
     view = body.rotation  # body axes -> the axes J is written in
     J, about = J_G, None
     if opts.about is not None:

@@ -61,7 +61,9 @@ def _sum(a: sp.Matrix, b: sp.Matrix, symbols: set):
 
 def _unit_display(direction: sp.Matrix):
     """1/√(290 − 2√145) (0, 12, √145 − 1): a unit vector as its direction over its length."""
-    length = sp.sqrt(tidy_fraction(direction.dot(direction)))  # sin² + cos² = 1 for a turned axis
+    square = direction.dot(direction)
+    # sin² + cos² = 1 for an axis that turns; surds as they expand (1/√(290 − 2√145))
+    length = sp.sqrt(tidy_fraction(square) if direction.atoms(sp.Function) else sp.expand(square))
     vector = sp.ImmutableMatrix([list(direction)])
     return vector if length == 1 else Scaled(1 / length, vector)
 
