@@ -8,6 +8,7 @@ planar ``angle`` is a rotation about z. Energies are computed on demand
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from fractions import Fraction
 from typing import Mapping
 
@@ -89,13 +90,13 @@ class Model:
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:'
 
-    @property
+    @cached_property  # asked in every sign decision; the model never changes
     def decided_by(self) -> dict:
         """What sign decisions may use: the values, and the assumptions' substitutions
         (R = r + δ under R > r) for the parameters without one (model/assumptions.py)."""
         return decided_by(self.assumed, self.values)
 
-    @property
+    @cached_property
     def assumed(self) -> dict:
         """The assumptions' substitutions alone (signs that hold for every value allowed)."""
         return substitutions(self.assumptions, self.symbols) if self.assumptions else {}

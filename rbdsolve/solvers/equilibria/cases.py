@@ -20,35 +20,27 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
-from rbdsolve.solvers.shared.conditions import Critical, Side, on_side, split
+from rbdsolve.solvers.shared.conditions import Critical, Side, exists_when, on_side, split
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import tidy
-from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
+from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
 
 
-def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple[Equilibrium, tuple[Critical, ...]]:
+def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, tuple[Critical, ...]]:
     """The equilibrium with ``exists_when`` and ``stability_cases`` where they depend on
-    the parameters (``needed``: what must be ≥ 0 for it to be real), and the critical
-    values used. Found from the symbols, whatever values are given: with values the
-    stability itself is decided by them, and the cases say where that holds."""
-    criticals: list[Critical] = []
-    exists, sides = sp.true, set(Side)
-    for condition in (c for c in needed if not isinstance(sign_of(tidy(c), model.assumed), int)):
-        s = split(tidy(condition), model)
-        if s is None:
-            return found, ()
-        held = s.sides((1,))
-        if criticals and not _same(s.critical, criticals[0]):
-            return found, ()
-        criticals.append(s.critical)
-        sides &= set(held)
-        exists = sp.And(exists, s.critical.when(held[0], closed=True)) if len(held) == 1 else exists
+    the parameters (``values``: its coordinates, real only where ``real_where`` holds),
+    and the critical values used. Found from the symbols, whatever values are given:
+    with values the stability itself is decided by them, and the cases say where that
+    holds."""
+    existence = exists_when(values, model)
+    if existence is None:
+        return found, ()
+    exists, criticals, sides = existence.condition, existence.criticals, existence.sides
     found = replace(found, exists_when=exists)
     inertia = matrix_inertia(found.hessian, model.assumed)
     if not isinstance(inertia, Undecided):
         return found, tuple(criticals)
     s = split(inertia.expr, model)
-    if s is None or (criticals and not _same(s.critical, criticals[0])):
+    if s is None or (criticals and not s.critical.same_as(criticals[0])):
         return found, tuple(criticals)
     cases = tuple(StabilityCase(s.critical.when(side), _stability_on(found.hessian, s.critical, side))
                   for side in Side if side in sides)
@@ -64,10 +56,6 @@ def with_cases(found: Equilibrium, model: Model, needed: list[sp.Expr]) -> tuple
         return replace(found, stability_cases=cases), (*criticals, s.critical)
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
                     reason=f"the Hessian of V changes sign at {p} = {named}"), (*criticals, s.critical))
-
-
-def _same(a: Critical, b: Critical) -> bool:
-    return a.parameter == b.parameter and sp.simplify(a.value - b.value) == 0
 
 
 def _stability_on(H: sp.Matrix, critical: Critical, side: Side) -> Stability:

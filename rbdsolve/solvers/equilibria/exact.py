@@ -321,7 +321,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
-    classified = [with_cases(classify_listed(model, x), model, real_where(x.at.values())) for x in listed.equilibria]
+    classified = [with_cases(classify_listed(model, x), model, x.at.values()) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]

@@ -27,6 +27,7 @@ from typing import Iterable
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy
+from rbdsolve.solvers.shared.signs import sign_of, symbolic_sign
 
 SAMPLES = 8
 RATE_WORDS = ("omega", "spin", "rate", "speed", "angular")  # exams ask "above which rate"
@@ -51,6 +52,9 @@ class Critical:
         if isinstance(self.value, sp.Symbol):
             return self.value
         return sp.Symbol(f"{self.parameter.name}_c", positive=True)
+
+    def same_as(self, other: Critical) -> bool:
+        return self.parameter == other.parameter and sp.simplify(self.value - other.value) == 0
 
     def when(self, side: Side, closed: bool = False) -> sp.Boolean:
         """p < p_c or p > p_c (≤, ≥ with ``closed``), in the parameters' own symbols."""
@@ -94,24 +98,33 @@ def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
     return sorted(needed, key=sp.default_sort_key)
 
 
-def exists_when(values: Iterable[sp.Expr], model) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
-    """Where values are real, solved for one parameter: (condition, its critical values);
-    (true, ()) where they always are; None where a condition cannot be split."""
-    from rbdsolve.solvers.shared.signs import sign_of
+@dataclass(frozen=True)
+class Existence:
+    """Where values are real: the condition solved for one parameter (true: always),
+    the critical values it uses, and the sides of the first one where they are real."""
 
-    exists, criticals = sp.true, []
+    condition: sp.Basic
+    criticals: tuple[Critical, ...]
+    sides: frozenset[Side]
+
+
+def exists_when(values: Iterable[sp.Expr], model) -> Existence | None:
+    """Where ``values`` are real (``real_where``), each condition the assumptions do not
+    decide split at its critical value; None where one cannot be split, or two split at
+    different critical values."""
+    exists, criticals, sides = sp.true, [], set(Side)
     for condition in real_where(values):
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
         s = split(condition, model)
-        if s is None or (criticals and not (s.critical.parameter == criticals[0].parameter
-                                            and sp.simplify(s.critical.value - criticals[0].value) == 0)):
+        if s is None or (criticals and not s.critical.same_as(criticals[0])):
             return None
         criticals.append(s.critical)
         held = s.sides((1,))
+        sides &= set(held)
         exists = sp.And(exists, s.critical.when(held[0], closed=True)) if len(held) == 1 else exists
-    return exists, tuple(criticals)
+    return Existence(exists, tuple(criticals), frozenset(sides))
 
 
 @dataclass(frozen=True)
@@ -211,11 +224,9 @@ def _sample(model, rng: random.Random, leave: tuple = ()) -> dict | None:
 def _sign_on(f: sp.Expr, critical: Critical, side: Side, model) -> int | None:
     """f's sign on one side: exactly (δ positive), else by agreeing samples."""
     value, delta = on_side(f, critical, side)
-    for form in (value, sp.factor(tidy(value))):
-        if form.is_positive:
-            return 1
-        if form.is_negative:
-            return -1
+    sign = symbolic_sign(tidy(value))
+    if sign:
+        return sign
     rng = random.Random(20)
     signs = set()
     for _ in range(SAMPLES):

@@ -33,6 +33,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import memoized, potential_energy
+from rbdsolve.solvers.shared.values import parameter_sample
 
 DIGITS = 30
 RANK_TOL = mp.mpf(10) ** -20
@@ -86,9 +87,7 @@ def _gradient(model: Model) -> sp.Matrix:
 @memoized
 def _sample(model: Model) -> dict[sp.Symbol, sp.Expr]:
     """The parameters at their values, or at fixed random samples in [1.1, 2.9]."""
-    rng = random.Random(2026)
-    return {s: model.values.get(s, sp.Rational(rng.randint(1100, 2900), 1000))
-            for s in model.symbols.parameters.values()}
+    return parameter_sample(model, random.Random(2026))
 
 
 NUMERIC_TOL = mp.mpf(10) ** -7  # for a point known to floating-point accuracy only

@@ -15,6 +15,7 @@ from rbdsolve.model.energy import Energy, kinetic_energy, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
 from rbdsolve.solvers.shared.present import present
+from rbdsolve.solvers.shared.values import parameter_sample
 
 
 def coordinates_only(model: Model) -> ModelSummary:
@@ -86,9 +87,9 @@ def _pivot(model: Model, position: sp.Matrix) -> str | None:
     simplified: a constant distance needs sin² + cos² = 1 and its like, which the
     samples see at once."""
     rng = random.Random(26)
-    draw = lambda: sp.Rational(rng.randint(1100, 2900), 1000)  # noqa: E731
-    parameters = {s: model.values.get(s, draw()) for s in model.symbols.parameters.values()}
-    samples = [{**parameters, **{q: draw() for q in model.q}} for _ in range(3)]
+    parameters = parameter_sample(model, rng)
+    samples = [{**parameters, **{q: sp.Rational(rng.randint(1100, 2900), 1000) for q in model.q}}
+               for _ in range(3)]
     for name, point in model.points.items():
         r = position - point
         if not r.free_symbols & set(model.q):

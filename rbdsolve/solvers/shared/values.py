@@ -39,6 +39,14 @@ def sample(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> complex:
     return complex(math.nan, 0)
 
 
+def parameter_sample(model, rng) -> dict[sp.Symbol, sp.Expr]:
+    """The parameters at their values, the others at pseudo-random rationals in
+    [1.1, 2.9] drawn from ``rng`` (seeded by the caller: the same every run): a generic
+    point to test an identity, a rank or a twin at."""
+    return {s: model.values.get(s, sp.Rational(rng.randint(1100, 2900), 1000))
+            for s in model.symbols.parameters.values()}
+
+
 # --- numeric values --------------------------------------------------------------------
 
 

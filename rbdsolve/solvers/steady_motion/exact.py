@@ -37,6 +37,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.values import parameter_sample
 from rbdsolve.solvers.shared.conditions import critical_values, exists_when
 from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers
 from rbdsolve.solvers.steady_motion.balances import (
@@ -140,9 +141,8 @@ def _branches(branches, model: Model):
     out, criticals = [], []
     for solved, _ in branches:
         found = exists_when(solved.values(), model)
-        exists, critical = found if found is not None else (sp.true, ())
-        out.append(Branch(solved, exists))
-        criticals += critical
+        out.append(Branch(solved, found.condition if found else sp.true))
+        criticals += found.criticals if found else ()
     return tuple(out), critical_values(criticals)
 
 
@@ -216,9 +216,7 @@ def _once(found: list[dict], relations, model: Model) -> list[dict]:
     turn, or twins, a half turn of every angle unknown with the other unknowns' signs
     turned where that leaves the relations as they are (β + π with −φ̇: the motion
     turned over). The representative: the least in size at a sample."""
-    rng = random.Random(26)
-    sample = {s: model.values.get(s, sp.Rational(rng.randint(1100, 2900), 1000))
-              for s in model.symbols.parameters.values()}
+    sample = parameter_sample(model, random.Random(26))
     out: list[dict] = []
     for f in sorted(found, key=lambda f: [abs(complex(sp.N(sp.sympify(v).xreplace(sample), 15))) for v in f.values()]):
         if not any(twin(f, g, relations, sample) for g in out):
