@@ -152,8 +152,11 @@ class UnicodePrinter(StrPrinter):
 
 
 def _rational_lead(expr: sp.Mul) -> tuple[str, sp.Rational, sp.Expr] | None:
-    """(sign, |c|, rest) for c·rest with a proper fraction c written first: 7/8 θ̇²."""
+    """(sign, |c|, rest) for c·rest with a proper fraction c written first: 7/8 θ̇²;
+    None for a number (π/2 reads as itself)."""
     coeff, rest = expr.as_coeff_Mul()
+    if coeff.is_Rational and not rest.free_symbols:
+        return None
     if coeff.is_Rational and not coeff.is_Integer and rest != 1 and not _has_denominator(rest):
         return ("-" if coeff < 0 else ""), abs(coeff), rest
     return None

@@ -70,13 +70,14 @@ def check(assumptions: tuple[Assumed, ...], values: Mapping[sp.Symbol, sp.Expr],
 
 
 def admissible_sample(assumptions, names: Symbols, rng: random.Random, fixed: Mapping = (),
-                      symbols=None, tries: int = SAMPLES) -> dict | None:
+                      symbols=None, tries: int = SAMPLES, ranges: Mapping = {}) -> dict | None:
     """Random values for the parameters (positive where declared so, 10⁻³ to 10³ in a
-    log-uniform draw) satisfying every assumption; None after ``tries``."""
+    log-uniform draw; uniform in (a, b) where ``ranges`` gives one, an angle's)
+    satisfying every assumption; None after ``tries``."""
     fixed = dict(fixed)
     symbols = [s for s in (symbols or names.parameters.values()) if s not in fixed]
     for _ in range(tries):
-        point = {s: _draw(s, rng) for s in symbols} | fixed
+        point = {s: _within(ranges[s], rng) if s in ranges else _draw(s, rng) for s in symbols} | fixed
         if all(_holds(a.difference.xreplace(point), a.strict) for a in assumptions):
             return point
     return None
@@ -85,6 +86,11 @@ def admissible_sample(assumptions, names: Symbols, rng: random.Random, fixed: Ma
 def _draw(s: sp.Symbol, rng: random.Random) -> sp.Expr:
     size = sp.Rational(round(10 ** rng.uniform(-3, 3) * 10**6), 10**6)
     return size if s.is_positive or rng.random() < 0.5 else -size
+
+
+def _within(span, rng: random.Random) -> sp.Expr:
+    low, high = span
+    return low + (high - low) * sp.Rational(rng.randint(1, 999), 1000)
 
 
 def _holds(number: sp.Expr, strict: bool) -> bool:

@@ -28,7 +28,9 @@ class SteadyMotionAnswers:
     solved: dict[str, sp.Expr]  # the asked quantities, from the relations
     # the reactions' other unknowns (not asked for), solved together with the asked ones
     found_along: dict[str, sp.Expr] = field(default_factory=dict)
-    branches: tuple[Branch, ...] = ()  # every solution when there are several (``solved`` is then {})
+    # every solution when there are several (``solved`` is then {}), or the one solution
+    # where it is real only under a condition
+    branches: tuple[Branch, ...] = ()
     critical: tuple[CriticalValue, ...] = ()  # where a branch stops being real
 
 

@@ -68,7 +68,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     names = model.symbols.with_points(model.points)
     branches = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
     solved, along = branches[0] if len(branches) == 1 else ({}, {})
-    several, critical = _branches(branches, model) if len(branches) > 1 else ((), ())
+    several, critical = _branches(branches, targets, model)
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
                                   several, critical)
@@ -135,14 +135,20 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
     return out
 
 
-def _branches(branches, model: Model):
+def _branches(branches, targets, model: Model):
     """Every solution with where it is real (solved for one parameter: the least spin for
-    which a top's two precession rates exist), and the critical values."""
+    which a top's two precession rates exist, the tilt below which a coin's rate is;
+    the value of a square, ω₀², must be ≥ 0), and the critical values; none for one
+    solution that is real everywhere."""
     out, criticals = [], []
+    squares = [k for k, t in enumerate(targets) if t.is_Pow and t.exp.is_even and t.base.is_real]
     for solved, _ in branches:
-        found = exists_when(solved.values(), model)
+        values = list(solved.values())
+        found = exists_when(values, model, [values[k] for k in squares])
         out.append(Branch(solved, found.condition if found else sp.true))
         criticals += found.criticals if found else ()
+    if len(out) == 1 and out[0].exists_when is sp.true:
+        return (), ()
     return tuple(out), critical_values(criticals)
 
 

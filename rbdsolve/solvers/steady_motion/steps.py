@@ -65,7 +65,8 @@ def _branch_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
     for k, branch in enumerate(answers.branches, 1):
         where = [condition_relation(c, named) for c in sp.And.make_args(branch.exists_when)
                  if branch.exists_when is not sp.true]
-        steps.append(st.result(f"Solution {k}" + (" (real only where the following holds)" if where else "") + ":",
+        name = "Solved" if len(answers.branches) == 1 else f"Solution {k}"
+        steps.append(st.result(name + (" (real only where the following holds)" if where else "") + ":",
                                *[Relation(x, v) for x, v in zip(targets, branch.solved.values())], *where))
     return steps + critical_steps(answers.critical, "where the solutions stop being real")
 

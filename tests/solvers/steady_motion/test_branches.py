@@ -88,3 +88,23 @@ def test_a_tilt_with_no_compact_closed_form_falls_back_to_the_numeric_route() ->
         th = found.unknowns["theta"]
         residual = -6 * 0.4 * 9 * math.cos(th) + 4 * 9.81 * math.sin(th) - 9 * 0.02 * math.sin(th) * math.cos(th)
         assert abs(residual) < 1e-9
+
+
+@pytest.mark.parametrize("asked", ["omega0**2", "omega0"])
+def test_the_coins_tilt_condition_holds_on_each_side(asked) -> None:
+    """ω₀² = 4 g sin θ/((6R + r sin θ) cos θ) must be ≥ 0 (ω₀ real). The tilt is a positive
+    angle parameter, studied in (0, π): the condition printed is sampled on both sides
+    against the sign of the right side computed here, not by rbdsolve."""
+    text = (PROBLEMS / "steady" / "rolling-coin.yaml").read_text().replace("solve_for: omega0**2",
+                                                                           f"solve_for: {asked}")
+    (solution,) = solve_problem(build_model(load_text(text, "coin.yaml"))).solutions
+    (branch,) = solution.answers.branches
+    (critical,) = solution.answers.critical
+    assert (critical.parameter, critical.value) == ("theta", sp.pi / 2)
+    R, r, g, th = sp.symbols("R r g theta", positive=True)
+    when = sp.parse_expr(str(branch.exists_when), local_dict={"R": R, "r": r, "g": g, "theta": th})
+    rng = random.Random(7)
+    for _ in range(40):
+        v = {R: rng.uniform(0.01, 5), r: rng.uniform(0.01, 5), g: rng.uniform(1, 20), th: rng.uniform(0.01, 3.13)}
+        square = 4 * v[g] * math.sin(v[th]) / ((6 * v[R] + v[r] * math.sin(v[th])) * math.cos(v[th]))
+        assert bool(when.subs(v)) == (square > 0)
