@@ -22,6 +22,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.shared.conditions import Critical, Side, exists_when, on_side, split
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
 
 
@@ -39,7 +40,7 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
     inertia = matrix_inertia(found.hessian, model.assumed)
     if not isinstance(inertia, Undecided):
         return found, tuple(criticals)
-    s = split(inertia.expr, model)
+    s = split(_boundary(found.hessian), model)
     if s is None or (criticals and not s.critical.same_as(criticals[0])):
         return found, tuple(criticals)
     cases = tuple(StabilityCase(s.critical.when(side), _stability_on(found.hessian, s.critical, side))
@@ -54,8 +55,16 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
                        reason=reason), (*criticals, s.critical)
     if decided:  # the values decide; the cases say where that holds
         return replace(found, stability_cases=cases), (*criticals, s.critical)
+    what = "the Hessian of V changes sign" if found.hessian.rows == 1 else "an eigenvalue of the Hessian of V changes sign (det K = 0)"
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
-                    reason=f"the Hessian of V changes sign at {p} = {named}"), (*criticals, s.critical))
+                    reason=f"{what} at {p} = {named}"), (*criticals, s.critical))
+
+
+def _boundary(H: sp.Matrix) -> sp.Expr:
+    """What vanishes where the stability can change: det K, zero exactly where an
+    eigenvalue of K crosses zero (the trace or an entry changing sign decides nothing
+    alone: a double pendulum's K₁₁ changes sign above where it stops being stable)."""
+    return sp.factor(tidy(sp.Matrix(H).det()))
 
 
 def _stability_on(H: sp.Matrix, critical: Critical, side: Side) -> Stability:

@@ -32,6 +32,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
+from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
@@ -124,7 +125,7 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
     symbols = [*s.values(), *c.values(), *plain]
     if not symbols:
         return [{}]
-    roots = sp.solve(system, symbols, dict=True, check=False)  # polynomial: nothing to check
+    roots = polynomial_roots(system, symbols, "the equilibrium equations")
     out = []
     for root in roots:
         if any(sp.sympify(v).is_real is False for v in root.values()):

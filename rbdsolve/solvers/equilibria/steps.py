@@ -31,12 +31,11 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
                   + (" (angles in (−π, π])" if periodic else "") + ":"),
     ]
     coordinates = model.state.functions()
-    named = {sp.Symbol(c.parameter, positive=True): c for c in answers.critical}
     for number, eq in enumerate(equilibria, start=1):
         if eq.exists_when is not sp.true:
             steps.append(st.result(f"Equilibrium {number} (it exists only where the following holds):",
                                    configuration(coordinates, list(eq.at.values())),
-                                   *[condition_relation(c, named) for c in sp.And.make_args(eq.exists_when)]))
+                                   *[condition_relation(c, answers.critical) for c in sp.And.make_args(eq.exists_when)]))
         else:
             exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
             steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),
@@ -51,7 +50,7 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
         ))
         if eq.stability_cases:
             steps.append(st.result("Its stability, case by case:",
-                                   *[condition_relation(c.when, named, f"{c.stability.value} when")
+                                   *[condition_relation(c.when, answers.critical, f"{c.stability.value} when")
                                      for c in eq.stability_cases]))
     steps += critical_steps(answers.critical)
     return tuple(steps) + singular_steps(answers.singular_points, model)

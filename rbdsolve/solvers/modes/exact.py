@@ -75,7 +75,7 @@ def _at_each(model: Model) -> Solution:
         about = {n: listed.at[q] for n, q in zip(names, model.q)}
         found_real = exists_when(listed.at.values(), model)
         where = found_real.condition if found_real else sp.true
-        bounds = [] if where is sp.true else [condition_relation(c, {}) for c in sp.And.make_args(where)]
+        bounds = [] if where is sp.true else [condition_relation(c) for c in sp.And.make_args(where)]
         steps.append(st.result(f"About equilibrium {k}" + (" (it exists only where the following holds)"
                                                             if bounds else "") + ":",
                                configuration(model.state.functions(), list(about.values())), *bounds))

@@ -13,7 +13,6 @@ from rbdsolve.form.display import Product, Relation, Terms
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.conditions import CriticalValue
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
 
@@ -65,7 +64,7 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
             rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
             text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
         elif motion is Motion.DEPENDS:
-            rel = [r for c in a.cases[i - 1] for r in _case(c, i, lam)]
+            rel = [r for c in a.cases[i - 1] for r in _case(c, i, lam, a.critical)]
             text = f"Mode {i}: the sign of λ depends on the parameters, case by case:"
         else:
             rel = []
@@ -75,17 +74,14 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
         steps.append(st.result(text, *rel))
         if motion is not Motion.DEPENDS and a.cases and a.cases[i - 1]:  # decided by the values
             steps.append(st.note("Where that holds, case by case:", *[
-                condition_relation(c.when, {c.when.lhs: CriticalValue(c.when.lhs.name, c.when.rhs)},
-                                   lead=f"{c.kind.value} when") for c in a.cases[i - 1]]))
+                condition_relation(c.when, a.critical, lead=f"{c.kind.value} when") for c in a.cases[i - 1]]))
     steps += critical_steps(a.critical, "where a mode changes from oscillation to growth")
     return tuple(steps)
 
 
-def _case(case, i: int, lam: sp.Expr) -> list[Relation]:
+def _case(case, i: int, lam: sp.Expr, critical) -> list[Relation]:
     """oscillation when Ω < Ω_c, ω₁ = √λ; growth when Ω > Ω_c, γ₁ = √(−λ)."""
-    p, value = case.when.lhs, case.when.rhs
-    named = {p: CriticalValue(p.name, value)}
-    condition = condition_relation(case.when, named, lead=f"{case.kind.value} when")
+    condition = condition_relation(case.when, critical, lead=f"{case.kind.value} when")
     if case.kind is Motion.OSCILLATION:
         return [condition, Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)))]
     if case.kind is Motion.GROWTH:

@@ -311,6 +311,8 @@ def _one_root(value: sp.Expr) -> sp.Expr:
     """√g/√R as √(g/R), the form an exam writes (kept unevaluated: sympy would split
     the root of a quotient of positive symbols again)."""
     square = sp.factor(value**2)
+    if square.could_extract_minus_sign():  # −g (−2 + √2)/l: a sign taken into the sum, (2 − √2) g/l
+        square = sp.factor_terms(sp.expand(value**2))
     if value.has(sp.Pow) and not square.has(sp.sqrt) and not square.is_Pow:
         return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
     return value

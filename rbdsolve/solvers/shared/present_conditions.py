@@ -1,8 +1,11 @@
 """Conditions on the parameters as a worked solution writes them: Ω < Ω_c with the
 critical value by name (Ω_c = √(g/R)), or r < R where the critical value is another
-parameter; shared by every family that answers case by case."""
+parameter, θ < π/2 where it is a number; several critical values of one parameter are
+Ω_c1 < Ω_c2 … in increasing order. Shared by every family that answers case by case."""
 
 from __future__ import annotations
+
+from typing import Sequence
 
 import sympy as sp
 
@@ -16,21 +19,39 @@ def _named(value: sp.Expr) -> bool:
     return not isinstance(value, sp.Symbol) and bool(value.free_symbols)
 
 
+def _size(value: sp.Expr) -> float:
+    """The value with every parameter 1 (the order of Ω_c1 and Ω_c2)."""
+    z = complex(sp.N(value.xreplace({s: 1 for s in value.free_symbols}), 15))
+    return z.real if abs(z.imag) < 1e-12 else float("inf")
+
+
+def critical_names(critical: Sequence) -> list[tuple[object, sp.Symbol]]:
+    """(critical value, its name) for those that get a name: Ω_c, or Ω_c1, Ω_c2, … in
+    increasing order where one parameter has several."""
+    named = [c for c in critical if _named(c.value)]
+    out = []
+    for parameter in dict.fromkeys(c.parameter for c in named):
+        own = sorted((c for c in named if c.parameter == parameter), key=lambda c: _size(c.value))
+        suffixes = [""] if len(own) == 1 else [str(k) for k in range(1, len(own) + 1)]
+        out += [(c, sp.Symbol(f"{parameter}_c{k}")) for c, k in zip(own, suffixes)]
+    return out
+
+
 def critical_steps(critical, where: str = "where an equilibrium appears or its stability changes") -> list[st.Step]:
     """The critical values by name: Ω_c = √(g/R)."""
-    named = [c for c in critical if _named(c.value)]
-    if not named:
+    names = critical_names(critical)
+    if not names:
         return []
-    return [st.result("Critical value" + ("s" if len(named) > 1 else "") + f", {where}:",
-                      *[Relation(sp.Symbol(f"{c.parameter}_c"), c.value) for c in named])]
+    return [st.result("Critical value" + ("s" if len(names) > 1 else "") + f", {where}:",
+                      *[Relation(name, c.value) for c, name in names])]
 
 
-def condition_relation(condition, named: dict, lead: str = "") -> Relation:
-    """p < p_c with p_c by name where it is a critical value: Ω < Ω_c."""
+def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Relation:
+    """p < p_c with p_c by name where it is one of the ``critical`` values: Ω < Ω_c."""
     ops = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
     lhs, rhs = condition.lhs, condition.rhs
-    for c in named.values():
-        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0 \
-                and _named(c.value):
-            rhs = sp.Symbol(f"{c.parameter}_c")
+    for c, name in critical_names(critical):
+        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
+            rhs = name
+            break
     return Relation(lhs, rhs, ops.get(type(condition), "?"), lead=lead)

@@ -37,6 +37,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
 from rbdsolve.solvers.shared.conditions import critical_values, exists_when
 from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers
@@ -162,7 +163,7 @@ def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[d
     if polynomial is not None:
         system, symbols, back, determined = polynomial
         _require_low_degree(system, symbols)
-        roots = sp.solve(system, symbols, dict=True)
+        roots = polynomial_roots(system, symbols, "the relations")
         out = []
         for root in roots:
             if any(sp.sympify(v).is_real is False for v in root.values()):

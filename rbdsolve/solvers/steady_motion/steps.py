@@ -60,10 +60,9 @@ def _solved_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
 
 def _branch_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
     """Every solution, each with where it is real, then the critical values."""
-    named = {sp.Symbol(c.parameter, positive=True): c for c in answers.critical}
     steps = []
     for k, branch in enumerate(answers.branches, 1):
-        where = [condition_relation(c, named) for c in sp.And.make_args(branch.exists_when)
+        where = [condition_relation(c, answers.critical) for c in sp.And.make_args(branch.exists_when)
                  if branch.exists_when is not sp.true]
         name = "Solved" if len(answers.branches) == 1 else f"Solution {k}"
         steps.append(st.result(name + (" (real only where the following holds)" if where else "") + ":",

@@ -1,0 +1,33 @@
+"""Every root of a polynomial system, or a refusal: never a list with roots left out.
+
+sympy's ``solve`` finds a polynomial system's roots from a lexicographic Gröbner basis,
+one variable at a time, and silently drops the roots of a factor it cannot solve in
+radicals (an irreducible sextic in cos θ₂ for a double pendulum on a turntable: four
+equilibria listed of twelve). ``solve_poly_system(..., strict=True)`` raises instead
+(sympy's ``UnsolvableFactorError``), which is turned into ``UnsolvedError`` here, so
+a route that calls its list complete only does so when it is. A system whose
+solutions form a family (not zero-dimensional) is left to sympy's ``solve``, which
+returns the family with some symbols free.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.polys.polyerrors import PolynomialError, UnsolvableFactorError
+from sympy.solvers.polysys import SolveFailed, solve_poly_system
+
+from rbdsolve.errors import UnsolvedError
+
+
+def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str) -> list[dict]:
+    """Every root {symbol: value} of the polynomial ``system``; UnsolvedError naming
+    ``what`` where some root has no closed form."""
+    try:
+        found = solve_poly_system(system, *symbols, strict=True)
+    except UnsolvableFactorError:
+        raise UnsolvedError(f"{what} reduce to a polynomial with a factor whose roots have no closed form "
+                            f"(in radicals): an exact list would leave solutions out; give values for "
+                            f"the parameters to solve it numerically") from None
+    except (NotImplementedError, PolynomialError, SolveFailed):
+        return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
+    return [dict(zip(symbols, root)) for root in found or []]
