@@ -87,10 +87,12 @@ def plain(value: Math):
 @dataclass(frozen=True)
 class Relation:
     """[lead] lhs op rhs [= more …], e.g. T = T₁ + T₂ = m r² […], or, following the
-    previous relation, ⇒ 25/48 μ² − 37/24 μ + 1 = 0 (lead '⇒')."""
+    previous relation, ⇒ 25/48 μ² − 37/24 μ + 1 = 0 (lead '⇒'); ``more_op`` chains
+    another relation instead of =: Ω_c1 < Ω < Ω_c2."""
 
     lhs: Math
     rhs: Math
     op: str = "="
     more: tuple[Math, ...] = ()
     lead: str = ""
+    more_op: str = "="

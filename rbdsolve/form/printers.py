@@ -305,7 +305,7 @@ def relation_latex(rel) -> str:
     text, ≥ and ≤ as \\geq and \\leq (one home for every renderer that writes TeX)."""
     lead = "" if not rel.lead else r"\Rightarrow" if rel.lead == "⇒" else rf"\text{{{_tex_text(rel.lead)}}}\;"
     parts = [lead, to_latex(rel.lhs), LATEX_OPS.get(rel.op, rel.op), to_latex(rel.rhs)]
-    parts += [f"= {to_latex(m)}" for m in rel.more]
+    parts += [f"{LATEX_OPS.get(rel.more_op, rel.more_op)} {to_latex(m)}" for m in rel.more]
     return " ".join(p for p in parts if p)
 
 
@@ -317,5 +317,5 @@ def _tex_text(words: str) -> str:
 def relation_text(rel) -> str:
     """A Relation (report.steps) in readable unicode: ⇒ T = T₁ + T₂ = …"""
     parts = [rel.lead, to_unicode(rel.lhs), rel.op, to_unicode(rel.rhs)]
-    parts += [f"= {to_unicode(m)}" for m in rel.more]
+    parts += [f"{rel.more_op} {to_unicode(m)}" for m in rel.more]
     return " ".join(p for p in parts if p)

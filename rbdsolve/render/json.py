@@ -48,6 +48,8 @@ def relation(rel: Relation) -> dict:
     out = {"lhs": _math(rel.lhs), "op": rel.op, "rhs": _math(rel.rhs)}
     if rel.more:
         out["more"] = [_math(m) for m in rel.more]
+    if rel.more_op != "=":
+        out["more_op"] = rel.more_op
     if rel.lead:
         out["lead"] = rel.lead
     out["latex"] = relation_latex(rel)

@@ -1,15 +1,16 @@
 """Equilibria whose existence or stability depends on the parameters, as exams state
 them: "exists when Ω ≥ Ω_c", "stable when Ω < Ω_c, unstable when Ω > Ω_c", with
-Ω_c = √(g/R) (``solvers/shared/conditions.py`` finds the critical value and the sign
-on each side).
+Ω_c = √(g/R) (``solvers/shared/conditions.py`` cuts a parameter's range into pieces
+at its critical values and finds the sign on each).
 
 Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos) that the parameters'
-signs do not decide, split at its critical value, holds on the sides where c > 0,
-boundary included. Stability: the quantity whose
-sign decides it (``signs.matrix_inertia``'s undecided expression) is split, and on each
-side where the equilibrium exists the Hessian is classified again with the parameter
-put in as p_c (1 + δ)^{±1}, δ > 0. What cannot be split stays as before: undetermined,
-with the conditions as they were.
+signs do not decide holds on the pieces where c > 0, a boundary included where c is
+finite. Stability can change only where an eigenvalue of the Hessian K crosses zero,
+where det K = 0: det K is cut into pieces, and on each where the equilibrium exists K
+is classified again with the parameter put in at a point of the piece (δ > 0 moving
+it across); neighbours of one stability are one case (a double pendulum on a turntable
+is stable below Ω_c1 and unstable above, whatever det K does past Ω_c2). What cannot
+be split stays as before: undetermined, with the conditions as they were.
 """
 
 from __future__ import annotations
@@ -20,7 +21,8 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
-from rbdsolve.solvers.shared.conditions import Critical, Side, exists_when, on_side, split
+from rbdsolve.solvers.shared.condition_roots import angle_parameters
+from rbdsolve.solvers.shared.conditions import Critical, Piece, at_samples, exists_when, partition, within
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
@@ -35,29 +37,52 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
     existence = exists_when(values, model)
     if existence is None:
         return found, ()
-    exists, criticals, sides = existence.condition, existence.criticals, existence.sides
-    found = replace(found, exists_when=exists)
+    found = replace(found, exists_when=existence.condition)
+    criticals = existence.criticals
     inertia = matrix_inertia(found.hessian, model.assumed)
     if not isinstance(inertia, Undecided):
-        return found, tuple(criticals)
-    s = split(_boundary(found.hessian), model)
-    if s is None or (criticals and not s.critical.same_as(criticals[0])):
-        return found, tuple(criticals)
-    cases = tuple(StabilityCase(s.critical.when(side), _stability_on(found.hessian, s.critical, side))
-                  for side in Side if side in sides)
+        return found, criticals
+    pieces = _stability_pieces(found.hessian, existence.condition, model)
+    if pieces is None:
+        return found, criticals
+    cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
+    changes = tuple(Critical(piece.parameter, piece.high) for (piece, _), (after, _) in zip(pieces, pieces[1:])
+                    if piece.high is not None and piece.high == after.low)
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
-    p, named = to_unicode(s.critical.parameter), to_unicode(s.critical.name)
     if len(cases) == 1:
-        where = f"{p} {cases[0].when.rel_op} {named}"
-        reason = found.reason if decided else f"the Hessian of V keeps one sign where it exists ({where})"
+        reason = found.reason if decided else "the Hessian of V keeps one sign wherever the equilibrium exists"
         return replace(found, stability=found.stability if decided else cases[0].stability,
-                       reason=reason), (*criticals, s.critical)
+                       reason=reason), (*criticals, *changes)
     if decided:  # the values decide; the cases say where that holds
-        return replace(found, stability_cases=cases), (*criticals, s.critical)
+        return replace(found, stability_cases=cases), (*criticals, *changes)
     what = "the Hessian of V changes sign" if found.hessian.rows == 1 else "an eigenvalue of the Hessian of V changes sign (det K = 0)"
+    p = to_unicode(pieces[0][0].parameter)
+    at = "its critical value" if len(changes) == 1 else "its critical values"
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
-                    reason=f"{what} at {p} = {named}"), (*criticals, s.critical))
+                    reason=f"{what} as {p} passes {at}"), (*criticals, *changes))
+
+
+def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model) -> list[tuple[Piece, Stability]] | None:
+    """The stability on each piece of the range where det K keeps its sign, those where
+    the equilibrium does not exist left out, neighbours of one stability joined; None
+    where det K cannot be split, or a piece lies partly where it exists."""
+    found = partition(_boundary(H), model)
+    if found is None:
+        return None
+    out: list[tuple[Piece, Stability]] = []
+    for piece in found.pieces:
+        inside = within(piece, exists, model)
+        if inside is None:
+            return None
+        if not inside:
+            continue
+        stability = _stability_on(H, piece, model)
+        if out and out[-1][1] is stability and out[-1][0].high == piece.low:
+            out[-1] = (out[-1][0].joined(piece), stability)
+        else:
+            out.append((piece, stability))
+    return out or None
 
 
 def _boundary(H: sp.Matrix) -> sp.Expr:
@@ -67,9 +92,21 @@ def _boundary(H: sp.Matrix) -> sp.Expr:
     return sp.factor(tidy(sp.Matrix(H).det()))
 
 
-def _stability_on(H: sp.Matrix, critical: Critical, side: Side) -> Stability:
-    value, _ = on_side(sp.Matrix(H), critical, side)
-    inertia = matrix_inertia(value.applyfunc(sp.factor), {})
+def _stability_on(H: sp.Matrix, piece: Piece, model: Model) -> Stability:
+    """K classified at a point of the piece: exactly (δ > 0), else at SAMPLES random
+    points of it (the parameters as rationals, so each K is exact numbers), which
+    must all agree."""
+    value, _ = piece.inside(sp.Matrix(H))
+    found = _classified(value.applyfunc(sp.factor))
+    if found is not Stability.UNDETERMINED:
+        return found
+    samples = at_samples(piece, sp.Matrix(H), model, 24, angle_parameters(sp.Matrix(H)))
+    seen = {_classified(K) for K in samples} if samples else set()
+    return seen.pop() if len(seen) == 1 else Stability.UNDETERMINED
+
+
+def _classified(H: sp.Matrix) -> Stability:
+    inertia = matrix_inertia(H, {})
     if isinstance(inertia, Undecided):
         return Stability.UNDETERMINED
     if inertia.negative:

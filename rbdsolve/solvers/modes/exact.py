@@ -43,7 +43,7 @@ from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relation
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
 from rbdsolve.solvers.modes.steps import descending, exact_steps
-from rbdsolve.solvers.shared.conditions import Side, critical_values, exists_when, split, what_decides
+from rbdsolve.solvers.shared.conditions import Critical, critical_values, exists_when, partition, what_decides, within
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
@@ -104,7 +104,7 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true) -> tuple[ModesAn
         raise UnsolvedError(singular)
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [lam for lam, _, _ in spectrum.pairs]
-    motions, cases, criticals = _within(where, *_motions(eigenvalues, K, model))
+    motions, cases, criticals = _motions(eigenvalues, K, model, where)
     frequencies = tuple(tidy(sp.sqrt(lam)) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for lam, mo in zip(eigenvalues, motions))
     shapes = _shapes(spectrum, model.values)
@@ -221,11 +221,13 @@ def _ascending(pairs: list[tuple], model: Model) -> list:
     return sorted(pairs, key=key)
 
 
-def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
+def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true):
     """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
-    parameters decide (its critical value: ``shared/conditions.py``). When a λ's sign
-    is not decided by itself, Sylvester's law of inertia decides it: with M positive
-    definite, K a = λ M a has as many positive, zero and negative λ as K has
+    parameters decide (its critical values: ``shared/conditions.py``), those outside
+    ``where`` the equilibrium exists left out (a λ left with one case is of that kind:
+    an off-axis equilibrium that exists only above Ω_c oscillates there). When a λ's
+    sign is not decided by itself, Sylvester's law of inertia decides it: with M
+    positive definite, K a = λ M a has as many positive, zero and negative λ as K has
     eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
     every λ positive."""
     counts = matrix_inertia(K, model.decided_by)
@@ -236,57 +238,49 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model):
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
         if isinstance(sign, Undecided):
-            found = _cases(lam, model)
+            found = _cases(lam, model, where)
             if found is None:
                 raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters in a "
                                     f"way rbdsolve cannot split into cases; {what_decides(lam)}")
+            if len(found[0]) == 1:
+                motions.append(found[0][0].kind)
+                cases.append(())
+                continue
             motions.append(Motion.DEPENDS)
             cases.append(found[0])
-            criticals.append(found[1])
+            criticals += found[1]
             continue
         motions.append(KIND[sign])
         # decided by the values: the cases still say where that holds, as for equilibria
-        found = _cases(lam, model) if model.values and isinstance(sign_of(lam, model.assumed), Undecided) else None
-        cases.append(found[0] if found else ())
-        criticals += [found[1]] if found else []
+        found = _cases(lam, model, where) if model.values and isinstance(sign_of(lam, model.assumed), Undecided) \
+            else None
+        kept = found if found and len(found[0]) > 1 else None
+        cases.append(kept[0] if kept else ())
+        criticals += kept[1] if kept else []
     return tuple(motions), tuple(cases), criticals
-
-
-def _within(where: sp.Basic, motions, cases, criticals):
-    """Cases outside where the equilibrium exists dropped; a λ left with one case is of
-    that kind (an off-axis equilibrium that exists only above Ω_c oscillates there)."""
-    if where is sp.true:
-        return motions, cases, criticals
-    bounds = sp.And.make_args(where)
-    kept_motions, kept_cases = [], []
-    for motion, found in zip(motions, cases):
-        found = tuple(c for c in found if not any(_opposite(c.when, b) for b in bounds))
-        if motion is Motion.DEPENDS and len(found) == 1:
-            motion, found = found[0].kind, ()
-        kept_motions.append(motion)
-        kept_cases.append(found)
-    return tuple(kept_motions), tuple(kept_cases), criticals if any(kept_cases) else []
-
-
-def _opposite(a: sp.Basic, b: sp.Basic) -> bool:
-    """p < c against p ≥ c (or p > c against p ≤ c): the two cannot both hold."""
-    if not (isinstance(a, sp.core.relational.Relational) and isinstance(b, sp.core.relational.Relational)):
-        return False
-    if a.lhs != b.lhs or sp.simplify(a.rhs - b.rhs) != 0:
-        return False
-    return {a.rel_op[0], b.rel_op[0]} == {"<", ">"}
 
 
 KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
 
 
-def _cases(lam: sp.Expr, model: Model):
-    """(cases, critical) for a λ whose sign changes at a critical value, else None."""
-    s = split(lam, model)
-    if s is None:
+def _cases(lam: sp.Expr, model: Model, where: sp.Basic):
+    """(cases, critical values) for a λ whose sign changes at critical values, the
+    pieces where the equilibrium does not exist left out; None where it cannot be
+    split (or a piece lies partly where it exists)."""
+    found = partition(lam, model)
+    if found is None:
         return None
-    signs = {Side.BELOW: s.below, Side.ABOVE: s.above}
-    return tuple(MotionCase(s.critical.when(side), KIND[signs[side]]) for side in Side), s.critical
+    kept = []
+    for piece in found.pieces:
+        inside = within(piece, where, model)
+        if inside is None:
+            return None
+        if inside:
+            kept.append(piece)
+    if not kept:
+        return None
+    changes = [Critical(a.parameter, a.high) for a, b in zip(kept, kept[1:]) if a.high == b.low]
+    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), changes
 
 
 def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:

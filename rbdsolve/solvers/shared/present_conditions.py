@@ -46,12 +46,25 @@ def critical_steps(critical, where: str = "where an equilibrium appears or its s
                       *[Relation(name, c.value) for c, name in names])]
 
 
+OPS = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
+TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤"}
+
+
 def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Relation:
-    """p < p_c with p_c by name where it is one of the ``critical`` values: Ω < Ω_c."""
-    ops = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
+    """p < p_c with p_c by name where it is one of the ``critical`` values: Ω < Ω_c;
+    a piece between two, Ω_c1 < Ω < Ω_c2."""
+    if isinstance(condition, sp.And):
+        above, below = sorted(condition.args, key=lambda c: OPS.get(type(c), "?") not in (">", "≥"))
+        low, high = _named_side(above, critical), _named_side(below, critical)
+        return Relation(low, above.lhs, TURNED.get(OPS.get(type(above)), "?"), more=(high,), lead=lead,
+                        more_op=OPS.get(type(below), "?"))
+    return Relation(condition.lhs, _named_side(condition, critical), OPS.get(type(condition), "?"), lead=lead)
+
+
+def _named_side(condition, critical: Sequence) -> sp.Expr:
+    """The right side of p < value, by name where it is a critical value of p."""
     lhs, rhs = condition.lhs, condition.rhs
     for c, name in critical_names(critical):
         if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
-            rhs = name
-            break
-    return Relation(lhs, rhs, ops.get(type(condition), "?"), lead=lead)
+            return name
+    return rhs

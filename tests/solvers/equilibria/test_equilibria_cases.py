@@ -123,3 +123,29 @@ def test_with_the_assumption_it_is_stable_and_the_frequency_is_real() -> None:
     w = sp.parse_expr(str(w), local_dict={"R": R, "r": r, "g": g})
     for values in ({R: 2, r: 1, g: 9.81}, {R: 5, r: sp.Rational(1, 3), g: 1}):
         assert float(w.subs(values)) == pytest.approx(math.sqrt(2 * float(values[g]) / (3 * float(values[R] - values[r]))))
+
+
+def test_stability_between_two_critical_rates_is_sampled() -> None:
+    """Two beads on a turning rod (problems/conditions/beads-on-turning-rod.yaml): det K
+    vanishes at two rates, K = [[k − 2mΩ², −mΩ²], [−mΩ², k − mΩ²]] by hand; at random
+    k, m and Ω the printed case must agree with the signs of K's eigenvalues computed
+    here (stable iff both are positive), and only the smaller root is a critical value
+    (the stability does not change at the larger one)."""
+    text = (PROBLEMS / "conditions" / "beads-on-turning-rod.yaml").read_text()
+    (solution,) = solve_problem(build_model(load_text(text, "beads.yaml"))).solutions
+    (eq,) = solution.answers.equilibria
+    assert len(solution.answers.critical) == 1
+    names = {n: sp.Symbol(n, positive=True) for n in ("m", "k", "a", "Omega")}
+    rng = random.Random(11)
+    for _ in range(40):
+        m, k = rng.uniform(0.1, 5), rng.uniform(0.1, 50)
+        Om = math.sqrt(k / m) * rng.uniform(0.05, 2.5)
+        at = {names["m"]: m, names["k"]: k, names["Omega"]: Om}
+        K11, K12, K22 = k - 2 * m * Om**2, -m * Om**2, k - m * Om**2
+        mean, radius = (K11 + K22) / 2, math.hypot((K11 - K22) / 2, K12)
+        stable = mean - radius > 0
+        if abs(mean - radius) < 1e-9 * (abs(mean) + radius):
+            continue  # on the boundary
+        (case,) = [c for c in eq.stability_cases
+                   if bool(sp.parse_expr(str(c.when), local_dict=names).subs(at))]
+        assert case.stability.value == ("stable" if stable else "unstable")

@@ -1,0 +1,99 @@
+"""Where a quantity's sign may change along one parameter: the roots of its numerator
+and denominator inside the parameter's range, in increasing order, and the random
+parameter values that decide what sympy cannot (``conditions.py`` builds the pieces).
+
+A root counts when it is real and inside the range at every one of SAMPLES admissible
+parameter points (the problem's assumptions hold there; angles are drawn in their
+ranges), with the same order among the roots at each; a root inside at some points and
+not at others leaves the parameter undecided (None), so that no condition is printed
+that holds only somewhere.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+import sympy as sp
+
+from rbdsolve.form.tidy import tidy
+
+SAMPLES = 8
+TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
+
+
+def angle_parameters(f: sp.Basic) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:
+    """{p: its range} for the parameters f holds only through sines and cosines of
+    whole multiples of them: (0, π) for a positive one, (−π, π) otherwise."""
+    out = {}
+    for p in sorted(f.free_symbols, key=str):
+        trig = [t for t in f.atoms(*TRIG) if t.has(p)]
+        if not trig or not all((t.args[0] / p).is_Integer for t in trig):
+            continue
+        if not f.xreplace({t: sp.Dummy() for t in trig}).has(p):
+            out[p] = (sp.Integer(0), sp.pi) if p.is_positive else (-sp.pi, sp.pi)
+    return out
+
+
+def admissible(model, rng: random.Random, leave: tuple = (), angles: dict = {}) -> dict | None:
+    """Random parameter values that satisfy the problem's assumptions (the parameters in
+    ``leave`` left out: a piece sets them), angles in their ranges, or None if none is
+    found."""
+    from rbdsolve.model.assumptions import admissible_sample
+
+    symbols = [s for s in model.symbols.parameters.values() if s not in leave]
+    kept = [a for a in model.assumptions if not a.difference.free_symbols & set(leave)]
+    return admissible_sample(kept, model.symbols, rng, symbols=symbols, tries=200, ranges=angles)
+
+
+def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Expr] | None:
+    """The roots in p of f's numerator and denominator strictly inside p's range
+    ((0, ∞), or an angle's, turned into it by whole turns), in increasing order; None
+    where a root is inside at some samples and not at others, or the order changes."""
+    low, high = angles.get(p, (sp.Integer(0), sp.oo))
+    numerator, denominator = sp.fraction(sp.together(f))
+    try:
+        found = {tidy(r) for factor in (numerator, denominator) if factor.has(p) for r in sp.solve(factor, p)}
+    except (NotImplementedError, ValueError):
+        return None
+    points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
+    if None in points:
+        return None
+    inside: dict[sp.Expr, list[float]] = {}
+    for r in found:
+        turns = {_turns_into(complex(sp.N(r.xreplace(point), 20)), low, high, p in angles) for point in points}
+        if turns == {None}:
+            continue  # never real inside the range
+        if len(turns) != 1 or None in turns:
+            return None
+        turned = tidy(r + 2 * sp.pi * turns.pop()) if p in angles else _one_root(r)
+        if not any(sp.simplify(turned - x) == 0 for x in inside):
+            inside[turned] = [float(sp.N(turned.xreplace(point), 20)) for point in points]
+    order = sorted(inside, key=lambda r: inside[r][0])
+    if any(sorted(inside, key=lambda r: inside[r][k]) != order for k in range(len(points))):
+        return None
+    return order
+
+
+def _turns_into(z: complex, low, high, periodic: bool) -> int | None:
+    """The whole turns k (0 unless ``periodic``) that put the real value z + 2πk
+    strictly inside (low, high); None if z is not real or no turn does."""
+    if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+        return None
+    a, b = float(low), float(high)
+    k = math.floor((a - z.real) / (2 * math.pi)) + 1 if periodic else 0
+    value = z.real + 2 * math.pi * k
+    above = value > a + 1e-12 * max(1.0, abs(a))
+    below = b == math.inf or value < b - 1e-12 * max(1.0, abs(b))
+    return k if above and below else None
+
+
+def _one_root(value: sp.Expr) -> sp.Expr:
+    """√g/√R as √(g/R), the form an exam writes (kept unevaluated: sympy would split
+    the root of a quotient of positive symbols again)."""
+    square = sp.factor(value**2)
+    if square.could_extract_minus_sign():  # −g (−2 + √2)/l: a sign taken into the sum, (2 − √2) g/l
+        square = sp.factor_terms(sp.expand(value**2))
+    if value.has(sp.Pow) and not square.has(sp.sqrt) and not square.is_Pow:
+        return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
+    return value
