@@ -29,6 +29,10 @@ class Shape(Enum):
     SPHERICAL_SHELL = "spherical_shell"
     SPHERE = "sphere"
     HEMISPHERE = "hemisphere"
+    HEMISPHERICAL_SHELL = "hemispherical_shell"
+    HALF_DISK = "half_disk"
+    HALF_RING = "half_ring"
+    QUARTER_DISK = "quarter_disk"
     CONE = "cone"
     BOX = "box"
     PLATE = "plate"
@@ -50,6 +54,10 @@ _DIMENSIONS = {
     Shape.SPHERICAL_SHELL: ("radius",),
     Shape.SPHERE: ("radius",),
     Shape.HEMISPHERE: ("radius",),
+    Shape.HEMISPHERICAL_SHELL: ("radius",),
+    Shape.HALF_DISK: ("radius",),
+    Shape.HALF_RING: ("radius",),
+    Shape.QUARTER_DISK: ("radius",),
     Shape.CONE: ("radius", "height"),
     Shape.BOX: ("width", "depth", "height"),
     Shape.PLATE: ("width", "height"),
@@ -58,7 +66,8 @@ _DIMENSIONS = {
 
 SHAPE_ALIASES = {"point": Shape.PARTICLE, "hoop": Shape.RING, "slender_rod": Shape.ROD,
                  "rectangle": Shape.PLATE, "shell": Shape.CYLINDRICAL_SHELL,
-                 "ball": Shape.SPHERE, "cuboid": Shape.BOX}  # fmt: skip
+                 "ball": Shape.SPHERE, "cuboid": Shape.BOX, "solid_hemisphere": Shape.HEMISPHERE,
+                 "semicircular_plate": Shape.HALF_DISK, "semicircular_wire": Shape.HALF_RING}  # fmt: skip
 
 
 class CoordinateKind(Enum):

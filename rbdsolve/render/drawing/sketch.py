@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from itertools import pairwise
 from typing import Iterable, Iterator, Mapping
 
 import numpy as np
@@ -39,8 +40,9 @@ Vec2 = tuple[float, float]
 CIRCLE_SAMPLES = 48  # points on a circle seen at a slant (its hull is an ellipse)
 DOME_SAMPLES = 12  # latitudes on a hemisphere's dome
 AXIAL = {Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE, Shape.HEMISPHERE,
-         Shape.CONE}  # a circle when seen along their own axis
-OUTLINES = {Shape.RING, Shape.CYLINDRICAL_SHELL, Shape.SPHERICAL_SHELL}  # thin: drawn, not filled
+         Shape.HEMISPHERICAL_SHELL, Shape.CONE}  # a circle when seen along their own axis
+OUTLINES = {Shape.RING, Shape.CYLINDRICAL_SHELL, Shape.SPHERICAL_SHELL, Shape.HALF_RING,
+            Shape.HEMISPHERICAL_SHELL}  # thin: drawn, not filled
 
 
 class NotDrawable(InputError):
@@ -305,6 +307,9 @@ def _outline(part: Part, dims: Mapping[str, float], placed: _Placed, body: str) 
     if shape is Shape.ROD:
         half = dims["length"] / 2
         return [Segment(placed.xy((-half, 0, 0)), placed.xy((half, 0, 0)), body)]
+    if shape is Shape.HALF_RING:  # a wire: the arc alone, not closed by its diameter
+        arc = [placed.xy(p) for p in _arc(dims["radius"], 0.0, math.pi)]
+        return [Segment(a, b, body) for a, b in pairwise(arc)]
     if shape in (Shape.SPHERE, Shape.SPHERICAL_SHELL):
         return [Circle(placed.xy((0, 0, 0)), dims["radius"], body, filled, hole)]
     if shape in AXIAL and placed.faces_viewer():
@@ -323,7 +328,9 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
     if shape in (Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE):
         r, h = d.get("outer_radius", d.get("radius")), d["height"]
         return _circle(r, -h / 2) + _circle(r, h / 2)
-    if shape is Shape.HEMISPHERE:
+    if shape in (Shape.HALF_DISK, Shape.QUARTER_DISK):  # the centre O and the arc
+        return [(0.0, 0.0, 0.0), *_arc(d["radius"], 0.0, math.pi if shape is Shape.HALF_DISK else math.pi / 2)]
+    if shape in (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL):
         r = d["radius"]
         rings = [_circle(r * math.cos(a), r * math.sin(a)) for a in np.linspace(0, math.pi / 2, DOME_SAMPLES)]
         return [p for ring in rings for p in ring]
@@ -343,6 +350,10 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
 def _circle(radius: float, z: float) -> list[tuple[float, float, float]]:
     return [(radius * math.cos(a), radius * math.sin(a), z)
             for a in np.linspace(0, 2 * math.pi, CIRCLE_SAMPLES, endpoint=False)]
+
+
+def _arc(radius: float, start: float, stop: float) -> list[tuple[float, float, float]]:
+    return [(radius * math.cos(a), radius * math.sin(a), 0.0) for a in np.linspace(start, stop, CIRCLE_SAMPLES)]
 
 
 def convex_hull(points: list[Vec2]) -> tuple[Vec2, ...]:
