@@ -95,7 +95,9 @@ def test_new_refuses_to_overwrite_without_force(tmp_path) -> None:
 def test_list_and_help_name_every_kind() -> None:
     listing = run("new", "--list")
     assert listing.exit_code == 0
-    assert [line.split()[0] for line in listing.stdout.splitlines()] == list(KINDS)
+    from rbdsolve.cli.new import SCENES
+
+    assert [line.split()[0] for line in listing.stdout.splitlines()] == [*KINDS, *SCENES]
     helped = run("new", "--help")
     assert all(kind in helped.stdout for kind in KINDS)
     assert "rbdsolve new modes -o my-problem.yaml && rbdsolve solve my-problem.yaml" in helped.stdout
@@ -241,3 +243,22 @@ def test_steady_motion_conical_pendulum_of_a_rod() -> None:
     assert same_all(got["angular_momentum"], ["-m*l**2*Omega*sin(theta)/3", "0", "0"])
     assert same_all(got["moment"], ["0", "m*g*l*sin(theta)/2", "0"])
     assert same(got["solved"]["Omega**2"], "3*g/(2*l*cos(theta))")
+
+
+# The scene templates (rolling, rocking), against the textbook answers by hand:
+# a solid cylinder inside a cylinder, ω² = 2g/(3(R − r)); a half-disk rocking on the
+# floor, ω² = 8g/((9π − 16) R) (problems/contacts/*.expected.yaml derive both).
+SCENE_ANSWERS = {"rolling": "2*g/(3*(R - r))", "rocking": "8*g/((9*pi - 16)*R)"}
+
+
+@pytest.mark.parametrize("scene", list(SCENE_ANSWERS))
+def test_scene_templates_solve_to_the_textbook_answers(scene: str) -> None:
+    from rbdsolve.cli.new import SCENES
+
+    assert set(SCENES) == set(SCENE_ANSWERS)
+    report = solved(scene)
+    modes = next(r for r in report["results"] if r["question"] == "modes")
+    (eigenvalue,) = modes["answers"]["eigenvalues"]
+    assert same(eigenvalue, SCENE_ANSWERS[scene])
+    listing = run("new", "--list").stdout
+    assert scene in listing and run("new", scene).stdout.startswith("# rbdsolve template")

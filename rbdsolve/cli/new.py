@@ -24,6 +24,12 @@ KINDS = {
     "steady_motion": "steady motion, dL/dt = M (a conical pendulum of a rod)",
 }
 
+# Scenes rather than question kinds: templates that show a part of the format.
+SCENES = {
+    "rolling": "a contact: a cylinder rolling inside a cylinder (equilibria, modes)",
+    "rocking": "a contact on a curved edge: a half-disk rocking on the floor (modes)",
+}
+
 NEW_EXAMPLES = """
 \b
 Examples:
@@ -35,7 +41,7 @@ Examples:
 
 
 @main.command()
-@click.argument("kind", required=False, type=click.Choice(list(KINDS)), metavar="KIND")
+@click.argument("kind", required=False, type=click.Choice([*KINDS, *SCENES]), metavar="KIND")
 @click.option("-o", "--output", type=click.Path(dir_okay=False),
               help="Write to this file instead of standard output.")
 @click.option("--force", is_flag=True, help="Overwrite the output file if it exists.")
@@ -57,8 +63,8 @@ def new(kind, output, force, list_kinds, debug):
 
 def kinds_listing() -> str:
     """One aligned line per kind: its name and what its template shows."""
-    width = max(map(len, KINDS))
-    return "\n".join(f"{kind:<{width}}  {text}" for kind, text in KINDS.items())
+    width = max(map(len, [*KINDS, *SCENES]))
+    return "\n".join(f"{kind:<{width}}  {text}" for kind, text in {**KINDS, **SCENES}.items())
 
 
 def template_text(kind: str) -> str:

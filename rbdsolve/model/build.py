@@ -17,6 +17,7 @@ import sympy as sp
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.assumptions import check as check_assumptions
+from rbdsolve.model.contacts import place_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
@@ -89,6 +90,7 @@ class Model:
     triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:'
+    contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
 
     @cached_property  # asked in every sign decision; the model never changes
     def decided_by(self) -> dict:
@@ -175,6 +177,7 @@ def build_model(problem: Problem) -> Model:
             velocities[point.name] = _affine_in_rates(symbols.with_points(velocities).vector(point.velocity),
                                                       point.velocity, symbols)
     names = symbols.with_points(points)
+    problem, contacts = place_contacts(problem, names)  # rolling places its bodies: at and angle
     q = names.state.q
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
@@ -182,7 +185,7 @@ def build_model(problem: Problem) -> Model:
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
     check_values(problem, names, values)
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
-                  triads=triads, assumptions=assumed(problem, names))
+                  triads=triads, assumptions=assumed(problem, names), contacts=contacts)
     check_assumptions(model.assumptions, values, names)
     periodic = _periodic_coordinates(model)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q)

@@ -9,7 +9,11 @@ integration of the shape's density.
 Own axes: an axisymmetric shape has its axis along its own z (a rod along its own x);
 a plate lies in its own xy-plane (``width`` along x, ``height`` along y); a box has
 ``width``, ``depth``, ``height`` along x, y, z; a triangle lies in its xy-plane with
-vertices (0, 0), (base, 0), (apex, height).
+vertices (0, 0), (base, 0), (apex, height). The part-shapes (``half_disk``,
+``half_ring``, ``quarter_disk``, ``hemisphere``, ``hemispherical_shell``) have their
+origin at the centre of the full circle or sphere, and their own axis is the symmetry
+axis pointing into the material: +y for a half disk or half ring in the xy-plane (y ≥ 0),
+the diagonal (1, 1, 0)/√2 for a quarter disk (x, y ≥ 0), +z for a hemisphere (z ≥ 0).
 
 Products of inertia follow the tensor convention J_xy = −∫ x y dm, as in SG2150.
 """
@@ -23,7 +27,8 @@ import sympy as sp
 from rbdsolve.problem.schema import Shape
 
 # The shape's own symmetry axis ("its axis"): what ``axis:`` in a problem file points.
-OWN_AXIS = {Shape.ROD: sp.Matrix([1, 0, 0])}
+OWN_AXIS = {Shape.ROD: sp.Matrix([1, 0, 0]), Shape.HALF_DISK: sp.Matrix([0, 1, 0]),
+            Shape.HALF_RING: sp.Matrix([0, 1, 0]), Shape.QUARTER_DISK: sp.Matrix([1, 1, 0]) / sp.sqrt(2)}
 _Z = sp.Matrix([0, 0, 1])
 
 
@@ -39,6 +44,8 @@ class MassProperties:
 def own_properties(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr]) -> MassProperties:
     """The shape's mass properties in its own axes."""
     centre = sp.zeros(3, 1)
+    if shape in _PART_SHAPES:
+        return _part_shape(shape, m, dims["radius"])
     if shape is Shape.HEMISPHERE:
         centre = sp.Matrix([0, 0, 3 * dims["radius"] / 8])
     elif shape is Shape.CONE:
@@ -48,6 +55,44 @@ def own_properties(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr]) -> MassPr
     if shape is Shape.TRIANGLE:
         return MassProperties(m, centre, _triangle(m, dims))
     return MassProperties(m, centre, sp.diag(*_moments(shape, m, dims)))
+
+
+def _part_shape(shape: Shape, m: sp.Expr, r: sp.Expr) -> MassProperties:
+    """A part of a disk, ring or spherical shell: J about the centre O of the full
+    circle or sphere, then moved to the centre of mass G by Steiner, J_G = J_O − m(|d|² 1 − d dᵀ).
+
+    J_O is the full shape's, per unit mass, wherever the cut respects its symmetry: a half
+    or quarter of a disk carries the same share of every second moment ∫ x² dm, ∫ y² dm
+    as of the mass, so J_O = diag(m r²/4, m r²/4, m r²/2) for each (a half ring:
+    diag(m r²/2, m r²/2, m r²); a hemispherical shell: 2 m r²/3 about every axis). Only the
+    quarter disk keeps a product: ∫ x y dA = ∫₀^r ∫₀^{π/2} s³ cos θ sin θ dθ ds = r⁴/8 over
+    the area π r²/4, so J_xy = −∫ x y dm = −m r²/(2π).
+
+    Centres (first moments over the measure): half disk ∫ y dA / A = (2r³/3)/(π r²/2) =
+    4r/(3π); half ring ∫ y ds / L = 2r²/(π r) = 2r/π; quarter disk 4r/(3π) along x and y;
+    hemispherical shell ∫ z dA / A = π r³/(2π r²) = r/2 (Archimedes' hat-box: equal
+    areas in equal heights). E.g. Meriam & Kraige, Appendix C (centroids) and B.
+    """
+    if shape is Shape.HALF_DISK:
+        d, J_O = sp.Matrix([0, 4 * r / (3 * sp.pi), 0]), sp.diag(m * r**2 / 4, m * r**2 / 4, m * r**2 / 2)
+    elif shape is Shape.HALF_RING:
+        d, J_O = sp.Matrix([0, 2 * r / sp.pi, 0]), sp.diag(m * r**2 / 2, m * r**2 / 2, m * r**2)
+    elif shape is Shape.QUARTER_DISK:
+        a = 4 * r / (3 * sp.pi)
+        d = sp.Matrix([a, a, 0])
+        J_O = sp.Matrix([[m * r**2 / 4, -m * r**2 / (2 * sp.pi), 0],
+                         [-m * r**2 / (2 * sp.pi), m * r**2 / 4, 0], [0, 0, m * r**2 / 2]])
+    else:  # hemispherical shell
+        d, J_O = sp.Matrix([0, 0, r / 2]), sp.diag(*(3 * [2 * m * r**2 / 3]))
+    return MassProperties(m, d, (J_O - parallel_axis(m, d)).applyfunc(_tidy_pi))
+
+
+def _tidy_pi(x: sp.Expr) -> sp.Expr:
+    """m r² (9π² − 64)/(36π²), not m r² (3π − 8)(3π + 8)/(36π²)."""
+    return sp.factor_terms(sp.together(sp.expand(x)))
+
+
+_PART_SHAPES = (Shape.HALF_DISK, Shape.HALF_RING, Shape.QUARTER_DISK, Shape.HEMISPHERICAL_SHELL)
 
 
 def _moments(shape: Shape, m: sp.Expr, d: dict[str, sp.Expr]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:

@@ -22,13 +22,18 @@ MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
 class BodyReader:
-    def __init__(self, reading: Reading):
+    def __init__(self, reading: Reading, placed: dict[str, str] | None = None):
         self.reading = reading
+        self.placed = placed or {}  # body -> the contact that places it
 
     def body(self, name: str, node: Node) -> Body:
         spec = expect_mapping(node, f"body '{name}'")
         what = f"body '{name}'"
-        at, angle, velocity, omega = self.motion(spec, what)
+        if name in self.placed:
+            _refuse_placement(spec, name, self.placed[name])
+            at, angle, velocity, omega = None, None, None, None
+        else:
+            at, angle, velocity, omega = self.motion(spec, what)
         orientation = self.orientation(spec)
         if spec.get("parts") is None:
             part = self.part(name, spec, what, MOTION_KEYS, simple=True, translating=_is_zero(omega))
@@ -157,6 +162,17 @@ class BodyReader:
         raise InputError(
             "expected an inertia: J (planar), [J1, J2, J3] or a 3x3 matrix", node.loc
         )
+
+
+def _refuse_placement(spec: Map, name: str, contact: str) -> None:
+    """A body that rolls is placed by its contact: its position and angle follow."""
+    for key in ("at", *MOTION_KEYS):
+        if spec.get(key) is not None:
+            raise InputError(f"body '{name}' is placed by contact '{contact}' (rolling gives its position and "
+                             f"angle); remove '{key}'", spec.get(key).loc)
+    if spec.get("parts") is not None:
+        raise InputError(f"body '{name}' rolls (contact '{contact}'): give it one shape, not parts",
+                         spec.get("parts").loc)
 
 
 def _is_zero(expr: ex.Expr | None) -> bool:

@@ -26,6 +26,7 @@ from rbdsolve.problem.schema import (
     ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
+from rbdsolve.problem.contacts import ContactReader, contact_bodies
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
@@ -35,7 +36,7 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
-            "bodies", "springs", "gravity", "values", "assumptions", "questions")  # fmt: skip
+            "bodies", "contacts", "springs", "gravity", "values", "assumptions", "questions")  # fmt: skip
 
 
 def load_file(path: str | Path) -> Problem:
@@ -98,7 +99,8 @@ class _Loader:
         self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
-        bodies = self.bodies(get("bodies"))
+        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
+        contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
         values, ranges = self.values(get("values"), parameters)
         return Problem(
             file=self.reading.file,
@@ -119,6 +121,7 @@ class _Loader:
             triads=triads,
             ranges=ranges,
             assumptions=self.assumptions(get("assumptions")),
+            contacts=contacts,
         )
 
     def assumptions(self, node: Node | None) -> tuple[Assumption, ...]:
@@ -260,11 +263,12 @@ class _Loader:
                              self.reading.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
         return tuple(out)
 
-    def bodies(self, node: Node | None) -> tuple[Body, ...]:
+    def bodies(self, node: Node | None, placed: dict[str, str]) -> tuple[Body, ...]:
+        """The bodies; those in ``placed`` (body -> contact) are placed by rolling."""
         if node is None:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
-        reader = BodyReader(self.reading)
+        reader = BodyReader(self.reading, placed)
         return tuple(reader.body(self.reading.declare(k, "body"), v) for k, v in table.entries)
 
     def springs(self, node: Node | None) -> tuple[Spring, ...]:

@@ -116,7 +116,7 @@ class QuestionReader:
 
     def require_positions(self, kind: QuestionKind, key: Scalar) -> None:
         """Equations of motion, equilibria and modes need the motion, not one instant."""
-        given = [f"body '{b.name}'" for b in self.bodies if b.at is None]
+        given = [f"body '{b.name}'" for b in self.bodies if b.velocity is not None]
         given += [f"point '{p.name}'" for p in self.points if p.position is None]
         if given:
             raise InputError(f"'{kind.value}' needs positions, but {given[0]} is given by its velocity "
@@ -170,7 +170,7 @@ class QuestionReader:
         reactions = self.reactions(get("reactions"))
         targets = self.constants(get("solve_for"), "what to solve for")
         body = self.body(opts, key, QuestionKind.STEADY_MOTION)
-        if next(b for b in self.bodies if b.name == body).at is None:
+        if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
         where = get("reactions").loc if get("reactions") is not None else None
@@ -206,7 +206,7 @@ class QuestionReader:
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
         body = self.body(opts, key, QuestionKind.INERTIA)
-        if next(b for b in self.bodies if b.name == body).at is None:
+        if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
         about = opts.get("about") if opts else None

@@ -29,6 +29,10 @@ class Shape(Enum):
     SPHERICAL_SHELL = "spherical_shell"
     SPHERE = "sphere"
     HEMISPHERE = "hemisphere"
+    HEMISPHERICAL_SHELL = "hemispherical_shell"
+    HALF_DISK = "half_disk"
+    HALF_RING = "half_ring"
+    QUARTER_DISK = "quarter_disk"
     CONE = "cone"
     BOX = "box"
     PLATE = "plate"
@@ -37,6 +41,12 @@ class Shape(Enum):
     @property
     def dimensions(self) -> tuple[str, ...]:
         return _DIMENSIONS[self]
+
+    @property
+    def edges(self) -> tuple[str, ...]:
+        """The named parts of its boundary a contact may use (model/edges.py gives
+        their geometry); the first is the default when a contact names none."""
+        return _EDGES.get(self, ())
 
 
 _DIMENSIONS = {
@@ -50,15 +60,29 @@ _DIMENSIONS = {
     Shape.SPHERICAL_SHELL: ("radius",),
     Shape.SPHERE: ("radius",),
     Shape.HEMISPHERE: ("radius",),
+    Shape.HEMISPHERICAL_SHELL: ("radius",),
+    Shape.HALF_DISK: ("radius",),
+    Shape.HALF_RING: ("radius",),
+    Shape.QUARTER_DISK: ("radius",),
     Shape.CONE: ("radius", "height"),
     Shape.BOX: ("width", "depth", "height"),
     Shape.PLATE: ("width", "height"),
     Shape.TRIANGLE: ("base", "height", "apex"),
 }
 
+_ROUND = ("rim",)  # the whole circle of a round shape (a cylinder's or sphere's section)
+_EDGES = {
+    Shape.RING: _ROUND, Shape.DISK: _ROUND, Shape.CYLINDRICAL_SHELL: _ROUND, Shape.CYLINDER: _ROUND,
+    Shape.TUBE: _ROUND, Shape.SPHERICAL_SHELL: _ROUND, Shape.SPHERE: _ROUND,
+    Shape.HEMISPHERE: ("curved", "flat"), Shape.HEMISPHERICAL_SHELL: ("curved",),
+    Shape.HALF_DISK: ("curved", "flat"), Shape.HALF_RING: ("curved",), Shape.QUARTER_DISK: ("curved",),
+    Shape.PLATE: ("bottom", "top"), Shape.ROD: ("bottom", "top"),
+}  # fmt: skip
+
 SHAPE_ALIASES = {"point": Shape.PARTICLE, "hoop": Shape.RING, "slender_rod": Shape.ROD,
                  "rectangle": Shape.PLATE, "shell": Shape.CYLINDRICAL_SHELL,
-                 "ball": Shape.SPHERE, "cuboid": Shape.BOX}  # fmt: skip
+                 "ball": Shape.SPHERE, "cuboid": Shape.BOX, "solid_hemisphere": Shape.HEMISPHERE,
+                 "semicircular_plate": Shape.HALF_DISK, "semicircular_wire": Shape.HALF_RING}  # fmt: skip
 
 
 class CoordinateKind(Enum):
@@ -187,6 +211,52 @@ class Body:
     velocity: Expr | None = None
     angular_velocity: Expr | None = None  # a scalar (planar, about z) or a vector
     orientation: tuple[str | Turn, ...] = ()  # 3D: a triad's name first, if any, then turns
+
+
+class SurfaceKind(Enum):
+    LINE = "line"  # a straight line (a floor, an incline, a string)
+    CIRCLE = "circle"  # a circle (a drum, a track, a bowl in its plane)
+
+
+@dataclass(frozen=True)
+class Surface:
+    """A fixed (or translating) line or circle a body rolls on.
+
+    A line passes through ``point`` along ``direction`` (a vector) and the body lies on
+    its left (``flip``: on its right); a circle has its centre at ``point`` and the body
+    rolls on its ``inside`` or outside."""
+
+    kind: SurfaceKind
+    point: Expr
+    direction: Expr | None  # line
+    radius: Expr | None  # circle
+    inside: bool  # circle: inside; line: the body on the right of ``direction``
+    loc: Location
+
+
+class Measure(Enum):
+    """What a contact's coordinate measures."""
+
+    ANGLE = "angle"  # the body's turn (counterclockwise)
+    ALONG = "along"  # the contact point's travel: a distance along a line, an angle round a circle
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
+    coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
+    and rolling fixes the rest (model/contacts.py). A string wound on a drum is a
+    line the drum rolls on (``string``), at the winding ``radius``."""
+
+    name: str  # the contact point C
+    body: str
+    edge: str
+    surface: Surface
+    coordinate: str
+    measure: Measure
+    radius: Expr | None  # a string's winding radius; None: the edge's own
+    string: bool
+    loc: Location
 
 
 @dataclass(frozen=True)
@@ -371,6 +441,7 @@ class Problem:
     triads: tuple[Triad, ...] = ()
     ranges: tuple[ValueRange, ...] = ()  # parameters drawn per variant; symbolic otherwise
     assumptions: tuple[Assumption, ...] = ()  # inequalities between parameters (R > r)
+    contacts: tuple[Contact, ...] = ()  # rolling contacts and strings (problem/contacts.py)
 
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)

@@ -112,6 +112,19 @@ def geometry(shape: Shape, d: dict[str, float]) -> Geometry:
         return Geometry(
             lambda s, th, ph: (s * math.sin(th) * math.cos(ph), s * math.sin(th) * math.sin(ph), s * math.cos(th)),
             lambda s, th, ph: s * s * math.sin(th), [(0, r), (0, top), (0, TWO_PI)], r)  # fmt: skip
+    if shape in (Shape.HALF_DISK, Shape.QUARTER_DISK):  # dA = s ds dθ over θ ∈ [0, π] or [0, π/2]
+        r = d["radius"]
+        top = math.pi if shape is Shape.HALF_DISK else math.pi / 2
+        return Geometry(lambda s, t: (s * math.cos(t), s * math.sin(t), 0.0), lambda s, t: s,
+                        [(0, r), (0, top)], r)  # fmt: skip
+    if shape is Shape.HALF_RING:  # ds = r dθ, θ ∈ [0, π]
+        r = d["radius"]
+        return Geometry(lambda t: (r * math.cos(t), r * math.sin(t), 0.0), lambda t: r, [(0, math.pi)], r)
+    if shape is Shape.HEMISPHERICAL_SHELL:  # dA = r² sin θ dθ dφ, θ ∈ [0, π/2] (z ≥ 0)
+        r = d["radius"]
+        return Geometry(
+            lambda th, ph: (r * math.sin(th) * math.cos(ph), r * math.sin(th) * math.sin(ph), r * math.cos(th)),
+            lambda th, ph: r * r * math.sin(th), [(0, math.pi / 2), (0, TWO_PI)], r)  # fmt: skip
     if shape is Shape.CONE:  # base disk at z = 0, apex at z = h: radius r (1 − z/h) at height z
         r, h = d["radius"], d["height"]
         return Geometry(lambda s, t, z: (s * math.cos(t), s * math.sin(t), z), lambda s, t, z: s,
@@ -196,6 +209,10 @@ SAMPLES: dict[str, tuple[Shape, dict[str, float]]] = {
     "spherical_shell": (Shape.SPHERICAL_SHELL, {"radius": 0.7}),
     "sphere": (Shape.SPHERE, {"radius": 0.7}),
     "hemisphere": (Shape.HEMISPHERE, {"radius": 0.7}),
+    "hemispherical_shell": (Shape.HEMISPHERICAL_SHELL, {"radius": 0.7}),
+    "half_disk": (Shape.HALF_DISK, {"radius": 0.7}),
+    "half_ring": (Shape.HALF_RING, {"radius": 0.7}),
+    "quarter_disk": (Shape.QUARTER_DISK, {"radius": 0.7}),
     "cone": (Shape.CONE, {"radius": 0.7, "height": 1.9}),
     "box": (Shape.BOX, {"width": 0.8, "depth": 1.3, "height": 2.1}),
     "plate": (Shape.PLATE, {"width": 0.8, "height": 1.3}),

@@ -19,7 +19,7 @@ from typing import Mapping
 from rbdsolve.errors import InputError, RbdError
 from rbdsolve.model.build import Model
 from rbdsolve.render.files import replacing
-from rbdsolve.render.drawing.sketch import Circle, Dot, Polygon, Segment, Sketch, sketch
+from rbdsolve.render.drawing.sketch import Circle, Dot, Ground, Polygon, Segment, Sketch, sketch
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.form.printers import unicode_name
 
@@ -169,6 +169,8 @@ def draw_sketch(ax, drawing: Sketch, labels: bool, faint: bool = False) -> None:
     alpha = 0.22 if faint else 1.0
     for shape in drawing.shapes:
         _draw_shape(ax, shape, _colour(drawing, shape.body), alpha)
+    for ground in drawing.grounds:
+        _draw_ground(ax, ground, alpha)
     for link in drawing.links:
         (x0, y0), (x1, y1) = link.start, link.end
         ax.plot([x0, x1], [y0, y1], color="0.45", lw=1.3, alpha=alpha, zorder=1)
@@ -178,6 +180,28 @@ def draw_sketch(ax, drawing: Sketch, labels: bool, faint: bool = False) -> None:
     if labels:
         _points(ax, drawing)
         ax.plot(0, 0, "+", color="0.55", ms=9, mew=1, zorder=1)  # the scene's origin
+
+
+def _draw_ground(ax, g: Ground, alpha: float) -> None:
+    """A floor or incline hatched on the side away from the body; a track or drum as its
+    circle; a string as a thin line."""
+    from matplotlib import patches
+
+    if g.centre is not None:
+        ax.add_patch(patches.Circle(g.centre, g.radius, facecolor="none", edgecolor="0.3", lw=2,
+                                    hatch=None if g.inside else "///", alpha=alpha, zorder=1))
+        return
+    (x0, y0), (x1, y1) = g.start, g.end
+    if g.string:
+        ax.plot([x0, x1], [y0, y1], color="0.2", lw=1.2, alpha=alpha, zorder=1)
+        return
+    ax.plot([x0, x1], [y0, y1], color="0.3", lw=2, alpha=alpha, zorder=1)
+    length = math.hypot(x1 - x0, y1 - y0)
+    tick = 0.04 * length
+    for k in range(1, 24):  # hatching on the far side of the body
+        x, y = x0 + (x1 - x0) * k / 24, y0 + (y1 - y0) * k / 24
+        ax.plot([x, x - tick * (g.normal[0] + (x1 - x0) / length)], [y, y - tick * (g.normal[1] + (y1 - y0) / length)],
+                color="0.5", lw=0.8, alpha=alpha, zorder=1)
 
 
 def _draw_shape(ax, shape, colour: str, alpha: float) -> None:

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from itertools import pairwise
 from typing import Iterable, Iterator, Mapping
 
 import numpy as np
@@ -39,8 +40,9 @@ Vec2 = tuple[float, float]
 CIRCLE_SAMPLES = 48  # points on a circle seen at a slant (its hull is an ellipse)
 DOME_SAMPLES = 12  # latitudes on a hemisphere's dome
 AXIAL = {Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE, Shape.HEMISPHERE,
-         Shape.CONE}  # a circle when seen along their own axis
-OUTLINES = {Shape.RING, Shape.CYLINDRICAL_SHELL, Shape.SPHERICAL_SHELL}  # thin: drawn, not filled
+         Shape.HEMISPHERICAL_SHELL, Shape.CONE}  # a circle when seen along their own axis
+OUTLINES = {Shape.RING, Shape.CYLINDRICAL_SHELL, Shape.SPHERICAL_SHELL, Shape.HALF_RING,
+            Shape.HEMISPHERICAL_SHELL}  # thin: drawn, not filled
 
 
 class NotDrawable(InputError):
@@ -101,6 +103,21 @@ class Zigzag:
     vertices: tuple[Vec2, ...]
 
 
+@dataclass(frozen=True)
+class Ground:
+    """A surface a body rolls on: a stretch of a line (``start`` to ``end``) or a circle
+    (``centre``, ``radius``); ``normal`` (a line's) points to the body's side, so the
+    hatching goes on the other. A string is a line from its fixed point to the drum."""
+
+    start: Vec2
+    end: Vec2
+    normal: Vec2
+    centre: Vec2 | None = None
+    radius: float = 0.0
+    inside: bool = False
+    string: bool = False
+
+
 Primitive = Segment | Circle | Polygon | Dot
 
 
@@ -117,6 +134,7 @@ class Sketch:
     notes: tuple[str, ...] = ()
     bodies: tuple[str, ...] = field(default=())  # names, in the scene's order
     links: tuple[Link, ...] = ()
+    grounds: tuple[Ground, ...] = ()  # the floors, inclines, tracks, drums and strings of the contacts
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x_min, y_min, x_max, y_max) of everything drawn."""
@@ -143,6 +161,12 @@ class Sketch:
                 yield s.at
         for z in self.springs:
             yield from z.vertices
+        for g in self.grounds:
+            if g.centre is None:
+                yield from (g.start, g.end)
+            else:
+                (x, y), r = g.centre, g.radius
+                yield from ((x - r, y - r), (x + r, y + r))
 
 
 def unvalued(model: Model) -> tuple[str, ...]:
@@ -221,11 +245,14 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
         shapes += drawn
         anchors += held
     points = tuple(PointLabel(n, _xy(values.vector(p))) for n, p in model.points.items())
+    points += tuple(PointLabel(c.name, _xy(values.vector(c.point))) for c in model.contacts)
     gravity = _unit(values.vector(model.gravity)) if model.gravity is not None else None
+    reach = max((math.dist(a, b) for a in anchors for b in anchors), default=1.0) or 1.0
     return Sketch(tuple(shapes), points, tuple(_springs(model, values)), gravity,
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
                   ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
-                  tuple(_links(model, {p.name: p.at for p in points})))
+                  tuple(_links(model, {p.name: p.at for p in points})),
+                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface))
 
 
 class _Values:
@@ -305,6 +332,9 @@ def _outline(part: Part, dims: Mapping[str, float], placed: _Placed, body: str) 
     if shape is Shape.ROD:
         half = dims["length"] / 2
         return [Segment(placed.xy((-half, 0, 0)), placed.xy((half, 0, 0)), body)]
+    if shape is Shape.HALF_RING:  # a wire: the arc alone, not closed by its diameter
+        arc = [placed.xy(p) for p in _arc(dims["radius"], 0.0, math.pi)]
+        return [Segment(a, b, body) for a, b in pairwise(arc)]
     if shape in (Shape.SPHERE, Shape.SPHERICAL_SHELL):
         return [Circle(placed.xy((0, 0, 0)), dims["radius"], body, filled, hole)]
     if shape in AXIAL and placed.faces_viewer():
@@ -323,7 +353,9 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
     if shape in (Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE):
         r, h = d.get("outer_radius", d.get("radius")), d["height"]
         return _circle(r, -h / 2) + _circle(r, h / 2)
-    if shape is Shape.HEMISPHERE:
+    if shape in (Shape.HALF_DISK, Shape.QUARTER_DISK):  # the centre O and the arc
+        return [(0.0, 0.0, 0.0), *_arc(d["radius"], 0.0, math.pi if shape is Shape.HALF_DISK else math.pi / 2)]
+    if shape in (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL):
         r = d["radius"]
         rings = [_circle(r * math.cos(a), r * math.sin(a)) for a in np.linspace(0, math.pi / 2, DOME_SAMPLES)]
         return [p for ring in rings for p in ring]
@@ -343,6 +375,10 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
 def _circle(radius: float, z: float) -> list[tuple[float, float, float]]:
     return [(radius * math.cos(a), radius * math.sin(a), z)
             for a in np.linspace(0, 2 * math.pi, CIRCLE_SAMPLES, endpoint=False)]
+
+
+def _arc(radius: float, start: float, stop: float) -> list[tuple[float, float, float]]:
+    return [(radius * math.cos(a), radius * math.sin(a), 0.0) for a in np.linspace(start, stop, CIRCLE_SAMPLES)]
 
 
 def convex_hull(points: list[Vec2]) -> tuple[Vec2, ...]:
@@ -380,6 +416,26 @@ def _base_point(tree) -> str | None:
     while isinstance(tree, ex.BinOp) and tree.op in ("+", "-"):
         tree = tree.left
     return tree.id if isinstance(tree, ex.Name) else None
+
+
+def _ground(contact, model: Model, values: _Values, reach: float) -> Ground:
+    """The fixed surface of a contact (a moving one is a body, drawn as such) at the
+    picture's configuration: a circle whole; a line
+    as a stretch about the contact point C, ``reach`` (the bodies' size) each way; a
+    string from its fixed point to C."""
+    surface = contact.source.surface
+    names = model.symbols
+    at = _xy(values.vector(contact.point))
+    base = values.vector(names.vector(surface.point))
+    if surface.radius is not None:
+        return Ground(at, at, (0.0, 0.0), _xy(base), values.scalar(names.scalar(surface.radius)), surface.inside)
+    d = values.vector(names.vector(surface.direction))
+    d = d / np.linalg.norm(d)
+    normal = (-d[1], d[0]) if not surface.inside else (d[1], -d[0])
+    if contact.source.string:
+        return Ground(_xy(base), at, normal, string=True)
+    half = 1.5 * reach
+    return Ground((at[0] - half * d[0], at[1] - half * d[1]), (at[0] + half * d[0], at[1] + half * d[1]), normal)
 
 
 def _springs(model: Model, values: _Values) -> Iterator[Zigzag]:

@@ -26,7 +26,7 @@ def coordinates_only(model: Model) -> ModelSummary:
     q = sp.ImmutableMatrix([model.state.functions()])
     return ModelSummary(model.state.functions(), None, None,
                         (st.given("Generalized coordinates (T and V are not expanded on the numeric route):",
-                                  Relation(sp.Symbol("q"), q)),))
+                                  Relation(sp.Symbol("q"), q)), *rolling_steps(model)))
 
 
 def summarize_model(model: Model) -> ModelSummary:
@@ -34,7 +34,7 @@ def summarize_model(model: Model) -> ModelSummary:
         return ModelSummary((), None, None, ())
     T = kinetic_energy(model)
     q = sp.ImmutableMatrix([model.state.functions()])
-    steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q))]
+    steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q)), *rolling_steps(model)]
     steps += _energy_steps("Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of "
                            "mass)", "T", T, model)
     if model.instant:  # velocities at one instant: no positions, so no V
@@ -45,6 +45,22 @@ def summarize_model(model: Model) -> ModelSummary:
     steps += _unturned(model)
     return ModelSummary(model.state.functions(), model.to_time(T.total), model.to_time(V.total),
                         tuple(steps))
+
+
+def rolling_steps(model: Model) -> list[st.Step]:
+    """Each contact's rolling condition, as a worked solution writes it: the contact
+    point's velocity is zero (or the moving surface's there), which relates the rates,
+    and integrated from the reference configuration places the body (model/contacts.py)."""
+    out = []
+    for c in model.contacts:
+        source = c.source
+        on = "its string" if source.string else f"the {source.surface.kind.value}"
+        rest = (f"v_{c.name} equals the velocity of the surface's point at {c.name}" if c.moving_surface
+                else f"v_{c.name} = 0")
+        out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
+                               Relation(c.lhs, c.rhs),
+                               Relation(c.dependent, c.integrated, lead="⇒")))
+    return out
 
 
 @dataclass(frozen=True)

@@ -122,3 +122,27 @@ def test_scenes_that_are_not_planar_are_refused(path, words) -> None:
 def test_convex_hull_drops_inner_points() -> None:
     square = [(0, 0), (1, 0), (1, 1), (0, 1), (0.5, 0.5), (0.5, 0)]
     assert convex_hull(square) == ((0, 0), (1, 0), (1, 1), (0, 1))
+
+
+def test_contacts_draw_their_surfaces_and_contact_points() -> None:
+    # cylinder in a cylinder, R = 1, r = 1/3, θ = π/2: the track is the unit circle about
+    # the origin; C is where the line of centres meets it, (1, 0); the cylinder's centre
+    # is at (R − r)(sin θ, −cos θ) = (2/3, 0).
+    drawing = sketch(model_of(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"), {"theta": math.pi / 2})
+    (track,) = drawing.grounds
+    assert track.centre == (0.0, 0.0) and track.radius == 1.0 and track.inside
+    assert close({p.name: p.at for p in drawing.points}["C"], (1.0, 0.0), 1e-12)
+    circle = next(s for s in drawing.shapes if isinstance(s, Circle))
+    assert close(circle.centre, (2 / 3, 0.0), 1e-12)
+
+
+def test_a_floor_is_a_stretch_of_line_through_the_contact_and_a_string_ends_at_its_fixed_point() -> None:
+    # the rocking half-disk at θ = 0.3 on the floor: C at (−R θ, 0) = (−0.3, 0) (R = 1);
+    # the floor is horizontal, with the body above it (normal +y)
+    drawing = sketch(model_of(PROBLEMS / "contacts" / "half-disk-rocking.yaml"), {"theta": 0.3})
+    (floor,) = drawing.grounds
+    assert floor.start[1] == floor.end[1] == 0.0 and floor.normal == (0.0, 1.0)
+    assert close({p.name: p.at for p in drawing.points}["C"], (-0.3, 0.0), 1e-12)
+    # the yo-yo at y = 2 (r = 1): the string runs from A = (0, 0) down to S = (0, −2)
+    (string,) = sketch(model_of(PROBLEMS / "contacts" / "yo-yo.yaml"), {"y": 2.0}).grounds
+    assert string.string and close(string.start, (0.0, 0.0)) and close(string.end, (0.0, -2.0))

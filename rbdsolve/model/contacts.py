@@ -1,0 +1,284 @@
+"""Rolling contacts: the contact point, the rolling condition v_C = 0, and the body's
+place and angle that follow from it.
+
+A body with a **curved edge** (centre E, radius ρ) touching a surface at C, with n the
+surface's unit normal towards the body, has its edge's centre at C + ρ n: the body's
+origin is O = C + ρ n − R(φ) E for the body's angle φ. Its material point at C moves at
+
+    v_C = dO/dt + φ̇ e_z × (C − O),
+
+normal to the surface by construction; rolling without slipping sets its component along
+the surface's unit tangent to zero (relative to the surface, when the surface translates
+with a moving point). That is linear in the two rates, a σ̇ + b φ̇ = 0, with σ the
+contact's travel (a distance along a line, the angle round a circle). For a line and a
+circle a/b is a constant (ρ φ̇ = −σ̇ on a line, ρ φ̇ = −(R − ρ) σ̇ inside a circle of
+radius R, ρ φ̇ = (R + ρ) σ̇ outside), so the relation integrates to φ = −(a/b) σ from
+the reference configuration (σ = 0, φ = 0), and only one of the two is a coordinate.
+
+A body with a **flat edge** on a circle (a slab on a drum) stays tangent to it, so its
+angle is the contact's angle round the circle, φ = σ; its origin is
+O = C − R(φ)(F + λ k), with λ the contact's place along the edge (k its direction), and
+rolling gives λ̇ = −(a/c) φ̇, constant again (λ = −R φ on a drum of radius R).
+
+A string wound on a drum and held at a fixed point is a straight line the drum rolls on
+(its point at C is at rest), at the winding radius.
+
+What is derived here is written back into the Problem as each body's ``at`` and
+``angle`` (expression trees), so every route — symbolic, numeric, the drawings — sees
+the rolling body as an ordinary placed one.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from fractions import Fraction
+
+import sympy as sp
+
+from rbdsolve.errors import InputError
+from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
+from rbdsolve.model.state import t, user_function
+from rbdsolve.model.symbols import Symbols
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
+
+_Z = sp.Matrix([0, 0, 1])
+
+
+@dataclass(frozen=True)
+class Rolling:
+    """One contact's kinematics: the contact point C(q) and the rolling condition
+    ``lhs = rhs`` between the rates (functions of time, for the solution's step), and
+    what it integrates to, ``dependent = integrated``."""
+
+    name: str
+    body: str
+    point: sp.Matrix
+    lhs: sp.Expr
+    rhs: sp.Expr
+    dependent: sp.Expr
+    integrated: sp.Expr
+    moving_surface: bool
+    source: Contact
+
+
+@dataclass(frozen=True)
+class _Surface:
+    point: sp.Matrix  # C(σ)
+    normal: sp.Matrix  # n(σ), towards the body
+    tangent: sp.Matrix  # unit dC/dσ direction
+    radius: sp.Expr | None  # a circle's
+    inside: bool
+    moving: bool
+
+
+def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rolling, ...]]:
+    """The problem with each rolling body placed (``at``, ``angle``), and the contacts."""
+    if not problem.contacts:
+        return problem, ()
+    bodies = {b.name: b for b in problem.bodies}
+    values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
+    placed, rollings = {}, []
+    for contact in problem.contacts:
+        body = bodies[contact.body]
+        origin, angle, rolling = _contact(contact, body, names, values)
+        reverse = _reverse(names)
+        placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact),
+                                    angle=_expr(angle, reverse, names, contact))
+        rollings.append(rolling)
+    return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
+
+
+def _contact(c: Contact, body: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, sp.Expr, Rolling]:
+    part = body.parts[0]
+    dims = {k: names.scalar(v) for k, v in part.dimensions}
+    try:
+        geometry = edge(part.shape, c.edge, dims, names.axis(part.axis) if part.axis is not None else None,
+                        names.scalar(c.radius) if c.radius is not None else None)
+    except NotInPlane as exc:
+        raise InputError(f"contact '{c.name}': {exc}", c.loc) from None
+    sigma = sp.Dummy("sigma", real=True)
+    surface = _surface(c, names, sigma)
+    q = names.coordinates[c.coordinate]
+    if isinstance(geometry, Flat):
+        return _flat(c, geometry, surface, sigma, q, names)
+    return _curved(c, geometry, surface, sigma, q, names, values)
+
+
+def _surface(c: Contact, names: Symbols, sigma: sp.Symbol) -> _Surface:
+    s = c.surface
+    base = names.vector(s.point)
+    moving = bool(base.free_symbols & set(names.state.q)) or base.has(t)
+    if s.kind is SurfaceKind.LINE:
+        d = names.vector(s.direction)
+        tangent = (d / sp.sqrt(d.dot(d))).applyfunc(lambda x: sp.radsimp(sp.trigsimp(x)))
+        normal = _turn(tangent) * (-1 if s.inside else 1)
+        return _Surface(base + sigma * tangent, normal, tangent, None, False, moving)
+    u0 = sp.Matrix([0, -1, 0]) if s.inside else sp.Matrix([0, 1, 0])
+    u = sp.rot_axis3(-sigma) * u0
+    R = names.scalar(s.radius)
+    return _Surface(base + R * u, -u if s.inside else u, _turn(u), R, s.inside, moving)
+
+
+def _turn(v: sp.Matrix) -> sp.Matrix:
+    """e_z × v: v turned a quarter turn counterclockwise."""
+    return _Z.cross(v)
+
+
+def _curved(c: Contact, e: Curved, s: _Surface, sigma, q, names: Symbols, values: dict):
+    """Placement and rolling of a curved edge (see the module docstring)."""
+    rho = e.radius
+    _check_fits(c, rho, s, values)
+    _check_touches(c, e, s, sigma)
+    phi = sp.Dummy("phi", real=True)
+    R = sp.rot_axis3(-phi)
+    origin = s.point + rho * s.normal - R * e.centre
+    a, b = _rates(origin, s.point, s.tangent, phi, {sigma: 1, phi: 0}, {sigma: 0, phi: 1})
+    ratio = _constant(c, sp.simplify(-a / b), (sigma, phi))  # φ̇ = ratio σ̇
+    if c.measure is Measure.ALONG:
+        at = {sigma: q, phi: ratio * q}
+        dependent, independent, coefficient = _angle_name(c), q, (b, a)
+    else:
+        at = {phi: q, sigma: q / ratio}
+        dependent, independent, coefficient = _travel_name(c, s), q, (a, b)
+    return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, independent, coefficient,
+                   names, s.moving)
+
+
+def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
+    """A flat edge on a circle: φ = σ, and the contact's place λ along the edge."""
+    if s.radius is None:
+        raise InputError(f"contact '{c.name}': a flat edge on a straight line does not roll (it slides or "
+                         "rests); give the body a curved edge, or roll it on a circle", c.loc)
+    if s.inside:
+        raise InputError(f"contact '{c.name}': a flat edge cannot roll on the inside of a circle", c.loc)
+    if sp.simplify(e.outward + s.normal.subs(sigma, 0)) != sp.zeros(3, 1):
+        raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the circle at the reference "
+                         f"configuration ({c.coordinate} = 0): its '{c.edge}' edge does not face the top of the "
+                         "circle there", c.loc)
+    lam, phi = sp.Dummy("lambda", real=True), sp.Dummy("phi", real=True)
+    k = _turn(e.outward)
+    origin = (s.point - sp.rot_axis3(-phi) * (e.point + lam * k)).subs(sigma, phi)
+    point = s.point.subs(sigma, phi)
+    tangent = s.tangent.subs(sigma, phi)
+    a, b = _rates(origin, point, tangent, phi, {phi: 1, lam: 0}, {phi: 0, lam: 1})
+    ratio = _constant(c, sp.simplify(-a / b), (phi, lam))  # λ̇ = ratio φ̇
+    at = {phi: q, lam: ratio * q}
+    dependent = user_function(f"s_{c.name}")(t)
+    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving)
+
+
+def _rates(origin, point, tangent, phi, first: dict, second: dict) -> tuple[sp.Expr, sp.Expr]:
+    """The coefficients (a, b) of v_C · t = a ẋ₁ + b ẋ₂, v_C = dO/dt + φ̇ e_z × (C − O),
+    with the two rates given as weights on the placement's unknowns."""
+    rates = [sp.Dummy("r1"), sp.Dummy("r2")]
+    velocity = sp.zeros(3, 1)
+    for rate, weights in zip(rates, (first, second)):
+        velocity += rate * sum((origin.diff(x) * w for x, w in weights.items()), sp.zeros(3, 1))
+        velocity += rate * weights.get(phi, 0) * _Z.cross(point - origin)
+    along = sp.expand(sp.trigsimp(sp.expand(velocity.dot(tangent))))
+    return along.coeff(rates[0]), along.coeff(rates[1])
+
+
+def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
+    if ratio.has(*unknowns) or ratio.has(sp.nan, sp.zoo):
+        raise InputError(f"contact '{c.name}': this edge and surface give a rolling relation that does not "
+                         "integrate (not a line or circle on a line or circle)", c.loc)
+    return ratio
+
+
+def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving):
+    """The body's origin and angle in the coordinate, and the Rolling record: the
+    relation coefficient[0]·ḋ = −coefficient[1]·q̇, integrated from the reference."""
+    placed = origin.subs(at).applyfunc(sp.simplify)
+    angle = sp.sympify(at[phi])
+    point = point.applyfunc(sp.simplify)
+    q_t = names.state.to_time(independent)
+    lhs = sp.factor(coefficient[0]) * sp.Derivative(dependent, t)
+    rhs = _negated(sp.factor(coefficient[1]), sp.Derivative(q_t, t))
+    num, den = sp.fraction(sp.factor(coefficient[1] / coefficient[0]))
+    integrated = (-sp.Mul(num, q_t, sp.Pow(den, -1), evaluate=False) if isinstance(num, sp.Add)
+                  else -num * q_t / den)
+    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c)
+
+
+def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:
+    """−c·rate as an exam writes it: −(R − r) θ̇, not (−R + r) θ̇."""
+    if not isinstance(coefficient, sp.Add):
+        return -coefficient * rate
+    return sp.Mul(-1, coefficient, rate, evaluate=False)
+
+
+def _angle_name(c: Contact) -> sp.Expr:
+    return user_function(f"phi_{c.body}")(t)
+
+
+def _travel_name(c: Contact, s: _Surface) -> sp.Expr:
+    return user_function(f"{'psi' if s.radius is not None else 's'}_{c.name}")(t)
+
+
+def _check_fits(c: Contact, rho: sp.Expr, s: _Surface, values: dict) -> None:
+    """Inside a circle the body's edge must be smaller than the circle (as far as the
+    parameters' signs and the file's values tell)."""
+    if s.radius is None or not s.inside:
+        return
+    room = s.radius - rho
+    at_values = room.xreplace(values)
+    if room.is_nonpositive or (at_values.is_number and at_values <= 0):
+        raise InputError(f"contact '{c.name}': body '{c.body}' (radius {sp.sstr(rho)}) cannot roll inside a "
+                         f"circle of radius {sp.sstr(s.radius)}: the circle must be the larger", c.loc)
+
+
+def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
+    """At the reference configuration (angle 0) the edge's point facing the surface,
+    −n in body axes, must lie on its arc."""
+    facing = -s.normal.subs(sigma, 0)
+    for limit in e.limits:
+        if sp.simplify(facing.dot(limit)).is_negative:
+            raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the surface at the reference "
+                             f"configuration ({c.coordinate} = 0): its {c.edge} edge faces away from it; turn the "
+                             "shape with 'axis:' (for instance 'axis: -y', the curved side down)", c.loc)
+
+
+# --- back to expression trees ------------------------------------------------------------
+
+
+def _reverse(names: Symbols) -> dict:
+    table = {s: n for n, s in names.parameters.items()}
+    table.update({q: n for n, q in names.coordinates.items()})
+    table.update({f: n for n, f in names.prescribed.items() if isinstance(f, sp.Function)})
+    table[t] = "t"
+    return table
+
+
+def _expr(value, reverse: dict, names: Symbols, c: Contact) -> ex.Expr:
+    """A sympy value as a checked expression tree located at the contact."""
+    readable = {q: sp.Symbol(n) for n, q in names.coordinates.items()}
+    if isinstance(value, sp.MatrixBase):
+        items = list(value) if value[2] != 0 else list(value[:2])
+        tree = ex.Vec(tuple(_tree(x, reverse) for x in items))
+        return ex.Expr(tree, ex.Kind.VECTOR, sp.sstr(sp.Matrix(items).T.xreplace(readable)), c.loc)
+    return ex.Expr(_tree(value, reverse), ex.Kind.SCALAR, sp.sstr(value.xreplace(readable)), c.loc)
+
+
+def _tree(x: sp.Expr, reverse: dict) -> ex.Tree:
+    if x in reverse:
+        return ex.Name(reverse[x])
+    if x is sp.pi:
+        return ex.Const("pi")
+    if x.is_Rational:
+        number = ex.Num(Fraction(abs(x.p), x.q))
+        return ex.Neg(number) if x < 0 else number
+    if isinstance(x, (sp.Add, sp.Mul)):
+        op = "+" if isinstance(x, sp.Add) else "*"
+        trees = [_tree(a, reverse) for a in x.args]
+        out = trees[0]
+        for item in trees[1:]:
+            out = ex.BinOp(op, out, item)
+        return out
+    if isinstance(x, sp.Pow):
+        return ex.BinOp("**", _tree(x.base, reverse), _tree(x.exp, reverse))
+    name = type(x).__name__.lower()
+    if name in ex.SCALAR_FUNCTIONS:
+        return ex.Call(name, tuple(_tree(a, reverse) for a in x.args))
+    raise ValueError(f"cannot write {x} as a scene expression")  # pragma: no cover - from the trees above

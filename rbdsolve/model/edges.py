@@ -1,0 +1,81 @@
+"""The boundary a contact needs: each shape's named edges, in body axes.
+
+A **curved** edge is an arc of a circle: its centre and radius, and the directions d
+(unit, from the centre) that lie on the arc, those with d·a ≥ 0 for each limit a (none:
+the whole circle). A half disk's arc is y ≥ 0 in its own axes (limit own y), a quarter
+disk's x, y ≥ 0, a hemisphere's z ≥ 0 (its section by any plane through its axis).
+A **flat** edge is a straight side: a point on it and its outward unit normal; a
+plate's ``bottom`` is y = −h/2 with normal −y, a rod's its own line (no thickness).
+The part's ``axis:`` turns them with the shape (Q, :func:`~rbdsolve.model.inertia.rotation_to`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.model.inertia import OWN_AXIS, rotation_to
+from rbdsolve.problem.schema import Shape
+
+_X, _Y, _Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
+_ROUND_IN_PLANE = (Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE,
+                   Shape.HALF_DISK, Shape.HALF_RING, Shape.QUARTER_DISK)  # fmt: skip
+_DOMES = (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL)
+
+
+@dataclass(frozen=True)
+class Curved:
+    centre: sp.Matrix  # from the body's origin, body axes
+    radius: sp.Expr
+    limits: tuple[sp.Matrix, ...]  # d on the arc iff d·a ≥ 0 for every a
+    plane_normal: sp.Matrix | None  # the circle's plane (None: a sphere's, any plane through its centre)
+
+
+@dataclass(frozen=True)
+class Flat:
+    point: sp.Matrix  # on the edge, body axes
+    outward: sp.Matrix  # unit normal out of the body
+
+
+class NotInPlane(ValueError):
+    """The edge's circle is not in the scene's xy-plane (the message says how to turn it)."""
+
+
+def edge(shape: Shape, name: str, dims: dict[str, sp.Expr], axis: sp.Matrix | None,
+         radius: sp.Expr | None = None) -> Curved | Flat:
+    """Edge ``name`` of the shape, turned by its ``axis`` (None: no turn). ``radius``:
+    a string wound at its own radius about the shape's centre (edge ``axle``)."""
+    Q = rotation_to(axis, OWN_AXIS.get(shape, _Z)) if axis is not None else sp.eye(3)
+    if name == "axle":
+        return _in_plane(shape, Curved(sp.zeros(3, 1), radius, (), Q * _Z if shape in _ROUND_IN_PLANE else None))
+    r = dims.get("outer_radius", dims.get("radius"))
+    if name == "rim":
+        return _in_plane(shape, Curved(sp.zeros(3, 1), radius or r, (), None if shape in
+                                       (Shape.SPHERE, Shape.SPHERICAL_SHELL) else Q * _Z))
+    if name == "curved":
+        limits = {Shape.HALF_DISK: (_Y,), Shape.HALF_RING: (_Y,), Shape.QUARTER_DISK: (_X, _Y)}.get(shape, (_Z,))
+        plane = None if shape in _DOMES else Q * _Z
+        return _in_plane(shape, Curved(sp.zeros(3, 1), r, tuple(Q * a for a in limits), plane), Q)
+    if name == "flat":  # the straight edge through the centre: a half disk's diameter, a hemisphere's face
+        outward = -_Y if shape is Shape.HALF_DISK else -_Z
+        return _in_plane(shape, Flat(sp.zeros(3, 1), Q * outward), Q)
+    sign = -1 if name == "bottom" else 1  # bottom / top of a plate or a rod
+    half = dims["height"] / 2 if shape is Shape.PLATE else sp.Integer(0)
+    return Flat(Q * (sign * half * _Y), Q * (sign * _Y))
+
+
+def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Curved | Flat:
+    """A planar contact needs the edge's section in the scene's xy-plane."""
+    if shape in _DOMES and Q is not None and sp.simplify((Q * _Z)[2]) != 0:
+        raise NotInPlane(f"a {shape.value}'s axis must lie in the plane of the scene to rock in it "
+                         "(for instance 'axis: -y', the dome down)")
+    if isinstance(e, Curved) and e.plane_normal is not None:
+        n = e.plane_normal.applyfunc(sp.simplify)
+        if n[0] != 0 or n[1] != 0:
+            raise NotInPlane(f"the {shape.value}'s circle is not in the plane of the scene: its own axis must "
+                             "be along z (leave 'axis' out)" if shape in _ROUND_IN_PLANE[:5] else
+                             f"the {shape.value} must lie in the plane of the scene (its axis in the xy-plane)")
+    if isinstance(e, Flat) and sp.simplify(e.outward[2]) != 0:
+        raise NotInPlane(f"the {shape.value}'s flat edge is not across the plane of the scene")
+    return e

@@ -1,0 +1,186 @@
+"""The ``contacts:`` section: bodies that roll on lines and circles, and strings.
+
+    contacts:
+      C: {body: wheel, rolls_on: {line: {through: [0, 0], angle: -alpha}}, along: x}
+      D: {body: cylinder, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+      E: {body: half, edge: curved, rolls_on: floor, angle: theta}
+      S: {body: yoyo, string: {fixed_at: A, direction: [0, -1], radius: r}, along: y}
+
+Each contact names one declared coordinate, as ``along`` (the contact point's travel:
+a distance along a line, the angle round a circle from its lowest point inside or its
+top outside) or ``angle`` (the body's turn); the body gives neither ``at`` nor
+``angle``: rolling places it (model/contacts.py). This module only reads and checks
+names; the geometry (does the body fit, does it touch) is checked with sympy later.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.context import Reading
+from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
+from rbdsolve.problem.schema import Body, Contact, Measure, Surface, SurfaceKind
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar
+
+SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
+
+
+def contact_bodies(node: Node | None) -> dict[str, str]:
+    """body name -> contact name, read before the bodies so they know they are placed."""
+    if node is None or (isinstance(node, Scalar) and node.null):
+        return {}
+    table = expect_mapping(node, "contacts: name -> contact")
+    out = {}
+    for key, value in table.entries:
+        body = value.get("body") if isinstance(value, Map) else None
+        if isinstance(body, Scalar) and not body.null:
+            if body.text in out:
+                raise InputError(f"body '{body.text}' has two contacts ('{out[body.text]}' and '{key.text}'): "
+                                 "that over-constrains it (one rolling contact or string per body)", body.loc)
+            out[body.text] = key.text
+    return out
+
+
+class ContactReader:
+    def __init__(self, reading: Reading):
+        self.reading = reading
+
+    def contacts(self, node: Node | None, bodies: tuple[Body, ...]) -> tuple[Contact, ...]:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ()
+        table = expect_mapping(node, "contacts: name -> contact")
+        named = {b.name: b for b in bodies}
+        return tuple(self.contact(self.reading.declare(key, "contact"), value, named) for key, value in table.entries)
+
+    def contact(self, name: str, node: Node, bodies: dict[str, Body]) -> Contact:
+        what = f"contact '{name}'"
+        spec = expect_mapping(node, what)
+        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "along", "angle"), what)
+        if (spec.get("rolls_on") is None) == (spec.get("string") is None):
+            raise InputError(f"{what} needs either 'rolls_on' (a floor, a line or a circle) or 'string' "
+                             "(a string wound on the body)", spec.loc)
+        body = _body(spec.get("body"), bodies)
+        coordinate, measure = self.coordinate(spec, what)
+        if spec.get("string") is not None:
+            surface, radius = self.string(spec.get("string"))
+            edge = _edge(spec, body, string=radius is not None)
+            return Contact(name, body.name, edge, surface, coordinate, measure, radius, True, spec.loc)
+        return Contact(name, body.name, _edge(spec, body, string=False), self.surface(spec.get("rolls_on")),
+                       coordinate, measure, None, False, spec.loc)
+
+    def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
+        """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
+        given = [(m, spec.get(m.value)) for m in Measure if spec.get(m.value) is not None]
+        if len(given) != 1:
+            raise InputError(f"{what} needs one coordinate: 'along: x' (the contact's travel along the "
+                             "surface) or 'angle: theta' (the body's turn)"
+                             + ("" if not given else ", not both"), spec.loc)
+        measure, node = given[0]
+        word = expect_scalar(node, "a coordinate name").text.strip()
+        known = self.reading.coordinates
+        if word not in known:
+            raise InputError(f"'{word}' is not a declared coordinate{did_you_mean(word, list(known))}: a contact "
+                             "leaves the body one degree of freedom, named in 'coordinates:'", node.loc)
+        return word, measure
+
+    def surface(self, node: Node) -> Surface:
+        if isinstance(node, Scalar) and node.text.strip() == "floor":
+            origin = ex.Expr(ex.Vec((ex.Num(Fraction(0)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[0, 0]", node.loc)
+            return Surface(SurfaceKind.LINE, origin, _unit_x(node), None, False, node.loc)
+        spec = expect_mapping(node, "a surface: floor, {line: {...}} or {circle: {...}}")
+        if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
+            found = ", ".join(k.text for k, _ in spec.entries) or "nothing"
+            raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}} or {{circle: {{centre, radius, "
+                             f"side}}}}; found {found}", spec.loc)
+        key, value = spec.entries[0]
+        body = expect_mapping(value, f"a {key.text}")
+        if key.text == "line":
+            check_keys(body, (), ("through", "angle", "direction", "side"), "a line")
+            return Surface(SurfaceKind.LINE, self.place(body.get("through"), body.loc), self.direction(body),
+                           None, self.side(body, "line") == "right", body.loc)
+        check_keys(body, ("centre", "radius"), ("side",), "a circle")
+        radius = self.reading.constant(body.get("radius"), "a radius")
+        return Surface(SurfaceKind.CIRCLE, self.place(body.get("centre"), body.loc), None, radius,
+                       self.side(body, "circle") == "inside", body.loc)
+
+    def string(self, node: Node) -> tuple[Surface, ex.Expr | None]:
+        """A string from the fixed point ``fixed_at`` along ``direction`` to the drum."""
+        spec = expect_mapping(node, "a string: {fixed_at, direction, radius, side}")
+        check_keys(spec, ("fixed_at", "direction"), ("radius", "side"), "a string")
+        radius = self.reading.optional_constant(spec.get("radius"), "the radius the string is wound at")
+        line = Surface(SurfaceKind.LINE, self.place(spec.get("fixed_at"), spec.loc), self.direction(spec),
+                       None, self.side(spec, "string") == "right", spec.loc)
+        return line, radius
+
+    def place(self, node: Node | None, where) -> ex.Expr:
+        if node is None:
+            return ex.Expr(ex.Vec((ex.Num(Fraction(0)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[0, 0]", where)
+        return self.reading.expr(node, ex.Kind.VECTOR, "a point name or position vector", self.reading.positions)
+
+    def direction(self, spec: Map) -> ex.Expr:
+        """A constant direction: 'direction: [dx, dy]', or 'angle: alpha' from the x axis."""
+        angle, direction = spec.get("angle"), spec.get("direction")
+        if angle is not None and direction is not None:
+            raise InputError("give the line's 'angle' or its 'direction', not both", direction.loc)
+        if direction is not None:
+            return self.reading.axis(direction)
+        if angle is None:
+            return _unit_x(spec)
+        a = self.reading.constant(angle, "the line's angle from the x axis (a constant)")
+        cos, sin = ex.Call("cos", (a.tree,)), ex.Call("sin", (a.tree,))
+        return ex.Expr(ex.Vec((cos, sin)), ex.Kind.VECTOR, f"[cos({a.text}), sin({a.text})]", a.loc)
+
+    def side(self, spec: Map, kind: str) -> str:
+        node = spec.get("side")
+        choices = SIDES[kind]
+        if node is None:
+            if kind == "circle":
+                raise InputError("a circle needs 'side: inside' or 'side: outside' (which side the body rolls on)",
+                                 spec.loc)
+            return choices[0]
+        word = expect_scalar(node, f"{' or '.join(choices)}").text.strip()
+        if word not in choices:
+            raise InputError(f"expected side {' or '.join(choices)}, found {describe(node)}"
+                             f"{did_you_mean(word, list(choices))}", node.loc)
+        return word
+
+
+def _unit_x(where) -> ex.Expr:
+    return ex.Expr(ex.Vec((ex.Num(Fraction(1)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[1, 0]", where.loc)
+
+
+def _body(node: Node, bodies: dict[str, Body]) -> Body:
+    word = expect_scalar(node, "a body name")
+    if word.text not in bodies:
+        raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
+    body = bodies[word.text]
+    if len(body.parts) != 1 or body.parts[0].shape is None:
+        raise InputError(f"body '{body.name}' must be one shape of the library to roll (its edge gives the "
+                         "contact's geometry); a composite body or an explicit inertia cannot roll here yet", word.loc)
+    return body
+
+
+def _edge(spec: Map, body: Body, string: bool) -> str:
+    """The edge named, or the shape's default; a string may wind at its own radius."""
+    shape = body.parts[0].shape
+    edges = shape.edges
+    node = spec.get("edge")
+    if node is None:
+        if string:
+            return "axle"  # the string's own radius, about the shape's centre
+        if not edges:
+            raise InputError(f"a {shape.value} has no edge to roll on (shapes with edges: disk, ring, cylinder, "
+                             "sphere, half_disk, hemisphere, plate, rod, …)", spec.get("body").loc)
+        if edges[0] not in ("rim", "curved"):
+            raise InputError(f"name the edge of the {shape.value} that touches ('edge: {edges[0]}'; its edges: "
+                             f"{', '.join(edges)})", spec.loc)
+        return edges[0]
+    word = expect_scalar(node, "an edge name")
+    if word.text not in edges:
+        raise InputError(f"a {shape.value} has no edge '{word.text}' (its edges: {', '.join(edges) or 'none'})"
+                         f"{did_you_mean(word.text, list(edges))}", word.loc)
+    if (string or spec.get("string") is not None) and word.text not in ("rim", "curved"):
+        raise InputError(f"a string winds on a round edge, not '{word.text}'", word.loc)
+    return word.text

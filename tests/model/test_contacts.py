@@ -1,0 +1,54 @@
+"""Rolling contacts, checked by their definition rather than by the formulas of
+model/contacts.py: for each problem under problems/contacts/, the body's material point
+at the contact C (placed by the model) moves with the surface there — at rest, or with
+the plank — at random configurations and rates; and C lies on the surface."""
+
+from __future__ import annotations
+
+import random
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_file
+
+from conftest import PROBLEMS
+
+CASES = sorted((PROBLEMS / "contacts").glob("*.yaml"))
+CASES = [p for p in CASES if not p.name.endswith(".expected.yaml")]
+# the velocity of the surface's material point at C, by hand: a fixed surface is at rest,
+# the plank translates with ẋ
+SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate: sp.Matrix([rate["x"], 0, 0])}
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> None:
+    model = build_model(load_file(path))
+    state = model.state
+    rng = random.Random(20)
+    for contact in model.contacts:
+        body = next(b for b in model.bodies if b.name == contact.body)
+        origin = model.symbols.vector(next(b for b in model.problem.bodies if b.name == body.name).at)
+        omega = body.angular_velocity(state)
+        v_c = state.d_dt(origin) + omega.cross(contact.point - origin)  # rigid body: v_O + ω × (C − O)
+        for _ in range(3):
+            at = {q: sp.Rational(rng.randint(-900, 900), 1000) for q in state.q}
+            at |= {qd: sp.Rational(rng.randint(-900, 900), 1000) for qd in state.qd}
+            at |= {p: sp.Rational(rng.randint(1100, 2900), 1000) for p in model.symbols.parameters.values()}
+            rates = {n: at[qd] for n, qd in zip(state.names, state.qd)}
+            surface = SURFACE_VELOCITY.get(path.stem, lambda rate: sp.zeros(3, 1))(rates)
+            difference = (v_c - surface).xreplace(at)
+            assert all(abs(sp.N(x, 30)) < 1e-20 for x in difference), (path.stem, difference)
+
+
+def test_the_cylinder_touches_the_track() -> None:
+    """C is on the circle of radius R, and r from the cylinder's centre."""
+    model = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
+    (contact,) = model.contacts
+    R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]
+    centre = model.bodies[0].position
+    assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
+    d = contact.point - centre
+    assert sp.simplify(d.dot(d) - r**2) == 0
