@@ -32,7 +32,9 @@ from conftest import PROBLEMS
 
 FUZZ_EXAMPLES = int(os.environ.get("RBDSOLVE_FUZZ_EXAMPLES", "60"))
 BUDGET = 2.0
-FUZZ = settings(max_examples=FUZZ_EXAMPLES, deadline=None,
+# On CI the examples are derandomized (the same every run): a merge is not blocked by a
+# crash drawn by chance in code it did not touch; local runs keep exploring new ones.
+FUZZ = settings(max_examples=FUZZ_EXAMPLES, deadline=None, derandomize=bool(os.environ.get("CI")),
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 
 
@@ -113,8 +115,29 @@ questions:
 """
 
 
+# Found by the fuzzer: a spring of natural length 0 whose ends meet at the equilibrium θ = 0,
+# so the placement's derivative there is 0/0 and the singular-point test read NaN (exit 3).
+SPRING_ENDS_MEET = """\
+title: fuzzed scene
+parameters: {m: mass, l: length, k: stiffness, g: gravity, a: offset}
+coordinates: [theta, phi]
+points:
+  A: [a, 0]
+  P0: a * [cos(theta), sin(theta)]
+  P1: l * [sin(phi), -cos(phi)]
+bodies:
+  b0: {shape: particle, mass: m, at: P0}
+  b1: {shape: particle, mass: m, at: P1}
+springs:
+  s: {stiffness: k, between: [P0, A]}
+questions:
+  - equilibria
+"""
+
+
 @FUZZ
 @example(scene=(ZERO_LENGTH_SPRING, 1))
+@example(scene=(SPRING_ENDS_MEET, 1))
 @given(scene=scenes())
 def test_random_valid_scenes_never_crash(folder: Path, scene: tuple[str, int]) -> None:
     text, questions = scene

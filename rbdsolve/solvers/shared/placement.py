@@ -104,10 +104,13 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
         q0 = _point(model, at)
         if q0 is None:
             return None
-        rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0), tol)
-        if rank >= _generic_rank(model) or not kernel:
+        try:
+            rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0), tol)
+            if rank >= _generic_rank(model) or not kernel:
+                return None
+            verdict, reason = _fibre_test(model, q0, kernel, tol)
+        except _NotFinite:  # the placement has no derivative there (a spring of zero length): no test
             return None
-        verdict, reason = _fibre_test(model, q0, kernel, tol)
         shown = tuple(tuple(0.0 if abs(x) < 1e-15 else float(x) for x in k) for k in kernel)
         return Singularity(shown, verdict, reason)
 
@@ -123,10 +126,16 @@ def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
     return out
 
 
+class _NotFinite(ArithmeticError):
+    """A placement or its derivative is not a finite number at a point."""
+
+
 def _evaluate(matrix: sp.Matrix, model: Model, q: list) -> mp.matrix:
     subs = {**_sample(model), **{qi: sp.Float(str(x), DIGITS) for qi, x in zip(model.q, q)}}
-    return mp.matrix([[mp.mpf(sp.N(x.xreplace(subs), DIGITS)) for x in matrix.row(i)]
-                      for i in range(matrix.rows)])
+    values = [[sp.N(x.xreplace(subs), DIGITS) for x in matrix.row(i)] for i in range(matrix.rows)]
+    if any(not v.is_finite or not v.is_real for row in values for v in row):
+        raise _NotFinite
+    return mp.matrix([[mp.mpf(v) for v in row] for row in values])
 
 
 def _numeric_jacobian(model: Model, q: list) -> mp.matrix:
