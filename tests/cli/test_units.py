@@ -55,3 +55,15 @@ def test_set_takes_exact_values_and_units(rod) -> None:
 def test_set_refuses_a_unit_that_does_not_fit(rod, setting, message) -> None:
     result = CliRunner().invoke(main, ["solve", str(rod), "--set", setting])
     assert result.exit_code == 2 and message in result.output, result.output
+
+
+def test_pint_is_loaded_only_for_a_file_with_units(tmp_path) -> None:
+    import subprocess
+    import sys
+
+    plain = tmp_path / "plain.yaml"
+    plain.write_text(ROD.replace("{m: 200 g, l: 30 cm, g: 9.81 m/s^2}", "{m: 1/5, l: 3/10, g: 9.81}"))
+    code = ("import sys; from click.testing import CliRunner; from rbdsolve.cli import main; "
+            f"r = CliRunner().invoke(main, ['check', {str(plain)!r}]); print(r.exit_code, 'pint' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert out == ["0", "False"]
