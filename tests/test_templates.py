@@ -5,6 +5,7 @@ from rbdsolve's output), plus the command's own behaviour and shell completion."
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 from functools import cache
@@ -262,3 +263,21 @@ def test_scene_templates_solve_to_the_textbook_answers(scene: str) -> None:
     assert same(eigenvalue, SCENE_ANSWERS[scene])
     listing = run("new", "--list").stdout
     assert scene in listing and run("new", scene).stdout.startswith("# rbdsolve template")
+
+
+def test_kinematics_slider_crank_at_a_quarter_turn() -> None:
+    """By hand, θ = π/2, θ̇ = ω, θ̈ = 0: A = r(cos θ, sin θ) = (0, r), v_A = r ω (−sin θ,
+    cos θ) = (−r ω, 0), a_A = −r ω² (cos θ, sin θ) = (0, −r ω²). x_B = r cos θ + √(l² −
+    r² sin² θ): ẋ_B = −r sin θ ω − r² sin θ cos θ ω/√(…) = −r ω; ẍ_B = ω² d²x_B/dθ², and
+    d²x_B/dθ² = −r cos θ − r² cos 2θ/√(…) − r⁴ sin²θ cos²θ/(…)^(3/2) = r²/√(l² − r²)."""
+    got = answers("kinematics")
+    a, b = got["points"]
+    assert same_all(a["position"], ["0", "r", "0"]) and same_all(a["velocity"], ["-r*omega", "0", "0"])
+    assert same_all(a["acceleration"], ["0", "-r*omega**2", "0"])
+    assert same_all(b["velocity"], ["-r*omega", "0", "0"])
+    assert same_all(b["acceleration"], ["r**2*omega**2/sqrt(l**2 - r**2)", "0", "0"])
+    assert same(got["distances"][0]["distance"], "sqrt(l**2 - r**2)")
+    values = solved("kinematics")["results"][0]["values"]
+    # r = 0.1 m, l = 0.3 m, ω = 1200·2π/60 = 40π rad/s
+    assert values["points"][1]["acceleration"][0] == pytest.approx(0.01 * (40 * math.pi) ** 2 / math.sqrt(0.08))
+    assert solved("kinematics")["results"][0]["units"]["points"][1]["acceleration"][0] == "m/s²"

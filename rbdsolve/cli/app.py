@@ -10,14 +10,16 @@ import os
 import sys
 import traceback
 from dataclasses import dataclass
-from fractions import Fraction
 from pathlib import Path
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 import click
 
 from rbdsolve import __version__
 from rbdsolve.errors import ExitCode, InputError, RbdError, printable
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.quantity import Value
 
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
 STDIN = "-"
@@ -107,9 +109,11 @@ def _is_problem(path: Path) -> bool:
     return path.suffix in (".yaml", ".yml") and not path.name.endswith(EXPECTED_SUFFIX)
 
 
-def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
+def parse_sets(items: tuple[str, ...]) -> dict[str, Value]:
+    """``--set NAME=VALUE``: a value as in ``values:`` (9.81, pi/6, 30 cm), read by
+    rbdsolve's own parsers."""
     from rbdsolve.errors import Location
-    from rbdsolve.problem.expr import parse_number
+    from rbdsolve.problem.quantity import parse_value
 
     values = {}
     for item in items:
@@ -117,22 +121,32 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Fraction]:
         if not sep or not name.strip().isidentifier():
             raise InputError(f"--set expects NAME=VALUE, found '{item}'")
         try:
-            values[name.strip()] = parse_number(text, Location("--set", 1, len(name) + 2))
+            values[name.strip()] = parse_value(text, Location("--set", 1, len(name) + 2))
         except InputError as exc:  # said as the option, not as a place in a file
             raise InputError(f"--set {name.strip()}: {exc.message}") from None
     return values
 
 
-def check_sets(values: dict[str, Fraction], problem) -> None:
-    """Every ``--set`` names a parameter of ``problem``, positive ones positive."""
+def check_sets(values: dict[str, Value], problem) -> dict[str, Value]:
+    """Every ``--set`` names a parameter of ``problem``, positive ones positive, of the
+    parameter's dimension where it is known; a bare number takes its declared unit."""
+    from rbdsolve.errors import Location, did_you_mean
+    from rbdsolve.problem.ranges import parameter_value
+
     names = [p.name for p in problem.parameters]
+    dimensions = problem.dimension_map()
+    out = {}
     for name, value in values.items():
         if name not in names:
-            from rbdsolve.errors import did_you_mean
-
             raise InputError(f"--set {name}: {problem.file} has no parameter '{name}'{did_you_mean(name, names)}")
-        if value <= 0 and next(p for p in problem.parameters if p.name == name).positive:
-            raise InputError(f"--set {name}: the parameter is positive, found {value}")
+        param = next(p for p in problem.parameters if p.name == name)
+        known = (dimensions[name], "in " + problem.file) if name in dimensions else None
+        try:
+            out[name] = parameter_value(param, value.text, Location("--set", 1, len(name) + 2), True, known)
+        except InputError as exc:
+            message = exc.message.replace(f"'{name}' is declared positive", "the parameter is positive")
+            raise InputError(f"--set {name}: {message}") from None
+    return out
 
 
 def write_text(text: str, output: str | None) -> None:

@@ -11,13 +11,13 @@ import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import TYPE_CHECKING, Callable, Iterable
 
 from rbdsolve.cli.app import Source, check_sets, describe, internal_message
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, printable
 
 if TYPE_CHECKING:  # the report module imports sympy: not at start-up
+    from rbdsolve.problem.quantity import Value
     from rbdsolve.report.steps import ProblemReport
 
 PROGRESS_FROM = 4  # files: fewer than a handful finish before a bar is worth drawing
@@ -27,7 +27,7 @@ PROGRESS_FROM = 4  # files: fewer than a handful finish before a bar is worth dr
 class Settings:
     """How every file is solved: the command's options, as plain values."""
 
-    values: tuple[tuple[str, Fraction], ...] = ()
+    values: tuple[tuple[str, Value], ...] = ()  # --set, read but not yet checked against a file
     budget: float = 60.0
     route: str = "auto"
     debug: bool = False
@@ -63,10 +63,9 @@ def solve_source(source: Source, settings: Settings) -> Outcome:
     from rbdsolve.solvers import Options, RouteChoice, solve_file
 
     start = time.perf_counter()
-    values = dict(settings.values)
     try:
         problem = source.load()
-        check_sets(values, problem)
+        values = check_sets(dict(settings.values), problem)
         options = Options(values=values, budget=settings.budget, route=RouteChoice(settings.route))
         report = solve_file(problem, options)
     except (InputError, UnsolvedError) as exc:

@@ -65,8 +65,7 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
 
     check_suffix(output)
     problem = Source(path).load()
-    values = parse_sets(sets)
-    check_sets(values, problem)
+    values = check_sets(parse_sets(sets), problem)
     try:
         with within(budget, "the model (T and V)"):
             model = build_model(problem)

@@ -21,9 +21,10 @@ from rbdsolve.model.contacts import place_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
-from rbdsolve.model.symbols import Symbols
+from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
+from rbdsolve.problem.quantity import Value
 from rbdsolve.problem.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
@@ -151,11 +152,11 @@ class Model:
         """Coordinates as plain named symbols, for messages: 2*c*theta + …"""
         return expr.xreplace({q: sp.Symbol(n) for q, n in zip(self.q, self.coordinate_names())})
 
-    def with_values(self, values: Mapping[str, Fraction]) -> Model:
+    def with_values(self, values: Mapping[str, Value | Fraction]) -> Model:
         """The same model with numeric parameter values (``--set`` beats ``values:``)."""
         table = dict(self.values)
         for name, value in values.items():
-            table[self.symbols.parameters[name]] = sp.Rational(value.numerator, value.denominator)
+            table[self.symbols.parameters[name]] = exact_number(value)
         check_values(self.problem, self.symbols, table)
         check_assumptions(self.assumptions, table, self.symbols)
         return replace(self, values=table)
@@ -182,7 +183,7 @@ def build_model(problem: Problem) -> Model:
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
-    values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
+    values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
                   triads=triads, assumptions=assumed(problem, names), contacts=contacts)

@@ -38,7 +38,7 @@ import sympy as sp
 from rbdsolve.errors import InputError
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
-from rbdsolve.model.symbols import Symbols
+from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
 
@@ -77,7 +77,7 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     if not problem.contacts:
         return problem, ()
     bodies = {b.name: b for b in problem.bodies}
-    values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
+    values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     placed, rollings = {}, []
     for contact in problem.contacts:
         body = bodies[contact.body]

@@ -31,8 +31,9 @@ import sympy as sp
 from rbdsolve.model.build import body_mass_properties
 from rbdsolve.model.jet import FLOAT, MP50, Arithmetic, Jet, apply, atan2, full, power
 from rbdsolve.model.state import State
-from rbdsolve.model.symbols import Symbols
+from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.quantity import Value
 from rbdsolve.problem.schema import Body, Problem, Spring
 
 __all__ = ["FLOAT", "MP50", "Arithmetic", "NotNumeric", "NumericScene"]
@@ -186,7 +187,7 @@ def _exact_values(problem: Problem, values: Mapping) -> dict[str, Fraction]:
     unknown = sorted(set(values) - declared)
     if unknown:
         raise ValueError(f"values for undeclared parameters: {', '.join(unknown)}")
-    table = {**problem.value_map(), **{k: _fraction(v) for k, v in values.items()}}
+    table = {k: _fraction(v) for k, v in {**problem.value_map(), **values}.items()}
     used = set().union(*(e.names() for _, e in _scene_exprs(problem))) & declared
     missing = sorted(used - set(table))
     if missing:
@@ -195,10 +196,24 @@ def _exact_values(problem: Problem, values: Mapping) -> dict[str, Fraction]:
 
 
 def _fraction(x) -> Fraction:
+    """An exact fraction for the jet arithmetic: a Value or sympy number that is not
+    rational (pi/6) is taken to 60 digits, past the 50 of the high-precision route."""
+    if isinstance(x, Value):
+        x = exact_number(x)
+    if isinstance(x, sp.Rational):
+        return Fraction(int(x.p), int(x.q))
+    if isinstance(x, sp.Basic):
+        with mpmath.workdps(70):
+            x = mpmath.mpf(str(sp.N(x, 60)))
     if isinstance(x, mpmath.mpf):
         man, exp = x.man_exp
         return Fraction(man) * Fraction(2) ** exp
     return Fraction(x)
+
+
+def exact_fraction(x) -> Fraction:
+    """``_fraction`` for the solvers: a model value (sympy) as an exact Fraction."""
+    return _fraction(x)
 
 
 def _numeric_body(body: Body, names: Symbols, arithmetic: Arithmetic, cache: dict) -> NumericBody:

@@ -8,6 +8,7 @@ and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Mapping
 
 import sympy as sp
@@ -16,6 +17,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.state import State, t, user_function
 
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.quantity import Value
 from rbdsolve.problem.schema import Problem
 
 _FUNCTIONS = {
@@ -84,6 +86,14 @@ def _provably_complex(item: sp.Expr) -> bool:
     can leave the reals are asked: asking sympy about a whole 50-term sum is slow."""
     risky = item.atoms(sp.Pow, sp.log, sp.asin, sp.acos)
     return any(p.is_real is False for p in risky if not (isinstance(p, sp.Pow) and p.exp.is_integer))
+
+
+def exact_number(value: Value | Fraction | int) -> sp.Expr:
+    """A parameter's value as an exact sympy number: 3/10, pi/6, sqrt(2)."""
+    if isinstance(value, Value):
+        return to_sympy(value.tree, None)  # a constant tree names nothing
+    value = Fraction(value)
+    return sp.Rational(value.numerator, value.denominator)
 
 
 def to_sympy(tree: ex.Tree, names: Symbols):

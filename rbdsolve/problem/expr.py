@@ -112,6 +112,11 @@ class Expr:
         return frozenset(_names(self.tree))
 
 
+def tree_names(tree: Tree):
+    """Every name in ``tree`` (a generator; names may repeat)."""
+    return _names(tree)
+
+
 def _names(tree: Tree):
     if isinstance(tree, Name):
         yield tree.id

@@ -5,7 +5,6 @@ Every error names file:line:column, the key path, what was expected and what was
 
 from __future__ import annotations
 
-from fractions import Fraction
 import re
 from pathlib import Path
 
@@ -30,7 +29,9 @@ from rbdsolve.problem.contacts import ContactReader, contact_bodies
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
-from rbdsolve.problem.ranges import value_range
+from rbdsolve.problem.dimensions import scene_dimensions
+from rbdsolve.problem.quantity import Dimension, Value, parse_unit
+from rbdsolve.problem.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text
 
@@ -101,7 +102,9 @@ class _Loader:
         frames = self.frames(get("frames"))
         bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
         contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
-        values, ranges = self.values(get("values"), parameters)
+        springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
+        known = _known_dimensions(parameters, bodies, springs, gravity, points)
+        values, ranges = self.values(get("values"), parameters, known)
         return Problem(
             file=self.reading.file,
             title=self.reading.text(get("title"), "a title") or Path(self.reading.file).stem,
@@ -111,8 +114,8 @@ class _Loader:
             coordinates=coordinates,
             points=points,
             bodies=bodies,
-            springs=self.springs(get("springs")),
-            gravity=self.gravity(get("gravity")),
+            springs=springs,
+            gravity=gravity,
             values=values,
             questions=self.questions(get("questions"), coordinates, bodies, points, frames),
             prescribed=prescribed,
@@ -122,6 +125,7 @@ class _Loader:
             ranges=ranges,
             assumptions=self.assumptions(get("assumptions")),
             contacts=contacts,
+            dimensions=_dimensions(known, values, ranges),
         )
 
     def assumptions(self, node: Node | None) -> tuple[Assumption, ...]:
@@ -163,7 +167,7 @@ class _Loader:
         out = []
         for key, options in _names_list(node, "parameter"):
             name = self.reading.declare(key, "parameter")
-            description, positive = "", True
+            description, positive, unit = "", True, None
             if isinstance(options, Scalar):
                 description = options.text
                 if ex.is_number_text(description):
@@ -171,11 +175,14 @@ class _Loader:
                                      f"write 'values: {{{name}: {description}}}'", options.loc)
             elif options is not None:
                 opts = expect_mapping(options, "parameter options")
-                check_keys(opts, (), ("description", "positive"), f"parameter '{name}'")
+                check_keys(opts, (), ("description", "positive", "unit"), f"parameter '{name}'")
                 description = self.reading.text(opts.get("description"), "a description")
                 if opts.get("positive") is not None:
                     positive = read_bool(opts.get("positive"), "true or false")
-            out.append(Parameter(name, description, positive, key.loc))
+                if opts.get("unit") is not None:
+                    written = expect_scalar(opts.get("unit"), "a unit such as cm, kg or rev/min")
+                    unit = parse_unit(written.text, written.loc, written.plain)
+            out.append(Parameter(name, description, positive, key.loc, unit))
         return tuple(out)
 
     def prescribed(self, node: Node | None, parameters: tuple[Parameter, ...]) -> tuple[Prescribed, ...]:
@@ -306,9 +313,9 @@ class _Loader:
             loc=spec.loc,
         )
 
-    def values(self, node: Node | None, parameters: tuple[Parameter, ...]
-               ) -> tuple[tuple[tuple[str, Fraction], ...], tuple[ValueRange, ...]]:
-        """Numbers, and the ranges or choices to draw per exam variant (problem/ranges.py)."""
+    def values(self, node: Node | None, parameters: tuple[Parameter, ...], dims: dict[str, tuple[Dimension, str]]
+               ) -> tuple[tuple[tuple[str, Value], ...], tuple[ValueRange, ...]]:
+        """Values, and the ranges or choices to draw per exam variant (problem/ranges.py)."""
         if node is None:
             return (), ()
         table = expect_mapping(node, "values: parameter -> number")
@@ -319,13 +326,11 @@ class _Loader:
                 raise InputError(f"'{key.text}' is not a parameter{did_you_mean(key.text, known)}", key.loc)
             param = next(p for p in parameters if p.name == key.text)
             if isinstance(value, Map):
-                ranges.append(value_range(param, value))
+                ranges.append(value_range(param, value, dims.get(param.name)))
                 continue
             scalar = expect_scalar(value, "a number")
-            number = ex.parse_number(scalar.text, scalar.loc, scalar.plain)
-            if param.positive and number <= 0:
-                raise InputError(f"'{key.text}' is declared positive, found {scalar.text}", scalar.loc)
-            numbers.append((key.text, number))
+            numbers.append((key.text, parameter_value(param, scalar.text, scalar.loc, scalar.plain,
+                                                      dims.get(param.name))))
         return tuple(numbers), tuple(ranges)
 
     def questions(self, node: Node, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
@@ -337,6 +342,28 @@ class _Loader:
         return tuple(reader.question(item) for item in node.items)
 
 
+
+
+def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
+                      gravity: ex.Expr | None, points: tuple[Point, ...]) -> dict[str, tuple[Dimension, str]]:
+    """Each parameter's dimension where the file fixes it: its declared unit first, then
+    the scene (problem/dimensions.py)."""
+    positions = tuple(p.position for p in points if p.position is not None)
+    positions += tuple(b.at for b in bodies if b.at is not None)
+    known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions)
+    for p in parameters:
+        if p.unit is not None:
+            known[p.name] = (p.unit.dimension, f"its unit {p.unit.text}")
+    return known
+
+
+def _dimensions(known: dict[str, tuple[Dimension, str]], values: tuple[tuple[str, Value], ...],
+                ranges: tuple[ValueRange, ...]) -> tuple[tuple[str, Dimension], ...]:
+    """Every parameter's known dimension: from the file, else from its value's unit."""
+    out = {name: dimension for name, (dimension, _) in known.items()}
+    given = [*values, *((r.name, r.low) for r in ranges)]
+    out.update({name: v.dimension for name, v in given if name not in out and v.dimension is not None})
+    return tuple(sorted(out.items()))
 
 
 def _dependency_order(points: dict[str, ex.Expr]) -> list[str]:

@@ -12,6 +12,7 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.amplitudes import amplitudes
 from rbdsolve.problem.impact import ImpactReader
+from rbdsolve.problem.kinematics import KinematicsReader
 from rbdsolve.problem.schema import (
     Body,
     Coordinate,
@@ -37,6 +38,7 @@ OPTIONS = {
     QuestionKind.STEADY_SPIN: ("body",),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
+    QuestionKind.KINEMATICS: ("points", "at", "distance"),
 }
 
 
@@ -98,6 +100,8 @@ class QuestionReader:
             return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
         if kind is QuestionKind.IMPACT:
             return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
+        if kind is QuestionKind.KINEMATICS:
+            return Question(kind, KinematicsReader(self.reading, self.points).options(opts, key), key.loc)
         return Question(kind, None, key.loc)
 
     def frame(self, node: Node | None) -> str | None:

@@ -7,12 +7,14 @@ to be wrong (a negative length, a singular mass matrix).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from enum import Enum
 from fractions import Fraction
 
 from rbdsolve.errors import Location
 from rbdsolve.problem.expr import Expr
+from rbdsolve.problem.quantity import Dimension, Unit, Value
 
 
 class Shape(Enum):
@@ -99,6 +101,7 @@ class QuestionKind(Enum):
     IMPACT = "impact"
     STEADY_SPIN = "steady_spin"
     STEADY_MOTION = "steady_motion"
+    KINEMATICS = "kinematics"
 
     @property
     def needs_coordinates(self) -> bool:
@@ -108,7 +111,7 @@ class QuestionKind(Enum):
     def needs_positions(self) -> bool:
         """Does the question need the motion (positions as functions of the coordinates),
         not just the velocities at one instant?"""
-        return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES)
+        return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES, QuestionKind.KINEMATICS)
 
 
 @dataclass(frozen=True)
@@ -117,6 +120,7 @@ class Parameter:
     description: str
     positive: bool
     loc: Location
+    unit: Unit | None = None  # declared (parameters: {r: {unit: cm}}): a bare value is in it
 
 
 @dataclass(frozen=True)
@@ -310,6 +314,23 @@ class ModesOptions:
 
 
 @dataclass(frozen=True)
+class StateValue:
+    """One entry of a state ``at:``: a coordinate (order 0), its rate dot(q) (1) or its
+    acceleration ddot(q) (2), and its constant value."""
+
+    coordinate: str
+    order: int
+    value: Expr
+
+
+@dataclass(frozen=True)
+class KinematicsOptions:
+    points: tuple[str, ...]  # the points whose position, velocity and acceleration are asked
+    at: tuple[StateValue, ...]  # the state; what it leaves out stays symbolic
+    distances: tuple[tuple[str, str], ...] = ()  # pairs of points: |r_B − r_A| and its rate
+
+
+@dataclass(frozen=True)
 class InertiaOptions:
     body: str  # the body asked about
     about: Expr | None  # a point (vector); None: the centre of mass only
@@ -381,7 +402,7 @@ class SteadySpinOptions:
 class Question:
     kind: QuestionKind
     options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
-              | SteadySpinOptions | SteadyMotionOptions | None)
+              | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | None)
     loc: Location
 
 
@@ -392,22 +413,23 @@ class ValueRange:
     such a parameter symbolic, as if it had no value."""
 
     name: str
-    low: Fraction
-    high: Fraction
-    step: Fraction
-    choices: tuple[Fraction, ...]  # not empty: drawn from these instead of the grid
+    low: Value
+    high: Value
+    step: Value | None  # None with choices
+    choices: tuple[Value, ...]  # not empty: drawn from these instead of the grid
     loc: Location
 
     @property
     def size(self) -> int:
-        """How many values there are to draw from."""
+        """How many values there are to draw from: the grid's end is taken when it is
+        within rounding of a step (π/12 … π/3 in steps of π/12 has 4)."""
         if self.choices:
             return len(self.choices)
-        return int((self.high - self.low) // self.step) + 1
+        return int(math.floor((self.high.approx - self.low.approx) / self.step.approx + 1e-9)) + 1
 
-    def value(self, k: int) -> Fraction:
+    def value(self, k: int) -> Value:
         """The k-th value (0-based) of the grid or of the choices, exactly."""
-        return self.choices[k] if self.choices else self.low + k * self.step
+        return self.choices[k] if self.choices else self.low.step(k, self.step)
 
 
 @dataclass(frozen=True)
@@ -433,7 +455,7 @@ class Problem:
     bodies: tuple[Body, ...]
     springs: tuple[Spring, ...]
     gravity: Expr | None
-    values: tuple[tuple[str, Fraction], ...]  # numeric parameter values
+    values: tuple[tuple[str, Value], ...]  # parameter values, exact, in SI units
     questions: tuple[Question, ...]
     prescribed: tuple[Prescribed, ...] = ()
     frames: tuple[Frame, ...] = ()
@@ -442,9 +464,13 @@ class Problem:
     ranges: tuple[ValueRange, ...] = ()  # parameters drawn per variant; symbolic otherwise
     assumptions: tuple[Assumption, ...] = ()  # inequalities between parameters (R > r)
     contacts: tuple[Contact, ...] = ()  # rolling contacts and strings (problem/contacts.py)
+    dimensions: tuple[tuple[str, Dimension], ...] = ()  # parameters whose dimension is known
 
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)
 
-    def value_map(self) -> dict[str, Fraction]:
+    def dimension_map(self) -> dict[str, Dimension]:
+        return dict(self.dimensions)
+
+    def value_map(self) -> dict[str, Value]:
         return dict(self.values)

@@ -59,7 +59,7 @@ def _report(report: ProblemReport, figures: tuple[str, ...]) -> list[str]:
         out.append(f'<p class="statement">{_e(report.statement)}</p>')
     out += figures
     if report.values:
-        out.append("<p>Parameter values: " + ", ".join(f"{_e(k)} = {v:g}" for k, v in report.values.items()) + "</p>")
+        out.append("<p>Parameter values: " + ", ".join(_e(report.value_text(k)) for k in report.values) + "</p>")
     if report.model.steps:
         out.append("<h3>Model</h3>")
         out += [line for step in report.model.steps for line in _step(step)]
@@ -74,7 +74,7 @@ def _solution(number: int, s: Solution) -> list[str]:
     out += [f'<p class="warning"><b>Warning:</b> {_e(w)}</p>' for w in s.warnings]
     if s.error:
         out.append(f'<p class="error"><b>Could not answer:</b> {_e(s.error)}</p>')
-    numbers = numeric_lines(s.values)
+    numbers = numeric_lines(s.values, s.units)
     if numbers:
         out += ["<p>Numeric values:</p><ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in numbers] + ["</ul>"]
     return out

@@ -69,6 +69,7 @@ def solution(s: Solution) -> dict:
         "error_estimate": s.error_estimate,
         "answers": exact(s.answers) if s.answers is not None else None,
         "values": s.values,
+        "units": s.units,
         "warnings": list(s.warnings),
         "error": s.error,
         "steps": [step(x) for x in s.steps],
@@ -85,6 +86,7 @@ def report_object(report: ProblemReport) -> dict:
         "ok": report.solved,
         "symbols": list(report.symbols),
         "parameters": report.values,
+        "parameter_units": dict(report.units),
         "model": {
             "coordinates": [str(q) for q in model.coordinates],
             "T": exact(model.T) if model.T is not None else None,

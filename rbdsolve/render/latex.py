@@ -7,7 +7,7 @@ import unicodedata
 
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.printers import GREEK
-from rbdsolve.render.numbers import numeric_lines
+from rbdsolve.render.numbers import unit_text, numeric_lines
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
 
@@ -85,7 +85,7 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [text(report.statement), ""]
     lines += [line for picture in pictures for line in _picture(picture)]
     if report.values:
-        lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()) + ".")
+        lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
     if report.model.steps:
         lines += ["\\subsection*{Model}"]
         for step in report.model.steps:
@@ -97,7 +97,7 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
         if s.error:
             lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
-        numbers = numeric_lines(s.values)
+        numbers = numeric_lines(s.values, s.units)
         if numbers:
             lines.append("Numeric values: \\begin{itemize}")
             lines += [f"\\item \\texttt{{{text(line)}}}" for line in numbers]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.form.printers import relation_latex
-from rbdsolve.render.numbers import numeric_lines, route_text
+from rbdsolve.render.numbers import unit_text, numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind
 from rbdsolve.errors import printable
@@ -38,7 +38,7 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [md(report.statement, lines=True), ""]
     lines += [f"![{md(p.caption)}]({p.path.as_posix()})\n\n*{md(p.caption)}*\n" for p in pictures]
     if report.values:
-        lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" for k, v in report.values.items()), ""]
+        lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
     if report.model.steps:
         lines += [f"{head}# Model", ""]
         for step in report.model.steps:
@@ -50,7 +50,7 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [f"> **Warning:** {md(w)}" for w in s.warnings]
         if s.error:
             lines += [f"> **Could not answer:** {md(s.error)}", ""]
-        numbers = numeric_lines(s.values)
+        numbers = numeric_lines(s.values, s.units)
         if numbers:
             lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numbers] + [""]
     return "\n".join(lines) + "\n"

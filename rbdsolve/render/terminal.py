@@ -35,7 +35,7 @@ def render(report: ProblemReport) -> Group:
     if report.statement:  # text from the file: no control character reaches the terminal
         parts.append(Padding(Text(printable(report.statement, lines=True)), (1, 0, 0, 0)))
     if report.values:
-        given = ", ".join(f"{k} = {v:g}" for k, v in report.values.items())
+        given = ", ".join(report.value_text(k) for k in report.values)
         parts.append(Text(f"Parameter values: {given}", style="dim"))
     if report.model.steps:
         parts.append(Padding(Text("Model", style="bold underline"), (1, 0, 0, 0)))
@@ -57,7 +57,7 @@ def _solution(number: int, s: Solution) -> list:
         out.append(Text(f"warning: {printable(warning)}", style="yellow"))
     if s.error:
         out.append(Text(f"could not answer: {printable(s.error)}", style="bold red"))
-    numbers = numeric_lines(s.values)
+    numbers = numeric_lines(s.values, s.units)
     if numbers:
         out += [Text("Numeric values:")]
         out += [Text("    " + line, style="cyan") for line in numbers]

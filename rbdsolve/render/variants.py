@@ -7,10 +7,10 @@ from __future__ import annotations
 import csv
 import io
 import json
-from fractions import Fraction
 
 from rbdsolve.render.latex import PREAMBLE, text
 from rbdsolve.report.variants import VariantTable
+from rbdsolve.problem.quantity import Value
 
 NUMBER_FORMAT = "{:.10g}"  # ten significant digits: exact to well past what an exam marks
 
@@ -30,7 +30,7 @@ def _number(value: float | None) -> str:
     return "" if value is None else NUMBER_FORMAT.format(value)
 
 
-def _parameter(value: Fraction) -> str:
+def _parameter(value: Value) -> str:
     return NUMBER_FORMAT.format(float(value))
 
 
@@ -80,12 +80,12 @@ def render_latex(table: VariantTable) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _values_line(table: VariantTable, draw: tuple[Fraction, ...]) -> str:
+def _values_line(table: VariantTable, draw: tuple[Value, ...]) -> str:
     given = [*zip(table.parameters, draw), *table.fixed]
     return ", ".join(f"\\texttt{{{text(name)}}} $= {_parameter(value)}$" for name, value in given)
 
 
-def _student_page(table: VariantTable, n: int, draw: tuple[Fraction, ...]) -> list[str]:
+def _student_page(table: VariantTable, n: int, draw: tuple[Value, ...]) -> list[str]:
     lines = [f"\\section*{{{text(table.title)} \\hfill Variant {n}}}"]
     if table.statement:
         lines += [text(table.statement), ""]

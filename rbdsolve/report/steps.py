@@ -71,6 +71,7 @@ class Solution:
     answers: object | None
     steps: tuple[Step, ...]
     values: Mapping[str, object] = field(default_factory=dict)
+    units: Mapping[str, object] = field(default_factory=dict)  # beside values: each number's SI unit, or None
     warnings: tuple[str, ...] = ()
     seconds: float = 0.0
     error: str | None = None
@@ -101,6 +102,12 @@ class ProblemReport:
     solutions: tuple[Solution, ...]
     values: Mapping[str, object] = field(default_factory=dict)  # parameter values used
     symbols: tuple[str, ...] = ()  # parameter names, to read answers back (docs/json.md)
+    units: Mapping[str, str] = field(default_factory=dict)  # SI unit of each value whose dimension is known
+
+    def value_text(self, name: str) -> str:
+        """'m = 0.2 kg': a parameter's value, with its unit where known."""
+        unit = self.units.get(name)
+        return f"{name} = {self.values[name]:g}" + (f" {unit}" if unit else "")
 
     @property
     def solved(self) -> bool:

@@ -11,15 +11,7 @@ import sympy as sp
 def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
     """The same tree as plain JSON-like data, with ``leaf`` applied to each leaf:
     dataclasses and mappings become dicts, tuples and matrices (nested) lists."""
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        return {f.name: map_leaves(getattr(value, f.name), leaf) for f in dataclasses.fields(value)}
-    if isinstance(value, Mapping):
-        return {str(k): map_leaves(v, leaf) for k, v in value.items()}
-    if isinstance(value, sp.MatrixBase):
-        return [[map_leaves(x, leaf) for x in row] for row in value.tolist()]
-    if isinstance(value, (list, tuple)):
-        return [map_leaves(v, leaf) for v in value]
-    return leaf(value)
+    return map_paths(value, lambda _, x: leaf(x))
 
 
 Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an answers tree
@@ -55,3 +47,16 @@ def label(path: Path) -> str:
         else:
             out += f".{part}" if out else part
     return out
+
+
+def map_paths(value: object, leaf: Callable[[Path, object], object], path: Path = ()) -> object:
+    """``map_leaves`` with each leaf's path given to ``leaf`` too."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return {f.name: map_paths(getattr(value, f.name), leaf, (*path, f.name)) for f in dataclasses.fields(value)}
+    if isinstance(value, Mapping):
+        return {str(k): map_paths(v, leaf, (*path, str(k))) for k, v in value.items()}
+    if isinstance(value, sp.MatrixBase):
+        return [[map_paths(x, leaf, (*path, i, j)) for j, x in enumerate(row)] for i, row in enumerate(value.tolist())]
+    if isinstance(value, (list, tuple)):
+        return [map_paths(v, leaf, (*path, i)) for i, v in enumerate(value)]
+    return leaf(path, value)

@@ -4,7 +4,11 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
+from typing import SupportsFloat
+
+# A parameter's value: exact (problem.quantity.Value, which report/ does not import);
+# float() gives its number, ``.text`` the value as written.
+Number = SupportsFloat
 
 
 @dataclass(frozen=True)
@@ -18,9 +22,9 @@ class VariantTable:
     questions: tuple[str, ...]  # the question kinds, in file order
     seed: int
     parameters: tuple[str, ...]  # the ranged parameters, in file order
-    fixed: tuple[tuple[str, Fraction], ...]  # values every variant shares
+    fixed: tuple[tuple[str, Number], ...]  # values every variant shares
     columns: tuple[str, ...]  # answer labels ('modes.eigenvalues[1]')
-    draws: tuple[tuple[Fraction, ...], ...]  # per variant, per parameter
+    draws: tuple[tuple[Number, ...], ...]  # per variant, per parameter
     answers: tuple[tuple[float | None, ...], ...]  # per variant, per column
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()

@@ -16,12 +16,12 @@ from __future__ import annotations
 import re
 import tempfile
 from dataclasses import dataclass
-from fractions import Fraction
 from pathlib import Path
 from typing import Callable, Mapping, Sequence
 
 from rbdsolve.errors import InputError
 from rbdsolve.problem.schema import Problem
+from rbdsolve.problem.quantity import Value
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.render.files import write_file
@@ -54,7 +54,7 @@ def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:
 
 
 def write_key(output: Path, title: str, problems: Sequence[Solved], figures: bool,
-              values: Mapping[str, Fraction], budget: float | None = None) -> tuple[str, ...]:
+              values: Mapping[str, Value], budget: float | None = None) -> tuple[str, ...]:
     """Write the key to ``output`` (its suffix picks the format); return notes about
     pictures left out."""
     check_output(output)
@@ -105,7 +105,7 @@ def _write_text(text: str, output: Path) -> None:
 
 
 def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
-              values: Mapping[str, Fraction], notes: list[str], budget: float | None) -> tuple[Picture, ...]:
+              values: Mapping[str, Value], notes: list[str], budget: float | None) -> tuple[Picture, ...]:
     """The scene and its mode shapes, drawn at the values the solution used, within the
     budget; none for a scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model

@@ -13,12 +13,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
-from fractions import Fraction
 from typing import Sequence
 
 import sympy as sp
 from sympy.logic.boolalg import BooleanAtom
 
+from rbdsolve.model.symbols import exact_number
+from rbdsolve.problem.quantity import Value
 from rbdsolve.report.tree import Path, leaves
 
 KIND_FIELDS = ("stability", "motions")  # the answers' fields that hold a kind
@@ -89,12 +90,12 @@ def _at(value, path: Path):
     return value
 
 
-def per_variant(found: list[Kind], symbols: list[sp.Symbol], draws: list[tuple[Fraction, ...]]
+def per_variant(found: list[Kind], symbols: list[sp.Symbol], draws: list[tuple[Value, ...]]
                 ) -> tuple[tuple[str | None, ...], ...]:
     """Each variant's kinds, in the order of ``found`` (None: no kind claimed there)."""
     rows = []
     for draw in draws:
-        values = {s: sp.Rational(v.numerator, v.denominator) for s, v in zip(symbols, draw)}
+        values = {s: exact_number(v) for s, v in zip(symbols, draw)}
         rows.append(tuple(_one(k, values) for k in found))
     return tuple(rows)
 

@@ -27,7 +27,6 @@ one note naming them.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -36,6 +35,7 @@ from sympy.core.function import AppliedUndef
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, ValueRange
+from rbdsolve.problem.quantity import Value
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
@@ -117,7 +117,7 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     return replace(table, verified=tuple(k + 1 for k in checked))
 
 
-def draw(ranges: tuple[ValueRange, ...], count: int, seed: int) -> list[tuple[Fraction, ...]]:
+def draw(ranges: tuple[ValueRange, ...], count: int, seed: int) -> list[tuple[Value, ...]]:
     """Each variant's values, drawn uniformly from each range's grid (or choices) in file
     order: the same seed gives the same variants."""
     rng = np.random.default_rng(seed)
@@ -316,7 +316,7 @@ def _not_real(found: list[_Leaf], cells: np.ndarray, report: ProblemReport) -> l
 # --- the table and its check -----------------------------------------------------------
 
 
-def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple[Fraction, ...]],
+def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple[Value, ...]],
            found: list[_Leaf], cells: np.ndarray, warnings: list[str], left_out: list[str]) -> VariantTable:
     labels = question_labels([s.question for s in report.solutions])
     columns = tuple(label((labels[leaf.question], *leaf.path)) for leaf in found)

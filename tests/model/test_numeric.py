@@ -20,6 +20,8 @@ import pytest
 import scipy.linalg
 import sympy as sp
 
+from rbdsolve.model.symbols import exact_number
+
 from rbdsolve.model.build import build_model
 from rbdsolve.model.energy import mass_matrix, potential_energy
 from rbdsolve.model.numeric import FLOAT, MP50, NotNumeric, NumericScene
@@ -52,8 +54,7 @@ def symbolic(problem, values: dict[str, Fraction], q: list[Fraction]):
     """M, ∂V/∂q, ∂²V/∂q² from the symbolic model, as 60-digit mpmath matrices."""
     model = build_model(problem)
     at = {qi: sp.Rational(x.numerator, x.denominator) for qi, x in zip(model.q, q)}
-    subs = {s: sp.Rational(values[k].numerator, values[k].denominator)
-            for k, s in model.symbols.parameters.items()}
+    subs = {s: exact_number(values[k]) for k, s in model.symbols.parameters.items()}
     M = mass_matrix(model, at).xreplace(subs)
     V = potential_energy(model).total
     grad = [sp.diff(V, qi) for qi in model.q]

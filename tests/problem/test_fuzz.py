@@ -51,7 +51,9 @@ def run_file(path: Path, text: str | bytes, questions: int) -> tuple[int, str]:
     elapsed = time.perf_counter() - start
     assert result.exit_code in (0, 1, 2), f"{result.exit_code}: {result.output}\n{text}"
     assert "Traceback" not in result.output and "internal error" not in result.output, result.output
-    assert elapsed < BUDGET * (questions + 1) + 1.0, f"{elapsed:.1f} s for:\n{text}"
+    # a runaway (a budget not enforced) takes minutes; a loaded machine only adds a little,
+    # so the bound is generous: this test checks the budget works, not how fast a run is
+    assert elapsed < 3 * BUDGET * (questions + 1) + 5.0, f"{elapsed:.1f} s for:\n{text}"
     return result.exit_code, result.stderr
 
 

@@ -44,7 +44,6 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Mapping
 
 import numpy as np
@@ -53,7 +52,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
-from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene
+from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
 from rbdsolve.solvers.shared.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.shared.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.shared.scan import scan
@@ -135,7 +134,7 @@ def _shown(x) -> str:
 def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
     """The scene for floating-point evaluation, or None where it needs the symbolic model
     (3D orientations, frames, prescribed motion, …: see NotNumeric)."""
-    values = {str(k): Fraction(int(v.p), int(v.q)) for k, v in model.values.items()}
+    values = {str(k): exact_fraction(v) for k, v in model.values.items()}
     try:
         return NumericScene.build(model.problem, values, arithmetic)
     except NotNumeric:

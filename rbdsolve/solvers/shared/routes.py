@@ -26,6 +26,7 @@ from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
+from rbdsolve.solvers.shared.units import answer_units, parameter_units
 from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
@@ -60,7 +61,9 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     overflow = not_finite(solution.answers, model.values) if values else None
     solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
-    return replace(_finite_estimate(solution), values=values or {}, seconds=time.perf_counter() - start)
+    units = answer_units(solution.answers, model) if values else {}
+    return replace(_finite_estimate(solution), values=values or {}, units=units,
+                   seconds=time.perf_counter() - start)
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT})
@@ -150,8 +153,9 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     solutions = tuple(answer(q, model, options) for q in problem.questions)
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
+    units = {k: u for k, u in parameter_units(model).items() if k in values}
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
-                         summary, solutions, values, symbols)
+                         summary, solutions, values, symbols, units)
 
 
 def _coordinates_instead(model: Model, exc: OutOfTime) -> ModelSummary:

@@ -1,0 +1,80 @@
+"""The options of a ``kinematics`` question: which points, at which state.
+
+    - kinematics: {points: [B], at: {theta: pi/6, dot(theta): omega, ddot(theta): 0}, distance: [A, B]}
+
+``at`` gives coordinates, their rates ``dot(q)`` and accelerations ``ddot(q)``
+constant values (parameters and numbers); what it leaves out stays symbolic.
+``distance`` is one pair of points, or a list of pairs.
+"""
+
+from __future__ import annotations
+
+import re
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem.context import Reading
+from rbdsolve.problem.readers import describe, expect_mapping, expect_scalar
+from rbdsolve.problem.schema import KinematicsOptions, Point, StateValue
+from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
+
+_RATE = re.compile(r"^\s*(dot|ddot)\s*\(\s*(\w+)\s*\)\s*$")
+
+
+class KinematicsReader:
+    def __init__(self, reading: Reading, points: tuple[Point, ...]):
+        self.reading = reading
+        self.names = [p.name for p in points]
+
+    def options(self, opts: Map | None, key: Scalar) -> KinematicsOptions:
+        get = opts.get if opts else (lambda _: None)
+        if get("points") is None and get("distance") is None:
+            raise InputError("'kinematics' needs 'points: [NAME, …]' (or 'distance: [A, B]'): the points whose "
+                             "position, velocity and acceleration are asked", key.loc)
+        points = self.point_names(get("points")) if get("points") is not None else ()
+        at = self.state(get("at")) if get("at") is not None else ()
+        return KinematicsOptions(points, at, self.distances(get("distance")))
+
+    def point_names(self, node: Node) -> tuple[str, ...]:
+        items = node.items if isinstance(node, Seq) else [node]
+        return tuple(self.point_name(item) for item in items)
+
+    def point_name(self, node: Node) -> str:
+        name = expect_scalar(node, "a point name").text.strip()
+        if name not in self.names:
+            known = did_you_mean(name, self.names) or (f" (points: {', '.join(self.names)})" if self.names
+                                                       else " (declare it under 'points:')")
+            raise InputError(f"no point '{name}'{known}", node.loc)
+        return name
+
+    def distances(self, node: Node | None) -> tuple[tuple[str, str], ...]:
+        """[A, B] or [[A, B], [C, D]]."""
+        if node is None:
+            return ()
+        if not isinstance(node, Seq) or not node.items:
+            raise InputError(f"'distance' takes a pair of points [A, B], or a list of pairs; found {describe(node)}",
+                             node.loc)
+        pairs = node.items if all(isinstance(i, Seq) for i in node.items) else [node]
+        out = []
+        for pair in pairs:
+            if not isinstance(pair, Seq) or len(pair.items) != 2:
+                raise InputError(f"a distance is between two points [A, B]; found {describe(pair)}", pair.loc)
+            a, b = (self.point_name(item) for item in pair.items)
+            if a == b:
+                raise InputError(f"a distance needs two different points, found '{a}' twice", pair.loc)
+            out.append((a, b))
+        return tuple(out)
+
+    def state(self, node: Node) -> tuple[StateValue, ...]:
+        """coordinate, dot(coordinate) or ddot(coordinate) -> a constant value."""
+        table = expect_mapping(node, "a state: coordinate (or dot(q), ddot(q)) -> value")
+        coordinates = list(self.reading.coordinates)
+        out = []
+        for key, value in table.entries:
+            match = _RATE.match(key.text)
+            name, order = (match.group(2), 1 if match.group(1) == "dot" else 2) if match else (key.text.strip(), 0)
+            if name not in coordinates:
+                raise InputError(f"'{key.text}' is not a coordinate, nor dot() or ddot() of one"
+                                 f"{did_you_mean(name, coordinates)}", key.loc)
+            what = {0: "a coordinate's value", 1: "a rate", 2: "an acceleration"}[order]
+            out.append(StateValue(name, order, self.reading.constant(value, f"{what} in 'at'")))
+        return tuple(out)

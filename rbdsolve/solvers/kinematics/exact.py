@@ -1,0 +1,79 @@
+"""A point's kinematics, the exact route: from its position r(q, t) in the scene,
+
+    v = dr/dt = Σ ∂r/∂q_j q̇_j + ∂r/∂t,     a = dv/dt,     |v| = √(v·v),
+
+then the state of the question put in (q, q̇, q̈ as given; the rest stays symbolic).
+A distance between two points is d = |r_B − r_A| = √(Δr·Δr), its rate ḋ = (Δr·Δv)/d.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import KinematicsOptions, Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.kinematics.answers import Distance, KinematicsAnswers, PointMotion
+from rbdsolve.solvers.kinematics.steps import exact_steps
+from rbdsolve.solvers.shared.options import Options
+
+RATE_NAMES = {0: "{}", 1: "dot({})", 2: "ddot({})"}
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    answers, general = kinematics(question.options, model)
+    return Solution("kinematics", Route.EXACT, answers, exact_steps(answers, general, model))
+
+
+def kinematics(opts: KinematicsOptions, model: Model) -> tuple[KinematicsAnswers, dict]:
+    """The answers at the state, and each point's r, v, a in general (for the steps)."""
+    state = state_values(opts, model)
+    named = dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)])
+    general = {name: motion(name, model) for name in named}
+    at = {RATE_NAMES[sv.order].format(sv.coordinate): value
+          for sv, value in zip(opts.at, (model.symbols.scalar(sv.value) for sv in opts.at))}
+    points = tuple(_at_state(name, general[name], state, model) for name in opts.points)
+    distances = tuple(_distance(a, b, general, state, model) for a, b in opts.distances)
+    return KinematicsAnswers(at, points, distances), general
+
+
+def state_values(opts: KinematicsOptions, model: Model) -> dict[sp.Symbol, sp.Expr]:
+    """q, q̇, q̈ -> their values in the question's ``at``."""
+    s = model.state
+    index = {name: k for k, name in enumerate(s.names)}
+    table = (s.q, s.qd, s.qdd)
+    return {table[sv.order][index[sv.coordinate]]: model.symbols.scalar(sv.value) for sv in opts.at}
+
+
+def motion(name: str, model: Model) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
+    """r, v, a of a point in general (functions of q, q̇, q̈ and t)."""
+    if name not in model.points:
+        raise UnsolvedError(f"point '{name}' has no position (it is given by its velocity at one instant)")
+    r = model.points[name]
+    v = model.state.d_dt(r)
+    return r, v, model.state.d_dt(v)
+
+
+def _vector(m: sp.Matrix, state: dict, model: Model) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    return tuple(model.to_time(tidy(sp.expand(x.xreplace(state)))) for x in m)  # type: ignore[return-value]
+
+
+def _norm(m: sp.Matrix, state: dict) -> sp.Expr:
+    """√(m·m), the square tidied first (sin² + cos² = 1) so that √(l²) is l."""
+    return sp.sqrt(tidy(sp.expand(m.dot(m).xreplace(state))))
+
+
+def _at_state(name: str, rva, state: dict, model: Model) -> PointMotion:
+    r, v, a = rva
+    return PointMotion(name, _vector(r, state, model), _vector(v, state, model), _vector(a, state, model),
+                       model.to_time(tidy(_norm(v, state))))
+
+
+def _distance(a: str, b: str, general: dict, state: dict, model: Model) -> Distance:
+    dr = general[b][0] - general[a][0]
+    dv = general[b][1] - general[a][1]
+    d = _norm(dr, state)
+    rate = tidy(sp.expand(dr.dot(dv).xreplace(state))) / d if d != 0 else sp.nan
+    return Distance((a, b), model.to_time(tidy(d)), model.to_time(tidy(rate)))

@@ -1,0 +1,66 @@
+"""The worked solution of a kinematics question: each point's position in the scene,
+its velocity and acceleration by the chain rule, then the state put in."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.display import Relation
+from rbdsolve.model.build import Model
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.kinematics.answers import KinematicsAnswers, NumericKinematicsAnswers
+
+
+def _row(vector) -> sp.ImmutableMatrix:
+    return sp.ImmutableMatrix([list(vector)]).T
+
+
+def _state_symbol(key: str, model: Model) -> sp.Expr:
+    """'dot(theta)' as θ̇, 'theta' as θ: the state's names as the equations show them."""
+    s = model.state
+    for names, order in ((s.qdd, "ddot({})"), (s.qd, "dot({})"), (s.q, "{}")):
+        for name, symbol in zip(s.names, names):
+            if key == order.format(name):
+                return model.to_time(symbol)
+    return sp.Symbol(key)
+
+
+def exact_steps(answers: KinematicsAnswers, general: dict, model: Model) -> tuple[st.Step, ...]:
+    steps = []
+    if answers.at:
+        steps.append(st.given("The state:", *(Relation(_state_symbol(k, model), v) for k, v in answers.at.items())))
+    for name in general:
+        r, v, a = (model.to_time(m) for m in general[name])
+        steps.append(st.equation(
+            f"Point {name}: its position in the scene's axes, and by the chain rule "
+            "v = Σ ∂r/∂q q̇ + ∂r/∂t, a = dv/dt:",
+            Relation(sp.Symbol(f"r_{name}"), _row(r)), Relation(sp.Symbol(f"v_{name}"), _row(v)),
+            Relation(sp.Symbol(f"a_{name}"), _row(a))))
+    for p in answers.points:
+        steps.append(st.result(
+            f"Point {p.point}" + (" at the state:" if answers.at else ":"),
+            Relation(sp.Symbol(f"r_{p.point}"), _row(p.position)),
+            Relation(sp.Symbol(f"v_{p.point}"), _row(p.velocity)),
+            Relation(sp.Symbol(f"a_{p.point}"), _row(p.acceleration)),
+            Relation(sp.Symbol(f"|v_{p.point}|"), p.speed)))
+    for d in answers.distances:
+        a, b = d.between
+        steps.append(st.result(f"The distance {a}{b} = |r_{b} − r_{a}|, and its rate (Δr·Δv)/|Δr|:",
+                               Relation(sp.Symbol(f"|{a}{b}|"), d.distance),
+                               Relation(sp.Symbol(f"d|{a}{b}|/dt"), d.rate)))
+    return tuple(steps)
+
+
+def numeric_steps(answers: NumericKinematicsAnswers) -> tuple[st.Step, ...]:
+    def show(x):
+        return sp.nan if x is None else sp.Float(x, 6)
+
+    steps = [st.result(f"Point {p.point} at the parameter values (floating point):",
+                       Relation(sp.Symbol(f"r_{p.point}"), _row(map(show, p.position))),
+                       Relation(sp.Symbol(f"v_{p.point}"), _row(map(show, p.velocity))),
+                       Relation(sp.Symbol(f"a_{p.point}"), _row(map(show, p.acceleration))))
+             for p in answers.points]
+    steps += [st.result(f"The distance {d.between[0]}{d.between[1]}:",
+                        Relation(sp.Symbol(f"|{d.between[0]}{d.between[1]}|"), show(d.distance)))
+              for d in answers.distances]
+    return tuple(steps)

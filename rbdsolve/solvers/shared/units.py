@@ -1,0 +1,141 @@
+"""The SI unit of each numeric answer, from the dimensions of the parameters.
+
+A parameter's dimension is known from the file (``problem.dimensions``: a declared
+unit, its place in the scene, the unit of its value); a coordinate declared (or found)
+to be an angle is a pure number, a length coordinate a length, and each time
+derivative divides by a second. The dimension of an answer is then read off its
+expression: a sum's terms share one, a product multiplies them, a power with a
+rational exponent scales them, and a function (sin, acos, exp) takes and gives a pure
+number. Where anything in it is of unknown dimension, or the expression mixes
+dimensions, the answer gets no unit (None).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Mapping
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from rbdsolve.model.build import Model
+from rbdsolve.model.state import t
+from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.problem.schema import CoordinateKind
+from rbdsolve.report.tree import Path, map_paths
+from rbdsolve.solvers.shared.values import CONDITIONS
+
+TIME = Dimension(time=Fraction(1))
+
+
+def answer_units(answers: object, model: Model) -> object:
+    """The answers tree with each numeric leaf's SI unit ('rad/s', 'kg·m²', '' for a
+    pure number, 'rad' for an angle coordinate's value), None where it is unknown or
+    the leaf is not a number at the values."""
+    dimensions = known_dimensions(model)
+    angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if q in model.angles}
+
+    def unit(path: Path, leaf: object) -> str | None:
+        if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
+            return None
+        if leaf == 0:
+            return _ZERO
+        found = dimension_of(leaf, dimensions)
+        if found is None:
+            return None
+        named = [p for p in path if isinstance(p, str)]
+        return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
+
+    return _zeros_filled(map_paths(answers, unit))
+
+
+_ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any
+
+
+def _zeros_filled(tree: object) -> object:
+    """A 0 takes the one unit its list (a vector, a matrix) has, else None: a zero
+    product of inertia is in kg·m² too."""
+    if isinstance(tree, dict):
+        return {k: _zeros_filled(v) for k, v in tree.items()}
+    if isinstance(tree, list):
+        units = {u for u in _flat(tree) if u is not None and u is not _ZERO}
+        shared = units.pop() if len(units) == 1 else None
+        return _filled(tree, shared)
+    return None if tree is _ZERO else tree
+
+
+def _flat(tree: list):
+    for item in tree:
+        if isinstance(item, list):
+            yield from _flat(item)
+        elif not isinstance(item, dict):
+            yield item
+
+
+def _filled(tree: list, shared: str | None) -> list:
+    return [_filled(x, shared) if isinstance(x, list) else shared if x is _ZERO else _zeros_filled(x)
+            for x in tree]
+
+
+def _valued(expr: sp.Expr, model: Model) -> bool:
+    return expr.free_symbols <= set(model.values) | set(model.q) | {t}
+
+
+def parameter_units(model: Model) -> dict[str, str]:
+    """The SI unit of each parameter whose dimension is known ('' for a pure number)."""
+    return {name: d.unit for name, d in model.problem.dimensions}
+
+
+def known_dimensions(model: Model) -> dict[object, Dimension]:
+    """Parameters, coordinates (as symbols and as functions of time) and t."""
+    out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
+                                    if n in model.symbols.parameters}
+    for c, q in zip(model.problem.coordinates, model.q):
+        found = LENGTH if c.kind is CoordinateKind.LENGTH else NUMBER if q in model.angles else None
+        if found is not None:
+            out[q] = out[c.name] = found
+    out[t] = TIME
+    return out
+
+
+def dimension_of(expr: sp.Expr, dims: Mapping[object, Dimension]) -> Dimension | None:
+    """The dimension of ``expr``, or None where it is unknown or inconsistent."""
+    if expr.is_number:
+        return NUMBER
+    if isinstance(expr, sp.Symbol):
+        return dims.get(expr)
+    if isinstance(expr, AppliedUndef):
+        return dims.get(expr.func.__name__)
+    if isinstance(expr, sp.Derivative):
+        inner = dimension_of(expr.expr, dims)
+        return None if inner is None else inner / TIME ** expr.derivative_count
+    if isinstance(expr, sp.Add):
+        found = {dimension_of(a, dims) for a in expr.args}
+        return found.pop() if len(found) == 1 else None
+    if isinstance(expr, sp.Mul):
+        return _product([dimension_of(a, dims) for a in expr.args])
+    if isinstance(expr, sp.Pow):
+        return _power(dimension_of(expr.base, dims), expr.exp, dims)
+    if isinstance(expr, sp.Abs):
+        return dimension_of(expr.args[0], dims)
+    if isinstance(expr, sp.Function):
+        pure = all(dimension_of(a, dims) == NUMBER for a in expr.args)
+        return NUMBER if pure else None
+    return None
+
+
+def _product(found: list[Dimension | None]) -> Dimension | None:
+    out = NUMBER
+    for d in found:
+        if d is None:
+            return None
+        out = out * d
+    return out
+
+
+def _power(base: Dimension | None, exponent: sp.Expr, dims) -> Dimension | None:
+    if base is None:
+        return None
+    if isinstance(exponent, sp.Rational):
+        return base ** Fraction(int(exponent.p), int(exponent.q))
+    return NUMBER if base == NUMBER and dimension_of(exponent, dims) == NUMBER else None
