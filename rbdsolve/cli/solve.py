@@ -3,6 +3,8 @@ out, in the chosen format; a summary table on standard error for more than one f
 
 from __future__ import annotations
 
+import sys
+
 import click
 
 from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, refuse_overwriting_inputs, \
@@ -130,6 +132,8 @@ def print_summary(outcomes: list[Outcome]) -> None:
     from rich.console import Console
     from rich.table import Table
 
+    from rbdsolve.cli.writing import no_trailing_spaces
+
     folder, names = _short_names([o.source for o in outcomes])
     from rich.markup import escape
 
@@ -142,7 +146,10 @@ def print_summary(outcomes: list[Outcome]) -> None:
         table.add_column(name, justify="right" if name in ("answered", "seconds") else "left", no_wrap=True)
     for name, o in zip(names, outcomes):
         table.add_row(escape(printable(name)), *_row(o))
-    Console(stderr=True, highlight=False).print(table)
+    shown_on = Console(stderr=True, highlight=False)
+    with shown_on.capture() as captured:
+        shown_on.print(table)
+    sys.stderr.write(no_trailing_spaces(captured.get()))
 
 
 def _short_names(sources: list[str]) -> tuple[str, list[str]]:

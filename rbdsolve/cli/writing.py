@@ -5,6 +5,7 @@ solution and JSON line is still written."""
 from __future__ import annotations
 
 import io
+import re
 import time
 import traceback
 from dataclasses import dataclass
@@ -89,7 +90,12 @@ def _terminal_text(report, look: Look) -> str:
     console = Console(file=io.StringIO(), width=look.width, highlight=False, no_color=look.no_color,
                       color_system=look.color_system, force_terminal=look.terminal)
     console.print(render(report))
-    return console.file.getvalue()
+    return no_trailing_spaces(console.file.getvalue())
+
+
+def no_trailing_spaces(text: str) -> str:
+    """Each line without the spaces rich pads it with (before any closing colour code)."""
+    return re.sub(r"[ \t]+((?:\x1b\[[0-9;]*m)*)$", r"\1", text, flags=re.MULTILINE)
 
 
 def joined(fmt: str, pieces: list[Piece]) -> str:

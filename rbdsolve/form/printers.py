@@ -75,8 +75,21 @@ def _derivative(expr: sp.Derivative) -> tuple[str, int] | None:
     return name, expr.variable_count[0][1]
 
 
+def positive_first(terms: list) -> list:
+    """A sum's terms with a positive one first where the first is negative: g − R Ω²
+    for −R Ω² + g, 9π − 16 for −16 + 9π, as an exam writes a difference."""
+    if terms and terms[0].could_extract_minus_sign():
+        first = next((t for t in terms if not t.could_extract_minus_sign()), None)
+        if first is not None:
+            return [first, *(t for t in terms if t is not first)]
+    return terms
+
+
 class UnicodePrinter(StrPrinter):
     """One-line unicode math: 7/8 m r² θ̇², √3 r, cos(φ − θ)."""
+
+    def _as_ordered_terms(self, expr, order=None):
+        return positive_first(list(super()._as_ordered_terms(expr, order)))
 
     def _print_Symbol(self, expr):
         return unicode_name(expr.name)
@@ -175,6 +188,9 @@ def _tidy_unicode(text: str) -> str:
 
 class TexPrinter(LatexPrinter):
     """LaTeX with \\dot{\\theta}, rational coefficients in front, \\varphi."""
+
+    def _as_ordered_terms(self, expr, order=None):
+        return positive_first(list(super()._as_ordered_terms(expr, order)))
 
     def _print_Symbol(self, expr, style="plain"):
         return latex_name(expr.name)

@@ -11,6 +11,7 @@ from rich.text import Text
 from rbdsolve.errors import printable
 from rbdsolve.form.printers import relation_text
 from rbdsolve.render.numbers import numeric_lines, route_text
+from rbdsolve.render.wrap import wrap_math
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
 
 _STYLE = {
@@ -23,9 +24,21 @@ _STYLE = {
 }
 
 
-def step_lines(step: Step) -> list[Text]:
-    lines = [Text(step.text, style="italic" if step.kind is StepKind.NOTE else "")] if step.text else []
-    lines += [Text("    " + relation_text(r), style=_STYLE[step.kind]) for r in step.math]
+class MathLine:
+    """A relation on its own indented line, broken where it is too long for the
+    console at a + or − between terms, with a hanging indent (render/wrap.py)."""
+
+    def __init__(self, text: str, style: str) -> None:
+        self.text, self.style = text, style
+
+    def __rich_console__(self, console, options):
+        for line in wrap_math(self.text, options.max_width):
+            yield Text(line, style=self.style, overflow="fold")
+
+
+def step_lines(step: Step) -> list:
+    lines: list = [Text(step.text, style="italic" if step.kind is StepKind.NOTE else "")] if step.text else []
+    lines += [MathLine(relation_text(r), _STYLE[step.kind]) for r in step.math]
     return lines
 
 

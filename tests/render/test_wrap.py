@@ -1,0 +1,44 @@
+"""Long math lines in the terminal (issue 27): broken before a + or − between terms at
+the outermost bracket depth that fits, with a hanging indent; never inside a term;
+and no line of piped output ends in spaces."""
+
+from __future__ import annotations
+
+import re
+
+from click.testing import CliRunner
+
+from conftest import PROBLEMS
+from rbdsolve.cli import main
+from rbdsolve.render.wrap import wrap_math
+
+LONG = "V' = −l m [Ω² l sin(θ₁)² + 2 g cos(θ₁) + Ω² l sin(θ₁) sin(θ₂) + 1/2 Ω² l sin(θ₂)² + g cos(θ₂)]"
+
+
+def test_a_long_line_breaks_before_an_operator_with_a_hanging_indent() -> None:
+    lines = wrap_math(LONG, 60)
+    assert all(len(line) <= 60 for line in lines)
+    assert lines[0].startswith("    V' = ") and all(line.startswith("        + ") for line in lines[1:])
+    assert " ".join(line.strip() for line in lines) == LONG  # nothing lost or reordered
+
+
+def test_the_outermost_break_that_fits_is_taken() -> None:
+    text = "⇒ l⁴ m² λ² + (2 Ω² l⁴ m² − 4 g l³ m²) λ + (Ω⁴ l⁴ m² − 4 Ω² g l³ m² + 2 g² l² m²) = 0"
+    first, second = wrap_math(text, 80)
+    assert first == "    ⇒ l⁴ m² λ² + (2 Ω² l⁴ m² − 4 g l³ m²) λ"  # not inside the second bracket
+    assert second == "        + (Ω⁴ l⁴ m² − 4 Ω² g l³ m² + 2 g² l² m²) = 0"
+
+
+def test_a_short_line_and_a_long_term_stay_whole() -> None:
+    assert wrap_math("T = 3/4 m r² θ̇²", 80) == ["    T = 3/4 m r² θ̇²"]
+    term = "x" * 100
+    assert wrap_math(term, 80) == ["    " + term]
+
+
+def test_piped_text_has_no_trailing_spaces_and_no_broken_terms() -> None:
+    result = CliRunner().invoke(main, ["solve", str(PROBLEMS / "sg2150-2015-10-29")], terminal_width=80)
+    assert result.exit_code == 0, result.output
+    assert not [line for line in result.output.splitlines() if line != line.rstrip()]
+    # a math line's continuation starts with an operator, not with the rest of a term
+    continuations = [line for line in result.output.splitlines() if re.match(r" {8}\S", line)]
+    assert all(re.match(r" {8}[+−=⇒<>≤≥] ", line) for line in continuations), continuations
