@@ -135,11 +135,16 @@ class UnicodePrinter(StrPrinter):
             root = f"√{inner}" if base.is_Atom else f"√({inner})"
             return root if exp > 0 else f"1/{root}"
         if exp.is_Integer and exp > 0:
+            if exp % 2 == 0 and base.is_Add and base.could_extract_minus_sign():
+                base = -base  # (R − r)², not (r − R)²
             text = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Pow"])
             return text + str(exp).translate(_SUP)
         return super()._print_Pow(expr, rational)
 
     def _print_Mul(self, expr):
+        turned = sign_into_difference(expr)
+        if turned is not None:
+            return self._print(turned)
         lead = _rational_lead(expr)
         if lead is None:
             return super()._print_Mul(expr)
@@ -162,6 +167,24 @@ class UnicodePrinter(StrPrinter):
 
     def _print_Equality(self, expr):
         return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
+
+
+def sign_into_difference(expr: sp.Mul) -> sp.Expr | None:
+    """A negative product with a difference among its factors, the sign taken into the
+    difference: −2g/(3(r − R)) as 2g/(3(R − r)), −6g(a − 2R) as 6g(2R − a), as a worked
+    solution writes it (an odd power only; a common number factored out of it). None
+    where there is no such factor."""
+    coeff, rest = expr.as_coeff_Mul()
+    if not (coeff.is_Rational and coeff < 0):
+        return None
+    factors = list(sp.Mul.make_args(rest))
+    for i, factor in enumerate(factors):
+        base, exp = factor.as_base_exp()
+        if base.is_Add and exp.is_Integer and exp % 2 == 1 and base.could_extract_minus_sign():
+            turned = [p if exp == 1 else sp.Pow(p, exp, evaluate=False) for p in sp.Mul.make_args(sp.factor_terms(-base))]
+            factors[i:i + 1] = turned
+            return sp.Mul(-coeff, *factors, evaluate=False) if -coeff != 1 else sp.Mul(*factors, evaluate=False)
+    return None
 
 
 def _rational_lead(expr: sp.Mul) -> tuple[str, sp.Rational, sp.Expr] | None:
@@ -192,6 +215,12 @@ class TexPrinter(LatexPrinter):
     def _as_ordered_terms(self, expr, order=None):
         return positive_first(list(super()._as_ordered_terms(expr, order)))
 
+    def _print_Pow(self, expr):
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and exp > 0 and exp % 2 == 0 and base.is_Add and base.could_extract_minus_sign():
+            return super()._print_Pow(sp.Pow(-base, exp, evaluate=False))  # (R − r)², not (r − R)²
+        return super()._print_Pow(expr)
+
     def _print_Symbol(self, expr, style="plain"):
         return latex_name(expr.name)
 
@@ -214,6 +243,9 @@ class TexPrinter(LatexPrinter):
         return super()._print_Derivative(expr)
 
     def _print_Mul(self, expr):
+        turned = sign_into_difference(expr)
+        if turned is not None:
+            return self._print(turned)
         lead = _rational_lead(expr)
         if lead is None:
             return super()._print_Mul(expr)

@@ -14,7 +14,10 @@ solution.
 from __future__ import annotations
 
 import re
+import secrets
+import shutil
 import tempfile
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Mapping, Sequence
@@ -59,7 +62,7 @@ def write_key(output: Path, title: str, problems: Sequence[Solved], figures: boo
     pictures left out."""
     check_output(output)
     notes: list[str] = []
-    with tempfile.TemporaryDirectory(prefix="rbdsolve-key-") as scratch:
+    with _scratch_folder() as scratch:
         single_file = output.suffix in (".pdf", ".html")
         home = Path(scratch) if single_file else output.parent
         folder = home / f"{safe_name(output.stem)}-figures"
@@ -72,6 +75,19 @@ def write_key(output: Path, title: str, problems: Sequence[Solved], figures: boo
             entries.append(KeyEntry(problem.name, problem.report, problem.failure, pictures))
         _document(AnswerKey(title, tuple(entries)), output, home, Path(scratch))
     return tuple(notes)
+
+
+@contextmanager
+def _scratch_folder():
+    """A private temporary folder, removed however the block ends. Its name is chosen
+    before it is made, so a signal arriving just after it is made still finds it in
+    the cleanup (tempfile's TemporaryDirectory leaves a gap between the two)."""
+    scratch = Path(tempfile.gettempdir()) / f"rbdsolve-key-{secrets.token_hex(6)}"
+    try:
+        scratch.mkdir(mode=0o700)
+        yield str(scratch)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
 
 
 def safe_name(name: str) -> str:

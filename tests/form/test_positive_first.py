@@ -18,3 +18,17 @@ def test_a_positive_term_leads() -> None:
 
 def test_all_negative_sums_keep_their_order() -> None:
     assert to_unicode(-g - R) == "−R − g"
+
+
+def test_a_sign_goes_into_a_difference() -> None:
+    r = sp.Symbol("r", positive=True)
+    assert to_unicode(-2 * g / (3 * (r - R))) == "2 g/(3 (R − r))"  # the seed's 2g/(3(R − r))
+    assert to_latex(-2 * g / (3 * (r - R))) == r"\frac{2 g}{3 \left(R - r\right)}"
+    assert to_unicode(-6 * g * (a - 2 * R)) == "6 g (2 R − a)"
+    assert to_unicode(-(g + R)) == "−R − g"  # nothing to take the sign: as it was
+
+
+def test_an_even_power_of_a_difference_reads_positive_first() -> None:
+    r = sp.Symbol("r", positive=True)
+    assert to_unicode((r - R) ** 2) == "(R − r)²"
+    assert to_latex((r - R) ** 2) == r"\left(R - r\right)^{2}"
