@@ -22,6 +22,7 @@ KINDS = {
     "impact": "Lagrange's equations for impact (a cart and rod, struck)",
     "steady_spin": "steady spins of a free body (a phone thrown spinning)",
     "steady_motion": "steady motion, dL/dt = M (a conical pendulum of a rod)",
+    "reactions": "forces at supports, energy (a bar swinging on a pivot)",
 }
 
 # Scenes rather than question kinds: templates that show a part of the format.

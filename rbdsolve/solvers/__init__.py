@@ -19,6 +19,7 @@ and its root search, moving frames.
     inertia/        inertia           a body's tensor about a point, principal moments and axes
     steady_spin/    steady_spin       Euler's equations, spins about principal axes, stability
     steady_motion/  steady_motion     rolling conditions, angular momentum balance, solve_for
+    reactions/      reactions         forces at pivots, contacts, strings; energy; contact limits
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ FAMILIES = {
     QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric")),
     QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),
     QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
+    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric")),
 }
 
 
