@@ -107,7 +107,7 @@ def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
             raise UnsolvedError(f"the forces asked for cannot keep body '{row.body}' in its motion (its {row.label} "
                                 "balance is left unsatisfied): a support on it is missing from 'forces' (a pivot, a "
-                                "joint with another body, a contact)")
+                                "joint with another body, a contact), or a point listed does not hold it")
     return solution
 
 
