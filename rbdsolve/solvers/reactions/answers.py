@@ -13,7 +13,7 @@ import sympy as sp
 class Reaction:
     on: str  # the body the force acts on
     by: str | None  # the body it comes from (None: the ground, the surface, the string)
-    how: str  # pivot, smooth guide, rolling contact, string, joint
+    how: object  # supports.How: pivot, guide, rolling, string, ball_joint (JSON: its value)
     components: dict[str, sp.Expr]  # R_Ox, R_Oy / N_C, F_C / T_S / M_O -> value
     force: tuple[sp.Expr, sp.Expr, sp.Expr]  # R on ``on``, scene axes
     moment: sp.Expr | None = None  # about e_z, where the support keeps the body from turning

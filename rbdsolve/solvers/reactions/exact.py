@@ -18,7 +18,7 @@ from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces
 from rbdsolve.solvers.reactions.motion import along, energy, least_mu, zeros
-from rbdsolve.solvers.reactions.supports import Held, held, planar
+from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
 from rbdsolve.solvers.shared.options import Options
 
@@ -92,7 +92,7 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
             if c.one_sided}
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
-          for s in supports if s.how == "rolling contact"}
+          for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu)

@@ -27,7 +27,8 @@ def _described(s: Held, model: Model) -> str:
         else:
             parts.append(f"{c.symbol} along {_vector(model.readable(c.direction))}")
     holder = f"body '{s.by}'" if s.by else "the support"
-    return f"at {s.name} ({s.how}), {holder} on body '{s.on}': " + ", ".join(parts)
+    kind = s.how.value.replace("_", " ") + (" (a joint)" if s.by else "")
+    return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 
 def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance]) -> list[st.Step]:

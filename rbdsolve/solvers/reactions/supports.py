@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from enum import Enum
 
 import sympy as sp
 
@@ -31,6 +32,16 @@ from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.solvers.shared.values import parameter_sample
 
 _Z = sp.Matrix([0, 0, 1])
+
+
+class How(Enum):
+    """How a support holds its body (one word each: the JSON's answers are names sympy reads)."""
+
+    PIVOT = "pivot"  # the point at rest relative to its holder (a joint when the holder is a body)
+    GUIDE = "guide"  # the point moves along one direction only: a push along the normal
+    ROLLING = "rolling"  # a rolling contact: a push and friction
+    STRING = "string"  # a string: a tension
+    BALL_JOINT = "ball_joint"  # a 3D point at rest relative to its holder
 
 
 @dataclass(frozen=True)
@@ -54,7 +65,7 @@ class Held:
     on: str
     by: str | None
     components: tuple[Component, ...]
-    how: str
+    how: How
 
 
 def body(model: Model, name: str) -> RigidBody:
@@ -85,12 +96,12 @@ def _contact(model: Model, support: Support) -> Held:
         d = model.symbols.vector(rolling.source.surface.direction)
         u = -(d / sp.sqrt(d.dot(d))).applyfunc(sp.simplify)  # from the drum back to the fixed point
         return Held(name, rolling.point, rolling.body, None,
-                    (Component(sp.Symbol(f"T_{name}"), u, one_sided=True),), "string")
+                    (Component(sp.Symbol(f"T_{name}"), u, one_sided=True),), How.STRING)
     n = rolling.normal
     tangent = _Z.cross(n)
     return Held(name, rolling.point, rolling.body, None,
                 (Component(sp.Symbol(f"N_{name}"), n, one_sided=True),
-                 Component(sp.Symbol(f"F_{name}"), tangent, friction=True)), "rolling contact")
+                 Component(sp.Symbol(f"F_{name}"), tangent, friction=True)), How.ROLLING)
 
 
 def _point(model: Model, support: Support) -> Held:
@@ -106,23 +117,19 @@ def _point(model: Model, support: Support) -> Held:
         if _rank(columns, model) != 0:
             raise UnsolvedError(f"the force at '{support.point}': only pivots and ball joints (the point at rest "
                                 "relative to its holder) are answered in a 3D scene yet")
-        return Held(support.point, P, on.name, support.by, _free(support.point, 3), _how(support, "ball joint"))
+        return Held(support.point, P, on.name, support.by, _free(support.point, 3), How.BALL_JOINT)
     rank = _rank(columns, model)
     turns = any(sp.simplify(w.diff(qd)) != sp.zeros(3, 1) for qd in model.qd)
     moment = () if turns or _particle_at(on, P) else (Component(sp.Symbol(f"M_{support.point}"), _Z, moment=True),)
     if rank == 0:
-        return Held(support.point, P, on.name, support.by, _free(support.point, 2) + moment, _how(support, "pivot"))
+        return Held(support.point, P, on.name, support.by, _free(support.point, 2) + moment, How.PIVOT)
     if rank == 1:
         n = _normal(model, support, next(c for c in columns if c != sp.zeros(3, 1)))
         push = Component(sp.Symbol(f"N_{support.point}"), n, one_sided=support.by is None)
-        return Held(support.point, P, on.name, support.by, (push,) + moment, _how(support, "smooth guide"))
+        return Held(support.point, P, on.name, support.by, (push,) + moment, How.GUIDE)
     what = f"body '{on.name}'" + (f" relative to body '{support.by}'" if support.by else "")
     raise InputError(f"'{support.point}' is not a support of {what}: its point there moves freely in the plane "
                      f"(v = {sp.sstr(model.readable(v.T))}), so nothing holds it there", support.loc)
-
-
-def _how(support: Support, kind: str) -> str:
-    return f"{kind} (joint with body '{support.by}')" if support.by else kind
 
 
 def _free(name: str, dims: int) -> tuple[Component, ...]:
