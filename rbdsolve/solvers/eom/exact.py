@@ -68,15 +68,15 @@ def _accelerations(question: Question, model: Model, equations):
     """q̈ = −M⁻¹ h, and at the state asked for (``at:``, ``from_rest:``), with its steps."""
     found = accelerations(equations, model)
     names = model.coordinate_names()
-    if found.solved is None:
-        return None, None, [singular_step()]
-    solved = {n: model.to_time(a) for n, a in zip(names, found.solved)}
+    steps = [solved_step(found.solved, model)] if found.solved is not None else [singular_step(found)]
+    solved = {n: model.to_time(a) for n, a in zip(names, found.solved)} if found.solved is not None else None
     instant = question.options.instant if question.options else None
-    steps = [solved_step(found.solved, model)]
     if instant is None:
         return solved, None, steps
-    table = state_values(model, instant)
-    at = tuple(at_state(a, table) for a in found.solved)
+    there = accelerations(equations, model, state_values(model, instant))
+    if there.solved is None:
+        return solved, None, steps + [singular_step(there)]
+    at = tuple(at_state(a, {}) for a in there.solved)
     steps += instant_steps(instant, at, model)
     return solved, dict(zip(names, at)), steps
 

@@ -76,6 +76,8 @@ def instant_steps(instant, values: tuple[sp.Expr, ...], model: Model) -> list[st
             st.result(f"{when} accelerations are:", *[Relation(model.to_time(a), v) for a, v in zip(model.qdd, values)])]
 
 
-def singular_step() -> st.Step:
-    return st.note("The mass matrix M = ∂²T/∂q̇² is singular (det M = 0 for every state): Lagrange's equations "
-                   "do not fix every acceleration.")
+def singular_step(found) -> st.Step:
+    """Why q̈ is not written out: M singular, or (no state put in) too long to write."""
+    return st.note("The accelerations are not written out here: the mass matrix M = ∂²T/∂q̇² is singular (then "
+                   "Lagrange's equations do not fix every q̈), or the general form is too long to be useful (ask "
+                   "for them at a state with 'at:' or 'from_rest:').")

@@ -31,11 +31,21 @@ class Accelerations:
     solved: tuple[sp.Expr, ...] | None  # q̈_i(q, q̇, t); None where det M = 0 identically
 
 
-def accelerations(equations: tuple[sp.Expr, ...], model: Model) -> Accelerations:
-    """q̈ = −M⁻¹ h from the equations E_i = 0 (each linear in q̈)."""
+GENERAL_OPS = 400  # beyond this size of h the general q̈ is not written out
+
+
+def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None = None,
+                  general: bool = True) -> Accelerations:
+    """q̈ = −M⁻¹ h from the equations E_i = 0 (each linear in q̈), at the state ``at``
+    when given (put in first: numbers are cheap); ``solved`` is None too where the
+    general form is too long to write out (``general``: refuse rather than wait)."""
     n = len(model.q)
     M = sp.Matrix(n, n, lambda i, j: sp.diff(equations[i], model.qdd[j]))
     h = tuple(sp.expand(E.xreplace({a: 0 for a in model.qdd})) for E in equations)
+    if at is not None:
+        M, h = M.xreplace(at).applyfunc(sp.simplify), tuple(sp.simplify(x.xreplace(at)) for x in h)
+    elif general and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
+        return Accelerations(M, h, None)
     det = tidy(sp.expand(M.det(method="berkowitz")))
     if det == 0:
         return Accelerations(M, h, None)
@@ -45,6 +55,13 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model) -> Accelerations
         Mi[:, i] = sp.Matrix([-x for x in h])
         solved.append(_fraction(tidy(sp.expand(Mi.det(method="berkowitz"))), det))
     return Accelerations(M, h, tuple(solved))
+
+
+def _radicals(h: tuple[sp.Expr, ...]) -> bool:
+    """A square root of the coordinates (a spring's length): the general q̈ then swells
+    past use, and tidying it costs seconds."""
+    return any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
+               for x in h for p in x.atoms(sp.Pow))
 
 
 def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:
