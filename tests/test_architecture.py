@@ -34,7 +34,7 @@ ALLOWED = {
 PACKAGE_FILES = {"__main__": {"cli"}, "__init__": set()}
 # Solver families that build on another family's results; every other family imports
 # only solvers/shared and the layers below.
-FAMILY_USES = {"modes": {"equilibria"}, "steady_spin": {"inertia"}}
+FAMILY_USES = {"modes": {"equilibria"}, "steady_spin": {"inertia"}, "reactions": {"eom"}}
 TERMINAL_LIBRARIES = {"click", "rich"}
 MAY_PRINT = {"cli", "render"}
 

@@ -246,6 +246,24 @@ def test_steady_motion_conical_pendulum_of_a_rod() -> None:
     assert same(got["solved"]["Omega**2"], "3*g/(2*l*cos(theta))")
 
 
+def test_reactions_bar_swinging_on_a_pivot() -> None:
+    """By hand: J_O = m l²/3, so θ̈ = −3 g sin θ/(2 l); energy (m l²/6) θ̇² = (m g l/2)(cos θ − cos θ₀).
+    At the lowest point the pivot pulls up m g + m (l/2) θ̇² = m g (5 − 3 cos θ₀)/2, sideways
+    nothing. Just after release (θ̇ = 0), R = m a_G − m g with a_G = (l/2) θ̈ (cos θ₀, sin θ₀)."""
+    got = answers("reactions")
+    theta, theta0, g, l, m = sp.symbols("theta theta0 g l m", positive=True)
+    names = {"theta": theta, "theta0": theta0, "g": g, "l": l, "m": m}
+    along = {k: sp.sympify(v.replace("theta(t)", "theta"), locals=names) for k, v in got["along"]["O"].items()}
+    assert sp.simplify(along["R_Oy"].subs(theta, 0) - m * g * (5 - 3 * sp.cos(theta0)) / 2) == 0
+    assert sp.simplify(along["R_Ox"].subs(theta, 0)) == 0
+    # just after release: a_G = (l/2) θ̈ (cos θ₀, sin θ₀), θ̈ = −3 g sin θ₀/(2 l), R = m a_G + m g ŷ
+    acc = -3 * g * sp.sin(theta0) / (2 * l)
+    at = got["at"]["O"]["components"]
+    assert sp.simplify(sp.sympify(at["R_Ox"], locals=names) - m * l / 2 * acc * sp.cos(theta0)) == 0
+    assert sp.simplify(sp.sympify(at["R_Oy"], locals=names) - (m * g + m * l / 2 * acc * sp.sin(theta0))) == 0
+    assert same(got["rate_squared"]["theta"], "3*g*(cos(theta(t)) - cos(theta0))/l")
+
+
 # The scene templates (rolling, rocking), against the textbook answers by hand:
 # a solid cylinder inside a cylinder, ω² = 2g/(3(R − r)); a half-disk rocking on the
 # floor, ω² = 8g/((9π − 16) R) (problems/contacts/*.expected.yaml derive both).

@@ -23,6 +23,7 @@ KINDS = {
     "steady_spin": "steady spins of a free body (a phone thrown spinning)",
     "steady_motion": "steady motion, dL/dt = M (a conical pendulum of a rod)",
     "kinematics": "a point's position, velocity and acceleration at a state (a slider-crank)",
+    "reactions": "forces at supports, energy (a bar swinging on a pivot)",
 }
 
 # Scenes rather than question kinds: templates that show a part of the format.

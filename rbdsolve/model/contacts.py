@@ -60,6 +60,7 @@ class Rolling:
     integrated: sp.Expr
     moving_surface: bool
     source: Contact
+    normal: sp.Matrix | None = None  # the surface's unit normal at C, towards the body (for its push N)
 
 
 @dataclass(frozen=True)
@@ -142,7 +143,7 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, q, names: Symbols, values
         at = {phi: q, sigma: q / ratio}
         dependent, independent, coefficient = _travel_name(c, s), q, (a, b)
     return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, independent, coefficient,
-                   names, s.moving)
+                   names, s.moving, s.normal.subs(sigma, at[sigma]))
 
 
 def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
@@ -165,7 +166,8 @@ def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
     ratio = _constant(c, sp.simplify(-a / b), (phi, lam))  # λ̇ = ratio φ̇
     at = {phi: q, lam: ratio * q}
     dependent = user_function(f"s_{c.name}")(t)
-    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving)
+    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving,
+                   s.normal.subs(sigma, q))
 
 
 def _rates(origin, point, tangent, phi, first: dict, second: dict) -> tuple[sp.Expr, sp.Expr]:
@@ -187,7 +189,7 @@ def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
     return ratio
 
 
-def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving):
+def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving, normal=None):
     """The body's origin and angle in the coordinate, and the Rolling record: the
     relation coefficient[0]·ḋ = −coefficient[1]·q̇, integrated from the reference."""
     placed = origin.subs(at).applyfunc(sp.simplify)
@@ -199,7 +201,8 @@ def _result(c, origin, at, phi, point, dependent, independent, coefficient, name
     num, den = sp.fraction(sp.factor(coefficient[1] / coefficient[0]))
     integrated = (-sp.Mul(num, q_t, sp.Pow(den, -1), evaluate=False) if isinstance(num, sp.Add)
                   else -num * q_t / den)
-    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c)
+    normal = normal.applyfunc(sp.simplify) if normal is not None else None
+    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c, normal)
 
 
 def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:

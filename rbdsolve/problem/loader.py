@@ -117,7 +117,7 @@ class _Loader:
             springs=springs,
             gravity=gravity,
             values=values,
-            questions=self.questions(get("questions"), coordinates, bodies, points, frames),
+            questions=self.questions(get("questions"), coordinates, bodies, points, frames, contacts),
             prescribed=prescribed,
             frames=frames,
             unknowns=unknowns,
@@ -334,11 +334,12 @@ class _Loader:
         return tuple(numbers), tuple(ranges)
 
     def questions(self, node: Node, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
-                  points: tuple[Point, ...], frames: tuple[Frame, ...]) -> tuple[Question, ...]:
+                  points: tuple[Point, ...], frames: tuple[Frame, ...],
+                  contacts: tuple = ()) -> tuple[Question, ...]:
         if not isinstance(node, Seq) or not node.items:
             found = "an empty list" if isinstance(node, Seq) else describe(node)
             raise InputError(f"expected a list of questions, found {found}", node.loc)
-        reader = QuestionReader(self.reading, coordinates, bodies, points, tuple(f.name for f in frames))
+        reader = QuestionReader(self.reading, coordinates, bodies, points, tuple(f.name for f in frames), contacts)
         return tuple(reader.question(item) for item in node.items)
 
 

@@ -11,10 +11,12 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.amplitudes import amplitudes
+from rbdsolve.problem.forces import instant, reactions_options
 from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.kinematics import KinematicsReader
 from rbdsolve.problem.schema import (
     Body,
+    Contact,
     Coordinate,
     EomOptions,
     EquilibriaOptions,
@@ -31,7 +33,7 @@ from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expec
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 OPTIONS = {
-    QuestionKind.EOM: ("frames",),
+    QuestionKind.EOM: ("frames", "at", "from_rest"),
     QuestionKind.EQUILIBRIA: ("frame",),
     QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
     QuestionKind.INERTIA: ("body", "about", "axes"),
@@ -39,13 +41,15 @@ OPTIONS = {
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
+    QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
 }
 
 
 class QuestionReader:
     def __init__(self, reading: Reading, coordinates: tuple[Coordinate, ...], bodies: tuple[Body, ...],
-                 points: tuple[Point, ...], frames: tuple[str, ...] = ()):
+                 points: tuple[Point, ...], frames: tuple[str, ...] = (), contacts: tuple[Contact, ...] = ()):
         self.reading = reading
+        self.contacts = contacts
         self.frames = frames
         self.coordinates = coordinates
         self.bodies = bodies
@@ -78,7 +82,7 @@ class QuestionReader:
         get = opts.get if opts else (lambda _: None)
         if kind is QuestionKind.EOM:
             frames = self.frame_list(get("frames")) if get("frames") is not None else ()
-            return Question(kind, EomOptions(frames), key.loc)
+            return Question(kind, EomOptions(frames, instant(self.reading, opts)), key.loc)
         if kind is QuestionKind.EQUILIBRIA:
             return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
         if kind is QuestionKind.MODES:
@@ -102,6 +106,8 @@ class QuestionReader:
             return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
         if kind is QuestionKind.KINEMATICS:
             return Question(kind, KinematicsReader(self.reading, self.points).options(opts, key), key.loc)
+        if kind is QuestionKind.REACTIONS:
+            return Question(kind, reactions_options(self.reading, opts, key, self.bodies, self.contacts), key.loc)
         return Question(kind, None, key.loc)
 
     def frame(self, node: Node | None) -> str | None:

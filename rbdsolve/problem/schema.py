@@ -102,6 +102,7 @@ class QuestionKind(Enum):
     STEADY_SPIN = "steady_spin"
     STEADY_MOTION = "steady_motion"
     KINEMATICS = "kinematics"
+    REACTIONS = "reactions"
 
     @property
     def needs_coordinates(self) -> bool:
@@ -111,7 +112,8 @@ class QuestionKind(Enum):
     def needs_positions(self) -> bool:
         """Does the question need the motion (positions as functions of the coordinates),
         not just the velocities at one instant?"""
-        return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES, QuestionKind.KINEMATICS)
+        return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES, QuestionKind.KINEMATICS,
+                        QuestionKind.REACTIONS)
 
 
 @dataclass(frozen=True)
@@ -294,8 +296,48 @@ class Frame:
 
 
 @dataclass(frozen=True)
+class Instant:
+    """A state of the motion: every coordinate's value and every rate's (``at:``), or
+    every coordinate's with the rates zero (``from_rest:``, just after release)."""
+
+    coordinates: tuple[tuple[str, Expr], ...]  # coordinate -> value, in the coordinates' order
+    rates: tuple[tuple[str, Expr], ...]  # coordinate -> its rate's value; () when from rest
+    from_rest: bool
+    loc: Location
+
+
+@dataclass(frozen=True)
 class EomOptions:
     frames: tuple[str, ...]  # frames to write the Lagrangian and the equations in, too
+    instant: Instant | None = None  # where to give q̈ too (numbers with values)
+
+
+class SupportKind(Enum):
+    """What holds a body at a point, as the reactions question reads it."""
+
+    POINT = "point"  # a point of a body held by the ground or another body: the kinematics decide
+    CONTACT = "contact"  # a rolling contact or string from 'contacts:'
+
+
+@dataclass(frozen=True)
+class Support:
+    """A force asked for: at point ``point`` on body ``on``, from the ground (``by`` None)
+    or from body ``by``; or the contact named ``point``. ``normal``: the direction a
+    one-sided push is counted positive along (None: against gravity)."""
+
+    kind: SupportKind
+    point: str
+    on: str
+    by: str | None
+    normal: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class ReactionsOptions:
+    supports: tuple[Support, ...]
+    instant: Instant | None  # None: the forces as functions of the state
+    loc: Location
 
 
 @dataclass(frozen=True)
@@ -402,7 +444,7 @@ class SteadySpinOptions:
 class Question:
     kind: QuestionKind
     options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
-              | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | None)
+              | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | ReactionsOptions | None)
     loc: Location
 
 

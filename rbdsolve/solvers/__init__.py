@@ -20,6 +20,7 @@ and its root search, moving frames.
     steady_spin/    steady_spin       Euler's equations, spins about principal axes, stability
     steady_motion/  steady_motion     rolling conditions, angular momentum balance, solve_for
     kinematics/     kinematics        points' position, velocity, acceleration at a state; distances
+    reactions/      reactions         forces at pivots, contacts, strings; energy; contact limits
 """
 
 from __future__ import annotations
@@ -40,6 +41,7 @@ FAMILIES = {
     QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),
     QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
     QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric")),
+    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric")),
 }
 
 

@@ -90,7 +90,7 @@ CASES = [
     ("parameters: {m: mass,", "parameters: {lambda: mass, m: mass,", 2, 14, "parameters.lambda", "Python keyword"),
     ("parameters: {m: mass,", "parameters: {ℓ: mass, m: mass,", 2, 14, "parameters.ℓ", "Greek letters are spelled"),
     ("{m: mass, l: length,", "{m: 3, l: length,", 2, 17, "parameters.m", "write 'values: {m: 3}'"),
-    ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 11, "questions[0].eom.about", "unknown key 'about' in question 'eom' (expected one of: frames)"),
+    ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 11, "questions[0].eom.about", "unknown key 'about' in question 'eom' (expected one of: frames, at, from_rest)"),
     ("questions:\n  - modes: {about: {theta: 0}}", "questions: []", 9, 12, "questions", "found an empty list"),
     ("shape: particle, ", "shape: rod, length: l, radius: l, ", 8, 32, "bodies.bob.radius", "a rod takes length, not 'radius'"),
 ]

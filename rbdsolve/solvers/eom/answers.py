@@ -22,6 +22,8 @@ class EomAnswers:
     frames: tuple[FrameAnswers, ...] = ()  # the frames asked for
     equivalent: bool | None = None  # every frame agrees (None: no frames asked)
     total_derivative: sp.Expr | None = None  # F of the first frame asked
+    accelerations: dict[str, sp.Expr] | None = None  # q̈ per coordinate, of q, q̇ (None: M singular)
+    at: dict[str, sp.Expr] | None = None  # q̈ per coordinate at the state asked for (None: none asked)
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,8 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
-from rbdsolve.solvers.eom.steps import frame_steps, lagrange_step
+from rbdsolve.solvers.eom.steps import frame_steps, instant_steps, lagrange_step, singular_step, solved_step
+from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.singular import eom_warnings
 
@@ -50,13 +51,34 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         answer, frame_steps = _in_frame(model, model.problem.frame(name), equations)
         frames.append(answer)
         steps += frame_steps
+    solved, at, acceleration_steps = _accelerations(question, model, equations)
     answers = EomAnswers(
         tuple(model.to_time(E) for E in equations),
         tuple(frames),
         all(f.equivalent for f in frames) if frames else None,
         frames[0].total_derivative if frames else None,
+        solved,
+        at,
     )
+    steps[1:1] = acceleration_steps  # right after Lagrange's equations, before the frames
     return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=eom_warnings(model))
+
+
+def _accelerations(question: Question, model: Model, equations):
+    """q̈ = −M⁻¹ h, and at the state asked for (``at:``, ``from_rest:``), with its steps."""
+    found = accelerations(equations, model)
+    names = model.coordinate_names()
+    steps = [solved_step(found.solved, model)] if found.solved is not None else [singular_step(found)]
+    solved = {n: model.to_time(a) for n, a in zip(names, found.solved)} if found.solved is not None else None
+    instant = question.options.instant if question.options else None
+    if instant is None:
+        return solved, None, steps
+    there = accelerations(equations, model, state_values(model, instant))
+    if there.solved is None:
+        return solved, None, steps + [singular_step(there)]
+    at = tuple(at_state(a, {}) for a in there.solved)
+    steps += instant_steps(instant, at, model)
+    return solved, dict(zip(names, at)), steps
 
 
 def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[FrameAnswers, list[st.Step]]:

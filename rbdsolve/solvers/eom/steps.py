@@ -12,6 +12,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.eom.answers import NumericEomAnswers
+from rbdsolve.solvers.shared.accelerations import state_step
 from rbdsolve.solvers.shared.present import present, present_equation
 
 
@@ -59,3 +60,24 @@ def numeric_steps(answers: NumericEomAnswers, model: Model, error: float,
 def lagrange_step(equations: tuple[sp.Expr, ...], model: Model) -> st.Step:
     return st.result("Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, one for each "
                      "coordinate in turn:", *[Relation(present_equation(E, model), sp.Integer(0)) for E in equations])
+
+
+def solved_step(solved: tuple[sp.Expr, ...], model: Model) -> st.Step:
+    """q̈ = −M⁻¹ h, one line per coordinate."""
+    return st.result("Solved for the accelerations (the equations are linear in q̈: M(q) q̈ = −h(q, q̇), and "
+                     "det M ≠ 0):", *[Relation(model.to_time(a), model.to_time(v))
+                                       for a, v in zip(model.qdd, solved)])
+
+
+def instant_steps(instant, values: tuple[sp.Expr, ...], model: Model) -> list[st.Step]:
+    """q̈ at the state: just after release from rest, or at the state given."""
+    when = "Just after release, the" if instant.from_rest else "There the"
+    return [state_step(model, instant),
+            st.result(f"{when} accelerations are:", *[Relation(model.to_time(a), v) for a, v in zip(model.qdd, values)])]
+
+
+def singular_step(found) -> st.Step:
+    """Why q̈ is not written out: M singular, or (no state put in) too long to write."""
+    return st.note("The accelerations are not written out here: the mass matrix M = ∂²T/∂q̇² is singular (then "
+                   "Lagrange's equations do not fix every q̈), or the general form is too long to be useful (ask "
+                   "for them at a state with 'at:' or 'from_rest:').")

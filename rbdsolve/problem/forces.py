@@ -1,0 +1,152 @@
+"""What the force questions read: a state of the motion (``at:`` or ``from_rest:``),
+shared by ``eom`` and ``reactions``, and the supports ``reactions`` asks about.
+
+    eom: {from_rest: {theta: pi/2}}                        # q̈ just after release
+    eom: {at: {theta: pi/2, dot(theta): 0}}                # every coordinate and rate
+    reactions: {forces: [O], from_rest: {theta: 0}}        # the force at O on the only body
+    reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
+
+A rate is keyed as in expressions, ``dot(theta)``; the key is matched as text, never
+parsed as an expression. Whether a point really holds the body (a pivot, a smooth guide,
+a joint) needs the kinematics, so the model checks it (solvers/reactions/supports.py).
+"""
+
+from __future__ import annotations
+
+import re
+
+from rbdsolve.errors import InputError, did_you_mean
+from rbdsolve.problem.context import Reading
+from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar
+from rbdsolve.problem.schema import Body, Contact, Instant, ReactionsOptions, Support, SupportKind
+from rbdsolve.problem.yamlnodes import Map, Node, Seq
+
+_RATE = re.compile(r"^dot\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)$")
+
+
+def instant(reading: Reading, opts: Map | None) -> Instant | None:
+    """``at: {q: value, dot(q): value, …}`` (every one) or ``from_rest: {q: value, …}``."""
+    if opts is None:
+        return None
+    at, rest = opts.get("at"), opts.get("from_rest")
+    if at is not None and rest is not None:
+        raise InputError("give the state with 'at:' (coordinates and rates) or 'from_rest:' (coordinates; "
+                         "the rates zero), not both", rest.loc)
+    if rest is not None:
+        return Instant(reading.coordinate_values(rest, "a configuration released from rest", complete=True),
+                       (), True, rest.loc)
+    if at is None:
+        return None
+    return _state(reading, at)
+
+
+def _state(reading: Reading, node: Node) -> Instant:
+    table = expect_mapping(node, "a state: coordinate -> value and dot(coordinate) -> value")
+    names = list(reading.coordinates)
+    places, rates = {}, {}
+    for key, value in table.entries:
+        match = _RATE.match(key.text.strip())
+        name = match.group(1) if match else key.text.strip()
+        if name not in names:
+            offered = names + [f"dot({n})" for n in names]
+            raise InputError(f"'{key.text}' is not a coordinate or a rate dot(q){did_you_mean(key.text, offered)}",
+                             key.loc)
+        into = rates if match else places
+        into[name] = reading.constant(value, f"a value in the state '{key.text}'")
+    missing = [n for n in names if n not in places] + [f"dot({n})" for n in names if n not in rates]
+    if missing:
+        raise InputError(f"a state gives every coordinate and rate; missing {', '.join(missing)} (or give "
+                         "'from_rest:' with the coordinates alone)", table.loc)
+    return Instant(tuple((n, places[n]) for n in names), tuple((n, rates[n]) for n in names), False, table.loc)
+
+
+def reactions_options(reading: Reading, opts: Map | None, key, bodies: tuple[Body, ...],
+                      contacts: tuple[Contact, ...]) -> ReactionsOptions:
+    """The supports asked about (default: every contact) and the state."""
+    forces = opts.get("forces") if opts else None
+    if forces is None:
+        if not contacts:
+            raise InputError("'reactions' needs 'forces:', the points where a body is held (a pivot 'O', a joint "
+                             "'{at: J, on: rod2, by: rod1}', a contact's name)", key.loc)
+        supports = tuple(_contact(c, c.loc) for c in contacts)
+    else:
+        items = forces.items if isinstance(forces, Seq) else [forces]
+        if not items:
+            raise InputError("'forces' lists at least one point or contact", forces.loc)
+        supports = tuple(_Supports(reading, bodies, contacts).support(item) for item in items)
+    _no_twice(supports)
+    return ReactionsOptions(supports, instant(reading, opts), key.loc)
+
+
+def _contact(c: Contact, loc) -> Support:
+    return Support(SupportKind.CONTACT, c.name, c.body, None, None, loc)
+
+
+def _no_twice(supports: tuple[Support, ...]) -> None:
+    seen = set()
+    for s in supports:
+        key = (s.point, frozenset({s.on, s.by}))
+        if key in seen:
+            raise InputError(f"the force at '{s.point}' on '{s.on}' is asked twice", s.loc)
+        seen.add(key)
+
+
+class _Supports:
+    def __init__(self, reading: Reading, bodies: tuple[Body, ...], contacts: tuple[Contact, ...]):
+        self.reading = reading
+        self.bodies = [b.name for b in bodies]
+        self.contacts = {c.name: c for c in contacts}
+
+    def support(self, node: Node) -> Support:
+        """'O' (the only body, or a contact's name), or {at, on, by, normal}."""
+        if not isinstance(node, Map):
+            name = expect_scalar(node, "a point or contact name, or {at: POINT, on: BODY}").text.strip()
+            if name in self.contacts:
+                return _contact(self.contacts[name], node.loc)
+            self._point(name, node)
+            if len(self.bodies) != 1:
+                raise InputError(f"say which body the force at '{name}' acts on: {{at: {name}, on: BODY}} (bodies: "
+                                 f"{', '.join(self.bodies)})", node.loc)
+            return Support(SupportKind.POINT, name, self.bodies[0], None, None, node.loc)
+        check_keys(node, ("at",), ("on", "by", "normal"), "a force asked for")
+        name = expect_scalar(node.get("at"), "a point name").text.strip()
+        if name in self.contacts:
+            return self._at_contact(name, node)
+        self._point(name, node.get("at"))
+        on = self._body(node.get("on"), node, name)
+        by = self._body(node.get("by"), node, name) if node.get("by") is not None else None
+        if by == on:
+            raise InputError(f"a body does not hold itself: 'by' names '{on}' as 'on' does", node.get("by").loc)
+        normal = node.get("normal")
+        direction = self.reading.axis(normal) if normal is not None else None
+        return Support(SupportKind.POINT, name, on, by, direction, node.loc)
+
+    def _at_contact(self, name: str, node: Map) -> Support:
+        contact = self.contacts[name]
+        on = node.get("on")
+        if on is not None and expect_scalar(on, "a body name").text.strip() != contact.body:
+            raise InputError(f"body '{on.text.strip()}' is not in contact at '{name}': contact '{name}' holds "
+                             f"body '{contact.body}'", on.loc)
+        for extra in ("by", "normal"):
+            if node.get(extra) is not None:
+                raise InputError(f"contact '{name}' gives its own surface; '{extra}' is not needed",
+                                 node.get(extra).loc)
+        return _contact(contact, node.loc)
+
+    def _point(self, name: str, node: Node) -> None:
+        known = list(self.reading.point_exprs)
+        if name not in known:
+            offered = known + list(self.contacts)
+            raise InputError(f"no point or contact '{name}'{did_you_mean(name, offered)}", node.loc)
+
+    def _body(self, node: Node | None, spec: Map, point: str) -> str:
+        if node is None:
+            if len(self.bodies) == 1:
+                return self.bodies[0]
+            raise InputError(f"say which body the force at '{point}' acts on: 'on: BODY' (bodies: "
+                             f"{', '.join(self.bodies)})", spec.loc)
+        word = expect_scalar(node, "a body name").text.strip()
+        if word not in self.bodies:
+            raise InputError(f"no body '{word}'{did_you_mean(word, self.bodies)}", node.loc)
+        return word
+

@@ -1,0 +1,149 @@
+"""Newton–Euler per body, and the forces solved from it.
+
+For each body B held by the supports asked about (a free body diagram),
+
+    m a_G = m g + Σ R            (linear momentum)
+    dL_G/dt = Σ (r_P − r_G) × R + Σ M     (angular momentum about G, L_G = J_G ω)
+
+where R is a support's force on B at P (a body named ``by`` feels −R and −M there), and
+a_G, dL_G/dt carry q̈, replaced by the accelerations from Lagrange's equations. What is
+left is linear in the unknown components x: A x = b. As many independent rows as
+unknowns are solved exactly (chosen at a generic sample); the other rows must then hold
+too — where they do not, a support on that body is missing from the question.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
+from rbdsolve.model.build import Model
+from rbdsolve.model.state import t
+from rbdsolve.solvers.reactions.supports import Held, body
+from rbdsolve.solvers.shared.values import parameter_sample
+
+
+@dataclass(frozen=True)
+class Balance:
+    """One component of one body's balance: ``lhs = rhs`` (m a_G·e_k = Σ F·e_k, or the
+    moment about G), exact, with q̈ still in it."""
+
+    body: str
+    label: str  # x, y, z or "moment about G (z)"
+    lhs: sp.Expr
+    rhs: sp.Expr
+
+
+def bodies_held(supports: tuple[Held, ...]) -> list[str]:
+    """The bodies on which the supports act, in the order they are first named."""
+    names: list[str] = []
+    for s in supports:
+        for name in (s.on, s.by):
+            if name is not None and name not in names:
+                names.append(name)
+    return names
+
+
+def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balance]:
+    """The free body diagram of every held body, component by component."""
+    out = []
+    for name in bodies_held(supports):
+        b = body(model, name)
+        acceleration = model.state.d_dt(model.state.d_dt(b.position))
+        force = (b.mass * model.gravity) if model.gravity is not None else sp.zeros(3, 1)
+        moment = sp.zeros(3, 1)
+        for s in supports:
+            sign = 1 if s.on == name else -1 if s.by == name else 0
+            for c in s.components:
+                if c.moment:
+                    moment += sign * c.symbol * c.direction
+                else:
+                    force += sign * c.symbol * c.direction
+                    moment += sign * (s.point - b.position).cross(c.symbol * c.direction)
+        L_dot = model.state.d_dt(b.inertia_in_scene() * b.angular_velocity(model.state))
+        for k in range(dims):
+            lhs = _tidied(b.mass * acceleration[k], model)
+            if lhs != 0 or sp.expand(force[k]) != 0:  # 0 = 0: a direction nothing acts along
+                out.append(Balance(name, "xyz"[k], lhs, force[k]))
+        for k in ((2,) if dims == 2 else range(3)):
+            lhs = _tidied(L_dot[k], model)
+            if lhs != 0 or sp.expand(moment[k]) != 0:
+                out.append(Balance(name, f"moment about G ({'xyz'[k]})", lhs, _moment(moment[k])))
+    return out
+
+
+def _tidied(expr: sp.Expr, model: Model) -> sp.Expr:
+    """m a_G·e_k or dL_G/dt·e_k collected in q̈ and q̇, each coefficient tidied."""
+    parts = collect_in(sp.expand(expr), [*model.qdd, *model.qd])
+    return sp.Add(*[c * m for m, c in parts.items()])
+
+
+def _moment(expr: sp.Expr) -> sp.Expr:
+    return sp.collect(tidy(sp.expand(expr)), sorted(expr.free_symbols, key=str))
+
+
+def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
+                 qdd: dict[sp.Symbol, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
+    """x from A x = b, the accelerations put in; the rows not used must hold too."""
+    exprs = [sp.expand((r.lhs - r.rhs).xreplace(qdd)) for r in rows]
+    A = sp.Matrix([[sp.diff(e, x) for x in unknowns] for e in exprs])
+    b = sp.Matrix([-e.xreplace({x: 0 for x in unknowns}) for e in exprs])
+    chosen = _independent_rows(A, model, len(unknowns))
+    if len(chosen) < len(unknowns):
+        raise UnsolvedError("the balances do not fix every force asked for (statically indeterminate: more "
+                            f"unknowns than independent balances among {', '.join(map(str, unknowns))})")
+    A_s, b_s = A.extract(chosen, list(range(len(unknowns)))), b.extract(chosen, [0])
+    det = tidy_fraction(A_s.det(method="berkowitz"))
+    solution = {}
+    for j, x in enumerate(unknowns):
+        Aj = A_s.copy()
+        Aj[:, j] = b_s
+        solution[x] = clean(sp.expand(Aj.det(method="berkowitz")) / det)
+    for i, row in enumerate(rows):
+        if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
+            raise UnsolvedError(f"the forces asked for cannot keep body '{row.body}' in its motion (its {row.label} "
+                                "balance is left unsatisfied): a support on it is missing from 'forces' (a pivot, a "
+                                "joint with another body, a contact), or a point listed does not hold it")
+    return solution
+
+
+def clean(expr: sp.Expr) -> sp.Expr:
+    """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
+    value = tidy_fraction(expr)
+    top, bottom = sp.fraction(value)
+    return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
+
+
+def _sample(model: Model, seed: int) -> dict:
+    rng = random.Random(seed)
+    point = parameter_sample(model, rng)
+    point.update({q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd, t)})
+    return point
+
+
+def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
+    """Rows of A independent at a generic sample, greedily, up to ``wanted``."""
+    numeric = A.xreplace(_sample(model, 5)).evalf(30)
+    chosen: list[int] = []
+    for i in range(A.rows):
+        trial = numeric.extract(chosen + [i], list(range(A.cols)))
+        if trial.rank(iszerofunc=lambda x: abs(x) < 1e-20) == len(chosen) + 1:
+            chosen.append(i)
+        if len(chosen) == wanted:
+            break
+    return chosen
+
+
+def _holds(residual: sp.Expr, model: Model) -> bool:
+    """Zero at two generic samples, relative to the size of its terms."""
+    for seed in (3, 17):
+        point = _sample(model, seed)
+        value = abs(sp.N(residual.xreplace(point), 30))
+        size = sum(abs(sp.N(t.xreplace(point), 30)) for t in sp.Add.make_args(sp.expand(residual))) or 1
+        if value > 1e-15 * size:
+            return False
+    return True

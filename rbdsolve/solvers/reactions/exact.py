@@ -1,0 +1,99 @@
+"""The reactions, exact: Lagrange's equations give q̈, Newton–Euler per body gives the
+forces (balances.py); at a state they are put in; released from rest with one
+coordinate, T + V constant gives q̇²(q), the forces along the motion and where a push
+or a tension reaches zero, and the least μ for rolling (motion.py)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.eom.exact import lagrange_equations
+from rbdsolve.solvers.reactions import steps as rs
+from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
+from rbdsolve.solvers.reactions.balances import balances, solve_forces
+from rbdsolve.solvers.reactions.motion import along, energy, least_mu, zeros
+from rbdsolve.solvers.reactions.supports import Held, How, held, planar
+from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.shared.options import Options
+
+
+def setup(question: Question, model: Model):
+    """The supports, the accelerations and the free body rows, shared by both routes."""
+    if model.springs:
+        raise UnsolvedError("reactions in a scene with springs are not answered yet (which body each spring end "
+                            "pulls is not known to the model)")
+    supports = tuple(held(model, s) for s in question.options.supports)
+    found = accelerations(lagrange_equations(model), model)
+    if found.solved is None:
+        raise UnsolvedError("the mass matrix is singular: Lagrange's equations do not fix the accelerations, "
+                            "so Newton–Euler cannot give the forces")
+    rows = balances(model, supports, 2 if planar(model) else 3)
+    return supports, found.solved, rows
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    supports, solved, rows = setup(question, model)
+    unknowns = [c.symbol for s in supports for c in s.components]
+    qdd = dict(zip(model.qdd, solved))
+    forces = solve_forces(model, rows, unknowns, qdd)
+    reactions = {s.name: _reaction(s, forces) for s in supports}
+    steps = [*rs.free_body_steps(model, supports, rows), rs.accelerations_step(model, solved),
+             rs.solved_step(model, supports, forces)]
+    answers = ReactionsAnswers(reactions, {n: model.to_time(a) for n, a in zip(model.coordinate_names(), solved)})
+    instant = question.options.instant
+    if instant is not None:
+        table = state_values(model, instant)
+        at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
+        answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()})
+        steps += rs.instant_steps(model, instant, supports, at)
+        if instant.from_rest:
+            answers, more = _along_the_motion(model, supports, forces, table, answers)
+            steps += more
+    answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()})
+    return Solution("reactions", Route.EXACT, answers, tuple(steps))
+
+
+def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:
+    """The support's components, and its force R = Σ x e_x in scene axes (at the state
+    ``table`` when given)."""
+    force = sum((values[c.symbol] * c.direction.xreplace(table or {}) for c in s.components if not c.moment),
+                sp.zeros(3, 1))
+    moment = next((values[c.symbol] for c in s.components if c.moment), None)
+    return Reaction(s.on, s.by, s.how, {str(c.symbol): values[c.symbol] for c in s.components},
+                    tuple(sp.simplify(x) for x in force), moment)
+
+
+def _timeless(r: Reaction, model: Model) -> Reaction:
+    """The reaction with the coordinates as functions of time, for the answers."""
+    return Reaction(r.on, r.by, r.how, {k: model.to_time(v) for k, v in r.components.items()},
+                    tuple(model.to_time(x) for x in r.force), model.to_time(r.moment) if r.moment is not None else None)
+
+
+def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
+    return replace(answers, **changes)
+
+
+def _along_the_motion(model: Model, supports, forces, table, answers):
+    """q̇²(q) by energy, the forces along the motion, their zeros and the least μ."""
+    e = energy(model, table)
+    if e is None:
+        return answers, [rs.no_energy_note(model)]
+    values = {x: along(v, model, e) for x, v in forces.items()}
+    if any(v is None for v in values.values()):
+        return answers, [rs.energy_steps(model, e)]
+    name = model.coordinate_names()[0]
+    by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
+    lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
+            if c.one_sided}
+    mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
+          for s in supports if s.how is How.ROLLING}
+    mu = {k: model.to_time(v) for k, v in mu.items()}
+    answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
+                       contact_lost=lost, least_friction=mu)
+    return answers, [rs.energy_steps(model, e), *rs.along_steps(model, supports, values, lost, mu)]

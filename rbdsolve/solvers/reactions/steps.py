@@ -1,0 +1,89 @@
+"""The worked solution of a reactions question: each body's free body diagram (the
+forces named, Newton–Euler component by component), the accelerations from Lagrange's
+equations, the forces solved; at the state asked for; released from rest, T + V
+constant, the forces along the motion, where a contact is lost and the least μ."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.display import Relation
+from rbdsolve.model.build import Model
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.reactions.balances import Balance
+from rbdsolve.solvers.reactions.supports import Held
+from rbdsolve.solvers.shared.accelerations import state_step
+
+
+def _vector(v) -> str:
+    return "(" + ", ".join(sp.sstr(x) for x in list(v)[:2 if v[2] == 0 else 3]) + ")"
+
+
+def _described(s: Held, model: Model) -> str:
+    parts = []
+    for c in s.components:
+        if c.moment:
+            parts.append(f"a moment {c.symbol} about e_z")
+        else:
+            parts.append(f"{c.symbol} along {_vector(model.readable(c.direction))}")
+    holder = f"body '{s.by}'" if s.by else "the support"
+    kind = s.how.value.replace("_", " ") + (" (a joint)" if s.by else "")
+    return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
+
+
+def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance]) -> list[st.Step]:
+    """The forces named, then m a_G = m g + Σ R and dL_G/dt = Σ r × R per body."""
+    steps = [st.definition("Free body diagrams. The forces the supports exert, each unknown along its unit "
+                           "vector (scene axes): " + "; ".join(_described(s, model) for s in supports) + ".")]
+    names = list(dict.fromkeys(r.body for r in rows))
+    for name in names:
+        mine = [r for r in rows if r.body == name]
+        steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R component by component, and "
+                                 "dL_G/dt = Σ (r_P − r_G) × R + Σ M about its centre of mass G:",
+                                 *[Relation(model.to_time(r.lhs), model.to_time(r.rhs)) for r in mine]))
+    return steps
+
+
+def accelerations_step(model: Model, solved) -> st.Step:
+    return st.substitution("The accelerations from Lagrange's equations (M q̈ = −h), put in:",
+                           *[Relation(model.to_time(a), model.to_time(v)) for a, v in zip(model.qdd, solved)])
+
+
+def solved_step(model: Model, supports: tuple[Held, ...], forces: dict) -> st.Step:
+    return st.result("Solved for the forces, as functions of the state:",
+                     *[Relation(c.symbol, model.to_time(forces[c.symbol])) for s in supports for c in s.components])
+
+
+def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -> list[st.Step]:
+    when = "Just after release" if instant.from_rest else "At that state"
+    math = [Relation(sp.Symbol(k), v) for s in supports for k, v in at[s.name].components.items()]
+    return [state_step(model, instant), st.result(f"{when}, the forces are:", *math)]
+
+
+def energy_steps(model: Model, e) -> st.Step:
+    q, qd = model.q[0], model.qd[0]
+    return st.result("Energy is conserved (the supports do no work, gravity has a potential): T + V is constant, "
+                     "T + V = V(q₀) at release from rest, so",
+                     Relation(model.to_time(e.T + e.V), model.to_time(e.start)),
+                     Relation(model.to_time(qd) ** 2, model.to_time(e.rate_squared)))
+
+
+def no_energy_note(model: Model) -> st.Step:
+    return st.note("With more than one coordinate (or time in the scene) T + V = constant does not fix each rate: "
+                   "the forces are given at release only.")
+
+
+def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict) -> list[st.Step]:
+    steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
+                       *[Relation(c.symbol, model.to_time(values[c.symbol]))
+                         for s in supports for c in s.components])]
+    for name, where in lost.items():
+        if where:
+            steps.append(st.result(f"{name} = 0, so the contact is lost (a string goes slack), where:",
+                                   *[Relation(eq.lhs, eq.rhs) for eq in where]))
+        else:
+            steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
+    for name, value in mu.items():
+        steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
+                               "friction is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
+    return steps

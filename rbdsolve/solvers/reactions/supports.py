@@ -1,0 +1,170 @@
+"""Which force (and moment) a support can exert, read off the kinematics.
+
+An ideal support does no work in any motion the scene allows (d'Alembert's principle):
+its force R at P is orthogonal to every velocity the body's material point at P can
+have relative to the holder,
+
+    v_rel = v_G + ω × (P − r_G) − (the holder's point there)  =  Σ_j (∂v_rel/∂q̇_j) q̇_j,
+
+so R lies in the orthogonal complement of the columns ∂v_rel/∂q̇_j. In the plane: no
+column (a pivot, a joint) leaves R free, two components; one direction (a smooth
+guide, a particle on a sphere) leaves a push N along the normal; two independent
+directions leave nothing: the point is not held. A moment M about the normal to the
+plane appears where the body cannot turn relative to the holder at all (a block on a
+smooth plane), except for a particle at its own point.
+
+A rolling contact holds its body's point at rest: a push N along the surface's normal
+n and a friction force F along t = e_z × n. A string pulls its drum towards the fixed
+point: a tension T along the string.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from enum import Enum
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.problem.schema import Support, SupportKind
+from rbdsolve.solvers.shared.values import parameter_sample
+
+_Z = sp.Matrix([0, 0, 1])
+
+
+class How(Enum):
+    """How a support holds its body (one word each: the JSON's answers are names sympy reads)."""
+
+    PIVOT = "pivot"  # the point at rest relative to its holder (a joint when the holder is a body)
+    GUIDE = "guide"  # the point moves along one direction only: a push along the normal
+    ROLLING = "rolling"  # a rolling contact: a push and friction
+    STRING = "string"  # a string: a tension
+    BALL_JOINT = "ball_joint"  # a 3D point at rest relative to its holder
+
+
+@dataclass(frozen=True)
+class Component:
+    """One unknown of a support: R += symbol · direction (a force), or a moment about e_z."""
+
+    symbol: sp.Symbol
+    direction: sp.Matrix  # unit vector, scene axes (a moment: e_z)
+    moment: bool = False
+    one_sided: bool = False  # a push or a pull: it cannot change sign and hold (N, T)
+    friction: bool = False
+
+
+@dataclass(frozen=True)
+class Held:
+    """One support: at ``point`` (its position), on body ``on`` from ``by`` (None: the
+    ground), its unknowns, and how it holds (pivot, guide, contact, string, joint)."""
+
+    name: str
+    point: sp.Matrix
+    on: str
+    by: str | None
+    components: tuple[Component, ...]
+    how: How
+
+
+def body(model: Model, name: str) -> RigidBody:
+    return next(b for b in model.bodies if b.name == name)
+
+
+def material_velocity(model: Model, b: RigidBody, P: sp.Matrix) -> sp.Matrix:
+    """v of body b's material point at P: v_G + ω × (P − r_G)."""
+    return b.velocity(model.state) + b.angular_velocity(model.state).cross(P - b.position)
+
+
+def planar(model: Model) -> bool:
+    """Every body turns about e_z only and moves in the x-y plane, gravity in it too."""
+    flat = all(not b.turns_3d and b.position is not None and sp.simplify(b.position[2]) == 0 for b in model.bodies)
+    return flat and (model.gravity is None or model.gravity[2] == 0)
+
+
+def held(model: Model, support: Support) -> Held:
+    if support.kind is SupportKind.CONTACT:
+        return _contact(model, support)
+    return _point(model, support)
+
+
+def _contact(model: Model, support: Support) -> Held:
+    rolling = next(c for c in model.contacts if c.name == support.point)
+    name = rolling.name
+    if rolling.source.string:
+        d = model.symbols.vector(rolling.source.surface.direction)
+        u = -(d / sp.sqrt(d.dot(d))).applyfunc(sp.simplify)  # from the drum back to the fixed point
+        return Held(name, rolling.point, rolling.body, None,
+                    (Component(sp.Symbol(f"T_{name}"), u, one_sided=True),), How.STRING)
+    n = rolling.normal
+    tangent = _Z.cross(n)
+    return Held(name, rolling.point, rolling.body, None,
+                (Component(sp.Symbol(f"N_{name}"), n, one_sided=True),
+                 Component(sp.Symbol(f"F_{name}"), tangent, friction=True)), How.ROLLING)
+
+
+def _point(model: Model, support: Support) -> Held:
+    P = model.points[support.point]
+    on = body(model, support.on)
+    v = material_velocity(model, on, P)
+    w = on.angular_velocity(model.state)
+    if support.by is not None:
+        by = body(model, support.by)
+        v, w = v - material_velocity(model, by, P), w - by.angular_velocity(model.state)
+    columns = [v.diff(qd) for qd in model.qd]
+    if not planar(model):
+        if _rank(columns, model) != 0:
+            raise UnsolvedError(f"the force at '{support.point}': only pivots and ball joints (the point at rest "
+                                "relative to its holder) are answered in a 3D scene yet")
+        return Held(support.point, P, on.name, support.by, _free(support.point, 3), How.BALL_JOINT)
+    rank = _rank(columns, model)
+    turns = any(sp.simplify(w.diff(qd)) != sp.zeros(3, 1) for qd in model.qd)
+    moment = () if turns or _particle_at(on, P) else (Component(sp.Symbol(f"M_{support.point}"), _Z, moment=True),)
+    if rank == 0:
+        return Held(support.point, P, on.name, support.by, _free(support.point, 2) + moment, How.PIVOT)
+    if rank == 1:
+        n = _normal(model, support, next(c for c in columns if c != sp.zeros(3, 1)))
+        push = Component(sp.Symbol(f"N_{support.point}"), n, one_sided=support.by is None)
+        return Held(support.point, P, on.name, support.by, (push,) + moment, How.GUIDE)
+    what = f"body '{on.name}'" + (f" relative to body '{support.by}'" if support.by else "")
+    raise InputError(f"'{support.point}' is not a support of {what}: its point there moves freely in the plane "
+                     f"(v = {sp.sstr(model.readable(v.T))}), so nothing holds it there", support.loc)
+
+
+def _free(name: str, dims: int) -> tuple[Component, ...]:
+    return tuple(Component(sp.Symbol(f"R_{name}{axis}"), sp.eye(3)[:, k]) for k, axis in enumerate("xyz"[:dims]))
+
+
+def _particle_at(b: RigidBody, P: sp.Matrix) -> bool:
+    return b.inertia == sp.zeros(3, 3) and sp.simplify(P - b.position) == sp.zeros(3, 1)
+
+
+def _rank(columns: list[sp.Matrix], model: Model) -> int:
+    """The rank of the velocity columns at a generic state (two random samples agree)."""
+    if not columns:
+        return 0
+    ranks = []
+    for seed in (7, 11):
+        rng = random.Random(seed)
+        point = {**parameter_sample(model, rng),
+                 **{q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd)}}
+        matrix = sp.Matrix.hstack(*columns).xreplace(point).evalf(30)
+        ranks.append(sp.Matrix(matrix).rank(iszerofunc=lambda x: abs(x) < 1e-20))
+    return max(ranks)
+
+
+def _normal(model: Model, support: Support, column: sp.Matrix) -> sp.Matrix:
+    """The unit normal e_z × c/|c|, turned to the given ``normal`` or against gravity at
+    the reference configuration (q = 0)."""
+    c = column.applyfunc(sp.simplify)
+    n = (_Z.cross(c) / sp.sqrt(sp.simplify(c.dot(c)))).applyfunc(lambda x: sp.simplify(sp.factor_terms(x)))
+    if support.normal is not None:
+        toward = model.symbols.vector(support.normal)
+    elif model.gravity is not None:
+        toward = -model.gravity
+    else:
+        return n
+    at_zero = {q: 0 for q in model.q}
+    sign = sp.sign(sp.simplify(n.dot(toward).xreplace(at_zero)).xreplace(model.decided_by or {}))
+    return -n if sign == -1 else n
