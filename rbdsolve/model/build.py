@@ -14,6 +14,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.assumptions import check as check_assumptions
@@ -267,7 +268,7 @@ def body_mass_properties(body: Body, names: Symbols) -> MassProperties:
     ``names`` mapping parameters to numbers, the same formulas give numbers."""
     props = combine([(p, p.centre) for p in (part_properties(x, names) for x in body.parts)])
     if props.mass.is_nonpositive:
-        raise InputError(f"the total mass of body '{body.name}' is {sp.sstr(props.mass)}: the holes "
+        raise InputError(f"the total mass of body '{body.name}' is {to_unicode(props.mass)}: the holes "
                          "weigh as much as the parts or more", body.loc)
     return props
 

@@ -35,6 +35,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
@@ -228,8 +229,8 @@ def _check_fits(c: Contact, rho: sp.Expr, s: _Surface, values: dict) -> None:
     room = s.radius - rho
     at_values = room.xreplace(values)
     if room.is_nonpositive or (at_values.is_number and at_values <= 0):
-        raise InputError(f"contact '{c.name}': body '{c.body}' (radius {sp.sstr(rho)}) cannot roll inside a "
-                         f"circle of radius {sp.sstr(s.radius)}: the circle must be the larger", c.loc)
+        raise InputError(f"contact '{c.name}': body '{c.body}' (radius {to_unicode(rho)}) cannot roll inside a "
+                         f"circle of radius {to_unicode(s.radius)}: the circle must be the larger", c.loc)
 
 
 def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:

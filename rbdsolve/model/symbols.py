@@ -13,6 +13,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.state import State, t, user_function
 
@@ -76,7 +77,7 @@ def _real(value, expr: ex.Expr):
     """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show."""
     for item in (value if isinstance(value, sp.MatrixBase) else [value]):
         if item.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or item.has(sp.I) or _provably_complex(item):
-            raise InputError(f"'{expr.text}' is not a real number here ({sp.sstr(item)})", expr.loc)
+            raise InputError(f"'{expr.text}' is not a real number here ({to_unicode(item)})", expr.loc)
     return value
 
 

@@ -292,10 +292,10 @@ def test_a_point_far_from_every_equilibrium_is_refused_with_a_number() -> None:
     (solution,) = _report(ROD + "  - modes: {about: {theta: 2.3}}\n").solutions
     # ∂V/∂θ = c θ − (m g l/2) sin θ = 0.3 · 2.3 − sin 2.3
     expected = 0.3 * 2.3 - __import__("math").sin(2.3)
-    assert not solution.solved and f"∂V/∂theta = {expected:.6g} there" in solution.error
+    assert not solution.solved and f"∂V/∂θ = {expected:.6g} there" in solution.error
     import re
 
-    assert re.findall(r"∂V/∂theta = (\S+)", solution.error) == [f"{expected:.6g}"] * 2  # both routes: a number
+    assert re.findall(r"∂V/∂θ = (\S+)", solution.error) == [f"{expected:.6g}"] * 2  # both routes: a number
 
 
 def test_an_equilibrium_named_by_its_number() -> None:

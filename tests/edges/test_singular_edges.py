@@ -81,7 +81,7 @@ questions:
   - modes: {about: {x: 0, y: 0}}
 """
 CAUSES = {"junction": (JUNCTION, "the coordinate x moves no mass"),
-          "redundant": (REDUNDANT, "q̇ ∝ (1, -1) of (x, y) moves no mass: x, y are redundant")}
+          "redundant": (REDUNDANT, "q̇ ∝ (1, −1) of (x, y) moves no mass: x, y are redundant")}
 
 
 def _solve(text: str, route: RouteChoice):
@@ -122,7 +122,7 @@ def test_a_regular_scene_gets_no_singular_warning() -> None:
 def test_an_impact_redundant_at_the_instant_is_refused(route: RouteChoice) -> None:
     (impact,) = _solve(INSTANT, route)
     assert not impact.solved
-    assert "q̇ ∝ (1, -1) of (x, y) moves no mass" in impact.error and "at the instant" in impact.error
+    assert "q̇ ∝ (1, −1) of (x, y) moves no mass" in impact.error and "at the instant" in impact.error
 
 
 @pytest.mark.parametrize("route", [RouteChoice.EXACT, RouteChoice.NUMERIC])

@@ -28,6 +28,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.inertia import OWN_AXIS, rotation_to
@@ -207,7 +208,7 @@ def require_planar(model: Model) -> None:
         if vector[2] != 0 and sp.simplify(vector[2]) != 0:
             where = "" if loc is not None else f"{model.problem.file}: "
             raise NotDrawable(f"{where}the scene cannot be drawn: {what} leaves the xy-plane (z = "
-                              f"{sp.sstr(model.readable(vector[2]))}); only planar scenes are drawn", loc)
+                              f"{to_unicode(model.readable(vector[2]))}); only planar scenes are drawn", loc)
 
 
 def default_configuration(model: Model) -> dict[str, float]:
@@ -273,7 +274,7 @@ class _Values:
     def scalar(self, expr) -> float:
         value = sp.N(sp.sympify(expr).xreplace(self.table), 17)
         if not value.is_number or not value.is_real:
-            raise NotDrawable(f"the scene cannot be drawn: {sp.sstr(self.readable(value))} is not a real number "
+            raise NotDrawable(f"the scene cannot be drawn: {to_unicode(self.readable(value))} is not a real number "
                               "there")
         return float(value)
 

@@ -24,6 +24,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
@@ -170,7 +171,7 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
 
 
 def _solve_general(equations, unknowns, model: Model) -> list[dict]:
-    shown = "; ".join(f"{sp.sstr(model.readable(e))} = 0" for e in equations)
+    shown = "; ".join(f"{to_unicode(model.readable(e))} = 0" for e in equations)
     refusal = UnsolvedError(
         f"the equilibrium equations are transcendental ({shown}) and the exact route "
         "cannot solve them; for modes, give the equilibrium with 'modes: {about: {...}}'"
@@ -205,7 +206,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     inertia = matrix_inertia(H, model.decided_by)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
-                           f"the sign of {sp.sstr(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
+                           f"the sign of {to_unicode(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
     if inertia.negative:
         return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
     if inertia.zero:
@@ -302,7 +303,7 @@ def _classify_singular(model: Model, at: dict) -> Equilibrium:
     how = "at a singular point of the coordinates, the Hessian across the directions that move the scene"
     if isinstance(inertia, Undecided):
         return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} has a sign that depends on the "
-                       f"parameters ({sp.sstr(inertia.expr)})")
+                       f"parameters ({to_unicode(inertia.expr)})")
     if inertia.negative:
         return replace(found, stability=Stability.UNSTABLE, reason=f"{how} has a negative eigenvalue")
     if inertia.zero:

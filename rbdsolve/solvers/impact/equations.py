@@ -29,6 +29,7 @@ from typing import Mapping
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
@@ -175,7 +176,7 @@ class ImpactEquations:
             approach = tidy_fraction(self.normal_speed(blow, final=False))
             if _nonnegative(approach, self.model):
                 raise UnsolvedError(f"at {blow.point} the normal velocity n·(v − u) just before is "
-                                    f"{sp.sstr(approach)}, so nothing approaches: no collision, or the normal "
+                                    f"{to_unicode(approach)}, so nothing approaches: no collision, or the normal "
                                     "points the wrong way (it is the direction of the impulse on the system)")
             out.append(self.normal_speed(blow, final=True) + e * approach)
         return out
@@ -219,7 +220,7 @@ class ImpactEquations:
         centre, why = self.centre_of_percussion(support)
         contacts = {b.point: tidy_fraction(sol[b.size] * sp.sqrt(tidy_fraction(b.normal.dot(b.normal))))
                     for b in self.hits if b.size is not None}
-        notes += [f"the impulse at {p} comes out pulling ({sp.sstr(v)} < 0): with several contacts at once "
+        notes += [f"the impulse at {p} comes out pulling ({to_unicode(v)} < 0): with several contacts at once "
                   "Newton's law can fail, and this contact probably separates" for p, v in contacts.items()
                   if v.is_negative or (_known_value(v, model) or 0) < 0]
         answers = ImpactAnswers(
@@ -264,13 +265,13 @@ class ImpactEquations:
             approach = tidy_fraction(self.normal_speed(blow, final=False))
             if _nonnegative(approach, self.model):
                 notes.append(f"at {blow.point} nothing approaches along the normal (n·(v − u) just before "
-                             f"is {sp.sstr(approach)}): no restitution coefficient")
+                             f"is {to_unicode(approach)}): no restitution coefficient")
                 continue
             e = tidy_fraction(-self.normal_speed(blow, final=True).xreplace(self.solution) / approach)
             value = _known_value(e, self.model)
             if value is not None and not 0 <= value <= 1:
                 notes.append(f"the velocities given at {blow.point} imply a restitution coefficient "
-                             f"{sp.sstr(e)}, outside [0, 1]")
+                             f"{to_unicode(e)}, outside [0, 1]")
             out[blow.point] = e
         return out, notes
 

@@ -22,6 +22,7 @@ from dataclasses import replace
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import common_scale, scaled_matrix
 from rbdsolve.form.display import Relation
@@ -89,7 +90,7 @@ def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
                 if factor.free_symbols & q}
     if not divisors:
         return ()
-    shown = ", ".join(sorted(sp.sstr(model.readable(d)) for d in divisors))
+    shown = ", ".join(sorted(to_unicode(model.readable(d)) for d in divisors))
     return (f"the principal axes depend on the configuration and divide by {shown}: they are undefined "
             "where that is zero; ask at that configuration (values for the coordinates) instead",)
 
@@ -213,7 +214,7 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
         return [_first_positive(_polynomial_direction(_adjugate_column(J_hat, root)))]
     null = (J_hat - root * sp.eye(3)).applyfunc(tidy).nullspace(simplify=True)
     if len(null) != multiplicity:
-        raise UnsolvedError(f"could not find the principal axes for the moment {sp.sstr(root)}")
+        raise UnsolvedError(f"could not find the principal axes for the moment {to_unicode(root)}")
     directions: list[sp.Matrix] = []
     for v in null:
         for u in directions:

@@ -15,6 +15,7 @@ import math
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
@@ -54,14 +55,14 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
         return at, ()
     if missing_for(model, question):
         (name, expr), r = next((a, r) for a, r in zip(about, residual) if sp.simplify(r) != 0)
-        shown = sp.sstr(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
-        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {shown} there (give values for "
+        shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
+        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {shown} there (give values for "
                             "the parameters to have a nearby equilibrium found)")
     try:
         listing(model)
     except UnsolvedError as exc:
         (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
-        raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{name} = {_number(r, model):.6g} there), "
+        raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{unicode_name(name)} = {_number(r, model):.6g} there), "
                             f"and the exact route cannot list the equilibria to find the one near it ({exc})") from None
     near = _nearest_listed(model, at)
     if near is not None:
@@ -69,7 +70,7 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
                 f"taken there, {_shown(model, listing(model).equilibria[near[0] - 1].at)}")
         return listing(model).equilibria[near[0] - 1].at, (note,)
     (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
-    raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {_number(r, model):.6g} there, and no "
+    raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {_number(r, model):.6g} there, and no "
                         f"equilibrium lies within {REFINE_TOL:g} of it")
 
 
@@ -97,4 +98,4 @@ def _number(value: sp.Expr, model: Model) -> float:
 
 
 def _shown(model: Model, at: dict) -> str:
-    return ", ".join(f"{n} = {sp.sstr(v)}" for n, v in zip(model.coordinate_names(), at.values()))
+    return ", ".join(f"{n} = {to_unicode(v)}" for n, v in zip(model.coordinate_names(), at.values()))

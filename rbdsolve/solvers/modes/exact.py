@@ -28,6 +28,7 @@ from typing import Mapping
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import common_scale, configuration
 from rbdsolve.form.display import Relation
@@ -240,7 +241,7 @@ def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.B
         if isinstance(sign, Undecided):
             found = _cases(lam, model, where)
             if found is None:
-                raise UnsolvedError(f"the sign of the eigenvalue {sp.sstr(lam)} depends on the parameters in a "
+                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
                                     f"way rbdsolve cannot split into cases; {what_decides(lam)}")
             if len(found[0]) == 1:
                 motions.append(found[0][0].kind)

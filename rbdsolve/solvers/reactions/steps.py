@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
@@ -16,7 +17,7 @@ from rbdsolve.solvers.shared.accelerations import state_step
 
 
 def _vector(v) -> str:
-    return "(" + ", ".join(sp.sstr(x) for x in list(v)[:2 if v[2] == 0 else 3]) + ")"
+    return "(" + ", ".join(to_unicode(x) for x in list(v)[:2 if v[2] == 0 else 3]) + ")"
 
 
 def _described(s: Held, model: Model) -> str:
@@ -61,7 +62,7 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
 
 
 def energy_steps(model: Model, e) -> st.Step:
-    q, qd = model.q[0], model.qd[0]
+    qd = model.qd[0]
     return st.result("Energy is conserved (the supports do no work, gravity has a potential): T + V is constant, "
                      "T + V = V(q₀) at release from rest, so",
                      Relation(model.to_time(e.T + e.V), model.to_time(e.start)),

@@ -26,6 +26,7 @@ from enum import Enum
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.problem.schema import Support, SupportKind
@@ -129,7 +130,7 @@ def _point(model: Model, support: Support) -> Held:
         return Held(support.point, P, on.name, support.by, (push,) + moment, How.GUIDE)
     what = f"body '{on.name}'" + (f" relative to body '{support.by}'" if support.by else "")
     raise InputError(f"'{support.point}' is not a support of {what}: its point there moves freely in the plane "
-                     f"(v = {sp.sstr(model.readable(v.T))}), so nothing holds it there", support.loc)
+                     f"(v = {to_unicode(model.readable(v.T))}), so nothing holds it there", support.loc)
 
 
 def _free(name: str, dims: int) -> tuple[Component, ...]:

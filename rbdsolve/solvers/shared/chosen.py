@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
@@ -84,7 +85,7 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
                 f"refined by Newton's method on ∂V/∂q to {_shown(model, refined)}")
         return _named(model, refined), (note,)
     (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
-    raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{name} = {r:.6g} there, and no equilibrium lies "
+    raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {r:.6g} there, and no equilibrium lies "
                         f"within {REFINE_TOL:g} of it")
 
 

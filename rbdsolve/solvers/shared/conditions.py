@@ -32,6 +32,7 @@ from typing import Iterable
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.shared.signs import sign_of, symbolic_sign
@@ -177,7 +178,7 @@ def what_decides(f: sp.Expr) -> str:
     """What a user can give to decide the sign of f, for a message: its parameters'
     values, or an assumption."""
     names = ", ".join(sorted(str(s) for s in f.free_symbols))
-    return (f"give values for {names}, or state the sign of {sp.sstr(f)} under 'assumptions:' "
+    return (f"give values for {names}, or state the sign of {to_unicode(f)} under 'assumptions:' "
             "(such as [R > r])")
 
 

@@ -16,6 +16,7 @@ from dataclasses import replace
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
@@ -55,7 +56,7 @@ def _require_no_gyroscopic_coupling(model: Model, motion: FrameMotion) -> None:
     G = sp.Matrix(n, n, lambda i, j: tidy(sp.diff(c[i], model.q[j]) - sp.diff(c[j], model.q[i])))
     if G != sp.zeros(n, n):
         raise UnsolvedError(f"in frame '{motion.frame.name}' the motion has gyroscopic (Coriolis) coupling, "
-                            f"G = {sp.sstr(model.readable(G).tolist())}: small oscillations with G are not "
+                            f"G = {to_unicode(sp.ImmutableMatrix(model.readable(G)))}: small oscillations with G are not "
                             "supported yet")
 
 

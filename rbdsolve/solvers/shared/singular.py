@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Sequence
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix
 
@@ -49,7 +50,8 @@ def describe(vectors: Sequence[Sequence[str]], names: Sequence[str], where: str)
         if len(moving) == 1:
             parts.append(f"the coordinate {moving[0]} moves no mass (only massless points, or bodies of zero mass)")
         else:
-            parts.append(f"the motion q̇ ∝ ({', '.join(a)}) of ({', '.join(names)}) moves no mass: "
+            shown = ", ".join(x.replace("-", "−") for x in a)  # a float's sign as the printer writes it
+            parts.append(f"the motion q̇ ∝ ({shown}) of ({', '.join(names)}) moves no mass: "
                          f"{', '.join(moving)} are redundant (they move the masses only together, as x and y in "
                          "x + y) or that motion moves only massless points")
     return f"the mass matrix is singular {where}: " + "; ".join(parts)
@@ -63,7 +65,7 @@ def exact_reason(M: sp.Matrix, names: Sequence[str], where: str) -> str | None:
     texts = []
     for v in null:
         first = next(x for x in v if x != 0)
-        texts.append([sp.sstr(sp.simplify(x / first)) for x in v])
+        texts.append([to_unicode(sp.simplify(x / first)) for x in v])
     return describe(texts, names, where)
 
 

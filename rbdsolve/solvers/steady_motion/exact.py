@@ -31,6 +31,7 @@ import random
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
@@ -237,7 +238,7 @@ def _require_known(values: dict, unknown: set) -> None:
     for x, v in values.items():
         left = sorted(str(u) for u in v.free_symbols & unknown)
         if left:
-            raise UnsolvedError(f"the relations leave {', '.join(left)} unknown, and {x} = {sp.sstr(v)} depends "
+            raise UnsolvedError(f"the relations leave {', '.join(left)} unknown, and {x} = {to_unicode(v)} depends "
                                 f"on {'it' if len(left) == 1 else 'them'}: {x} is not fixed by this balance")
 
 
@@ -246,9 +247,9 @@ def _require_rest(relations, values: dict, model: Model, targets, held: set, rea
     others = unknown_symbols(model) - set(targets) - held - set(values)
     rest = [r for r in relations if not r.has(*others) and tidy_fraction(sin_cos(r.subs(values))) != 0]
     if rest:
-        shown = ", ".join(f"{x} = {sp.sstr(v)}" for x, v in values.items())
+        shown = ", ".join(f"{x} = {to_unicode(v)}" for x, v in values.items())
         hint = " (or a contact force is missing from 'reactions')" if reactions else ""
-        raise UnsolvedError(f"{shown} from the relations, but then {sp.sstr(rest[0])} = 0 must hold too: "
+        raise UnsolvedError(f"{shown} from the relations, but then {to_unicode(rest[0])} = 0 must hold too: "
                             f"no such steady motion in general{hint}")
 
 

@@ -32,7 +32,7 @@ def test_about_a_point_that_is_not_an_equilibrium_fails_only_that_question() -> 
     report = solve(ROD + "questions:\n  - eom\n  - modes: {about: {theta: pi/2}}\n")
     eom, modes = report.solutions
     assert eom.solved and not modes.solved
-    assert "not an equilibrium: ∂V/∂theta = g*l*m/2 there" in modes.error
+    assert "not an equilibrium: ∂V/∂θ = 1/2 g l m there" in modes.error
     assert "questions[1].modes.about.theta" in modes.error
 
 
