@@ -34,7 +34,7 @@ OPTIONS = {
     QuestionKind.EOM: ("frames",),
     QuestionKind.EQUILIBRIA: ("frame",),
     QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
-    QuestionKind.INERTIA: ("body", "about", "axes"),
+    QuestionKind.INERTIA: ("body", "about", "axes", "at", "axis"),
     QuestionKind.STEADY_SPIN: ("body",),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
@@ -213,10 +213,15 @@ class QuestionReader:
         if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
-        about = opts.get("about") if opts else None
-        axes = opts.get("axes") if opts else None
+        get = opts.get if opts else (lambda _: None)
+        about, axes, at, axis = get("about"), get("axes"), get("at"), get("axis")
+        if at is not None and not self.coordinates:
+            raise InputError("'at' gives values for the coordinates, and this scene has none: its inertia "
+                             "does not depend on a configuration", at.loc)
         return InertiaOptions(body, self.point(about) if about is not None else None,
-                              self.axes(axes) if axes is not None else None)
+                              self.axes(axes) if axes is not None else None,
+                              self.reading.coordinate_values(at, "'at'", complete=False) if at is not None else (),
+                              self.reading.axis(axis) if axis is not None else None)
 
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""

@@ -335,6 +335,8 @@ class InertiaOptions:
     body: str  # the body asked about
     about: Expr | None  # a point (vector); None: the centre of mass only
     axes: tuple[Expr, Expr, Expr] | None  # unit vectors of a rotated frame; None: scene axes
+    at: tuple[tuple[str, Expr], ...] = ()  # coordinate -> value: the configuration asked about
+    axis: Expr | None = None  # a direction (scene axes) through 'about' (or G): J = eᵀ J_P e
 
 
 @dataclass(frozen=True)
