@@ -139,6 +139,8 @@ class Coordinate:
     name: str
     kind: CoordinateKind
     loc: Location
+    periodic: bool | None = None  # an angle's 'periodic' (None: not declared; an angle is periodic)
+    range: tuple[Expr, Expr] | None = None  # the declared search range [low, high], constants
 
 
 @dataclass(frozen=True)

@@ -33,13 +33,13 @@ from rbdsolve.solvers.equilibria.steps import numeric_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.numeric_model import (
     CURVATURE_TOL,
-    SEARCH_SCALE,
     compiled_gradient,
     continuum_text,
     find_numeric,
     periodic_angles,
 )
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.search_box import box_text
 from rbdsolve.solvers.shared.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.shared.values import require_values
 
@@ -78,8 +78,8 @@ def searched(model: Model, found) -> str:
     """How the search went and over which box."""
     how = (f"a sign-change scan of ∂V/∂q at {found.starts} {found.sampling}" if len(model.q) == 1
            else f"Newton's method from {found.starts} {found.sampling}")
-    return (f"{how}, over angles in (−π, π] and lengths within ±{SEARCH_SCALE:g} × max(1, the largest "
-            "parameter value) (a coordinate's range cannot be declared; equilibria outside it are not searched)")
+    return (f"{how}, over {box_text(model)} (equilibria outside it are not searched; a coordinate's "
+            "'range' sets it)")
 
 
 def search_claim(model: Model, found) -> str:
