@@ -78,7 +78,7 @@ def searched(model: Model, found) -> str:
     """How the search went and over which box."""
     how = (f"a sign-change scan of ∂V/∂q at {found.starts} {found.sampling}" if len(model.q) == 1
            else f"Newton's method from {found.starts} {found.sampling}")
-    return (f"{how}, over {box_text(model)} (equilibria outside it are not searched; a coordinate's "
+    return (f"{how}, over {box_text(model, periodic_angles(model))} (equilibria outside it are not searched; a coordinate's "
             "'range' sets it)")
 
 

@@ -350,9 +350,10 @@ def hessian_scale(model: Model, H) -> float:
     return max(max(sizes, default=1.0), 1e-300)
 
 
-def _box(model: Model) -> list[tuple[float, float]]:
+@memoized  # asked for each candidate root
+def _box(model: Model) -> tuple[tuple[float, float], ...]:
     """The search box (``search_box``: declared ranges, one turn, the scene's lengths)."""
-    return [(i.low, i.high) for i in search_box(model)]
+    return tuple((i.low, i.high) for i in search_box(model, periodic_angles(model)))
 
 
 def periodic_angles(model: Model) -> frozenset:

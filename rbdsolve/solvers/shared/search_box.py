@@ -23,7 +23,6 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import memoized
 from rbdsolve.problem.quantity import LENGTH
 from rbdsolve.problem.schema import CoordinateKind
 
@@ -37,11 +36,8 @@ class Interval:
     why: str  # "declared", "one turn", …
 
 
-@memoized
-def search_box(model: Model) -> tuple[Interval, ...]:
-    from rbdsolve.solvers.shared.numeric_model import periodic_angles  # it uses the box in turn
-
-    angles = periodic_angles(model)
+def search_box(model: Model, angles: frozenset) -> tuple[Interval, ...]:
+    """One interval per coordinate; ``angles``: the periodic ones (numeric_model.periodic_angles)."""
     return tuple(_interval(c, q, q in angles, model) for c, q in zip(model.problem.coordinates, model.q))
 
 
@@ -84,7 +80,7 @@ def _number(value: sp.Expr, name: str) -> float:
     return float(value)
 
 
-def box_text(model: Model) -> str:
+def box_text(model: Model, angles: frozenset) -> str:
     """'θ in [−25.1327, 25.1327] (declared)', one per coordinate."""
     return "; ".join(f"{name} in [{i.low:.6g}, {i.high:.6g}] ({i.why})"
-                     for name, i in zip(model.coordinate_names(), search_box(model)))
+                     for name, i in zip(model.coordinate_names(), search_box(model, angles)))
