@@ -17,6 +17,8 @@ taken across it only (along it the representative is exact by construction).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from rbdsolve.errors import UnsolvedError
@@ -60,10 +62,11 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        equilibria.append(NumericEquilibrium(dict(zip(names, r.at)), Stability(r.kind),
-                                             tuple(float(c) for c in curvatures), r.free,
-                                             tuple(dict(zip(names, e.at)) for e in equivalent)))
-        errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
+        error = _error(x, np.asarray(g(x), dtype=float), hess, r.free)
+        errors.append(error)
+        at, recognized, bound = recognize(dict(zip(names, r.at)), error * max(float(np.max(np.abs(x))), 1.0))
+        equilibria.append(NumericEquilibrium(at, Stability(r.kind), tuple(float(c) for c in curvatures), r.free,
+                                             tuple(dict(zip(names, e.at)) for e in equivalent), recognized, bound))
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
@@ -116,6 +119,22 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
                      "scale of zero, beyond any continuum found): undetermined, higher-order terms decide the "
                      "stability there, and a curved continuum of equilibria would be listed point by point")
     return lines
+
+
+SIMPLE = (("0", 0.0), ("pi/2", math.pi / 2), ("-pi/2", -math.pi / 2), ("pi", math.pi), ("-pi", -math.pi))
+
+
+def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dict[str, str], float | None]:
+    """Each coordinate within ``bound`` (its error bound, absolute) of a simple exact value
+    (0, ±π/2, ±π) is that value: −3.08e-32 is printed 0, with the bound beside it. The
+    bound must be finite and small (below 1e-6): a value only near π is not recognized."""
+    if not math.isfinite(bound) or bound >= 1e-6:
+        return at, {}, None
+    recognized = {name: text for name, value in at.items() for text, exact in SIMPLE if abs(value - exact) <= bound}
+    if not recognized:
+        return at, {}, None
+    exact = dict(SIMPLE)
+    return {n: exact[recognized[n]] if n in recognized else v for n, v in at.items()}, recognized, bound
 
 
 def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:
