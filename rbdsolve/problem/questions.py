@@ -21,6 +21,7 @@ from rbdsolve.problem.schema import (
     InertiaOptions,
     ModesOptions,
     Point,
+    PrecessionOptions,
     Question,
     QuestionKind,
     Reaction,
@@ -35,7 +36,7 @@ OPTIONS = {
     QuestionKind.EQUILIBRIA: ("frame",),
     QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
     QuestionKind.INERTIA: ("body", "about", "axes", "at", "axis"),
-    QuestionKind.STEADY_SPIN: ("body",),
+    QuestionKind.STEADY_SPIN: ("body", "precession"),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
@@ -97,7 +98,9 @@ class QuestionReader:
         if kind is QuestionKind.STEADY_MOTION:
             return Question(kind, self.steady_motion(opts, key), key.loc)
         if kind is QuestionKind.STEADY_SPIN:
-            return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
+            node = get("precession")
+            return Question(kind, SteadySpinOptions(self.body(opts, key, kind),
+                                                    self.precession(node) if node is not None else None), key.loc)
         if kind is QuestionKind.IMPACT:
             return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
         if kind is QuestionKind.KINEMATICS:
@@ -222,6 +225,19 @@ class QuestionReader:
                               self.axes(axes) if axes is not None else None,
                               self.reading.coordinate_values(at, "'at'", complete=False) if at is not None else (),
                               self.reading.axis(axis) if axis is not None else None)
+
+    def precession(self, node: Node) -> PrecessionOptions:
+        """{spin: ω₃, transverse: ω⊥} or {spin: ω₃, angle: α}: constants."""
+        spec = expect_mapping(node, "the free motion {spin: RATE, transverse: RATE} (or angle: ANGLE)")
+        check_keys(spec, ("spin",), ("transverse", "angle"), "precession")
+        transverse, angle = spec.get("transverse"), spec.get("angle")
+        if (transverse is None) == (angle is None):
+            raise InputError("'precession' needs ω across the symmetry axis: 'transverse: RATE' (its size) or "
+                             "'angle: ANGLE' (between ω and the axis), one of them", spec.loc)
+        read = self.reading.constant
+        return PrecessionOptions(read(spec.get("spin"), "the spin along the symmetry axis"),
+                                 read(transverse, "the rate across the axis") if transverse is not None else None,
+                                 read(angle, "the angle between ω and the axis") if angle is not None else None)
 
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""

@@ -398,8 +398,20 @@ class SteadyMotionOptions:
 
 
 @dataclass(frozen=True)
+class PrecessionOptions:
+    """The free motion of an axisymmetric body, seen from space: ω's component along the
+    symmetry axis (``spin``) and either its component across it (``transverse``) or the
+    angle between ω and the axis (``angle``)."""
+
+    spin: Expr
+    transverse: Expr | None
+    angle: Expr | None
+
+
+@dataclass(frozen=True)
 class SteadySpinOptions:
     body: str  # the free body asked about
+    precession: PrecessionOptions | None = None  # torque-free precession, asked with 'precession'
 
 
 @dataclass(frozen=True)
