@@ -364,6 +364,7 @@ class Collision:
     restitution: Expr | None
     particle: Particle | None
     loc: Location
+    sticks: bool = False  # the particle embeds: it moves with the point after, the impulse has every component
 
 
 @dataclass(frozen=True)
