@@ -190,9 +190,35 @@ def build_model(problem: Problem) -> Model:
                   triads=triads, assumptions=assumed(problem, names), contacts=contacts)
     check_assumptions(model.assumptions, values, names)
     periodic = _periodic_coordinates(model)
+    _refuse_winding_angles(model)
     angles = frozenset(qi for c, qi in zip(problem.coordinates, q)
-                       if c.kind is CoordinateKind.ANGLE or (c.kind is CoordinateKind.AUTO and qi in periodic))
+                       if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
+                       or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
+
+
+def _refuse_winding_angles(model: Model) -> None:
+    """A coordinate declared a (periodic) angle must leave V unchanged after a turn, since
+    its equilibria are then reported in (−π, π]: one that a spring's stretch or a
+    weight's height holds outside sin and cos (a torsion spring counts turns) is refused,
+    with the term that holds it."""
+    declared = [(c, qi) for c, qi in zip(model.problem.coordinates, model.q)
+                if c.kind is CoordinateKind.ANGLE and c.periodic is not False]
+    if not declared:
+        return
+    terms = [(f"spring '{s.name}'", s.stretch) for s in model.springs]
+    if model.gravity is not None:
+        terms += [(f"the height of body '{b.name}'", model.gravity.dot(b.position))
+                  for b in model.bodies if b.position is not None]
+    for what, term in terms:
+        usage = _Usage(frozenset(model.q))
+        usage.walk(sp.sympify(term))
+        for c, qi in declared:
+            if qi in usage.aperiodic:
+                raise InputError(f"'{c.name}' is declared an angle, which repeats after a turn, but {what} holds "
+                                 f"it outside sin and cos, so the potential energy does not (it counts turns); "
+                                 f"declare '{c.name}: {{kind: angle, periodic: false}}', with a 'range' for the "
+                                 "search", c.loc)
 
 
 def check_values(problem: Problem, names: Symbols, values: Mapping[sp.Symbol, sp.Expr]) -> None:

@@ -8,6 +8,7 @@
           A: {normal: y, restitution: e}                          # A hits a fixed surface
           B: {normal: x, restitution: e, particle: {mass: m, velocity: [v0, 0]}}
           C: {particle: {mass: m, velocity: [v0, 0], after: [0, 0]}}   # e follows
+          D: {particle: {mass: m, velocity: [v0, -v1]}, sticks: true}  # it embeds at D
         points: [A, B]              # velocities after (default: the struck points)
         centre_of_percussion: d     # the value of d for which the supports feel no impulse
 """
@@ -17,7 +18,7 @@ from __future__ import annotations
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
+from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.schema import Collision, ImpactOptions, Particle, Point
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
@@ -69,8 +70,10 @@ class ImpactReader:
 
     def collision(self, point: str, spec: Map) -> Collision:
         what = f"collision at '{point}'"
-        check_keys(spec, (), ("normal", "restitution", "particle"), what)
+        check_keys(spec, (), ("normal", "restitution", "particle", "sticks"), what)
         particle = self.particle(spec.get("particle")) if spec.get("particle") is not None else None
+        if spec.get("sticks") is not None and read_bool(spec.get("sticks"), "true or false"):
+            return self.sticking(point, spec, particle)
         restitution = spec.get("restitution")
         known_after = particle is not None and particle.after is not None
         if restitution is not None and known_after:
@@ -85,6 +88,21 @@ class ImpactReader:
         normal = self.normal(spec.get("normal")) if spec.get("normal") is not None else None
         e = self.restitution(restitution) if restitution is not None else None
         return Collision(point, normal, e, particle, spec.loc)
+
+    def sticking(self, point: str, spec: Map, particle: Particle | None) -> Collision:
+        """A particle that embeds at the point: no normal, no restitution, no velocity after
+        (it moves with the point); the impulse is unknown in every component."""
+        if particle is None:
+            raise InputError(f"'sticks' is for a particle that embeds at '{point}': add 'particle: {{mass, "
+                             "velocity}'", spec.get("sticks").loc)
+        for key, why in (("restitution", "the particle moves with the point after (e = 0 in every direction)"),
+                         ("normal", "the impulse has every component, not only a normal one")):
+            if spec.get(key) is not None:
+                raise InputError(f"a sticking particle takes no '{key}': {why}", spec.get(key).loc)
+        if particle.after is not None:
+            raise InputError("a sticking particle takes no 'after': it moves with the point after the impact",
+                             particle.after.loc)
+        return Collision(point, None, None, particle, spec.loc, sticks=True)
 
     def normal(self, node: Node) -> ex.Expr:
         value = self.reading.axis(node) if _is_axis_name(node) else self.constant_vector(node, "a normal (a vector)")

@@ -14,7 +14,6 @@ from rbdsolve.problem.schema import (
     Assumption,
     Body,
     Coordinate,
-    CoordinateKind,
     Frame,
     Parameter,
     Point,
@@ -27,6 +26,7 @@ from rbdsolve.problem.schema import (
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
 from rbdsolve.problem.contacts import ContactReader, contact_bodies
 from rbdsolve.problem.context import Reading
+from rbdsolve.problem.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.orientation import OrientationReader
 from rbdsolve.problem.questions import QuestionReader
 from rbdsolve.problem.dimensions import scene_dimensions
@@ -84,7 +84,7 @@ class _Loader:
         parameters = self.parameters(get("parameters"))
         prescribed = self.prescribed(get("prescribed"), parameters)
         unknowns = self.unknowns(get("unknowns"))
-        coordinates = self.coordinates(get("coordinates"))
+        coordinates, range_nodes = self.coordinates(get("coordinates"))
         self.reading.coordinates = tuple(c.name for c in coordinates)
         # Positions and angles may use coordinates, prescribed functions and time t;
         # velocities at an instant use parameters and the rates dot(q).
@@ -94,6 +94,7 @@ class _Loader:
             functions_of_time=frozenset(moving),
         )
         self.reading.set_point_scopes(frozenset(), frozenset())
+        coordinates = declared_ranges(self.reading, coordinates, range_nodes)
         triads = OrientationReader(self.reading).triads(get("triads"))
         self.reading.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
         self.reading.triad_names = tuple(tr.name for tr in triads)
@@ -207,25 +208,18 @@ class _Loader:
             return ()
         return tuple(self.reading.declare(key, "unknown") for key, _ in _names_list(node, "unknown"))
 
-    def coordinates(self, node: Node | None) -> tuple[Coordinate, ...]:
+    def coordinates(self, node: Node | None) -> tuple[tuple[Coordinate, ...], dict[str, Node]]:
+        """The coordinates, and the nodes of their ranges (read once the scope is set)."""
         if node is None:
-            return ()
-        out = []
+            return (), {}
+        out, range_nodes = [], {}
         for key, options in _names_list(node, "coordinate"):
             name = self.reading.declare(key, "coordinate")
-            kind = CoordinateKind.AUTO
-            if options is not None:
-                word = expect_scalar(options, "a coordinate kind ('angle' or 'length')")
-                try:
-                    kind = CoordinateKind(word.text)
-                except ValueError:
-                    raise InputError(
-                        f"unknown coordinate kind '{word.text}' (expected angle or length)"
-                        f"{did_you_mean(word.text, ['angle', 'length'])}",
-                        word.loc,
-                    ) from None
-            out.append(Coordinate(name, kind, key.loc))
-        return tuple(out)
+            found, range_node = coordinate(self.reading, name, key, options)
+            out.append(found)
+            if range_node is not None:
+                range_nodes[name] = range_node
+        return tuple(out), range_nodes
 
     def points(self, node: Node | None) -> tuple[Point, ...]:
         if node is None:

@@ -23,6 +23,7 @@ from rbdsolve.problem.schema import (
     InertiaOptions,
     ModesOptions,
     Point,
+    PrecessionOptions,
     Question,
     QuestionKind,
     Reaction,
@@ -36,8 +37,8 @@ OPTIONS = {
     QuestionKind.EOM: ("frames", "at", "from_rest"),
     QuestionKind.EQUILIBRIA: ("frame",),
     QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
-    QuestionKind.INERTIA: ("body", "about", "axes"),
-    QuestionKind.STEADY_SPIN: ("body",),
+    QuestionKind.INERTIA: ("body", "about", "axes", "at", "axis"),
+    QuestionKind.STEADY_SPIN: ("body", "precession"),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
@@ -101,7 +102,9 @@ class QuestionReader:
         if kind is QuestionKind.STEADY_MOTION:
             return Question(kind, self.steady_motion(opts, key), key.loc)
         if kind is QuestionKind.STEADY_SPIN:
-            return Question(kind, SteadySpinOptions(self.body(opts, key, kind)), key.loc)
+            node = get("precession")
+            return Question(kind, SteadySpinOptions(self.body(opts, key, kind),
+                                                    self.precession(node) if node is not None else None), key.loc)
         if kind is QuestionKind.IMPACT:
             return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
         if kind is QuestionKind.KINEMATICS:
@@ -219,10 +222,28 @@ class QuestionReader:
         if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
-        about = opts.get("about") if opts else None
-        axes = opts.get("axes") if opts else None
+        get = opts.get if opts else (lambda _: None)
+        about, axes, at, axis = get("about"), get("axes"), get("at"), get("axis")
+        if at is not None and not self.coordinates:
+            raise InputError("'at' gives values for the coordinates, and this scene has none: its inertia "
+                             "does not depend on a configuration", at.loc)
         return InertiaOptions(body, self.point(about) if about is not None else None,
-                              self.axes(axes) if axes is not None else None)
+                              self.axes(axes) if axes is not None else None,
+                              self.reading.coordinate_values(at, "'at'", complete=False) if at is not None else (),
+                              self.reading.axis(axis) if axis is not None else None)
+
+    def precession(self, node: Node) -> PrecessionOptions:
+        """{spin: ω₃, transverse: ω⊥} or {spin: ω₃, angle: α}: constants."""
+        spec = expect_mapping(node, "the free motion {spin: RATE, transverse: RATE} (or angle: ANGLE)")
+        check_keys(spec, ("spin",), ("transverse", "angle"), "precession")
+        transverse, angle = spec.get("transverse"), spec.get("angle")
+        if (transverse is None) == (angle is None):
+            raise InputError("'precession' needs ω across the symmetry axis: 'transverse: RATE' (its size) or "
+                             "'angle: ANGLE' (between ω and the axis), one of them", spec.loc)
+        read = self.reading.constant
+        return PrecessionOptions(read(spec.get("spin"), "the spin along the symmetry axis"),
+                                 read(transverse, "the rate across the axis") if transverse is not None else None,
+                                 read(angle, "the angle between ω and the axis") if angle is not None else None)
 
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""

@@ -141,6 +141,8 @@ class Coordinate:
     name: str
     kind: CoordinateKind
     loc: Location
+    periodic: bool | None = None  # an angle's 'periodic' (None: not declared; an angle is periodic)
+    range: tuple[Expr, Expr] | None = None  # the declared search range [low, high], constants
 
 
 @dataclass(frozen=True)
@@ -377,6 +379,8 @@ class InertiaOptions:
     body: str  # the body asked about
     about: Expr | None  # a point (vector); None: the centre of mass only
     axes: tuple[Expr, Expr, Expr] | None  # unit vectors of a rotated frame; None: scene axes
+    at: tuple[tuple[str, Expr], ...] = ()  # coordinate -> value: the configuration asked about
+    axis: Expr | None = None  # a direction (scene axes) through 'about' (or G): J = eᵀ J_P e
 
 
 @dataclass(frozen=True)
@@ -402,6 +406,7 @@ class Collision:
     restitution: Expr | None
     particle: Particle | None
     loc: Location
+    sticks: bool = False  # the particle embeds: it moves with the point after, the impulse has every component
 
 
 @dataclass(frozen=True)
@@ -436,8 +441,20 @@ class SteadyMotionOptions:
 
 
 @dataclass(frozen=True)
+class PrecessionOptions:
+    """The free motion of an axisymmetric body, seen from space: ω's component along the
+    symmetry axis (``spin``) and either its component across it (``transverse``) or the
+    angle between ω and the axis (``angle``)."""
+
+    spin: Expr
+    transverse: Expr | None
+    angle: Expr | None
+
+
+@dataclass(frozen=True)
 class SteadySpinOptions:
     body: str  # the free body asked about
+    precession: PrecessionOptions | None = None  # torque-free precession, asked with 'precession'
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -117,7 +117,8 @@ def test_the_exact_route_refuses_theta_equals_k_sin_theta_and_auto_falls_back() 
 WIRE = """\
 parameters: {m: mass, g: gravity, a: amplitude, b: wavelength over 2 pi, k: stiffness, d: offset}
 values: {m: 1, g: 10, a: 1, b: 1/2, k: 1, d: 1}
-coordinates: [x]
+coordinates:
+  x: {kind: length, range: [-m*g*a/(k*b), m*g*a/(k*b)]}
 gravity: [0, -g]
 points:
   P: [x, a*cos(x/b)]
@@ -131,7 +132,7 @@ questions: [equilibria]
 
 
 def test_a_length_coordinate_with_many_wells_every_root_in_the_box() -> None:
-    """k x = 20 sin(2x): every root has |x| ≤ 20, inside the box ±10 × 10 = ±100;
+    """k x = 20 sin(2x): every root has |x| ≤ m g a/(k b) = 20, the declared range;
     mpmath's set, with stability from V'' = k − 40 cos(2x)."""
     model = _model(WIRE)
     solution = equilibria_numeric.solve(None, model, Options(route=RouteChoice.NUMERIC))
@@ -251,7 +252,7 @@ def _every_root(listed) -> list:
 REST = """\
 parameters: {c: stiffness}
 values: {c: 1}
-coordinates: {theta: angle}
+coordinates: {theta: {kind: angle, periodic: false}}
 points:
   P: [cos(theta), sin(theta)]
 bodies:
@@ -263,10 +264,16 @@ questions: [equilibria]
 
 
 def test_a_declared_angle_that_is_not_periodic_keeps_its_equilibrium() -> None:
+    """Declared 'periodic: false', θ = 3π/2 is not folded to −π/2 (on either route)."""
     model = _model(REST)
     exact = equilibria.solve(None, model, Options())
     assert [sp.simplify(eq.at["theta"] - 3 * sp.pi / 2) for eq in exact.answers.equilibria] == [0]
-    assert any("not 2π-periodic" in w for w in exact.warnings)
     numeric = equilibria_numeric.solve(None, model, Options())
     assert [eq.at["theta"] for eq in numeric.answers.equilibria] == pytest.approx([3 * float(sp.pi) / 2], abs=TOL)
-    assert any("not 2π-periodic" in w for w in numeric.warnings)
+    assert any("theta in [-31.4159, 31.4159] (±10π: an angle that winds up" in w for w in numeric.warnings)
+
+
+def test_the_same_angle_declared_periodic_is_refused() -> None:
+    with pytest.raises(InputError, match="'theta' is declared an angle, which repeats after a turn, but spring 's' "
+                                         "holds it outside sin and cos"):
+        _model(REST.replace("{theta: {kind: angle, periodic: false}}", "{theta: angle}"))

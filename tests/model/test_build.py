@@ -73,16 +73,24 @@ def test_a_scene_that_moves_by_itself_has_no_equilibria() -> None:
         assert not result.solved and "depends explicitly on time" in result.error
 
 
-def test_an_angle_the_scene_does_not_repeat_after_one_turn_is_not_folded() -> None:
-    # θ enters as θ/2 though declared an angle: the bob hangs at θ = 0 and stands on top
-    # at θ = 2π (by hand: V = −m g l cos(θ/2)). Folding 2π into (−π, π] would put the
-    # unstable top at 0, on the stable bottom; both are kept, with a warning.
+def test_an_angle_the_scene_does_not_repeat_after_one_turn_is_refused() -> None:
+    # θ enters as θ/2: V = −m g l cos(θ/2) does not repeat after a turn, so declaring θ
+    # an angle (whose equilibria are folded into (−π, π]) is refused, naming the term.
     scene = BASE.replace("coordinates: [theta]", "coordinates: {theta: angle}").replace(
+        "l * [sin(theta), -cos(theta)]", "l * [sin(theta/2), -cos(theta/2)]")
+    with pytest.raises(InputError, match=r"s.yaml:\d+:\d+: coordinates.theta: 'theta' is declared an angle, which "
+                                         r"repeats after a turn, but the height of body 'bob' holds it outside sin"):
+        build_model(load_text(scene, "s.yaml"))
+
+
+def test_an_angle_declared_not_periodic_is_not_folded() -> None:
+    # By hand: V = −m g l cos(θ/2), V' = (m g l/2) sin(θ/2) = 0 at θ = 2πk; the bob hangs
+    # at θ = 0 (V'' > 0) and stands on top at θ = 2π (V'' < 0), which folding would put on 0.
+    scene = BASE.replace("coordinates: [theta]", "coordinates: {theta: {kind: angle, periodic: false}}").replace(
         "l * [sin(theta), -cos(theta)]", "l * [sin(theta/2), -cos(theta/2)]")
     solution = solve_problem(build_model(load_text(scene, "s.yaml"))).solutions[1]
     found = {(eq.at["theta"], eq.stability.value) for eq in solution.answers.equilibria}
-    assert found == {(0, "stable"), (2 * sp.pi, "unstable")}
-    assert any("not 2π-periodic in theta" in w for w in solution.warnings)
+    assert {(0, "stable"), (2 * sp.pi, "unstable")} <= found
 
 
 @pytest.mark.parametrize("position, words", [("[1/0, 0]", "division by zero"),

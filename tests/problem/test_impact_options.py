@@ -97,3 +97,31 @@ def test_a_velocity_must_be_linear_in_the_rates() -> None:
         build_model(problem)
     assert "a velocity must be linear in the rates dot(q)" in info.value.message
     assert (info.value.location.line, info.value.location.key_path()) == (4, "points.G.velocity")
+
+
+STUCK = "{particle: {mass: m, velocity: [-v0, 0]}, sticks: true}"
+
+
+def test_a_sticking_particle_is_read() -> None:
+    problem = load_text(GOOD.replace("{normal: x, restitution: 1/2, particle: {mass: m, velocity: [-v0, 0]}}", STUCK),
+                        "p.yaml")
+    (c,) = problem.questions[0].options.collisions
+    assert c.sticks and c.normal is None and c.restitution is None and c.particle is not None
+
+
+@pytest.mark.parametrize("collision, words", [
+    ("{sticks: true, normal: x}", "p.yaml:13:21: questions[0].impact.collisions.B.sticks: 'sticks' is for a particle"),
+    ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: true, restitution: 0}",
+     "collisions.B.restitution: a sticking particle takes no 'restitution'"),
+    ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: true, normal: x}",
+     "collisions.B.normal: a sticking particle takes no 'normal': the impulse has every component"),
+    ("{particle: {mass: m, velocity: [-v0, 0], after: [0, 0]}, sticks: true}",
+     "collisions.B.particle.after: a sticking particle takes no 'after'"),
+    ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: maybe}", "collisions.B.sticks: expected true or false"),
+    ("{particle: {mass: m, velocity: [-v0, 0]}, stick: true}", "unknown key 'stick' in collision at 'B' (did you mean"),
+])
+def test_bad_sticking(collision: str, words: str) -> None:
+    text = GOOD.replace("{normal: x, restitution: 1/2, particle: {mass: m, velocity: [-v0, 0]}}", collision)
+    with pytest.raises(InputError) as caught:
+        load_text(text, "p.yaml")
+    assert words in str(caught.value)

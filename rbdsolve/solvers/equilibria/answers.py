@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import Enum
 from typing import Mapping
 
@@ -64,6 +64,8 @@ class NumericEquilibrium:
     curvatures: tuple[float, ...]  # eigenvalues of the Hessian of V there, ascending
     free: tuple[tuple[float, ...], ...] = ()  # directions of a continuum it represents (unit vectors)
     equivalent: tuple[Mapping[str, float], ...] = ()  # other coordinate values of the same configuration
+    recognized: Mapping[str, str] = field(default_factory=dict)  # coordinate -> '0', 'pi/2', 'pi': within its bound
+    bound: float | None = None  # the absolute error bound on the coordinates (when any is recognized)
 
 
 @dataclass(frozen=True)

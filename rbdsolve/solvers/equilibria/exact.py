@@ -39,7 +39,8 @@ from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of
+from rbdsolve.solvers.shared.monotone import monotone_root
+from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of, symbolic_sign
 from rbdsolve.solvers.shared.values import sample
 
 
@@ -65,7 +66,11 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     warnings += [f"V is not 2π-periodic in {q.name} (it enters V outside sin and cos, e.g. in a torsional "
                  "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
     solutions = _solve_trig_polynomial(equations, unknowns, angles)
-    if solutions is None:
+    proved = _monotone(equations, unknowns, model) if solutions is None else None
+    if proved is not None:
+        solutions = [proved[0]]
+        warnings.append(proved[1])
+    elif solutions is None:
         solutions = _solve_general(equations, unknowns, model)
         warnings.append("the equilibrium equations are not polynomial in sin, cos and the "
                         "coordinates; sympy's solve was used and may miss solutions")
@@ -183,6 +188,26 @@ def _solve_general(equations, unknowns, model: Model) -> list[dict]:
     except NotImplementedError:
         raise refusal from None
     return [r for r in roots if all(sp.sympify(v).is_real is not False for v in r.values())]
+
+
+def _monotone(equations, unknowns, model: Model) -> tuple[dict, str] | None:
+    """One equation mixing q with sin and cos of it (θ = k sin θ) whose left side is
+    proved strictly monotone (``monotone``): its one simple root, and the proof in words."""
+    if len(equations) != 1 or len(unknowns) != 1 or not _mixed(equations[0], unknowns[0]):
+        return None
+    (e,), (q,) = equations, unknowns
+    found = monotone_root(e, q, model.decided_by)
+    if found is None:
+        return None
+    where = "" if symbolic_sign(found.bound) is not None else " at the parameter values"
+    relation = "≥" if found.increasing else "≤"
+    name = to_unicode(model.readable(q))
+    text = (f"∂V/∂{name} = {to_unicode(model.readable(e))} is strictly "
+            f"{'in' if found.increasing else 'de'}creasing: "
+            f"its derivative {to_unicode(model.readable(found.derivative))} {relation} "
+            f"{to_unicode(model.readable(found.bound))}, which is {'positive' if found.increasing else 'negative'}"
+            f"{where} (|sin|, |cos| ≤ 1); so {name} = {to_unicode(found.root)} is its only root")
+    return {q: found.root}, text
 
 
 def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:

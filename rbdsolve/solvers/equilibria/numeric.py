@@ -17,6 +17,8 @@ taken across it only (along it the representative is exact by construction).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from rbdsolve.errors import UnsolvedError
@@ -33,13 +35,13 @@ from rbdsolve.solvers.equilibria.steps import numeric_steps
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.numeric_model import (
     CURVATURE_TOL,
-    SEARCH_SCALE,
     compiled_gradient,
     continuum_text,
     find_numeric,
     periodic_angles,
 )
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.search_box import box_text
 from rbdsolve.solvers.shared.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.shared.values import require_values
 
@@ -60,10 +62,11 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        equilibria.append(NumericEquilibrium(dict(zip(names, r.at)), Stability(r.kind),
-                                             tuple(float(c) for c in curvatures), r.free,
-                                             tuple(dict(zip(names, e.at)) for e in equivalent)))
-        errors.append(_error(x, np.asarray(g(x), dtype=float), hess, r.free))
+        error = _error(x, np.asarray(g(x), dtype=float), hess, r.free)
+        errors.append(error)
+        at, recognized, bound = recognize(dict(zip(names, r.at)), error * max(float(np.max(np.abs(x))), 1.0))
+        equilibria.append(NumericEquilibrium(at, Stability(r.kind), tuple(float(c) for c in curvatures), r.free,
+                                             tuple(dict(zip(names, e.at)) for e in equivalent), recognized, bound))
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
@@ -78,8 +81,8 @@ def searched(model: Model, found) -> str:
     """How the search went and over which box."""
     how = (f"a sign-change scan of ∂V/∂q at {found.starts} {found.sampling}" if len(model.q) == 1
            else f"Newton's method from {found.starts} {found.sampling}")
-    return (f"{how}, over angles in (−π, π] and lengths within ±{SEARCH_SCALE:g} × max(1, the largest "
-            "parameter value) (a coordinate's range cannot be declared; equilibria outside it are not searched)")
+    return (f"{how}, over {box_text(model, periodic_angles(model))} (equilibria outside it are not searched; a coordinate's "
+            "'range' sets it)")
 
 
 def search_claim(model: Model, found) -> str:
@@ -116,6 +119,22 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
                      "scale of zero, beyond any continuum found): undetermined, higher-order terms decide the "
                      "stability there, and a curved continuum of equilibria would be listed point by point")
     return lines
+
+
+SIMPLE = (("0", 0.0), ("pi/2", math.pi / 2), ("-pi/2", -math.pi / 2), ("pi", math.pi), ("-pi", -math.pi))
+
+
+def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dict[str, str], float | None]:
+    """Each coordinate within ``bound`` (its error bound, absolute) of a simple exact value
+    (0, ±π/2, ±π) is that value: −3.08e-32 is printed 0, with the bound beside it. The
+    bound must be finite and small (below 1e-6): a value only near π is not recognized."""
+    if not math.isfinite(bound) or bound >= 1e-6:
+        return at, {}, None
+    recognized = {name: text for name, value in at.items() for text, exact in SIMPLE if abs(value - exact) <= bound}
+    if not recognized:
+        return at, {}, None
+    exact = dict(SIMPLE)
+    return {n: exact[recognized[n]] if n in recognized else v for n, v in at.items()}, recognized, bound
 
 
 def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:

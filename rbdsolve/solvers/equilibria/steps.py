@@ -68,6 +68,12 @@ def singular_steps(points, model: Model) -> tuple[st.Step, ...]:
                             configuration(coordinates, [sp.sympify(v) for v in p.at.values()])) for p in points])
 
 
+def _shown(name: str, value: float, recognized) -> sp.Expr:
+    """A recognized value exactly (0, π/2, π), else 12 digits."""
+    exact = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
+    return exact[recognized[name]] if name in recognized else sp.Float(value, 12)
+
+
 def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
     # numpy's machinery only here: the exact route's steps load none of it
     from rbdsolve.solvers.shared.numeric_model import CURVATURE_TOL, continuum_text
@@ -79,11 +85,15 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> t
                          f"Hessian of V; one within {CURVATURE_TOL:g} × the Hessian's scale over the search box "
                          "counts as zero (undetermined: higher-order terms decide):")]
     for i, eq in enumerate(a.equilibria, 1):
-        where = configuration(model.state.functions(), [sp.Float(v, 12) for v in eq.at.values()])
+        where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)
+                                                        for name, v in eq.at.items()])
         curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
         family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
+        if eq.recognized:
+            steps.append(st.note(f"Within the error bound {eq.bound:.2g} of a simple exact value: "
+                                 f"{', '.join(f'{n} = {v}' for n, v in eq.recognized.items())}."))
         if eq.equivalent:
             steps.append(st.note("The same configuration is also written",
                                  *[configuration(model.state.functions(), [sp.Float(v, 12) for v in e.values()])

@@ -16,6 +16,7 @@ class ImpactAnswers:
     points: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # velocities just after
     particles: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # striking particles' velocities after
     contact_impulses: Mapping[str, sp.Expr]  # size of each collision's impulse, λ |n|
+    sticking_impulses: Mapping[str, tuple[sp.Expr, sp.Expr, sp.Expr]]  # a sticking particle's impulse on the system
     restitution: Mapping[str, sp.Expr]  # e implied by a particle's given velocity after
     energy_before: sp.Expr  # kinetic energy of the system and the striking particles
     energy_after: sp.Expr

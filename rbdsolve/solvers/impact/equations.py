@@ -51,6 +51,7 @@ class Blow:
     size: sp.Symbol | None  # λ, when the impulse is unknown
     normal: sp.Matrix | None  # the normal as given, or the impulse's direction (collisions)
     collision: Collision | None
+    components: tuple[sp.Symbol, ...] = ()  # a sticking particle's unknown impulse (P_x, P_y, P_z)
 
 
 @dataclass(frozen=True)
@@ -97,7 +98,10 @@ def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
         normal = _nonzero(names.vector(c.normal), c) if c.normal is not None else None
         if c.particle is not None:
             _positive(names.scalar(c.particle.mass), c.particle.mass, model)
-        if c.restitution is None:  # a particle with a known velocity after: a known impulse
+        if c.sticks:  # the particle embeds: an unknown impulse, every component
+            components = tuple(sp.Dummy(f"P{axis}_{c.point}") for axis in "xyz")
+            out.append(Blow(c.point, sp.Matrix(components), None, None, c, components))
+        elif c.restitution is None:  # a particle with a known velocity after: a known impulse
             mu = names.scalar(c.particle.mass)
             P = mu * (names.vector(c.particle.velocity) - names.vector(c.particle.after))
             if normal is None:
@@ -131,7 +135,7 @@ class ImpactEquations:
                        for n, qd in zip(model.coordinate_names(), model.qd)}
         self.final = tuple(sp.Dummy(f"{n}_f") for n in model.coordinate_names())
         self.after = dict(zip(model.qd, self.final))
-        self.sizes = [b.size for b in hits if b.size is not None]
+        self.sizes = [b.size for b in hits if b.size is not None] + [x for b in hits for x in b.components]
         self.I = [tidy(sum((b.impulse.dot(sp.diff(now.velocity(b.point), qd)) for b in hits), sp.Integer(0)))
                   for qd in model.qd]
         self.momenta = [sp.diff(now.T, qd) for qd in model.qd]  # ∂T/∂q̇_a
@@ -181,9 +185,22 @@ class ImpactEquations:
             out.append(self.normal_speed(blow, final=True) + e * approach)
         return out
 
+    def sticking_equations(self) -> list[sp.Expr]:
+        """v_P|f − u|f = 0 component by component, u_f = u_i − P/μ: a sticking particle
+        moves with the point just after (the particle's own momentum balance is in u_f)."""
+        out = []
+        for blow in self.hits:
+            if blow.components:
+                v = self.now.velocity(blow.point).xreplace(self.after)
+                out += list(v - self.other_velocity(blow, final=True))
+        return out
+
+    def equations(self) -> list[sp.Expr]:
+        return [*self.lagrange(), *self.restitution_equations(), *self.sticking_equations()]
+
     def _solve(self) -> dict[sp.Symbol, sp.Expr]:
         unknowns = [*self.final, *self.sizes]
-        equations = [*self.lagrange(), *self.restitution_equations()]
+        equations = self.equations()
         A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
         values = solve_linear(A, b)
         if values is None:
@@ -220,6 +237,7 @@ class ImpactEquations:
         centre, why = self.centre_of_percussion(support)
         contacts = {b.point: tidy_fraction(sol[b.size] * sp.sqrt(tidy_fraction(b.normal.dot(b.normal))))
                     for b in self.hits if b.size is not None}
+        sticking = {b.point: tuple(tidy_fraction(sol[x]) for x in b.components) for b in self.hits if b.components}
         notes += [f"the impulse at {p} comes out pulling ({to_unicode(v)} < 0): with several contacts at once "
                   "Newton's law can fail, and this contact probably separates" for p, v in contacts.items()
                   if v.is_negative or (_known_value(v, model) or 0) < 0]
@@ -229,6 +247,7 @@ class ImpactEquations:
             points=points,
             particles=self.particle_velocities(),
             contact_impulses=contacts,
+            sticking_impulses=sticking,
             restitution=restitution,
             energy_before=before,
             energy_after=after,

@@ -34,7 +34,7 @@ class NumericImpactEquations(ImpactEquations):
 
     def _solve(self) -> dict[sp.Symbol, sp.Expr]:
         unknowns = [*self.final, *self.sizes]
-        equations = [*self.lagrange(), *self.restitution_equations()]
+        equations = self.equations()
         A, b = sp.linear_eq_to_matrix([sp.expand(x) for x in equations], unknowns)
         Af, bf = to_floats(A, self.model.values), to_floats(b, self.model.values)
         self.condition = float(np.linalg.cond(Af))

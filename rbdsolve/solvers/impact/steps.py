@@ -72,7 +72,18 @@ def equation_steps(work: ImpactEquations) -> list[Step]:
     restitution = _restitution(work, show)
     if restitution.math:
         out.append(restitution)
+    if work.sticking_equations():
+        out.append(_sticking(work, show))
     return out
+
+
+def _sticking(work: ImpactEquations, show: _Show) -> Step:
+    """v_P|f = u|f = u|i − P/μ for each particle that embeds."""
+    rows = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)),
+                     show.vector(work.other_velocity(b, final=True)))
+            for b in work.hits if b.components]
+    return st.equation("A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/μ "
+                       "(P: its impulse on the system, every component unknown):", *rows)
 
 
 def unknown_name(work: ImpactEquations, unknown: sp.Symbol) -> sp.Expr:
@@ -118,7 +129,7 @@ def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:
 def _impulses(work: ImpactEquations, show: _Show) -> Step:
     rows = [Relation(sp.Symbol(f"P_{b.point}"), show.vector(b.impulse)) for b in work.hits]
     rows += [Relation(sp.Symbol(f"I_{n}"), show.scalar(I)) for n, I in zip(work.model.coordinate_names(), work.I)]
-    unknown = "; λ n is a collision's unknown impulse, n its normal as given" if work.sizes else ""
+    unknown = "; λ n is a collision's unknown impulse, n its normal as given" if any(b.size for b in work.hits) else ""
     return st.equation(f"Impulses on the system and the generalized impulses I_a = Σ P · ∂v/∂q̇_a{unknown}:",
                        *rows)
 
@@ -154,6 +165,10 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
                          Relation(sp.Symbol("T_i"), show.scalar(answers.energy_before)),
                          Relation(sp.Symbol("T_f"), show.scalar(answers.energy_after)),
                          Relation(Label("Tᵢ − T_f", "T_i - T_f"), show.scalar(answers.energy_lost))))
+    if answers.sticking_impulses:
+        out.append(st.result("The impulse of each sticking particle on the system:",
+                             *[Relation(sp.Symbol(f"P_{p}"), show.vector(sp.Matrix(v)))
+                               for p, v in answers.sticking_impulses.items()]))
     if answers.restitution:
         out.append(st.result("The coefficient of restitution this impact amounts to, "
                              "e = −n·(v − u)|f / n·(v − u)|i:",

@@ -19,6 +19,9 @@ class InertiaAnswers:
     principal_moments: tuple[sp.Expr, ...]  # ascending, repeated by multiplicity
     principal_axes: tuple[tuple[sp.Expr, ...], ...]  # unit vectors, one per moment
     repeated: tuple[sp.Expr, ...]  # moments of multiplicity > 1 (their axes: any in a plane)
+    at: dict[str, sp.Expr] | None = None  # the configuration asked about (coordinate -> value)
+    axis: tuple[sp.Expr, ...] | None = None  # the unit vector e of 'axis', scene axes
+    J_axis: sp.Expr | None = None  # eᵀ J_P e: the moment about that axis through P (G by default)
 
 
 @dataclass(frozen=True)
@@ -37,3 +40,4 @@ class NumericInertiaAnswers:
     principal_moments: tuple[float, ...]  # ascending
     principal_axes: tuple[tuple[float, ...], ...]  # unit vectors, one per moment
     absolute_error: float  # bound on each principal moment's error
+    J_axis: float | None = None  # eᵀ J_P e about the asked axis (scene axes), if one is asked

@@ -33,9 +33,12 @@ from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import InertiaAnswers, Principal
+from rbdsolve.solvers.inertia.configuration import at_configuration, substitution
 from rbdsolve.solvers.inertia.steps import (
     CONVENTION,
     _centre_steps,
+    axis_steps,
+    configuration_step,
     characteristic_step,
     frame_step,
     numeric_principal_steps,
@@ -51,19 +54,25 @@ LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: InertiaOptions = question.options
+    at = substitution(opts, model)
+    model = at_configuration(model, at)
     body = next(b for b in model.bodies if b.name == opts.body)
     symbols = set(model.symbols.parameters.values())
-    steps: list[st.Step] = list(_centre_steps(body, model, symbols))
+    steps: list[st.Step] = [configuration_step(at, model)] if at else []
+    steps += _centre_steps(body, model, symbols, at)
     J_G = body.inertia_in_scene().applyfunc(tidy)
     if body.rotation != sp.eye(3) and (J_G - body.inertia).applyfunc(tidy_fraction) != sp.zeros(3, 3):
         steps.append(scene_axes_step(J_G, symbols))  # not when turning leaves it as it is (a cube)
     view = body.rotation  # body axes -> the axes J is written in
-    J, about = J_G, None
+    J, about, label = J_G, None, "G"
     if opts.about is not None:
-        about = model.symbols.with_points(model.points).vector(opts.about)
+        about = model.symbols.with_points(model.points).vector(opts.about).xreplace(at)
         label = opts.about.text if opts.about.text.isidentifier() else "P"
         J, shift_steps = _shift(body, J_G, about, label, symbols)
         steps += shift_steps
+    e, J_axis = axis_moment(opts, model, J)
+    if e is not None:
+        steps += axis_steps(label, e, J_axis)
     if opts.axes is not None:
         A = frame_matrix(opts, model)
         J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
@@ -75,9 +84,21 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         body.mass, tuple(tidy(x) for x in body.position),
         tuple(about) if about is not None else None,
         sp.ImmutableMatrix(J_G), sp.ImmutableMatrix(J), found.moments, found.axes, found.repeated,
+        {model.state.names[model.q.index(q)]: v for q, v in at.items()} or None,
+        tuple(_unit(e)) if e is not None else None, J_axis,
     )
     return Solution("inertia", Route.EXACT, _to_time(answers, model), tuple(steps),
                     warnings=(*found.warnings, *_undefined_axes(found, model)))
+
+
+def axis_moment(opts: InertiaOptions, model: Model, J: sp.Matrix) -> tuple[sp.Matrix | None, sp.Expr | None]:
+    """e = n/|n| for the asked direction n (scene axes) and J_e = eᵀ J e, J about the
+    asked point in scene axes: the moment of inertia about that axis through the point."""
+    if opts.axis is None:
+        return None, None
+    n = model.symbols.with_points(model.points).vector(opts.axis).applyfunc(tidy)
+    length = sp.sqrt(tidy(sp.expand(n.dot(n))))
+    return n, tidy(sp.expand((n.T * J * n)[0, 0] / length**2))
 
 
 def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
@@ -290,4 +311,5 @@ def _to_time(answers: InertiaAnswers, model: Model) -> InertiaAnswers:
         tuple(convert(x) for x in answers.principal_moments),
         tuple(tuple(convert(x) for x in v) for v in answers.principal_axes),
         tuple(convert(x) for x in answers.repeated),
+        answers.at, answers.axis, convert(answers.J_axis) if answers.J_axis is not None else None,
     )

@@ -12,6 +12,8 @@ relative error is undefined; they have the absolute one), None if every one is.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import sympy as sp
 
@@ -20,7 +22,8 @@ from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import NumericInertiaAnswers
-from rbdsolve.solvers.inertia.exact import frame_matrix
+from rbdsolve.solvers.inertia.configuration import at_configuration, substitution
+from rbdsolve.solvers.inertia.exact import axis_moment, frame_matrix
 from rbdsolve.solvers.inertia.steps import numeric_steps
 from rbdsolve.solvers.shared.numeric_model import to_floats
 from rbdsolve.solvers.shared.options import Options
@@ -61,11 +64,18 @@ def relative_estimate(moments: np.ndarray, absolute: float) -> float | None:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
-    mass, J = tensor(question.options, model)
+    opts: InertiaOptions = question.options
+    model = at_configuration(model, substitution(opts, model))
+    mass, J = tensor(opts, model)
     Jf = to_floats(J, model.values)
+    J_axis = None
+    if opts.axis is not None:
+        scene = tensor(replace(opts, axes=None), model)[1]
+        _, moment = axis_moment(opts, model, scene)
+        J_axis = float(to_floats(sp.Matrix([[moment]]), model.values)[0, 0])
     moments, axes, absolute = principal_floats(Jf)
     answers = NumericInertiaAnswers(float(sp.N(mass.xreplace(dict(model.values)))),
                                     tuple(tuple(float(x) for x in row) for row in Jf),
                                     tuple(float(x) for x in moments),
-                                    tuple(tuple(float(x) for x in axes[:, k]) for k in range(3)), absolute)
+                                    tuple(tuple(float(x) for x in axes[:, k]) for k in range(3)), absolute, J_axis)
     return Solution("inertia", Route.NUMERIC, answers, numeric_steps(Jf, moments, axes), error_estimate=relative_estimate(moments, absolute))

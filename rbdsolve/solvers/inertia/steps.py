@@ -24,9 +24,9 @@ def _show(name: str, J: sp.Matrix, symbols: set) -> Relation:
     return Relation(sp.Symbol(name), scaled_matrix(J, symbols))
 
 
-def _centre_steps(body: RigidBody, model: Model, symbols: set) -> list[st.Step]:
+def _centre_steps(body: RigidBody, model: Model, symbols: set, at: dict | None = None) -> list[st.Step]:
     """J_G from the shape table (one part), or from the parts by the parallel axis
-    theorem (a composite body)."""
+    theorem (a composite body); ``at``: the coordinates' values asked about."""
     parts = body.source.parts
     if len(parts) == 1 and not parts[0].hole:
         part = parts[0]
@@ -35,7 +35,7 @@ def _centre_steps(body: RigidBody, model: Model, symbols: set) -> list[st.Step]:
                               "(body axes):", _show("J_G", body.inertia, symbols))]
     names = model.symbols.with_points(model.points)
     props = [part_properties(p, names) for p in parts]
-    centre = body.rotation.T * (body.position - names.vector(body.source.at))
+    centre = body.rotation.T * (body.position - names.vector(body.source.at).xreplace(at or {}))
     steps = [st.definition(
         f"{body.name} is made of {len(parts)} parts (holes count with negative mass); its mass "
         "and centre of mass from its origin:",
@@ -131,3 +131,15 @@ def numeric_steps(J, moments, axes) -> tuple[st.Step, ...]:
                   *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 12) for x in axes[:, k]]]))
                     for k in range(3)]),
     )
+
+
+def axis_steps(label: str, e: sp.Matrix, J_axis: sp.Expr) -> list[st.Step]:
+    """The moment about one axis through the point, J = eᵀ J_P e."""
+    return [st.result(f"About the axis through {label} along the unit vector e, J = eᵀ J_{label} e:",
+                      Relation(sp.Symbol("e"), _unit_display(e)), Relation(sp.Symbol("J_e"), J_axis))]
+
+
+def configuration_step(at: dict, model: Model) -> st.Step:
+    """The configuration asked about, put in before anything else."""
+    return st.given("At the configuration asked about (put in first):",
+                    *[Relation(model.readable(q), value) for q, value in at.items()])

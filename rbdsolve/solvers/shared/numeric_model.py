@@ -9,10 +9,10 @@ parameter values put in and rounded once to floats.
 
 Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) likewise come from the
 scene by automatic differentiation where it allows, else compiled from the symbolic V
-with sympy's lambdify (``compiled_gradient``). The search box: angles over one turn
-(one cell more each side, so a root at ±π is bracketed whatever its rounding), lengths
-within ±SEARCH_SCALE × max(1, the largest parameter value); a coordinate's range cannot
-be declared in the format, so equilibria outside the box are not searched. An angle
+with sympy's lambdify (``compiled_gradient``). The search box (``search_box``): a
+declared range, else a periodic angle over one turn (one cell more each side, so a root
+at ±π is bracketed whatever its rounding), else ±SEARCH_SCALE × the scene's largest
+length; equilibria outside the box are not searched. An angle
 along which ∂V/∂q is not 2π-periodic (``periodic_angles``: a torsional spring counts
 turns) is searched as a length.
 
@@ -56,12 +56,12 @@ from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene, exact_fracti
 from rbdsolve.solvers.shared.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.shared.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.shared.scan import scan
+from rbdsolve.solvers.shared.search_box import search_box
 
 GRID_POINTS = 24
 MAX_STARTS = 4096
 SAMPLE_SEED = 20151029  # fixed: the same starts, and the same answers, every run
 SCALE_SAMPLES = 16
-SEARCH_SCALE = 10.0
 ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
 MERGE_TOL = 1e-6
 EPS_STEP = 4 * float(np.finfo(float).eps)
@@ -350,11 +350,10 @@ def hessian_scale(model: Model, H) -> float:
     return max(max(sizes, default=1.0), 1e-300)
 
 
-def _box(model: Model) -> list[tuple[float, float]]:
-    sizes = [abs(float(v)) for v in model.values.values()] or [1.0]
-    reach = SEARCH_SCALE * max(max(sizes), 1.0)
-    angles = periodic_angles(model)
-    return [(-math.pi, math.pi) if q in angles else (-reach, reach) for q in model.q]
+@memoized  # asked for each candidate root
+def _box(model: Model) -> tuple[tuple[float, float], ...]:
+    """The search box (``search_box``: declared ranges, one turn, the scene's lengths)."""
+    return tuple((i.low, i.high) for i in search_box(model, periodic_angles(model)))
 
 
 def periodic_angles(model: Model) -> frozenset:

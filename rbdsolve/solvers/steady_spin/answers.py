@@ -40,10 +40,27 @@ class SpinCase:
 
 
 @dataclass(frozen=True)
+class FreePrecession:
+    """Torque-free precession of an axisymmetric body (precession.py)."""
+
+    axis: str  # the symmetry axis: e1, e2 or e3 (principal axes of 'moments')
+    spin: sp.Expr  # ω₃, along the axis
+    transverse: sp.Expr  # ω⊥, across it
+    omega: sp.Expr  # |ω|
+    angular_momentum: sp.Expr  # |L|
+    body_rate: sp.Expr  # Ω_b: ω about the axis, relative to the body
+    space_rate: sp.Expr  # φ̇: the axis about L, in space
+    alpha: sp.Expr  # angle between ω and the axis
+    nu: sp.Expr  # angle between the axis and L
+    gamma: sp.Expr  # angle between ω and L
+
+
+@dataclass(frozen=True)
 class SteadySpinAnswers:
     body: str
     moments: tuple[sp.Expr, sp.Expr, sp.Expr]  # J₁, J₂, J₃ about the principal axes e1, e2, e3
     cases: tuple[SpinCase, ...]
+    precession: FreePrecession | None = None  # when 'precession' is asked
 
 
 @dataclass(frozen=True)
@@ -59,3 +76,4 @@ class NumericSteadySpinAnswers:
     body: str
     moments: tuple[float, float, float]  # ascending
     spins: tuple[NumericSpin, ...]
+    precession: FreePrecession | None = None  # in floats, when 'precession' is asked

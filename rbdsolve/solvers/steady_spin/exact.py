@@ -43,6 +43,7 @@ from rbdsolve.solvers.steady_spin.answers import (
     Stability,
     SteadySpinAnswers,
 )
+from rbdsolve.solvers.steady_spin.precession import precession, precession_steps
 from rbdsolve.solvers.steady_spin.steps import exact_steps
 
 OMEGA = sp.Symbol("Omega")  # the size of a steady spin
@@ -64,9 +65,13 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if any(tidy(J) == 0 for J in moments):
         raise UnsolvedError(f"body '{name}' has a zero principal moment (a particle, a slender rod or a planar "
                             "inertia): Euler's equations need three positive moments")
-    cases = tuple(_case(pattern, moments, model) for pattern in _patterns(moments, model))
-    answers = SteadySpinAnswers(name, moments, cases)
-    return Solution("steady_spin", Route.EXACT, answers, tuple(steps + exact_steps(answers)))
+    omega = model.symbols.parameters.get("Omega", OMEGA)  # a parameter Omega is the spin's size, with its value
+    cases = tuple(_case(pattern, moments, model, omega) for pattern in _patterns(moments, model))
+    asked = question.options.precession
+    free = precession(asked, moments, model) if asked is not None else None
+    answers = SteadySpinAnswers(name, moments, cases, free)
+    steps += exact_steps(answers) + (precession_steps(free) if free is not None else [])
+    return Solution("steady_spin", Route.EXACT, answers, tuple(steps))
 
 
 # --- which moments may be equal ---------------------------------------------------------
@@ -129,37 +134,37 @@ def _condition(pattern, J, model: Model) -> Condition:
 # --- steady spins and their stability ------------------------------------------------------
 
 
-def _case(pattern, J, model: Model) -> SpinCase:
+def _case(pattern, J, model: Model, omega: sp.Expr) -> SpinCase:
     groups = sorted(pattern, key=len)
     if len(groups) == 3:  # all different
-        spins = tuple(_axis(k) for k in range(3))
+        spins = tuple(_axis(k, omega) for k in range(3))
         return SpinCase(_condition(pattern, J, model), spins,
-                        tuple(_distinct(k, J, model) for k in range(3)))
+                        tuple(_distinct(k, J, model, omega) for k in range(3)))
     if len(groups) == 2:
         (k,), pair = sorted(groups[0]), sorted(groups[1])
         plane = tuple(sp.Symbol(f"w{n + 1}") if n in pair else sp.Integer(0) for n in range(3))
-        symmetric = SpinStability(_axis(k), Stability.STABLE, tidy_fraction((J[k] - J[pair[0]]) * OMEGA / J[pair[0]]),
-                                  None)
+        symmetric = SpinStability(_axis(k, omega), Stability.STABLE,
+                                  tidy_fraction((J[k] - J[pair[0]]) * omega / J[pair[0]]), None)
         drift = SpinStability(plane, Stability.NEUTRAL, None, None)
-        return SpinCase(_condition(pattern, J, model), (_axis(k), plane), (symmetric, drift))
+        return SpinCase(_condition(pattern, J, model), (_axis(k, omega), plane), (symmetric, drift))
     every = (sp.Symbol("w1"), sp.Symbol("w2"), sp.Symbol("w3"))
     return SpinCase(_condition(pattern, J, model), (every,), (SpinStability(every, Stability.NEUTRAL, None, None),))
 
 
-def _axis(k: int) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
-    return tuple(OMEGA if n == k else sp.Integer(0) for n in range(3))
+def _axis(k: int, omega: sp.Expr) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    return tuple(omega if n == k else sp.Integer(0) for n in range(3))
 
 
-def _distinct(k: int, J, model: Model) -> SpinStability:
+def _distinct(k: int, J, model: Model, omega: sp.Expr) -> SpinStability:
     """Spin Ω e_k with three different moments: the sign of (J_k − J_i)(J_k − J_j)."""
     i, j = (n for n in range(3) if n != k)
     product = sp.factor(tidy_fraction((J[k] - J[i]) * (J[k] - J[j])))
     sign = sign_of(product, model.decided_by)  # values, or assumptions such as A > B > C
     positive, negative = sign == 1, sign == -1
-    frequency = tidy(OMEGA * sp.sqrt(tidy_fraction(product / (J[i] * J[j]))))
-    growth = tidy(OMEGA * sp.sqrt(tidy_fraction(-product / (J[i] * J[j]))))
+    frequency = tidy(omega * sp.sqrt(tidy_fraction(product / (J[i] * J[j]))))
+    growth = tidy(omega * sp.sqrt(tidy_fraction(-product / (J[i] * J[j]))))
     if positive:
-        return SpinStability(_axis(k), Stability.STABLE, frequency, None)
+        return SpinStability(_axis(k, omega), Stability.STABLE, frequency, None)
     if negative:
-        return SpinStability(_axis(k), Stability.UNSTABLE, growth, None)
-    return SpinStability(_axis(k), Stability.CONDITIONAL, None, product)
+        return SpinStability(_axis(k, omega), Stability.UNSTABLE, growth, None)
+    return SpinStability(_axis(k, omega), Stability.CONDITIONAL, None, product)

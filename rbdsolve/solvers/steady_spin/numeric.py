@@ -12,7 +12,10 @@ whose equatorial spins are neutral, or a spherical one, neutral about every axis
 
 from __future__ import annotations
 
+from dataclasses import fields, replace
+
 import numpy as np
+import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
@@ -23,6 +26,7 @@ from rbdsolve.solvers.shared.numeric_model import to_floats
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.values import require_values
 from rbdsolve.solvers.steady_spin.answers import NumericSpin, NumericSteadySpinAnswers, Stability
+from rbdsolve.solvers.steady_spin.precession import numeric_precession, precession_steps
 from rbdsolve.solvers.steady_spin.steps import numeric_steps
 
 EQUAL_TOL = 1e-9
@@ -37,8 +41,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError(f"body '{name}' has a zero principal moment: Euler's equations need three positive "
                             "moments")
     spins = tuple(_spin(k, J, axes) for k in range(3))
-    answers = NumericSteadySpinAnswers(name, tuple(float(x) for x in J), spins)
-    return Solution("steady_spin", Route.NUMERIC, answers, numeric_steps(answers),
+    asked = question.options.precession
+    free = numeric_precession(asked, J, EQUAL_TOL * float(np.max(J)), model) if asked is not None else None
+    answers = NumericSteadySpinAnswers(name, tuple(float(x) for x in J), spins, free)
+    steps = numeric_steps(answers)
+    if free is not None:  # the exact route's steps, with the numbers
+        shown = {f.name: sp.Float(getattr(free, f.name), 12) for f in fields(free) if f.name != "axis"}
+        steps += tuple(precession_steps(replace(free, **shown)))
+    return Solution("steady_spin", Route.NUMERIC, answers, steps,
                     error_estimate=relative_estimate(J, absolute))
 
 

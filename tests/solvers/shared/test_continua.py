@@ -120,6 +120,14 @@ def test_the_starts_are_described_as_they_were_placed(n, starts, text) -> None:
 
     from rbdsolve.solvers.shared.numeric_model import _starts
 
-    model = SimpleNamespace(q=sp.symbols(f"q0:{n}"), angles=set(), values={})
+    from rbdsolve.problem.schema import Coordinate, CoordinateKind
+
+    q = sp.symbols(f"q0:{n}")
+    coordinates = [Coordinate(str(x), CoordinateKind.LENGTH, None) for x in q]
+    class Fake(SimpleNamespace):  # weak references and hashing by identity, as a Model's (memoized)
+        __hash__ = object.__hash__
+
+    model = Fake(q=q, angles=set(), values={}, springs=(),
+                            problem=SimpleNamespace(coordinates=coordinates, dimensions=()))
     points, how = _starts(model, 24)
     assert len(points) == starts and how.startswith(text)

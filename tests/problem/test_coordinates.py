@@ -1,0 +1,44 @@
+"""The ``coordinates:`` options: kind, periodic, range; each mistake located."""
+
+from __future__ import annotations
+
+import pytest
+
+from rbdsolve.errors import InputError
+from rbdsolve.problem import load_text
+from rbdsolve.problem.schema import CoordinateKind
+
+SCENE = """\
+parameters: {{m: mass, l: length, g: gravity}}
+coordinates:
+  x: {spec}
+gravity: [0, -g]
+points:
+  P: [x, 0]
+bodies:
+  bead: {{shape: particle, mass: m, at: P}}
+questions: [equilibria]
+"""
+
+
+def test_a_declared_range_and_periodic_are_read() -> None:
+    problem = load_text(SCENE.format(spec="{kind: angle, periodic: false, range: [-2*pi, 2*pi]}"), "c.yaml")
+    (c,) = problem.coordinates
+    assert c.kind is CoordinateKind.ANGLE and c.periodic is False
+    assert [end.text for end in c.range] == ["-2*pi", "2*pi"]
+
+
+@pytest.mark.parametrize("spec, words", [
+    ("{kind: angle, range: [0, 1]}", "c.yaml:3:27: coordinates.x.range: a periodic angle is searched over one turn"),
+    ("{kind: length, periodic: false}", "c.yaml:3:31: coordinates.x.periodic: 'periodic' is for an angle"),
+    ("{kind: length, range: [2, 1]}", "coordinates.x.range: the range of 'x' is empty: its low end 2 is not below"),
+    ("{kind: length, range: [0]}", "coordinates.x.range: a range is [low, high], two constants"),
+    ("{kind: length, range: [0, x]}", "'x' cannot appear here: the range of 'x' must be constant"),
+    ("{kind: lenght}", "coordinates.x.kind: unknown coordinate kind 'lenght' (expected angle or length) (did you mean"),
+    ("{kind: length, rang: [0, 1]}", "coordinates.x.rang: unknown key 'rang' in coordinate 'x' (did you mean 'range'?)"),
+    ("{kind: angle, periodic: maybe}", "coordinates.x.periodic: expected true or false, found 'maybe'"),
+])
+def test_bad_coordinate_options(spec: str, words: str) -> None:
+    with pytest.raises(InputError) as caught:
+        load_text(SCENE.format(spec=spec), "c.yaml")
+    assert words in str(caught.value)
