@@ -60,6 +60,8 @@ class Rolling:
     integrated: sp.Expr
     moving_surface: bool
     source: Contact
+    span: tuple[sp.Expr, sp.Expr] | None = None  # C stays on the body's edge while q is between these
+    coordinate: sp.Symbol | None = None  # the contact's coordinate q (the span's)
 
 
 @dataclass(frozen=True)
@@ -141,8 +143,9 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, q, names: Symbols, values
     else:
         at = {phi: q, sigma: q / ratio}
         dependent, independent, coefficient = _travel_name(c, s), q, (a, b)
+    span = _arc_span(e, s, at[phi], {sigma: at[sigma]}, q)
     return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, independent, coefficient,
-                   names, s.moving)
+                   names, s.moving, span)
 
 
 def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
@@ -165,7 +168,8 @@ def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
     ratio = _constant(c, sp.simplify(-a / b), (phi, lam))  # λ̇ = ratio φ̇
     at = {phi: q, lam: ratio * q}
     dependent = user_function(f"s_{c.name}")(t)
-    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving)
+    span = (-e.half_length / ratio, e.half_length / ratio)  # |λ| ≤ half length, λ = ratio·q
+    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving, span)
 
 
 def _rates(origin, point, tangent, phi, first: dict, second: dict) -> tuple[sp.Expr, sp.Expr]:
@@ -187,9 +191,10 @@ def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
     return ratio
 
 
-def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving):
+def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving, span=None):
     """The body's origin and angle in the coordinate, and the Rolling record: the
-    relation coefficient[0]·ḋ = −coefficient[1]·q̇, integrated from the reference."""
+    relation coefficient[0]·ḋ = −coefficient[1]·q̇, integrated from the reference, and
+    the coordinate's span where C stays on the edge."""
     placed = origin.subs(at).applyfunc(sp.simplify)
     angle = sp.sympify(at[phi])
     point = point.applyfunc(sp.simplify)
@@ -199,7 +204,28 @@ def _result(c, origin, at, phi, point, dependent, independent, coefficient, name
     num, den = sp.fraction(sp.factor(coefficient[1] / coefficient[0]))
     integrated = (-sp.Mul(num, q_t, sp.Pow(den, -1), evaluate=False) if isinstance(num, sp.Add)
                   else -num * q_t / den)
-    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c)
+    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c,
+                                  span, independent)
+
+
+def _arc_span(e: Curved, s: _Surface, angle: sp.Expr, travel: dict, q) -> tuple[sp.Expr, sp.Expr] | None:
+    """Where C stays on an arc with limits: the edge's point facing the surface, in body
+    axes, is d(q) = R(φ)ᵀ(−n(σ)); it turns at a constant rate κ relative to the body
+    (φ and σ are linear in q), d(q) = R(κ q) d₀. With δ_a the angle from a limit a to d₀
+    (|δ_a| ≤ π/2, C on the arc at the reference), d·a = cos(κ q + δ_a) ≥ 0 for
+    −π/2 − δ_a ≤ κ q ≤ π/2 − δ_a; the span is where every limit allows (the piece
+    through q = 0, the way the body rocks there). None: a whole circle."""
+    if not e.limits:
+        return None
+    facing = (sp.rot_axis3(angle) * -s.normal.subs(travel)).applyfunc(sp.simplify)
+    d0 = facing.subs(q, 0).applyfunc(sp.simplify)
+    kappa = sp.simplify(_turn(d0).dot(facing.diff(q).subs(q, 0)))
+    if kappa == 0:
+        return None
+    deltas = [sp.atan2(sp.simplify(a.cross(d0)[2]), sp.simplify(a.dot(d0))) for a in e.limits]
+    low = sp.Max(*[-sp.pi / 2 - d for d in deltas]) if len(deltas) > 1 else -sp.pi / 2 - deltas[0]
+    high = sp.Min(*[sp.pi / 2 - d for d in deltas]) if len(deltas) > 1 else sp.pi / 2 - deltas[0]
+    return (sp.simplify(low / kappa), sp.simplify(high / kappa))
 
 
 def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:

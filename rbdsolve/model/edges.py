@@ -4,8 +4,11 @@ A **curved** edge is an arc of a circle: its centre and radius, and the directio
 (unit, from the centre) that lie on the arc, those with d·a ≥ 0 for each limit a (none:
 the whole circle). A half disk's arc is y ≥ 0 in its own axes (limit own y), a quarter
 disk's x, y ≥ 0, a hemisphere's z ≥ 0 (its section by any plane through its axis).
-A **flat** edge is a straight side: a point on it and its outward unit normal; a
-plate's ``bottom`` is y = −h/2 with normal −y, a rod's its own line (no thickness).
+A **flat** edge is a straight side: its midpoint, its outward unit normal and its half
+length; a plate's ``bottom`` is y = −h/2 with normal −y and half length w/2, a rod's its
+own line (no thickness, half length l/2), a half disk's or hemisphere's flat face the
+diameter (half length r). An arc's limits and a side's half length are the edge's
+extent: a contact is valid only while its point stays on it (model/contacts.py).
 The part's ``axis:`` turns them with the shape (Q, :func:`~rbdsolve.model.inertia.rotation_to`).
 """
 
@@ -34,8 +37,9 @@ class Curved:
 
 @dataclass(frozen=True)
 class Flat:
-    point: sp.Matrix  # on the edge, body axes
+    point: sp.Matrix  # the edge's midpoint, body axes
     outward: sp.Matrix  # unit normal out of the body
+    half_length: sp.Expr  # the edge spans point ± half_length along e_z × outward
 
 
 class NotInPlane(ValueError):
@@ -59,10 +63,11 @@ def edge(shape: Shape, name: str, dims: dict[str, sp.Expr], axis: sp.Matrix | No
         return _in_plane(shape, Curved(sp.zeros(3, 1), r, tuple(Q * a for a in limits), plane), Q)
     if name == "flat":  # the straight edge through the centre: a half disk's diameter, a hemisphere's face
         outward = -_Y if shape is Shape.HALF_DISK else -_Z
-        return _in_plane(shape, Flat(sp.zeros(3, 1), Q * outward), Q)
+        return _in_plane(shape, Flat(sp.zeros(3, 1), Q * outward, r), Q)
     sign = -1 if name == "bottom" else 1  # bottom / top of a plate or a rod
     half = dims["height"] / 2 if shape is Shape.PLATE else sp.Integer(0)
-    return Flat(Q * (sign * half * _Y), Q * (sign * _Y))
+    extent = dims["width"] / 2 if shape is Shape.PLATE else dims["length"] / 2
+    return Flat(Q * (sign * half * _Y), Q * (sign * _Y), extent)
 
 
 def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Curved | Flat:

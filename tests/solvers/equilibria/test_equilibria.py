@@ -67,3 +67,21 @@ def test_equilibria_that_exist_only_for_some_parameters() -> None:
     assert sorted(float(e.at["theta"]) for e in low) == [0.0, float(sp.pi)]
     high = solve(COND + "values: {m: 1, l: 1, g: 10, k: 20}\n").solutions[0].answers.equilibria
     assert len(high) == 4
+
+
+def test_a_rolling_coordinate_with_a_periodic_potential_is_solved_completely_and_the_repeat_said() -> None:
+    """A cylinder rolling in a cylinder: θ enters the cylinder's angle bare (φ = −(R − r) θ/r),
+    so the scene is not 2π-periodic in θ, but V = −m g (R − r) cos θ is: by hand the
+    equilibria are θ = 0 and π, and θ₀ + 2kπ repeat them (the cylinder rolled on)."""
+    from rbdsolve.problem import load_file
+    from rbdsolve.solvers.equilibria.exact import find_equilibria, repeating
+
+    from conftest import PROBLEMS
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
+    (theta,) = model.q
+    assert theta not in model.angles and repeating(model) == {theta}
+    solutions, warnings = find_equilibria(model)
+    assert sorted(s[theta] for s in solutions) == [0, sp.pi]
+    assert not any("may miss solutions" in w for w in warnings)
+    assert any("repeats at theta₀ + 2kπ" in w for w in warnings)

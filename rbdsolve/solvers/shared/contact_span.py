@@ -1,0 +1,112 @@
+"""Where a contact holds: a rocking body's contact point must stay on its edge.
+
+A contact on an edge of limited extent (a half disk's arc, a slab's underside) is valid
+only while its coordinate q lies in the span the model derived (``Rolling.span``, the
+two ends a and b in either order): (q − a)(q − b) ≤ 0. A solution of ∂V/∂q = 0 outside
+it (a half disk upside down, θ = π) is the formula's, not the body's: the contact point
+would be off the edge, the body resting on a corner or its flat side, and the scene's
+energies no longer describe it. Both routes drop such solutions with the reason
+(``outside``); where the parameters leave the sign open, the equilibrium is kept with
+its condition (``conditions``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.shared.signs import Undecided, sign_of
+
+
+@dataclass(frozen=True)
+class OffEdge:
+    """A solution of ∂V/∂q = 0 where a contact point would leave its edge: the first
+    contact it fails, and why (the edge and its span)."""
+
+    at: dict
+    coordinate: str
+    value: sp.Expr  # the contact's coordinate there
+    reason: str
+
+
+def outside(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> OffEdge | None:
+    """Where ``at`` is outside some contact's span (None: inside, or undecided)."""
+    for c, value, measure in _measures(model, at):
+        if sign_of(measure, model.decided_by) == 1:
+            return OffEdge(dict(at), c.coordinate.name, value, f"the contact point {c.name} would be off {c.body}'s {c.source.edge} "
+                           f"edge, which it stays on for {span_text(model, c)}")
+    return None
+
+
+def conditions(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[str, ...]:
+    """The contacts' spans the parameters leave undecided at ``at``, as text."""
+    return tuple(f"{c.name} on {c.body}'s {c.source.edge} edge only while {span_text(model, c)}"
+                 for c, _, measure in _measures(model, at)
+                 if isinstance(sign_of(measure, model.decided_by), Undecided))
+
+
+def split(model: Model, solutions) -> tuple[list, list[OffEdge]]:
+    """Solutions (each {q: value}) kept, and those off an edge with their reason."""
+    kept, dropped = [], []
+    for sol in solutions:
+        off = outside(model, sol)
+        (kept.append(sol) if off is None else dropped.append(off))
+    return kept, dropped
+
+
+def warnings(dropped: list[OffEdge]) -> list[str]:
+    """One line per reason: the values it drops (six digits when they are floats)."""
+    by_reason: dict[str, list[str]] = {}
+    for d in dropped:
+        shown = f"{float(d.value):.6g}" if isinstance(d.value, sp.Float) else sp.sstr(d.value)
+        by_reason.setdefault(d.reason, []).append(shown)  # one contact per reason: its coordinate
+    lines = []
+    for reason, values in by_reason.items():
+        listed = ", ".join(values[:6]) + (f", … ({len(values)} in all)" if len(values) > 6 else "")
+        name = next(d.coordinate for d in dropped if d.reason == reason)
+        what = ("is a solution of ∂V/∂q = 0 but not an equilibrium of the scene" if len(values) == 1 else
+                "are solutions of ∂V/∂q = 0 but not equilibria of the scene")
+        lines.append(f"{name} = {listed} {what}, not listed: {reason}")
+    return lines
+
+
+def held_for(model: Model, q: sp.Symbol) -> str:
+    """Where the contacts measured by q hold ("" for none with a span)."""
+    return " and ".join(span_text(model, c) for c in model.contacts if c.span is not None and c.coordinate == q)
+
+
+def span_text(model: Model, c) -> str:
+    """a ≤ q ≤ b when the parameters order the ends, else "q between a and b"."""
+    a, b = c.span
+    name = c.coordinate.name
+    order = sign_of(tidy(b - a), model.decided_by)
+    if isinstance(order, Undecided):
+        return f"{name} between {sp.sstr(a)} and {sp.sstr(b)}"
+    low, high = (a, b) if order >= 0 else (b, a)
+    return f"{sp.sstr(low)} <= {name} <= {sp.sstr(high)}"
+
+
+def _measures(model: Model, at: Mapping[sp.Symbol, sp.Expr]):
+    """(contact, q₀, (q₀ − a)(q₀ − b)) for each contact with a span and a value in ``at``."""
+    for c in model.contacts:
+        if c.span is None or c.coordinate not in at:
+            continue
+        value = sp.sympify(at[c.coordinate])
+        a, b = c.span
+        yield c, value, tidy(sp.expand((value - a) * (value - b)))
+
+
+def require_on_edges(question, model: Model) -> None:
+    """Small oscillations about a configuration given with ``about:`` are refused where a
+    contact point would be off its edge there (both modes routes)."""
+    about = question.options.about
+    at = {q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
+    off = outside(model, at)
+    if off is not None:
+        expr = next(e for name, e in about if name == off.coordinate)
+        raise UnsolvedError(f"{expr.loc}: no small oscillations about {off.coordinate} = {expr.text}: {off.reason}")
