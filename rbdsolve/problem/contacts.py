@@ -67,8 +67,11 @@ class ContactReader:
             surface, radius = self.string(spec.get("string"))
             edge = _edge(spec, body, string=radius is not None)
             return Contact(name, body.name, edge, surface, coordinate, measure, radius, True, spec.loc)
-        return Contact(name, body.name, _edge(spec, body, string=False), self.surface(spec.get("rolls_on")),
-                       coordinate, measure, None, False, spec.loc)
+        surface = self.surface(spec.get("rolls_on"), bodies)
+        if surface.body == body.name:
+            raise InputError(f"{what}: body '{body.name}' cannot roll on itself", spec.get("rolls_on").loc)
+        return Contact(name, body.name, _edge(spec, body, string=False), surface, coordinate, measure, None,
+                       False, spec.loc)
 
     def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
         """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
@@ -85,15 +88,17 @@ class ContactReader:
                              "leaves the body one degree of freedom, named in 'coordinates:'", node.loc)
         return word, measure
 
-    def surface(self, node: Node) -> Surface:
+    def surface(self, node: Node, bodies: dict[str, Body]) -> Surface:
         if isinstance(node, Scalar) and node.text.strip() == "floor":
             origin = ex.Expr(ex.Vec((ex.Num(Fraction(0)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[0, 0]", node.loc)
             return Surface(SurfaceKind.LINE, origin, _unit_x(node), None, False, node.loc)
-        spec = expect_mapping(node, "a surface: floor, {line: {...}} or {circle: {...}}")
+        spec = expect_mapping(node, "a surface: floor, {line: {...}}, {circle: {...}} or {body: B, edge: E}")
+        if spec.get("body") is not None:
+            return _body_surface(spec, bodies)
         if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
             found = ", ".join(k.text for k, _ in spec.entries) or "nothing"
-            raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}} or {{circle: {{centre, radius, "
-                             f"side}}}}; found {found}", spec.loc)
+            raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}}, {{circle: {{centre, radius, "
+                             f"side}}}} or another body's edge {{body: B, edge: E}}; found {found}", spec.loc)
         key, value = spec.entries[0]
         body = expect_mapping(value, f"a {key.text}")
         if key.text == "line":
@@ -160,6 +165,20 @@ def _body(node: Node, bodies: dict[str, Body]) -> Body:
         raise InputError(f"body '{body.name}' must be one shape of the library to roll (its edge gives the "
                          "contact's geometry); a composite body or an explicit inertia cannot roll here yet", word.loc)
     return body
+
+
+def _body_surface(spec: Map, bodies: dict[str, Body]) -> Surface:
+    """Another body's edge: ``{body: B, edge: E, side: outside}`` (a rim: outside by
+    default; a flat edge: the body on its outer side)."""
+    check_keys(spec, ("body",), ("edge", "side"), "a body's edge to roll on")
+    body = _body(spec.get("body"), bodies)
+    edge = _edge(spec, body, string=False)
+    side = spec.get("side")
+    word = "outside" if side is None else expect_scalar(side, "inside or outside").text.strip()
+    if word not in SIDES["circle"]:
+        raise InputError(f"expected side inside or outside, found {describe(side)}"
+                         f"{did_you_mean(word, list(SIDES['circle']))}", side.loc)
+    return Surface(SurfaceKind.BODY, None, None, None, word == "inside", spec.loc, body.name, edge)
 
 
 def _edge(spec: Map, body: Body, string: bool) -> str:

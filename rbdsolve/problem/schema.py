@@ -216,6 +216,7 @@ class Body:
 class SurfaceKind(Enum):
     LINE = "line"  # a straight line (a floor, an incline, a string)
     CIRCLE = "circle"  # a circle (a drum, a track, a bowl in its plane)
+    BODY = "body"  # an edge of another body, moving with it (a turning disk, a sliding plank)
 
 
 @dataclass(frozen=True)
@@ -224,14 +225,17 @@ class Surface:
 
     A line passes through ``point`` along ``direction`` (a vector) and the body lies on
     its left (``flip``: on its right); a circle has its centre at ``point`` and the body
-    rolls on its ``inside`` or outside."""
+    rolls on its ``inside`` or outside. A body's edge (kind BODY) names the body and the
+    edge; it moves and turns with that body."""
 
     kind: SurfaceKind
-    point: Expr
+    point: Expr | None  # None: a body's edge
     direction: Expr | None  # line
     radius: Expr | None  # circle
     inside: bool  # circle: inside; line: the body on the right of ``direction``
     loc: Location
+    body: str | None = None  # BODY: the body whose edge it is
+    edge: str | None = None  # BODY: which edge
 
 
 class Measure(Enum):

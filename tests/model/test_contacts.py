@@ -19,8 +19,9 @@ from conftest import PROBLEMS
 CASES = sorted((PROBLEMS / "contacts").glob("*.yaml"))
 CASES = [p for p in CASES if not p.name.endswith(".expected.yaml")]
 # the velocity of the surface's material point at C, by hand: a fixed surface is at rest,
-# the plank translates with ẋ
-SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate: sp.Matrix([rate["x"], 0, 0])}
+# the plank translates with ẋ, the turning disk (centre at the origin) turns at ψ̇: ψ̇ e_z × C
+SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate, C: sp.Matrix([rate["x"], 0, 0]),
+                    "disk-on-turning-disk": lambda rate, C: rate["psi"] * sp.Matrix([-C[1], C[0], 0])}
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
@@ -38,7 +39,7 @@ def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> Non
             at |= {qd: sp.Rational(rng.randint(-900, 900), 1000) for qd in state.qd}
             at |= {p: sp.Rational(rng.randint(1100, 2900), 1000) for p in model.symbols.parameters.values()}
             rates = {n: at[qd] for n, qd in zip(state.names, state.qd)}
-            surface = SURFACE_VELOCITY.get(path.stem, lambda rate: sp.zeros(3, 1))(rates)
+            surface = SURFACE_VELOCITY.get(path.stem, lambda rate, C: sp.zeros(3, 1))(rates, contact.point)
             difference = (v_c - surface).xreplace(at)
             assert all(abs(sp.N(x, 30)) < 1e-20 for x in difference), (path.stem, difference)
 
@@ -52,3 +53,15 @@ def test_the_cylinder_touches_the_track() -> None:
     assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
     d = contact.point - centre
     assert sp.simplify(d.dot(d) - r**2) == 0
+
+
+def test_the_rolling_disk_touches_the_turning_disk() -> None:
+    """C is on the turning disk's rim (radius R about the origin) and r from the rolling
+    disk's centre, which stays R + r from the origin, at the angle θ from the upward vertical."""
+    model = build_model(load_file(PROBLEMS / "contacts" / "disk-on-turning-disk.yaml"))
+    (contact,) = model.contacts
+    R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]
+    theta = model.symbols.coordinates["theta"]
+    centre = next(b for b in model.bodies if b.name == "disk").position
+    assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
+    assert sp.simplify(centre - (R + r) * sp.Matrix([-sp.sin(theta), sp.cos(theta), 0])) == sp.zeros(3, 1)

@@ -29,17 +29,19 @@ class OffEdge:
     contact it fails, and why (the edge and its span)."""
 
     at: dict
-    coordinate: str
-    value: sp.Expr  # the contact's coordinate there
+    coordinate: str  # what the span bounds: the contact's coordinate, or it less the turn of the body rolled on
+    value: sp.Expr  # its value there
     reason: str
+    named: str  # the contact's coordinate
 
 
 def outside(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> OffEdge | None:
     """Where ``at`` is outside some contact's span (None: inside, or undecided)."""
     for c, value, measure in _measures(model, at):
         if sign_of(measure, model.decided_by) == 1:
-            return OffEdge(dict(at), c.coordinate.name, value, f"the contact point {c.name} would be off {c.body}'s {c.source.edge} "
-                           f"edge, which it stays on for {span_text(model, c)}")
+            reason = (f"the contact point {c.name} would be off {c.body}'s {c.source.edge} edge, which it stays "
+                      f"on for {span_text(model, c)}")
+            return OffEdge(dict(at), sp.sstr(model.readable(c.measured)), value, reason, c.coordinate.name)
     return None
 
 
@@ -77,13 +79,13 @@ def warnings(dropped: list[OffEdge]) -> list[str]:
 
 def held_for(model: Model, q: sp.Symbol) -> str:
     """Where the contacts measured by q hold ("" for none with a span)."""
-    return " and ".join(span_text(model, c) for c in model.contacts if c.span is not None and c.coordinate == q)
+    return " and ".join(span_text(model, c) for c in model.contacts if c.span is not None and c.measured.has(q))
 
 
 def span_text(model: Model, c) -> str:
     """a ≤ q ≤ b when the parameters order the ends, else "q between a and b"."""
     a, b = c.span
-    name = c.coordinate.name
+    name = sp.sstr(model.readable(c.measured))
     order = sign_of(tidy(b - a), model.decided_by)
     if isinstance(order, Undecided):
         return f"{name} between {sp.sstr(a)} and {sp.sstr(b)}"
@@ -92,11 +94,12 @@ def span_text(model: Model, c) -> str:
 
 
 def _measures(model: Model, at: Mapping[sp.Symbol, sp.Expr]):
-    """(contact, q₀, (q₀ − a)(q₀ − b)) for each contact with a span and a value in ``at``."""
+    """(contact, w₀, (w₀ − a)(w₀ − b)) for each contact with a span whose measure w (q, or
+    q − β on a turning body's edge) has a value at ``at``."""
     for c in model.contacts:
-        if c.span is None or c.coordinate not in at:
+        if c.span is None or not c.measured.free_symbols <= set(at):
             continue
-        value = sp.sympify(at[c.coordinate])
+        value = sp.sympify(c.measured.xreplace(dict(at)))
         a, b = c.span
         yield c, value, tidy(sp.expand((value - a) * (value - b)))
 
@@ -108,5 +111,5 @@ def require_on_edges(question, model: Model) -> None:
     at = {q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
     off = outside(model, at)
     if off is not None:
-        expr = next(e for name, e in about if name == off.coordinate)
-        raise UnsolvedError(f"{expr.loc}: no small oscillations about {off.coordinate} = {expr.text}: {off.reason}")
+        expr = next(e for name, e in about if name == off.named)
+        raise UnsolvedError(f"{expr.loc}: no small oscillations about {off.named} = {expr.text}: {off.reason}")

@@ -54,7 +54,9 @@ def rolling_steps(model: Model) -> list[st.Step]:
     out = []
     for c in model.contacts:
         source = c.source
-        on = "its string" if source.string else f"the {source.surface.kind.value}"
+        surface = source.surface
+        on = ("its string" if source.string else f"{surface.body}'s {surface.edge}" if surface.body
+              else f"the {surface.kind.value}")
         rest = (f"v_{c.name} equals the velocity of the surface's point at {c.name}" if c.moving_surface
                 else f"v_{c.name} = 0")
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
