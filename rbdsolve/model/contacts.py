@@ -38,6 +38,7 @@ import sympy as sp
 from rbdsolve.errors import InputError
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
+from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
@@ -107,37 +108,54 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     bodies = {b.name: b for b in problem.bodies}
     values = {names.parameters[k]: sp.Rational(v.numerator, v.denominator) for k, v in problem.values}
     placed, rollings = {}, []
-    for k, contact in enumerate(problem.contacts):
+    reverse = _reverse(names)
+    for contact in problem.contacts:
         body = bodies[contact.body]
+        if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
+            origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
+            placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact))
+            rollings.append(rolling)
+            continue
         under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
-        frame = _frame(contact, problem.contacts[k + 1:], under, names)
+        frame = _frame(contact, under, names)
         origin, angle, rolling = _contact(contact, body, names, values, frame, under)
-        reverse = _reverse(names)
         placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact),
                                     angle=_expr(angle, reverse, names, contact))
         rollings.append(rolling)
     return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
 
 
-def _frame(c: Contact, later: tuple[Contact, ...], surface_body: Body | None, names: Symbols) -> _Frame | None:
+def _frame(c: Contact, surface_body: Body | None, names: Symbols) -> _Frame | None:
     """The placement of the body contact ``c`` rolls on (None: a fixed or translating
-    line or circle). That body must be placed already: by ``at``/``angle``, or by an
-    earlier contact; two contacts between the same two bodies over-constrain them."""
+    line or circle), placed already by 'at'/'angle' or an earlier contact (the reader
+    checks the order)."""
     if c.surface.kind is not SurfaceKind.BODY:
         return None
-    for d in later:
-        if d.body == c.surface.body and d.surface.body == c.body:
-            raise InputError(f"contacts '{c.name}' and '{d.name}' both say how '{c.body}' and '{d.body}' roll on "
-                             "each other: that over-constrains them (one contact for the pair)", d.loc)
-        if d.body == c.surface.body:
-            raise InputError(f"contact '{c.name}' rolls on '{d.body}', which contact '{d.name}' places later: "
-                             f"list '{d.name}' first", c.surface.loc)
     if surface_body.orientation:
         raise InputError(f"contact '{c.name}': body '{surface_body.name}' turns in 3D ('orientation'); a contact "
                          "rolls on a body that moves in the plane of the scene", c.surface.loc)
     origin = names.vector(surface_body.at) if surface_body.at is not None else sp.zeros(3, 1)
     angle = names.scalar(surface_body.angle) if surface_body.angle is not None else sp.Integer(0)
     return _Frame(origin if origin.rows == 3 else origin.col_join(sp.zeros(1, 1)), angle)
+
+
+def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame | None) -> None:
+    """The contact's coordinate measures the body's motion relative to the surface; if
+    the surface itself moves with it, that relative motion is tied to the surface's (a
+    relation no contact imposes) and the body has no degree of freedom of its own."""
+    moves = s.point.xreplace({sigma: 0}).has(q) or (frame is not None and (frame.origin.has(q) or frame.angle.has(q)))
+    if moves:
+        what = f"'{c.surface.body}'" if c.surface.body else "the surface"
+        raise InputError(f"contact '{c.name}' is measured by '{c.coordinate}', which also moves {what} it rolls on: "
+                         f"that over-constrains the scene (the body would have no motion of its own on {what}); "
+                         "give the contact a coordinate of its own", c.loc)
+
+
+def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling]:
+    """A body on a string from a drum over a pulley (model/strings.py)."""
+    e = _geometry(c, drum, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
+    origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
+    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c)
 
 
 def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=None):
@@ -155,6 +173,7 @@ def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame
     sigma = sp.Dummy("sigma", real=True)
     surface = _surface(c, names, sigma, under)
     q = names.coordinates[c.coordinate]
+    _own_coordinate(c, q, surface, sigma, frame)
     # the coordinate relative to the body rolled on: a turn, or an angle round its rim, less β
     relative = q - frame.angle if frame is not None and not (
         isinstance(geometry, Curved) and c.measure is Measure.ALONG and surface.radius is None) else q

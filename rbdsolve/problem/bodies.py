@@ -168,7 +168,7 @@ def _refuse_placement(spec: Map, name: str, contact: str) -> None:
     """A body that rolls is placed by its contact: its position and angle follow."""
     for key in ("at", *MOTION_KEYS):
         if spec.get(key) is not None:
-            raise InputError(f"body '{name}' is placed by contact '{contact}' (rolling gives its position and "
+            raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
                              f"angle); remove '{key}'", spec.get(key).loc)
     if spec.get("parts") is not None:
         raise InputError(f"body '{name}' rolls (contact '{contact}'): give it one shape, not parts",

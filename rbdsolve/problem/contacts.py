@@ -5,8 +5,11 @@
       D: {body: cylinder, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
       E: {body: half, edge: curved, rolls_on: floor, angle: theta}
       S: {body: yoyo, string: {fixed_at: A, direction: [0, -1], radius: r}, along: y}
+      H: {body: block, hangs_from: {drum: cylinder, direction: [1, 0], over: P}}
 
-Each contact names one declared coordinate, as ``along`` (the contact point's travel:
+A body hanging on a string (``hangs_from``) from a drum, over a light pulley, names no
+coordinate: the string's inextensibility places it from the drum's motion. Each other
+contact names one declared coordinate, as ``along`` (the contact point's travel:
 a distance along a line, the angle round a circle from its lowest point inside or its
 top outside) or ``angle`` (the body's turn); the body gives neither ``at`` nor
 ``angle``: rolling places it (model/contacts.py). This module only reads and checks
@@ -21,7 +24,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Body, Contact, Measure, Surface, SurfaceKind
+from rbdsolve.problem.schema import Body, Contact, Measure, Pulley, Surface, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
@@ -52,15 +55,21 @@ class ContactReader:
             return ()
         table = expect_mapping(node, "contacts: name -> contact")
         named = {b.name: b for b in bodies}
-        return tuple(self.contact(self.reading.declare(key, "contact"), value, named) for key, value in table.entries)
+        contacts = tuple(self.contact(self.reading.declare(key, "contact"), value, named)
+                         for key, value in table.entries)
+        _check_order(contacts)
+        return contacts
 
     def contact(self, name: str, node: Node, bodies: dict[str, Body]) -> Contact:
         what = f"contact '{name}'"
         spec = expect_mapping(node, what)
-        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "along", "angle"), what)
-        if (spec.get("rolls_on") is None) == (spec.get("string") is None):
-            raise InputError(f"{what} needs either 'rolls_on' (a floor, a line or a circle) or 'string' "
-                             "(a string wound on the body)", spec.loc)
+        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "hangs_from", "along", "angle"), what)
+        if sum(spec.get(k) is not None for k in ("rolls_on", "string", "hangs_from")) != 1:
+            raise InputError(f"{what} needs one of 'rolls_on' (a floor, a line, a circle or a body's edge), "
+                             "'string' (a string wound on the body) or 'hangs_from' (the body hangs on a string "
+                             "from a drum, over a pulley)", spec.loc)
+        if spec.get("hangs_from") is not None:
+            return self.hanging(name, spec, bodies, what)
         body = _body(spec.get("body"), bodies)
         coordinate, measure = self.coordinate(spec, what)
         if spec.get("string") is not None:
@@ -72,6 +81,29 @@ class ContactReader:
             raise InputError(f"{what}: body '{body.name}' cannot roll on itself", spec.get("rolls_on").loc)
         return Contact(name, body.name, _edge(spec, body, string=False), surface, coordinate, measure, None,
                        False, spec.loc)
+
+    def hanging(self, name: str, spec: Map, bodies: dict[str, Body], what: str) -> Contact:
+        """``hangs_from: {drum: D, direction: [dx, dy], over: P, radius, edge, down, length}``."""
+        for key in ("along", "angle", "edge"):
+            if spec.get(key) is not None:
+                raise InputError(f"{what}: a hanging body has no '{key}': the string places it from the drum's "
+                                 "motion (the drum's own contact or coordinates)", spec.get(key).loc)
+        word = expect_scalar(spec.get("body"), "a body name")
+        if word.text not in bodies:
+            raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
+        hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, direction, over}")
+        check_keys(hang, ("drum", "direction", "over"), ("radius", "edge", "down", "length"), "a hanging string")
+        drum = _body(hang.get("drum"), bodies)
+        if drum.name == word.text:
+            raise InputError(f"{what}: body '{drum.name}' cannot hang from itself", hang.get("drum").loc)
+        radius = self.reading.optional_constant(hang.get("radius"), "the radius the string is wound at")
+        edge = _edge(hang, drum, string=radius is not None)
+        down = self.reading.axis(hang.get("down")) if hang.get("down") is not None else None
+        length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
+        pulley = Pulley(drum.name, edge, radius, self.place(hang.get("over"), hang.loc), self.direction(hang),
+                        down, length, hang.loc)
+        line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
+        return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
     def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
         """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
@@ -150,6 +182,22 @@ class ContactReader:
             raise InputError(f"expected side {' or '.join(choices)}, found {describe(node)}"
                              f"{did_you_mean(word, list(choices))}", node.loc)
         return word
+
+
+def _check_order(contacts: tuple[Contact, ...]) -> None:
+    """A body rolled on or hung from is placed before the contact that uses it (by
+    'at'/'angle', or by an earlier contact); two contacts between the same two bodies
+    over-constrain them."""
+    for k, c in enumerate(contacts):
+        used = c.pulley.drum if c.pulley is not None else c.surface.body
+        where = c.pulley.loc if c.pulley is not None else c.surface.loc
+        for d in contacts[k + 1:]:
+            if d.body == used and d.surface.body == c.body:
+                raise InputError(f"contacts '{c.name}' and '{d.name}' both say how '{c.body}' and '{d.body}' roll "
+                                 "on each other: that over-constrains them (one contact for the pair)", d.loc)
+            if d.body == used:
+                raise InputError(f"contact '{c.name}' uses '{used}', which contact '{d.name}' places later: "
+                                 f"list '{d.name}' first", where)
 
 
 def _unit_x(where) -> ex.Expr:

@@ -246,6 +246,23 @@ class Measure(Enum):
 
 
 @dataclass(frozen=True)
+class Pulley:
+    """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
+    centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
+    and hangs from there along ``down`` with the contact's body at its end, ``length``
+    below ``over`` at the reference configuration (model/strings.py)."""
+
+    drum: str
+    edge: str
+    radius: Expr | None
+    over: Expr
+    direction: Expr
+    down: Expr | None  # None: straight down, [0, −1]
+    length: Expr | None  # None: the straight part's length at the reference
+    loc: Location
+
+
+@dataclass(frozen=True)
 class Contact:
     """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
     coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
@@ -256,11 +273,12 @@ class Contact:
     body: str
     edge: str
     surface: Surface
-    coordinate: str
-    measure: Measure
+    coordinate: str | None  # None: a body hanging from a pulley (its place follows from the drum's)
+    measure: Measure | None
     radius: Expr | None  # a string's winding radius; None: the edge's own
     string: bool
     loc: Location
+    pulley: Pulley | None = None  # the body hangs on a string from a drum, over a pulley
 
 
 @dataclass(frozen=True)

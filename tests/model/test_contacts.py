@@ -29,7 +29,7 @@ def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> Non
     model = build_model(load_file(path))
     state = model.state
     rng = random.Random(20)
-    for contact in model.contacts:
+    for contact in (c for c in model.contacts if c.source.pulley is None):  # strings: tests/model/test_strings.py
         body = next(b for b in model.bodies if b.name == contact.body)
         origin = model.symbols.vector(next(b for b in model.problem.bodies if b.name == body.name).at)
         omega = body.angular_velocity(state)
