@@ -41,6 +41,7 @@ from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.contacts import NOT_PLANAR
 from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
 
 _Z = sp.Matrix([0, 0, 1])
@@ -164,7 +165,9 @@ def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=Non
     try:
         return edge(part.shape, edge_name, dims, names.axis(part.axis) if part.axis is not None else None, radius)
     except NotInPlane as exc:
-        raise InputError(f"contact '{c.name}': {exc}", c.loc) from None
+        raise InputError(f"contact '{c.name}': {exc}; a contact rolls in the xy-plane of the scene (rolling in 3D "
+                         "is not integrable: eom, equilibria and modes cannot take it; steady_motion's "
+                         "'rolling_at' states it for a steady motion)", c.loc) from None
 
 
 def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame | None, under: Body | None):
@@ -192,6 +195,8 @@ def _surface(c: Contact, names: Symbols, sigma: sp.Symbol, under: Body | None) -
     moving = bool(base.free_symbols & set(names.state.q)) or base.has(t)
     if s.kind is SurfaceKind.LINE:
         d = names.vector(s.direction)
+        if d.rows == 3 and sp.simplify(d[2]) != 0:
+            raise InputError(f"contact '{c.name}': " + NOT_PLANAR.format(what="a line out of the xy-plane"), s.loc)
         return _line(base, d / sp.sqrt(d.dot(d)), s.inside, sigma, moving)
     return _circle(base, names.scalar(s.radius), s.inside, sigma, moving)
 

@@ -30,6 +30,13 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
 
 
+# a contact is planar: its rolling condition then integrates; in 3D it does not
+NOT_PLANAR = ("{what} is rolling in 3D, which a contact does not describe: a contact rolls in the xy-plane of "
+              "the scene, where its rolling condition integrates; rolling on a plane in 3D is not integrable "
+              "(non-holonomic), so eom, equilibria and modes cannot take it (they need independent coordinates); "
+              "state it for a steady motion with steady_motion's 'rolling_at'")
+
+
 def contact_bodies(node: Node | None) -> dict[str, str]:
     """body name -> contact name, read before the bodies so they know they are placed."""
     if node is None or (isinstance(node, Scalar) and node.null):
@@ -127,6 +134,8 @@ class ContactReader:
         spec = expect_mapping(node, "a surface: floor, {line: {...}}, {circle: {...}} or {body: B, edge: E}")
         if spec.get("body") is not None:
             return _body_surface(spec, bodies)
+        if len(spec.entries) == 1 and spec.entries[0][0].text in ("plane", "sphere"):
+            raise InputError(NOT_PLANAR.format(what=f"rolling on a {spec.entries[0][0].text}"), spec.entries[0][0].loc)
         if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
             found = ", ".join(k.text for k, _ in spec.entries) or "nothing"
             raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}}, {{circle: {{centre, radius, "
