@@ -221,7 +221,7 @@ def _body_edge(c: Contact, body: Body, names: Symbols, sigma) -> _Surface:
     e = _geometry(c, body, names, s.edge)
     if isinstance(e, Flat):
         return _line(e.point, -_turn(e.outward), False, sigma, True)
-    if e.limits:
+    if e.arc is not None:
         raise InputError(f"contact '{c.name}': rolling on a curved edge of limited extent ('{s.edge}' of "
                          f"'{s.body}') is not supported; roll on a whole rim or a flat edge", s.loc)
     return _circle(e.centre, e.radius, s.inside, sigma, True)
@@ -343,23 +343,22 @@ def _rate(x: sp.Expr) -> sp.Expr:
 
 
 def _arc_span(e: Curved, s: _Surface, angle: sp.Expr, travel: dict, q) -> tuple[sp.Expr, sp.Expr] | None:
-    """Where C stays on an arc with limits: the edge's point facing the surface, in body
-    axes, is d(q) = R(φ)ᵀ(−n(σ)); it turns at a constant rate κ relative to the body
-    (φ and σ are linear in q), d(q) = R(κ q) d₀. With δ_a the angle from a limit a to d₀
-    (|δ_a| ≤ π/2, C on the arc at the reference), d·a = cos(κ q + δ_a) ≥ 0 for
-    −π/2 − δ_a ≤ κ q ≤ π/2 − δ_a; the span is where every limit allows (the piece
-    through q = 0, the way the body rocks there). None: a whole circle."""
-    if not e.limits:
+    """Where C stays on an arc (middle direction u, half angle β): the edge's point facing
+    the surface, in body axes, is d(q) = R(φ)ᵀ(−n(σ)); it turns at a constant rate κ
+    relative to the body (φ and σ are linear in q), d(q) = R(κ q) d₀. With δ the angle
+    from u to d₀ (|δ| ≤ β, C on the arc at the reference), d is on the arc while
+    −β ≤ κ q + δ ≤ β: the span is q between (−β − δ)/κ and (β − δ)/κ, the piece
+    through q = 0 (the way the body rocks there). None: a whole circle."""
+    if e.arc is None:
         return None
+    middle, half = e.arc
     facing = (sp.rot_axis3(angle) * -s.normal.subs(travel)).applyfunc(sp.simplify)
     d0 = facing.subs(q, 0).applyfunc(sp.simplify)
     kappa = sp.simplify(_turn(d0).dot(facing.diff(q).subs(q, 0)))
     if kappa == 0:
         return None
-    deltas = [sp.atan2(sp.simplify(a.cross(d0)[2]), sp.simplify(a.dot(d0))) for a in e.limits]
-    low = sp.Max(*[-sp.pi / 2 - d for d in deltas]) if len(deltas) > 1 else -sp.pi / 2 - deltas[0]
-    high = sp.Min(*[sp.pi / 2 - d for d in deltas]) if len(deltas) > 1 else sp.pi / 2 - deltas[0]
-    return (sp.simplify(low / kappa), sp.simplify(high / kappa))
+    delta = sp.atan2(sp.simplify(middle.cross(d0)[2]), sp.simplify(middle.dot(d0)))
+    return (sp.simplify((-half - delta) / kappa), sp.simplify((half - delta) / kappa))
 
 
 def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:
@@ -395,8 +394,9 @@ def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
     """At the reference configuration (angle 0) the edge's point facing the surface,
     −n in body axes, must lie on its arc."""
     facing = -s.normal.subs(sigma, 0)
-    for limit in e.limits:
-        if sp.simplify(facing.dot(limit)).is_negative:
+    if e.arc is not None:
+        middle, half = e.arc
+        if sp.simplify(facing.dot(middle) - sp.cos(half)).is_negative:
             raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the surface at the reference "
                              f"configuration ({c.coordinate} = 0): its {c.edge} edge faces away from it; turn the "
                              "shape with 'axis:' (for instance 'axis: -y', the curved side down)", c.loc)

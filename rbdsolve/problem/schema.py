@@ -33,6 +33,7 @@ class Shape(Enum):
     HALF_DISK = "half_disk"
     HALF_RING = "half_ring"
     QUARTER_DISK = "quarter_disk"
+    CYLINDER_SEGMENT = "cylinder_segment"
     CONE = "cone"
     BOX = "box"
     PLATE = "plate"
@@ -64,6 +65,7 @@ _DIMENSIONS = {
     Shape.HALF_DISK: ("radius",),
     Shape.HALF_RING: ("radius",),
     Shape.QUARTER_DISK: ("radius",),
+    Shape.CYLINDER_SEGMENT: ("radius", "height", "half_angle"),
     Shape.CONE: ("radius", "height"),
     Shape.BOX: ("width", "depth", "height"),
     Shape.PLATE: ("width", "height"),
@@ -76,6 +78,7 @@ _EDGES = {
     Shape.TUBE: _ROUND, Shape.SPHERICAL_SHELL: _ROUND, Shape.SPHERE: _ROUND,
     Shape.HEMISPHERE: ("curved", "flat"), Shape.HEMISPHERICAL_SHELL: ("curved",),
     Shape.HALF_DISK: ("curved", "flat"), Shape.HALF_RING: ("curved",), Shape.QUARTER_DISK: ("curved",),
+    Shape.CYLINDER_SEGMENT: ("curved", "flat"),
     Shape.PLATE: ("bottom", "top"), Shape.ROD: ("bottom", "top"),
 }  # fmt: skip
 

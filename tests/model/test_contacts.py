@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file
+from rbdsolve.problem import load_file, load_text
 
 from conftest import PROBLEMS
 
@@ -65,3 +65,42 @@ def test_the_rolling_disk_touches_the_turning_disk() -> None:
     centre = next(b for b in model.bodies if b.name == "disk").position
     assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
     assert sp.simplify(centre - (R + r) * sp.Matrix([-sp.sin(theta), sp.cos(theta), 0])) == sp.zeros(3, 1)
+
+
+def test_a_cylinder_segment_rocks_at_the_hand_frequency() -> None:
+    """A log cut flat (a cylinder segment, arc 2α, curved side down) rocking on the floor:
+    its centre O stays r above the floor and G is ȳ from O towards the arc, so V = m g (r − ȳ cos θ);
+    C is the instantaneous centre, T = ½ (J_G + m (r − ȳ)²) θ̇² at θ = 0, so by hand
+    ω² = g ȳ/(k_G² + (r − ȳ)²). ȳ and k_G² = J_G/m are integrated here by sympy over the
+    cross-section, not taken from the shape library."""
+    from rbdsolve.model.energy import mass_matrix, potential_energy
+    from rbdsolve.model.energy import hessian
+
+    text = """
+parameters: {m: mass, r: radius, h: length, g: gravity}
+values: {r: 1, h: 2}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  trunk: {shape: cylinder_segment, mass: m, radius: r, height: h, half_angle: pi/3, axis: -y}
+contacts:
+  C: {body: trunk, edge: curved, rolls_on: floor, angle: theta}
+questions: [modes]
+"""
+    model = build_model(load_text(text))
+    (theta,) = model.q
+    rho, psi = sp.symbols("rho psi", real=True)
+    alpha = sp.pi / 3
+
+    def over_section(f):  # r = 1, polar from O with ψ from the symmetry axis
+        return sp.integrate(sp.integrate(f * rho, (rho, sp.cos(alpha) / sp.cos(psi), 1)), (psi, -alpha, alpha))
+
+    area = over_section(sp.Integer(1))
+    ybar = over_section(rho * sp.cos(psi)) / area
+    k_G2 = over_section(rho**2) / area - ybar**2  # about the axis through G, along the log
+    g, m = model.symbols.parameters["g"], model.symbols.parameters["m"]
+    K = hessian(potential_energy(model).total, model.q).xreplace({theta: 0})[0, 0]
+    M = mass_matrix(model).xreplace({theta: 0})[0, 0]
+    omega2 = (K / M).xreplace(dict(model.values))
+    expected = g * ybar / (k_G2 + (1 - ybar) ** 2)
+    assert abs(sp.N((omega2 - expected).subs(g, 1), 30)) < 1e-25

@@ -353,6 +353,9 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
     if shape in (Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE):
         r, h = d.get("outer_radius", d.get("radius")), d["height"]
         return _circle(r, -h / 2) + _circle(r, h / 2)
+    if shape is Shape.CYLINDER_SEGMENT:  # the arc within α of +y (its ends make the chord), at both ends
+        r, h, a = d["radius"], d["height"], d["half_angle"]
+        return [(x, y, z) for z in (-h / 2, h / 2) for x, y, _ in _arc(r, math.pi / 2 - a, math.pi / 2 + a)]
     if shape in (Shape.HALF_DISK, Shape.QUARTER_DISK):  # the centre O and the arc
         return [(0.0, 0.0, 0.0), *_arc(d["radius"], 0.0, math.pi if shape is Shape.HALF_DISK else math.pi / 2)]
     if shape in (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL):
