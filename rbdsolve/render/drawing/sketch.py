@@ -252,7 +252,8 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
                   ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
                   tuple(_links(model, {p.name: p.at for p in points})),
-                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface))
+                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface)
+                  + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None))
 
 
 class _Values:
@@ -439,6 +440,13 @@ def _ground(contact, model: Model, values: _Values, reach: float) -> Ground:
         return Ground(_xy(base), at, normal, string=True)
     half = 1.5 * reach
     return Ground((at[0] - half * d[0], at[1] - half * d[1]), (at[0] + half * d[0], at[1] + half * d[1]), normal)
+
+
+def _hanging_part(contact, model: Model, values: _Values) -> Ground:
+    """A string over a pulley: its hanging part, from the pulley's point to the body."""
+    body = next(b for b in model.bodies if b.name == contact.body)
+    over = _xy(values.vector(model.symbols.vector(contact.source.pulley.over)))
+    return Ground(over, _xy(values.vector(body.position)), (0.0, 0.0), string=True)
 
 
 def _springs(model: Model, values: _Values) -> Iterator[Zigzag]:

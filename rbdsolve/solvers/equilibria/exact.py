@@ -291,7 +291,7 @@ def listing(model: Model) -> Listing:
     its edge (solvers/shared/contact_span.py) are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
     solutions, off = contact_span.split(model, solutions)
-    warnings = [*warnings, *contact_span.warnings(off)]
+    warnings = [*warnings, *contact_span.warnings(off), *contact_span.undecided(model, solutions)]
     free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
     kept: list[Listed] = []
     apart: list[tuple[dict, Singularity]] = []

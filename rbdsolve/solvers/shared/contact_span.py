@@ -7,7 +7,7 @@ it (a half disk upside down, θ = π) is the formula's, not the body's: the cont
 would be off the edge, the body resting on a corner or its flat side, and the scene's
 energies no longer describe it. Both routes drop such solutions with the reason
 (``outside``); where the parameters leave the sign open, the equilibrium is kept with
-its condition (``conditions``).
+a warning saying what must hold (``undecided``).
 """
 
 from __future__ import annotations
@@ -45,11 +45,17 @@ def outside(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> OffEdge | None:
     return None
 
 
-def conditions(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[str, ...]:
-    """The contacts' spans the parameters leave undecided at ``at``, as text."""
-    return tuple(f"{c.name} on {c.body}'s {c.source.edge} edge only while {span_text(model, c)}"
-                 for c, _, measure in _measures(model, at)
-                 if isinstance(sign_of(measure, model.decided_by), Undecided))
+def undecided(model: Model, solutions) -> list[str]:
+    """For solutions kept where the parameters leave a contact's span open (the
+    equilibrium's place depends on them), what must hold for the contact to exist there."""
+    lines = []
+    for sol in solutions:
+        for c, value, measure in _measures(model, sol):
+            if isinstance(sign_of(measure, model.decided_by), Undecided):
+                lines.append(f"{sp.sstr(model.readable(c.measured))} = {sp.sstr(value)} is an equilibrium only while "
+                             f"the contact point {c.name} is on {c.body}'s {c.source.edge} edge, "
+                             f"{span_text(model, c)}: the parameters leave that open")
+    return lines
 
 
 def split(model: Model, solutions) -> tuple[list, list[OffEdge]]:

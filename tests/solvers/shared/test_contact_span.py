@@ -96,3 +96,20 @@ def test_modes_about_a_point_off_the_edge_are_refused_on_both_routes() -> None:
         report = solve_problem(model, Options(route=route))
         (result,) = report.solutions
         assert result.error is not None and "off half's curved edge" in result.error, route
+
+
+def test_where_the_parameters_leave_the_span_open_the_equilibrium_is_kept_with_its_condition() -> None:
+    """A cylinder segment of symbolic half angle α rocking on the floor: its arc spans
+    |θ| ≤ α (by hand: the arc is the directions within α of straight down, and turning by θ
+    moves the contact's direction by θ), so θ = π is on the arc only for α = π (a whole
+    cylinder): kept, with that condition said."""
+    from rbdsolve.solvers.equilibria.exact import listing
+
+    text = ("parameters: {m: mass, r: radius, h: length, alpha: angle, g: gravity}\ncoordinates: [q]\n"
+            "gravity: [0, -g]\nquestions: [equilibria]\nbodies:\n  trunk: {shape: cylinder_segment, mass: m, "
+            "radius: r, height: h, half_angle: alpha, axis: -y}\n"
+            "contacts:\n  C: {body: trunk, edge: curved, rolls_on: floor, angle: q}\n")
+    model = build_model(load_text(text))
+    listed = listing(model)
+    assert sorted(x.at[model.q[0]] for x in listed.equilibria) == [0, sp.pi]
+    assert any("q = pi is an equilibrium only while" in w and "-alpha <= q <= alpha" in w for w in listed.warnings)
