@@ -85,3 +85,24 @@ def test_a_rolling_coordinate_with_a_periodic_potential_is_solved_completely_and
     assert sorted(s[theta] for s in solutions) == [0, sp.pi]
     assert not any("may miss solutions" in w for w in warnings)
     assert any("repeats at theta₀ + 2kπ" in w for w in warnings)
+
+
+def test_a_spring_of_zero_length_at_an_equilibrium_is_no_internal_error() -> None:
+    """A particle on a circle of radius a tied by a spring to the point (a, 0) of it (the
+    fuzzer's scene): V = ½ k |a(cos θ − 1, sin θ)|² = k a² (1 − cos θ), so by hand θ = 0 is
+    stable (the spring's length is zero there, where |r| is not differentiable) and π
+    unstable."""
+    text = """
+parameters: {m: mass, k: stiffness, a: offset}
+coordinates: [theta]
+points:
+  A: [a, 0]
+  P0: a * [cos(theta), sin(theta)]
+bodies: {b0: {shape: particle, mass: m, at: P0}}
+springs: {s: {stiffness: k, between: [P0, A]}}
+questions: [equilibria]
+"""
+    (solution,) = solve_problem(build_model(load_text(text))).solutions
+    assert solution.error is None, solution.error
+    got = {sp.sympify(e.at["theta"]): e.stability.value for e in solution.answers.equilibria}
+    assert got == {sp.Integer(0): "stable", sp.pi: "unstable"}
