@@ -39,8 +39,10 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
+from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.contacts import NOT_PLANAR
 from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
 
 _Z = sp.Matrix([0, 0, 1])
@@ -61,6 +63,9 @@ class Rolling:
     integrated: sp.Expr
     moving_surface: bool
     source: Contact
+    span: tuple[sp.Expr, sp.Expr] | None = None  # C stays on the body's edge while `measured` is between these
+    coordinate: sp.Symbol | None = None  # the contact's coordinate q
+    measured: sp.Expr | None = None  # what the span bounds: q, or q − β on a turning body's edge
     normal: sp.Matrix | None = None  # the surface's unit normal at C, towards the body (for its push N)
 
 
@@ -74,6 +79,31 @@ class _Surface:
     moving: bool
 
 
+@dataclass(frozen=True)
+class _Placing:
+    """How a contact's coordinate enters: the placement is derived in a stand-in ``w``
+    (the coordinate relative to the surface), then w = ``relative`` (q, or q − β on a
+    turning body's edge) and the ``frame`` carries it into the scene."""
+
+    w: sp.Symbol
+    relative: sp.Expr
+    frame: "_Frame | None"
+    q: sp.Symbol
+
+
+@dataclass(frozen=True)
+class _Frame:
+    """The body a contact rolls on: its origin O_B(q) and angle β(q). Relative to it the
+    surface is fixed, so the rolling body is placed in its axes as on a fixed surface and
+    carried along: O = O_B + R(β) O_rel, φ = β + φ_rel."""
+
+    origin: sp.Matrix
+    angle: sp.Expr
+
+    def carry(self, v: sp.Matrix) -> sp.Matrix:
+        return self.origin + sp.rot_axis3(-self.angle) * v
+
+
 def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rolling, ...]]:
     """The problem with each rolling body placed (``at``, ``angle``), and the contacts."""
     if not problem.contacts:
@@ -81,45 +111,122 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     bodies = {b.name: b for b in problem.bodies}
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     placed, rollings = {}, []
+    reverse = _reverse(names)
     for contact in problem.contacts:
         body = bodies[contact.body]
-        origin, angle, rolling = _contact(contact, body, names, values)
-        reverse = _reverse(names)
+        if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
+            origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
+            placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact))
+            rollings.append(rolling)
+            continue
+        under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
+        frame = _frame(contact, under, names)
+        origin, angle, rolling = _contact(contact, body, names, values, frame, under)
         placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact),
                                     angle=_expr(angle, reverse, names, contact))
         rollings.append(rolling)
     return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
 
 
-def _contact(c: Contact, body: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, sp.Expr, Rolling]:
+def _frame(c: Contact, surface_body: Body | None, names: Symbols) -> _Frame | None:
+    """The placement of the body contact ``c`` rolls on (None: a fixed or translating
+    line or circle), placed already by 'at'/'angle' or an earlier contact (the reader
+    checks the order)."""
+    if c.surface.kind is not SurfaceKind.BODY:
+        return None
+    if surface_body.orientation:
+        raise InputError(f"contact '{c.name}': body '{surface_body.name}' turns in 3D ('orientation'); a contact "
+                         "rolls on a body that moves in the plane of the scene", c.surface.loc)
+    origin = names.vector(surface_body.at) if surface_body.at is not None else sp.zeros(3, 1)
+    angle = names.scalar(surface_body.angle) if surface_body.angle is not None else sp.Integer(0)
+    return _Frame(origin if origin.rows == 3 else origin.col_join(sp.zeros(1, 1)), angle)
+
+
+def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame | None) -> None:
+    """The contact's coordinate measures the body's motion relative to the surface; if
+    the surface itself moves with it, that relative motion is tied to the surface's (a
+    relation no contact imposes) and the body has no degree of freedom of its own."""
+    moves = s.point.xreplace({sigma: 0}).has(q) or (frame is not None and (frame.origin.has(q) or frame.angle.has(q)))
+    if moves:
+        what = f"'{c.surface.body}'" if c.surface.body else "the surface"
+        raise InputError(f"contact '{c.name}' is measured by '{c.coordinate}', which also moves {what} it rolls on: "
+                         f"that over-constrains the scene (the body would have no motion of its own on {what}); "
+                         "give the contact a coordinate of its own", c.loc)
+
+
+def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling]:
+    """A body on a string from a drum over a pulley (model/strings.py)."""
+    e = _geometry(c, drum, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
+    origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
+    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c)
+
+
+def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=None):
     part = body.parts[0]
     dims = {k: names.scalar(v) for k, v in part.dimensions}
     try:
-        geometry = edge(part.shape, c.edge, dims, names.axis(part.axis) if part.axis is not None else None,
-                        names.scalar(c.radius) if c.radius is not None else None)
+        return edge(part.shape, edge_name, dims, names.axis(part.axis) if part.axis is not None else None, radius)
     except NotInPlane as exc:
-        raise InputError(f"contact '{c.name}': {exc}", c.loc) from None
+        raise InputError(f"contact '{c.name}': {exc}; a contact rolls in the xy-plane of the scene (rolling in 3D "
+                         "is not integrable: eom, equilibria and modes cannot take it; steady_motion's "
+                         "'rolling_at' states it for a steady motion)", c.loc) from None
+
+
+def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame | None, under: Body | None):
+    """(origin, angle, Rolling) of the body placed by contact ``c``."""
+    geometry = _geometry(c, body, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     sigma = sp.Dummy("sigma", real=True)
-    surface = _surface(c, names, sigma)
+    surface = _surface(c, names, sigma, under)
     q = names.coordinates[c.coordinate]
+    _own_coordinate(c, q, surface, sigma, frame)
+    # the coordinate relative to the body rolled on: a turn, or an angle round its rim, less β
+    relative = q - frame.angle if frame is not None and not (
+        isinstance(geometry, Curved) and c.measure is Measure.ALONG and surface.radius is None) else q
+    how = _Placing(sp.Dummy("w", real=True), relative, frame, q)
     if isinstance(geometry, Flat):
-        return _flat(c, geometry, surface, sigma, q, names)
-    return _curved(c, geometry, surface, sigma, q, names, values)
+        return _flat(c, geometry, surface, sigma, how, names)
+    return _curved(c, geometry, surface, sigma, how, names, values)
 
 
-def _surface(c: Contact, names: Symbols, sigma: sp.Symbol) -> _Surface:
+def _surface(c: Contact, names: Symbols, sigma: sp.Symbol, under: Body | None) -> _Surface:
+    """The surface as C(σ), its normal and tangent; a body's edge in that body's axes."""
     s = c.surface
+    if s.kind is SurfaceKind.BODY:
+        return _body_edge(c, under, names, sigma)
     base = names.vector(s.point)
     moving = bool(base.free_symbols & set(names.state.q)) or base.has(t)
     if s.kind is SurfaceKind.LINE:
         d = names.vector(s.direction)
-        tangent = (d / sp.sqrt(d.dot(d))).applyfunc(lambda x: sp.radsimp(sp.trigsimp(x)))
-        normal = _turn(tangent) * (-1 if s.inside else 1)
-        return _Surface(base + sigma * tangent, normal, tangent, None, False, moving)
-    u0 = sp.Matrix([0, -1, 0]) if s.inside else sp.Matrix([0, 1, 0])
+        if d.rows == 3 and sp.simplify(d[2]) != 0:
+            raise InputError(f"contact '{c.name}': " + NOT_PLANAR.format(what="a line out of the xy-plane"), s.loc)
+        return _line(base, d / sp.sqrt(d.dot(d)), s.inside, sigma, moving)
+    return _circle(base, names.scalar(s.radius), s.inside, sigma, moving)
+
+
+def _line(base, tangent, right: bool, sigma, moving: bool) -> _Surface:
+    tangent = tangent.applyfunc(lambda x: sp.radsimp(sp.trigsimp(x)))
+    normal = _turn(tangent) * (-1 if right else 1)
+    return _Surface(base + sigma * tangent, normal, tangent, None, False, moving)
+
+
+def _circle(base, R, inside: bool, sigma, moving: bool) -> _Surface:
+    """σ counterclockwise from the lowest point inside, the top outside."""
+    u0 = sp.Matrix([0, -1, 0]) if inside else sp.Matrix([0, 1, 0])
     u = sp.rot_axis3(-sigma) * u0
-    R = names.scalar(s.radius)
-    return _Surface(base + R * u, -u if s.inside else u, _turn(u), R, s.inside, moving)
+    return _Surface(base + R * u, -u if inside else u, _turn(u), R, inside, moving)
+
+
+def _body_edge(c: Contact, body: Body, names: Symbols, sigma) -> _Surface:
+    """Another body's edge in its own axes: a rim is a circle, a flat edge a line along
+    −e_z × n (so that the body rolling on it is on its outer side)."""
+    s = c.surface
+    e = _geometry(c, body, names, s.edge)
+    if isinstance(e, Flat):
+        return _line(e.point, -_turn(e.outward), False, sigma, True)
+    if e.arc is not None:
+        raise InputError(f"contact '{c.name}': rolling on a curved edge of limited extent ('{s.edge}' of "
+                         f"'{s.body}') is not supported; roll on a whole rim or a flat edge", s.loc)
+    return _circle(e.centre, e.radius, s.inside, sigma, True)
 
 
 def _turn(v: sp.Matrix) -> sp.Matrix:
@@ -127,7 +234,7 @@ def _turn(v: sp.Matrix) -> sp.Matrix:
     return _Z.cross(v)
 
 
-def _curved(c: Contact, e: Curved, s: _Surface, sigma, q, names: Symbols, values: dict):
+def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Symbols, values: dict):
     """Placement and rolling of a curved edge (see the module docstring)."""
     rho = e.radius
     _check_fits(c, rho, s, values)
@@ -137,17 +244,19 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, q, names: Symbols, values
     origin = s.point + rho * s.normal - R * e.centre
     a, b = _rates(origin, s.point, s.tangent, phi, {sigma: 1, phi: 0}, {sigma: 0, phi: 1})
     ratio = _constant(c, sp.simplify(-a / b), (sigma, phi))  # φ̇ = ratio σ̇
+    w = how.w
     if c.measure is Measure.ALONG:
-        at = {sigma: q, phi: ratio * q}
-        dependent, independent, coefficient = _angle_name(c), q, (b, a)
+        at = {sigma: w, phi: ratio * w}
+        dependent, coefficient = _angle_name(c), (b, a)
     else:
-        at = {phi: q, sigma: q / ratio}
-        dependent, independent, coefficient = _travel_name(c, s), q, (a, b)
-    return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, independent, coefficient,
-                   names, s.moving, s.normal.subs(sigma, at[sigma]))
+        at = {phi: w, sigma: w / ratio}
+        dependent, coefficient = _travel_name(c, s), (a, b)
+    span = _arc_span(e, s, at[phi], {sigma: at[sigma]}, w)
+    return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, coefficient,
+                   names, s.moving, how, span, s.normal.subs(sigma, at[sigma]))
 
 
-def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
+def _flat(c: Contact, e: Flat, s: _Surface, sigma, how: _Placing, names: Symbols):
     """A flat edge on a circle: φ = σ, and the contact's place λ along the edge."""
     if s.radius is None:
         raise InputError(f"contact '{c.name}': a flat edge on a straight line does not roll (it slides or "
@@ -165,10 +274,11 @@ def _flat(c: Contact, e: Flat, s: _Surface, sigma, q, names: Symbols):
     tangent = s.tangent.subs(sigma, phi)
     a, b = _rates(origin, point, tangent, phi, {phi: 1, lam: 0}, {phi: 0, lam: 1})
     ratio = _constant(c, sp.simplify(-a / b), (phi, lam))  # λ̇ = ratio φ̇
-    at = {phi: q, lam: ratio * q}
+    at = {phi: how.w, lam: ratio * how.w}
     dependent = user_function(f"s_{c.name}")(t)
-    return _result(c, origin, at, phi, point.subs(phi, q), dependent, q, (b, a), names, s.moving,
-                   s.normal.subs(sigma, q))
+    span = (-e.half_length / ratio, e.half_length / ratio)  # |λ| ≤ half length, λ = ratio·w
+    return _result(c, origin, at, phi, point.subs(phi, how.w), dependent, (b, a), names, s.moving, how, span,
+                   s.normal.subs(sigma, how.w))
 
 
 def _rates(origin, point, tangent, phi, first: dict, second: dict) -> tuple[sp.Expr, sp.Expr]:
@@ -190,25 +300,79 @@ def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
     return ratio
 
 
-def _result(c, origin, at, phi, point, dependent, independent, coefficient, names, moving, normal=None):
+def _result(c, origin, at, phi, point, dependent, coefficient, names, moving, how: _Placing, span=None,
+            normal=None):
     """The body's origin and angle in the coordinate, and the Rolling record: the
-    relation coefficient[0]·ḋ = −coefficient[1]·q̇, integrated from the reference."""
-    placed = origin.subs(at).applyfunc(sp.simplify)
-    angle = sp.sympify(at[phi])
-    point = point.applyfunc(sp.simplify)
-    q_t = names.state.to_time(independent)
-    lhs = sp.factor(coefficient[0]) * sp.Derivative(dependent, t)
-    rhs = _negated(sp.factor(coefficient[1]), sp.Derivative(q_t, t))
-    num, den = sp.fraction(sp.factor(coefficient[1] / coefficient[0]))
-    integrated = (-sp.Mul(num, q_t, sp.Pow(den, -1), evaluate=False) if isinstance(num, sp.Add)
-                  else -num * q_t / den)
-    normal = normal.applyfunc(sp.simplify) if normal is not None else None
-    return placed, angle, Rolling(c.name, c.body, point, lhs, rhs, dependent, integrated, moving, c, normal)
+    relation coefficient[0]·ḋ = −coefficient[1]·ẇ between the rates relative to the
+    surface, integrated from the reference, the span of w where C stays on the edge, and
+    the surface's unit normal at C (towards the body: the direction of its push N)."""
+    w, frame = how.w, how.frame
+    placed = origin.subs(at).xreplace({w: how.relative})
+    angle = sp.sympify(at[phi]).xreplace({w: how.relative})
+    point = point.xreplace({w: how.relative})
+    normal = normal.xreplace({w: how.relative}) if normal is not None else None
+    if frame is not None:
+        placed, point, angle = frame.carry(placed), frame.carry(point), frame.angle + angle
+        normal = sp.rot_axis3(-frame.angle) * normal if normal is not None else None
+    turning = frame is not None and dependent.func.__name__.startswith("phi_")  # φ relative to the frame
+    offset = names.state.to_time(frame.angle) if turning else sp.Integer(0)
+    w_t = _difference(names.state.to_time(how.relative))
+    first, second = sp.factor(coefficient[0]), sp.factor(coefficient[1])
+    if first.could_extract_minus_sign():  # r φ̇ = …, not −r φ̇ = …
+        first, second = -first, -second
+    lhs = first * _rate(dependent - offset)
+    rhs = _negated(second, _rate(w_t))
+    num, den = sp.fraction(sp.factor(-second / first))
+    sign = -1 if num.could_extract_minus_sign() else 1  # −(R − r) θ/r, (R + r)(θ − ψ)/r
+    num = sign * num
+    integrated = (sign * sp.Mul(num, w_t, sp.Pow(den, -1), evaluate=False) if isinstance(num, sp.Add)
+                  or isinstance(w_t, sp.Add) else sign * num * w_t / den)
+    integrated = sp.Add(offset, integrated, evaluate=False) if offset != 0 else integrated
+    return (placed.applyfunc(sp.simplify), angle, Rolling(
+        c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, moving or frame is not None,
+        c, span, how.q, how.relative, normal.applyfunc(sp.simplify) if normal is not None else None))
+
+
+def _difference(x: sp.Expr) -> sp.Expr:
+    """θ − ψ written in that order (the coordinate first, the turn of the body rolled on after)."""
+    if not isinstance(x, sp.Add):
+        return x
+    plus = [a for a in x.args if not a.could_extract_minus_sign()]
+    minus = [a for a in x.args if a.could_extract_minus_sign()]
+    return sp.Add(*plus, *minus, evaluate=False)
+
+
+def _rate(x: sp.Expr) -> sp.Expr:
+    """ẋ: a coordinate's Derivative, or the sum of them (φ̇ − ψ̇)."""
+    if not isinstance(x, sp.Add):
+        return sp.Derivative(x, t)
+    return _difference(sp.Add(*(sp.diff(a, t) for a in x.args)))
+
+
+def _arc_span(e: Curved, s: _Surface, angle: sp.Expr, travel: dict, q) -> tuple[sp.Expr, sp.Expr] | None:
+    """Where C stays on an arc (middle direction u, half angle β): the edge's point facing
+    the surface, in body axes, is d(q) = R(φ)ᵀ(−n(σ)); it turns at a constant rate κ
+    relative to the body (φ and σ are linear in q), d(q) = R(κ q) d₀. With δ the angle
+    from u to d₀ (|δ| ≤ β, C on the arc at the reference), d is on the arc while
+    −β ≤ κ q + δ ≤ β: the span is q between (−β − δ)/κ and (β − δ)/κ, the piece
+    through q = 0 (the way the body rocks there). None: a whole circle."""
+    if e.arc is None:
+        return None
+    middle, half = e.arc
+    facing = (sp.rot_axis3(angle) * -s.normal.subs(travel)).applyfunc(sp.simplify)
+    d0 = facing.subs(q, 0).applyfunc(sp.simplify)
+    kappa = sp.simplify(_turn(d0).dot(facing.diff(q).subs(q, 0)))
+    if kappa == 0:
+        return None
+    delta = sp.atan2(sp.simplify(middle.cross(d0)[2]), sp.simplify(middle.dot(d0)))
+    return (sp.simplify((-half - delta) / kappa), sp.simplify((half - delta) / kappa))
 
 
 def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:
     """−c·rate as an exam writes it: −(R − r) θ̇, not (−R + r) θ̇."""
-    if not isinstance(coefficient, sp.Add):
+    if coefficient.could_extract_minus_sign():
+        return sp.Mul(-coefficient, rate, evaluate=False) if isinstance(rate, sp.Add) else -coefficient * rate
+    if not isinstance(coefficient, sp.Add) and not isinstance(rate, sp.Add):
         return -coefficient * rate
     return sp.Mul(-1, coefficient, rate, evaluate=False)
 
@@ -237,8 +401,9 @@ def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
     """At the reference configuration (angle 0) the edge's point facing the surface,
     −n in body axes, must lie on its arc."""
     facing = -s.normal.subs(sigma, 0)
-    for limit in e.limits:
-        if sp.simplify(facing.dot(limit)).is_negative:
+    if e.arc is not None:
+        middle, half = e.arc
+        if sp.simplify(facing.dot(middle) - sp.cos(half)).is_negative:
             raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the surface at the reference "
                              f"configuration ({c.coordinate} = 0): its {c.edge} edge faces away from it; turn the "
                              "shape with 'axis:' (for instance 'axis: -y', the curved side down)", c.loc)

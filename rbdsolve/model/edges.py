@@ -1,11 +1,16 @@
 """The boundary a contact needs: each shape's named edges, in body axes.
 
 A **curved** edge is an arc of a circle: its centre and radius, and the directions d
-(unit, from the centre) that lie on the arc, those with d·a ≥ 0 for each limit a (none:
-the whole circle). A half disk's arc is y ≥ 0 in its own axes (limit own y), a quarter
-disk's x, y ≥ 0, a hemisphere's z ≥ 0 (its section by any plane through its axis).
-A **flat** edge is a straight side: a point on it and its outward unit normal; a
-plate's ``bottom`` is y = −h/2 with normal −y, a rod's its own line (no thickness).
+(unit, from the centre) that lie on the arc: those within the arc's half angle β of its
+middle direction u (None: the whole circle). A half disk's arc is y ≥ 0 in its own axes
+(u = y, β = π/2), a quarter disk's x, y ≥ 0 (u the diagonal, β = π/4), a hemisphere's
+z ≥ 0 (its section by any plane through its axis), a cylinder segment's the directions
+within its ``half_angle`` α of y (the segment y ≥ r cos α of the disk).
+A **flat** edge is a straight side: its midpoint, its outward unit normal and its half
+length; a plate's ``bottom`` is y = −h/2 with normal −y and half length w/2, a rod's its
+own line (no thickness, half length l/2), a half disk's or hemisphere's flat face the
+diameter (half length r). An arc's limits and a side's half length are the edge's
+extent: a contact is valid only while its point stays on it (model/contacts.py).
 The part's ``axis:`` turns them with the shape (Q, :func:`~rbdsolve.model.inertia.rotation_to`).
 """
 
@@ -20,22 +25,25 @@ from rbdsolve.problem.schema import Shape
 
 _X, _Y, _Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
 _ROUND_IN_PLANE = (Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE,
-                   Shape.HALF_DISK, Shape.HALF_RING, Shape.QUARTER_DISK)  # fmt: skip
+                   Shape.HALF_DISK, Shape.HALF_RING, Shape.QUARTER_DISK, Shape.CYLINDER_SEGMENT)  # fmt: skip
 _DOMES = (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL)
+_ARCS = {Shape.HALF_DISK: (_Y, sp.pi / 2), Shape.HALF_RING: (_Y, sp.pi / 2), Shape.CYLINDER_SEGMENT: (_Y, None),
+         Shape.QUARTER_DISK: ((_X + _Y) / sp.sqrt(2), sp.pi / 4)}  # (middle, half angle); domes: (z, π/2)
 
 
 @dataclass(frozen=True)
 class Curved:
     centre: sp.Matrix  # from the body's origin, body axes
     radius: sp.Expr
-    limits: tuple[sp.Matrix, ...]  # d on the arc iff d·a ≥ 0 for every a
+    arc: tuple[sp.Matrix, sp.Expr] | None  # (u, β): d on the arc iff the angle from u to d is at most β
     plane_normal: sp.Matrix | None  # the circle's plane (None: a sphere's, any plane through its centre)
 
 
 @dataclass(frozen=True)
 class Flat:
-    point: sp.Matrix  # on the edge, body axes
+    point: sp.Matrix  # the edge's midpoint, body axes
     outward: sp.Matrix  # unit normal out of the body
+    half_length: sp.Expr  # the edge spans point ± half_length along e_z × outward
 
 
 class NotInPlane(ValueError):
@@ -48,21 +56,26 @@ def edge(shape: Shape, name: str, dims: dict[str, sp.Expr], axis: sp.Matrix | No
     a string wound at its own radius about the shape's centre (edge ``axle``)."""
     Q = rotation_to(axis, OWN_AXIS.get(shape, _Z)) if axis is not None else sp.eye(3)
     if name == "axle":
-        return _in_plane(shape, Curved(sp.zeros(3, 1), radius, (), Q * _Z if shape in _ROUND_IN_PLANE else None))
+        return _in_plane(shape, Curved(sp.zeros(3, 1), radius, None, Q * _Z if shape in _ROUND_IN_PLANE else None))
     r = dims.get("outer_radius", dims.get("radius"))
     if name == "rim":
-        return _in_plane(shape, Curved(sp.zeros(3, 1), radius or r, (), None if shape in
+        return _in_plane(shape, Curved(sp.zeros(3, 1), radius or r, None, None if shape in
                                        (Shape.SPHERE, Shape.SPHERICAL_SHELL) else Q * _Z))
     if name == "curved":
-        limits = {Shape.HALF_DISK: (_Y,), Shape.HALF_RING: (_Y,), Shape.QUARTER_DISK: (_X, _Y)}.get(shape, (_Z,))
+        middle, half = _ARCS.get(shape, (_Z, sp.pi / 2))
+        half = dims["half_angle"] if shape is Shape.CYLINDER_SEGMENT else half
         plane = None if shape in _DOMES else Q * _Z
-        return _in_plane(shape, Curved(sp.zeros(3, 1), r, tuple(Q * a for a in limits), plane), Q)
+        return _in_plane(shape, Curved(sp.zeros(3, 1), r, (Q * middle, half), plane), Q)
+    if name == "flat" and shape is Shape.CYLINDER_SEGMENT:  # the chord y = r cos α, 2 r sin α long
+        alpha = dims["half_angle"]
+        return _in_plane(shape, Flat(Q * (r * sp.cos(alpha) * _Y), Q * -_Y, r * sp.sin(alpha)), Q)
     if name == "flat":  # the straight edge through the centre: a half disk's diameter, a hemisphere's face
         outward = -_Y if shape is Shape.HALF_DISK else -_Z
-        return _in_plane(shape, Flat(sp.zeros(3, 1), Q * outward), Q)
+        return _in_plane(shape, Flat(sp.zeros(3, 1), Q * outward, r), Q)
     sign = -1 if name == "bottom" else 1  # bottom / top of a plate or a rod
     half = dims["height"] / 2 if shape is Shape.PLATE else sp.Integer(0)
-    return Flat(Q * (sign * half * _Y), Q * (sign * _Y))
+    extent = dims["width"] / 2 if shape is Shape.PLATE else dims["length"] / 2
+    return Flat(Q * (sign * half * _Y), Q * (sign * _Y), extent)
 
 
 def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Curved | Flat:

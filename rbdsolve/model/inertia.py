@@ -28,7 +28,8 @@ from rbdsolve.problem.schema import Shape
 
 # The shape's own symmetry axis ("its axis"): what ``axis:`` in a problem file points.
 OWN_AXIS = {Shape.ROD: sp.Matrix([1, 0, 0]), Shape.HALF_DISK: sp.Matrix([0, 1, 0]),
-            Shape.HALF_RING: sp.Matrix([0, 1, 0]), Shape.QUARTER_DISK: sp.Matrix([1, 1, 0]) / sp.sqrt(2)}
+            Shape.HALF_RING: sp.Matrix([0, 1, 0]), Shape.QUARTER_DISK: sp.Matrix([1, 1, 0]) / sp.sqrt(2),
+            Shape.CYLINDER_SEGMENT: sp.Matrix([0, 1, 0])}
 _Z = sp.Matrix([0, 0, 1])
 
 
@@ -46,6 +47,8 @@ def own_properties(shape: Shape, m: sp.Expr, dims: dict[str, sp.Expr]) -> MassPr
     centre = sp.zeros(3, 1)
     if shape in _PART_SHAPES:
         return _part_shape(shape, m, dims["radius"])
+    if shape is Shape.CYLINDER_SEGMENT:
+        return _segment(m, dims["radius"], dims["height"], dims["half_angle"])
     if shape is Shape.HEMISPHERE:
         centre = sp.Matrix([0, 0, 3 * dims["radius"] / 8])
     elif shape is Shape.CONE:
@@ -85,6 +88,30 @@ def _part_shape(shape: Shape, m: sp.Expr, r: sp.Expr) -> MassProperties:
     else:  # hemispherical shell
         d, J_O = sp.Matrix([0, 0, r / 2]), sp.diag(*(3 * [2 * m * r**2 / 3]))
     return MassProperties(m, d, (J_O - parallel_axis(m, d)).applyfunc(_tidy_pi))
+
+
+def _segment(m: sp.Expr, r: sp.Expr, h: sp.Expr, alpha: sp.Expr) -> MassProperties:
+    """A solid cylinder segment: the part y ≥ r cos α of a cylinder of radius r and
+    length h (along z, centred on z = 0), the arc spanning 2α about the centre O (α = π/2:
+    a half cylinder). Over the cross-section, in polar coordinates from O with ψ from +y,
+    ρ from r cos α/cos ψ to r and ψ from −α to α:
+
+        A = r² (α − sin α cos α),           ∫ y dA = (2/3) r³ sin³α,
+        ∫ x² dA = (r⁴/4)(α − sin α cos α − (2/3) sin³α cos α),
+        ∫ (x² + y²) dA = (r⁴/2)(α − sin α cos³α − (1/3) sin³α cos α)
+
+    (∫ sec⁴ψ dψ = tan ψ + tan³ψ/3; checked against sympy's integration in
+    tests/model/test_shape_library.py). So G is ȳ = 2 r sin³α/(3(α − sin α cos α)) from O,
+    J_O = m diag(⟨y²⟩ + h²/12, ⟨x²⟩ + h²/12, ⟨x²⟩ + ⟨y²⟩) with ⟨·⟩ = ∫ · dA/A, and
+    J_G = J_O − m(|d|² 1 − d dᵀ)."""
+    s, c = sp.sin(alpha), sp.cos(alpha)
+    area = alpha - s * c  # A/r²
+    xx = r**2 * (alpha - s * c - sp.Rational(2, 3) * s**3 * c) / (4 * area)
+    rr = r**2 * (alpha - s * c**3 - s**3 * c / 3) / (2 * area)
+    yy = rr - xx
+    d = sp.Matrix([0, 2 * r * s**3 / (3 * area), 0])
+    J_O = sp.diag(m * (yy + h**2 / 12), m * (xx + h**2 / 12), m * rr)
+    return MassProperties(m, d, (J_O - parallel_axis(m, d)).applyfunc(sp.simplify))
 
 
 def _tidy_pi(x: sp.Expr) -> sp.Expr:

@@ -8,6 +8,8 @@ mass) and ``angular_velocity``. A body that does not turn at the instant
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
@@ -110,6 +112,8 @@ class BodyReader:
             value = constant(spec.get(dim), f"a {dim}")
             if dim not in POSITIONS:
                 refuse_negative(value, dim)
+            if dim == "half_angle":
+                _half_angle(value)
             dimensions.append((dim, value))
         axis_node = spec.get("axis")
         if axis_node is not None and shape is None:
@@ -168,7 +172,7 @@ def _refuse_placement(spec: Map, name: str, contact: str) -> None:
     """A body that rolls is placed by its contact: its position and angle follow."""
     for key in ("at", *MOTION_KEYS):
         if spec.get(key) is not None:
-            raise InputError(f"body '{name}' is placed by contact '{contact}' (rolling gives its position and "
+            raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
                              f"angle); remove '{key}'", spec.get(key).loc)
     if spec.get("parts") is not None:
         raise InputError(f"body '{name}' rolls (contact '{contact}'): give it one shape, not parts",
@@ -192,6 +196,15 @@ def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
             takes = ", ".join(mine) if mine else "no dimensions"
             kind = f"a {shape.value}" if shape else "a body with an explicit inertia"
             raise InputError(f"{kind} takes {takes}, not '{key.text}' (in {what})", key.loc)
+
+
+def _half_angle(value: ex.Expr) -> None:
+    """A cylinder segment's half angle α: 0 < α ≤ π (α = π the whole cylinder), where a
+    number decides it (π itself is a name: checked where it is a plain number)."""
+    number = ex.constant_value(value.tree)
+    if number is not None and not 0 < number <= Fraction(355, 113):
+        raise InputError(f"a half_angle is an angle in radians between 0 and π (the segment's arc spans twice it), "
+                         f"found {value.text}", value.loc)
 
 
 def refuse_negative(value: ex.Expr, what: str) -> None:

@@ -5,8 +5,11 @@
       D: {body: cylinder, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
       E: {body: half, edge: curved, rolls_on: floor, angle: theta}
       S: {body: yoyo, string: {fixed_at: A, direction: [0, -1], radius: r}, along: y}
+      H: {body: block, hangs_from: {drum: cylinder, direction: [1, 0], over: P}}
 
-Each contact names one declared coordinate, as ``along`` (the contact point's travel:
+A body hanging on a string (``hangs_from``) from a drum, over a light pulley, names no
+coordinate: the string's inextensibility places it from the drum's motion. Each other
+contact names one declared coordinate, as ``along`` (the contact point's travel:
 a distance along a line, the angle round a circle from its lowest point inside or its
 top outside) or ``angle`` (the body's turn); the body gives neither ``at`` nor
 ``angle``: rolling places it (model/contacts.py). This module only reads and checks
@@ -21,10 +24,17 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Body, Contact, Measure, Surface, SurfaceKind
+from rbdsolve.problem.schema import Body, Contact, Measure, Pulley, Surface, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
+
+
+# a contact is planar: its rolling condition then integrates; in 3D it does not
+NOT_PLANAR = ("{what} is rolling in 3D, which a contact does not describe: a contact rolls in the xy-plane of "
+              "the scene, where its rolling condition integrates; rolling on a plane in 3D is not integrable "
+              "(non-holonomic), so eom, equilibria and modes cannot take it (they need independent coordinates); "
+              "state it for a steady motion with steady_motion's 'rolling_at'")
 
 
 def contact_bodies(node: Node | None) -> dict[str, str]:
@@ -52,23 +62,55 @@ class ContactReader:
             return ()
         table = expect_mapping(node, "contacts: name -> contact")
         named = {b.name: b for b in bodies}
-        return tuple(self.contact(self.reading.declare(key, "contact"), value, named) for key, value in table.entries)
+        contacts = tuple(self.contact(self.reading.declare(key, "contact"), value, named)
+                         for key, value in table.entries)
+        _check_order(contacts)
+        return contacts
 
     def contact(self, name: str, node: Node, bodies: dict[str, Body]) -> Contact:
         what = f"contact '{name}'"
         spec = expect_mapping(node, what)
-        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "along", "angle"), what)
-        if (spec.get("rolls_on") is None) == (spec.get("string") is None):
-            raise InputError(f"{what} needs either 'rolls_on' (a floor, a line or a circle) or 'string' "
-                             "(a string wound on the body)", spec.loc)
+        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "hangs_from", "along", "angle"), what)
+        if sum(spec.get(k) is not None for k in ("rolls_on", "string", "hangs_from")) != 1:
+            raise InputError(f"{what} needs one of 'rolls_on' (a floor, a line, a circle or a body's edge), "
+                             "'string' (a string wound on the body) or 'hangs_from' (the body hangs on a string "
+                             "from a drum, over a pulley)", spec.loc)
+        if spec.get("hangs_from") is not None:
+            return self.hanging(name, spec, bodies, what)
         body = _body(spec.get("body"), bodies)
         coordinate, measure = self.coordinate(spec, what)
         if spec.get("string") is not None:
             surface, radius = self.string(spec.get("string"))
             edge = _edge(spec, body, string=radius is not None)
             return Contact(name, body.name, edge, surface, coordinate, measure, radius, True, spec.loc)
-        return Contact(name, body.name, _edge(spec, body, string=False), self.surface(spec.get("rolls_on")),
-                       coordinate, measure, None, False, spec.loc)
+        surface = self.surface(spec.get("rolls_on"), bodies)
+        if surface.body == body.name:
+            raise InputError(f"{what}: body '{body.name}' cannot roll on itself", spec.get("rolls_on").loc)
+        return Contact(name, body.name, _edge(spec, body, string=False), surface, coordinate, measure, None,
+                       False, spec.loc)
+
+    def hanging(self, name: str, spec: Map, bodies: dict[str, Body], what: str) -> Contact:
+        """``hangs_from: {drum: D, direction: [dx, dy], over: P, radius, edge, down, length}``."""
+        for key in ("along", "angle", "edge"):
+            if spec.get(key) is not None:
+                raise InputError(f"{what}: a hanging body has no '{key}': the string places it from the drum's "
+                                 "motion (the drum's own contact or coordinates)", spec.get(key).loc)
+        word = expect_scalar(spec.get("body"), "a body name")
+        if word.text not in bodies:
+            raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
+        hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, direction, over}")
+        check_keys(hang, ("drum", "direction", "over"), ("radius", "edge", "down", "length"), "a hanging string")
+        drum = _body(hang.get("drum"), bodies)
+        if drum.name == word.text:
+            raise InputError(f"{what}: body '{drum.name}' cannot hang from itself", hang.get("drum").loc)
+        radius = self.reading.optional_constant(hang.get("radius"), "the radius the string is wound at")
+        edge = _edge(hang, drum, string=radius is not None)
+        down = self.reading.axis(hang.get("down")) if hang.get("down") is not None else None
+        length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
+        pulley = Pulley(drum.name, edge, radius, self.place(hang.get("over"), hang.loc), self.direction(hang),
+                        down, length, hang.loc)
+        line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
+        return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
     def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
         """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
@@ -85,15 +127,19 @@ class ContactReader:
                              "leaves the body one degree of freedom, named in 'coordinates:'", node.loc)
         return word, measure
 
-    def surface(self, node: Node) -> Surface:
+    def surface(self, node: Node, bodies: dict[str, Body]) -> Surface:
         if isinstance(node, Scalar) and node.text.strip() == "floor":
             origin = ex.Expr(ex.Vec((ex.Num(Fraction(0)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[0, 0]", node.loc)
             return Surface(SurfaceKind.LINE, origin, _unit_x(node), None, False, node.loc)
-        spec = expect_mapping(node, "a surface: floor, {line: {...}} or {circle: {...}}")
+        spec = expect_mapping(node, "a surface: floor, {line: {...}}, {circle: {...}} or {body: B, edge: E}")
+        if spec.get("body") is not None:
+            return _body_surface(spec, bodies)
+        if len(spec.entries) == 1 and spec.entries[0][0].text in ("plane", "sphere"):
+            raise InputError(NOT_PLANAR.format(what=f"rolling on a {spec.entries[0][0].text}"), spec.entries[0][0].loc)
         if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
             found = ", ".join(k.text for k, _ in spec.entries) or "nothing"
-            raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}} or {{circle: {{centre, radius, "
-                             f"side}}}}; found {found}", spec.loc)
+            raise InputError(f"a surface is 'floor', {{line: {{through, angle}}}}, {{circle: {{centre, radius, "
+                             f"side}}}} or another body's edge {{body: B, edge: E}}; found {found}", spec.loc)
         key, value = spec.entries[0]
         body = expect_mapping(value, f"a {key.text}")
         if key.text == "line":
@@ -147,6 +193,22 @@ class ContactReader:
         return word
 
 
+def _check_order(contacts: tuple[Contact, ...]) -> None:
+    """A body rolled on or hung from is placed before the contact that uses it (by
+    'at'/'angle', or by an earlier contact); two contacts between the same two bodies
+    over-constrain them."""
+    for k, c in enumerate(contacts):
+        used = c.pulley.drum if c.pulley is not None else c.surface.body
+        where = c.pulley.loc if c.pulley is not None else c.surface.loc
+        for d in contacts[k + 1:]:
+            if d.body == used and d.surface.body == c.body:
+                raise InputError(f"contacts '{c.name}' and '{d.name}' both say how '{c.body}' and '{d.body}' roll "
+                                 "on each other: that over-constrains them (one contact for the pair)", d.loc)
+            if d.body == used:
+                raise InputError(f"contact '{c.name}' uses '{used}', which contact '{d.name}' places later: "
+                                 f"list '{d.name}' first", where)
+
+
 def _unit_x(where) -> ex.Expr:
     return ex.Expr(ex.Vec((ex.Num(Fraction(1)), ex.Num(Fraction(0)))), ex.Kind.VECTOR, "[1, 0]", where.loc)
 
@@ -160,6 +222,20 @@ def _body(node: Node, bodies: dict[str, Body]) -> Body:
         raise InputError(f"body '{body.name}' must be one shape of the library to roll (its edge gives the "
                          "contact's geometry); a composite body or an explicit inertia cannot roll here yet", word.loc)
     return body
+
+
+def _body_surface(spec: Map, bodies: dict[str, Body]) -> Surface:
+    """Another body's edge: ``{body: B, edge: E, side: outside}`` (a rim: outside by
+    default; a flat edge: the body on its outer side)."""
+    check_keys(spec, ("body",), ("edge", "side"), "a body's edge to roll on")
+    body = _body(spec.get("body"), bodies)
+    edge = _edge(spec, body, string=False)
+    side = spec.get("side")
+    word = "outside" if side is None else expect_scalar(side, "inside or outside").text.strip()
+    if word not in SIDES["circle"]:
+        raise InputError(f"expected side inside or outside, found {describe(side)}"
+                         f"{did_you_mean(word, list(SIDES['circle']))}", side.loc)
+    return Surface(SurfaceKind.BODY, None, None, None, word == "inside", spec.loc, body.name, edge)
 
 
 def _edge(spec: Map, body: Body, string: bool) -> str:

@@ -35,6 +35,7 @@ class Shape(Enum):
     HALF_DISK = "half_disk"
     HALF_RING = "half_ring"
     QUARTER_DISK = "quarter_disk"
+    CYLINDER_SEGMENT = "cylinder_segment"
     CONE = "cone"
     BOX = "box"
     PLATE = "plate"
@@ -66,6 +67,7 @@ _DIMENSIONS = {
     Shape.HALF_DISK: ("radius",),
     Shape.HALF_RING: ("radius",),
     Shape.QUARTER_DISK: ("radius",),
+    Shape.CYLINDER_SEGMENT: ("radius", "height", "half_angle"),
     Shape.CONE: ("radius", "height"),
     Shape.BOX: ("width", "depth", "height"),
     Shape.PLATE: ("width", "height"),
@@ -78,6 +80,7 @@ _EDGES = {
     Shape.TUBE: _ROUND, Shape.SPHERICAL_SHELL: _ROUND, Shape.SPHERE: _ROUND,
     Shape.HEMISPHERE: ("curved", "flat"), Shape.HEMISPHERICAL_SHELL: ("curved",),
     Shape.HALF_DISK: ("curved", "flat"), Shape.HALF_RING: ("curved",), Shape.QUARTER_DISK: ("curved",),
+    Shape.CYLINDER_SEGMENT: ("curved", "flat"),
     Shape.PLATE: ("bottom", "top"), Shape.ROD: ("bottom", "top"),
 }  # fmt: skip
 
@@ -224,6 +227,7 @@ class Body:
 class SurfaceKind(Enum):
     LINE = "line"  # a straight line (a floor, an incline, a string)
     CIRCLE = "circle"  # a circle (a drum, a track, a bowl in its plane)
+    BODY = "body"  # an edge of another body, moving with it (a turning disk, a sliding plank)
 
 
 @dataclass(frozen=True)
@@ -232,14 +236,17 @@ class Surface:
 
     A line passes through ``point`` along ``direction`` (a vector) and the body lies on
     its left (``flip``: on its right); a circle has its centre at ``point`` and the body
-    rolls on its ``inside`` or outside."""
+    rolls on its ``inside`` or outside. A body's edge (kind BODY) names the body and the
+    edge; it moves and turns with that body."""
 
     kind: SurfaceKind
-    point: Expr
+    point: Expr | None  # None: a body's edge
     direction: Expr | None  # line
     radius: Expr | None  # circle
     inside: bool  # circle: inside; line: the body on the right of ``direction``
     loc: Location
+    body: str | None = None  # BODY: the body whose edge it is
+    edge: str | None = None  # BODY: which edge
 
 
 class Measure(Enum):
@@ -247,6 +254,23 @@ class Measure(Enum):
 
     ANGLE = "angle"  # the body's turn (counterclockwise)
     ALONG = "along"  # the contact point's travel: a distance along a line, an angle round a circle
+
+
+@dataclass(frozen=True)
+class Pulley:
+    """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
+    centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
+    and hangs from there along ``down`` with the contact's body at its end, ``length``
+    below ``over`` at the reference configuration (model/strings.py)."""
+
+    drum: str
+    edge: str
+    radius: Expr | None
+    over: Expr
+    direction: Expr
+    down: Expr | None  # None: straight down, [0, −1]
+    length: Expr | None  # None: the straight part's length at the reference
+    loc: Location
 
 
 @dataclass(frozen=True)
@@ -260,11 +284,12 @@ class Contact:
     body: str
     edge: str
     surface: Surface
-    coordinate: str
-    measure: Measure
+    coordinate: str | None  # None: a body hanging from a pulley (its place follows from the drum's)
+    measure: Measure | None
     radius: Expr | None  # a string's winding radius; None: the edge's own
     string: bool
     loc: Location
+    pulley: Pulley | None = None  # the body hangs on a string from a drum, over a pulley
 
 
 @dataclass(frozen=True)

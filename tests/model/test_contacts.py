@@ -12,15 +12,16 @@ import pytest
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file
+from rbdsolve.problem import load_file, load_text
 
 from conftest import PROBLEMS
 
 CASES = sorted((PROBLEMS / "contacts").glob("*.yaml"))
 CASES = [p for p in CASES if not p.name.endswith(".expected.yaml")]
 # the velocity of the surface's material point at C, by hand: a fixed surface is at rest,
-# the plank translates with ẋ
-SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate: sp.Matrix([rate["x"], 0, 0])}
+# the plank translates with ẋ, the turning disk (centre at the origin) turns at ψ̇: ψ̇ e_z × C
+SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate, C: sp.Matrix([rate["x"], 0, 0]),
+                    "disk-on-turning-disk": lambda rate, C: rate["psi"] * sp.Matrix([-C[1], C[0], 0])}
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
@@ -28,7 +29,7 @@ def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> Non
     model = build_model(load_file(path))
     state = model.state
     rng = random.Random(20)
-    for contact in model.contacts:
+    for contact in (c for c in model.contacts if c.source.pulley is None):  # strings: tests/model/test_strings.py
         body = next(b for b in model.bodies if b.name == contact.body)
         origin = model.symbols.vector(next(b for b in model.problem.bodies if b.name == body.name).at)
         omega = body.angular_velocity(state)
@@ -38,7 +39,7 @@ def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> Non
             at |= {qd: sp.Rational(rng.randint(-900, 900), 1000) for qd in state.qd}
             at |= {p: sp.Rational(rng.randint(1100, 2900), 1000) for p in model.symbols.parameters.values()}
             rates = {n: at[qd] for n, qd in zip(state.names, state.qd)}
-            surface = SURFACE_VELOCITY.get(path.stem, lambda rate: sp.zeros(3, 1))(rates)
+            surface = SURFACE_VELOCITY.get(path.stem, lambda rate, C: sp.zeros(3, 1))(rates, contact.point)
             difference = (v_c - surface).xreplace(at)
             assert all(abs(sp.N(x, 30)) < 1e-20 for x in difference), (path.stem, difference)
 
@@ -52,3 +53,54 @@ def test_the_cylinder_touches_the_track() -> None:
     assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
     d = contact.point - centre
     assert sp.simplify(d.dot(d) - r**2) == 0
+
+
+def test_the_rolling_disk_touches_the_turning_disk() -> None:
+    """C is on the turning disk's rim (radius R about the origin) and r from the rolling
+    disk's centre, which stays R + r from the origin, at the angle θ from the upward vertical."""
+    model = build_model(load_file(PROBLEMS / "contacts" / "disk-on-turning-disk.yaml"))
+    (contact,) = model.contacts
+    R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]
+    theta = model.symbols.coordinates["theta"]
+    centre = next(b for b in model.bodies if b.name == "disk").position
+    assert sp.simplify(contact.point.dot(contact.point) - R**2) == 0
+    assert sp.simplify(centre - (R + r) * sp.Matrix([-sp.sin(theta), sp.cos(theta), 0])) == sp.zeros(3, 1)
+
+
+def test_a_cylinder_segment_rocks_at_the_hand_frequency() -> None:
+    """A log cut flat (a cylinder segment, arc 2α, curved side down) rocking on the floor:
+    its centre O stays r above the floor and G is ȳ from O towards the arc, so V = m g (r − ȳ cos θ);
+    C is the instantaneous centre, T = ½ (J_G + m (r − ȳ)²) θ̇² at θ = 0, so by hand
+    ω² = g ȳ/(k_G² + (r − ȳ)²). ȳ and k_G² = J_G/m are integrated here by sympy over the
+    cross-section, not taken from the shape library."""
+    from rbdsolve.model.energy import mass_matrix, potential_energy
+    from rbdsolve.model.energy import hessian
+
+    text = """
+parameters: {m: mass, r: radius, h: length, g: gravity}
+values: {r: 1, h: 2}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  trunk: {shape: cylinder_segment, mass: m, radius: r, height: h, half_angle: pi/3, axis: -y}
+contacts:
+  C: {body: trunk, edge: curved, rolls_on: floor, angle: theta}
+questions: [modes]
+"""
+    model = build_model(load_text(text))
+    (theta,) = model.q
+    rho, psi = sp.symbols("rho psi", real=True)
+    alpha = sp.pi / 3
+
+    def over_section(f):  # r = 1, polar from O with ψ from the symmetry axis
+        return sp.integrate(sp.integrate(f * rho, (rho, sp.cos(alpha) / sp.cos(psi), 1)), (psi, -alpha, alpha))
+
+    area = over_section(sp.Integer(1))
+    ybar = over_section(rho * sp.cos(psi)) / area
+    k_G2 = over_section(rho**2) / area - ybar**2  # about the axis through G, along the log
+    g, m = model.symbols.parameters["g"], model.symbols.parameters["m"]
+    K = hessian(potential_energy(model).total, model.q).xreplace({theta: 0})[0, 0]
+    M = mass_matrix(model).xreplace({theta: 0})[0, 0]
+    omega2 = (K / M).xreplace(dict(model.values))
+    expected = g * ybar / (k_G2 + (1 - ybar) ** 2)
+    assert abs(sp.N((omega2 - expected).subs(g, 1), 30)) < 1e-25

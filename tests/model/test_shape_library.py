@@ -125,6 +125,11 @@ def geometry(shape: Shape, d: dict[str, float]) -> Geometry:
         return Geometry(
             lambda th, ph: (r * math.sin(th) * math.cos(ph), r * math.sin(th) * math.sin(ph), r * math.cos(th)),
             lambda th, ph: r * r * math.sin(th), [(0, math.pi / 2), (0, TWO_PI)], r)  # fmt: skip
+    if shape is Shape.CYLINDER_SEGMENT:  # y ≥ r cos α inside the circle: x across, then y, then z
+        r, h, a = d["radius"], d["height"], d["half_angle"]
+        return Geometry(lambda x, y, z: (x, y, z), one,
+                        [lambda y, z: (-math.sqrt(max(r * r - y * y, 0.0)), math.sqrt(max(r * r - y * y, 0.0))),
+                         (r * math.cos(a), r), (-h / 2, h / 2)], max(r, h))  # fmt: skip
     if shape is Shape.CONE:  # base disk at z = 0, apex at z = h: radius r (1 − z/h) at height z
         r, h = d["radius"], d["height"]
         return Geometry(lambda s, t, z: (s * math.cos(t), s * math.sin(t), z), lambda s, t, z: s,
@@ -213,6 +218,9 @@ SAMPLES: dict[str, tuple[Shape, dict[str, float]]] = {
     "half_disk": (Shape.HALF_DISK, {"radius": 0.7}),
     "half_ring": (Shape.HALF_RING, {"radius": 0.7}),
     "quarter_disk": (Shape.QUARTER_DISK, {"radius": 0.7}),
+    "cylinder_segment": (Shape.CYLINDER_SEGMENT, {"radius": 0.7, "height": 1.9, "half_angle": 1.1}),
+    # more than half the cylinder: the chord below the centre
+    "cylinder_segment_large": (Shape.CYLINDER_SEGMENT, {"radius": 0.7, "height": 0.5, "half_angle": 2.3}),
     "cone": (Shape.CONE, {"radius": 0.7, "height": 1.9}),
     "box": (Shape.BOX, {"width": 0.8, "depth": 1.3, "height": 2.1}),
     "plate": (Shape.PLATE, {"width": 0.8, "height": 1.3}),
@@ -348,6 +356,8 @@ def shapes_with_dims(draw) -> tuple[Shape, sp.Expr, dict[str, sp.Expr]]:
     dims = {n: draw(lengths) for n in shape.dimensions}
     if shape is Shape.TUBE:
         dims["outer_radius"] = dims["inner_radius"] + draw(lengths)
+    if shape is Shape.CYLINDER_SEGMENT:  # an angle, at most π
+        dims["half_angle"] = sp.Rational(draw(st.integers(min_value=1, max_value=25)), 8)
     if shape is Shape.TRIANGLE:  # the apex may lie anywhere along the top line
         dims["apex"] = sp.Rational(draw(st.integers(min_value=-40, max_value=80)), 8)
     return shape, draw(lengths), dims
@@ -510,3 +520,29 @@ def test_box_with_box_hole_matches_integral_of_remaining_solid(sample) -> None:
     np.testing.assert_allclose(
         as_array(result.inertia), J, rtol=1e-10, atol=1e-10 * np.abs(J).max()
     )
+
+
+def test_the_cylinder_segment_by_sympy_integration() -> None:
+    """The segment's area, first and second moments over its cross-section, integrated
+    by sympy in polar coordinates (ρ from r cos α/cos ψ to r, ψ from −α to α) for α
+    below π/2, against the library's centre and J_O = J_G + m(|d|² 1 − d dᵀ)."""
+    from rbdsolve.model.inertia import parallel_axis
+
+    r, h, m = sp.Rational(7, 10), sp.Rational(19, 10), sp.Rational(23, 10)
+    alpha = sp.pi / 3
+    rho, psi = sp.symbols("rho psi", real=True)
+
+    def over_section(f):
+        inner = sp.integrate(f * rho, (rho, r * sp.cos(alpha) / sp.cos(psi), r))
+        return sp.integrate(inner, (psi, -alpha, alpha))
+
+    x, y = rho * sp.sin(psi), rho * sp.cos(psi)
+    area = over_section(sp.Integer(1))
+    props = own_properties(Shape.CYLINDER_SEGMENT, m, {"radius": r, "height": h, "half_angle": alpha})
+    J_O = props.inertia + parallel_axis(m, props.centre)
+    expected_centre = over_section(y) / area
+    expected = [m * (over_section(y**2) / area + h**2 / 12), m * (over_section(x**2) / area + h**2 / 12),
+                m * over_section(rho**2) / area]
+    assert sp.N(props.centre[1] - expected_centre, 30) == pytest.approx(0, abs=1e-25)
+    for k in range(3):
+        assert sp.N(J_O[k, k] - expected[k], 30) == pytest.approx(0, abs=1e-25), k

@@ -253,7 +253,8 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
                   ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
                   tuple(_links(model, {p.name: p.at for p in points})),
-                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface))
+                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface)
+                  + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None))
 
 
 class _Values:
@@ -354,6 +355,9 @@ def _samples(shape: Shape, d: Mapping[str, float]) -> list[tuple[float, float, f
     if shape in (Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE):
         r, h = d.get("outer_radius", d.get("radius")), d["height"]
         return _circle(r, -h / 2) + _circle(r, h / 2)
+    if shape is Shape.CYLINDER_SEGMENT:  # the arc within α of +y (its ends make the chord), at both ends
+        r, h, a = d["radius"], d["height"], d["half_angle"]
+        return [(x, y, z) for z in (-h / 2, h / 2) for x, y, _ in _arc(r, math.pi / 2 - a, math.pi / 2 + a)]
     if shape in (Shape.HALF_DISK, Shape.QUARTER_DISK):  # the centre O and the arc
         return [(0.0, 0.0, 0.0), *_arc(d["radius"], 0.0, math.pi if shape is Shape.HALF_DISK else math.pi / 2)]
     if shape in (Shape.HEMISPHERE, Shape.HEMISPHERICAL_SHELL):
@@ -437,6 +441,13 @@ def _ground(contact, model: Model, values: _Values, reach: float) -> Ground:
         return Ground(_xy(base), at, normal, string=True)
     half = 1.5 * reach
     return Ground((at[0] - half * d[0], at[1] - half * d[1]), (at[0] + half * d[0], at[1] + half * d[1]), normal)
+
+
+def _hanging_part(contact, model: Model, values: _Values) -> Ground:
+    """A string over a pulley: its hanging part, from the pulley's point to the body."""
+    body = next(b for b in model.bodies if b.name == contact.body)
+    over = _xy(values.vector(model.symbols.vector(contact.source.pulley.over)))
+    return Ground(over, _xy(values.vector(body.position)), (0.0, 0.0), string=True)
 
 
 def _springs(model: Model, values: _Values) -> Iterator[Zigzag]:

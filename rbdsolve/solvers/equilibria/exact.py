@@ -36,6 +36,7 @@ from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
+from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
@@ -62,9 +63,10 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     else:
         warnings = []
     unknowns = [q for q in model.q if q not in free]
-    angles = periodic_angles(model)
+    angles = periodic_angles(model) | repeating(model)
     warnings += [f"V is not 2π-periodic in {q.name} (it enters V outside sin and cos, e.g. in a torsional "
                  "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
+    warnings += [_repeats(model, q) for q in unknowns if q in repeating(model)]
     solutions = _solve_trig_polynomial(equations, unknowns, angles)
     proved = _monotone(equations, unknowns, model) if solutions is None else None
     if proved is not None:
@@ -92,6 +94,28 @@ def periodic_angles(model: Model) -> frozenset:
     grad = gradient(model)
     return frozenset(q for q in model.angles
                      if all(_vanishes(e.xreplace({q: q + 2 * sp.pi}) - e) for e in grad))
+
+
+@memoized
+def repeating(model: Model) -> frozenset:
+    """The coordinates that are not angles of the scene (they enter a position bare, as
+    a rocking body's θ does in s_C = −R θ) but along which ∂V/∂q is 2π-periodic and
+    depends on q: solved as angles over (−π, π], each root standing for q₀ + 2kπ."""
+    grad = gradient(model)
+    return frozenset(q for q in model.q if q not in model.angles and any(e.has(q) for e in grad)
+                     and all(_vanishes(e.xreplace({q: q + 2 * sp.pi}) - e) for e in grad))
+
+
+def _repeats(model: Model, q: sp.Symbol) -> str:
+    """The warning that equilibria in q repeat every 2π, and where a contact allows them."""
+    why = (f"V is 2π-periodic in {q.name} though the scene is not ({q.name} also enters the positions outside "
+           f"sin and cos, as a rolling body's travel does): ")
+    held = contact_span.held_for(model, q)
+    if held:
+        return why + (f"each equilibrium {q.name}₀ would repeat at {q.name}₀ + 2kπ, but the contact holds only for "
+                      f"{held}; those in (−π, π] where it holds are listed")
+    return why + (f"each equilibrium {q.name}₀ repeats at {q.name}₀ + 2kπ, k an integer, the body moved on by whole "
+                  "turns; those in (−π, π] are listed")
 
 
 def _vanishes(expr: sp.Expr) -> bool:
@@ -289,8 +313,11 @@ def listing(model: Model) -> Listing:
     points of the coordinates set apart unless the fibre test shows an equilibrium
     (solvers/shared/placement.py), and solutions that are one configuration (the same
     orientation, or the same up to a coordinate V does not depend on) merged into the
-    first, the others named as equivalent."""
+    first, the others named as equivalent. Solutions where a contact point would be off
+    its edge (solvers/shared/contact_span.py) are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
+    solutions, off = contact_span.split(model, solutions)
+    warnings = [*warnings, *contact_span.warnings(off), *contact_span.undecided(model, solutions)]
     free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
     kept: list[Listed] = []
     apart: list[tuple[dict, Singularity]] = []
@@ -356,5 +383,6 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
     answers = EquilibriaAnswers(equilibria, singular_answers(model, listed.singular_points), critical)
-    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, bool(periodic_angles(model))),
+    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
+                                                                bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))

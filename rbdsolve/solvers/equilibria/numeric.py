@@ -40,6 +40,7 @@ from rbdsolve.solvers.shared.numeric_model import (
     find_numeric,
     periodic_angles,
 )
+from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.search_box import box_text
 from rbdsolve.solvers.shared.placement import SUGGESTION, numeric_listing
@@ -69,7 +70,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                                              tuple(dict(zip(names, e.at)) for e in equivalent), recognized, bound))
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
-    warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names))
+    warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names),
+                *contact_span.warnings(list(found.off_edge)))
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)

@@ -22,6 +22,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, listing
+from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.chosen import REFINE_TOL, several_stable
 from rbdsolve.solvers.shared.values import missing_for
 
@@ -49,6 +50,7 @@ def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str
 
 def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     about = question.options.about
+    contact_span.require_on_edges(question, model)
     at = {q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
     residual = [tidy(g.xreplace(at)) for g in gradient(model)]
     if all(sp.simplify(r) == 0 for r in residual):

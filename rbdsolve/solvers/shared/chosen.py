@@ -18,6 +18,7 @@ from rbdsolve.form.printers import unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
+from rbdsolve.solvers.shared import contact_span
 
 REFINE_TOL = 1e-3  # how far (per coordinate) a given point may lie from the equilibrium it names
 
@@ -72,6 +73,7 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     from rbdsolve.solvers.shared.numeric_model import ROOT_TOL, compiled_gradient, difference, gradient_scale, newton
 
     about = question.options.about
+    contact_span.require_on_edges(question, model)
     given = np.array([_real(model.symbols.scalar(e), model, e, name) for name, e in about])
     g, H = compiled_gradient(model)
     residual = np.asarray(g(given), dtype=float)

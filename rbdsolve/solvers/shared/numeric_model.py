@@ -53,6 +53,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
+from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.shared.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.shared.scan import scan
@@ -202,6 +203,7 @@ class NumericEquilibria:
     starts: int  # Newton starts; in one coordinate, the points the scan evaluated
     sampling: str  # how the starts were placed: a grid, a fixed pseudo-random sample, or the scan
     unresolved: tuple[tuple[float, float], ...] = ()  # intervals the scan could not settle
+    off_edge: tuple = ()  # contact_span.OffEdge's: roots where a contact point would leave its edge
 
 
 def find_numeric(model: Model) -> NumericEquilibria:
@@ -224,7 +226,21 @@ def find_numeric(model: Model) -> NumericEquilibria:
             continue
         if found is not None:
             roots.append(found)
-    return NumericEquilibria(tuple(sorted(roots, key=lambda r: r.at)), len(starts), sampling, unresolved)
+    kept, off = _on_edges(model, roots)
+    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off)
+
+
+def _on_edges(model: Model, roots: list[Root]) -> tuple[list[Root], tuple]:
+    """The roots with every contact point on its edge, and the others with the reason
+    (solvers/shared/contact_span.py)."""
+    if not any(c.span is not None for c in model.contacts):
+        return roots, ()
+    kept, off = [], []
+    for r in roots:
+        at = {q: sp.Float(x, 17) for q, x in zip(model.q, r.at)}
+        outside = contact_span.outside(model, at)
+        (kept.append(r) if outside is None else off.append(outside))
+    return kept, tuple(off)
 
 
 def newton(start: np.ndarray, g, H) -> np.ndarray | None:

@@ -54,7 +54,15 @@ def rolling_steps(model: Model) -> list[st.Step]:
     out = []
     for c in model.contacts:
         source = c.source
-        on = "its string" if source.string else f"the {source.surface.kind.value}"
+        if source.pulley is not None:
+            out.append(st.equation(f"String at {c.name} ({source.pulley.drum} to {c.body}, over a light pulley): "
+                                   f"inextensible, so the hanging part lengthens as fast as the string leaves "
+                                   f"{source.pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
+                                   Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
+            continue
+        surface = source.surface
+        on = ("its string" if source.string else f"{surface.body}'s {surface.edge}" if surface.body
+              else f"the {surface.kind.value}")
         rest = (f"v_{c.name} equals the velocity of the surface's point at {c.name}" if c.moving_surface
                 else f"v_{c.name} = 0")
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",

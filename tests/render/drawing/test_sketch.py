@@ -146,3 +146,12 @@ def test_a_floor_is_a_stretch_of_line_through_the_contact_and_a_string_ends_at_i
     # the yo-yo at y = 2 (r = 1): the string runs from A = (0, 0) down to S = (0, −2)
     (string,) = sketch(model_of(PROBLEMS / "contacts" / "yo-yo.yaml"), {"y": 2.0}).grounds
     assert string.string and close(string.start, (0.0, 0.0)) and close(string.end, (0.0, -2.0))
+
+
+def test_a_string_over_a_pulley_is_drawn_to_the_pulley_and_down_to_the_block() -> None:
+    # the cylinder at x = 1 (r = 1/2, d = 3): its top S at (1, 1), the pulley P at (3, 1);
+    # the block hangs d + 2x = 5 below P, at (3, −4) (by hand: the top moves twice as far)
+    drawing = sketch(model_of(PROBLEMS / "contacts" / "cylinder-pulley-block.yaml"), {"x": 1.0})
+    floor, straight, hanging = drawing.grounds
+    assert straight.string and close(straight.start, (3.0, 1.0)) and close(straight.end, (1.0, 1.0))
+    assert hanging.string and close(hanging.start, (3.0, 1.0)) and close(hanging.end, (3.0, -4.0))

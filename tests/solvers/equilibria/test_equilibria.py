@@ -67,3 +67,42 @@ def test_equilibria_that_exist_only_for_some_parameters() -> None:
     assert sorted(float(e.at["theta"]) for e in low) == [0.0, float(sp.pi)]
     high = solve(COND + "values: {m: 1, l: 1, g: 10, k: 20}\n").solutions[0].answers.equilibria
     assert len(high) == 4
+
+
+def test_a_rolling_coordinate_with_a_periodic_potential_is_solved_completely_and_the_repeat_said() -> None:
+    """A cylinder rolling in a cylinder: θ enters the cylinder's angle bare (φ = −(R − r) θ/r),
+    so the scene is not 2π-periodic in θ, but V = −m g (R − r) cos θ is: by hand the
+    equilibria are θ = 0 and π, and θ₀ + 2kπ repeat them (the cylinder rolled on)."""
+    from rbdsolve.problem import load_file
+    from rbdsolve.solvers.equilibria.exact import find_equilibria, repeating
+
+    from conftest import PROBLEMS
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
+    (theta,) = model.q
+    assert theta not in model.angles and repeating(model) == {theta}
+    solutions, warnings = find_equilibria(model)
+    assert sorted(s[theta] for s in solutions) == [0, sp.pi]
+    assert not any("may miss solutions" in w for w in warnings)
+    assert any("repeats at theta₀ + 2kπ" in w for w in warnings)
+
+
+def test_a_spring_of_zero_length_at_an_equilibrium_is_no_internal_error() -> None:
+    """A particle on a circle of radius a tied by a spring to the point (a, 0) of it (the
+    fuzzer's scene): V = ½ k |a(cos θ − 1, sin θ)|² = k a² (1 − cos θ), so by hand θ = 0 is
+    stable (the spring's length is zero there, where |r| is not differentiable) and π
+    unstable."""
+    text = """
+parameters: {m: mass, k: stiffness, a: offset}
+coordinates: [theta]
+points:
+  A: [a, 0]
+  P0: a * [cos(theta), sin(theta)]
+bodies: {b0: {shape: particle, mass: m, at: P0}}
+springs: {s: {stiffness: k, between: [P0, A]}}
+questions: [equilibria]
+"""
+    (solution,) = solve_problem(build_model(load_text(text))).solutions
+    assert solution.error is None, solution.error
+    got = {sp.sympify(e.at["theta"]): e.stability.value for e in solution.answers.equilibria}
+    assert got == {sp.Integer(0): "stable", sp.pi: "unstable"}
