@@ -22,7 +22,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.shared.condition_roots import angle_parameters
-from rbdsolve.solvers.shared.conditions import Critical, Piece, at_samples, exists_when, partition, within
+from rbdsolve.solvers.shared.conditions import Critical, Piece, at_samples, changes, existing, exists_when, partition
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
@@ -46,21 +46,21 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
     if pieces is None:
         return found, criticals
     cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
-    changes = tuple(Critical(piece.parameter, piece.high) for (piece, _), (after, _) in zip(pieces, pieces[1:])
-                    if piece.high is not None and piece.high == after.low)
+    changed = changes([piece for piece, _ in pieces])
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
     if len(cases) == 1:
         reason = found.reason if decided else "the Hessian of V keeps one sign wherever the equilibrium exists"
         return replace(found, stability=found.stability if decided else cases[0].stability,
-                       reason=reason), (*criticals, *changes)
+                       reason=reason), (*criticals, *changed)
     if decided:  # the values decide; the cases say where that holds
-        return replace(found, stability_cases=cases), (*criticals, *changes)
-    what = "the Hessian of V changes sign" if found.hessian.rows == 1 else "an eigenvalue of the Hessian of V changes sign (det K = 0)"
+        return replace(found, stability_cases=cases), (*criticals, *changed)
+    what = ("the Hessian of V changes sign" if found.hessian.rows == 1
+            else "an eigenvalue of the Hessian of V changes sign (det K = 0)")
     p = to_unicode(pieces[0][0].parameter)
-    at = "its critical value" if len(changes) == 1 else "its critical values"
+    at = "its critical value" if len(changed) == 1 else "its critical values"
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
-                    reason=f"{what} as {p} passes {at}"), (*criticals, *changes))
+                    reason=f"{what} as {p} passes {at}"), (*criticals, *changed))
 
 
 def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model) -> list[tuple[Piece, Stability]] | None:
@@ -68,15 +68,11 @@ def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model) -> list[tupl
     the equilibrium does not exist left out, neighbours of one stability joined; None
     where det K cannot be split, or a piece lies partly where it exists."""
     found = partition(_boundary(H), model)
-    if found is None:
+    kept = existing(found.pieces, exists, model) if found else None
+    if kept is None:
         return None
     out: list[tuple[Piece, Stability]] = []
-    for piece in found.pieces:
-        inside = within(piece, exists, model)
-        if inside is None:
-            return None
-        if not inside:
-            continue
+    for piece in kept:
         stability = _stability_on(H, piece, model)
         if out and out[-1][1] is stability and out[-1][0].high == piece.low:
             out[-1] = (out[-1][0].joined(piece), stability)
@@ -96,11 +92,12 @@ def _stability_on(H: sp.Matrix, piece: Piece, model: Model) -> Stability:
     """K classified at a point of the piece: exactly (δ > 0), else at SAMPLES random
     points of it (the parameters as rationals, so each K is exact numbers), which
     must all agree."""
-    value, _ = piece.inside(sp.Matrix(H))
+    H = sp.Matrix(H)
+    value, _ = piece.inside(H)
     found = _classified(value.applyfunc(sp.factor))
     if found is not Stability.UNDETERMINED:
         return found
-    samples = at_samples(piece, sp.Matrix(H), model, 24, angle_parameters(sp.Matrix(H)))
+    samples = at_samples(piece, H, model, 24, angle_parameters(H))
     seen = {_classified(K) for K in samples} if samples else set()
     return seen.pop() if len(seen) == 1 else Stability.UNDETERMINED
 

@@ -44,7 +44,7 @@ from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relation
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
 from rbdsolve.solvers.modes.steps import descending, exact_steps
-from rbdsolve.solvers.shared.conditions import Critical, critical_values, exists_when, partition, what_decides, within
+from rbdsolve.solvers.shared.conditions import changes, critical_values, exists_when, existing, partition, what_decides
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
@@ -269,19 +269,10 @@ def _cases(lam: sp.Expr, model: Model, where: sp.Basic):
     pieces where the equilibrium does not exist left out; None where it cannot be
     split (or a piece lies partly where it exists)."""
     found = partition(lam, model)
-    if found is None:
-        return None
-    kept = []
-    for piece in found.pieces:
-        inside = within(piece, where, model)
-        if inside is None:
-            return None
-        if inside:
-            kept.append(piece)
+    kept = existing(found.pieces, where, model) if found else None
     if not kept:
         return None
-    changes = [Critical(a.parameter, a.high) for a, b in zip(kept, kept[1:]) if a.high == b.low]
-    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), changes
+    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))
 
 
 def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:

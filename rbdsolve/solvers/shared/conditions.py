@@ -116,7 +116,7 @@ class Partition:
 
     @property
     def criticals(self) -> tuple[Critical, ...]:
-        return tuple(Critical(self.parameter, piece.high) for piece in self.pieces[:-1])
+        return changes(self.pieces)
 
 
 def partition(f: sp.Expr, model) -> Partition | None:
@@ -172,6 +172,26 @@ def within(piece: Piece, condition: sp.Basic, model) -> bool | None:
     except TypeError:  # not decided at some point (a value that is not real)
         return None
     return seen.pop() if len(seen) == 1 else None
+
+
+def existing(pieces, where: sp.Basic, model) -> list[Piece] | None:
+    """The pieces on which ``where`` (an equilibrium's existence) holds; None where one
+    lies partly inside it (the pieces do not line up with it)."""
+    kept = []
+    for piece in pieces:
+        inside = within(piece, where, model)
+        if inside is None:
+            return None
+        if inside:
+            kept.append(piece)
+    return kept
+
+
+def changes(pieces) -> tuple[Critical, ...]:
+    """The critical values between neighbouring pieces (where one ends and the next
+    begins): where what the pieces carry changes."""
+    return tuple(Critical(a.parameter, a.high) for a, b in zip(pieces, pieces[1:])
+                 if a.high is not None and a.high == b.low)
 
 
 def what_decides(f: sp.Expr) -> str:
