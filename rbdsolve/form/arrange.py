@@ -18,6 +18,8 @@ from typing import Callable, Sequence
 import sympy as sp
 
 from rbdsolve.form.display import Along, Math, Product, Relation, Scaled, Terms
+from rbdsolve.form.factor import factored
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import collect_in, tidy
 
 
@@ -30,7 +32,19 @@ def arranged(expr: sp.Expr, generators: Sequence[sp.Expr], coordinates: Sequence
     parts = collect_in(expr, list(generators), tidied=True)
     terms = [(show(c), tuple(show(f) for f in factors))
              for c, factors in ordered_sum(parts, list(generators), list(coordinates))]
-    return scaled_sum(terms, scale_symbols)
+    default = scaled_sum(terms, scale_symbols)
+    if set(parts) == {sp.Integer(1)}:  # no generators (a potential): maybe one product
+        whole = factored(show(expr))   # −g (2 m + mₐ) y, not −g [2 m y + mₐ y]
+        shorter = len(to_unicode(whole)) - len(to_unicode(default))
+        if not whole.is_Add and (shorter < 0 or shorter == 0 and _groups_parameters(whole, scale_symbols)):
+            return whole
+    return default
+
+
+def _groups_parameters(product: sp.Expr, parameters: set[sp.Symbol]) -> bool:
+    """Does a product have a sum of parameters alone among its factors, (2 m + mₐ)?"""
+    return any(f.is_Add and f.free_symbols <= parameters and not f.atoms(sp.Function)
+               for f in sp.Mul.make_args(product))
 
 
 def arranged_equation(expr: sp.Expr, generators: Sequence[sp.Expr], coordinates: Sequence[sp.Expr],
@@ -87,19 +101,19 @@ def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp
     if not terms:
         return sp.Integer(0)
     scale = common_scale([c for c, _ in terms], symbols) if len(terms) > 1 else sp.Integer(1)
-    items = tuple(Product(sp.expand(c / scale), factors) for c, factors in terms)
+    items = tuple(Product(factored(sp.expand(c / scale)), factors) for c, factors in terms)
     inner = Terms(items) if len(items) > 1 else items[0]
     return inner if scale == 1 else Scaled(scale, inner)
 
 
 def scaled_matrix(matrix: sp.Matrix, symbols: set[sp.Symbol]) -> Scaled | sp.Matrix:
     if matrix.shape == (1, 1):
-        return sp.ImmutableMatrix(matrix)
+        return sp.ImmutableMatrix(matrix.applyfunc(factored))
     scale = common_scale(list(matrix), symbols)
     scale = abs(scale) if scale.could_extract_minus_sign() else scale
     if scale == 1:
         return sp.ImmutableMatrix(matrix)
-    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(lambda x: tidy(x / scale))))
+    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(lambda x: factored(tidy(x / scale)))))
 
 
 def monomial_order(monomials: list[sp.Expr], generators: list[sp.Expr]) -> list[sp.Expr]:
@@ -136,11 +150,26 @@ def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
 
 
 def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:
-    """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors."""
-    items = tuple(Along(x, e) for x, e in components)
+    """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors,
+    each starting with a positive term where it has one (v₀ − P_y/m, not −P_y/m + v₀)."""
+    items = tuple(Along(_positive_lead(x), e) for x, e in components)
     if not items:
         return sp.Integer(0)
     return items[0] if len(items) == 1 else Terms(items)
+
+
+def _positive_lead(component: Math) -> Math:
+    if not isinstance(component, Terms) or not _negative(component.items[0]):
+        return component
+    first = next((x for x in component.items if not _negative(x)), None)
+    if first is None:
+        return component
+    return Terms((first, *(x for x in component.items if x is not first)))
+
+
+def _negative(item: Math) -> bool:
+    value = item.coefficient if isinstance(item, Product) else item
+    return isinstance(value, sp.Expr) and value.could_extract_minus_sign()
 
 
 def configuration(coordinates: tuple[sp.Expr, ...], values: list[sp.Expr]) -> Relation:

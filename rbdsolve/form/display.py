@@ -21,6 +21,11 @@ class Terms:
     def value(self) -> sp.Expr:
         return sp.Add(*[plain(item) for item in self.items])
 
+    def shown(self) -> tuple[Math, ...]:
+        """The items a reader sees: a zero term (0 ω₁ ω₂) is not written."""
+        kept = tuple(x for x in self.items if not _zero(x))
+        return kept or (sp.Integer(0),)
+
 
 @dataclass(frozen=True)
 class Product:
@@ -77,6 +82,12 @@ class Along:
 
 
 Math = sp.Basic | sp.MatrixBase | Terms | Product | Scaled | Label | Along | str
+
+
+def _zero(item: Math) -> bool:
+    if isinstance(item, Product):
+        return item.coefficient == 0
+    return isinstance(item, sp.Expr) and item == 0
 
 
 def plain(value: Math):

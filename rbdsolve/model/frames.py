@@ -113,8 +113,20 @@ def frame_lagrangian(model: Model, motion: FrameMotion) -> FrameLagrangian:
     potential = tuple(x for x in potential if x.value != 0)
     L = sum((x.value for x in kinetic), sp.Integer(0)) - sum((x.value for x in potential), sp.Integer(0))
     time_only = tidy(time_only)
-    F = tidy(F_bodies) + (sp.Integral(time_only, t) if time_only != 0 else 0)
+    F = tidy(F_bodies) + _time_integral(time_only)
     return FrameLagrangian(motion.frame.name, kinetic, potential, tidy(L), F)
+
+
+def _time_integral(f: sp.Expr) -> sp.Expr:
+    """∫ f dt for the part of F that depends on time alone, evaluated where sympy finds a
+    closed form no more than twice as long as f (∫ ½ a² m t² dt = 1/6 a² m t³), else
+    left as the integral: any antiderivative will do, L − L' = dF/dt either way."""
+    if f == 0:
+        return sp.Integer(0)
+    found = sp.integrate(sp.expand(f), t)
+    if found.has(sp.Integral) or sp.count_ops(found) > 2 * sp.count_ops(f) + 4:
+        return sp.Integral(f, t)
+    return tidy(found)
 
 
 def _spin(body: RigidBody, state) -> sp.Expr:

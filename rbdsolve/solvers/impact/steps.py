@@ -14,6 +14,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Step
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.impact.equations import ImpactEquations
+from rbdsolve.solvers.shared.signs import sign_of
 
 BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))
 
@@ -160,11 +161,7 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
     if rows:
         particles = " (u: the particle that struck there)" if answers.particles else ""
         out.append(st.result(f"Velocities just after the impact{particles}:", *rows))
-    out.append(st.result("Kinetic energy of the system and the striking particles, just before (i) and "
-                         "after (f), and the energy lost:",
-                         Relation(sp.Symbol("T_i"), show.scalar(answers.energy_before)),
-                         Relation(sp.Symbol("T_f"), show.scalar(answers.energy_after)),
-                         Relation(Label("Tᵢ − T_f", "T_i - T_f"), show.scalar(answers.energy_lost))))
+    out.append(_energy_step(work, show, answers))
     if answers.sticking_impulses:
         out.append(st.result("The impulse of each sticking particle on the system:",
                              *[Relation(sp.Symbol(f"P_{p}"), show.vector(sp.Matrix(v)))
@@ -180,6 +177,28 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
         out.append(st.result("The supports feel no impulse (the centre of percussion) when",
                              Relation(p, answers.centre_of_percussion)))
     return out
+
+
+def _energy_step(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> Step:
+    """Tᵢ, T_f and the energy lost, Tᵢ − T_f; "gained", T_f − Tᵢ, where the impulses add
+    energy (the sign decided by the parameters or their values); and the fraction lost,
+    (Tᵢ − T_f)/Tᵢ, where it is a ratio of parameters alone (1 − e², M/(M + 3m)), the
+    form an exam asks for."""
+    lost = answers.energy_lost
+    gained = sign_of(lost, work.model.decided_by) == -1
+    rows = [Relation(sp.Symbol("T_i"), show.scalar(answers.energy_before)),
+            Relation(sp.Symbol("T_f"), show.scalar(answers.energy_after))]
+    if gained:
+        rows.append(Relation(Label("T_f − Tᵢ", "T_f - T_i"), show.scalar(tidy_fraction(-lost))))
+    else:
+        rows.append(Relation(Label("Tᵢ − T_f", "T_i - T_f"), show.scalar(lost)))
+    fraction = tidy_fraction(lost / answers.energy_before) if answers.energy_before != 0 else None
+    if fraction is not None and lost != 0 and fraction.free_symbols < lost.free_symbols:  # the speeds cancel
+        label = Label("(T_f − Tᵢ)/Tᵢ", "(T_f - T_i)/T_i") if gained else Label("(Tᵢ − T_f)/Tᵢ", "(T_i - T_f)/T_i")
+        rows.append(Relation(label, show.scalar(tidy_fraction(-fraction) if gained else fraction)))
+    word = "gained" if gained else "lost"
+    return st.result("Kinetic energy of the system and the striking particles, just before (i) and "
+                     f"after (f), and the energy {word}:", *rows)
 
 
 def numeric_steps(work: ImpactEquations, condition: float) -> tuple[Step, ...]:

@@ -39,7 +39,7 @@ from rbdsolve.solvers.inertia.steps import (
     _centre_steps,
     axis_steps,
     configuration_step,
-    characteristic_step,
+    characteristic_step, diagonal_step,
     frame_step,
     numeric_principal_steps,
     principal_steps,
@@ -146,7 +146,7 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     J_hat = (J / scale).applyfunc(tidy)
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
     poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
-    steps = [characteristic_step(scale, poly)]
+    steps = [diagonal_step() if J_hat.is_diagonal() else characteristic_step(scale, poly)]
     found = _closed_form(J_hat, poly)
     if found is None:
         if J_hat.free_symbols:

@@ -7,6 +7,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.form.arrange import scaled_matrix
+from rbdsolve.form.factor import factored
 from rbdsolve.form.display import Label, Product, Relation, Scaled, Terms
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
@@ -99,12 +100,18 @@ def characteristic_step(scale: sp.Expr, poly: sp.Poly) -> st.Step:
                        Relation(sp.Symbol("J_0"), scale), Relation(_cubic(poly), sp.Integer(0)))
 
 
+def diagonal_step() -> st.Step:
+    """A diagonal tensor: no characteristic equation, the moments are read off."""
+    return st.note("The tensor is diagonal in these axes: they are principal axes, and the principal "
+                   "moments are its diagonal entries.")
+
+
 def principal_steps(moments: list[sp.Expr], axes: list[sp.Matrix], repeated: list[sp.Expr]) -> list[st.Step]:
     """Each moment with its unit axis, then a note on each repeated moment."""
     steps = []
     for i, (moment, axis) in enumerate(zip(moments, axes), start=1):
         steps.append(st.result(f"Principal moment {i} and its axis (a unit vector):",
-                               Relation(sp.Symbol(f"J_{i}"), moment),
+                               Relation(sp.Symbol(f"J_{i}"), factored(moment)),
                                Relation(sp.Symbol(f"e_{i}"), _unit_display(axis))))
     for value in repeated:
         where = ("every axis is a principal axis" if moments.count(value) == 3 else

@@ -10,6 +10,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
 from rbdsolve.form.display import Product, Relation, Terms
+from rbdsolve.form.factor import factored, no_longer
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
@@ -20,7 +21,7 @@ from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAns
 def descending(poly: sp.Poly) -> Terms:
     """25/48 μ² − 37/24 μ + 1: highest power first, as an exam solution writes it."""
     x = poly.gens[0]
-    return Terms(tuple(Product(c, (x**k,) if k else ()) for (k,), c in poly.terms()))
+    return Terms(tuple(Product(factored(c), (x**k,) if k else ()) for (k,), c in poly.terms()))
 
 
 def _repeated_notes(eigenvalues: tuple[sp.Expr, ...]) -> list[st.Step]:
@@ -58,7 +59,8 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
     for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
         vector = sp.ImmutableMatrix([shape]) if shape else None
         if motion is Motion.OSCILLATION:
-            rel = [Relation(sp.Symbol(f"omega_{i}"), sp.Pow(lam, sp.S.Half, evaluate=False), more=(w,))]
+            root = sp.Pow(lam, sp.S.Half, evaluate=False)
+            rel = [Relation(sp.Symbol(f"omega_{i}"), root, more=() if no_longer(root, w) else (w,))]
             text = f"Mode {i}: λ > 0, an oscillation at ω = √λ with amplitudes a:"
         elif motion is Motion.GROWTH:
             rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]

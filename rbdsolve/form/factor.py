@@ -1,0 +1,170 @@
+"""Factored forms for reading: what a worked solution factors out of a coefficient.
+
+    3/4 R² m − 3/2 R m r + 3/4 m r²     →   3/4 m (R − r)²
+    a⁴ − a²b² − a²c² + b²c²             →   (a² − b²)(a² − c²)
+    R g m − g m r                       →   g m (R − r)
+
+``factored`` is the one rule: factor over the rationals (sin θ, cos θ, q̇ … taken as
+symbols, so sin²θ + cos²θ is not touched), put a difference of squares back together
+where both halves are there, and keep the result only if it is no longer than what it
+replaces (counted in printed operations) — a rule that would lengthen an expression is
+not applied. Nothing here changes what an expression is.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.printers import to_unicode
+
+MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs more than it reads
+
+
+def factored(expr: sp.Expr) -> sp.Expr:
+    """``expr`` with each sum in it factored for reading (``factored_sum``), where that
+    prints no longer; sin θ, cos θ, q̇ … are taken as symbols, and π too where that
+    reads shorter ((7π² − 128π + 1024)/(3 (π − 16)²))."""
+    if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.has(sp.Add):
+        return expr
+    if sp.count_ops(expr) > MAX_OPS or expr.has(sp.Float):
+        return expr
+    atoms = expr.atoms(sp.Function, sp.Derivative)
+    candidates = [_factored_over(expr, atoms)]
+    if expr.has(sp.pi):
+        candidates.append(_factored_over(expr, atoms | {sp.pi}))
+    candidates.append(_number_distributed(expr))
+    best = min(candidates, key=lambda c: len(to_unicode(c)))
+    return best if len(to_unicode(best)) <= len(to_unicode(expr)) else expr
+
+
+def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
+    """``factored_sum`` with the given atoms taken as symbols."""
+    table = {f: sp.Dummy() for f in atoms}
+    back = {v: k for k, v in table.items()}
+    plain = expr.xreplace(table)
+    if plain.is_Add:
+        return factored_sum(plain).xreplace(back)
+    factors = sp.Mul.make_args(plain)
+    turned = [_factored_power(f) for f in factors]
+    if list(factors) == turned:
+        return expr  # (rebuilding the product could lose a form such as −(R + r))
+    return sp.Mul(*turned).xreplace(back)
+
+
+def _number_distributed(expr: sp.Expr) -> sp.Expr:
+    """A rational coefficient taken into a sum of numbers: 1/192 a⁴ σ (256 − 15π) as
+    a⁴ σ (4/3 − 5π/64), the form the tensor's entries have."""
+    coeff, rest = expr.as_coeff_Mul()
+    numbers = [f for f in sp.Mul.make_args(rest) if f.is_Add and not f.free_symbols]
+    if not coeff.is_Rational or coeff == 1 or len(numbers) != 1:
+        return expr
+    others = [f for f in sp.Mul.make_args(rest) if f is not numbers[0]]
+    return sp.Mul(sp.expand(coeff * numbers[0]), *others)
+
+
+def _factored_power(factor: sp.Expr) -> sp.Expr:
+    base, exp = factor.as_base_exp()
+    return factored_sum(base) ** exp if base.is_Add else factor
+
+
+def factored_sum(total: sp.Add) -> sp.Expr:
+    """content × primitive part, the primitive part factored over the rationals where it
+    splits: 3/4 R² m − 3/2 R m r + 3/4 m r² = 3/4 m (R − r)², l₁m₁ + l₁m₂ + l₂m₁ + l₂m₂
+    = (l₁ + l₂)(m₁ + m₂). The content is the common monomial, with the common rational
+    when every coefficient is rational (1/12 m (4a² + b²)), and −1 when every term is
+    negative; a coefficient with π keeps its fraction (R² m (3/4 − 4 cos θ/(3π)))."""
+    terms = sp.Add.make_args(sp.expand(total))
+    content = _content(terms)
+    inner = sp.expand(total / content)
+    symbols = sorted(inner.free_symbols, key=sp.default_sort_key)
+    if symbols and inner.is_polynomial(*symbols):
+        if _splits(sp.Poly(inner, *symbols)):
+            inner = squares_joined(sp.factor(inner))
+    elif symbols:  # a rational function: one fraction, if that reads shorter
+        whole = squares_joined(sp.factor(sp.together(total)))
+        if len(to_unicode(whole)) < len(to_unicode(sp.Mul(content, inner))):
+            return whole
+    if content == 1:
+        return inner
+    return sp.Mul(content, inner, evaluate=not content.is_Number)
+
+
+def _content(terms: tuple[sp.Expr, ...]) -> sp.Expr:
+    """The common factor of the terms of a sum: powers of the bases every term has (to
+    the least power), the rationals' gcd when every coefficient is rational, −1 when
+    every term is negative."""
+    powers: dict[sp.Expr, sp.Expr] | None = None
+    for term in terms:
+        mine: dict[sp.Expr, sp.Expr] = {}
+        for factor in sp.Mul.make_args(term.as_coeff_Mul()[1]):
+            base, exp = factor.as_base_exp()
+            if base.is_Atom and not base.is_Number and exp.is_Rational:
+                mine[base] = mine.get(base, 0) + exp
+        powers = mine if powers is None else {
+            b: min(powers[b], mine[b]) for b in powers.keys() & mine.keys()}
+    content = sp.Mul(*[b**e for b, e in (powers or {}).items()])
+    coefficients = [t.as_coeff_Mul()[0] for t in terms]
+    rests = [t.as_coeff_Mul()[1] / content for t in terms]
+    if all(c.is_Rational for c in coefficients) and not any(_irrational(r) for r in rests):
+        number = sp.gcd_list([sp.Rational(c).p for c in coefficients]) / sp.ilcm(*[sp.Rational(c).q for c in coefficients])
+        content *= sp.Rational(number)
+    if all(c.is_negative for c in coefficients):
+        content = -content
+    return content
+
+
+def _irrational(rest: sp.Expr) -> bool:
+    """Does a term carry a number that is not rational (π, √2)?"""
+    return any(f.is_number for f in sp.Mul.make_args(rest))
+
+
+def _splits(poly: sp.Poly) -> bool:
+    """Whether a polynomial has more than one irreducible factor, or a repeated one."""
+    factors = poly.factor_list()[1]
+    return len(factors) > 1 or any(k > 1 for _, k in factors)
+
+
+def squares_joined(expr: sp.Expr) -> sp.Expr:
+    """(a − b)(a + b) → a² − b² wherever both factors are in one product (to the same
+    power), as the worked solutions write (a² − b²)(a² − c²); other factors are kept."""
+    if not expr.is_Mul:
+        return expr
+    factors = list(sp.Mul.make_args(expr))
+    joined: list[sp.Expr] = []
+    while factors:
+        first = factors.pop(0)
+        partner = _conjugate(first, factors)
+        if partner is None:
+            joined.append(first)
+            continue
+        factors.remove(partner)
+        (base, exp), other = first.as_base_exp(), partner.as_base_exp()[0]
+        joined.append(sp.expand(base * other) ** exp)
+    return sp.Mul(*joined)
+
+
+def _conjugate(factor: sp.Expr, others: list[sp.Expr]) -> sp.Expr | None:
+    """The factor among ``others`` that is (u − v)**n for ``factor`` = (u + v)**n (or
+    the other way round), if any: their product is u² − v²."""
+    base, exp = factor.as_base_exp()
+    if not (base.is_Add and len(base.args) == 2):
+        return None
+    u, v = base.args
+    for other in others:
+        b, e = other.as_base_exp()
+        if e == exp and b.is_Add and len(b.args) == 2 and b != base and (
+                {b, -b} & {u - v, v - u}) and base in (u + v,):
+            return other
+    return None
+
+
+def no_longer(shown: sp.Expr, other: sp.Expr) -> bool:
+    """Whether ``shown`` prints no longer than ``other``: then ``other`` need not follow it
+    (ω₁ = √(2g/(3(R − r))), without "= 1/3 √6 √g √(1/(R − r))")."""
+    return len(to_unicode(shown)) <= len(to_unicode(other))
+
+
+def _length(expr: sp.Expr) -> int:
+    """Printed operations: + and − count, as do products and powers; a rational
+    coefficient counts once."""
+    return int(sp.count_ops(expr))

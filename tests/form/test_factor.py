@@ -1,0 +1,56 @@
+"""Factored forms for reading (rbdsolve.form.factor): the forms the seed exam's worked
+solutions write, each the same expression, and no rule applied where it lengthens."""
+
+import pytest
+import sympy as sp
+
+from rbdsolve.form.display import Product, Terms
+from rbdsolve.form.factor import factored, squares_joined
+from rbdsolve.form.printers import to_unicode
+
+R, r, m, g, a, b, c, e, M = sp.symbols("R r m g a b c e M", positive=True)
+l1, l2, m1, m2, m_a, th, W = sp.symbols("l1 l2 m1 m2 m_a theta Omega", positive=True)
+
+CASES = [
+    # (expression, how a worked solution writes it)
+    (sp.Rational(3, 4) * m * (R**2 - 2 * R * r + r**2), "3/4 m (R − r)²"),
+    (a**4 - a**2 * b**2 - a**2 * c**2 + b**2 * c**2, "(a² − b²) (a² − c²)"),
+    (R * g * m - g * m * r, "g m (R − r)"),
+    (l1 * m1 + l1 * m2 + l2 * m1 + l2 * m2, "(l₁ + l₂) (m₁ + m₂)"),
+    (a**2 * m / 3 + b**2 * m / 12, "1/12 m (4 a² + b²)"),
+    (R * g * m - a * g * m / 2, "1/2 g m (2 R − a)"),
+    (-2 * g * m - g * m_a, "−g (2 m + mₐ)"),
+    (3 * R**2 * m / 4 - 4 * R**2 * m * sp.cos(th) / (3 * sp.pi), "R² m (3/4 − 4 cos(θ)/(3 π))"),
+]
+
+
+@pytest.mark.parametrize("expr, form", CASES, ids=[f for _, f in CASES])
+def test_the_exam_form_of_a_sum(expr, form):
+    shown = factored(sp.expand(expr))
+    assert sp.simplify(shown - expr) == 0  # the same expression
+    assert to_unicode(shown) == form
+
+
+@pytest.mark.parametrize("expr", [
+    e + 1, a - b, g - R * W**2, 9 * sp.pi - 16,
+    -R**2 * m * W**2 * sp.sin(th)**2 / 2 - R * g * m * sp.cos(th),  # −1/2 R m (…) is no shorter
+    12 * R**2 * th**2 + 4 * a**2 + b**2,  # irreducible, nothing in common
+])
+def test_no_rule_that_lengthens_or_does_nothing(expr):
+    assert to_unicode(factored(expr)) == to_unicode(expr)
+
+
+def test_a_difference_of_squares_is_put_back_together():
+    assert squares_joined((a - b) * (a + b) * (a - c) * (a + c)) == (a**2 - b**2) * (a**2 - c**2)
+    assert squares_joined((a - b) * (a + c)) == (a - b) * (a + c)  # no conjugate pair: kept
+
+
+def test_numbers_first_and_zero_terms_dropped():
+    assert to_unicode((1 + e) * m) == "m (1 + e)"
+    assert to_unicode(1 - e**2) == "1 − e²"
+    terms = Terms((Product(m, (sp.Symbol("x"),)), Product(sp.Integer(0), (sp.Symbol("y"),))))
+    assert to_unicode(terms) == "m x"
+
+
+def test_a_coefficient_over_a_symbol_divides_the_whole():
+    assert to_unicode(Product(1 / m, (sp.Symbol("lambda_A"),))) == "λ_A/m"
