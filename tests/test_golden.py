@@ -10,11 +10,13 @@ checked; equilibria are matched by their coordinates, in any order.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
 import yaml
 
+from rbdsolve.cli.writing import Look, rendered_text
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.json import report_object
@@ -42,6 +44,7 @@ def test_golden(expected_file: Path) -> None:
         assert result["ok"], f"{result['question']}: {result['error']}"
         compare(result["answers"], want["answers"], result["question"])
         compare_numbers(result["values"], want.get("values", {}), result["question"])
+    assert_reads_clean(rendered_text(report, Look(width=80)))
 
 
 def compare(got, want, where: str) -> None:
@@ -63,6 +66,37 @@ def compare(got, want, where: str) -> None:
         assert got == want, f"{where}: {got} != {want}"
     else:
         assert same(str(got), str(want)), f"{where}: {got} != {want}"
+
+
+SCANS = {
+    # what the printed text of a solution must never have (issue 27)
+    "sympy syntax in prose": re.compile(r"\*\*|[A-Za-z0-9)]\*[A-Za-z(]|sqrt\(|Derivative\(|Integral\(|lamda"),
+    "a zero term": re.compile(r"[+−] 0(?![\d.])"),
+    "a binomial with a leading minus": re.compile(r"\(−[^(),\[\]]* [+−] [^(),\[\]]*\)"),
+    "a float that is zero within rounding": re.compile(r"= −?\d(\.\d+)?e-(1[2-9]|[2-9]\d)"),
+    "trailing spaces": re.compile(r"[ \t]+$", re.MULTILINE),
+}
+
+
+def assert_reads_clean(text: str) -> None:
+    """The scan of issue 27 over one printed solution; an error bound may be tiny."""
+    for what, pattern in SCANS.items():
+        found = [m for m in pattern.finditer(text)
+                 if "bound" not in _line(text, m.start()) and "error" not in _line(text, m.start())]
+        assert not found, f"{what}: {_line(text, found[0].start())!r}"
+
+
+def _line(text: str, at: int) -> str:
+    return text[text.rfind("\n", 0, at) + 1:text.find("\n", at) if text.find("\n", at) >= 0 else None]
+
+
+def test_the_scan_finds_what_it_looks_for() -> None:
+    """Each pattern catches the instance the issue listed (so the scan can fail)."""
+    for bad in ["T = 3*m*r**2/4", "1/2 m r² ω̇₃ + 0 ω₁ ω₂ = 0", "λ₁ = −2g/(3 (−R + r))",
+                "θ = −3.08148791102e-32", "T = m ẋ² "]:
+        with pytest.raises(AssertionError):
+            assert_reads_clean(bad)
+    assert_reads_clean("(exact, relative error ≤ 3.8e-16)\nθ ∈ (−π, π]\n    λ = 2 g/(3 (R − r))")
 
 
 def compare_numbers(got, want, where: str) -> None:

@@ -78,10 +78,10 @@ def _renderer(fmt: str, look: Look) -> Callable:
         from rbdsolve.render.latex import body
 
         return lambda report: "\n".join(body(report))
-    return lambda report: _terminal_text(report, look)
+    return lambda report: rendered_text(report, look)
 
 
-def _terminal_text(report, look: Look) -> str:
+def rendered_text(report, look: Look) -> str:
     """The rich rendering of one report, as the text (and colours) the console shows."""
     from rich.console import Console
 

@@ -56,8 +56,9 @@ def _number_distributed(expr: sp.Expr) -> sp.Expr:
     a⁴ σ (4/3 − 5π/64), the form the tensor's entries have."""
     coeff, rest = expr.as_coeff_Mul()
     numbers = [f for f in sp.Mul.make_args(rest) if f.is_Add and not f.free_symbols]
-    if not coeff.is_Rational or coeff == 1 or len(numbers) != 1:
-        return expr
+    over_a_sum = any(f.is_Pow and f.exp.is_negative and f.base.is_Add for f in sp.Mul.make_args(rest))
+    if not coeff.is_Rational or coeff == 1 or len(numbers) != 1 or over_a_sum:
+        return expr  # (31π/12 − 64/3 − π²/64)/(π − 16) would read worse than one fraction
     others = [f for f in sp.Mul.make_args(rest) if f is not numbers[0]]
     return sp.Mul(sp.expand(coeff * numbers[0]), *others)
 

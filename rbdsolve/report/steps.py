@@ -6,11 +6,14 @@ given, what is defined, the equations, what is substituted, the results, and not
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import Enum
 from typing import Mapping
 
+import sympy as sp
+
 from rbdsolve.form.display import Relation
+from rbdsolve.form.factor import factored
 
 
 class StepKind(Enum):
@@ -51,7 +54,17 @@ def substitution(text: str, *math: Relation) -> Step:
 
 
 def result(text: str, *math: Relation) -> Step:
-    return Step(StepKind.RESULT, text, math)
+    """A result, each value in its factored form where that reads no longer (ν = Ω √((a² −
+    b²)(a² − c²))/…): the one place every family's answers pass on their way to print."""
+    return Step(StepKind.RESULT, text, tuple(_factored(rel) for rel in math))
+
+
+def _factored(rel: Relation) -> Relation:
+    """The factors of a product factored (the sums under a root, over a fraction); a sum
+    at the top is left as its solver ordered it (F's time part apart from the rest)."""
+    rhs = factored(rel.rhs) if _product(rel.rhs) else rel.rhs
+    more = tuple(factored(x) if _product(x) else x for x in rel.more)
+    return rel if (rhs is rel.rhs and more == rel.more) else replace(rel, rhs=rhs, more=more)
 
 
 def note(text: str, *math: Relation) -> Step:
@@ -112,3 +125,7 @@ class ProblemReport:
     @property
     def solved(self) -> bool:
         return all(s.solved for s in self.solutions)
+
+
+def _product(value) -> bool:
+    return isinstance(value, sp.Expr) and not value.is_Add
