@@ -81,13 +81,26 @@ def factored_sum(total: sp.Add) -> sp.Expr:
     if symbols and inner.is_polynomial(*symbols):
         if _splits(sp.Poly(inner, *symbols)):
             inner = squares_joined(sp.factor(inner))
-    elif symbols:  # a rational function: one fraction, if that reads shorter
-        whole = squares_joined(sp.factor(sp.together(total)))
+    elif symbols:
+        whole = squares_joined(sp.factor(sp.together(total)))  # one fraction, if shorter
         if len(to_unicode(whole)) < len(to_unicode(sp.Mul(content, inner))):
             return whole
+        return _polynomial_part_factored(total)
     if content == 1:
         return inner
     return sp.Mul(content, inner, evaluate=not content.is_Number)
+
+
+def _polynomial_part_factored(total: sp.Add) -> sp.Expr:
+    """A sum with roots in it: its polynomial terms factored among themselves, the rest
+    kept, (l₂ − l₁)(m₁ + m₂) + √(m₁ + m₂) √(…) for l₂m₁ − l₁m₁ − l₁m₂ + l₂m₂ + √…"""
+    symbols = sorted(total.free_symbols, key=sp.default_sort_key)
+    terms = sp.Add.make_args(total)
+    polynomial = [x for x in terms if x.is_polynomial(*symbols)]
+    if len(polynomial) < 2 or len(polynomial) == len(terms):
+        return total
+    rest = [x for x in terms if not x.is_polynomial(*symbols)]
+    return sp.Add(factored_sum(sp.Add(*polynomial)), *rest)
 
 
 def _content(terms: tuple[sp.Expr, ...]) -> sp.Expr:

@@ -63,6 +63,8 @@ def _factored(rel: Relation) -> Relation:
     """The factors of a product factored (the sums under a root, over a fraction); a sum
     at the top is left as its solver ordered it (F's time part apart from the rest)."""
     rhs = factored(rel.rhs) if _product(rel.rhs) else rel.rhs
+    if isinstance(rhs, sp.MatrixBase) and 1 in rhs.shape:  # a vector, entry by entry
+        rhs = rhs.applyfunc(lambda x: factored(x) if _product(x) else x)
     more = tuple(factored(x) if _product(x) else x for x in rel.more)
     return rel if (rhs is rel.rhs and more == rel.more) else replace(rel, rhs=rhs, more=more)
 
