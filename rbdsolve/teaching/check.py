@@ -1,0 +1,195 @@
+"""A student's check: is my answer right? Without giving the answer away.
+
+    check(problem, entries) -> CheckRun
+
+The problem is solved exactly once, its parameters symbolic. Each entry
+``ADDRESS = EXPRESSION`` names one answer (teaching/addresses.py) and gives the student's
+expression in the problem's own symbols, read by the same safe parser as a problem file
+(problem/expr.py: a whitelist of syntax, never eval or sympify) and folded with the
+model's symbols (positive where declared), so that sqrt(g/r) means what the problem
+means. teaching/compare.py gives the verdict. A malformed entry (an unknown answer, an
+unknown symbol, a non-expression) is one message; the others are still checked.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from enum import Enum
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, Location
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.model.assumptions import admissible_sample
+from rbdsolve.model.build import Model, build_model
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import Problem
+from rbdsolve.report.tree import label, leaves
+from rbdsolve.solvers import Options, RouteChoice, solve_problem
+from rbdsolve.teaching.addresses import resolve
+from rbdsolve.teaching.compare import Sampler, compare
+from rbdsolve.teaching.files import read_file
+from rbdsolve.teaching.variants import question_labels
+from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Undecided, Verdict
+
+EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One answer to check: the address as written, the expression's text and where
+    the expression starts (a file's line and column, or an --answer option)."""
+
+    address: str
+    text: str
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Checked:
+    """One checked answer: its address (the full path), the expression as given, the
+    verdict, and rbdsolve's answer in unicode (shown only when asked)."""
+
+    address: str
+    given: str
+    verdict: Verdict
+    answer: str
+    loc: Location
+
+    @property
+    def right(self) -> bool:
+        return self.verdict.right
+
+
+@dataclass(frozen=True)
+class CheckRun:
+    file: str
+    checked: tuple[Checked, ...]
+    errors: tuple[InputError, ...]
+
+
+def read_entry(line: str, loc: Location) -> Entry:
+    """'ADDRESS = EXPRESSION'; the expression's location is its column in ``line``."""
+    address, sep, text = line.partition("=")
+    if not sep or text.startswith("="):
+        raise InputError(f"expected 'ANSWER = EXPRESSION', e.g. '{EXAMPLE}'", loc)
+    return Entry(address, text, loc.shifted(len(address) + 1))
+
+
+def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
+    """An answers file: one 'ADDRESS = EXPRESSION' a line; '#' starts a comment line."""
+    entries, errors = [], []
+    for n, line in enumerate(read_file(path).splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            entries.append(read_entry(line, Location(path, n, 1)))
+        except InputError as exc:
+            errors.append(exc)
+    if not entries and not errors:
+        errors.append(InputError(f"no answers in the file; write one a line, e.g. '{EXAMPLE}'", Location(path, 1, 1)))
+    return entries, errors
+
+
+def check(problem: Problem, entries: list[Entry], budget: float | None = None) -> CheckRun:
+    """Each entry's verdict against the exact solution of ``problem``."""
+    model = build_model(problem)
+    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
+    kinds = question_labels([s.question for s in report.solutions])
+    answers = {label((q, *path)): leaf for q, s in zip(kinds, report.solutions) if s.answers is not None
+               for path, leaf in leaves(s.answers)}
+    unsolved = {q: s.error for q, s in zip(kinds, report.solutions) if s.answers is None}
+    sampler = _sampler(model)
+    checked, errors = [], []
+    for entry in entries:
+        try:
+            checked.append(_check_one(entry, model, answers, unsolved, sampler))
+        except InputError as exc:
+            errors.append(exc)
+    return CheckRun(problem.file, tuple(checked), tuple(errors))
+
+
+def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler) -> Checked:
+    head = "".join(entry.address.split()).split(".", 1)[0]
+    if head in unsolved:
+        return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
+                                                           f"({unsolved[head]})"), "", entry.loc)
+    address = resolve(entry.address, list(answers), Location(entry.loc.file, entry.loc.line, 1))
+    right = answers[address]
+    if isinstance(right, Enum):
+        return _check_word(entry, address, right)
+    if not isinstance(right, sp.Expr):
+        what = "has no value here" if right is None else "is not an expression"
+        raise InputError(f"'{address}' {what}, so it cannot be checked", entry.loc)
+    given = _read(entry, model)
+    verdict = compare(given, right, sampler, _is_angle(address, model))
+    return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
+
+
+def _check_word(entry: Entry, address: str, right: Enum) -> Checked:
+    """A kind (a stability, a motion): the same word, in any case."""
+    given = entry.text.strip()
+    if given.lower() == right.value:
+        verdict: Verdict = Equivalent(Proof.SIMPLIFIED)
+    else:
+        choices = ", ".join(m.value for m in type(right) if m.value != "depends")
+        if given.lower() not in {m.value for m in type(right)}:
+            raise InputError(f"'{given}' is not one of: {choices}", entry.loc)
+        verdict = Different((), given, right.value)
+    return Checked(address, given, verdict, right.value, entry.loc)
+
+
+def scope(problem: Problem) -> ex.Scope:
+    """The names a student's answer may use: the parameters and unknowns, the
+    coordinates (θ, and their rates dot(θ), ddot(θ)), given functions of time, and t."""
+    coordinates = {c.name for c in problem.coordinates}
+    functions = {p.name for p in problem.prescribed}
+    names = {p.name for p in problem.parameters} | set(problem.unknowns) | coordinates | functions | {"t"}
+    return ex.Scope(frozenset(names), frozenset(), frozenset(coordinates | functions))
+
+
+def _read(entry: Entry, model: Model) -> sp.Expr:
+    """The student's expression in the model's symbols, coordinates as functions of time
+    (as the answers are)."""
+    names = scope(model.problem)
+    try:
+        parsed = ex.parse(entry.text, entry.loc, names)
+    except InputError as exc:  # an unknown symbol with no close name: say which there are
+        if exc.message.startswith("unknown symbol") and "(" not in exc.message:
+            known = ", ".join(sorted(names.scalars - {"t"}, key=str.lower))
+            raise InputError(f"{exc.message} (this problem's symbols are {known}, and t)", exc.location) from None
+        raise
+    if parsed.kind is not ex.Kind.SCALAR:
+        raise InputError("give one number or expression, not a vector: check a vector's entries one by one, "
+                         "e.g. 'modes.shapes[1][2] = 4/3'", entry.loc)
+    return model.state.to_time(model.symbols.scalar(parsed))
+
+
+def _is_angle(address: str, model: Model) -> bool:
+    """An equilibrium's or a mode's coordinate that is an angle: equal up to whole turns."""
+    parts = address.split(".")
+    if len(parts) < 2 or parts[-2] not in ("at", "about"):
+        return False
+    q = model.symbols.coordinates.get(parts[-1])
+    return q is not None and q in model.angles
+
+
+def _sampler(model: Model) -> Sampler:
+    """Points that satisfy the model's assumptions; parameters positive where declared."""
+    parameters = tuple(model.symbols.parameters.values())
+    names = {s: to_unicode(s) for s in parameters}
+    names |= {q: to_unicode(sp.Symbol(n)) for n, q in model.symbols.coordinates.items()}
+
+    def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
+        wanted = list(dict.fromkeys([*symbols, *(s for a in model.assumptions for s in a.difference.free_symbols)]))
+        if not nice:
+            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200)
+        for _ in range(50):
+            point = {s: sp.Integer(rng.randint(1, 9)) * (1 if s.is_positive or rng.random() < 0.5 else -1)
+                     for s in wanted}
+            if admissible_sample(model.assumptions, model.symbols, rng, fixed=point, symbols=[], tries=1):
+                return point
+        return None
+
+    return Sampler(draw, names, parameters)
