@@ -74,7 +74,10 @@ def _how_different(given: sp.Expr, right: sp.Expr, values: list, sampler: Sample
         return Equivalent(Proof.ANGLE)
     factor = _constant_ratio(values)
     if factor is not None:
-        return _factor(factor)
+        verdict = _factor(factor)
+        constant = not (given.free_symbols | right.free_symbols)
+        if not constant or not isinstance(verdict, Factor) or verdict.slips:
+            return verdict  # 3/4 for 4/3 is a different number, not "a factor 9/16"
     if all(_close(a, b * b) for _, a, b in values):
         return Root(missing=True)
     if all(_close(a * a, b) for _, a, b in values):

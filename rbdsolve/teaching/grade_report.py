@@ -32,7 +32,7 @@ def _checked(c: Checked, show: bool) -> dict:
            "text": describe(v, show), "slips": [s.value for s in slips_of(v)]}
     if isinstance(v, Equivalent):
         out["how"] = v.how.value
-    if isinstance(v, Factor):
+    if isinstance(v, Factor) and (show or v.slips):
         out["factor"] = str(v.factor)
     if isinstance(v, EqualFor):
         out["condition"] = v.condition

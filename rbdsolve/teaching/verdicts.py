@@ -97,9 +97,12 @@ class Factor:
     right = False
     name = "factor"
 
-    def describe(self) -> str:
+    def describe(self, show: bool = False) -> str:
+        """The factor itself only when the answer may be shown: with yours, it gives it."""
         if self.slips:
             return "wrong: " + "; ".join(s.text for s in self.slips)
+        if not show:
+            return "wrong: off by a constant factor"
         return f"wrong: off by a constant factor {_shown(self.factor)} (yours is {_shown(self.factor)} × the answer)"
 
 
@@ -173,7 +176,8 @@ def slips_of(verdict: Verdict) -> tuple[Slip, ...]:
 
 
 def describe(verdict: Verdict, show: bool = False) -> str:
-    return verdict.describe(show) if isinstance(verdict, Different) else verdict.describe()
+    """The verdict in words; what would give the answer away only with ``show``."""
+    return verdict.describe(show) if isinstance(verdict, (Different, Factor)) else verdict.describe()
 
 
 def _shown(value: sp.Expr) -> str:
