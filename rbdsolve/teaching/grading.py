@@ -124,6 +124,8 @@ def read_key(path: str) -> Key:
         body = json.loads(text, parse_constant=_refuse_constant)
     except json.JSONDecodeError as exc:
         raise InputError(f"not JSON: {exc.msg}", Location(path, exc.lineno, exc.colno)) from None
+    except ValueError as exc:  # NaN or Infinity, refused by _refuse_constant
+        raise InputError(f"not strict JSON: {exc}", Location(path, 1, 1)) from None
     except RecursionError:
         raise InputError("the JSON is nested too deeply", Location(path, 1, 1)) from None
     if not isinstance(body, dict) or not isinstance(body.get("rows"), list) or "columns" not in body:
