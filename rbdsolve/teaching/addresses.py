@@ -63,6 +63,9 @@ def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
         return found[0]
     if len(found) > 1:
         raise InputError(f"'{address}' could be any of {', '.join(found)}: give the whole path", loc)
+    inside = [label for label in labels if label.startswith((address + "[", address + "."))]
+    if inside:
+        raise InputError(f"'{address}' holds several answers: check them one by one, e.g. {inside[0]}", loc)
     raise InputError(f"no answer is called '{address}'{_hint(address, labels)}", loc)
 
 

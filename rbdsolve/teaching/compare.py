@@ -36,6 +36,7 @@ CLOSE = 1e-12  # relative agreement that counts as equal at 30 digits
 NICE_POINTS = 3  # small integers first: a point the student can evaluate by hand
 RANDOM_POINTS = 5  # then log-uniform draws from 10⁻³ to 10³ (model.assumptions.admissible_sample)
 MAX_OPS = 300  # simplify and polynomial solving only below this size: they can take long past it
+MAX_ROOT_OPS = 2  # ... and names a value as short as 'm = 1', 'l = g/2': a longer one says little
 MAX_DEGREE = 4  # EqualFor solves a numerator polynomial of at most this degree in one parameter
 SEED = 25  # the points are drawn from a fixed seed: the same answer gets the same verdict
 
@@ -209,7 +210,8 @@ def _equal_where(given: sp.Expr, right: sp.Expr, sampler: Sampler) -> str | None
             continue
         if not 1 <= poly.degree() <= MAX_DEGREE:
             continue
-        roots = [r for r in sp.roots(poly) if _admissible_root(r, p, denominator, right)]
+        roots = [r for r in sp.roots(poly) if sp.count_ops(r) <= MAX_ROOT_OPS
+                 and _admissible_root(r, p, denominator, right)]
         if roots:
             name = sampler.names.get(p, str(p))
             return " or ".join(f"{name} = {to_unicode(r)}" for r in roots)

@@ -1,0 +1,121 @@
+"""``rbdsolve grade``: its messages and exit codes, on small scenes.
+
+A simple pendulum has λ = g/l, ω = √(g/l) (by hand: m l² θ̈ + m g l θ = 0). A solid
+cylinder rolling inside a hollow one of radius R > r has ω² = 2g/(3(R − r)) (by hand:
+T = ¾ m (R − r)² θ̇², V = −m g (R − r) cos θ): √(2g/3)/√(R − r) is that answer only
+where R > r, which the file's assumption says — so the check must sample there.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from click.testing import CliRunner
+
+from rbdsolve.cli import main
+
+from conftest import SIMPLE_PENDULUM
+
+PENDULUM = "title: Pendulum\n" + SIMPLE_PENDULUM + "questions:\n  - modes: {about: {theta: 0}}\n"
+
+ROLLING = """\
+title: A cylinder rolling inside a hollow cylinder
+parameters: {m: mass, r: radius of the cylinder, R: radius of the hollow, g: gravity}
+assumptions: [R > r]
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  cylinder: {shape: cylinder, mass: m, radius: r, height: 1}
+contacts:
+  C: {body: cylinder, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+questions:
+  - modes: {about: {theta: 0}}
+"""
+
+
+@pytest.fixture(scope="module")
+def pendulum(tmp_path_factory):
+    path = tmp_path_factory.mktemp("grade") / "pendulum.yaml"
+    path.write_text(PENDULUM, encoding="utf-8")
+    return path
+
+
+def grade(*args: str):
+    return CliRunner().invoke(main, ["grade", *map(str, args)])
+
+
+def test_every_answer_right_is_exit_0(pendulum) -> None:
+    result = grade(pendulum, "-a", "omega1 = sqrt(g/l)", "-a", "lambda1 = g/l", "-a", "modes.motions[1] = oscillation")
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines() == ["modes.frequencies[1] = sqrt(g/l): right",
+                                          "modes.eigenvalues[1] = g/l: right",
+                                          "modes.motions[1] = oscillation: right"]
+
+
+def test_an_answers_file_with_a_malformed_line(pendulum, tmp_path) -> None:
+    answers = tmp_path / "mine.txt"
+    answers.write_text("# my answers\nomega1 = sqrt(g/l)\nlambda1 g/l\n\nlambda1 = g*l\nomega1 = sqrt(g/L)\n"
+                       "lambda1 = g + l\n", encoding="utf-8")
+    result = grade(pendulum, answers)
+    assert result.exit_code == 2
+    right, equal_for, different = result.stdout.splitlines()
+    assert right == "modes.frequencies[1] = sqrt(g/l): right"
+    assert equal_for == "modes.eigenvalues[1] = g*l: wrong: equal only when l = 1"  # g l = g/l there
+    found = re.fullmatch(r"modes.eigenvalues\[1\] = g \+ l: wrong: different at g = (\d+), l = (\d+) "
+                         r"\(yours is ([\d.]+)\)", different)
+    g, l, yours = (float(x) for x in found.groups())
+    assert yours == g + l and g + l != g / l
+    assert result.stderr.splitlines() == [
+        f"{answers}:3:1: expected 'ANSWER = EXPRESSION', e.g. 'modes.frequencies[1] = sqrt(24*g/(25*r))'",
+        f"{answers}:6:17: unknown symbol 'L' (did you mean 'l'?)"]
+
+
+@pytest.mark.parametrize(("answer", "message"), [
+    ("modes.frequencies[0] = 1", "indices count from 1, as in the printed solution"),
+    ("omega = 1", "no answer is called 'omega'"),
+    ("modes.shapes[1] = [1, 0]", "'modes.shapes[1]' holds several answers: check them one by one"),
+    ("modes.growth_rates[1] = 0", "'modes.growth_rates[1]' has no value here"),
+    ("omega1 = sqrt(g/x)", "unknown symbol 'x' (this problem's symbols are g, l, m, theta, and t)"),
+    ("omega1 = __import__('os')", "is not allowed"),
+    ("modes.motions[1] = wobbly", "'wobbly' is not one of: oscillation, growth, neutral"),
+])
+def test_a_malformed_answer(pendulum, answer: str, message: str) -> None:
+    result = grade(pendulum, "-a", answer)
+    assert result.exit_code == 2
+    assert message in result.stderr
+    assert "Traceback" not in result.output
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    ((), "give the answers to check"),
+    (("-a", "omega1 = 1", "--answer", "x"), "expected 'ANSWER = EXPRESSION'"),
+])
+def test_usage(pendulum, args, message: str) -> None:
+    result = grade(pendulum, *args)
+    assert result.exit_code == 2 and message in result.stderr
+
+
+def test_a_variants_table_takes_a_csv_not_expressions(tmp_path) -> None:
+    table = tmp_path / "v.json"
+    table.write_text('{"columns": ["modes.frequencies[1]"], "rows": []}', encoding="utf-8")
+    assert "give the class's answers as a CSV" in grade(table, "-a", "omega1 = 1").stderr
+    assert "give the class's answers after" in grade(table).stderr
+    assert "no such file: nope.csv" in grade(table, "nope.csv").stderr
+
+
+def test_the_assumptions_decide_where_answers_are_compared(tmp_path) -> None:
+    path = tmp_path / "rolling.yaml"
+    path.write_text(ROLLING, encoding="utf-8")
+    answer = "omega1 = sqrt(2*g/3)/sqrt(R - r)"
+    assert grade(path, "-a", answer).exit_code == 0
+    path.write_text(ROLLING.replace("assumptions: [R > r]\n", ""), encoding="utf-8")
+    result = grade(path, "-a", answer)
+    assert result.exit_code == 1  # for R < r it is −1 times the answer: not the same expression
+
+
+def test_help_has_examples() -> None:
+    result = CliRunner().invoke(main, ["grade", "--help"])
+    assert result.exit_code == 0
+    assert "rbdsolve grade variants.json answers.csv" in result.output
+    assert "--answer 'modes.frequencies[1] = sqrt(24*g/(25*r))'" in result.output
