@@ -3,6 +3,7 @@ solution; a teacher grades a class's numeric answers against ``rbdsolve variants
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import click
@@ -52,7 +53,8 @@ FORMATS = ("text", "json")
               help="An answer to check, in the problem's symbols (repeatable).")
 @click.option("--show", is_flag=True, help="Also print rbdsolve's answer (a student check).")
 @click.option("--rtol", type=click.FloatRange(min=0, max=1), default=0.01, show_default=True,
-              help="A number is right within this relative tolerance of the key.")
+              help="A number is right within this relative tolerance of the key (a class's numbers; a "
+                   "student's number for a file whose parameters all have values).")
 @click.option("--atol", type=click.FloatRange(min=0), default=1e-9, show_default=True,
               help="...or within this absolute tolerance (for keys at or near 0).")
 @click.option("--sig-figs", type=click.IntRange(min=1, max=15), default=None,
@@ -79,17 +81,24 @@ def grade(file, answers, entries, show, rtol, atol, sig_figs, slip_credit, outpu
         run_guarded(debug, lambda: _grade_class(file, answers, entries, sig_figs, rtol, atol, slip_credit,
                                                 output, fmt))
     else:
-        run_guarded(debug, lambda: _check(file, answers, entries, show, output, fmt, budget))
+        run_guarded(debug, lambda: _check(file, answers, entries, show, output, fmt, _rule(rtol, atol, sig_figs,
+                                                                                           slip_credit), budget))
 
 
 append_help(grade, GRADE_EXAMPLES)
+
+
+def _rule(rtol: float, atol: float, sig_figs: int | None, slip_credit: float):
+    from rbdsolve.teaching.grading import Rule
+
+    return Rule(rtol, atol, sig_figs, slip_credit)
 
 
 # --- a student's check ---------------------------------------------------------------
 
 
 def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool, output: str | None,
-           fmt: str, budget: float = DEFAULT_BUDGET) -> ExitCode:
+           fmt: str, rule, budget: float = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.problem import load_file
     from rbdsolve.teaching.check import check, read_entries, read_entry
     from rbdsolve.teaching.grade_report import check_object, dumps
@@ -103,12 +112,13 @@ def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool,
             parsed.append(read_entry(text, Location("--answer", n, 1)))
         except InputError as exc:
             errors.append(exc)
-    run = check(load_file(file), parsed, budget)
-    errors += run.errors
+    run = check(load_file(file), parsed, budget, rule)
+    errors = sorted([*errors, *run.errors], key=lambda e: (e.location.line, e.location.column) if e.location else (0, 0))
+    run = replace(run, errors=tuple(errors))
     if output:
         write_text(dumps(check_object(run, show)), output)
     if fmt == "json":
-        write_text(dumps(check_object(run, show) | {"errors": [str(e) for e in errors]}), None)
+        write_text(dumps(check_object(run, show)), None)
     else:
         write_text("".join(_check_line(c, show) for c in run.checked), None)
     for error in errors:
@@ -132,7 +142,7 @@ def _check_line(checked, show: bool) -> str:
 def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_figs: int | None, rtol: float,
                  atol: float, slip_credit: float, output: str | None, fmt: str) -> ExitCode:
     from rbdsolve.teaching.grade_report import class_csv, class_object, dumps
-    from rbdsolve.teaching.grading import Rule, grade, read_key
+    from rbdsolve.teaching.grading import grade as grade_class, read_key
 
     if entries:
         raise InputError("--answer checks an expression against a problem file; with a variants table, "
@@ -141,7 +151,7 @@ def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_f
         raise InputError(f"give the class's answers after {file}: rbdsolve grade {file} answers.csv")
     if output and Path(output).suffix.lower() not in (".csv", ".json"):
         raise InputError(f"-o {output}: write the grades to a .csv or a .json file")
-    grades = grade(read_key(file), answers, Rule(rtol, atol, sig_figs, slip_credit))
+    grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit))
     if output:
         write_text(class_csv(grades) if output.lower().endswith(".csv") else dumps(class_object(grades)), output)
     if fmt == "json":

@@ -31,7 +31,8 @@ from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.compare import Sampler, compare
 from rbdsolve.teaching.files import read_file
 from rbdsolve.teaching.variants import question_labels
-from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Undecided, Verdict
+from rbdsolve.teaching.grading import Rule, slip_of
+from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Undecided, Verdict
 
 EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
 
@@ -92,8 +93,9 @@ def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
     return entries, errors
 
 
-def check(problem: Problem, entries: list[Entry], budget: float | None = None) -> CheckRun:
-    """Each entry's verdict against the exact solution of ``problem``."""
+def check(problem: Problem, entries: list[Entry], budget: float | None = None, rule: Rule = Rule()) -> CheckRun:
+    """Each entry's verdict against the exact solution of ``problem``; a number given
+    for an answer whose parameters all have values is held to ``rule``."""
     model = build_model(problem)
     report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
     kinds = question_labels([s.question for s in report.solutions])
@@ -104,13 +106,13 @@ def check(problem: Problem, entries: list[Entry], budget: float | None = None) -
     checked, errors = [], []
     for entry in entries:
         try:
-            checked.append(_check_one(entry, model, answers, unsolved, sampler))
+            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule))
         except InputError as exc:
             errors.append(exc)
     return CheckRun(problem.file, tuple(checked), tuple(errors))
 
 
-def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler) -> Checked:
+def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule) -> Checked:
     head = "".join(entry.address.split()).split(".", 1)[0]
     if head in unsolved:
         return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
@@ -123,8 +125,31 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
         what = "has no value here" if right is None else "is not an expression"
         raise InputError(f"'{address}' {what}, so it cannot be checked", entry.loc)
     given = _read(entry, model)
-    verdict = compare(given, right, sampler, _is_angle(address, model))
+    if _a_number_for_values(given, right, model):
+        verdict = _at_values(given, right, model, rule)
+    else:
+        verdict = compare(given, right, sampler, _is_angle(address, model))
     return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
+
+
+def _a_number_for_values(given: sp.Expr, right: sp.Expr, model: Model) -> bool:
+    """A number given for an answer whose every parameter has a value in the file."""
+    return not given.free_symbols and bool(right.free_symbols) and right.free_symbols <= set(model.values)
+
+
+def _at_values(given: sp.Expr, right: sp.Expr, model: Model, rule: Rule) -> Verdict:
+    """A student's number against the answer's at the file's values: the teacher's rule
+    (a tolerance: the student rounds), and the slips it names."""
+    ours, theirs = complex(sp.N(given)), complex(sp.N(right.xreplace(model.values)))
+    if ours.imag or theirs.imag:
+        return Undecided("the answer or yours is not a real number at the file's values")
+    if rule.agrees(ours.real, theirs.real):
+        return Equivalent(Proof.AT_VALUES)
+    slips = slip_of(ours.real, theirs.real, rule)
+    if slips:
+        return Slipped(slips)
+    point = tuple((to_unicode(s), f"{float(v):.6g}") for s, v in model.values.items() if s in right.free_symbols)
+    return Different(point, f"{ours.real:.6g}", f"{theirs.real:.6g}")
 
 
 def _check_word(entry: Entry, address: str, right: Enum) -> Checked:

@@ -58,9 +58,10 @@ FACTOR_SLIPS: tuple[tuple[sp.Expr, tuple[Slip, ...]], ...] = (
 class Proof(Enum):
     """How an equivalence was established."""
 
-    SIMPLIFIED = "simplified"  # the difference simplifies to 0
+    SIMPLIFIED = "simplified"  # the difference simplifies to 0 (or the same word, for a kind)
     SAMPLED = "sampled"  # equal at every admissible random point tried (30 digits)
     ANGLE = "angle"  # the same angle: they differ by whole turns, 2π k
+    AT_VALUES = "at_values"  # a number, within the tolerance of the answer at the file's values
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,8 @@ class Equivalent:
     name = "equivalent"
 
     def describe(self) -> str:
-        return "right (the same angle, whole turns apart)" if self.how is Proof.ANGLE else "right"
+        return {Proof.ANGLE: "right (the same angle, whole turns apart)",
+                Proof.AT_VALUES: "right (at the file's values, within the tolerance)"}.get(self.how, "right")
 
 
 @dataclass(frozen=True)
@@ -124,6 +126,19 @@ class Root:
 
 
 @dataclass(frozen=True)
+class Slipped:
+    """A number that is the answer at the file's values after these slips."""
+
+    slips: tuple[Slip, ...]
+
+    right = False
+    name = "slipped"
+
+    def describe(self) -> str:
+        return "wrong: " + "; ".join(s.text for s in self.slips)
+
+
+@dataclass(frozen=True)
 class EqualFor:
     """Equal only where ``condition`` holds (one parameter solved for), else different."""
 
@@ -168,7 +183,7 @@ class Undecided:
         return f"not decided: {self.reason}"
 
 
-Verdict = Equivalent | SignDiffers | Factor | Root | EqualFor | Different | Undecided
+Verdict = Equivalent | SignDiffers | Factor | Root | Slipped | EqualFor | Different | Undecided
 
 
 def slips_of(verdict: Verdict) -> tuple[Slip, ...]:

@@ -119,3 +119,19 @@ def test_help_has_examples() -> None:
     assert result.exit_code == 0
     assert "rbdsolve grade variants.json answers.csv" in result.output
     assert "--answer 'modes.frequencies[1] = sqrt(24*g/(25*r))'" in result.output
+
+
+def test_a_number_for_a_file_with_values(tmp_path) -> None:
+    """l = 2, g = 9.81: ω = √4.905 = 2.2147…, f = ω/2π = 0.35248…; a student's rounded
+    number is held to --rtol (1 % by default)."""
+    path = tmp_path / "pendulum.yaml"
+    path.write_text(PENDULUM + "values: {m: 1, l: 2, g: 9.81}\n", encoding="utf-8")
+    result = grade(path, "-a", "omega1 = 2.215", "-a", "omega1 = sqrt(g/l)", "-a", "omega1 = 0.3525",
+                   "-a", "omega1 = 2.3", "-a", "lambda1 = 4.9")
+    assert result.stdout.splitlines() == [
+        "modes.frequencies[1] = 2.215: right (at the file's values, within the tolerance)",
+        "modes.frequencies[1] = sqrt(g/l): right",
+        "modes.frequencies[1] = 0.3525: wrong: off by a factor 2π (ω ↔ f)",
+        "modes.frequencies[1] = 2.3: wrong: different at l = 2, g = 9.81 (yours is 2.3)",
+        "modes.eigenvalues[1] = 4.9: right (at the file's values, within the tolerance)"]
+    assert grade(path, "-a", "omega1 = 2.3", "--rtol", "0.05").exit_code == 0
