@@ -182,7 +182,8 @@ def _print_summary(grades) -> None:
         table.add_column(name, justify="left" if name == "slips" else "right")
     for t in tallies(grades):
         slips = ", ".join(f"{word} {n}" for word, n in t.slips.items()) or "-"
-        table.add_row(escape(t.answer), f"[green]{t.counts[Outcome.RIGHT]}[/green]", slips,
+        share = f" ({100 * t.counts[Outcome.RIGHT] / max(sum(t.counts.values()), 1):.0f} %)"
+        table.add_row(escape(t.answer), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
                       str(t.counts[Outcome.WRONG]), str(t.counts[Outcome.BLANK]), str(t.counts[Outcome.UNGRADED]))
     console = Console(highlight=False, width=100, no_color=True) if not click.get_text_stream("stdout").isatty() \
         else Console(highlight=False)
