@@ -28,13 +28,14 @@ from rbdsolve.problem.schema import Problem
 from rbdsolve.report.tree import label, leaves
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 from rbdsolve.teaching.addresses import resolve
-from rbdsolve.teaching.compare import Sampler, compare
+from rbdsolve.teaching.compare import Sampler, compare, value_at
 from rbdsolve.teaching.files import read_file
 from rbdsolve.teaching.variants import question_labels
 from rbdsolve.teaching.grading import Rule, slip_of
 from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Undecided, Verdict
 
 EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
+MAX_ENTRIES = 500  # a check is a student's sheet; each answer may take seconds to compare
 
 
 @dataclass(frozen=True)
@@ -96,6 +97,8 @@ def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
 def check(problem: Problem, entries: list[Entry], budget: float | None = None, rule: Rule = Rule()) -> CheckRun:
     """Each entry's verdict against the exact solution of ``problem``; a number given
     for an answer whose parameters all have values is held to ``rule``."""
+    if len(entries) > MAX_ENTRIES:
+        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts")
     model = build_model(problem)
     report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
     kinds = question_labels([s.question for s in report.solutions])
@@ -140,8 +143,8 @@ def _a_number_for_values(given: sp.Expr, right: sp.Expr, model: Model) -> bool:
 def _at_values(given: sp.Expr, right: sp.Expr, model: Model, rule: Rule) -> Verdict:
     """A student's number against the answer's at the file's values: the teacher's rule
     (a tolerance: the student rounds), and the slips it names."""
-    ours, theirs = complex(sp.N(given)), complex(sp.N(right.xreplace(model.values)))
-    if ours.imag or theirs.imag:
+    ours, theirs = value_at(given, {}), value_at(right.xreplace(model.values), {})
+    if ours is None or theirs is None or ours.imag or theirs.imag:
         return Undecided("the answer or yours is not a real number at the file's values")
     if rule.agrees(ours.real, theirs.real):
         return Equivalent(Proof.AT_VALUES)

@@ -22,12 +22,13 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
-from typing import Callable, Iterator, Mapping, Sequence
+from typing import Callable, Iterator, Mapping, Sequence, TypeVar
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.teaching.verdicts import (FACTOR_SLIPS, Different, EqualFor, Equivalent, Factor, Proof, Root,
                                         SignDiffers, Slip, Undecided, Verdict)
 
@@ -38,9 +39,13 @@ RANDOM_POINTS = 5  # then log-uniform draws from 10⁻³ to 10³ (model.assumpti
 MAX_OPS = 300  # simplify and polynomial solving only below this size: they can take long past it
 MAX_ROOT_OPS = 2  # ... and names a value as short as 'm = 1', 'l = g/2': a longer one says little
 MAX_DEGREE = 4  # EqualFor solves a numerator polynomial of at most this degree in one parameter
+SIMPLIFY_SECONDS = 3.0  # each step's time: a hostile expression makes the step inconclusive
+EVALUATE_SECONDS = 10.0
+SOLVE_SECONDS = 3.0
 SEED = 25  # the points are drawn from a fixed seed: the same answer gets the same verdict
 
 Point = Mapping[sp.Symbol, sp.Expr]
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -58,10 +63,12 @@ class Sampler:
 def compare(given: sp.Expr, right: sp.Expr, sampler: Sampler, angle: bool = False) -> Verdict:
     """The verdict on ``given`` against ``right`` (see the module docstring)."""
     given, right, names = _plain(given, right, sampler.names)
-    if _simplifies_to_zero(given - right):
+    if _timed(SIMPLIFY_SECONDS, "simplifying", lambda: _simplifies_to_zero(given - right), False):
         return Equivalent(Proof.SIMPLIFIED)
     symbols = sorted(given.free_symbols | right.free_symbols, key=str)
-    values = list(_values(given, right, symbols, sampler))
+    values = _timed(EVALUATE_SECONDS, "evaluating", lambda: list(_values(given, right, symbols, sampler)), None)
+    if values is None:
+        return Undecided(f"evaluating the answers took more than {EVALUATE_SECONDS} s")
     if not values:
         return Undecided("no admissible parameter values where both have a finite value")
     if all(_close(a, b) for _, a, b in values):
@@ -83,7 +90,7 @@ def _how_different(given: sp.Expr, right: sp.Expr, values: list, sampler: Sample
         return Root(missing=True)
     if all(_close(a * a, b) for _, a, b in values):
         return Root(missing=False)
-    condition = _equal_where(given, right, sampler)
+    condition = _timed(SOLVE_SECONDS, "solving", lambda: _equal_where(given, right, sampler), None)
     if condition is not None:
         return EqualFor(condition)
     point, a, b = next((p, a, b) for p, a, b in values if not _close(a, b))
@@ -108,15 +115,26 @@ def _plain(given: sp.Expr, right: sp.Expr, names: Mapping[sp.Symbol, str]):
     return given.xreplace(table), right.xreplace(table), shown
 
 
+def _timed(seconds: float, what: str, work: Callable[[], T], otherwise: T) -> T:
+    """``work()``, or ``otherwise`` when it runs past ``seconds`` or sympy fails on it:
+    a student's expression can be one that sympy's simplification expands without end
+    (sin(10**40*g)) or that overflows mpmath (exp(exp(exp(exp(10))))); neither is a
+    verdict, and the other steps still decide."""
+    try:
+        with within(seconds, what):
+            return work()
+    except OutOfTime:
+        return otherwise
+    except Exception:  # noqa: BLE001 - sympy's own failure on a hostile expression: inconclusive
+        return otherwise
+
+
 def _simplifies_to_zero(difference: sp.Expr) -> bool:
     if difference == 0:
         return True
     if sp.count_ops(difference) > MAX_OPS:
         return False
-    try:
-        return sp.simplify(difference) == 0
-    except (TypeError, ValueError, NotImplementedError, RecursionError):
-        return False
+    return sp.simplify(difference) == 0
 
 
 # --- values at admissible points -----------------------------------------------------
@@ -131,15 +149,16 @@ def _values(given: sp.Expr, right: sp.Expr, symbols: list[sp.Symbol], sampler: S
         point = {} if not symbols else sampler.draw(symbols, rng, k < NICE_POINTS)
         if point is None:
             continue
-        a, b = _at(given, point), _at(right, point)
+        a, b = value_at(given, point), value_at(right, point)
         if a is not None and b is not None:
             yield point, a, b
 
 
-def _at(expr: sp.Expr, point: Point) -> complex | None:
+def value_at(expr: sp.Expr, point: Point) -> complex | None:
+    """``expr`` at ``point`` to DIGITS digits, or None where it has no finite value."""
     try:
         value = complex(expr.evalf(DIGITS, subs=dict(point)))
-    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+    except Exception:  # noqa: BLE001 - no number there (zoo, nan, an overflow in mpmath)
         return None
     if value != value or abs(value) == float("inf"):
         return None

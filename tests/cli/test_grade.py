@@ -135,3 +135,18 @@ def test_a_number_for_a_file_with_values(tmp_path) -> None:
         "modes.frequencies[1] = 2.3: wrong: different at l = 2, g = 9.81 (yours is 2.3)",
         "modes.eigenvalues[1] = 4.9: right (at the file's values, within the tolerance)"]
     assert grade(path, "-a", "omega1 = 2.3", "--rtol", "0.05").exit_code == 0
+
+
+def test_a_hostile_expression_is_not_a_verdict_nor_a_crash(pendulum, monkeypatch) -> None:
+    """sympy's simplify expands sin(10**40*g) without end (cut at its time, here made
+    short), and exp(exp(exp(exp(10)))) overflows mpmath: neither reaches the user."""
+    from rbdsolve.teaching import compare
+
+    monkeypatch.setattr(compare, "SIMPLIFY_SECONDS", 0.3)
+    result = grade(pendulum, "-a", "omega1 = sin(10**40*g)", "-a", "omega1 = exp(exp(exp(exp(10))))",
+                   "-a", "omega1 = sqrt(g/l)")
+    assert result.exit_code == 1
+    first, second, third = result.stdout.splitlines()
+    assert first.startswith("modes.frequencies[1] = sin(10**40*g): wrong: different at")
+    assert second.endswith("not decided: no admissible parameter values where both have a finite value")
+    assert third.endswith("sqrt(g/l): right")
