@@ -103,6 +103,8 @@ def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool,
     from rbdsolve.teaching.check import check, read_entries, read_entry
     from rbdsolve.teaching.grade_report import check_object, dumps
 
+    if output and Path(output).suffix.lower() != ".json":
+        raise InputError(f"-o {output}: a check is written as JSON; give a .json file")
     if not entries and not answers:
         raise InputError("give the answers to check: --answer 'modes.frequencies[1] = sqrt(2*g/r)', "
                          "or a file of them after the problem")

@@ -4,7 +4,8 @@
 
 The key is the JSON table ``rbdsolve variants -o variants.json`` writes (one row per
 variant: its parameter values and its numeric answers). The answers are a CSV with a
-header ``student, variant, ANSWER, ANSWER, …`` — each ANSWER a column of the key or an
+header ``student, variant, ANSWER, ANSWER, …`` (or separated by ';', with decimal commas,
+as spreadsheets in much of Europe write it) — each ANSWER a column of the key or an
 alias (teaching/addresses.py: ``omega1`` for ``modes.frequencies[1]``) — and one row per
 student. Each number is right when it is within the Rule's tolerance of the key; a
 wrong one is said to be a slip (verdicts.Slip) when it is within that tolerance of the
@@ -169,7 +170,10 @@ def _row(row: object, i: int, width: int, kind_width: int, path: str):
 
 def grade(key: Key, answers_file: str, rule: Rule = Rule()) -> ClassGrades:
     """Every student's row graded against their variant (see the module docstring)."""
-    rows = list(csv.reader(io.StringIO(read_file(answers_file))))
+    text = read_file(answers_file)
+    first = text.split("\n", 1)[0]
+    semicolons = ";" in first and "," not in first  # a spreadsheet's CSV where the decimal mark is a comma
+    rows = list(csv.reader(io.StringIO(text), delimiter=";" if semicolons else ","))
     if not rows:
         raise InputError("the answers file is empty: expected a header 'student,variant,ANSWER,…'",
                          Location(answers_file, 1, 1))
@@ -180,7 +184,7 @@ def grade(key: Key, answers_file: str, rule: Rule = Rule()) -> ClassGrades:
         if not any(cell.strip() for cell in row):
             continue
         try:
-            students.append(_student(row, line, header, key, rule, answers_file, errors))
+            students.append(_student(row, line, header, key, rule, answers_file, errors, semicolons))
         except InputError as exc:
             errors.append(exc)
     answers = tuple(a for a in header.columns if a is not None)
@@ -225,7 +229,7 @@ def _column(cells: list[str], i: int) -> int:
 
 
 def _student(row: list[str], line: int, header: _Header, key: Key, rule: Rule, file: str,
-             errors: list[InputError]) -> StudentGrade:
+             errors: list[InputError], decimal_comma: bool) -> StudentGrade:
     where = Location(file, line, 1)
     if len(row) != len(header.columns):
         raise InputError(f"this row has {len(row)} cells, the header {len(header.columns)}; the row is not graded",
@@ -240,8 +244,9 @@ def _student(row: list[str], line: int, header: _Header, key: Key, rule: Rule, f
     for i, column in enumerate(header.columns):
         if column is None:
             continue
+        cell = row[i].strip().replace(",", ".") if decimal_comma else row[i].strip()
         try:
-            marks.append(_mark(row[i].strip(), column, variant, key, rule, Location(file, line, _column(row, i))))
+            marks.append(_mark(cell, column, variant, key, rule, Location(file, line, _column(row, i))))
         except InputError as exc:
             errors.append(exc)
             marks.append(Mark(column, row[i].strip(), None, Outcome.UNGRADED))

@@ -219,3 +219,16 @@ def test_not_a_variants_table(tmp_path) -> None:
     path.write_text('{"columns": [], "rows": [NaN]}', encoding="utf-8")
     result = CliRunner().invoke(main, ["grade", str(path), str(answers)])
     assert result.exit_code == 2 and "NaN is not a number in strict JSON" in result.stderr
+
+
+def test_a_spreadsheets_csv_with_semicolons_and_decimal_commas(table) -> None:
+    folder, variants, body = table
+    m_, r_, g_ = (body["parameters"].index(p) for p in ("m", "r", "g"))
+    row = body["rows"][0]
+    right = exam_answers(*(row["values"][i] for i in (m_, r_, g_)))
+    path = folder / "semicolons.csv"
+    path.write_text(f"student;variant;omega1;omega2\nanna;1;{right['omega1']:.4f};{-right['omega2']:.4f}\n"
+                    .replace(".", ","), encoding="utf-8")
+    result, rows, _ = graded(table, path)
+    assert result.exit_code == 1, result.output
+    assert [rows[0][p] for p in PATHS[:2]] == ["right", "sign"]
