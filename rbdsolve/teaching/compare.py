@@ -7,7 +7,8 @@
    its rules), so a difference it leaves is not yet a "different".
 2. Both are evaluated, to 30 digits, at admissible random parameter values (positive
    where declared so, satisfying the file's ``assumptions:``; a few small integers first,
-   so that a point shown to the student reads well): equal at every point is
+   so that a point shown to the student reads well; where the answer is real, when
+   there are such points): equal at every point is
    Equivalent (sampled). Two different expressions of this size agreeing at 8 random
    points to 12 digits is not a risk worth naming.
 3. Otherwise the values say how they differ: a constant ratio given/right is a sign or
@@ -22,7 +23,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
-from typing import Callable, Iterator, Mapping, Sequence, TypeVar
+from typing import Callable, Mapping, Sequence, TypeVar
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -66,7 +67,7 @@ def compare(given: sp.Expr, right: sp.Expr, sampler: Sampler, angle: bool = Fals
     if _timed(SIMPLIFY_SECONDS, "simplifying", lambda: _simplifies_to_zero(given - right), False):
         return Equivalent(Proof.SIMPLIFIED)
     symbols = sorted(given.free_symbols | right.free_symbols, key=str)
-    values = _timed(EVALUATE_SECONDS, "evaluating", lambda: list(_values(given, right, symbols, sampler)), None)
+    values = _timed(EVALUATE_SECONDS, "evaluating", lambda: _values(given, right, symbols, sampler), None)
     if values is None:
         return Undecided(f"evaluating the answers took more than {EVALUATE_SECONDS} s")
     if not values:
@@ -141,17 +142,24 @@ def _simplifies_to_zero(difference: sp.Expr) -> bool:
 
 
 def _values(given: sp.Expr, right: sp.Expr, symbols: list[sp.Symbol], sampler: Sampler
-            ) -> Iterator[tuple[Point, complex, complex]]:
-    """(point, given there, right there) at each admissible point where both are finite."""
+            ) -> list[tuple[Point, complex, complex]]:
+    """(point, given there, right there) at admissible points where both are finite,
+    preferring points where the answer is real: where it is not (a frequency past a
+    critical value), two right forms may sit on different branches of a square root."""
+    if not symbols:
+        a, b = value_at(given, {}), value_at(right, {})
+        return [] if a is None or b is None else [({}, a, b)]
     rng = random.Random(SEED)
-    tries = 1 if not symbols else NICE_POINTS + RANDOM_POINTS
-    for k in range(tries):
-        point = {} if not symbols else sampler.draw(symbols, rng, k < NICE_POINTS)
-        if point is None:
-            continue
-        a, b = value_at(given, point), value_at(right, point)
+    wanted = NICE_POINTS + RANDOM_POINTS
+    real, other = [], []
+    for k in range(3 * wanted):
+        point = sampler.draw(symbols, rng, k < NICE_POINTS)
+        a, b = (None, None) if point is None else (value_at(given, point), value_at(right, point))
         if a is not None and b is not None:
-            yield point, a, b
+            (real if abs(b.imag) <= CLOSE * abs(b) else other).append((point, a, b))
+        if len(real) >= wanted:
+            break
+    return real if len(real) >= NICE_POINTS else real + other[: wanted - len(real)]
 
 
 def value_at(expr: sp.Expr, point: Point) -> complex | None:

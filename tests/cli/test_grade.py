@@ -15,7 +15,7 @@ from click.testing import CliRunner
 
 from rbdsolve.cli import main
 
-from conftest import SIMPLE_PENDULUM
+from conftest import PROBLEMS, SIMPLE_PENDULUM
 
 PENDULUM = "title: Pendulum\n" + SIMPLE_PENDULUM + "questions:\n  - modes: {about: {theta: 0}}\n"
 
@@ -150,3 +150,12 @@ def test_a_hostile_expression_is_not_a_verdict_nor_a_crash(pendulum, monkeypatch
     assert first.startswith("modes.frequencies[1] = sin(10**40*g): wrong: different at")
     assert second.endswith("not decided: no admissible parameter values where both have a finite value")
     assert third.endswith("sqrt(g/l): right")
+
+
+def test_points_where_the_answer_is_real_decide() -> None:
+    """A bead on a hoop turning at Ω: ω² = g/R − Ω² about the lowest point (by hand,
+    V_eff = −m g R cos θ − ½ m Ω² R² sin² θ). Past Ω² = g/R the frequency is imaginary,
+    and there 1/√(R/(g − Ω²R)) is −1 times √(g − Ω²R)/√R: a right form all the same."""
+    hoop = PROBLEMS / "frames" / "rotating-hoop-slow.yaml"
+    result = grade(hoop, "-a", "omega1 = 1/sqrt(R/(g - Omega**2*R))", "-a", "lambda1 = g/R - Omega**2")
+    assert result.exit_code == 0, result.output
