@@ -17,7 +17,7 @@ GRADE_EXAMPLES = """
 A student, checking answers worked by hand (the answer itself is never printed
 unless --show is given):
   rbdsolve grade problems/sg2150-2015-10-29/p1-two-rods.yaml \\
-      --answer 'modes.frequencies[1] = sqrt(24*g/(25*r))' --answer 'omega2 = 2*sqrt(g/r)'
+      --answer 'modes.frequencies[1] = sqrt(24*g/(25*r))' --answer 'omega2 = sqrt(2*g/r)'
   rbdsolve grade p1.yaml my-answers.txt      # one 'ANSWER = EXPRESSION' a line
 
 \b
@@ -62,7 +62,8 @@ FORMATS = ("text", "json")
 @click.option("--slip-credit", type=click.FloatRange(min=0, max=1), default=0.0, show_default=True,
               help="The part of a mark a recognised slip earns (sign, 2π, degrees, root, factor 2).")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
-              help="Write the grades to this file: .csv (one row per student) or .json.")
+              help="Write the run to this file as JSON (.json); a class's grades also as CSV (.csv, "
+                   "one row per student).")
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
               help="Standard output: a summary (text) or the JSON of the run (docs/json.md).")
 @budget_option
