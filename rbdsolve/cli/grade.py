@@ -8,7 +8,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.app import Source, append_help, debug_option, main, refuse_overwriting_inputs, run_guarded, \
+    write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option
 from rbdsolve.errors import ExitCode, InputError, Location
 
@@ -106,6 +107,7 @@ def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool,
 
     if output and Path(output).suffix.lower() != ".json":
         raise InputError(f"-o {output}: a check is written as JSON; give a .json file")
+    refuse_overwriting_inputs(output, [Source(file), *([Source(answers)] if answers else [])])
     if not entries and not answers:
         raise InputError("give the answers to check: --answer 'modes.frequencies[1] = sqrt(2*g/r)', "
                          "or a file of them after the problem")
@@ -154,6 +156,7 @@ def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_f
         raise InputError(f"give the class's answers after {file}: rbdsolve grade {file} answers.csv")
     if output and Path(output).suffix.lower() not in (".csv", ".json"):
         raise InputError(f"-o {output}: write the grades to a .csv or a .json file")
+    refuse_overwriting_inputs(output, [Source(file), Source(answers)])
     grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit))
     if output:
         write_text(class_csv(grades) if output.lower().endswith(".csv") else dumps(class_object(grades)), output)

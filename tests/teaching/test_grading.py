@@ -232,3 +232,20 @@ def test_a_spreadsheets_csv_with_semicolons_and_decimal_commas(table) -> None:
     result, rows, _ = graded(table, path)
     assert result.exit_code == 1, result.output
     assert [rows[0][p] for p in PATHS[:2]] == ["right", "sign"]
+
+
+def test_the_output_never_overwrites_an_input(table, seeded_class) -> None:
+    answers, _ = seeded_class
+    folder, variants, _ = table
+    before = answers.read_text(encoding="utf-8")
+    result = CliRunner().invoke(main, ["grade", str(variants), str(answers), "-o", str(answers)])
+    assert result.exit_code == 2 and "choose another output" in result.stderr
+    assert answers.read_text(encoding="utf-8") == before
+
+
+def test_an_answers_file_that_is_not_text(table) -> None:
+    folder, variants, _ = table
+    path = folder / "binary.csv"
+    path.write_bytes(b"student,variant\x00\xff\n")
+    result = CliRunner().invoke(main, ["grade", str(variants), str(path)])
+    assert result.exit_code == 2 and f"{path}:1:1: this is a binary file, not text" in result.stderr
