@@ -249,3 +249,13 @@ def test_an_answers_file_that_is_not_text(table) -> None:
     path.write_bytes(b"student,variant\x00\xff\n")
     result = CliRunner().invoke(main, ["grade", str(variants), str(path)])
     assert result.exit_code == 2 and f"{path}:1:1: this is a binary file, not text" in result.stderr
+
+
+@pytest.mark.parametrize("cell", ["nan", "inf", "-Infinity", "1e999", "4.3.8", "0x10"])
+def test_a_cell_that_is_not_a_number(table, cell: str) -> None:
+    folder, variants, _ = table
+    path = folder / "cell.csv"
+    path.write_text(f"student,variant,omega1\ns1,1,{cell}\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["grade", str(variants), str(path)])
+    assert result.exit_code == 2
+    assert result.stderr == f"{path}:2:6: modes.frequencies[1]: '{cell}' is not a number\n"
