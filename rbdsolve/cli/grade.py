@@ -36,7 +36,8 @@ answers.csv has a header 'student,variant,' then the answers it gives, e.g.
 Answers are named by their JSON path with indices from 1 (docs/json.md), e.g.
 modes.frequencies[1], equilibria.equilibria[2].at.phi, impact.velocities.x,
 inertia.principal_moments[3], or an alias: omega1, lambda2, equilibrium2.theta,
-equilibrium2.stability, dot(x) (after an impact), J1 (a principal moment).
+equilibrium2.stability, dot(x) (after an impact), J1 (a principal moment); in a
+student's check also an equilibrium by its place: equilibrium(theta=0, phi=pi).stability.
 
 \b
 Exit codes: 0 every answer checked is right, 1 one is not (or could not be

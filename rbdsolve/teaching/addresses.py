@@ -18,6 +18,8 @@ kind, so that it names one answer):
     equilibrium2.stability equilibria.equilibria[2].stability
     dot(x)                 impact.velocities.x   (the velocity just after the impact)
     J1                     inertia.principal_moments[1]
+
+(A student's check also names an equilibrium by its place: teaching/check._by_place.)
 """
 
 from __future__ import annotations

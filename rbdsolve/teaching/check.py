@@ -14,6 +14,7 @@ unknown symbol, a non-expression) is one message; the others are still checked.
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass
 from enum import Enum
 
@@ -72,11 +73,18 @@ class CheckRun:
 
 
 def read_entry(line: str, loc: Location) -> Entry:
-    """'ADDRESS = EXPRESSION'; the expression's location is its column in ``line``."""
-    address, sep, text = line.partition("=")
-    if not sep or text.startswith("="):
+    """'ADDRESS = EXPRESSION', split at the first '=' outside brackets (an address may
+    hold some: equilibrium(theta=0, phi=pi).stability); the expression's location is its
+    column in ``line``."""
+    depth, split = 0, None
+    for i, ch in enumerate(line):
+        depth += (ch in "([") - (ch in ")]")
+        if ch == "=" and depth == 0:
+            split = i
+            break
+    if split is None or line[split + 1: split + 2] == "=":
         raise InputError(f"expected 'ANSWER = EXPRESSION', e.g. '{EXAMPLE}'", loc)
-    return Entry(address, text, loc.shifted(len(address) + 1))
+    return Entry(line[:split], line[split + 1:], loc.shifted(split + 1))
 
 
 def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
@@ -120,7 +128,8 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
     if head in unsolved:
         return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
                                                            f"({unsolved[head]})"), "", entry.loc)
-    address = resolve(entry.address, list(answers), Location(entry.loc.file, entry.loc.line, 1))
+    start = Location(entry.loc.file, entry.loc.line, 1)
+    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start)
     right = answers[address]
     if isinstance(right, Enum):
         return _check_word(entry, address, right)
@@ -133,6 +142,59 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
     else:
         verdict = compare(given, right, sampler, _is_angle(address, model))
     return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
+
+
+def _by_place(address: str, answers: dict, model: Model, loc: Location) -> str:
+    """'equilibrium(theta=0, phi=pi).stability' as the address of the equilibrium at that
+    place (a student knows where an equilibrium is, not where rbdsolve lists it):
+    'equilibria.equilibria[3].stability'. Other addresses are returned as they are."""
+    found = _PLACE.fullmatch("".join(address.split()))
+    if not found:
+        return address
+    wanted = _place(found.group(1), model, loc)
+    places: dict[str, dict[str, sp.Basic]] = {}
+    for name, value in answers.items():
+        at = _AT.fullmatch(name)
+        if at:
+            places.setdefault(at.group(1), {})[at.group(2)] = value
+    matches = [k for k, at in places.items() if all(q in at and _same_place(at[q], v, q, model)
+                                                   for q, v in wanted.items())]
+    if len(matches) != 1:
+        what = "no equilibrium is" if not matches else "more than one equilibrium is"
+        raise InputError(f"{what} at {found.group(1)}; name the equilibrium by its number "
+                         "(equilibrium1.stability) or give every coordinate", loc)
+    rest = found.group(2)
+    return f"{matches[0]}.{'at.' + rest if rest in model.symbols.coordinates else rest}"
+
+
+_PLACE = re.compile(r"equilibrium\((.+)\)\.(.+)")
+_AT = re.compile(r"(equilibria(?:\(\d+\))?\.equilibria\[\d+\])\.at\.(\w+)")
+
+
+def _place(text: str, model: Model, loc: Location) -> dict[str, sp.Expr]:
+    """'theta=0,phi=pi' as {coordinate: value}, each value read by the safe parser (numbers,
+    pi, the parameters)."""
+    out = {}
+    values = ex.Scope(frozenset(model.symbols.parameters))
+    for part in text.split(","):
+        name, sep, value = part.partition("=")
+        if not sep or name not in model.symbols.coordinates:
+            known = ", ".join(model.symbols.coordinates)
+            raise InputError(f"expected equilibrium(COORDINATE=VALUE, ...) with the coordinates {known}, "
+                             f"found '{part}'", loc)
+        out[name] = model.symbols.scalar(ex.parse(value, loc, values, plain=False))
+    return out
+
+
+def _same_place(at: object, value: sp.Expr, name: str, model: Model) -> bool:
+    """The same coordinate value; for an angle, up to whole turns (−π is π)."""
+    if not isinstance(at, sp.Expr):
+        return False
+    difference = sp.simplify(at - value)
+    if model.symbols.coordinates[name] in model.angles:
+        difference = sp.simplify(difference / (2 * sp.pi))
+        return difference.is_integer is True
+    return difference == 0
 
 
 def _a_number_for_values(given: sp.Expr, right: sp.Expr, model: Model) -> bool:

@@ -159,3 +159,18 @@ def test_points_where_the_answer_is_real_decide() -> None:
     hoop = PROBLEMS / "frames" / "rotating-hoop-slow.yaml"
     result = grade(hoop, "-a", "omega1 = 1/sqrt(R/(g - Omega**2*R))", "-a", "lambda1 = g/R - Omega**2")
     assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize(("answer", "message"), [
+    ("equilibrium(theta=1).stability = stable", "no equilibrium is at theta=1"),
+    ("equilibrium(x=0).stability = stable", "expected equilibrium(COORDINATE=VALUE, ...) with the coordinates theta"),
+    ("equilibrium(theta=0).stability == stable", "expected 'ANSWER = EXPRESSION'"),
+])
+def test_an_equilibrium_named_by_a_place_it_is_not(tmp_path, answer: str, message: str) -> None:
+    """A pendulum's equilibria are θ = 0 (stable) and θ = π (by hand: V = −m g l cos θ)."""
+    path = tmp_path / "pendulum.yaml"
+    path.write_text("title: Pendulum\n" + SIMPLE_PENDULUM + "questions: [equilibria]\n", encoding="utf-8")
+    assert grade(path, "-a", "equilibrium(theta=0).stability = stable", "-a",
+                 "equilibrium(theta=-pi).stability = unstable").exit_code == 0
+    result = grade(path, "-a", answer)
+    assert result.exit_code == 2 and message in result.stderr

@@ -58,6 +58,11 @@ P1 = [
 ]
 
 
+# Equilibria named by where they are (any order of listing): the exam's four.
+PLACES = [("theta=0, phi=0", "stable"), ("theta=pi, phi=0", "unstable"), ("theta=0, phi=pi", "unstable"),
+          ("theta=-pi, phi=3*pi", "unstable"), ("theta=pi, phi=pi", "stable")]
+
+
 def run_check(problem: str, lines: list[str], *options: str):
     args = ["grade", str(SEED / problem), "--format", "json", *options]
     for line in lines:
@@ -76,7 +81,8 @@ def p1():
     result = run_check("p1-two-rods.yaml", [line for line, _ in P1]
                        + [f"equilibria.equilibria[{k}].at.{q} = {v}"
                           for k in range(1, 5) for q in ("theta", "phi") for v in ("0", "pi", "180", "-pi")]
-                       + [f"equilibrium{k}.stability = stable" for k in range(1, 5)])
+                       + [f"equilibrium{k}.stability = stable" for k in range(1, 5)]
+                       + [f"equilibrium({place}).stability = {word}" for place, word in PLACES])
     return result, json.loads(result.stdout)
 
 
@@ -178,3 +184,9 @@ def test_the_answer_is_printed_only_when_asked() -> None:
     assert "off by a constant factor\n" in hidden.stdout
     assert "the answer: modes.frequencies[1] = 2 √6" in shown.stdout
     assert "off by a constant factor 5 √6/12" in shown.stdout
+
+
+def test_p1_equilibria_named_by_where_they_are(p1) -> None:
+    _, body = p1
+    found = [a for a in body["answers"] if a["given"] in ("stable", "unstable")][-len(PLACES):]
+    assert [outcome(a) for a in found] == ["right", "right", "right", "right", "different"]
