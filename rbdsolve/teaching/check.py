@@ -1,0 +1,285 @@
+"""A student's check: is my answer right? Without giving the answer away.
+
+    check(problem, entries) -> CheckRun
+
+The problem is solved exactly once, its parameters symbolic. Each entry
+``ADDRESS = EXPRESSION`` names one answer (teaching/addresses.py) and gives the student's
+expression in the problem's own symbols, read by the same safe parser as a problem file
+(problem/expr.py: a whitelist of syntax, never eval or sympify) and folded with the
+model's symbols (positive where declared), so that sqrt(g/r) means what the problem
+means. teaching/compare.py gives the verdict. A malformed entry (an unknown answer, an
+unknown symbol, a non-expression) is one message; the others are still checked.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+from dataclasses import dataclass
+from enum import Enum
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, Location
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.model.assumptions import admissible_sample
+from rbdsolve.model.build import Model, build_model
+from rbdsolve.problem import expr as ex
+from rbdsolve.problem.schema import Problem
+from rbdsolve.report.tree import label, leaves
+from rbdsolve.solvers import Options, RouteChoice, solve_problem
+from rbdsolve.teaching.addresses import resolve
+from rbdsolve.teaching.compare import Sampler, compare, value_at
+from rbdsolve.teaching.files import read_file
+from rbdsolve.teaching.variants import question_labels
+from rbdsolve.teaching.grading import Rule, slip_of
+from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Undecided, Verdict
+
+EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
+MAX_ENTRIES = 500  # a check is a student's sheet; each answer may take seconds to compare
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One answer to check: the address as written, the expression's text and where
+    the expression starts (a file's line and column, or an --answer option)."""
+
+    address: str
+    text: str
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Checked:
+    """One checked answer: its address (the full path), the expression as given, the
+    verdict, and rbdsolve's answer in unicode (shown only when asked)."""
+
+    address: str
+    given: str
+    verdict: Verdict
+    answer: str
+    loc: Location
+
+    @property
+    def right(self) -> bool:
+        return self.verdict.right
+
+
+@dataclass(frozen=True)
+class CheckRun:
+    file: str
+    checked: tuple[Checked, ...]
+    errors: tuple[InputError, ...]
+
+
+def read_entry(line: str, loc: Location) -> Entry:
+    """'ADDRESS = EXPRESSION', split at the first '=' outside brackets (an address may
+    hold some: equilibrium(theta=0, phi=pi).stability); the expression's location is its
+    column in ``line``."""
+    depth, split = 0, None
+    for i, ch in enumerate(line):
+        depth += (ch in "([") - (ch in ")]")
+        if ch == "=" and depth == 0:
+            split = i
+            break
+    if split is None or line[split + 1: split + 2] == "=":
+        raise InputError(f"expected 'ANSWER = EXPRESSION', e.g. '{EXAMPLE}'", loc)
+    return Entry(line[:split], line[split + 1:], loc.shifted(split + 1))
+
+
+def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
+    """An answers file: one 'ADDRESS = EXPRESSION' a line; '#' starts a comment line."""
+    entries, errors = [], []
+    for n, line in enumerate(read_file(path).splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            entries.append(read_entry(line, Location(path, n, 1)))
+        except InputError as exc:
+            errors.append(exc)
+    if not entries and not errors:
+        errors.append(InputError(f"no answers in the file; write one a line, e.g. '{EXAMPLE}'", Location(path, 1, 1)))
+    return entries, errors
+
+
+def check(problem: Problem, entries: list[Entry], budget: float | None = None, rule: Rule = Rule()) -> CheckRun:
+    """Each entry's verdict against the exact solution of ``problem``; a number given
+    for an answer whose parameters all have values is held to ``rule``."""
+    if len(entries) > MAX_ENTRIES:
+        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts")
+    model = build_model(problem)
+    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
+    kinds = question_labels([s.question for s in report.solutions])
+    answers = {label((q, *path)): leaf for q, s in zip(kinds, report.solutions) if s.answers is not None
+               for path, leaf in leaves(s.answers)}
+    unsolved = {q: s.error for q, s in zip(kinds, report.solutions) if s.answers is None}
+    sampler = _sampler(model)
+    checked, errors = [], []
+    for entry in entries:
+        try:
+            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule))
+        except InputError as exc:
+            errors.append(exc)
+    return CheckRun(problem.file, tuple(checked), tuple(errors))
+
+
+def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule) -> Checked:
+    head = "".join(entry.address.split()).split(".", 1)[0]
+    if head in unsolved:
+        return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
+                                                           f"({unsolved[head]})"), "", entry.loc)
+    start = Location(entry.loc.file, entry.loc.line, 1)
+    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start)
+    right = answers[address]
+    if isinstance(right, Enum):
+        return _check_word(entry, address, right)
+    if not isinstance(right, sp.Expr):
+        what = "has no value here" if right is None else "is not an expression"
+        raise InputError(f"'{address}' {what}, so it cannot be checked", entry.loc)
+    given = _read(entry, model)
+    if _a_number_for_values(given, right, model):
+        verdict = _at_values(given, right, model, rule)
+    else:
+        verdict = compare(given, right, sampler, _is_angle(address, model))
+    return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
+
+
+def _by_place(address: str, answers: dict, model: Model, loc: Location) -> str:
+    """'equilibrium(theta=0, phi=pi).stability' as the address of the equilibrium at that
+    place (a student knows where an equilibrium is, not where rbdsolve lists it):
+    'equilibria.equilibria[3].stability'. Other addresses are returned as they are."""
+    found = _PLACE.fullmatch("".join(address.split()))
+    if not found:
+        return address
+    wanted = _place(found.group(1), model, loc)
+    places: dict[str, dict[str, sp.Basic]] = {}
+    for name, value in answers.items():
+        at = _AT.fullmatch(name)
+        if at:
+            places.setdefault(at.group(1), {})[at.group(2)] = value
+    matches = [k for k, at in places.items() if all(q in at and _same_place(at[q], v, q, model)
+                                                   for q, v in wanted.items())]
+    if len(matches) != 1:
+        what = "no equilibrium is" if not matches else "more than one equilibrium is"
+        raise InputError(f"{what} at {found.group(1)}; name the equilibrium by its number "
+                         "(equilibrium1.stability) or give every coordinate", loc)
+    rest = found.group(2)
+    return f"{matches[0]}.{'at.' + rest if rest in model.symbols.coordinates else rest}"
+
+
+_PLACE = re.compile(r"equilibrium\((.+)\)\.(.+)")
+_AT = re.compile(r"(equilibria(?:\(\d+\))?\.equilibria\[\d+\])\.at\.(\w+)")
+
+
+def _place(text: str, model: Model, loc: Location) -> dict[str, sp.Expr]:
+    """'theta=0,phi=pi' as {coordinate: value}, each value read by the safe parser (numbers,
+    pi, the parameters)."""
+    out = {}
+    values = ex.Scope(frozenset(model.symbols.parameters))
+    for part in text.split(","):
+        name, sep, value = part.partition("=")
+        if not sep or name not in model.symbols.coordinates:
+            known = ", ".join(model.symbols.coordinates)
+            raise InputError(f"expected equilibrium(COORDINATE=VALUE, ...) with the coordinates {known}, "
+                             f"found '{part}'", loc)
+        out[name] = model.symbols.scalar(ex.parse(value, loc, values, plain=False))
+    return out
+
+
+def _same_place(at: object, value: sp.Expr, name: str, model: Model) -> bool:
+    """The same coordinate value; for an angle, up to whole turns (−π is π)."""
+    if not isinstance(at, sp.Expr):
+        return False
+    difference = sp.simplify(at - value)
+    if model.symbols.coordinates[name] in model.angles:
+        difference = sp.simplify(difference / (2 * sp.pi))
+        return difference.is_integer is True
+    return difference == 0
+
+
+def _a_number_for_values(given: sp.Expr, right: sp.Expr, model: Model) -> bool:
+    """A number given for an answer whose every parameter has a value in the file."""
+    return not given.free_symbols and bool(right.free_symbols) and right.free_symbols <= set(model.values)
+
+
+def _at_values(given: sp.Expr, right: sp.Expr, model: Model, rule: Rule) -> Verdict:
+    """A student's number against the answer's at the file's values: the teacher's rule
+    (a tolerance: the student rounds), and the slips it names."""
+    ours, theirs = value_at(given, {}), value_at(right.xreplace(model.values), {})
+    if ours is None or theirs is None or ours.imag or theirs.imag:
+        return Undecided("the answer or yours is not a real number at the file's values")
+    if rule.agrees(ours.real, theirs.real):
+        return Equivalent(Proof.AT_VALUES)
+    slips = slip_of(ours.real, theirs.real, rule)
+    if slips:
+        return Slipped(slips)
+    point = tuple((to_unicode(s), f"{float(v):.6g}") for s, v in model.values.items() if s in right.free_symbols)
+    return Different(point, f"{ours.real:.6g}", f"{theirs.real:.6g}")
+
+
+def _check_word(entry: Entry, address: str, right: Enum) -> Checked:
+    """A kind (a stability, a motion): the same word, in any case."""
+    given = entry.text.strip()
+    if given.lower() == right.value:
+        verdict: Verdict = Equivalent(Proof.SIMPLIFIED)
+    else:
+        choices = ", ".join(m.value for m in type(right) if m.value != "depends")
+        if given.lower() not in {m.value for m in type(right)}:
+            raise InputError(f"'{given}' is not one of: {choices}", entry.loc)
+        verdict = Different((), given, right.value)
+    return Checked(address, given, verdict, right.value, entry.loc)
+
+
+def scope(problem: Problem) -> ex.Scope:
+    """The names a student's answer may use: the parameters and unknowns, the
+    coordinates (θ, and their rates dot(θ), ddot(θ)), given functions of time, and t."""
+    coordinates = {c.name for c in problem.coordinates}
+    functions = {p.name for p in problem.prescribed}
+    names = {p.name for p in problem.parameters} | set(problem.unknowns) | coordinates | functions | {"t"}
+    return ex.Scope(frozenset(names), frozenset(), frozenset(coordinates | functions))
+
+
+def _read(entry: Entry, model: Model) -> sp.Expr:
+    """The student's expression in the model's symbols, coordinates as functions of time
+    (as the answers are)."""
+    names = scope(model.problem)
+    try:
+        parsed = ex.parse(entry.text, entry.loc, names)
+    except InputError as exc:  # an unknown symbol with no close name: say which there are
+        if exc.message.startswith("unknown symbol") and "(" not in exc.message:
+            known = ", ".join(sorted(names.scalars - {"t"}, key=str.lower))
+            raise InputError(f"{exc.message} (this problem's symbols are {known}, and t)", exc.location) from None
+        raise
+    if parsed.kind is not ex.Kind.SCALAR:
+        raise InputError("give one number or expression, not a vector: check a vector's entries one by one, "
+                         "e.g. 'modes.shapes[1][2] = 4/3'", entry.loc)
+    return model.state.to_time(model.symbols.scalar(parsed))
+
+
+def _is_angle(address: str, model: Model) -> bool:
+    """An equilibrium's or a mode's coordinate that is an angle: equal up to whole turns."""
+    parts = address.split(".")
+    if len(parts) < 2 or parts[-2] not in ("at", "about"):
+        return False
+    q = model.symbols.coordinates.get(parts[-1])
+    return q is not None and q in model.angles
+
+
+def _sampler(model: Model) -> Sampler:
+    """Points that satisfy the model's assumptions; parameters positive where declared."""
+    parameters = tuple(model.symbols.parameters.values())
+    names = {s: to_unicode(s) for s in parameters}
+    names |= {q: to_unicode(sp.Symbol(n)) for n, q in model.symbols.coordinates.items()}
+
+    def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
+        wanted = list(dict.fromkeys([*symbols, *(s for a in model.assumptions for s in a.difference.free_symbols)]))
+        if not nice:
+            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200)
+        for _ in range(50):
+            point = {s: sp.Integer(rng.randint(1, 9)) * (1 if s.is_positive or rng.random() < 0.5 else -1)
+                     for s in wanted}
+            if admissible_sample(model.assumptions, model.symbols, rng, fixed=point, symbols=[], tries=1):
+                return point
+        return None
+
+    return Sampler(draw, names, parameters)
