@@ -13,6 +13,8 @@ not applied. Nothing here changes what an expression is.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
@@ -20,6 +22,7 @@ from rbdsolve.form.printers import to_unicode
 MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs more than it reads
 
 
+@lru_cache(maxsize=4096)  # one quantity is shown in several steps (T, then the equations)
 def factored(expr: sp.Expr) -> sp.Expr:
     """``expr`` with each sum in it factored for reading (``factored_sum``), where that
     prints no longer; sin θ, cos θ, q̇ … are taken as symbols, and π too where that
