@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import base64
 import html
+import re
 from pathlib import Path
 
 from rbdsolve.form.printers import relation_text
@@ -13,11 +14,13 @@ from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
 
-STYLE = """
+PAGE_STYLE = """
 body { font-family: Georgia, 'DejaVu Serif', serif; max-width: 52em; margin: 2em auto;
        padding: 0 1em; line-height: 1.45; color: #222; }
 h1 { border-bottom: 2px solid #444; padding-bottom: .2em; }
 h2 { margin-top: 2.5em; border-bottom: 1px solid #bbb; }
+"""
+PARTS_STYLE = """
 .source { color: #666; font-style: italic; }
 .statement { background: #f6f6f0; border-left: 4px solid #c8c2a0; padding: .6em 1em; }
 .math { font-family: 'STIX Two Math', 'Cambria Math', 'DejaVu Serif', serif;
@@ -32,6 +35,31 @@ figure { text-align: center; margin: 1em 0; }
 figure img { max-width: 100%; max-height: 28em; }
 figcaption { font-size: .9em; color: #555; }
 """
+STYLE = PAGE_STYLE + PARTS_STYLE
+FRAGMENT = "rbdsolve"  # the class of a fragment's outer div: its style applies inside it only
+
+
+def _scoped(css: str) -> str:
+    """Each rule's selectors prefixed with the fragment's class, so that a fragment
+    shown inside another page (a notebook) styles nothing of that page."""
+    return re.sub(r"(^|})\s*([^{}]+?)\s*{",
+                  lambda m: m.group(1) + "\n" + ", ".join(f".{FRAGMENT} {s.strip()}" for s in m.group(2).split(",")) + " {",
+                  css)
+
+
+def render_report(report: ProblemReport) -> str:
+    """One report as an HTML fragment (a div with its own scoped style): what a notebook
+    shows for a solved problem (the Python API's ``_repr_html_``)."""
+    return _fragment(_report(report, ()))
+
+
+def render_solution(number: int, solution: Solution) -> str:
+    """One question's solution as an HTML fragment."""
+    return _fragment(_solution(number, solution))
+
+
+def _fragment(lines: list[str]) -> str:
+    return "\n".join([f'<div class="{FRAGMENT}"><style>{_scoped(PARTS_STYLE)}</style>', *lines, "</div>"]) + "\n"
 
 
 def render_key(key: AnswerKey, folder: Path) -> str:
