@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from fractions import Fraction
 
 import pytest
@@ -75,6 +76,10 @@ def test_every_format_renders(p1) -> None:
     assert "\\boxed{" in p1.to_latex() and p1.to_latex(document=True).rstrip().endswith("\\end{document}")
     assert p1.to_dict()["title"] == "Two rods in a circle"
     assert p1._repr_markdown_() == p1.to_markdown() and p1._repr_html_() == p1.to_html()
+    for html in (p1.to_html(), p1["modes"]._repr_html_()):
+        fragment = ET.fromstring(html)  # well-formed XML, its mathematics MathML
+        assert fragment.get("class") == "rbdsolve" and fragment.find(".//math//mfrac") is not None
+    assert ".rbdsolve .math" in p1.to_html() and "body {" not in p1.to_html()  # styles nothing of the notebook
     latex = p1._repr_latex_()
     assert latex.startswith("$$") and latex.endswith("$$") and "\\frac{24 g}{25 r}" in latex
     with pytest.raises(rbdsolve.InputError, match="format: expected one of"):

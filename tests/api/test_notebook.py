@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import runpy
+import xml.etree.ElementTree as ET
 
 import pytest
 
@@ -37,4 +38,5 @@ def test_results_are_displayed_typeset(run) -> None:
     assert len(shown) == 2
     for obj in shown:
         html = obj._repr_html_()
-        assert '<div class="math">' in html and 'class="result"' in html
+        root = ET.fromstring(html)  # well-formed: a notebook's HTML is XML too
+        assert root.find(".//math/mrow") is not None and root.find(".//span[@class='result']/math") is not None
