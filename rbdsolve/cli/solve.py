@@ -132,7 +132,7 @@ def print_summary(outcomes: list[Outcome]) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from rbdsolve.cli.writing import no_trailing_spaces
+    from rbdsolve.render.text import no_trailing_spaces
 
     folder, names = _short_names([o.source for o in outcomes])
     from rich.markup import escape

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from rbdsolve.cli.batch import Outcome, crashed
-from rbdsolve.render.text import no_trailing_spaces, terminal_text  # noqa: F401 - no_trailing_spaces used by cli.solve
+from rbdsolve.render.text import terminal_text
 
 
 @dataclass(frozen=True)
