@@ -109,7 +109,8 @@ def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 
 
     items = sources(paths)
     refuse_overwriting_inputs(output, items)
-    solved = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    shown = not quiet and fmt != "json" and stderr_is_terminal()  # JSON is for scripts: no display
+    solved = solve_all(items, settings, jobs, progress=shown)
     pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
     outcomes = [p.outcome for p in pieces]
     say_failures(outcomes)
