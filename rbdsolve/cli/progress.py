@@ -7,6 +7,7 @@ within the second, in a pipe, or with ``--format json`` (the commands decide
 from __future__ import annotations
 
 import threading
+import time
 
 from rbdsolve.errors import printable
 
@@ -27,6 +28,7 @@ class Progress:
         self.file, self.detail, self.done = "", "", 0
 
     def __enter__(self) -> Progress:
+        self.began = time.monotonic()  # the clock rich's elapsed column reads
         if self.shown:
             if self.delay <= 0:
                 self._start()
@@ -73,6 +75,7 @@ class Progress:
                 return
             self.display = Display(*columns, console=self.console or Console(stderr=True), transient=True)
             self.task = self.display.add_task(self._description(), total=self.total, completed=self.done)
+            next(t for t in self.display.tasks if t.id == self.task).start_time = self.began  # the run's time, not the display's
             self.display.start()
 
     def _update(self) -> None:
