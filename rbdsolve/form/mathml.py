@@ -52,22 +52,24 @@ def fenced(inner: str, left: str = "(", right: str = ")") -> str:
 def name_mathml(name: str) -> str:
     """A declared name: Greek as letters, the part after _ or a trailing number as a
     subscript (omega0 -> ω₀, y_A -> y_A, T_long_rod -> T with 'long_rod' below)."""
+    base, sub = _name_parts(name)
+    return base if sub is None else _tag("msub", base, sub)
+
+
+def _name_parts(name: str) -> tuple[str, str | None]:
+    """A name's letter and its subscript (None: it has none), as MathML tokens."""
     base, sub = split_name(name)
     base_el = _token("mi", GREEK.get(base, base))
     if not sub:
-        return base_el
-    sub_el = _token("mn", sub) if sub.isdigit() else _token("mi", GREEK.get(sub, sub))
-    return _tag("msub", base_el, sub_el)
+        return base_el, None
+    return base_el, _token("mn", sub) if sub.isdigit() else _token("mi", GREEK.get(sub, sub))
 
 
 def _dotted(name: str, order: int) -> str:
     """θ̇, θ̈, ẋ_f: the dots over the base letter, a subscript after them."""
-    base, sub = split_name(name)
-    letter = GREEK.get(base, base)
-    over = _tag("mover", _token("mi", letter), _mo(_DOTS[order]), accent="true")
-    if not sub:
-        return over
-    return _tag("msub", over, _token("mn", sub) if sub.isdigit() else _token("mi", GREEK.get(sub, sub)))
+    letter, sub = _name_parts(name)
+    over = _tag("mover", letter, _mo(_DOTS[order]), accent="true")
+    return over if sub is None else _tag("msub", over, sub)
 
 
 class MathMLPrinter(MathMLPresentationPrinter):
@@ -125,6 +127,9 @@ class MathMLPrinter(MathMLPresentationPrinter):
             return super()._print_Pow(sp.Pow(-base, exp, evaluate=False))  # (R − r)², not (r − R)²
         if exp.is_Integer and exp > 0 and _is_letter(base):  # θ̇², not (θ̇)²
             return self._raw(_tag("msup", self.doprint_inner(base), self.doprint_inner(exp)))
+        if exp.is_Integer and exp > 0 and isinstance(base, sp.Symbol) and split_name(base.name)[1]:
+            letter, sub = _name_parts(base.name)  # ω₀²: the power over the subscript, not after it
+            return self._raw(_tag("msubsup", letter, sub, self.doprint_inner(exp)))
         return super()._print_Pow(e)
 
     def _print_Mul(self, expr):
@@ -279,7 +284,11 @@ _BEFORE_FUNCTION = re.compile("(</(?:mi|mn|msup|msub|mover|mfrac|mrow)>)(?:<mo>\
                               "(?=<mrow><mi>[A-Za-z]{2,}</mi>)")
 
 
+_BEFORE_WORD = re.compile("<mo>\u2062</mo>(?=<mi>[A-Za-z]{2,}</mi>)")
+
+
 def _spaced(markup: str) -> str:
-    """A thin space before a function's name in a product, as TeX sets g m r cos θ
-    (a browser puts none for an invisible times)."""
-    return _BEFORE_FUNCTION.sub(r'\1<mspace width="0.1667em"/>', markup)
+    """A thin space before a function's name or a word in a product, as TeX sets
+    g m r cos θ and r·spin (a browser puts none for an invisible times)."""
+    markup = _BEFORE_FUNCTION.sub(r'\1<mspace width="0.1667em"/>', markup)
+    return _BEFORE_WORD.sub('<mspace width="0.1667em"/>', markup)

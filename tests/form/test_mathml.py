@@ -82,3 +82,11 @@ def test_text_is_escaped_and_entities_are_characters() -> None:
 ])
 def test_whatever_sympy_prints_is_well_formed(value) -> None:
     tree(relation_mathml(Relation(sp.Symbol("y"), value)))
+
+
+def test_a_subscripted_power_and_a_word_in_a_product() -> None:
+    """ω₀² with the 2 over the 0 (msubsup); r·spin with a thin space, not 'rspin'."""
+    power = tree(to_mathml(sp.Symbol("omega0") ** 2))
+    assert power.tag == "msubsup" and texts(power) == ["ω", "0", "2"]
+    product = tree(relation_mathml(Relation(sp.Symbol("x"), sp.Symbol("r") * sp.Symbol("spin"))))
+    assert product.find(".//mspace") is not None
