@@ -26,6 +26,9 @@ def load(path: str | os.PathLike) -> Problem:
     if not isinstance(path, (str, os.PathLike)):
         raise InputError(f"expected the path of a problem file, found {type(path).__name__}"
                          " (loads() reads YAML text, load_dict() a dict)")
+    if isinstance(path, str) and "\n" in path:
+        raise InputError("expected the path of a problem file, found text of several lines; "
+                         "rbdsolve.loads(text) reads a problem's YAML text")
     return load_file(os.fspath(path))
 
 

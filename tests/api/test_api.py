@@ -129,6 +129,8 @@ def test_bad_input_is_located() -> None:
         rbdsolve.load("nowhere.yaml")
     with pytest.raises(rbdsolve.InputError, match="loads\\(\\) reads YAML text"):
         rbdsolve.load(42)
+    with pytest.raises(rbdsolve.InputError, match="rbdsolve.loads\\(text\\) reads"):
+        rbdsolve.solve("title: t\nquestions: [eom]\n")
     with pytest.raises(rbdsolve.InputError, match="the limit is"):
         rbdsolve.loads("title: t\n" + "#" * 300_000)
 
