@@ -111,42 +111,23 @@ def _is_problem(path: Path) -> bool:
 
 def parse_sets(items: tuple[str, ...]) -> dict[str, Value]:
     """``--set NAME=VALUE``: a value as in ``values:`` (9.81, pi/6, 30 cm), read by
-    rbdsolve's own parsers."""
-    from rbdsolve.errors import Location
-    from rbdsolve.problem.quantity import parse_value
+    rbdsolve's own parsers (problem/overrides.py, shared with the Python API)."""
+    from rbdsolve.problem.overrides import read_value
 
     values = {}
     for item in items:
         name, sep, text = item.partition("=")
         if not sep or not name.strip().isidentifier():
             raise InputError(f"--set expects NAME=VALUE, found '{item}'")
-        try:
-            values[name.strip()] = parse_value(text, Location("--set", 1, len(name) + 2))
-        except InputError as exc:  # said as the option, not as a place in a file
-            raise InputError(f"--set {name.strip()}: {exc.message}") from None
+        values[name.strip()] = read_value(name.strip(), text)
     return values
 
 
 def check_sets(values: dict[str, Value], problem) -> dict[str, Value]:
-    """Every ``--set`` names a parameter of ``problem``, positive ones positive, of the
-    parameter's dimension where it is known; a bare number takes its declared unit."""
-    from rbdsolve.errors import Location, did_you_mean
-    from rbdsolve.problem.ranges import parameter_value
+    """Every ``--set`` names a parameter of ``problem`` (problem/overrides.py)."""
+    from rbdsolve.problem.overrides import checked_values
 
-    names = [p.name for p in problem.parameters]
-    dimensions = problem.dimension_map()
-    out = {}
-    for name, value in values.items():
-        if name not in names:
-            raise InputError(f"--set {name}: {problem.file} has no parameter '{name}'{did_you_mean(name, names)}")
-        param = next(p for p in problem.parameters if p.name == name)
-        known = (dimensions[name], "in " + problem.file) if name in dimensions else None
-        try:
-            out[name] = parameter_value(param, value.text, Location("--set", 1, len(name) + 2), True, known)
-        except InputError as exc:
-            message = exc.message.replace(f"'{name}' is declared positive", "the parameter is positive")
-            raise InputError(f"--set {name}: {message}") from None
-    return out
+    return checked_values(values, problem)
 
 
 def write_text(text: str, output: str | None) -> None:

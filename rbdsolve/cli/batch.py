@@ -20,8 +20,6 @@ if TYPE_CHECKING:  # the report module imports sympy: not at start-up
     from rbdsolve.problem.quantity import Value
     from rbdsolve.report.steps import ProblemReport
 
-PROGRESS_FROM = 4  # files: fewer than a handful finish before a bar is worth drawing
-
 
 @dataclass(frozen=True)
 class Settings:
@@ -58,15 +56,16 @@ class Outcome:
         return ExitCode.OK if self.report.solved else ExitCode.UNSOLVED
 
 
-def solve_source(source: Source, settings: Settings) -> Outcome:
-    """Load, build and solve one problem; every failure becomes an Outcome."""
+def solve_source(source: Source, settings: Settings, on_stage: Callable[[str], None] | None = None) -> Outcome:
+    """Load, build and solve one problem; every failure becomes an Outcome. ``on_stage``
+    is told each stage as it starts (cli/progress.py)."""
     from rbdsolve.solvers import Options, RouteChoice, solve_file
 
     start = time.perf_counter()
     try:
         problem = source.load()
         values = check_sets(dict(settings.values), problem)
-        options = Options(values=values, budget=settings.budget, route=RouteChoice(settings.route))
+        options = Options(values=values, budget=settings.budget, route=RouteChoice(settings.route), on_stage=on_stage)
         report = solve_file(problem, options)
     except (InputError, UnsolvedError) as exc:
         failure = Failure(exc.message, exc.location, exc.exit_code, str(exc))
@@ -86,11 +85,19 @@ def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:
 
 def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
               progress: bool = False) -> list[Outcome]:
-    """Every source's Outcome, in the sources' order, ``jobs`` at a time."""
-    with _bar(len(items), progress) as advance:
+    """Every source's Outcome, in the sources' order, ``jobs`` at a time; with
+    ``progress``, a display on standard error once the run takes more than a second."""
+    from rbdsolve.cli.progress import Progress
+
+    with Progress(len(items), progress) as shown:
         if jobs <= 1 or len(items) <= 1:
-            return [_advanced(solve_source(s, settings), advance) for s in items]
-        return _in_parallel(items, settings, min(jobs, len(items)), advance)
+            return [_advanced(_one(s, settings, shown), shown.advance) for s in items]
+        return _in_parallel(items, settings, min(jobs, len(items)), shown.advance)
+
+
+def _one(source: Source, settings: Settings, shown) -> Outcome:
+    shown.started(source.name)
+    return solve_source(source, settings, shown.stage)
 
 
 def _in_parallel(items: list[Source], settings: Settings, jobs: int,
@@ -199,32 +206,6 @@ def _user_function(name: str):
 def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:
     advance(outcome)
     return outcome
-
-
-class _bar:
-    """A rich progress bar on standard error while files are solved, or nothing."""
-
-    def __init__(self, total: int, shown: bool):
-        self.total, self.shown, self.progress = total, shown and total >= PROGRESS_FROM, None
-
-    def __enter__(self) -> Callable[[Outcome], None]:
-        if not self.shown:
-            return lambda outcome: None
-        from rich.console import Console
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-
-        self.progress = Progress(TextColumn("solving"), BarColumn(), MofNCompleteColumn(),
-                                 TimeElapsedColumn(), TextColumn("{task.description}"),
-                                 console=Console(stderr=True), transient=True)
-        self.progress.start()
-        task = self.progress.add_task("", total=self.total)
-        from rich.markup import escape
-
-        return lambda outcome: self.progress.update(task, advance=1, description=escape(printable(outcome.source)))
-
-    def __exit__(self, *exc) -> None:
-        if self.progress is not None:
-            self.progress.stop()
 
 
 def worst(outcomes: Iterable[Outcome]) -> ExitCode:

@@ -40,6 +40,10 @@ def key(paths, output, title, figures, sets, route, budget, jobs, quiet, debug):
 
 def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, jobs: int,
          settings: Settings) -> ExitCode:
+    if output.suffix == ".pdf":  # before sympy is even imported: a missing engine costs no solve
+        from rbdsolve.render.pdf import require_engine
+
+        require_engine()
     from rbdsolve.teaching.key import Solved, check_output, key_title, write_key
 
     check_output(output)

@@ -109,7 +109,8 @@ def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 
 
     items = sources(paths)
     refuse_overwriting_inputs(output, items)
-    solved = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
+    shown = not quiet and fmt != "json" and stderr_is_terminal()  # JSON is for scripts: no display
+    solved = solve_all(items, settings, jobs, progress=shown)
     pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
     outcomes = [p.outcome for p in pieces]
     say_failures(outcomes)
@@ -132,7 +133,7 @@ def print_summary(outcomes: list[Outcome]) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from rbdsolve.cli.writing import no_trailing_spaces
+    from rbdsolve.render.text import no_trailing_spaces
 
     folder, names = _short_names([o.source for o in outcomes])
     from rich.markup import escape

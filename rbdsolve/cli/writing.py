@@ -4,14 +4,13 @@ solution and JSON line is still written."""
 
 from __future__ import annotations
 
-import io
-import re
 import time
 import traceback
 from dataclasses import dataclass
 from typing import Callable
 
 from rbdsolve.cli.batch import Outcome, crashed
+from rbdsolve.render.text import terminal_text
 
 
 @dataclass(frozen=True)
@@ -83,19 +82,7 @@ def _renderer(fmt: str, look: Look) -> Callable:
 
 def rendered_text(report, look: Look) -> str:
     """The rich rendering of one report, as the text (and colours) the console shows."""
-    from rich.console import Console
-
-    from rbdsolve.render.terminal import render
-
-    console = Console(file=io.StringIO(), width=look.width, highlight=False, no_color=look.no_color,
-                      color_system=look.color_system, force_terminal=look.terminal)
-    console.print(render(report))
-    return no_trailing_spaces(console.file.getvalue())
-
-
-def no_trailing_spaces(text: str) -> str:
-    """Each line without the spaces rich pads it with (before any closing colour code)."""
-    return re.sub(r"[ \t]+((?:\x1b\[[0-9;]*m)*)$", r"\1", text, flags=re.MULTILINE)
+    return terminal_text(report, look.width, look.color_system, look.terminal, look.no_color)
 
 
 def joined(fmt: str, pieces: list[Piece]) -> str:

@@ -4,6 +4,7 @@
     tidy.py      bounded, targeted simplification of one coefficient or fraction
     arrange.py   common scales, the exam's order of terms, vectors along a basis
     printers.py  unicode for terminals and LaTeX for documents
+    mathml.py    MathML for HTML, with the printers' conventions
 
 Used by the model (tidy coefficients), the solvers' steps and every renderer; imports
 nothing of rbdsolve but itself."""

@@ -1,27 +1,32 @@
 """An answer key as one self-contained HTML file: no scripts, no fonts or styles from
-the network. Math is the terminal's readable unicode (θ̇², m r² [7/8 …]) in a serif
-face; pictures are embedded as data URIs."""
+the network. Math is MathML (form/mathml.py), which every current browser typesets:
+fractions, roots, matrices, dots over time derivatives; a result is boxed by its
+style. Pictures are embedded as data URIs. The markup is well-formed XML as well as
+HTML (void elements closed, every entity XML's own), so an XML parser checks it."""
 
 from __future__ import annotations
 
 import base64
 import html
+import re
 from pathlib import Path
 
-from rbdsolve.form.printers import relation_text
+from rbdsolve.form.mathml import relation_mathml
 from rbdsolve.render.numbers import numeric_lines, route_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
 
-STYLE = """
+PAGE_STYLE = """
 body { font-family: Georgia, 'DejaVu Serif', serif; max-width: 52em; margin: 2em auto;
        padding: 0 1em; line-height: 1.45; color: #222; }
 h1 { border-bottom: 2px solid #444; padding-bottom: .2em; }
 h2 { margin-top: 2.5em; border-bottom: 1px solid #bbb; }
+"""
+PARTS_STYLE = """
 .source { color: #666; font-style: italic; }
 .statement { background: #f6f6f0; border-left: 4px solid #c8c2a0; padding: .6em 1em; }
-.math { font-family: 'STIX Two Math', 'Cambria Math', 'DejaVu Serif', serif;
-        margin: .3em 0 .3em 2em; white-space: pre-wrap; }
+.math { margin: .4em 0 .4em 2em; overflow-x: auto; }
+math { font-family: 'STIX Two Math', 'Cambria Math', 'Latin Modern Math', math; font-size: 1.1em; }
 .result { border: 1.5px solid #2a6f2a; padding: .2em .6em; display: inline-block;
           margin-left: 2em; }
 .note { font-style: italic; color: #444; }
@@ -32,11 +37,36 @@ figure { text-align: center; margin: 1em 0; }
 figure img { max-width: 100%; max-height: 28em; }
 figcaption { font-size: .9em; color: #555; }
 """
+STYLE = PAGE_STYLE + PARTS_STYLE
+FRAGMENT = "rbdsolve"  # the class of a fragment's outer div: its style applies inside it only
+
+
+def _scoped(css: str) -> str:
+    """Each rule's selectors prefixed with the fragment's class, so that a fragment
+    shown inside another page (a notebook) styles nothing of that page."""
+    return re.sub(r"(^|})\s*([^{}]+?)\s*{",
+                  lambda m: m.group(1) + "\n" + ", ".join(f".{FRAGMENT} {s.strip()}" for s in m.group(2).split(",")) + " {",
+                  css)
+
+
+def render_report(report: ProblemReport) -> str:
+    """One report as an HTML fragment (a div with its own scoped style): what a notebook
+    shows for a solved problem (the Python API's ``_repr_html_``)."""
+    return _fragment(_report(report, ()))
+
+
+def render_solution(number: int, solution: Solution) -> str:
+    """One question's solution as an HTML fragment."""
+    return _fragment(_solution(number, solution))
+
+
+def _fragment(lines: list[str]) -> str:
+    return "\n".join([f'<div class="{FRAGMENT}"><style>{_scoped(PARTS_STYLE)}</style>', *lines, "</div>"]) + "\n"
 
 
 def render_key(key: AnswerKey, folder: Path) -> str:
     """The whole key; picture paths are read relative to ``folder`` and embedded."""
-    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8"/>',
              f"<title>{_e(key.title)}</title>", f"<style>{STYLE}</style></head><body>",
              f"<h1>{_e(key.title)}</h1>"]
     for entry in key.entries:
@@ -85,7 +115,7 @@ def _step(step: Step) -> list[str]:
     if step.text:
         out.append(f'<p class="note">{_e(step.text)}</p>' if step.kind is StepKind.NOTE else f"<p>{_e(step.text)}</p>")
     for rel in step.math:
-        math = _e(relation_text(rel))
+        math = relation_mathml(rel)
         out.append(f'<div class="math"><span class="result">{math}</span></div>' if step.kind is StepKind.RESULT
                    else f'<div class="math">{math}</div>')
     return out
@@ -95,7 +125,7 @@ def _figure(picture: Picture, folder: Path) -> str:
     path = folder / picture.path
     kind = "svg+xml" if path.suffix == ".svg" else "png"
     data = base64.b64encode(path.read_bytes()).decode("ascii")
-    return (f'<figure><img src="data:image/{kind};base64,{data}" alt="{_e(picture.caption)}">'
+    return (f'<figure><img src="data:image/{kind};base64,{data}" alt="{_e(picture.caption)}"/>'
             f"<figcaption>{_e(picture.caption)}</figcaption></figure>")
 
 

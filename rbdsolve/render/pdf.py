@@ -25,14 +25,25 @@ def engine() -> str | None:
     return next((found for name in ENGINES if (found := shutil.which(name))), None)
 
 
+def require_engine() -> str:
+    """The TeX engine, or one line saying what to install and which output needs none.
+    The CLI asks this before solving anything: a missing engine found after a whole
+    exam is solved wastes the solve (docs/failure-edges.md)."""
+    program = engine()
+    if program is not None:
+        return program
+    chosen = os.environ.get("RBDSOLVE_LATEX")
+    missing = (f"RBDSOLVE_LATEX names '{chosen}', which is not on PATH" if chosen
+               else "no LaTeX engine (pdflatex, lualatex or xelatex) is on PATH")
+    raise InputError(f"a PDF needs a LaTeX engine and {missing}: install TeX Live (Debian/Ubuntu: "
+                     "apt install texlive-latex-recommended), or write the key as .html, .tex or .md, "
+                     "which need none (-o key.html)")
+
+
 def compile_pdf(tex: str, folder: Path, name: str = "key") -> Path:
     """Write ``name.tex`` in ``folder`` (where its pictures are), compile it twice
     (the second run settles page breaks around the pictures) and return the PDF."""
-    program = engine()
-    if program is None:
-        raise InputError("a PDF needs a LaTeX engine (pdflatex, lualatex or xelatex) and none is "
-                         "installed; install TeX Live (Debian/Ubuntu: apt install texlive-latex-recommended) "
-                         "or write the key as .tex, .md or .html")
+    program = require_engine()
     (folder / f"{name}.tex").write_text(tex, encoding="utf-8")
     command = [program, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", f"{name}.tex"]
     for _ in range(2):

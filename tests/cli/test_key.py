@@ -51,7 +51,9 @@ def test_final_answers_are_boxed(seed_keys) -> None:
     # p1's eigenvalues λ₁ = 24g/(25r), λ₂ = 2g/r (the exam's solution), boxed in LaTeX and Markdown
     assert "\\boxed{\\lambda_{1} = \\frac{24 g}{25 r}}" in seed_keys["tex"]
     assert "\\boxed{\\lambda_{2} = \\frac{2 g}{r}}" in seed_keys["md"]
-    assert '<span class="result">λ₁ = 24 g/(25 r)</span>' in seed_keys["html"]
+    assert ('<span class="result"><math displaystyle="true"><mrow><msub><mi>λ</mi><mn>1</mn></msub><mo>=</mo>'
+            '<mrow><mfrac><mrow><mn>24</mn><mo>\u2062</mo><mi>g</mi></mrow><mrow><mn>25</mn><mo>\u2062</mo><mi>r</mi></mrow>'
+            '</mfrac></mrow></mrow></math></span>') in seed_keys["html"]  # MathML: λ₁ = 24g/(25r) typeset
 
 
 def test_pictures_of_the_planar_problems(seed_keys) -> None:

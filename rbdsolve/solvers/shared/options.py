@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from enum import Enum
 from fractions import Fraction
-from typing import Mapping
+from typing import Callable, Mapping
 
 
 class RouteChoice(Enum):
@@ -27,3 +27,6 @@ class Options:
     values: Mapping[str, Fraction] = field(default_factory=dict)
     route: RouteChoice = RouteChoice.AUTO
     budget: float | None = None
+    # Told each stage as it starts ('the model (T and V)', 'question 2 of 3: modes'), for
+    # a progress display: solvers never print, the CLI shows it (cli/progress.py).
+    on_stage: Callable[[str], None] | None = field(default=None, compare=False, repr=False)

@@ -141,6 +141,7 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     only the expansion of T and V ran out: the section then shows the coordinates only,
     as on the numeric route, and says why."""
     model = None  # set once built, with its values: only the summary is left then
+    _stage(options, "the model (T and V)")
     try:
         with within(options.budget, "the model (T and V)"):
             built = build()
@@ -150,12 +151,23 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
         if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
             raise UnsolvedError(f"{problem.file}: {exc}") from None
         summary = _coordinates_instead(model, exc)
-    solutions = tuple(answer(q, model, options) for q in problem.questions)
+    solutions = tuple(_staged(answer, q, model, options, f"question {i} of {len(problem.questions)}: {q.kind.value}")
+                      for i, q in enumerate(problem.questions, start=1))
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     units = {k: u for k, u in parameter_units(model).items() if k in values}
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols, units)
+
+
+def _stage(options: Options, what: str) -> None:
+    if options.on_stage is not None:
+        options.on_stage(what)
+
+
+def _staged(answer: Solver, question: Question, model: Model, options: Options, what: str) -> Solution:
+    _stage(options, what)
+    return answer(question, model, options)
 
 
 def _coordinates_instead(model: Model, exc: OutOfTime) -> ModelSummary:
