@@ -8,6 +8,12 @@ expression: a sum's terms share one, a product multiplies them, a power with a
 rational exponent scales them, and a function (sin, acos, exp) takes and gives a pure
 number. Where anything in it is of unknown dimension, or the expression mixes
 dimensions, the answer gets no unit (None).
+
+A numeric route's answers are floats, with no expression to read: a coordinate's value
+(under ``at``, ``about`` or ``equivalent``) takes the coordinate's unit on every route,
+and the small-oscillation numbers take theirs from what they are: λ = ω² in 1/s², ω in
+rad/s, a growth rate in 1/s, M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
+curvature of V in J/(q_i q_j).
 """
 
 from __future__ import annotations
@@ -34,19 +40,60 @@ def answer_units(answers: object, model: Model) -> object:
     the leaf is not a number at the values."""
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if q in model.angles}
+    coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
 
     def unit(path: Path, leaf: object) -> str | None:
+        named = [p for p in path if isinstance(p, str)]
+        if isinstance(leaf, float):  # a numeric route's answer
+            return _numeric_unit(named, [p for p in path if isinstance(p, int)], coordinates, angles)
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
+        if _coordinate_value(named, coordinates):
+            return _coordinate_unit(named[-1], coordinates, angles)
         if leaf == 0:
             return _ZERO
         found = dimension_of(leaf, dimensions)
         if found is None:
             return None
-        named = [p for p in path if isinstance(p, str)]
         return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
 
     return _zeros_filled(map_paths(answers, unit))
+
+
+ENERGY = Dimension(mass=Fraction(1), length=Fraction(2), time=Fraction(-2))
+_RATES = {"eigenvalues": TIME ** -2, "frequencies": TIME ** -1, "growth_rates": TIME ** -1}
+_PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
+
+
+def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
+    """Is the leaf a coordinate's value (an equilibrium's, or the one modes are about)?"""
+    return len(named) >= 2 and named[-2] in ("at", "about", "equivalent") and named[-1] in coordinates
+
+
+def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], angles) -> str | None:
+    found = coordinates[name]
+    return "rad" if name in angles else None if found is None else found.unit
+
+
+def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str, Dimension | None],
+                  angles) -> str | None:
+    """The unit of a numeric route's float, from what its key means (module docstring)."""
+    if _coordinate_value(named, coordinates):
+        return _coordinate_unit(named[-1], coordinates, angles)
+    key = named[-1] if named else None
+    if key in _RATES:
+        return _RATES[key].unit
+    if key not in _PER_COORDINATES:
+        return None
+    dims = list(coordinates.values())
+    if key == "curvatures":  # eigenvalues of the Hessian: one unit only if every q shares it
+        shared = set(dims)
+        across = shared.pop() if len(shared) == 1 else None
+        return None if across is None else (ENERGY / across ** 2).unit
+    pair = indices[-2:] if len(indices) >= 2 else None
+    if pair is None or any(i >= len(dims) or dims[i] is None for i in pair):
+        return None
+    return (_PER_COORDINATES[key] / (dims[pair[0]] * dims[pair[1]])).unit
 
 
 _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any
