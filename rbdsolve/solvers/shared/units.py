@@ -12,7 +12,7 @@ dimensions, the answer gets no unit (None).
 A numeric route's answers are floats, with no expression to read: a coordinate's value
 (under ``at``, ``about`` or ``equivalent``) takes the coordinate's unit on every route,
 and the small-oscillation numbers take theirs from what they are: λ = ω² in 1/s², ω in
-rad/s, a growth rate in 1/s, M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
+rad/s, a growth rate in 1/s (printed rad/s, as every rate), M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
 curvature of V in J/(q_i q_j).
 """
 
