@@ -9,7 +9,7 @@ import math
 import pytest
 from click.testing import CliRunner
 
-from conftest import ROD_PENDULUM
+from conftest import PROBLEMS, ROD_PENDULUM
 from rbdsolve.cli import main
 
 ROD = ("title: Rod pendulum\nvalues: {m: 200 g, l: 30 cm, g: 9.81 m/s^2}\n" + ROD_PENDULUM
@@ -98,8 +98,6 @@ def test_an_answer_key_prints_si_units(tmp_path) -> None:
     problems/units/hoop-…); the numbers by hand: ω = 3 m v0/((M + 3m) l), the pivot's
     impulse (m M v0/(2(M + 3m)), m v1), T_i = m (v0² + v1²)/2; the hoop's bead about
     cos θ = g/(Ω² R): ω² = (Ω⁴ R² − g²)/(Ω² R²) at Ω = 60 rev/min = 2π rad/s, R = 0.5 m."""
-    from conftest import PROBLEMS
-
     key = tmp_path / "key.md"
     files = [PROBLEMS / "impact" / "bullet-embeds-in-hanging-rod.yaml", PROBLEMS / "units" / "hoop-rev-per-min.yaml"]
     result = CliRunner().invoke(main, ["key", *map(str, files), "-o", str(key), "--no-figures"])
@@ -111,3 +109,30 @@ def test_an_answer_key_prints_si_units(tmp_path) -> None:
     assert f"energy_before = {m * (v0**2 + v1**2) / 2:.6g} J" in text
     assert f"frequencies = [{math.sqrt((W**4 * R**2 - g**2) / (W**2 * R**2)):.6g}] rad/s" in text
     assert "equilibria[1].at.theta = 0 rad" in text
+
+
+@pytest.mark.parametrize("route", ["exact", "numeric"])
+def test_a_state_and_a_point_carry_units_on_both_routes(route) -> None:
+    """problems/kinematics/double-pendulum-tip.yaml: θ, φ angles (rad, rad/s, rad/s²), B's
+    position, velocity, acceleration in m, m/s, m/s², a distance in m; values by hand."""
+    path = PROBLEMS / "kinematics" / "double-pendulum-tip.yaml"
+    result = CliRunner().invoke(main, ["solve", "-f", "json", "--route", route, str(path)])
+    assert result.exit_code == 0, result.output
+    (kinematics,) = json.loads(result.output)["results"]
+    units, values = kinematics["units"], kinematics["values"]
+    assert units["at"] == {"theta": "rad", "phi": "rad", "dot(theta)": "rad/s", "dot(phi)": "rad/s",
+                           "ddot(theta)": "rad/s²", "ddot(phi)": "rad/s²"}
+    (point,) = units["points"]
+    assert (point["position"], point["velocity"], point["acceleration"]) == (["m"] * 3, ["m/s"] * 3, ["m/s²"] * 3)
+    assert units["distances"][0]["distance"] == "m"
+    assert values["points"][0]["velocity"][:2] == pytest.approx([0.8, -0.3], rel=1e-12)  # (a p, b s)
+
+
+def test_inertia_numbers_carry_units_on_the_numeric_route() -> None:
+    """problems/inertia/door-at-configuration.yaml: J and J_axis in kg·m², the mass in kg."""
+    path = PROBLEMS / "inertia" / "door-at-configuration.yaml"
+    result = CliRunner().invoke(main, ["solve", "-f", "json", "--route", "numeric", str(path)])
+    (inertia,) = json.loads(result.output)["results"]
+    assert inertia["units"]["J"] == [["kg·m²"] * 3] * 3 and inertia["units"]["J_axis"] == "kg·m²"
+    assert inertia["units"]["mass"] == "kg"
+    assert inertia["values"]["J_axis"] == pytest.approx(12 * 0.64 * 4 / (6 * 4.64), rel=1e-12)  # m b²h²/(6(b² + h²))

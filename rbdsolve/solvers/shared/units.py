@@ -12,12 +12,14 @@ dimensions, the answer gets no unit (None).
 A numeric route's answers are floats, with no expression to read: a coordinate's value
 (under ``at``, ``about`` or ``equivalent``) takes the coordinate's unit on every route,
 and the small-oscillation numbers take theirs from what they are: λ = ω² in 1/s², ω in
-rad/s, a growth rate in 1/s (printed rad/s, as every rate), M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
+rad/s, a growth rate in 1/s (printed rad/s, as every rate), an inertia's J and
+moments in kg·m², a point's position, velocity and acceleration in m, m/s, m/s², M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
 curvature of V in J/(q_i q_j).
 """
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Mapping
 
@@ -60,19 +62,37 @@ def answer_units(answers: object, model: Model) -> object:
     return _zeros_filled(map_paths(answers, unit))
 
 
-ENERGY = Dimension(mass=Fraction(1), length=Fraction(2), time=Fraction(-2))
-_RATES = {"eigenvalues": TIME ** -2, "frequencies": TIME ** -1, "growth_rates": TIME ** -1}
+MASS = Dimension(mass=Fraction(1))
+INERTIA = MASS * LENGTH ** 2
+ENERGY = INERTIA / TIME ** 2
+_RATES = {  # a numeric route's answers whose unit is fixed by what they are
+    "eigenvalues": TIME ** -2, "absolute_errors": TIME ** -2, "frequencies": TIME ** -1, "growth_rates": TIME ** -1,
+    "mass": MASS, "J": INERTIA, "principal_moments": INERTIA, "J_axis": INERTIA, "absolute_error": INERTIA,
+    "moments": INERTIA, "position": LENGTH, "velocity": LENGTH / TIME, "acceleration": LENGTH / TIME ** 2,
+    "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
+    "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
+}
+_RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
 _PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 
 
 def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
-    """Is the leaf a coordinate's value (an equilibrium's, or the one modes are about)?"""
-    return len(named) >= 2 and named[-2] in ("at", "about", "equivalent") and named[-1] in coordinates
+    """Is the leaf a coordinate's value, rate or acceleration (an equilibrium's, the one
+    modes are about, a state's)?"""
+    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent"):
+        return False
+    rate = _RATE_OF.fullmatch(named[-1])
+    return (rate.group(2) if rate else named[-1]) in coordinates
 
 
 def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], angles) -> str | None:
-    found = coordinates[name]
-    return "rad" if name in angles else None if found is None else found.unit
+    rate = _RATE_OF.fullmatch(name)
+    if rate is None:
+        return "rad" if name in angles else None if coordinates[name] is None else coordinates[name].unit
+    if rate.group(2) in angles:
+        return "rad/s" if rate.group(1) == "dot" else "rad/s²"
+    found = coordinates[rate.group(2)]
+    return None if found is None else (found / TIME ** (1 if rate.group(1) == "dot" else 2)).unit
 
 
 def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str, Dimension | None],
