@@ -136,3 +136,14 @@ def test_inertia_numbers_carry_units_on_the_numeric_route() -> None:
     assert inertia["units"]["J"] == [["kg·m²"] * 3] * 3 and inertia["units"]["J_axis"] == "kg·m²"
     assert inertia["units"]["mass"] == "kg"
     assert inertia["values"]["J_axis"] == pytest.approx(12 * 0.64 * 4 / (6 * 4.64), rel=1e-12)  # m b²h²/(6(b² + h²))
+
+
+@pytest.mark.parametrize("name, where", [
+    ("edges/inverted-rod-stiff-spring.yaml", 0),  # declared {kind: angle, periodic: false}
+    ("examples/pendulum-torsion-spring.yaml", 1),  # undeclared: the rod turns by θ (modes, question 2)
+])
+def test_an_angle_a_spring_winds_up_is_in_radians(name, where) -> None:
+    """θ held bare by a torsional spring is not periodic, but it is an angle all the same."""
+    result = CliRunner().invoke(main, ["solve", "-f", "json", str(PROBLEMS / name)])
+    units = json.loads(result.output)["results"][where]["units"]
+    assert (units["equilibria"][0]["at"] if "equilibria" in units else units["about"]) == {"theta": "rad"}

@@ -2,7 +2,8 @@
 
 A parameter's dimension is known from the file (``problem.dimensions``: a declared
 unit, its place in the scene, the unit of its value); a coordinate declared (or found)
-to be an angle is a pure number, a length coordinate a length, and each time
+to be an angle, or by which a body turns (one a torsional spring winds up), is a pure
+number, a length coordinate a length, and each time
 derivative divides by a second. The dimension of an answer is then read off its
 expression: a sum's terms share one, a product multiplies them, a power with a
 rational exponent scales them, and a function (sin, acos, exp) takes and gives a pure
@@ -41,7 +42,7 @@ def answer_units(answers: object, model: Model) -> object:
     pure number, 'rad' for an angle coordinate's value), None where it is unknown or
     the leaf is not a number at the values."""
     dimensions = known_dimensions(model)
-    angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if q in model.angles}
+    angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
 
     def unit(path: Path, leaf: object) -> str | None:
@@ -158,11 +159,27 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
                                     if n in model.symbols.parameters}
     for c, q in zip(model.problem.coordinates, model.q):
-        found = LENGTH if c.kind is CoordinateKind.LENGTH else NUMBER if q in model.angles else None
+        found = (LENGTH if c.kind is CoordinateKind.LENGTH
+                 else NUMBER if q in model.angles or c.kind is CoordinateKind.ANGLE or _turns_by(q, model)
+                 else None)
         if found is not None:
             out[q] = out[c.name] = found
     out[t] = TIME
     return out
+
+
+def _turns_by(q: sp.Symbol, model: Model) -> bool:
+    """Is q an angle, though not a periodic one (a torsional spring winds it up)? A body
+    turns by a number times it, or a point's position takes sin or cos of a number times
+    it: an argument of sin and cos is a pure number, so q is one (in radians)."""
+    def number_times(expr: sp.Expr) -> bool:
+        rate = sp.diff(expr, q)
+        return rate != 0 and rate.is_number
+
+    if any(b.angle is not None and number_times(b.angle) for b in model.bodies):
+        return True
+    return any(number_times(f.args[0]) for point in model.points.values()
+               for f in sp.Matrix(point).atoms(sp.sin, sp.cos) if f.has(q))
 
 
 def dimension_of(expr: sp.Expr, dims: Mapping[object, Dimension]) -> Dimension | None:
