@@ -68,7 +68,10 @@ class Reading:
     def constant(self, node: Node, what: str) -> ex.Expr:
         """A scalar that must not change with the motion: parameters and numbers only."""
         scope = self.scope.constants(f"{what} must be constant (parameters and numbers only)")
-        return self.expr(node, ex.Kind.SCALAR, what, scope)
+        try:
+            return self.expr(node, ex.Kind.SCALAR, what, scope)
+        except InputError as exc:
+            raise _unit_hint(exc, node) from None
 
     def expr(self, node: Node, kind: ex.Kind, what: str, scope: ex.Scope | None = None) -> ex.Expr:
         if isinstance(node, Seq):  # a YAML list of components is a vector literal
@@ -169,3 +172,22 @@ class Reading:
         if complete and missing:
             raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
         return tuple((n, given[n]) for n in names if n in given)
+
+
+def _unit_hint(error: InputError, node: Node) -> InputError:
+    """A quantity with a unit (``30 deg``) where an expression is read: units are read in
+    'values:' (and --set), so say how to write it here, rather than 'invalid syntax'."""
+    if not (isinstance(node, Scalar) and error.message.startswith("cannot read expression")):
+        return error
+    from rbdsolve.problem.quantity import parse_value  # pint only for a file that has a unit
+
+    try:
+        value = parse_value(node.text, node.loc, node.plain)
+    except InputError:
+        return error
+    if value.dimension is None:
+        return error
+    text = ex._clip(node.text.strip())
+    return InputError(f"'{text}' has a unit, and units are read only in 'values:' (and --set): write the "
+                      f"value here in SI without one (an angle in radians: 30° is pi/6), or name it, "
+                      f"with a parameter whose value is '{text}'", node.loc)

@@ -9,7 +9,7 @@ import math
 import pytest
 from click.testing import CliRunner
 
-from conftest import ROD_PENDULUM
+from conftest import PROBLEMS, ROD_PENDULUM
 from rbdsolve.cli import main
 
 ROD = ("title: Rod pendulum\nvalues: {m: 200 g, l: 30 cm, g: 9.81 m/s^2}\n" + ROD_PENDULUM
@@ -67,3 +67,83 @@ def test_pint_is_loaded_only_for_a_file_with_units(tmp_path) -> None:
             f"r = CliRunner().invoke(main, ['check', {str(plain)!r}]); print(r.exit_code, 'pint' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     assert out == ["0", "False"]
+
+
+def test_the_numeric_route_carries_units_too(tmp_path) -> None:
+    """Floats have no expression to read: a coordinate's value takes the coordinate's
+    unit, λ 1/s², ω rad/s, M_ij J·s²/(q_i q_j) and K_ij J/(q_i q_j) (θ an angle: kg·m², J)."""
+    path = tmp_path / "rod.yaml"
+    path.write_text(ROD.replace("  - inertia: {body: rod, about: [0, 0]}\n", ""))
+    result = CliRunner().invoke(main, ["solve", "-f", "json", "--route", "numeric", str(path)])
+    assert result.exit_code == 0, result.output
+    (modes,) = json.loads(result.output)["results"]
+    assert modes["route"] == "numeric" and modes["values"]["eigenvalues"] == pytest.approx([49.05], rel=1e-10)
+    assert modes["units"]["about"] == {"theta": "rad"}
+    assert modes["units"]["eigenvalues"] == ["1/s²"] and modes["units"]["frequencies"] == ["rad/s"]
+    assert modes["units"]["M"] == [["kg·m²"]] and modes["units"]["K"] == [["J"]]
+
+
+def test_a_coordinate_at_zero_keeps_its_unit(tmp_path) -> None:
+    """θ = 0 is an angle too (it had no unit: 0 has no dimension of its own)."""
+    path = tmp_path / "rod.yaml"
+    path.write_text(ROD.replace("  - modes: {about: {theta: 0}}\n", "  - equilibria\n"))
+    equilibria, _ = json.loads(CliRunner().invoke(main, ["solve", "-f", "json", str(path)]).output)["results"]
+    by_place = {round(eq["at"]["theta"], 9): unit["at"]["theta"]
+                for eq, unit in zip(equilibria["values"]["equilibria"], equilibria["units"]["equilibria"])}
+    assert by_place == {0.0: "rad", round(math.pi, 9): "rad"}
+
+
+def test_an_answer_key_prints_si_units(tmp_path) -> None:
+    """A Markdown key of two problems with values in units (problems/impact/bullet-…,
+    problems/units/hoop-…); the numbers by hand: ω = 3 m v0/((M + 3m) l), the pivot's
+    impulse (m M v0/(2(M + 3m)), m v1), T_i = m (v0² + v1²)/2; the hoop's bead about
+    cos θ = g/(Ω² R): ω² = (Ω⁴ R² − g²)/(Ω² R²) at Ω = 60 rev/min = 2π rad/s, R = 0.5 m."""
+    key = tmp_path / "key.md"
+    files = [PROBLEMS / "impact" / "bullet-embeds-in-hanging-rod.yaml", PROBLEMS / "units" / "hoop-rev-per-min.yaml"]
+    result = CliRunner().invoke(main, ["key", *map(str, files), "-o", str(key), "--no-figures"])
+    assert result.exit_code == 0, result.output
+    text = key.read_text(encoding="utf-8")
+    M, l, m, v0, v1, g, R, W = 4, 1.2, 0.02, 300, 40, 9.81, 0.5, 2 * math.pi
+    assert f"velocities.theta = {3 * m * v0 / ((M + 3 * m) * l):.6g} rad/s" in text
+    assert f"support_impulse = [{m * M * v0 / (2 * (M + 3 * m)):.6g}, {m * v1:.6g}, 0] N·s" in text
+    assert f"energy_before = {m * (v0**2 + v1**2) / 2:.6g} J" in text
+    assert f"frequencies = [{math.sqrt((W**4 * R**2 - g**2) / (W**2 * R**2)):.6g}] rad/s" in text
+    assert "equilibria[1].at.theta = 0 rad" in text
+
+
+@pytest.mark.parametrize("route", ["exact", "numeric"])
+def test_a_state_and_a_point_carry_units_on_both_routes(route) -> None:
+    """problems/kinematics/double-pendulum-tip.yaml: θ, φ angles (rad, rad/s, rad/s²), B's
+    position, velocity, acceleration in m, m/s, m/s², a distance in m; values by hand."""
+    path = PROBLEMS / "kinematics" / "double-pendulum-tip.yaml"
+    result = CliRunner().invoke(main, ["solve", "-f", "json", "--route", route, str(path)])
+    assert result.exit_code == 0, result.output
+    (kinematics,) = json.loads(result.output)["results"]
+    units, values = kinematics["units"], kinematics["values"]
+    assert units["at"] == {"theta": "rad", "phi": "rad", "dot(theta)": "rad/s", "dot(phi)": "rad/s",
+                           "ddot(theta)": "rad/s²", "ddot(phi)": "rad/s²"}
+    (point,) = units["points"]
+    assert (point["position"], point["velocity"], point["acceleration"]) == (["m"] * 3, ["m/s"] * 3, ["m/s²"] * 3)
+    assert units["distances"][0]["distance"] == "m"
+    assert values["points"][0]["velocity"][:2] == pytest.approx([0.8, -0.3], rel=1e-12)  # (a p, b s)
+
+
+def test_inertia_numbers_carry_units_on_the_numeric_route() -> None:
+    """problems/inertia/door-at-configuration.yaml: J and J_axis in kg·m², the mass in kg."""
+    path = PROBLEMS / "inertia" / "door-at-configuration.yaml"
+    result = CliRunner().invoke(main, ["solve", "-f", "json", "--route", "numeric", str(path)])
+    (inertia,) = json.loads(result.output)["results"]
+    assert inertia["units"]["J"] == [["kg·m²"] * 3] * 3 and inertia["units"]["J_axis"] == "kg·m²"
+    assert inertia["units"]["mass"] == "kg"
+    assert inertia["values"]["J_axis"] == pytest.approx(12 * 0.64 * 4 / (6 * 4.64), rel=1e-12)  # m b²h²/(6(b² + h²))
+
+
+@pytest.mark.parametrize("name, where", [
+    ("edges/inverted-rod-stiff-spring.yaml", 0),  # declared {kind: angle, periodic: false}
+    ("examples/pendulum-torsion-spring.yaml", 1),  # undeclared: the rod turns by θ (modes, question 2)
+])
+def test_an_angle_a_spring_winds_up_is_in_radians(name, where) -> None:
+    """θ held bare by a torsional spring is not periodic, but it is an angle all the same."""
+    result = CliRunner().invoke(main, ["solve", "-f", "json", str(PROBLEMS / name)])
+    units = json.loads(result.output)["results"][where]["units"]
+    assert (units["equilibria"][0]["at"] if "equilibria" in units else units["about"]) == {"theta": "rad"}

@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import pytest
+from click.testing import CliRunner
 
+from conftest import PROBLEMS
+from rbdsolve.cli import main
 from rbdsolve.errors import InputError
 from rbdsolve.problem import load_text
 from rbdsolve.problem.schema import CoordinateKind
@@ -42,3 +45,16 @@ def test_bad_coordinate_options(spec: str, words: str) -> None:
     with pytest.raises(InputError) as caught:
         load_text(SCENE.format(spec=spec), "c.yaml")
     assert words in str(caught.value)
+
+
+def test_an_angle_a_spring_winds_up_is_refused_located(tmp_path) -> None:
+    """Declared a (periodic) angle, but a torsional spring holds θ bare: V does not repeat
+    after a turn. Found when the model is built (solve), exit 2, at the declaration."""
+    text = (PROBLEMS / "edges" / "inverted-rod-stiff-spring.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "rod.yaml"
+    path.write_text(text.replace("  theta: {kind: angle, periodic: false}", "  theta: angle"))
+    result = CliRunner().invoke(main, ["solve", str(path)])
+    assert result.exit_code == 2, result.output
+    assert (f"{path}:15:3: coordinates.theta: 'theta' is declared an angle, which repeats after a turn, but "
+            "spring 'pivot' holds it outside sin and cos") in result.output
+    assert "declare 'theta: {kind: angle, periodic: false}', with a 'range' for the search" in result.output

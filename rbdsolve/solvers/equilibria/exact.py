@@ -223,7 +223,9 @@ def _monotone(equations, unknowns, model: Model) -> tuple[dict, str] | None:
     found = monotone_root(e, q, model.decided_by)
     if found is None:
         return None
-    where = "" if symbolic_sign(found.bound) is not None else " at the parameter values"
+    where = ("" if symbolic_sign(found.bound) is not None
+             else " at the parameter values" if found.bound.xreplace(model.values).is_number
+             else " by the assumptions")
     relation = "≥" if found.increasing else "≤"
     name = to_unicode(model.readable(q))
     text = (f"∂V/∂{name} = {to_unicode(model.readable(e))} is strictly "

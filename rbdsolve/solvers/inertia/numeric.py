@@ -17,6 +17,7 @@ from dataclasses import replace
 import numpy as np
 import sympy as sp
 
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.problem.schema import InertiaOptions, Question
@@ -62,11 +63,21 @@ def relative_estimate(moments: np.ndarray, absolute: float) -> float | None:
     return max((absolute / abs(float(m)) for m in moments if abs(m) > absolute), default=None)
 
 
+def _require_configuration(J: sp.Matrix, model: Model) -> None:
+    """A tensor that still moves with the coordinates has no numbers: say which to give."""
+    moving = [name for name, q in zip(model.state.names, model.q) if J.has(q)]
+    if moving:
+        given = ", ".join(f"{name}: …" for name in moving)
+        raise UnsolvedError(f"the tensor depends on the configuration ({', '.join(moving)}): "
+                            f"give 'at: {{{given}}}' for its numbers")
+
+
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     opts: InertiaOptions = question.options
     model = at_configuration(model, substitution(opts, model))
     mass, J = tensor(opts, model)
+    _require_configuration(J, model)
     Jf = to_floats(J, model.values)
     J_axis = None
     if opts.axis is not None:

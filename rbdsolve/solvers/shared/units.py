@@ -2,16 +2,25 @@
 
 A parameter's dimension is known from the file (``problem.dimensions``: a declared
 unit, its place in the scene, the unit of its value); a coordinate declared (or found)
-to be an angle is a pure number, a length coordinate a length, and each time
+to be an angle, or by which a body turns (one a torsional spring winds up), is a pure
+number, a length coordinate a length, and each time
 derivative divides by a second. The dimension of an answer is then read off its
 expression: a sum's terms share one, a product multiplies them, a power with a
 rational exponent scales them, and a function (sin, acos, exp) takes and gives a pure
 number. Where anything in it is of unknown dimension, or the expression mixes
 dimensions, the answer gets no unit (None).
+
+A numeric route's answers are floats, with no expression to read: a coordinate's value
+(under ``at``, ``about`` or ``equivalent``) takes the coordinate's unit on every route,
+and the small-oscillation numbers take theirs from what they are: λ = ω² in 1/s², ω in
+rad/s, a growth rate in 1/s (printed rad/s, as every rate), an inertia's J and
+moments in kg·m², a point's position, velocity and acceleration in m, m/s, m/s², M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
+curvature of V in J/(q_i q_j).
 """
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Mapping
 
@@ -33,20 +42,79 @@ def answer_units(answers: object, model: Model) -> object:
     pure number, 'rad' for an angle coordinate's value), None where it is unknown or
     the leaf is not a number at the values."""
     dimensions = known_dimensions(model)
-    angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if q in model.angles}
+    angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
+    coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
 
     def unit(path: Path, leaf: object) -> str | None:
+        named = [p for p in path if isinstance(p, str)]
+        if isinstance(leaf, float):  # a numeric route's answer
+            return _numeric_unit(named, [p for p in path if isinstance(p, int)], coordinates, angles)
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
+        if _coordinate_value(named, coordinates):
+            return _coordinate_unit(named[-1], coordinates, angles)
         if leaf == 0:
             return _ZERO
         found = dimension_of(leaf, dimensions)
         if found is None:
             return None
-        named = [p for p in path if isinstance(p, str)]
         return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
 
     return _zeros_filled(map_paths(answers, unit))
+
+
+MASS = Dimension(mass=Fraction(1))
+INERTIA = MASS * LENGTH ** 2
+ENERGY = INERTIA / TIME ** 2
+_RATES = {  # a numeric route's answers whose unit is fixed by what they are
+    "eigenvalues": TIME ** -2, "absolute_errors": TIME ** -2, "frequencies": TIME ** -1, "growth_rates": TIME ** -1,
+    "mass": MASS, "J": INERTIA, "principal_moments": INERTIA, "J_axis": INERTIA, "absolute_error": INERTIA,
+    "moments": INERTIA, "position": LENGTH, "velocity": LENGTH / TIME, "acceleration": LENGTH / TIME ** 2,
+    "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
+    "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
+}
+_RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
+_PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
+
+
+def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
+    """Is the leaf a coordinate's value, rate or acceleration (an equilibrium's, the one
+    modes are about, a state's)?"""
+    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent"):
+        return False
+    rate = _RATE_OF.fullmatch(named[-1])
+    return (rate.group(2) if rate else named[-1]) in coordinates
+
+
+def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], angles) -> str | None:
+    rate = _RATE_OF.fullmatch(name)
+    if rate is None:
+        return "rad" if name in angles else None if coordinates[name] is None else coordinates[name].unit
+    if rate.group(2) in angles:
+        return "rad/s" if rate.group(1) == "dot" else "rad/s²"
+    found = coordinates[rate.group(2)]
+    return None if found is None else (found / TIME ** (1 if rate.group(1) == "dot" else 2)).unit
+
+
+def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str, Dimension | None],
+                  angles) -> str | None:
+    """The unit of a numeric route's float, from what its key means (module docstring)."""
+    if _coordinate_value(named, coordinates):
+        return _coordinate_unit(named[-1], coordinates, angles)
+    key = named[-1] if named else None
+    if key in _RATES:
+        return _RATES[key].unit
+    if key not in _PER_COORDINATES:
+        return None
+    dims = list(coordinates.values())
+    if key == "curvatures":  # eigenvalues of the Hessian: one unit only if every q shares it
+        shared = set(dims)
+        across = shared.pop() if len(shared) == 1 else None
+        return None if across is None else (ENERGY / across ** 2).unit
+    pair = indices[-2:] if len(indices) >= 2 else None
+    if pair is None or any(i >= len(dims) or dims[i] is None for i in pair):
+        return None
+    return (_PER_COORDINATES[key] / (dims[pair[0]] * dims[pair[1]])).unit
 
 
 _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any
@@ -91,11 +159,27 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
                                     if n in model.symbols.parameters}
     for c, q in zip(model.problem.coordinates, model.q):
-        found = LENGTH if c.kind is CoordinateKind.LENGTH else NUMBER if q in model.angles else None
+        found = (LENGTH if c.kind is CoordinateKind.LENGTH
+                 else NUMBER if q in model.angles or c.kind is CoordinateKind.ANGLE or _turns_by(q, model)
+                 else None)
         if found is not None:
             out[q] = out[c.name] = found
     out[t] = TIME
     return out
+
+
+def _turns_by(q: sp.Symbol, model: Model) -> bool:
+    """Is q an angle, though not a periodic one (a torsional spring winds it up)? A body
+    turns by a number times it, or a point's position takes sin or cos of a number times
+    it: an argument of sin and cos is a pure number, so q is one (in radians)."""
+    def number_times(expr: sp.Expr) -> bool:
+        rate = sp.diff(expr, q)
+        return rate != 0 and rate.is_number
+
+    if any(b.angle is not None and number_times(b.angle) for b in model.bodies):
+        return True
+    return any(number_times(f.args[0]) for point in model.points.values()
+               for f in sp.Matrix(point).atoms(sp.sin, sp.cos) if f.has(q))
 
 
 def dimension_of(expr: sp.Expr, dims: Mapping[object, Dimension]) -> Dimension | None:

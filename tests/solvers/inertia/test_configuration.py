@@ -85,3 +85,10 @@ def test_at_needs_coordinates() -> None:
            "questions:\n  - inertia: {at: {x: 0}}\n"
     with pytest.raises(InputError, match="this scene has none"):
         load_text(text, "s.yaml")
+
+
+def test_numbers_of_a_moving_tensor_need_a_configuration() -> None:
+    """Without 'at' the rod's tensor holds θ: the numeric route says what to give."""
+    model = build_model(load_text(PENDULUM.format(options="axis: [1, 0, 0]"), "p.yaml"))
+    result = solve_problem(model, Options(route=RouteChoice.NUMERIC)).solutions[0]
+    assert not result.solved and "give 'at: {theta: …}' for its numbers" in result.error

@@ -8,11 +8,15 @@ import math
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_text
+from rbdsolve.problem import load_file, load_text
 from rbdsolve.solvers.equilibria import numeric as equilibria_numeric
 from rbdsolve.solvers.equilibria.numeric import recognize
+from rbdsolve.solvers import solve_problem
+from rbdsolve.solvers.equilibria import exact as equilibria_exact
 from rbdsolve.solvers.shared.monotone import monotone_root
-from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.options import Options, RouteChoice
+
+from conftest import PROBLEMS
 
 theta = sp.Symbol("theta", real=True)
 k = sp.Symbol("k", positive=True)
@@ -73,3 +77,17 @@ questions: [equilibria]
     solution = equilibria_numeric.solve(None, build_model(load_text(text, "r.yaml")), Options())
     zero = [eq for eq in solution.answers.equilibria if eq.recognized]
     assert len(zero) == 1 and zero[0].at == {"theta": 0.0} and zero[0].recognized == {"theta": "0"}
+
+
+def test_an_assumption_proves_the_bound(tmp_path) -> None:
+    """problems/edges/eccentric-wheel-spring.yaml: ∂V/∂θ = k r² θ − m g e sin θ, no values;
+    k r² > m g e (assumed) makes it increasing, so θ = 0 is the only root. Without the
+    assumption the sign of k r² − m g e is open and the exact route refuses."""
+    path = PROBLEMS / "edges" / "eccentric-wheel-spring.yaml"
+    solution = equilibria_exact.solve(None, build_model(load_file(path)), Options())
+    assert [(eq.at, eq.stability.value) for eq in solution.answers.equilibria] == [({"theta": 0}, "stable")]
+    assert any("which is positive by the assumptions" in w for w in solution.warnings)
+    open_bound = tmp_path / "w.yaml"
+    open_bound.write_text(path.read_text(encoding="utf-8").replace("assumptions: [k*r**2 > m*g*e]\n", ""))
+    unproved = solve_problem(build_model(load_file(open_bound)), Options(route=RouteChoice.EXACT)).solutions[0]
+    assert not unproved.solved

@@ -8,11 +8,13 @@ import math
 import pytest
 
 from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_text
+from rbdsolve.problem import load_file, load_text
 from rbdsolve.solvers.equilibria import numeric as equilibria_numeric
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.numeric_model import periodic_angles
 from rbdsolve.solvers.shared.search_box import search_box
+
+from conftest import PROBLEMS
 
 # A heavy bead (1000 kg) on a short horizontal wire between two springs of zero natural
 # length anchored at ±a (a = 3/10 m). By hand: V = ½ k (x + a)² + ½ k (a − x)², V' = 2 k x,
@@ -61,3 +63,21 @@ def test_a_periodic_angle_searches_one_turn() -> None:
     model = build_model(load_text(text, "w.yaml"))
     (box,) = search_box(model, periodic_angles(model))
     assert (box.low, box.high) == pytest.approx((-math.pi, math.pi))
+
+
+def test_a_rolling_wheel_s_declared_range_and_its_default(tmp_path) -> None:
+    """problems/edges/eccentric-wheel-soft-spring.yaml: x/r = K sin(x/r), K = 3.67875, so
+    every root has |x| ≤ K r = 0.73575 m (declared); without the range the box is ±10 × r
+    (r = 0.2 m, the largest length; M = 2 kg plays no part). Both find 0 and
+    ±x* = ±0.48453720205778310 m (mpmath, by hand in the expected file)."""
+    path = PROBLEMS / "edges" / "eccentric-wheel-soft-spring.yaml"
+    text = path.read_text(encoding="utf-8")
+    plain = tmp_path / "w.yaml"
+    plain.write_text(text.replace("x: {kind: length, range: [-m*g*e/(k*r), m*g*e/(k*r)]}", "x: length"))
+    for file, box in ((path, "x in [-0.73575, 0.73575] (declared)"),
+                      (plain, "x in [-2, 2] (±10 × r = ±0.2, the scene's largest length)")):
+        solution = equilibria_numeric.solve(None, build_model(load_file(file)), Options())
+        assert [eq.at["x"] for eq in solution.answers.equilibria] == pytest.approx(
+            [-0.48453720205778310, 0.0, 0.48453720205778310], abs=1e-12)
+        assert [eq.stability.value for eq in solution.answers.equilibria] == ["stable", "unstable", "stable"]
+        assert any(box in w for w in solution.warnings), solution.warnings
