@@ -36,8 +36,11 @@ def factored(expr: sp.Expr) -> sp.Expr:
     if expr.has(sp.pi):
         candidates.append(_factored_over(expr, atoms | {sp.pi}))
     candidates.append(_number_distributed(expr))
+    candidates = [c for c in candidates if c != expr] or [expr]
     best = min(candidates, key=lambda c: len(to_unicode(c)))
-    return best if len(to_unicode(best)) <= len(to_unicode(expr)) else expr
+    # a sum of negative terms may spend its brackets: −(3/2 M r² + e² m), not (−3/2 M r² − e² m)
+    allowance = 2 if expr.is_Add and all(x.could_extract_minus_sign() for x in expr.args) else 0
+    return best if len(to_unicode(best)) <= len(to_unicode(expr)) + allowance else expr
 
 
 def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
@@ -78,7 +81,13 @@ def factored_sum(total: sp.Add) -> sp.Expr:
     when every coefficient is rational (1/12 m (4a² + b²)), and −1 when every term is
     negative; a coefficient with π keeps its fraction (R² m (3/4 − 4 cos θ/(3π)))."""
     terms = sp.Add.make_args(sp.expand(total))
-    content = _content(terms)
+    integral, plain = (_with_content(total, _content(terms, rational)) for rational in (True, False))
+    # whole coefficients inside, 1/2 g m (2R − a), unless that costs more than the "1/2 "
+    return integral if len(to_unicode(integral)) <= len(to_unicode(plain)) + 4 else plain
+
+
+def _with_content(total: sp.Add, content: sp.Expr) -> sp.Expr:
+    """content × (total/content), the second factor factored where it splits."""
     inner = sp.expand(total / content)
     symbols = sorted(inner.free_symbols, key=sp.default_sort_key)
     if symbols and inner.is_polynomial(*symbols):
@@ -106,10 +115,10 @@ def _polynomial_part_factored(total: sp.Add) -> sp.Expr:
     return sp.Add(factored_sum(sp.Add(*polynomial)), *rest)
 
 
-def _content(terms: tuple[sp.Expr, ...]) -> sp.Expr:
+def _content(terms: tuple[sp.Expr, ...], rational: bool) -> sp.Expr:
     """The common factor of the terms of a sum: powers of the bases every term has (to
-    the least power), the rationals' gcd when every coefficient is rational, −1 when
-    every term is negative."""
+    the least power), with ``rational`` the rationals' gcd when every coefficient is
+    rational, and −1 when every term is negative."""
     powers: dict[sp.Expr, sp.Expr] | None = None
     for term in terms:
         mine: dict[sp.Expr, sp.Expr] = {}
@@ -122,7 +131,7 @@ def _content(terms: tuple[sp.Expr, ...]) -> sp.Expr:
     content = sp.Mul(*[b**e for b, e in (powers or {}).items()])
     coefficients = [t.as_coeff_Mul()[0] for t in terms]
     rests = [t.as_coeff_Mul()[1] / content for t in terms]
-    if all(c.is_Rational for c in coefficients) and not any(_irrational(r) for r in rests):
+    if rational and all(c.is_Rational for c in coefficients) and not any(_irrational(r) for r in rests):
         number = sp.gcd_list([sp.Rational(c).p for c in coefficients]) / sp.ilcm(*[sp.Rational(c).q for c in coefficients])
         content *= sp.Rational(number)
     if all(c.is_negative for c in coefficients):

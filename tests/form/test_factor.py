@@ -21,6 +21,9 @@ CASES = [
     (R * g * m - a * g * m / 2, "1/2 g m (2 R − a)"),
     (-2 * g * m - g * m_a, "−g (2 m + mₐ)"),
     (3 * R**2 * m / 4 - 4 * R**2 * m * sp.cos(th) / (3 * sp.pi), "R² m (3/4 − 4 cos(θ)/(3 π))"),
+    # every term negative: the sign outside the brackets
+    (-R**2 * m * W**2 * sp.sin(th)**2 / 2 - R * g * m * sp.cos(th), "−1/2 R m (Ω² R sin(θ)² + 2 g cos(θ))"),
+    (-sp.Rational(3, 2) * M * r**2 - e**2 * m - 2 * e * m * r - m * r**2, "−(3/2 M r² + e² m + 2 e m r + m r²)"),
 ]
 
 
@@ -33,7 +36,6 @@ def test_the_exam_form_of_a_sum(expr, form):
 
 @pytest.mark.parametrize("expr", [
     e + 1, a - b, g - R * W**2, 9 * sp.pi - 16,
-    -R**2 * m * W**2 * sp.sin(th)**2 / 2 - R * g * m * sp.cos(th),  # −1/2 R m (…) is no shorter
     12 * R**2 * th**2 + 4 * a**2 + b**2,  # irreducible, nothing in common
 ])
 def test_no_rule_that_lengthens_or_does_nothing(expr):
