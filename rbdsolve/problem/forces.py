@@ -6,23 +6,18 @@ shared by ``eom`` and ``reactions``, and the supports ``reactions`` asks about.
     reactions: {forces: [O], from_rest: {theta: 0}}        # the force at O on the only body
     reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
 
-A rate is keyed as in expressions, ``dot(theta)``; the key is matched as text, never
-parsed as an expression. Whether a point really holds the body (a pivot, a smooth guide,
+A rate is keyed as in expressions, ``dot(theta)``; the state is read by the one reader of
+a state (``context.Reading.state``), which ``kinematics`` and ``from_rest`` use too. Whether a point really holds the body (a pivot, a smooth guide,
 a joint) needs the kinematics, so the model checks it (solvers/reactions/supports.py).
 """
 
 from __future__ import annotations
 
-import re
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar
+from rbdsolve.problem.readers import check_keys, expect_scalar
 from rbdsolve.problem.schema import Body, Contact, Instant, ReactionsOptions, Support, SupportKind
 from rbdsolve.problem.yamlnodes import Map, Node, Seq
-
-_RATE = re.compile(r"^dot\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)$")
-
 
 def instant(reading: Reading, opts: Map | None) -> Instant | None:
     """``at: {q: value, dot(q): value, …}`` (every one) or ``from_rest: {q: value, …}``."""
@@ -41,23 +36,11 @@ def instant(reading: Reading, opts: Map | None) -> Instant | None:
 
 
 def _state(reading: Reading, node: Node) -> Instant:
-    table = expect_mapping(node, "a state: coordinate -> value and dot(coordinate) -> value")
-    names = list(reading.coordinates)
-    places, rates = {}, {}
-    for key, value in table.entries:
-        match = _RATE.match(key.text.strip())
-        name = match.group(1) if match else key.text.strip()
-        if name not in names:
-            offered = names + [f"dot({n})" for n in names]
-            raise InputError(f"'{key.text}' is not a coordinate or a rate dot(q){did_you_mean(key.text, offered)}",
-                             key.loc)
-        into = rates if match else places
-        into[name] = reading.constant(value, f"a value in the state '{key.text}'")
-    missing = [n for n in names if n not in places] + [f"dot({n})" for n in names if n not in rates]
-    if missing:
-        raise InputError(f"a state gives every coordinate and rate; missing {', '.join(missing)} (or give "
-                         "'from_rest:' with the coordinates alone)", table.loc)
-    return Instant(tuple((n, places[n]) for n in names), tuple((n, rates[n]) for n in names), False, table.loc)
+    """Every coordinate and every rate, read by the one reader of a state."""
+    values = reading.state(node, "a state", (0, 1), complete=True,
+                           hint=" (or give 'from_rest:' with the coordinates alone)")
+    return Instant(tuple((v.coordinate, v.value) for v in values if v.order == 0),
+                   tuple((v.coordinate, v.value) for v in values if v.order == 1), False, node.loc)
 
 
 def reactions_options(reading: Reading, opts: Map | None, key, bodies: tuple[Body, ...],
