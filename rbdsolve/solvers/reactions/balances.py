@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
@@ -86,9 +86,12 @@ def _moment(expr: sp.Expr) -> sp.Expr:
     return sp.collect(tidy(sp.expand(expr)), sorted(expr.free_symbols, key=str))
 
 
-def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
+def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
                  qdd: dict[sp.Symbol, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
-    """x from A x = b, the accelerations put in; the rows not used must hold too."""
+    """x from A x = b, the accelerations put in; the rows not used must hold too. Where
+    one does not, the question lists a point that holds nothing or leaves a support out:
+    bad input, located at the first force asked for on that body."""
+    unknowns = [c.symbol for s in supports for c in s.components]
     exprs = [sp.expand((r.lhs - r.rhs).xreplace(qdd)) for r in rows]
     A = sp.Matrix([[sp.diff(e, x) for x in unknowns] for e in exprs])
     b = sp.Matrix([-e.xreplace({x: 0 for x in unknowns}) for e in exprs])
@@ -105,10 +108,19 @@ def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
         solution[x] = clean(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise UnsolvedError(f"the forces asked for cannot keep body '{row.body}' in its motion (its {row.label} "
-                                "balance is left unsatisfied): a support on it is missing from 'forces' (a pivot, a "
-                                "joint with another body, a contact), or a point listed does not hold it")
+            raise InputError(unheld(row.body, f"its {row.label} balance"), located(supports, row.body))
     return solution
+
+
+def unheld(name: str, what: str) -> str:
+    return (f"the forces asked for cannot keep body '{name}' in its motion ({what} is left unsatisfied): a "
+            "point listed does not hold it, or a support on it is missing from 'forces' (a pivot, a joint with "
+            "another body, a contact)")
+
+
+def located(supports: tuple[Held, ...], name: str) -> Location | None:
+    """Where the question asks for the first force on body ``name``."""
+    return next((s.loc for s in supports if name in (s.on, s.by)), None)
 
 
 def clean(expr: sp.Expr) -> sp.Expr:

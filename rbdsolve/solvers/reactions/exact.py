@@ -39,9 +39,8 @@ def setup(question: Question, model: Model):
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     supports, solved, rows = setup(question, model)
-    unknowns = [c.symbol for s in supports for c in s.components]
     qdd = dict(zip(model.qdd, solved))
-    forces = solve_forces(model, rows, unknowns, qdd)
+    forces = solve_forces(model, rows, supports, qdd)
     reactions = {s.name: _reaction(s, forces) for s in supports}
     steps = [*rs.free_body_steps(model, supports, rows), rs.accelerations_step(model, solved),
              rs.solved_step(model, supports, forces)]

@@ -21,13 +21,13 @@ point: a tension T along the string.
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.solvers.shared.values import parameter_sample
@@ -67,6 +67,7 @@ class Held:
     by: str | None
     components: tuple[Component, ...]
     how: How
+    loc: Location | None = None  # where the question asks for it (bad input points there)
 
 
 def body(model: Model, name: str) -> RigidBody:
@@ -85,9 +86,8 @@ def planar(model: Model) -> bool:
 
 
 def held(model: Model, support: Support) -> Held:
-    if support.kind is SupportKind.CONTACT:
-        return _contact(model, support)
-    return _point(model, support)
+    found = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
+    return replace(found, loc=support.loc)
 
 
 def _contact(model: Model, support: Support) -> Held:
