@@ -14,7 +14,6 @@ too — where they do not, a support on that body is missing from the question.
 
 from __future__ import annotations
 
-import random
 from dataclasses import dataclass
 
 import sympy as sp
@@ -22,9 +21,11 @@ import sympy as sp
 from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.model.state import t
-from rbdsolve.solvers.reactions.supports import Held, body
-from rbdsolve.solvers.shared.values import parameter_sample
+from rbdsolve.solvers.reactions.applied import applied
+from rbdsolve.solvers.reactions.supports import Held, body, generic_point
+
+
+_Z = sp.Matrix([0, 0, 1])
 
 
 @dataclass(frozen=True)
@@ -51,6 +52,7 @@ def bodies_held(supports: tuple[Held, ...]) -> list[str]:
 def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balance]:
     """The free body diagram of every held body, component by component."""
     out = []
+    pulls = applied(model, bodies_held(supports))
     for name in bodies_held(supports):
         b = body(model, name)
         acceleration = model.state.d_dt(model.state.d_dt(b.position))
@@ -64,6 +66,10 @@ def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balanc
                 else:
                     force += sign * c.symbol * c.direction
                     moment += sign * (s.point - b.position).cross(c.symbol * c.direction)
+        for a in pulls:
+            if a.body == name:
+                force += a.force
+                moment += (a.point - b.position).cross(a.force) + a.moment * _Z
         L_dot = model.state.d_dt(b.inertia_in_scene() * b.angular_velocity(model.state))
         for k in range(dims):
             lhs = _tidied(b.mass * acceleration[k], model)
@@ -130,16 +136,9 @@ def clean(expr: sp.Expr) -> sp.Expr:
     return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
 
 
-def _sample(model: Model, seed: int) -> dict:
-    rng = random.Random(seed)
-    point = parameter_sample(model, rng)
-    point.update({q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd, t)})
-    return point
-
-
 def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
     """Rows of A independent at a generic sample, greedily, up to ``wanted``."""
-    numeric = A.xreplace(_sample(model, 5)).evalf(30)
+    numeric = A.xreplace(generic_point(model, 5)).evalf(30)
     chosen: list[int] = []
     for i in range(A.rows):
         trial = numeric.extract(chosen + [i], list(range(A.cols)))
@@ -153,7 +152,7 @@ def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
 def _holds(residual: sp.Expr, model: Model) -> bool:
     """Zero at two generic samples, relative to the size of its terms."""
     for seed in (3, 17):
-        point = _sample(model, seed)
+        point = generic_point(model, seed)
         value = abs(sp.N(residual.xreplace(point), 30))
         size = sum(abs(sp.N(t.xreplace(point), 30)) for t in sp.Add.make_args(sp.expand(residual))) or 1
         if value > 1e-15 * size:

@@ -25,9 +25,6 @@ from rbdsolve.solvers.shared.options import Options
 
 def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
-    if model.springs:
-        raise UnsolvedError("reactions in a scene with springs are not answered yet (which body each spring end "
-                            "pulls is not known to the model)")
     supports = tuple(held(model, s) for s in question.options.supports)
     found = accelerations(lagrange_equations(model), model)
     if found.solved is None:

@@ -11,6 +11,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.reactions.applied import Applied, applied
 from rbdsolve.solvers.reactions.balances import Balance
 from rbdsolve.solvers.reactions.supports import Held
 from rbdsolve.solvers.shared.accelerations import state_step
@@ -32,15 +33,29 @@ def _described(s: Held, model: Model) -> str:
     return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 
+def _pull(a: Applied, model: Model) -> str:
+    if a.moment != 0:
+        return f"spring '{a.spring}' turns body '{a.body}' by {to_unicode(model.readable(a.moment))} about e_z"
+    return (f"spring '{a.spring}' pulls body '{a.body}' at {_vector(model.readable(a.point))} with "
+            f"{_vector(model.readable(a.force))}")
+
+
 def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance]) -> list[st.Step]:
     """The forces named, then m a_G = m g + Σ R and dL_G/dt = Σ r × R per body."""
     steps = [st.definition("Free body diagrams. The forces the supports exert, each unknown along its unit "
                            "vector (scene axes): " + "; ".join(_described(s, model) for s in supports) + ".")]
     names = list(dict.fromkeys(r.body for r in rows))
+    pulls = applied(model, names)
+    if pulls:
+        steps.append(st.definition("The springs are applied forces, known: F = −k s ê on each end (ê the unit "
+                                   "vector from the other end, s the stretch), a torsional spring's moment −k s: "
+                                   + "; ".join(_pull(a, model) for a in pulls) + "."))
+    sprung = {a.body for a in pulls}
     for name in names:
         mine = [r for r in rows if r.body == name]
-        steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R component by component, and "
-                                 "dL_G/dt = Σ (r_P − r_G) × R + Σ M about its centre of mass G:",
+        F = " + Σ F" if name in sprung else ""
+        steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R{F} component by component, and "
+                                 f"dL_G/dt = Σ (r_P − r_G) × (R{F and ' + F'}) + Σ M about its centre of mass G:",
                                  *[Relation(model.to_time(r.lhs), model.to_time(r.rhs)) for r in mine]))
     return steps
 

@@ -29,6 +29,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.solvers.shared.values import parameter_sample
 
@@ -141,16 +142,22 @@ def _particle_at(b: RigidBody, P: sp.Matrix) -> bool:
     return b.inertia == sp.zeros(3, 3) and sp.simplify(P - b.position) == sp.zeros(3, 1)
 
 
+def generic_point(model: Model, seed: int) -> dict[sp.Symbol, sp.Expr]:
+    """The parameters (at their values, else pseudo-random), the coordinates, rates and
+    time at pseudo-random rationals: a generic state to test an identity or a rank at."""
+    rng = random.Random(seed)
+    point = parameter_sample(model, rng)
+    point.update({q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd, t)})
+    return point
+
+
 def _rank(columns: list[sp.Matrix], model: Model) -> int:
     """The rank of the velocity columns at a generic state (two random samples agree)."""
     if not columns:
         return 0
     ranks = []
     for seed in (7, 11):
-        rng = random.Random(seed)
-        point = {**parameter_sample(model, rng),
-                 **{q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd)}}
-        matrix = sp.Matrix.hstack(*columns).xreplace(point).evalf(30)
+        matrix = sp.Matrix.hstack(*columns).xreplace(generic_point(model, seed)).evalf(30)
         ranks.append(sp.Matrix(matrix).rank(iszerofunc=lambda x: abs(x) < 1e-20))
     return max(ranks)
 
