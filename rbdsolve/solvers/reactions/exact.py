@@ -17,9 +17,11 @@ from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces
-from rbdsolve.solvers.reactions.motion import along, energy, least_mu, zeros
+from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
+from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.shared.conditions import critical_values
 from rbdsolve.solvers.shared.options import Options
 
 
@@ -42,17 +44,29 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     steps = [*rs.free_body_steps(model, supports, rows), rs.accelerations_step(model, solved),
              rs.solved_step(model, supports, forces)]
     answers = ReactionsAnswers(reactions, {n: model.to_time(a) for n, a in zip(model.coordinate_names(), solved)})
-    instant = question.options.instant
-    if instant is not None:
-        table = state_values(model, instant)
-        at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
-        answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()})
-        steps += rs.instant_steps(model, instant, supports, at)
-        if instant.from_rest:
-            answers, more = _along_the_motion(model, supports, forces, table, answers)
-            steps += more
-    answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()})
+    criticals: list = []
+    if question.options.instant is not None:
+        answers, more, criticals = _at_the_state(model, question.options.instant, supports, forces, answers)
+        steps += more
+    answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()},
+                       critical=critical_values(criticals))
     return Solution("reactions", Route.EXACT, answers, tuple(steps))
+
+
+def _at_the_state(model: Model, instant, supports, forces, answers):
+    """The forces at the state, when each support holds there; released from rest, along
+    the motion too. Returns the answers, the steps and the critical values used."""
+    table = state_values(model, instant)
+    at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
+    limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
+    answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()},
+                       holds_when={k: model.to_time(h.condition) for k, h in limits.items()})
+    criticals = [c for h in limits.values() for c in h.criticals]
+    steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
+    if instant.from_rest:
+        answers, more, found = _along_the_motion(model, supports, forces, table, answers)
+        steps, criticals = steps + more, criticals + found
+    return answers, steps, criticals
 
 
 def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:
@@ -79,10 +93,10 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     """q̇²(q) by energy, the forces along the motion, their zeros and the least μ."""
     e = energy(model, table)
     if e is None:
-        return answers, [rs.no_energy_note(model)]
+        return answers, [rs.no_energy_note(model)], []
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
-        return answers, [rs.energy_steps(model, e)]
+        return answers, [rs.energy_steps(model, e)], []
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
     lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
@@ -90,6 +104,10 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
+    reached = {k: tuple(exists(eq, model) for eq in where) for k, where in lost.items()}
+    criticals = [c for found in reached.values() for h in found for c in h.criticals]
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
-                       contact_lost=lost, least_friction=mu)
-    return answers, [rs.energy_steps(model, e), *rs.along_steps(model, supports, values, lost, mu)]
+                       contact_lost=lost, least_friction=mu,
+                       lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
+    steps = [rs.energy_steps(model, e), *rs.along_steps(model, supports, values, lost, mu, reached)]
+    return answers, steps, criticals
