@@ -22,6 +22,7 @@ from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.applied import applied
+from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.supports import Held, body, generic_point
 
 
@@ -111,7 +112,7 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
     for j, x in enumerate(unknowns):
         Aj = A_s.copy()
         Aj[:, j] = b_s
-        solution[x] = clean(sp.expand(Aj.det(method="berkowitz")) / det)
+        solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
             raise InputError(unheld(row.body, f"its {row.label} balance"), located(supports, row.body))
@@ -127,13 +128,6 @@ def unheld(name: str, what: str) -> str:
 def located(supports: tuple[Held, ...], name: str) -> Location | None:
     """Where the question asks for the first force on body ``name``."""
     return next((s.loc for s in supports if name in (s.on, s.by)), None)
-
-
-def clean(expr: sp.Expr) -> sp.Expr:
-    """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
-    value = tidy_fraction(expr)
-    top, bottom = sp.fraction(value)
-    return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
 
 
 def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:

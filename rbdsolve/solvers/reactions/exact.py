@@ -22,6 +22,7 @@ from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
 from rbdsolve.solvers.shared.conditions import critical_values
+from rbdsolve.solvers.shared.energy_integral import energy_step
 from rbdsolve.solvers.shared.options import Options
 
 
@@ -96,7 +97,7 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
         return answers, [rs.no_energy_note(model)], []
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
-        return answers, [rs.energy_steps(model, e)], []
+        return answers, [energy_step(model, e, True)], []
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
     lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
@@ -109,5 +110,5 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu,
                        lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
-    steps = [rs.energy_steps(model, e), *rs.along_steps(model, supports, values, lost, mu, reached)]
+    steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached)]
     return answers, steps, criticals

@@ -22,8 +22,8 @@ import sympy as sp
 
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.reactions.balances import clean
 from rbdsolve.solvers.reactions.supports import Held, How
+from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.solvers.shared.conditions import Critical, exists_when
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
@@ -60,7 +60,7 @@ def _within_one(r: sp.Expr, model: Model) -> bool:
 def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     """μ ≥ |F|/N: the friction a rolling contact needs, over the normal push; |…| kept
     where neither the parameters' signs nor their values decide the sign."""
-    ratio = sp.simplify(clean(F / N))
+    ratio = sp.simplify(clean_fraction(F / N))
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
         return sp.Abs(ratio)

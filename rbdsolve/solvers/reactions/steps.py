@@ -105,14 +105,6 @@ def _holding(s: Held) -> str:
         s.how, f"the contact at {s.name} (N ≥ 0)" if any(c.one_sided for c in s.components) else f"{s.name}")
 
 
-def energy_steps(model: Model, e) -> st.Step:
-    qd = model.qd[0]
-    return st.result("Energy is conserved (the supports do no work, gravity has a potential): T + V is constant, "
-                     "T + V = V(q₀) at release from rest, so",
-                     Relation(model.to_time(e.T + e.V), model.to_time(e.start)),
-                     Relation(model.to_time(qd) ** 2, model.to_time(e.rate_squared)))
-
-
 def no_energy_note(model: Model) -> st.Step:
     return st.note("With more than one coordinate (or time in the scene) T + V = constant does not fix each rate: "
                    "the forces are given at release only.")
