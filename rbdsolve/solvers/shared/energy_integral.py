@@ -72,8 +72,8 @@ def energy_integral(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyInte
 def energy_step(model: Model, e: EnergyIntegral, from_rest: bool):
     """The integral as the exam says it: "T + V is constant: T + V = V(q₀)", then q̇²."""
     if e.plain:
-        said = ("Energy is conserved (the forces that do work have a potential: gravity, springs; the supports do none): "
-                "T + V is constant, " + ("T + V = V(q₀) at release from rest" if from_rest
+        said = ("Energy is conserved (the forces that do work have a potential: gravity, springs; the "
+                "supports do none): T + V is constant, " + ("T + V = V(q₀) at release from rest" if from_rest
                                           else "T + V = its value at the state given"))
     else:
         said = ("The Lagrangian holds no t, so Jacobi's integral h = T₂ − T₀ + V (T₂, T₀ the parts of T of "
