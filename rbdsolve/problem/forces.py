@@ -7,8 +7,9 @@ shared by ``eom`` and ``reactions``, and the supports ``reactions`` asks about.
     reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
 
 A rate is keyed as in expressions, ``dot(theta)``; the state is read by the one reader of
-a state (``context.Reading.state``), which ``kinematics`` and ``from_rest`` use too. Whether a point really holds the body (a pivot, a smooth guide,
-a joint) needs the kinematics, so the model checks it (solvers/reactions/supports.py).
+a state (``context.Reading.state``), which ``kinematics`` and ``from_rest`` use too.
+Whether a point really holds the body (a pivot, a smooth guide, a joint) needs the
+kinematics, so the model checks it (solvers/reactions/supports.py).
 """
 
 from __future__ import annotations
