@@ -1,5 +1,6 @@
 """What the force questions read: a state of the motion (``at:`` or ``from_rest:``),
-shared by ``eom`` and ``reactions``, and the supports ``reactions`` asks about.
+shared by ``eom``, ``reactions`` and ``energy``, the supports ``reactions`` asks about,
+and where ``energy`` gives the speed.
 
     eom: {from_rest: {theta: pi/2}}                        # q̈ just after release
     eom: {at: {theta: pi/2, dot(theta): 0}}                # every coordinate and rate
@@ -17,7 +18,7 @@ from __future__ import annotations
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, expect_scalar
-from rbdsolve.problem.schema import Body, Contact, Instant, ReactionsOptions, Support, SupportKind
+from rbdsolve.problem.schema import Body, Contact, EnergyOptions, Instant, ReactionsOptions, Support, SupportKind
 from rbdsolve.problem.yamlnodes import Map, Node, Seq
 
 def instant(reading: Reading, opts: Map | None) -> Instant | None:
@@ -42,6 +43,31 @@ def _state(reading: Reading, node: Node) -> Instant:
                            hint=" (or give 'from_rest:' with the coordinates alone)")
     return Instant(tuple((v.coordinate, v.value) for v in values if v.order == 0),
                    tuple((v.coordinate, v.value) for v in values if v.order == 1), False, node.loc)
+
+
+def energy_options(reading: Reading, opts: Map | None, key, points: tuple[str, ...]) -> EnergyOptions:
+    """``energy: {from_rest: {…} | at: {…}, to: {q: value}, points: [P]}``: the start state
+    is needed; ``to`` is a configuration (every coordinate), ``points`` names points."""
+    start = instant(reading, opts)
+    if start is None:
+        raise InputError("'energy' needs the state the motion starts from: 'from_rest: {q: VALUE}' or 'at: {q: "
+                         "VALUE, dot(q): RATE}'", key.loc)
+    to = opts.get("to")
+    configuration = reading.coordinate_values(to, "the configuration 'to'", complete=True) if to is not None else ()
+    node = opts.get("points")
+    names = ()
+    if node is not None:
+        items = node.items if isinstance(node, Seq) else [node]
+        names = tuple(_point_name(item, points) for item in items)
+    return EnergyOptions(start, configuration, names, key.loc)
+
+
+def _point_name(node: Node, points: tuple[str, ...]) -> str:
+    name = expect_scalar(node, "a point name").text.strip()
+    if name not in points:
+        hint = did_you_mean(name, list(points)) or (f" (points: {', '.join(points)})" if points else "")
+        raise InputError(f"no point '{name}'{hint}", node.loc)
+    return name
 
 
 def reactions_options(reading: Reading, opts: Map | None, key, bodies: tuple[Body, ...],
