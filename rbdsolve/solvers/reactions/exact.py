@@ -105,7 +105,10 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
-    reached = {k: tuple(exists(eq, model) for eq in where) for k, where in lost.items()}
+    reached = {k: tuple(exists(eq, model, e.rate_squared) for eq in where) for k, where in lost.items()}
+    lost = {k: tuple(eq for eq, h in zip(where, reached[k]) if h.condition is not sp.false)
+            for k, where in lost.items()}
+    reached = {k: tuple(h for h in found if h.condition is not sp.false) for k, found in reached.items()}
     criticals = [c for found in reached.values() for h in found for c in h.criticals]
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu,

@@ -107,16 +107,32 @@ def _nonnegative(value: sp.Expr, model: Model) -> Holds:
     return Holds(found.condition, found.criticals)
 
 
-def exists(where: sp.Relational, model: Model) -> Holds:
-    """cos q = c (sin q = c) is reached somewhere only when |c| ≤ 1: solved for one parameter
-    where the parameters' signs do not decide it (true for q = c)."""
-    if not isinstance(where.lhs, (sp.cos, sp.sin)) or not where.rhs.free_symbols:
-        return Holds(sp.true, ())
+def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+    """Where the motion from rest reaches a zero cos q = c (sin q = c, q = c): |c| ≤ 1, and
+    q̇² ≥ 0 there (the motion turns back before a zero where q̇² < 0 — a cylinder released
+    inside a cylinder below the horizontal never leaves it); each solved for one parameter
+    where the parameters' signs do not decide it."""
+    parts = [_reached(where, model, rate_squared)]
     c = where.rhs
-    if _within(c):
+    if isinstance(where.lhs, (sp.cos, sp.sin)) and c.free_symbols and not _within(c):
+        parts += [_nonnegative(1 - c, model), _nonnegative(1 + c, model)]
+    return Holds(sp.And(*(h.condition for h in parts)), tuple(c for h in parts for c in h.criticals))
+
+
+def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+    """q̇² ≥ 0 at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
+    sin q = c), or q = c; kept (true) where q̇² holds q otherwise."""
+    q = model.q[0]
+    side = where.lhs.xreplace({model.to_time(q): q})
+    c = where.rhs
+    if side == q:
+        value = rate_squared.xreplace({q: c})
+    else:
+        other = sp.sin(q) if isinstance(side, sp.cos) else sp.cos(q)
+        value = sp.expand(rate_squared).xreplace({side: c}).subs(other**2, 1 - c**2)
+    if value.has(q):
         return Holds(sp.true, ())
-    below, above = _nonnegative(1 - c, model), _nonnegative(1 + c, model)
-    return Holds(sp.And(below.condition, above.condition), below.criticals + above.criticals)
+    return _nonnegative(clean_fraction(value), model)
 
 
 def _within(c: sp.Expr) -> bool:

@@ -123,8 +123,9 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                 if h.condition is not sp.true:
                     named = critical_values(h.criticals)
                     steps += critical_steps(named, "where that point stops being reached")
-                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|…| ≤ 1) "
-                                           "only when:", *_conditions(model.to_time(h.condition), named)))
+                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
+                                           "and q̇² ≥ 0 there) only when:",
+                                           *_conditions(model.to_time(h.condition), named)))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
     for name, value in mu.items():

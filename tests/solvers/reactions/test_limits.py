@@ -82,3 +82,23 @@ def test_a_string_that_stays_taut_holds_always() -> None:
     text = (PROBLEMS / "forces" / "yo-yo.yaml").read_text(encoding="utf-8")
     answers = _answers(text)
     assert answers["holds_when"]["S"] == "True" and answers["critical"] == []
+
+
+def test_a_zero_the_motion_does_not_reach_is_said() -> None:
+    """A solid cylinder (radius r) released from rest at θ = α inside a hollow one (R):
+    its centre moves on a circle of radius R − r, so radially
+    m (R − r) θ̇² = N − m g cos θ, and T + V constant gives
+    (3/4) m (R − r)² θ̇² = m g (R − r)(cos θ − cos α). So N = m g (7 cos θ − 4 cos α)/3,
+    zero at cos θ = 4 cos α/7, where cos θ − cos α = −3 cos α/7: reached (θ̇² ≥ 0) only
+    when cos α ≤ 0, α ≥ π/2; released lower, the cylinder turns back first."""
+    text = (PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    text = text.replace("parameters:\n", "parameters:\n  alpha: angle of release\n")
+    text = "\n".join(line for line in text.splitlines() if not line.startswith("values:"))
+    answers = _answers(text + "\nquestions:\n  - reactions: {from_rest: {theta: alpha}}\n")
+    th = sp.Function("theta")(sp.Symbol("t"))
+    (name,) = answers["along"]
+    N = _read(answers["along"][name]["N_" + name])
+    assert sp.simplify(N - m * g * (7 * sp.cos(th) - 4 * sp.cos(alpha)) / 3) == 0
+    (lost,) = answers["contact_lost"]["N_" + name]
+    assert sp.simplify(_read(lost).rhs - 4 * sp.cos(alpha) / 7) == 0
+    assert _read(answers["lost_exists_when"]["N_" + name][0]) == sp.Ge(alpha, sp.pi / 2)
