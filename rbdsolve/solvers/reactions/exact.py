@@ -20,7 +20,7 @@ from rbdsolve.solvers.reactions.balances import balances, solve_forces
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
-from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.shared.accelerations import accelerations, at_state, clean_fraction, state_values
 from rbdsolve.solvers.shared.conditions import critical_values
 from rbdsolve.solvers.shared.energy_integral import energy_step
 from rbdsolve.solvers.shared.options import Options
@@ -73,11 +73,18 @@ def _at_the_state(model: Model, instant, supports, forces, answers):
 def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:
     """The support's components, and its force R = Σ x e_x in scene axes (at the state
     ``table`` when given)."""
-    force = sum((values[c.symbol] * c.direction.xreplace(table or {}) for c in s.components if not c.moment),
-                sp.zeros(3, 1))
+    pushes = [(values[c.symbol], c.direction.xreplace(table or {})) for c in s.components if not c.moment]
     moment = next((values[c.symbol] for c in s.components if c.moment), None)
     return Reaction(s.on, s.by, s.how, {str(c.symbol): values[c.symbol] for c in s.components},
-                    tuple(sp.simplify(x) for x in force), moment)
+                    tuple(_summed([x * d[k] for x, d in pushes if d[k] != 0]) for k in range(3)), moment)
+
+
+def _summed(terms: list[sp.Expr]) -> sp.Expr:
+    """A force component: one term as it is (a pivot's R_Ox along e_x), several as one
+    cleaned fraction (a push along a turning normal)."""
+    if len(terms) <= 1:
+        return terms[0] if terms else sp.Integer(0)
+    return clean_fraction(sp.Add(*terms))
 
 
 def _timeless(r: Reaction, model: Model) -> Reaction:
