@@ -57,7 +57,7 @@ def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance
         mine = [r for r in rows if r.body == name]
         F = " + Σ F" if name in sprung else ""
         steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R{F} component by component, and "
-                                 f"dL_G/dt = Σ (r_P − r_G) × (R{F and ' + F'}) + Σ M about its centre of mass G:",
+                                 f"dL_G/dt = Σ (r_P − r_G) × {'(R + F)' if F else 'R'} + Σ M about its centre of mass G:",
                                  *[Relation(model.to_time(r.lhs), model.to_time(r.rhs)) for r in mine]))
     return steps
 
