@@ -89,3 +89,19 @@ def test_pivot_reaction_with_a_torsional_and_a_linear_spring() -> None:
     got = answers["reactions"]["O"]["components"]
     assert sp.simplify(_read(got["R_Ox"]) - expected[0]) == 0
     assert sp.simplify(_read(got["R_Oy"]) - expected[1]) == 0
+
+
+def test_the_numeric_route_counts_the_spring() -> None:
+    """The bead with m = 1, R = 2, a = 1, k = 3 at θ = 1, θ̇ = 2: by the hand formula
+    above N = m R θ̇² − k R + k a cos θ, and θ̈ = −k a sin θ/(m R)."""
+    import math
+
+    from rbdsolve.solvers import Options, RouteChoice
+
+    text = BEAD.replace("questions:", "values: {m: 1, R: 2, a: 1, k: 3}\nquestions:").replace(
+        "reactions: {forces: [P]}", "reactions: {forces: [P], at: {theta: 1, dot(theta): 2}}")
+    report = solve_problem(build_model(load_text(text, "p.yaml")), Options(route=RouteChoice.NUMERIC))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert result["ok"], result["error"]
+    assert abs(result["answers"]["at"]["P"]["N_P"] - (2 * 4 - 6 + 3 * math.cos(1))) < 1e-12
+    assert abs(result["answers"]["accelerations"]["theta"] + 3 * math.sin(1) / 2) < 1e-12
