@@ -128,7 +128,10 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                                            *_conditions(model.to_time(h.condition), named)))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
+    q = model.to_time(model.q[0])
     for name, value in mu.items():
+        where = (f" at each {to_unicode(q)} (for the whole motion, the largest of it over the {to_unicode(q)} "
+                 "reached)") if value.has(q) else ""
         steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
-                               "friction is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
+                               f"friction{where} is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
     return steps
