@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, SpringModel
 from rbdsolve.model.state import t
 from rbdsolve.solvers.reactions.supports import generic_point, material_velocity, planar
@@ -66,7 +67,8 @@ def _carrier(model: Model, s: SpringModel, end: sp.Matrix, held: list[str]) -> s
     found = [b.name for b in model.bodies if b.position is not None
              and _zero(v - material_velocity(model, b, end), model)]
     if not found:
-        raise UnsolvedError(f"spring '{s.name}': its end {tuple(end)} moves with no body, so which body it pulls "
+        raise UnsolvedError(f"spring '{s.name}': its end {to_unicode(model.readable(end.T))} moves with no body, "
+                            "so which body it pulls "
                             "is not known (fix each end to a body's point, or to the ground)")
     if len(found) > 1 and set(found) & set(held):
         raise UnsolvedError(f"spring '{s.name}': its end is a point of bodies {', '.join(found)} (a joint), so "

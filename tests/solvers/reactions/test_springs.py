@@ -105,3 +105,28 @@ def test_the_numeric_route_counts_the_spring() -> None:
     assert result["ok"], result["error"]
     assert abs(result["answers"]["at"]["P"]["N_P"] - (2 * 4 - 6 + 3 * math.cos(1))) < 1e-12
     assert abs(result["answers"]["accelerations"]["theta"] + 3 * math.sin(1) / 2) < 1e-12
+
+
+def _refusal(text: str) -> str:
+    report = solve_problem(build_model(load_text(text, "p.yaml")))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert not result["ok"]
+    return result["error"]
+
+
+def test_a_spring_end_that_no_body_carries_is_refused() -> None:
+    """Q = 2P moves, but is no material point of the bead (a particle at P)."""
+    text = BEAD.replace("  P: R * [cos(theta), sin(theta)]", "  P: R * [cos(theta), sin(theta)]\n  Q: 2*P")
+    assert "moves with no body" in _refusal(text.replace("between: [P, A]", "between: [Q, A]"))
+
+
+def test_a_spring_at_a_joint_is_refused() -> None:
+    """Seed problem 1's G1 is the long rod's centre and the short rod's pivot: a spring
+    there pulls one of them, which the scene does not say."""
+    from conftest import SEED
+
+    head = (SEED / "p1-two-rods.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    head = head.replace("parameters:", "parameters:\n  k: stiffness").replace("points:", "points:\n  A: [r, 0]")
+    text = head + ("springs:\n  s: {stiffness: k, between: [G1, A]}\nquestions:\n  - reactions: {forces: "
+                   "[{at: O, on: long_rod}, {at: G1, on: short_rod, by: long_rod}]}\n")
+    assert "its end is a point of bodies long_rod, short_rod" in _refusal(text)
