@@ -264,6 +264,18 @@ def test_reactions_bar_swinging_on_a_pivot() -> None:
     assert same(got["rate_squared"]["theta"], "3*g*(cos(theta(t)) - cos(theta0))/l")
 
 
+def test_energy_bar_falling_from_upright() -> None:
+    """By hand: J_O = m l²/3, G at height (l/2) cos θ; T + V constant from rest upright,
+    (m l²/6) θ̇² = (m g l/2)(1 − cos θ), so θ̇² = 3 g (1 − cos θ)/l; the tip B at distance
+    l moves at v = l θ̇: v_B² = 3 g l (1 − cos θ), √(3 g l) at the horizontal."""
+    got = answers("energy")
+    assert got["integral"] == "T + V"
+    assert same(got["rate_squared"]["theta"], "3*g*(1 - cos(theta(t)))/l")
+    assert same(got["speed_squared"]["B"], "3*g*l*(1 - cos(theta(t)))")
+    assert same(got["there"]["rate"]["theta"], "sqrt(3*g/l)") and same(got["there"]["speed"]["B"], "sqrt(3*g*l)")
+    assert got["there"]["reached"] is True
+
+
 # The scene templates (rolling, rocking), against the textbook answers by hand:
 # a solid cylinder inside a cylinder, ω² = 2g/(3(R − r)); a half-disk rocking on the
 # floor, ω² = 8g/((9π − 16) R) (problems/contacts/*.expected.yaml derive both).

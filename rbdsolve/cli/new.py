@@ -24,6 +24,7 @@ KINDS = {
     "steady_motion": "steady motion, dL/dt = M (a conical pendulum of a rod)",
     "kinematics": "a point's position, velocity and acceleration at a state (a slider-crank)",
     "reactions": "forces at supports, energy (a bar swinging on a pivot)",
+    "energy": "speed by conservation of energy, T + V constant (a bar falling from upright)",
 }
 
 # Scenes rather than question kinds: templates that show a part of the format.

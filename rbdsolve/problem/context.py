@@ -12,11 +12,13 @@ every refusal names file:line:column.
 from __future__ import annotations
 
 import keyword
+import re
 from fractions import Fraction
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.readers import expect_mapping, expect_scalar
+from rbdsolve.problem.schema import StateValue
 from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
 
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
@@ -161,17 +163,47 @@ class Reading:
 
     def coordinate_values(self, node: Node, what: str, complete: bool) -> tuple[tuple[str, ex.Expr], ...]:
         """coordinate -> constant value, in the coordinates' order."""
-        table = expect_mapping(node, f"{what}: coordinate -> value")
+        return tuple((v.coordinate, v.value) for v in self.state(node, what, (0,), complete))
+
+    def state(self, node: Node, what: str, orders: tuple[int, ...] = (0,), complete: bool = False,
+              hint: str = "") -> tuple[StateValue, ...]:
+        """The one reader of a state: coordinate q (order 0), ``dot(q)`` (1), ``ddot(q)``
+        (2) -> a constant value, for the orders allowed; the key is matched as text, never
+        parsed. ``complete``: every coordinate at every order allowed, a missing one named
+        (``hint`` says what else the user may give). In the coordinates' order, order by order."""
+        table = expect_mapping(node, f"{what}: " + " and ".join(
+            {0: "coordinate", 1: "dot(coordinate)", 2: "ddot(coordinate)"}[k] for k in orders) + " -> value")
         names = list(self.coordinates)
-        given = {}
+        given: dict[tuple[int, str], ex.Expr] = {}
         for key, value in table.entries:
-            if key.text not in names:
-                raise InputError(f"'{key.text}' is not a coordinate{did_you_mean(key.text, names)}", key.loc)
-            given[key.text] = self.constant(value, f"a value in {what}")
-        missing = [n for n in names if n not in given]
+            order, name = _state_key(key.text)
+            if name not in names or order not in orders:
+                raise InputError(f"'{key.text}' is not a coordinate{_ORDER_WORDS[orders]}"
+                                 f"{did_you_mean(name, names)}", key.loc)
+            given[(order, name)] = self.constant(value, f"{_WHAT[order]} in {what}")
+        wanted = [(k, n) for k in orders for n in names]
+        missing = [_state_name(k, n) for k, n in wanted if (k, n) not in given]
         if complete and missing:
-            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)}", table.loc)
-        return tuple((n, given[n]) for n in names if n in given)
+            every = "every coordinate" + (" and rate" if 1 in orders else "")
+            raise InputError(f"give a value for {every}; missing {', '.join(missing)}{hint}", table.loc)
+        return tuple(StateValue(n, k, given[(k, n)]) for k, n in wanted if (k, n) in given)
+
+
+_STATE_KEY = re.compile(r"^\s*(dot|ddot)\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)\s*$")
+_ORDER_WORDS = {(0,): "", (0, 1): ", nor dot() of one", (0, 1, 2): ", nor dot() or ddot() of one"}
+_WHAT = {0: "a coordinate's value", 1: "a rate", 2: "an acceleration"}
+
+
+def _state_key(text: str) -> tuple[int, str]:
+    """(order, coordinate) of a state's key: theta (0), dot(theta) (1), ddot(theta) (2)."""
+    match = _STATE_KEY.match(text)
+    if match is None:
+        return 0, text.strip()
+    return (1 if match.group(1) == "dot" else 2), match.group(2)
+
+
+def _state_name(order: int, name: str) -> str:
+    return ("", "dot", "ddot")[order] + (f"({name})" if order else name)
 
 
 def _unit_hint(error: InputError, node: Node) -> InputError:

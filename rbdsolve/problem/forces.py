@@ -1,28 +1,25 @@
 """What the force questions read: a state of the motion (``at:`` or ``from_rest:``),
-shared by ``eom`` and ``reactions``, and the supports ``reactions`` asks about.
+shared by ``eom``, ``reactions`` and ``energy``, the supports ``reactions`` asks about,
+and where ``energy`` gives the speed.
 
     eom: {from_rest: {theta: pi/2}}                        # q̈ just after release
     eom: {at: {theta: pi/2, dot(theta): 0}}                # every coordinate and rate
     reactions: {forces: [O], from_rest: {theta: 0}}        # the force at O on the only body
     reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
 
-A rate is keyed as in expressions, ``dot(theta)``; the key is matched as text, never
-parsed as an expression. Whether a point really holds the body (a pivot, a smooth guide,
-a joint) needs the kinematics, so the model checks it (solvers/reactions/supports.py).
+A rate is keyed as in expressions, ``dot(theta)``; the state is read by the one reader of
+a state (``context.Reading.state``), which ``kinematics`` and ``from_rest`` use too.
+Whether a point really holds the body (a pivot, a smooth guide, a joint) needs the
+kinematics, so the model checks it (solvers/reactions/supports.py).
 """
 
 from __future__ import annotations
 
-import re
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Body, Contact, Instant, ReactionsOptions, Support, SupportKind
+from rbdsolve.problem.readers import check_keys, expect_scalar
+from rbdsolve.problem.schema import Body, Contact, EnergyOptions, Instant, ReactionsOptions, Support, SupportKind
 from rbdsolve.problem.yamlnodes import Map, Node, Seq
-
-_RATE = re.compile(r"^dot\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)$")
-
 
 def instant(reading: Reading, opts: Map | None) -> Instant | None:
     """``at: {q: value, dot(q): value, …}`` (every one) or ``from_rest: {q: value, …}``."""
@@ -41,23 +38,36 @@ def instant(reading: Reading, opts: Map | None) -> Instant | None:
 
 
 def _state(reading: Reading, node: Node) -> Instant:
-    table = expect_mapping(node, "a state: coordinate -> value and dot(coordinate) -> value")
-    names = list(reading.coordinates)
-    places, rates = {}, {}
-    for key, value in table.entries:
-        match = _RATE.match(key.text.strip())
-        name = match.group(1) if match else key.text.strip()
-        if name not in names:
-            offered = names + [f"dot({n})" for n in names]
-            raise InputError(f"'{key.text}' is not a coordinate or a rate dot(q){did_you_mean(key.text, offered)}",
-                             key.loc)
-        into = rates if match else places
-        into[name] = reading.constant(value, f"a value in the state '{key.text}'")
-    missing = [n for n in names if n not in places] + [f"dot({n})" for n in names if n not in rates]
-    if missing:
-        raise InputError(f"a state gives every coordinate and rate; missing {', '.join(missing)} (or give "
-                         "'from_rest:' with the coordinates alone)", table.loc)
-    return Instant(tuple((n, places[n]) for n in names), tuple((n, rates[n]) for n in names), False, table.loc)
+    """Every coordinate and every rate, read by the one reader of a state."""
+    values = reading.state(node, "a state", (0, 1), complete=True,
+                           hint=" (or give 'from_rest:' with the coordinates alone)")
+    return Instant(tuple((v.coordinate, v.value) for v in values if v.order == 0),
+                   tuple((v.coordinate, v.value) for v in values if v.order == 1), False, node.loc)
+
+
+def energy_options(reading: Reading, opts: Map | None, key, points: tuple[str, ...]) -> EnergyOptions:
+    """``energy: {from_rest: {…} | at: {…}, to: {q: value}, points: [P]}``: the start state
+    is needed; ``to`` is a configuration (every coordinate), ``points`` names points."""
+    start = instant(reading, opts)
+    if start is None:
+        raise InputError("'energy' needs the state the motion starts from: 'from_rest: {q: VALUE}' or 'at: {q: "
+                         "VALUE, dot(q): RATE}'", key.loc)
+    to = opts.get("to")
+    configuration = reading.coordinate_values(to, "the configuration 'to'", complete=True) if to is not None else ()
+    node = opts.get("points")
+    names = ()
+    if node is not None:
+        items = node.items if isinstance(node, Seq) else [node]
+        names = tuple(_point_name(item, points) for item in items)
+    return EnergyOptions(start, configuration, names, key.loc)
+
+
+def _point_name(node: Node, points: tuple[str, ...]) -> str:
+    name = expect_scalar(node, "a point name").text.strip()
+    if name not in points:
+        hint = did_you_mean(name, list(points)) or (f" (points: {', '.join(points)})" if points else "")
+        raise InputError(f"no point '{name}'{hint}", node.loc)
+    return name
 
 
 def reactions_options(reading: Reading, opts: Map | None, key, bodies: tuple[Body, ...],

@@ -9,16 +9,11 @@ constant values (parameters and numbers); what it leaves out stays symbolic.
 
 from __future__ import annotations
 
-import re
-
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.readers import describe, expect_mapping, expect_scalar
+from rbdsolve.problem.readers import describe, expect_scalar
 from rbdsolve.problem.schema import KinematicsOptions, Point, StateValue
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
-
-_RATE = re.compile(r"^\s*(dot|ddot)\s*\(\s*(\w+)\s*\)\s*$")
-
 
 class KinematicsReader:
     def __init__(self, reading: Reading, points: tuple[Point, ...]):
@@ -65,16 +60,6 @@ class KinematicsReader:
         return tuple(out)
 
     def state(self, node: Node) -> tuple[StateValue, ...]:
-        """coordinate, dot(coordinate) or ddot(coordinate) -> a constant value."""
-        table = expect_mapping(node, "a state: coordinate (or dot(q), ddot(q)) -> value")
-        coordinates = list(self.reading.coordinates)
-        out = []
-        for key, value in table.entries:
-            match = _RATE.match(key.text)
-            name, order = (match.group(2), 1 if match.group(1) == "dot" else 2) if match else (key.text.strip(), 0)
-            if name not in coordinates:
-                raise InputError(f"'{key.text}' is not a coordinate, nor dot() or ddot() of one"
-                                 f"{did_you_mean(name, coordinates)}", key.loc)
-            what = {0: "a coordinate's value", 1: "a rate", 2: "an acceleration"}[order]
-            out.append(StateValue(name, order, self.reading.constant(value, f"{what} in 'at'")))
-        return tuple(out)
+        """coordinate, dot(coordinate) or ddot(coordinate) -> a constant value (what is left
+        out stays symbolic), by the one reader of a state."""
+        return self.reading.state(node, "'at'", (0, 1, 2))

@@ -11,7 +11,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.amplitudes import amplitudes
-from rbdsolve.problem.forces import instant, reactions_options
+from rbdsolve.problem.forces import energy_options, instant, reactions_options
 from rbdsolve.problem.impact import ImpactReader
 from rbdsolve.problem.kinematics import KinematicsReader
 from rbdsolve.problem.schema import (
@@ -43,6 +43,7 @@ OPTIONS = {
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
     QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
+    QuestionKind.ENERGY: ("from_rest", "at", "to", "points"),
 }
 
 
@@ -111,6 +112,9 @@ class QuestionReader:
             return Question(kind, KinematicsReader(self.reading, self.points).options(opts, key), key.loc)
         if kind is QuestionKind.REACTIONS:
             return Question(kind, reactions_options(self.reading, opts, key, self.bodies, self.contacts), key.loc)
+        if kind is QuestionKind.ENERGY:
+            names = tuple(p.name for p in self.points)
+            return Question(kind, energy_options(self.reading, opts, key, names), key.loc)
         return Question(kind, None, key.loc)
 
     def frame(self, node: Node | None) -> str | None:

@@ -106,6 +106,7 @@ class QuestionKind(Enum):
     STEADY_MOTION = "steady_motion"
     KINEMATICS = "kinematics"
     REACTIONS = "reactions"
+    ENERGY = "energy"
 
     @property
     def needs_coordinates(self) -> bool:
@@ -116,7 +117,7 @@ class QuestionKind(Enum):
         """Does the question need the motion (positions as functions of the coordinates),
         not just the velocities at one instant?"""
         return self in (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES, QuestionKind.KINEMATICS,
-                        QuestionKind.REACTIONS)
+                        QuestionKind.REACTIONS, QuestionKind.ENERGY)
 
 
 @dataclass(frozen=True)
@@ -368,6 +369,17 @@ class ReactionsOptions:
 
 
 @dataclass(frozen=True)
+class EnergyOptions:
+    """The energy integral from a start state, and the speed it gives at ``to`` (a
+    configuration: coordinate -> value) and of ``points`` along the motion."""
+
+    start: Instant
+    to: tuple[tuple[str, Expr], ...]  # () when not asked
+    points: tuple[str, ...]
+    loc: Location
+
+
+@dataclass(frozen=True)
 class EquilibriaOptions:
     frame: str | None  # relative equilibria in a moving frame; None: the scene's axes
 
@@ -486,7 +498,8 @@ class SteadySpinOptions:
 class Question:
     kind: QuestionKind
     options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
-              | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | ReactionsOptions | None)
+              | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | ReactionsOptions | EnergyOptions
+              | None)
     loc: Location
 
 

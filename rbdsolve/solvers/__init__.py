@@ -21,6 +21,7 @@ and its root search, moving frames.
     steady_motion/  steady_motion     rolling conditions, angular momentum balance, solve_for
     kinematics/     kinematics        points' position, velocity, acceleration at a state; distances
     reactions/      reactions         forces at pivots, contacts, strings; energy; contact limits
+    energy/         energy            T + V (or Jacobi's integral) constant: q̇²(q), speeds at a configuration
 """
 
 from __future__ import annotations
@@ -42,6 +43,7 @@ FAMILIES = {
     QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
     QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric")),
     QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric")),
+    QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric")),
 }
 
 

@@ -8,6 +8,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from rbdsolve.solvers.shared.conditions import CriticalValue
+
 
 @dataclass(frozen=True)
 class Reaction:
@@ -28,6 +30,11 @@ class ReactionsAnswers:
     along: dict[str, dict[str, sp.Expr]] | None = None  # name -> component -> value, a function of q
     contact_lost: dict[str, tuple[sp.Basic, ...]] | None = None  # N or T -> where it is zero (Eq's)
     least_friction: dict[str, sp.Expr] | None = None  # rolling contact -> least μ = |F|/N
+    # at the state: support -> when it holds (N ≥ 0, T ≥ 0, μ_C ≥ |F|/N), solved for one parameter
+    holds_when: dict[str, sp.Basic] | None = None
+    # N or T -> where each of its zeros along the motion exists (|c| ≤ 1), as ``contact_lost``
+    lost_exists_when: dict[str, tuple[sp.Basic, ...]] | None = None
+    critical: tuple[CriticalValue, ...] = ()  # the critical values these conditions use
 
 
 @dataclass(frozen=True)

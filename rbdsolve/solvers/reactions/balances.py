@@ -14,17 +14,19 @@ too — where they do not, a support on that body is missing from the question.
 
 from __future__ import annotations
 
-import random
 from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.model.state import t
-from rbdsolve.solvers.reactions.supports import Held, body
-from rbdsolve.solvers.shared.values import parameter_sample
+from rbdsolve.solvers.reactions.applied import applied
+from rbdsolve.solvers.shared.accelerations import clean_fraction
+from rbdsolve.solvers.reactions.supports import Held, body, generic_point
+
+
+_Z = sp.Matrix([0, 0, 1])
 
 
 @dataclass(frozen=True)
@@ -51,6 +53,7 @@ def bodies_held(supports: tuple[Held, ...]) -> list[str]:
 def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balance]:
     """The free body diagram of every held body, component by component."""
     out = []
+    pulls = applied(model, bodies_held(supports))
     for name in bodies_held(supports):
         b = body(model, name)
         acceleration = model.state.d_dt(model.state.d_dt(b.position))
@@ -64,6 +67,10 @@ def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balanc
                 else:
                     force += sign * c.symbol * c.direction
                     moment += sign * (s.point - b.position).cross(c.symbol * c.direction)
+        for a in pulls:
+            if a.body == name:
+                force += a.force
+                moment += (a.point - b.position).cross(a.force) + a.moment * _Z
         L_dot = model.state.d_dt(b.inertia_in_scene() * b.angular_velocity(model.state))
         for k in range(dims):
             lhs = _tidied(b.mass * acceleration[k], model)
@@ -86,9 +93,12 @@ def _moment(expr: sp.Expr) -> sp.Expr:
     return sp.collect(tidy(sp.expand(expr)), sorted(expr.free_symbols, key=str))
 
 
-def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
+def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
                  qdd: dict[sp.Symbol, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
-    """x from A x = b, the accelerations put in; the rows not used must hold too."""
+    """x from A x = b, the accelerations put in; the rows not used must hold too. Where
+    one does not, the question lists a point that holds nothing or leaves a support out:
+    bad input, located at the first force asked for on that body."""
+    unknowns = [c.symbol for s in supports for c in s.components]
     exprs = [sp.expand((r.lhs - r.rhs).xreplace(qdd)) for r in rows]
     A = sp.Matrix([[sp.diff(e, x) for x in unknowns] for e in exprs])
     b = sp.Matrix([-e.xreplace({x: 0 for x in unknowns}) for e in exprs])
@@ -102,32 +112,27 @@ def solve_forces(model: Model, rows: list[Balance], unknowns: list[sp.Symbol],
     for j, x in enumerate(unknowns):
         Aj = A_s.copy()
         Aj[:, j] = b_s
-        solution[x] = clean(sp.expand(Aj.det(method="berkowitz")) / det)
+        solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise UnsolvedError(f"the forces asked for cannot keep body '{row.body}' in its motion (its {row.label} "
-                                "balance is left unsatisfied): a support on it is missing from 'forces' (a pivot, a "
-                                "joint with another body, a contact), or a point listed does not hold it")
+            raise InputError(unheld(row.body, f"its {row.label} balance"), located(supports, row.body))
     return solution
 
 
-def clean(expr: sp.Expr) -> sp.Expr:
-    """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
-    value = tidy_fraction(expr)
-    top, bottom = sp.fraction(value)
-    return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
+def unheld(name: str, what: str) -> str:
+    return (f"the forces asked for cannot keep body '{name}' in its motion ({what} is left unsatisfied): a "
+            "point listed does not hold it, or a support on it is missing from 'forces' (a pivot, a joint with "
+            "another body, a contact)")
 
 
-def _sample(model: Model, seed: int) -> dict:
-    rng = random.Random(seed)
-    point = parameter_sample(model, rng)
-    point.update({q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd, t)})
-    return point
+def located(supports: tuple[Held, ...], name: str) -> Location | None:
+    """Where the question asks for the first force on body ``name``."""
+    return next((s.loc for s in supports if name in (s.on, s.by)), None)
 
 
 def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
     """Rows of A independent at a generic sample, greedily, up to ``wanted``."""
-    numeric = A.xreplace(_sample(model, 5)).evalf(30)
+    numeric = A.xreplace(generic_point(model, 5)).evalf(30)
     chosen: list[int] = []
     for i in range(A.rows):
         trial = numeric.extract(chosen + [i], list(range(A.cols)))
@@ -141,7 +146,7 @@ def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
 def _holds(residual: sp.Expr, model: Model) -> bool:
     """Zero at two generic samples, relative to the size of its terms."""
     for seed in (3, 17):
-        point = _sample(model, seed)
+        point = generic_point(model, seed)
         value = abs(sp.N(residual.xreplace(point), 30))
         size = sum(abs(sp.N(t.xreplace(point), 30)) for t in sp.Add.make_args(sp.expand(residual))) or 1
         if value > 1e-15 * size:

@@ -17,17 +17,17 @@ from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces
-from rbdsolve.solvers.reactions.motion import along, energy, least_mu, zeros
+from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
+from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
-from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.shared.accelerations import accelerations, at_state, clean_fraction, state_values
+from rbdsolve.solvers.shared.conditions import critical_values
+from rbdsolve.solvers.shared.energy_integral import energy_step
 from rbdsolve.solvers.shared.options import Options
 
 
 def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
-    if model.springs:
-        raise UnsolvedError("reactions in a scene with springs are not answered yet (which body each spring end "
-                            "pulls is not known to the model)")
     supports = tuple(held(model, s) for s in question.options.supports)
     found = accelerations(lagrange_equations(model), model)
     if found.solved is None:
@@ -39,34 +39,52 @@ def setup(question: Question, model: Model):
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     supports, solved, rows = setup(question, model)
-    unknowns = [c.symbol for s in supports for c in s.components]
     qdd = dict(zip(model.qdd, solved))
-    forces = solve_forces(model, rows, unknowns, qdd)
+    forces = solve_forces(model, rows, supports, qdd)
     reactions = {s.name: _reaction(s, forces) for s in supports}
     steps = [*rs.free_body_steps(model, supports, rows), rs.accelerations_step(model, solved),
              rs.solved_step(model, supports, forces)]
     answers = ReactionsAnswers(reactions, {n: model.to_time(a) for n, a in zip(model.coordinate_names(), solved)})
-    instant = question.options.instant
-    if instant is not None:
-        table = state_values(model, instant)
-        at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
-        answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()})
-        steps += rs.instant_steps(model, instant, supports, at)
-        if instant.from_rest:
-            answers, more = _along_the_motion(model, supports, forces, table, answers)
-            steps += more
-    answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()})
+    criticals: list = []
+    if question.options.instant is not None:
+        answers, more, criticals = _at_the_state(model, question.options.instant, supports, forces, answers)
+        steps += more
+    answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()},
+                       critical=critical_values(criticals))
     return Solution("reactions", Route.EXACT, answers, tuple(steps))
+
+
+def _at_the_state(model: Model, instant, supports, forces, answers):
+    """The forces at the state, when each support holds there; released from rest, along
+    the motion too. Returns the answers, the steps and the critical values used."""
+    table = state_values(model, instant)
+    at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
+    limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
+    answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()},
+                       holds_when={k: model.to_time(h.condition) for k, h in limits.items()})
+    criticals = [c for h in limits.values() for c in h.criticals]
+    steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
+    if instant.from_rest:
+        answers, more, found = _along_the_motion(model, supports, forces, table, answers)
+        steps, criticals = steps + more, criticals + found
+    return answers, steps, criticals
 
 
 def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:
     """The support's components, and its force R = Σ x e_x in scene axes (at the state
     ``table`` when given)."""
-    force = sum((values[c.symbol] * c.direction.xreplace(table or {}) for c in s.components if not c.moment),
-                sp.zeros(3, 1))
+    pushes = [(values[c.symbol], c.direction.xreplace(table or {})) for c in s.components if not c.moment]
     moment = next((values[c.symbol] for c in s.components if c.moment), None)
     return Reaction(s.on, s.by, s.how, {str(c.symbol): values[c.symbol] for c in s.components},
-                    tuple(sp.simplify(x) for x in force), moment)
+                    tuple(_summed([x * d[k] for x, d in pushes if d[k] != 0]) for k in range(3)), moment)
+
+
+def _summed(terms: list[sp.Expr]) -> sp.Expr:
+    """A force component: one term as it is (a pivot's R_Ox along e_x), several as one
+    cleaned fraction (a push along a turning normal)."""
+    if len(terms) <= 1:
+        return terms[0] if terms else sp.Integer(0)
+    return clean_fraction(sp.Add(*terms))
 
 
 def _timeless(r: Reaction, model: Model) -> Reaction:
@@ -83,10 +101,10 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     """q̇²(q) by energy, the forces along the motion, their zeros and the least μ."""
     e = energy(model, table)
     if e is None:
-        return answers, [rs.no_energy_note(model)]
+        return answers, [rs.no_energy_note(model)], []
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
-        return answers, [rs.energy_steps(model, e)]
+        return answers, [energy_step(model, e, True)], []
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
     lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
@@ -94,6 +112,13 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
+    reached = {k: tuple(exists(eq, model, e.rate_squared) for eq in where) for k, where in lost.items()}
+    lost = {k: tuple(eq for eq, h in zip(where, reached[k]) if h.condition is not sp.false)
+            for k, where in lost.items()}
+    reached = {k: tuple(h for h in found if h.condition is not sp.false) for k, found in reached.items()}
+    criticals = [c for found in reached.values() for h in found for c in h.criticals]
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
-                       contact_lost=lost, least_friction=mu)
-    return answers, [rs.energy_steps(model, e), *rs.along_steps(model, supports, values, lost, mu)]
+                       contact_lost=lost, least_friction=mu,
+                       lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
+    steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached)]
+    return answers, steps, criticals

@@ -8,13 +8,14 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.reactions.answers import NumericReactionsAnswers
+from rbdsolve.solvers.reactions.balances import located, unheld
 from rbdsolve.solvers.reactions.exact import setup
 from rbdsolve.solvers.shared.accelerations import state_values
 from rbdsolve.solvers.shared.options import Options
@@ -39,8 +40,9 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     scale = np.abs(A) @ np.abs(x) + np.abs(b)
     residual = float(np.max(np.abs(A @ x - b) / np.where(scale > 0, scale, 1.0)))
     if residual > 1e-8:
-        raise UnsolvedError("the forces asked for cannot keep every body in its motion (a balance is left "
-                            f"unsatisfied by {residual:.1e} of its size): a support is missing from 'forces'")
+        worst = rows[int(np.argmax(np.abs(A @ x - b) / np.where(scale > 0, scale, 1.0)))]
+        raise InputError(unheld(worst.body, f"its {worst.label} balance, by {residual:.1e} of its size"),
+                         located(supports, worst.body))
     values = dict(zip(unknowns, (float(v) for v in x)))
     at = {s.name: {str(c.symbol): values[c.symbol] for c in s.components} for s in supports}
     answers = NumericReactionsAnswers(at, {n: float(v) for n, v in zip(model.coordinate_names(), qdd.values())},

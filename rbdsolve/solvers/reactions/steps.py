@@ -11,9 +11,12 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.reactions.applied import Applied, applied
 from rbdsolve.solvers.reactions.balances import Balance
-from rbdsolve.solvers.reactions.supports import Held
+from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import state_step
+from rbdsolve.solvers.shared.conditions import critical_values
+from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 
 
 def _vector(v) -> str:
@@ -32,15 +35,29 @@ def _described(s: Held, model: Model) -> str:
     return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 
+def _pull(a: Applied, model: Model) -> str:
+    if a.moment != 0:
+        return f"spring '{a.spring}' turns body '{a.body}' by {to_unicode(model.readable(a.moment))} about e_z"
+    return (f"spring '{a.spring}' pulls body '{a.body}' at {_vector(model.readable(a.point))} with "
+            f"{_vector(model.readable(a.force))}")
+
+
 def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance]) -> list[st.Step]:
     """The forces named, then m a_G = m g + Σ R and dL_G/dt = Σ r × R per body."""
     steps = [st.definition("Free body diagrams. The forces the supports exert, each unknown along its unit "
                            "vector (scene axes): " + "; ".join(_described(s, model) for s in supports) + ".")]
     names = list(dict.fromkeys(r.body for r in rows))
+    pulls = applied(model, names)
+    if pulls:
+        steps.append(st.definition("The springs are applied forces, known: F = −k s ê on each end (ê the unit "
+                                   "vector from the other end, s the stretch), a torsional spring's moment −k s: "
+                                   + "; ".join(_pull(a, model) for a in pulls) + "."))
+    sprung = {a.body for a in pulls}
     for name in names:
         mine = [r for r in rows if r.body == name]
-        steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R component by component, and "
-                                 "dL_G/dt = Σ (r_P − r_G) × R + Σ M about its centre of mass G:",
+        F = " + Σ F" if name in sprung else ""
+        steps.append(st.equation(f"Body '{name}': m a_G = m g + Σ R{F} component by component, and "
+                                 f"dL_G/dt = Σ (r_P − r_G) × {'(R + F)' if F else 'R'} + Σ M about its centre of mass G:",
                                  *[Relation(model.to_time(r.lhs), model.to_time(r.rhs)) for r in mine]))
     return steps
 
@@ -61,12 +78,31 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
     return [state_step(model, instant), st.result(f"{when}, the forces are:", *math)]
 
 
-def energy_steps(model: Model, e) -> st.Step:
-    qd = model.qd[0]
-    return st.result("Energy is conserved (the supports do no work, gravity has a potential): T + V is constant, "
-                     "T + V = V(q₀) at release from rest, so",
-                     Relation(model.to_time(e.T + e.V), model.to_time(e.start)),
-                     Relation(model.to_time(qd) ** 2, model.to_time(e.rate_squared)))
+def _conditions(condition, criticals) -> list[Relation]:
+    return [condition_relation(c, criticals) for c in sp.And.make_args(condition)]
+
+
+def holds_steps(model: Model, supports: tuple[Held, ...], limits: dict, criticals) -> list[st.Step]:
+    """Each support holds while its push or tension is ≥ 0 (and rolls while |F| ≤ μ N):
+    said where that is a condition, with the critical values by name."""
+    criticals = critical_values(criticals)
+    steps = critical_steps(criticals, "where a support stops holding")
+    for s in supports:
+        h = limits[s.name]
+        what = _holding(s)
+        if h.condition is sp.false:
+            steps.append(st.note(f"At that state {what} cannot hold (its push or tension would be negative): "
+                                 "the motion assumed is not possible there."))
+        elif h.condition is not sp.true:
+            steps.append(st.result(f"{what[0].upper() + what[1:]} holds there when:",
+                                   *_conditions(model.to_time(h.condition), criticals)))
+    return steps
+
+
+def _holding(s: Held) -> str:
+    return {How.STRING: f"the string at {s.name} (T ≥ 0: taut)",
+            How.ROLLING: f"the rolling contact at {s.name} (N ≥ 0, |F| ≤ μ N)"}.get(
+        s.how, f"the contact at {s.name} (N ≥ 0)" if any(c.one_sided for c in s.components) else f"{s.name}")
 
 
 def no_energy_note(model: Model) -> st.Step:
@@ -74,17 +110,28 @@ def no_energy_note(model: Model) -> st.Step:
                    "the forces are given at release only.")
 
 
-def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict) -> list[st.Step]:
+def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict) -> list[st.Step]:
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
+    strings = {str(c.symbol) for s in supports if s.how is How.STRING for c in s.components}
     for name, where in lost.items():
         if where:
-            steps.append(st.result(f"{name} = 0, so the contact is lost (a string goes slack), where:",
-                                   *[Relation(eq.lhs, eq.rhs) for eq in where]))
+            lost_how = "the string goes slack" if name in strings else "the contact is lost"
+            steps.append(st.result(f"{name} = 0, so {lost_how}, where:", *[Relation(eq.lhs, eq.rhs) for eq in where]))
+            for eq, h in zip(where, reached[name]):
+                if h.condition is not sp.true:
+                    named = critical_values(h.criticals)
+                    steps += critical_steps(named, "where that point stops being reached")
+                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
+                                           "and q̇² ≥ 0 there) only when:",
+                                           *_conditions(model.to_time(h.condition), named)))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
+    q = model.to_time(model.q[0])
     for name, value in mu.items():
+        where = (f" at each {to_unicode(q)} (for the whole motion, the largest of it over the {to_unicode(q)} "
+                 "reached)") if value.has(q) else ""
         steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
-                               "friction is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
+                               f"friction{where} is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
     return steps

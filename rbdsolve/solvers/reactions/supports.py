@@ -21,14 +21,15 @@ point: a tension T along the string.
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.solvers.shared.values import parameter_sample
 
@@ -67,6 +68,7 @@ class Held:
     by: str | None
     components: tuple[Component, ...]
     how: How
+    loc: Location | None = None  # where the question asks for it (bad input points there)
 
 
 def body(model: Model, name: str) -> RigidBody:
@@ -85,9 +87,8 @@ def planar(model: Model) -> bool:
 
 
 def held(model: Model, support: Support) -> Held:
-    if support.kind is SupportKind.CONTACT:
-        return _contact(model, support)
-    return _point(model, support)
+    found = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
+    return replace(found, loc=support.loc)
 
 
 def _contact(model: Model, support: Support) -> Held:
@@ -141,16 +142,22 @@ def _particle_at(b: RigidBody, P: sp.Matrix) -> bool:
     return b.inertia == sp.zeros(3, 3) and sp.simplify(P - b.position) == sp.zeros(3, 1)
 
 
+def generic_point(model: Model, seed: int) -> dict[sp.Symbol, sp.Expr]:
+    """The parameters (at their values, else pseudo-random), the coordinates, rates and
+    time at pseudo-random rationals: a generic state to test an identity or a rank at."""
+    rng = random.Random(seed)
+    point = parameter_sample(model, rng)
+    point.update({q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd, t)})
+    return point
+
+
 def _rank(columns: list[sp.Matrix], model: Model) -> int:
     """The rank of the velocity columns at a generic state (two random samples agree)."""
     if not columns:
         return 0
     ranks = []
     for seed in (7, 11):
-        rng = random.Random(seed)
-        point = {**parameter_sample(model, rng),
-                 **{q: sp.Rational(rng.randint(1, 97), 37) for q in (*model.q, *model.qd)}}
-        matrix = sp.Matrix.hstack(*columns).xreplace(point).evalf(30)
+        matrix = sp.Matrix.hstack(*columns).xreplace(generic_point(model, seed)).evalf(30)
         ranks.append(sp.Matrix(matrix).rank(iszerofunc=lambda x: abs(x) < 1e-20))
     return max(ranks)
 

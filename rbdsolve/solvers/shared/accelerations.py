@@ -74,6 +74,13 @@ def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:
     return top / bottom
 
 
+def clean_fraction(expr: sp.Expr) -> sp.Expr:
+    """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
+    value = tidy_fraction(expr)
+    top, bottom = sp.fraction(value)
+    return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
+
+
 def state_values(model: Model, instant: Instant) -> dict[sp.Symbol, sp.Expr]:
     """{q: value, q̇: value} of a state, exact (rates 0 when released from rest)."""
     coordinates = dict(zip(model.coordinate_names(), model.q))

@@ -94,6 +94,7 @@ def _one_root(value: sp.Expr) -> sp.Expr:
     square = sp.factor(value**2)
     if square.could_extract_minus_sign():  # −g (−2 + √2)/l: a sign taken into the sum, (2 − √2) g/l
         square = sp.factor_terms(sp.expand(value**2))
-    if value.has(sp.Pow) and not square.has(sp.sqrt) and not square.is_Pow:
+    rooted = any(p.exp.is_Rational and p.exp.q == 2 for p in value.atoms(sp.Pow))  # 5 g m/R stays
+    if rooted and not square.has(sp.sqrt) and not square.is_Pow:
         return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
     return value

@@ -18,6 +18,13 @@ class Branch:
 
 
 @dataclass(frozen=True)
+class SupportForce:
+    """A reaction's force on the body, in the triad's components."""
+
+    force: tuple[sp.Expr, sp.Expr, sp.Expr]
+
+
+@dataclass(frozen=True)
 class SteadyMotionAnswers:
     triad: tuple[str, str, str]  # the names of the triad's unit vectors
     rates: dict[str, sp.Expr]  # unknown rates found from the rolling conditions
@@ -32,6 +39,9 @@ class SteadyMotionAnswers:
     # where it is real only under a condition
     branches: tuple[Branch, ...] = ()
     critical: tuple[CriticalValue, ...] = ()  # where a branch stops being real
+    # each reaction's force with its unknowns found, by its point ('at' as written), as the
+    # reactions question names a reaction; {} where an unknown is left open
+    reactions: dict[str, SupportForce] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

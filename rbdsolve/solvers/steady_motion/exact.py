@@ -41,7 +41,7 @@ from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
 from rbdsolve.solvers.shared.conditions import critical_values, exists_when
-from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers
+from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.balances import (
     angle_of,
     angle_unknown,
@@ -68,14 +68,32 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     target = targets[0] if len(targets) == 1 else None
     relations = tuple(relation(x, target) for x in b.components if tidy_fraction(x) != 0)
     names = model.symbols.with_points(model.points)
-    branches = _solve_for(opts, targets, relations, model, rates, _reaction_unknowns(opts, model, names))
+    held = _reaction_unknowns(opts, model, names)
+    branches = _solve_for(opts, targets, relations, model, rates, held)
     solved, along = branches[0] if len(branches) == 1 else ({}, {})
     several, critical = _branches(branches, targets, model)
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
-                                  several, critical)
+                                  several, critical, _reactions(opts, k, names, targets, solved, along, held))
     steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+
+
+def _reactions(opts: SteadyMotionOptions, k, names, targets, solved: dict, along: dict,
+               unknowns: tuple[sp.Symbol, ...]) -> dict[str, SupportForce]:
+    """Each reaction's force, triad components, the unknowns found put in, named by its
+    point as the reactions question and impact name theirs; {} where an unknown is left
+    (not asked, or several solutions)."""
+    found = {t: solved[x.text] for x, t in zip(opts.solve_for, targets)
+             if isinstance(t, sp.Symbol) and x.text in solved}
+    found.update(along)
+    out: dict[str, sp.Matrix] = {}
+    for r in opts.reactions:
+        at = r.at.text.strip()
+        out[at] = out.get(at, sp.zeros(3, 1)) + k.components(names.vector(r.force)).xreplace(found)
+    if unknowns and any(f.has(*unknowns) for f in out.values()):
+        return {}
+    return {at: SupportForce(tuple(tidy(x) for x in f)) for at, f in out.items()}
 
 
 def _rolling(opts: SteadyMotionOptions, model: Model, v_C: list[sp.Matrix], omega, vectors):

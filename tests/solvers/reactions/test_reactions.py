@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 
+import pytest
 import sympy as sp
 from click.testing import CliRunner
 
@@ -50,15 +51,23 @@ def test_two_rods_pivot_and_joint_just_after_release() -> None:
     assert sp.simplify(sp.sympify(pivot["R_Oy"], locals=names) - (3 * m * a1 + m * a2 + 4 * m * g)) == 0
 
 
-def test_a_support_left_out_is_said() -> None:
-    result = _result(_p1("reactions: {forces: [{at: O, on: long_rod}], from_rest: {theta: 1, phi: 0}}"))
-    assert not result["ok"] and "a support on it is missing" in result["error"]
-
-
-def _invoke(tmp_path, text: str):
+def _invoke(tmp_path, text: str, *more: str):
     path = tmp_path / "p.yaml"
     path.write_text(text, encoding="utf-8")
-    return CliRunner().invoke(main, ["solve", str(path)])
+    return CliRunner().invoke(main, ["solve", str(path), *more])
+
+
+@pytest.mark.parametrize("route", ["exact", "numeric"])
+def test_a_support_left_out_is_bad_input(tmp_path, route) -> None:
+    """The joint at G1 left out: the short rod's balances cannot hold (exit 2, at the
+    force asked for on it), on both routes."""
+    text = _p1("reactions: {forces: [{at: O, on: long_rod}], from_rest: {theta: 1, phi: 0}}")
+    text = text.replace("values:\n  m: {range: [1, 5], step: 0.5}\n  r: {range: [0.2, 2], step: 0.1}\n  "
+                        "g: {choices: [9.81, 10]}", "values: {m: 2, r: 1/2, g: 10}")
+    out = _invoke(tmp_path, text, "--route", route)
+    assert out.exit_code == 2, out.output
+    assert "cannot keep body 'long_rod' in its motion" in out.output and "a support on it is missing" in out.output
+    assert "p.yaml:" in out.output and "questions[0].reactions.forces[0]" in out.output
 
 
 def test_a_point_that_holds_nothing_is_bad_input(tmp_path) -> None:
@@ -68,12 +77,13 @@ def test_a_point_that_holds_nothing_is_bad_input(tmp_path) -> None:
     assert "p.yaml:" in out.output and "questions[0].reactions.forces[0]" in out.output
 
 
-def test_a_point_on_a_path_that_holds_nothing_is_said() -> None:
+def test_a_point_on_a_path_that_holds_nothing_is_bad_input(tmp_path) -> None:
     """With one coordinate every point moves along a path, so the kinematics cannot tell a
-    guide from nothing; the balances do (exit 1, saying which)."""
+    guide from nothing; the balances do: the rod's moment about G is left (exit 2)."""
     text = (PROBLEMS / "forces" / "rod-pivot-released.yaml").read_text(encoding="utf-8")
-    result = _result(text.replace("forces: [O]", "forces: [G]"))
-    assert not result["ok"] and "does not hold it" in result["error"]
+    out = _invoke(tmp_path, text.replace("forces: [O]", "forces: [G]"))
+    assert out.exit_code == 2, out.output
+    assert "a point listed does not hold it" in out.output and "questions[0].reactions.forces[0]" in out.output
 
 
 def test_a_body_not_in_the_contact_is_bad_input(tmp_path) -> None:

@@ -1,0 +1,37 @@
+"""The answers of an energy question (docs/json.md, energy)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class EnergyAnswers:
+    integral: str  # "T + V" (energy conserved) or "T2 - T0 + V" (Jacobi's integral)
+    constant: sp.Expr  # the integral h as a function of the state
+    start: sp.Expr  # its value at the start state
+    rate_squared: dict[str, sp.Expr] | None  # coordinate -> q̇²(q) (one coordinate), else None
+    speed_squared: dict[str, sp.Expr] | None  # point -> v²(q) along the motion (one coordinate)
+    to: dict[str, sp.Expr] | None  # the configuration asked ('to'): coordinate -> value, or None
+    there: There | None  # the rates and speeds there, or None
+
+
+@dataclass(frozen=True)
+class There:
+    """At the configuration asked (``to``): q̇² and |q̇|, and each point's speed |v|;
+    ``reached`` False (and the rates and speeds None) where q̇² < 0 there."""
+
+    rate_squared: dict[str, sp.Expr]
+    rate: dict[str, sp.Expr | None]
+    speed: dict[str, sp.Expr | None]
+    reached: bool
+
+
+@dataclass(frozen=True)
+class NumericEnergyAnswers:
+    start: float | None
+    rate_squared: dict[str, float | None]  # at 'to'
+    rate: dict[str, float | None]
+    speed: dict[str, float | None]

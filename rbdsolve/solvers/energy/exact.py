@@ -1,0 +1,68 @@
+"""The energy question, exact: the energy integral from the start state
+(shared/energy_integral.py); with one coordinate q̇²(q) = 2 (h₀ + T₀ − V)/M, each point's
+v² = |∂r_P/∂q|² q̇² along the motion, and both at the configuration asked (``to``),
+where the rate is |q̇| = √(q̇²) and a point's speed |v| = √(v²), unless q̇² < 0 there
+(the motion does not reach it)."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import EnergyOptions, Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.energy.answers import EnergyAnswers, There
+from rbdsolve.solvers.energy.steps import exact_steps
+from rbdsolve.solvers.shared.accelerations import at_state, clean_fraction, state_values
+from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_integral, not_conserved
+from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.signs import sign_of
+
+
+def solve(question: Question, model: Model, options: Options) -> Solution:
+    answers, e = energy(question.options, model)
+    return Solution("energy", Route.EXACT, answers, exact_steps(answers, e, question.options, model))
+
+
+def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyIntegral]:
+    why = not_conserved(model)
+    if why is not None:
+        raise UnsolvedError(f"no energy integral: {why}")
+    e = energy_integral(model, state_values(model, opts.start))
+    name = model.coordinate_names()[0]
+    one = e.rate_squared is not None
+    if (opts.to or opts.points) and not one:
+        raise UnsolvedError("with more than one coordinate the energy integral is one equation for several rates: "
+                            "it fixes no speed at a configuration ('to', 'points' need one coordinate)")
+    speeds = {p: _speed_squared(model, p, e.rate_squared) for p in opts.points} if one else None
+    to = {n: model.symbols.scalar(v) for n, v in opts.to} if opts.to else None
+    there = _there(model, to, e.rate_squared, speeds) if to else None
+    answers = EnergyAnswers("T + V" if e.plain else "T2 - T0 + V", model.to_time(e.h), model.to_time(e.start),
+                            {name: model.to_time(e.rate_squared)} if one else None,
+                            {p: model.to_time(v) for p, v in speeds.items()} if speeds else None, to, there)
+    return answers, e
+
+
+def _speed_squared(model: Model, point: str, rate_squared: sp.Expr) -> sp.Expr:
+    """v² = |∂r/∂q|² q̇² (one coordinate, no t in the scene)."""
+    dr = model.points[point].diff(model.q[0])
+    return clean_fraction(tidy(sp.expand(dr.dot(dr))) * rate_squared)
+
+
+def _root(value: sp.Expr) -> sp.Expr:
+    """√(3 g/l) as one root, as an exam writes it (sympy would split it into √3 √g/√l)."""
+    if value.is_number:
+        return sp.sqrt(value)
+    return sp.Pow(sp.factor(value), sp.Rational(1, 2), evaluate=False)
+
+
+def _there(model: Model, to: dict[str, sp.Expr], rate_squared: sp.Expr, speeds: dict) -> There:
+    table = {model.q[0]: to[model.coordinate_names()[0]]}
+    w2 = at_state(rate_squared, table)
+    name = model.coordinate_names()[0]
+    reached = sign_of(w2, model.decided_by) != -1
+    root = (lambda x: _root(x) if reached else None)
+    v2 = {p: at_state(v, table) for p, v in (speeds or {}).items()}
+    return There({name: w2}, {name: root(w2)}, {p: root(v) for p, v in v2.items()}, reached)

@@ -1,0 +1,48 @@
+"""The worked solution of an energy question, as an exam writes it: the start state, the
+integral ("T + V is constant: T + V = V(q₀)"), q̇² solved from it, each point's v², and
+the configuration asked: q̇² there and the rate |q̇|, each point's speed."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.display import Relation
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import EnergyOptions
+from rbdsolve.report import steps as st
+from rbdsolve.solvers.energy.answers import EnergyAnswers, NumericEnergyAnswers
+from rbdsolve.solvers.shared.accelerations import state_step
+from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_step
+
+
+def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, model: Model) -> tuple[st.Step, ...]:
+    steps = [state_step(model, opts.start), energy_step(model, e, opts.start.from_rest)]
+    if e.rate_squared is None:
+        steps.append(st.note("With several coordinates the integral is one equation for several rates: it fixes "
+                             "no one rate by itself."))
+    if answers.speed_squared:
+        steps.append(st.result("Each point's speed along the motion, v² = |∂r/∂q|² q̇²:",
+                               *[Relation(sp.Symbol(f"v_{p}") ** 2, v) for p, v in answers.speed_squared.items()]))
+    there = answers.there
+    if there is not None:
+        at = [Relation(model.to_time(q), answers.to[n]) for q, n in zip(model.q, model.coordinate_names())]
+        steps.append(st.given("At the configuration asked:", *at))
+        if not there.reached:
+            steps.append(st.note("There q̇² < 0: the motion from the start state does not reach it.",
+                                 *[Relation(model.to_time(model.qd[0]) ** 2, v) for v in there.rate_squared.values()]))
+            return tuple(steps)
+        steps.append(st.result("There (the rate taken positive):", *[Relation(model.to_time(model.qd[0]) ** 2, v)
+                                           for v in there.rate_squared.values()],
+                               *[Relation(model.to_time(model.qd[0]), v) for v in there.rate.values()],
+                               *[Relation(sp.Symbol(f"v_{p}"), v) for p, v in there.speed.items()]))
+    return tuple(steps)
+
+
+def numeric_steps(answers: NumericEnergyAnswers, model: Model) -> tuple[st.Step, ...]:
+    rate = model.to_time(model.qd[0])
+    math = [Relation(rate**2, sp.Float(v, 6)) for v in answers.rate_squared.values() if v is not None]
+    math += [Relation(rate, sp.Float(v, 6)) for v in answers.rate.values() if v is not None]
+    math += [Relation(sp.Symbol(f"v_{p}"), sp.Float(v, 6)) for p, v in answers.speed.items() if v is not None]
+    return (st.result("At the configuration asked (the rate taken positive), the exact route's rates and speeds "
+                      "at the parameter values:",
+                      *math),)

@@ -1,0 +1,103 @@
+"""The forces springs apply to the bodies they join: a spring is an applied force, not a
+support, so it enters each body's free body diagram with a known value.
+
+A linear spring between ends a and b, stretch s = |a − b| − l₀, V = ½ k s², pulls the
+body that carries end a with
+
+    F_a = −∂V/∂r_a = −k s (a − b)/|a − b|   at a,      and that of end b with −F_a at b.
+
+An end whose position is constant is fixed to the ground; a moving end is carried by
+the body whose material point it is (its velocity is v_G + ω × (end − r_G) at every
+state). A torsional spring on an angle α = Σ c_B α_B + const (α_B body B's turning
+angle about e_z) turns body B by M_B = −k s c_B e_z; what is left acts on the ground.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.model.build import Model, SpringModel
+from rbdsolve.model.state import t
+from rbdsolve.solvers.reactions.supports import generic_point, material_velocity, planar
+
+_Z = sp.Matrix([0, 0, 1])
+
+
+@dataclass(frozen=True)
+class Applied:
+    """A spring's force (and moment about e_z) on one body, at a point of it."""
+
+    spring: str
+    body: str
+    point: sp.Matrix  # where the force acts (a torsional spring: the body's G, no force)
+    force: sp.Matrix  # scene axes
+    moment: sp.Expr  # about e_z
+
+
+def applied(model: Model, held: list[str]) -> list[Applied]:
+    """Every spring's pull on the held bodies (those in a free body diagram)."""
+    out: list[Applied] = []
+    for s in model.springs:
+        found = _linear(model, s, held) if s.source.ends is not None else _torsional(model, s)
+        out += [a for a in found if a.body in held]
+    return out
+
+
+def _linear(model: Model, s: SpringModel, held: list[str]) -> list[Applied]:
+    a, b = (model.symbols.vector(e) for e in s.source.ends)
+    d = a - b
+    pull = -s.stiffness * s.stretch * d / sp.sqrt(d.dot(d))
+    out = []
+    for end, force in ((a, pull), (b, -pull)):
+        carrier = _carrier(model, s, end, held)
+        if carrier is not None:
+            out.append(Applied(s.name, carrier, end, force, sp.Integer(0)))
+    return out
+
+
+def _carrier(model: Model, s: SpringModel, end: sp.Matrix, held: list[str]) -> str | None:
+    """The body whose material point the end is; None: the ground (a constant end)."""
+    if not (end.free_symbols & {*model.q, t}):
+        return None
+    v = model.state.d_dt(end)
+    found = [b.name for b in model.bodies if b.position is not None
+             and _zero(v - material_velocity(model, b, end), model)]
+    if not found:
+        raise UnsolvedError(f"spring '{s.name}': its end {to_unicode(model.readable(end.T))} moves with no body, "
+                            "so which body it pulls "
+                            "is not known (fix each end to a body's point, or to the ground)")
+    if len(found) > 1 and set(found) & set(held):
+        raise UnsolvedError(f"spring '{s.name}': its end is a point of bodies {', '.join(found)} (a joint), so "
+                            "which one it pulls is not said; attach it beside the joint")
+    return found[0]
+
+
+def _torsional(model: Model, s: SpringModel) -> list[Applied]:
+    """M_B = −k s c_B e_z, with α = Σ c_B α_B + const found at generic states."""
+    turning = [b for b in model.bodies if b.angle is not None and b.angle.free_symbols & set(model.q)]
+    angle = s.stretch
+    c = sp.symbols(f"c0:{len(turning)}")
+    rows = []
+    for seed in (2, 5, 9):
+        point = generic_point(model, seed)
+        rows += [(sp.diff(angle, q) - sum(ci * sp.diff(b.angle, q) for ci, b in zip(c, turning))).xreplace(point)
+                 for q in model.q]
+    solved = sp.solve(rows, c, dict=True) if turning else []
+    if not planar(model) or len(solved) != 1 or any(ci not in solved[0] for ci in c):
+        raise UnsolvedError(f"spring '{s.name}': its angle is not read as a sum of the bodies' turning angles, "
+                            "so which bodies it turns is not known")
+    return [Applied(s.name, b.name, b.position, sp.zeros(3, 1), -s.stiffness * s.stretch * solved[0][ci])
+            for ci, b in zip(c, turning) if solved[0][ci] != 0]
+
+
+def _zero(v: sp.Matrix, model: Model) -> bool:
+    """Zero at two generic states."""
+    for seed in (3, 17):
+        value = v.xreplace(generic_point(model, seed)).evalf(30)
+        if any(abs(x) > 1e-20 for x in value):
+            return False
+    return True

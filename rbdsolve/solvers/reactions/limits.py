@@ -1,0 +1,145 @@
+"""Contact limits: where a support stops holding, and the conditions for it to hold.
+
+A push N (a contact) or a tension T (a string) holds while it is ≥ 0; rolling holds
+while the friction it needs is within reach, |F| ≤ μ N. So
+
+- along a motion (the forces functions of q alone), the contact is lost (the string goes
+  slack) where N (T) reaches zero: the roots of its numerator, as cos q = c (or sin q = c,
+  or q = c), with |c| ≤ 1 for an angle (``zeros``); where c holds parameters, such a
+  point exists when |c| ≤ 1, solved for one parameter (``exists``);
+- the least coefficient of friction for rolling is μ = |F|/N (``least_mu``);
+- at a state, the support holds when N ≥ 0 (T ≥ 0), and rolls when μ ≥ |F|/N: where the
+  parameters' signs do not decide N's, the condition solved for one parameter in the
+  form of the conditions on parameters (shared/conditions.py), "holds when ω ≤ ω_c",
+  with its critical values (``holds``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.form.tidy import tidy_fraction
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.reactions.supports import Held, How
+from rbdsolve.solvers.shared.accelerations import clean_fraction
+from rbdsolve.solvers.shared.conditions import Critical, exists_when
+from rbdsolve.solvers.shared.signs import Undecided, sign_of
+
+
+def zeros(value: sp.Expr, model: Model) -> list[sp.Relational]:
+    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c."""
+    q = model.q[0]
+    top = sp.fraction(tidy_fraction(value))[0]
+    if not top.has(q):
+        return []
+    c = sp.Dummy("c", real=True)
+    for f in (sp.cos, sp.sin):
+        swapped = top.xreplace({f(q): c})
+        if not swapped.has(q):
+            roots = [r for r in sp.solve(swapped, c) if _within_one(r, model)]
+            return [sp.Eq(f(model.to_time(q)), r) for r in roots]
+    try:
+        roots = sp.solve(top, q)
+    except NotImplementedError:
+        return []
+    return [sp.Eq(model.to_time(q), r) for r in roots if r.is_real is not False]
+
+
+def _within_one(r: sp.Expr, model: Model) -> bool:
+    """|r| ≤ 1, where the parameters' values or signs decide it (undecided: kept)."""
+    value = r.xreplace(model.decided_by) if model.decided_by else r
+    if value.is_real is False:
+        return False
+    if value.is_number:
+        return bool(abs(value) <= 1)
+    return True
+
+
+def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
+    """μ ≥ |F|/N: the friction a rolling contact needs, over the normal push; |…| kept
+    where neither the parameters' signs nor their values decide the sign."""
+    ratio = sp.simplify(clean_fraction(F / N))
+    sign = sign_of(ratio, model.decided_by)
+    if isinstance(sign, Undecided):
+        return sp.Abs(ratio)
+    return ratio if sign >= 0 else -ratio
+
+
+@dataclass(frozen=True)
+class Holds:
+    """When one support holds at the state: the condition (true, false, or solved for one
+    parameter) and the critical values it uses."""
+
+    condition: sp.Basic
+    criticals: tuple[Critical, ...]
+
+
+def holds(s: Held, values: dict[str, sp.Expr], model: Model) -> Holds:
+    """N ≥ 0 (T ≥ 0) for each push or tension, and μ ≥ |F|/N for a rolling contact's
+    friction, at the state (``values``: component name -> value there)."""
+    condition, criticals = sp.true, []
+    for c in s.components:
+        if c.one_sided:
+            found = _nonnegative(values[str(c.symbol)], model)
+            condition, criticals = sp.And(condition, found.condition), criticals + list(found.criticals)
+    if s.how is How.ROLLING and condition is not sp.false:
+        N, F = (values[str(c.symbol)] for c in s.components)
+        if sp.simplify(N) != 0:
+            condition = sp.And(condition, sp.Ge(mu(s.name), least_mu(F, N, model)))
+    return Holds(condition, tuple(criticals))
+
+
+def mu(name: str) -> sp.Symbol:
+    return sp.Symbol(f"mu_{name}")
+
+
+def _nonnegative(value: sp.Expr, model: Model) -> Holds:
+    """value ≥ 0: decided by the parameters' signs, else solved for one parameter (a
+    rate first), else left as it is."""
+    sign = sign_of(tidy_fraction(value), model.assumed)
+    if isinstance(sign, int):
+        return Holds(sp.true if sign >= 0 else sp.false, ())
+    found = exists_when((), model, [value])
+    if found is None:
+        return Holds(sp.Ge(value, 0), ())
+    return Holds(found.condition, found.criticals)
+
+
+def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+    """Where the motion from rest reaches a zero cos q = c (sin q = c, q = c): |c| ≤ 1, and
+    q̇² ≥ 0 there (the motion turns back before a zero where q̇² < 0 — a cylinder released
+    inside a cylinder below the horizontal never leaves it); each solved for one parameter
+    where the parameters' signs do not decide it."""
+    parts = [_reached(where, model, rate_squared)]
+    c = where.rhs
+    if isinstance(where.lhs, (sp.cos, sp.sin)) and c.free_symbols and not _within(c):
+        parts += [_nonnegative(1 - c, model), _nonnegative(1 + c, model)]
+    return Holds(sp.And(*(h.condition for h in parts)), tuple(c for h in parts for c in h.criticals))
+
+
+def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+    """q̇² ≥ 0 at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
+    sin q = c), or q = c; kept (true) where q̇² holds q otherwise."""
+    q = model.q[0]
+    side = where.lhs.xreplace({model.to_time(q): q})
+    c = where.rhs
+    if side == q:
+        value = rate_squared.xreplace({q: c})
+    else:
+        other = sp.sin(q) if isinstance(side, sp.cos) else sp.cos(q)
+        value = sp.expand(rate_squared).xreplace({side: c}).subs(other**2, 1 - c**2)
+    if value.has(q):
+        return Holds(sp.true, ())
+    return _nonnegative(clean_fraction(value), model)
+
+
+def _within(c: sp.Expr) -> bool:
+    """|c| ≤ 1 for every value of the angles in it: each sine and cosine of a parameter
+    put in as the interval [−1, 1] (interval arithmetic bounds c from outside)."""
+    box = {f: sp.AccumBounds(-1, 1) for f in c.atoms(sp.sin, sp.cos)}
+    bound = c.xreplace(box)
+    if not isinstance(bound, sp.AccumBounds) or bound.free_symbols:
+        return False
+    return bool(bound.min >= -1) and bool(bound.max <= 1)

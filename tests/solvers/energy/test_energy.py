@@ -1,0 +1,128 @@
+"""The energy question: T + V (or Jacobi's integral) constant, q̇²(q), the speed at a
+configuration and of named points. Every expected value is derived by hand in the
+docstrings, not taken from rbdsolve; bad input goes through the CLI (exit 2, located)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+from click.testing import CliRunner
+
+from rbdsolve.cli import main
+
+from conftest import PROBLEMS, SEED, same
+
+SPHERE = (PROBLEMS / "forces" / "particle-on-sphere.yaml").read_text(encoding="utf-8").split("questions:")[0]
+
+BEAD = """title: a bead on a rod turning at a constant rate in a horizontal plane
+parameters: {m: mass, Omega: rate of turning, a: start}
+coordinates: [r]
+points:
+  P: r * [cos(Omega*t), sin(Omega*t)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+questions:
+  - energy: {at: {r: a, dot(r): 0}, to: {r: 2*a}}
+"""
+
+SWING = """title: a hanging bar released at an angle
+parameters: {m: mass, l: length, g: acceleration}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: l/2 * [sin(theta), -cos(theta)]
+bodies:
+  bar: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+questions:
+"""
+
+
+def _run(tmp_path, text: str, *more: str):
+    path = tmp_path / "p.yaml"
+    path.write_text(text, encoding="utf-8")
+    return CliRunner().invoke(main, ["solve", str(path), "--format", "json", *more])
+
+
+def _answers(tmp_path, text: str) -> dict:
+    out = _run(tmp_path, text)
+    assert out.exit_code == 0, out.output
+    (result,) = json.loads(out.stdout)["results"]
+    return result["answers"]
+
+
+def test_particle_on_a_sphere_speed(tmp_path) -> None:
+    """From rest at the top, T + V constant: ½ m v² + m g R cos θ = m g R, so
+    v² = 2 g R (1 − cos θ) and θ̇² = v²/R² = 2 g (1 − cos θ)/R; where it leaves the sphere
+    (cos θ = 2/3), v² = 2 g R/3."""
+    got = _answers(tmp_path, SPHERE + "questions:\n  - energy: {from_rest: {theta: 0}, to: {theta: acos(2/3)}, "
+                                      "points: [P]}\n")
+    assert got["integral"] == "T + V" and same(got["start"], "m*g*R")
+    assert same(got["rate_squared"]["theta"], "2*g*(1 - cos(theta(t)))/R")
+    assert same(got["speed_squared"]["P"], "2*g*R*(1 - cos(theta(t)))")
+    assert same(got["there"]["speed"]["P"], "sqrt(2*g*R/3)")
+
+
+def test_jacobi_integral_on_a_turning_rod(tmp_path) -> None:
+    """T = ½ m (ṙ² + Ω² r²) (T₁ = 0, T₀ = ½ m Ω² r²), L holds no t: h = ½ m ṙ² − ½ m Ω² r²
+    is constant, not T + V (the turning rod does work). From r = a at rest on the rod,
+    ṙ² = Ω² (r² − a²): at r = 2a, ṙ = √3 Ω a."""
+    got = _answers(tmp_path, BEAD)
+    assert got["integral"] == "T2 - T0 + V"
+    assert same(got["constant"], "m*(Derivative(r(t), t)**2 - Omega**2*r(t)**2)/2")
+    assert same(got["rate_squared"]["r"], "Omega**2*(r(t)**2 - a**2)")
+    assert same(got["there"]["rate"]["r"], "sqrt(3)*Omega*a")
+
+
+def test_a_configuration_the_motion_does_not_reach(tmp_path) -> None:
+    """Released from rest at θ = π/3 the bar swings up to π/3 on the other side only:
+    θ̇² = 3 g (cos θ − 1/2)/l < 0 at θ = π/2."""
+    got = _answers(tmp_path, SWING + "  - energy: {from_rest: {theta: pi/3}, to: {theta: pi/2}}\n")
+    assert same(got["rate_squared"]["theta"], "3*g*(cos(theta(t)) - 1/2)/l")
+    assert got["there"]["reached"] is False and got["there"]["rate"]["theta"] is None
+    assert same(got["there"]["rate_squared"]["theta"], "-3*g/(2*l)")
+
+
+def test_several_coordinates_give_the_integral_only(tmp_path) -> None:
+    """Seed problem 1 from rest at θ = φ = π/2: T + V = V there, and no rate alone."""
+    head = (SEED / "p1-two-rods.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    got = _answers(tmp_path, head + "questions:\n  - energy: {from_rest: {theta: pi/2, phi: pi/2}}\n")
+    assert got["integral"] == "T + V" and got["rate_squared"] is None and got["there"] is None
+
+
+def test_the_numeric_route(tmp_path) -> None:
+    """m = 1, l = 1, g = 9.81 from rest at θ = π/3: at the bottom θ̇² = 3 g (1 − 1/2)/l."""
+    text = SWING.replace("questions:", "values: {m: 1, l: 1, g: 9.81}\nquestions:")
+    out = _run(tmp_path, text + "  - energy: {from_rest: {theta: pi/3}, to: {theta: 0}}\n", "--route", "numeric")
+    assert out.exit_code == 0, out.output
+    (result,) = json.loads(out.stdout)["results"]
+    assert abs(result["answers"]["rate_squared"]["theta"] - 1.5 * 9.81) < 1e-12
+    assert abs(result["answers"]["rate"]["theta"] - (1.5 * 9.81) ** 0.5) < 1e-12
+
+
+@pytest.mark.parametrize("question, path, message, code", [
+    ("energy", "questions[0]", "'energy' needs the state the motion starts from", 2),
+    ("energy: {from_rest: {theta: 0}, to: {}}", "questions[0].energy.to", "missing theta", 2),
+    ("energy: {from_rest: {theta: 0}, points: [Q]}", "questions[0].energy.points[0]", "no point 'Q'", 2),
+    ("energy: {at: {theta: 0}}", "questions[0].energy.at", "missing dot(theta)", 2),
+])
+def test_bad_input_is_located(tmp_path, question, path, message, code) -> None:
+    out = _run(tmp_path, SWING + f"  - {question}\n")
+    assert out.exit_code == code, out.output
+    assert "p.yaml:" in out.output and path in out.output and message in out.output
+
+
+def test_no_integral_where_the_support_is_driven(tmp_path) -> None:
+    """A pendulum whose pivot is shaken up and down, y₀ = A cos(w t): L holds t (exit 1)."""
+    text = SWING.replace("parameters: {m: mass, l: length, g: acceleration}",
+                         "parameters: {m: mass, l: length, g: acceleration, A: amplitude, w: rate}")
+    text = text.replace("G: l/2 * [sin(theta), -cos(theta)]", "G: l/2 * [sin(theta), -cos(theta)] + [0, A*cos(w*t)]")
+    out = _run(tmp_path, text + "  - energy: {from_rest: {theta: 0}}\n")
+    assert out.exit_code == 1 and "the Lagrangian depends on time" in out.output
+
+
+def test_two_coordinates_and_a_configuration_is_refused(tmp_path) -> None:
+    head = (SEED / "p1-two-rods.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    out = _run(tmp_path, head + "questions:\n  - energy: {from_rest: {theta: 0, phi: 0}, to: {theta: 1, phi: 1}}\n")
+    assert out.exit_code == 1 and "one equation for several rates" in out.output

@@ -1,0 +1,104 @@
+"""Contact limits as conditions on the parameters (solvers/reactions/limits.py): when a
+support holds at a state (N ≥ 0, T ≥ 0, μ ≥ |F|/N), and when the point where a contact
+is lost along the motion is reached at all. Expected values derived by hand below."""
+
+from __future__ import annotations
+
+import json
+
+import sympy as sp
+
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.render.json import report_object
+from rbdsolve.solvers import solve_problem
+
+from conftest import PROBLEMS
+
+m, R, g, k, omega, alpha, r = sp.symbols("m R g k omega alpha r", positive=True)
+mu_C = sp.Symbol("mu_C")
+NAMES = {"m": m, "R": R, "g": g, "k": k, "omega": omega, "alpha": alpha, "r": r, "mu_C": mu_C}
+
+SPHERE = """title: a particle on a smooth sphere
+parameters: {m: mass, R: radius, g: acceleration, omega: angular speed at the top, k: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  P: R * [sin(theta), cos(theta)]
+bodies:
+  particle: {shape: particle, mass: m, at: P}
+"""
+
+
+def _answers(text: str) -> dict:
+    report = solve_problem(build_model(load_text(text, "p.yaml")))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert result["ok"], result["error"]
+    return result["answers"]
+
+
+def _read(text: str):
+    return sp.sympify(text, locals=NAMES)
+
+
+def test_holds_at_the_top_only_below_a_speed() -> None:
+    """At the top with θ̇ = ω: m g − N = m R ω² (the centripetal balance), so
+    N = m (g − R ω²) ≥ 0 when ω ≤ √(g/R), the critical rate."""
+    answers = _answers(SPHERE.replace("  k: stiffness}", "}").replace(", k: stiffness", "") +
+                       "questions:\n  - reactions: {forces: [P], at: {theta: 0, dot(theta): omega}}\n")
+    assert _read(answers["holds_when"]["P"]) == sp.Le(omega, sp.sqrt(g / R))
+    assert [c["parameter"] for c in answers["critical"]] == ["omega"]
+    assert sp.simplify(_read(answers["critical"][0]["value"]) - sp.sqrt(g / R)) == 0
+
+
+def test_where_the_contact_is_lost_exists_only_for_a_soft_spring() -> None:
+    """A spring of zero natural length from the centre O pulls the particle inward with
+    k R (the sphere's radius is its length). Radially m R θ̇² = m g cos θ + k R − N, and
+    from rest at the top θ̇² = 2 g (1 − cos θ)/R (the spring's energy is constant), so
+    N = m g (3 cos θ − 2) + k R, zero at cos θ = (2 m g − k R)/(3 m g): below 2/3, and
+    ≥ −1 only when k ≤ 5 m g/R (else the particle stays on the sphere)."""
+    answers = _answers(SPHERE + "springs:\n  s: {stiffness: k, between: [P, O]}\n"
+                       "questions:\n  - reactions: {forces: [P], from_rest: {theta: 0}}\n")
+    th = sp.Function("theta")(sp.Symbol("t"))
+    (lost,) = answers["contact_lost"]["N_P"]
+    assert sp.simplify(_read(lost).rhs - (2 * m * g - k * R) / (3 * m * g)) == 0 and _read(lost).lhs == sp.cos(th)
+    assert _read(answers["lost_exists_when"]["N_P"][0]) == sp.Le(k, 5 * g * m / R)
+    assert answers["holds_when"]["P"] == "True"  # N = m g + k R at release
+
+
+def test_rolling_holds_with_enough_friction() -> None:
+    """The cylinder on the incline (hand, problems/forces/wheel-on-incline.expected.yaml):
+    N = m g cos α ≥ 0 needs α ≤ π/2, and F = m g sin α/3 needs μ ≥ tan α/3."""
+    text = (PROBLEMS / "forces" / "wheel-on-incline.yaml").read_text(encoding="utf-8")
+    condition = _read(_answers(text)["holds_when"]["C"])
+    for a, mu, held in [(sp.pi / 6, 0.2, True), (sp.pi / 6, 0.19, False), (sp.pi / 3, 0.58, True),
+                        (2 * sp.pi / 3, 5, False)]:
+        assert bool(condition.xreplace({alpha: a, mu_C: mu})) is held, (a, mu)
+
+
+def test_a_string_that_stays_taut_holds_always() -> None:
+    """The yo-yo's tension is m g/3 > 0 whatever the parameters."""
+    text = (PROBLEMS / "forces" / "yo-yo.yaml").read_text(encoding="utf-8")
+    answers = _answers(text)
+    assert answers["holds_when"]["S"] == "True" and answers["critical"] == []
+
+
+def test_a_zero_the_motion_does_not_reach_is_said() -> None:
+    """A solid cylinder (radius r) released from rest at θ = α inside a hollow one (R):
+    its centre moves on a circle of radius R − r, so radially
+    m (R − r) θ̇² = N − m g cos θ, and T + V constant gives
+    (3/4) m (R − r)² θ̇² = m g (R − r)(cos θ − cos α). So N = m g (7 cos θ − 4 cos α)/3,
+    zero at cos θ = 4 cos α/7, where cos θ − cos α = −3 cos α/7: reached (θ̇² ≥ 0) only
+    when cos α ≤ 0, α ≥ π/2; released lower, the cylinder turns back first."""
+    text = (PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    text = text.replace("parameters:\n", "parameters:\n  alpha: angle of release\n")
+    text = "\n".join(line for line in text.splitlines() if not line.startswith("values:"))
+    answers = _answers(text + "\nquestions:\n  - reactions: {from_rest: {theta: alpha}}\n")
+    th = sp.Function("theta")(sp.Symbol("t"))
+    (name,) = answers["along"]
+    N = _read(answers["along"][name]["N_" + name])
+    assert sp.simplify(N - m * g * (7 * sp.cos(th) - 4 * sp.cos(alpha)) / 3) == 0
+    (lost,) = answers["contact_lost"]["N_" + name]
+    assert sp.simplify(_read(lost).rhs - 4 * sp.cos(alpha) / 7) == 0
+    assert _read(answers["lost_exists_when"]["N_" + name][0]) == sp.Ge(alpha, sp.pi / 2)

@@ -1,0 +1,132 @@
+"""Reactions in scenes with springs: a spring is an applied force, known, in the free
+body diagram of the body that carries each end (solvers/reactions/applied.py). Each
+expected value is derived by hand below, not taken from rbdsolve."""
+
+from __future__ import annotations
+
+import json
+
+import sympy as sp
+
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.render.json import report_object
+from rbdsolve.solvers import solve_problem
+
+m, R, a, k, l, g, c = sp.symbols("m R a k l g c", positive=True)
+th, thd = sp.symbols("theta thetadot")
+NAMES = {"m": m, "R": R, "a": a, "k": k, "l": l, "g": g, "c": c}
+
+BEAD = """title: bead on a ring with a spring
+parameters: {m: mass, R: radius, a: distance, k: stiffness}
+coordinates: [theta]
+points:
+  A: [a, 0]
+  P: R * [cos(theta), sin(theta)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, A]}
+questions:
+  - reactions: {forces: [P]}
+"""
+
+ROD = """title: a pivoted rod with a torsional spring and a linear one
+parameters: {m: mass, l: length, g: acceleration, c: torsional stiffness, k: stiffness}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  G: l/2 * [sin(theta), -cos(theta)]
+  B: l * [sin(theta), -cos(theta)]
+  C: [l, -l]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+springs:
+  hinge: {stiffness: c, angle: theta}
+  tip: {stiffness: k, between: [C, B]}
+questions:
+  - reactions: {forces: [O]}
+"""
+
+
+def _answers(text: str) -> dict:
+    report = solve_problem(build_model(load_text(text, "p.yaml")))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert result["ok"], result["error"]
+    return result["answers"]
+
+
+def _read(text: str) -> sp.Expr:
+    expr = sp.sympify(text, locals=NAMES)
+    f = sp.Function("theta")
+    tt = sp.Symbol("t")
+    return expr.subs(sp.Derivative(f(tt), tt), thd).subs(f(tt), th)
+
+
+def test_bead_on_a_ring_pulled_by_a_spring() -> None:
+    """P = R(cos θ, sin θ), spring force −k(P − A). Tangentially m R θ̈ = −k a sin θ;
+    along the inward normal −(cos θ, sin θ): m R θ̇² = k (R − a cos θ) + N, so
+    N = m R θ̇² − k R + k a cos θ (the normal chosen inward: e_z × ∂v/∂θ̇)."""
+    answers = _answers(BEAD)
+    assert sp.simplify(_read(answers["accelerations"]["theta"]) + k * a * sp.sin(th) / (m * R)) == 0
+    N = _read(answers["reactions"]["P"]["components"]["N_P"])
+    assert sp.simplify(N - (m * R * thd**2 - k * R + k * a * sp.cos(th))) == 0
+
+
+def test_pivot_reaction_with_a_torsional_and_a_linear_spring() -> None:
+    """Moments about O: (m l²/3) θ̈ = −m g (l/2) sin θ − c θ + (B × F_tip)·e_z with
+    F_tip = −k (B − C) on the rod at B (zero natural length). The pivot's force is what
+    Newton's law for G leaves: R = m a_G − m g − F_tip, a_G = (l/2)[θ̈ (cos θ, sin θ)
+    + θ̇² (−sin θ, cos θ)]."""
+    answers = _answers(ROD)
+    B = sp.Matrix([l * sp.sin(th), -l * sp.cos(th), 0])
+    F = -k * (B - sp.Matrix([l, -l, 0]))
+    tdd = (-m * g * l / 2 * sp.sin(th) - c * th + B.cross(F)[2]) / (m * l**2 / 3)
+    aG = l / 2 * (tdd * sp.Matrix([sp.cos(th), sp.sin(th), 0]) + thd**2 * sp.Matrix([-sp.sin(th), sp.cos(th), 0]))
+    expected = m * aG - m * sp.Matrix([0, -g, 0]) - F
+    assert sp.simplify(_read(answers["accelerations"]["theta"]) - tdd) == 0
+    got = answers["reactions"]["O"]["components"]
+    assert sp.simplify(_read(got["R_Ox"]) - expected[0]) == 0
+    assert sp.simplify(_read(got["R_Oy"]) - expected[1]) == 0
+
+
+def test_the_numeric_route_counts_the_spring() -> None:
+    """The bead with m = 1, R = 2, a = 1, k = 3 at θ = 1, θ̇ = 2: by the hand formula
+    above N = m R θ̇² − k R + k a cos θ, and θ̈ = −k a sin θ/(m R)."""
+    import math
+
+    from rbdsolve.solvers import Options, RouteChoice
+
+    text = BEAD.replace("questions:", "values: {m: 1, R: 2, a: 1, k: 3}\nquestions:").replace(
+        "reactions: {forces: [P]}", "reactions: {forces: [P], at: {theta: 1, dot(theta): 2}}")
+    report = solve_problem(build_model(load_text(text, "p.yaml")), Options(route=RouteChoice.NUMERIC))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert result["ok"], result["error"]
+    assert abs(result["answers"]["at"]["P"]["N_P"] - (2 * 4 - 6 + 3 * math.cos(1))) < 1e-12
+    assert abs(result["answers"]["accelerations"]["theta"] + 3 * math.sin(1) / 2) < 1e-12
+
+
+def _refusal(text: str) -> str:
+    report = solve_problem(build_model(load_text(text, "p.yaml")))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    assert not result["ok"]
+    return result["error"]
+
+
+def test_a_spring_end_that_no_body_carries_is_refused() -> None:
+    """Q = 2P moves, but is no material point of the bead (a particle at P)."""
+    text = BEAD.replace("  P: R * [cos(theta), sin(theta)]", "  P: R * [cos(theta), sin(theta)]\n  Q: 2*P")
+    assert "moves with no body" in _refusal(text.replace("between: [P, A]", "between: [Q, A]"))
+
+
+def test_a_spring_at_a_joint_is_refused() -> None:
+    """Seed problem 1's G1 is the long rod's centre and the short rod's pivot: a spring
+    there pulls one of them, which the scene does not say."""
+    from conftest import SEED
+
+    head = (SEED / "p1-two-rods.yaml").read_text(encoding="utf-8").split("questions:")[0]
+    head = head.replace("parameters:", "parameters:\n  k: stiffness").replace("points:", "points:\n  A: [r, 0]")
+    text = head + ("springs:\n  s: {stiffness: k, between: [G1, A]}\nquestions:\n  - reactions: {forces: "
+                   "[{at: O, on: long_rod}, {at: G1, on: short_rod, by: long_rod}]}\n")
+    assert "its end is a point of bodies long_rod, short_rod" in _refusal(text)
