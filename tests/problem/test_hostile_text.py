@@ -106,7 +106,7 @@ def test_a_pipe_that_never_ends_is_not_waited_for() -> None:
             start = time.perf_counter()
             with pytest.raises(InputError, match="no end of file within 0.3 s"):
                 yamlnodes.read_stream(stream, "<stdin>", seconds=0.3)
-            assert time.perf_counter() - start < 2
+            assert time.perf_counter() - start < 10  # loose for a loaded machine
     finally:
         os.close(write_end)
 
@@ -119,7 +119,7 @@ def test_a_fifo_as_a_problem_file_does_not_block(tmp_path, monkeypatch) -> None:
     start = time.perf_counter()
     with pytest.raises(InputError, match="no end of file"):
         load_file(fifo)  # nobody writes: it used to block in open() forever
-    assert time.perf_counter() - start < 2
+    assert time.perf_counter() - start < 10  # loose for a loaded machine
 
     def writer() -> None:
         with open(fifo, "w") as handle:
