@@ -37,13 +37,14 @@ import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
+from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.contacts import NOT_PLANAR
-from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
+from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -67,6 +68,7 @@ class Rolling:
     coordinate: sp.Symbol | None = None  # the contact's coordinate q
     measured: sp.Expr | None = None  # what the span bounds: q, or q − β on a turning body's edge
     normal: sp.Matrix | None = None  # the surface's unit normal at C, towards the body (for its push N)
+    requires: tuple[Assumed, ...] = ()  # what the geometry needs of the parameters (R > r inside a circle)
 
 
 @dataclass(frozen=True)
@@ -238,6 +240,7 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Sym
     """Placement and rolling of a curved edge (see the module docstring)."""
     rho = e.radius
     _check_fits(c, rho, s, values)
+    requires = _fits(c, rho, s, names)
     _check_touches(c, e, s, sigma)
     phi = sp.Dummy("phi", real=True)
     R = sp.rot_axis3(-phi)
@@ -252,8 +255,9 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Sym
         at = {phi: w, sigma: w / ratio}
         dependent, coefficient = _travel_name(c, s), (a, b)
     span = _arc_span(e, s, at[phi], {sigma: at[sigma]}, w)
-    return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, coefficient,
-                   names, s.moving, how, span, s.normal.subs(sigma, at[sigma]))
+    placed, angle, rolling = _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, coefficient,
+                                     names, s.moving, how, span, s.normal.subs(sigma, at[sigma]))
+    return placed, angle, replace(rolling, requires=requires)
 
 
 def _flat(c: Contact, e: Flat, s: _Surface, sigma, how: _Placing, names: Symbols):
@@ -395,6 +399,22 @@ def _check_fits(c: Contact, rho: sp.Expr, s: _Surface, values: dict) -> None:
     if room.is_nonpositive or (at_values.is_number and at_values <= 0):
         raise InputError(f"contact '{c.name}': body '{c.body}' (radius {to_unicode(rho)}) cannot roll inside a "
                          f"circle of radius {to_unicode(s.radius)}: the circle must be the larger", c.loc)
+
+
+def _fits(c: Contact, rho: sp.Expr, s: _Surface, names: Symbols) -> tuple[Assumed, ...]:
+    """Rolling inside a circle of radius R needs R > ρ (the body fits, and its centre
+    moves on the circle of radius R − ρ about the centre): the model assumes it, so that
+    signs decided later (stability, a mode's kind) never list the impossible ρ > R. Nothing
+    when the parameters' signs already decide it, or when both are numbers (checked above)."""
+    if s.radius is None or not s.inside:
+        return ()
+    room = sp.expand(s.radius - rho)
+    if not room.free_symbols or room.is_positive:
+        return ()
+    reverse = _reverse(names)
+    text = f"{to_unicode(s.radius)} > {to_unicode(rho)}"
+    stated = Assumption(_expr(s.radius, reverse, names, c), ">", _expr(rho, reverse, names, c), text, c.loc)
+    return (Assumed(room, True, stated, f"contact '{c.name}': {c.body} rolls inside the circle"),)
 
 
 def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:

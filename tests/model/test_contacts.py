@@ -104,3 +104,30 @@ questions: [modes]
     omega2 = (K / M).xreplace(dict(model.values))
     expected = g * ybar / (k_G2 + (1 - ybar) ** 2)
     assert abs(sp.N((omega2 - expected).subs(g, 1), 30)) < 1e-25
+
+
+def test_rolling_inside_a_circle_assumes_the_circle_is_the_larger() -> None:
+    """A ball in a bowl with no 'assumptions:': the contact adds R > r (strict), shown as
+    a step, so the stability of θ = 0 (K = m g (R − r), by hand) is decided without a
+    case r > R; a file assuming R > r itself gets no second copy."""
+    from rbdsolve.solvers.shared.signs import sign_of
+    from rbdsolve.solvers.shared.summary import rolling_steps
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "ball-in-bowl.yaml"))
+    R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]
+    (implied,) = model.assumptions
+    assert implied.strict and sp.expand(implied.difference - (R - r)) == 0
+    assert "contact 'C'" in implied.implied_by
+    assert sign_of(R - r, model.assumed) == 1
+    assert any("R > r" in step.text for step in rolling_steps(model))
+    stated = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
+    assert len(stated.assumptions) == 1 and not stated.assumptions[0].implied_by
+
+
+def test_values_set_inside_out_break_the_implied_assumption() -> None:
+    """--set r=2 R=1 on the ball in the bowl: refused at the contact, naming it."""
+    from rbdsolve.errors import InputError
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "ball-in-bowl.yaml"))
+    with pytest.raises(InputError, match=r"break the assumption 'R > r' \(implied by contact 'C'"):
+        model.with_values({"r": 2, "R": 1})

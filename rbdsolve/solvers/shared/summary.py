@@ -68,6 +68,8 @@ def rolling_steps(model: Model) -> list[st.Step]:
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
                                Relation(c.lhs, c.rhs),
                                Relation(c.dependent, c.integrated, lead="⇒")))
+        out += [st.note(f"{c.body} rolls inside the circle, so it must be the smaller: {a.source.text}, "
+                        "assumed in what follows") for a in c.requires]
     return out
 
 
