@@ -115,6 +115,8 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     placed, rollings = {}, []
     reverse = _reverse(names)
     for contact in problem.contacts:
+        if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/plane_rolling.py
+            continue
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
             origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
@@ -169,9 +171,10 @@ def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=Non
     try:
         return edge(part.shape, edge_name, dims, names.axis(part.axis) if part.axis is not None else None, radius)
     except NotInPlane as exc:
-        raise InputError(f"contact '{c.name}': {exc}; a contact rolls in the xy-plane of the scene (rolling in 3D "
-                         "is not integrable: eom, equilibria and modes cannot take it; steady_motion's "
-                         "'rolling_at' states it for a steady motion)", c.loc) from None
+        raise InputError(f"contact '{c.name}': {exc}; a planar contact rolls in the xy-plane of the scene (rolling "
+                         "in 3D is not integrable: roll on a plane, 'rolls_on: {plane: {normal: z}}', with the body "
+                         "placed by its 'at' and 'orientation'; steady_motion keeps it as a constraint, eom, "
+                         "equilibria and modes cannot take it)", c.loc) from None
 
 
 def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame | None, under: Body | None):
@@ -411,10 +414,16 @@ def _fits(c: Contact, rho: sp.Expr, s: _Surface, names: Symbols) -> tuple[Assume
     room = sp.expand(s.radius - rho)
     if not room.free_symbols or room.is_positive:
         return ()
+    return (implied(c, s.radius, rho, names, f"contact '{c.name}': {c.body} rolls inside the circle"),)
+
+
+def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str) -> Assumed:
+    """The strict assumption ``larger > smaller`` that contact ``c``'s geometry needs,
+    located at the contact and saying ``why``."""
     reverse = _reverse(names)
-    text = f"{to_unicode(s.radius)} > {to_unicode(rho)}"
-    stated = Assumption(_expr(s.radius, reverse, names, c), ">", _expr(rho, reverse, names, c), text, c.loc)
-    return (Assumed(room, True, stated, f"contact '{c.name}': {c.body} rolls inside the circle"),)
+    text = f"{to_unicode(larger)} > {to_unicode(smaller)}"
+    stated = Assumption(_expr(larger, reverse, names, c), ">", _expr(smaller, reverse, names, c), text, c.loc)
+    return Assumed(sp.expand(larger - smaller), True, stated, why)
 
 
 def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
