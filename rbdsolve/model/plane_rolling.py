@@ -17,7 +17,9 @@ Rolling without slipping sets the body's point at C at rest, v_G + ω × (C − 
 three relations between the rates that do not integrate to relations between the
 coordinates (a coin can roll back to its place turned), so no coordinate is eliminated.
 The contact is kept as a constraint: ``steady_motion`` uses C as it uses a point named
-in ``rolling_at``; eom, equilibria, modes and reactions refuse it (problem/questions.py).
+in ``rolling_at``; ``impact`` keeps v_C = 0 along the plane just after, with the plane's
+impulse along it unknown (``material_velocity``, ``tangents``); eom, equilibria, modes and
+reactions refuse it (problem/questions.py).
 """
 
 from __future__ import annotations
@@ -107,3 +109,18 @@ def _touching(c: Contact, point: sp.Matrix, n: sp.Matrix, names: Symbols) -> sp.
         raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the plane: its contact point is "
                          f"{to_unicode(gap)} from it along the normal", c.surface.loc)
     return point
+
+
+def tangents(n: sp.Matrix) -> tuple[sp.Matrix, sp.Matrix]:
+    """Two unit vectors across the unit normal n, t₁ × t₂ = n: t₁ from the scene axis
+    least along n (x for a table, n = z), with its part along n taken out."""
+    axis = min((sp.eye(3)[:, k] for k in range(3)), key=lambda e: abs(float(e.dot(n))))
+    t1 = axis - axis.dot(n) * n
+    t1 = (t1 / sp.sqrt(t1.dot(t1))).applyfunc(sp.radsimp)
+    return t1, n.cross(t1).applyfunc(sp.radsimp)
+
+
+def material_velocity(contact: PlaneRolling, body, state) -> sp.Matrix:
+    """The velocity of the body's material point at C, v_G + ω × (C − G) (not dC/dt:
+    C moves round the rim as the body rolls)."""
+    return body.velocity(state) + body.angular_velocity(state).cross(contact.point - body.position)
