@@ -75,3 +75,17 @@ def test_the_contact_is_the_constraint_rolling_at_states(by_contact) -> None:
     assert by_point.answers.rates == by_contact.answers.rates
     assert by_point.answers.solved == by_contact.answers.solved
     assert by_point.answers.relations == by_contact.answers.relations
+
+
+def test_the_seed_ring_written_with_a_contact_gives_the_exam_s_answer() -> None:
+    """Seed problem 3 with its hand-worked C = G − r e3 replaced by a contact on the
+    table: ω₀² = 2 g sin θ/(cos θ (4R + r sin θ)), the exam's worked solution."""
+    ring = (PROBLEMS / "sg2150-2015-10-29" / "p3-rolling-ring.yaml").read_text(encoding="utf-8")
+    text = ring.replace("  C: G - r*e3\n", "").replace(
+        "questions:\n", "contacts:\n  C: {body: ring, rolls_on: {plane: {normal: z}}}\nquestions:\n").replace(
+        "{about: C, rolling_at: C,", "{about: C,")
+    assert "rolling_at" not in text and "G - r*e3" not in text
+    (value,) = _solve(text).answers.solved.values()
+    names = {str(x): x for x in value.free_symbols}
+    mine = value.xreplace({names[k]: v for k, v in {"g": g, "R": R, "r": r, "theta": theta}.items()})
+    assert sp.simplify(mine - 2 * g * sp.sin(theta) / (sp.cos(theta) * (4 * R + r * sp.sin(theta)))) == 0
