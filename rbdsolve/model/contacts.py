@@ -162,7 +162,8 @@ def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling
     """A body on a string from a drum over a pulley (model/strings.py)."""
     e = _geometry(c, drum, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
-    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c)
+    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,
+                           requires=_wound(c, drum, names))
 
 
 def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=None):
@@ -190,7 +191,8 @@ def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame
     how = _Placing(sp.Dummy("w", real=True), relative, frame, q)
     if isinstance(geometry, Flat):
         return _flat(c, geometry, surface, sigma, how, names)
-    return _curved(c, geometry, surface, sigma, how, names, values)
+    placed, angle, rolling = _curved(c, geometry, surface, sigma, how, names, values)
+    return placed, angle, replace(rolling, requires=rolling.requires + _wound(c, body, names))
 
 
 def _surface(c: Contact, names: Symbols, sigma: sp.Symbol, under: Body | None) -> _Surface:
@@ -417,13 +419,35 @@ def _fits(c: Contact, rho: sp.Expr, s: _Surface, names: Symbols) -> tuple[Assume
     return (implied(c, s.radius, rho, names, f"contact '{c.name}': {c.body} rolls inside the circle"),)
 
 
-def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str) -> Assumed:
-    """The strict assumption ``larger > smaller`` that contact ``c``'s geometry needs,
-    located at the contact and saying ``why``."""
+def _wound(c: Contact, drum: Body, names: Symbols) -> tuple[Assumed, ...]:
+    """A string wound at its own radius b on a drum of rim radius R lies on the drum:
+    R ≥ b. Refused when the numbers break it; assumed when the signs do not decide it."""
+    if c.radius is None:
+        return ()
+    dims = {k: names.scalar(v) for k, v in drum.parts[0].dimensions}
+    rim = dims.get("outer_radius", dims.get("radius"))
+    if rim is None:
+        return ()
+    b = names.scalar(c.radius)
+    room = sp.expand(rim - b)
+    if room.is_negative or (room.is_number and room < 0):
+        raise InputError(f"contact '{c.name}': the string is wound at the radius {to_unicode(b)}, outside the rim of "
+                         f"'{drum.name}' (radius {to_unicode(rim)}): a string winds on the body, at most at its rim",
+                         c.radius.loc)
+    if not room.free_symbols or room.is_nonnegative:
+        return ()
+    return (implied(c, rim, b, names, f"contact '{c.name}': the string is wound on {drum.name}, inside its rim",
+                    strict=False),)
+
+
+def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str, strict: bool = True) -> Assumed:
+    """The assumption ``larger > smaller`` (≥ unless ``strict``) that contact ``c``'s
+    geometry needs, located at the contact and saying ``why``."""
     reverse = _reverse(names)
-    text = f"{to_unicode(larger)} > {to_unicode(smaller)}"
-    stated = Assumption(_expr(larger, reverse, names, c), ">", _expr(smaller, reverse, names, c), text, c.loc)
-    return Assumed(sp.expand(larger - smaller), True, stated, why)
+    op = ">" if strict else ">="
+    text = f"{to_unicode(larger)} {'>' if strict else '≥'} {to_unicode(smaller)}"
+    stated = Assumption(_expr(larger, reverse, names, c), op, _expr(smaller, reverse, names, c), text, c.loc)
+    return Assumed(sp.expand(larger - smaller), strict, stated, why)
 
 
 def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
