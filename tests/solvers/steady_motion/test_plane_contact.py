@@ -7,6 +7,9 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
+from click.testing import CliRunner
+
+from rbdsolve.cli import main
 
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
@@ -58,12 +61,16 @@ def test_the_contact_gives_the_hand_spin_and_rate(by_contact) -> None:
     names = {str(x): x for x in value.free_symbols}
     mine = value.xreplace({names[k]: v for k, v in {"g": g, "R": R, "r": r, "theta": theta}.items() if k in names})
     assert sp.simplify(mine - omega_squared) == 0
-    (rate,) = by_contact.answers.rates.values()
-    names = {str(x): x for x in rate.free_symbols}
-    mine = rate.xreplace({names[k]: v for k, v in {"R": R, "r": r, "theta": theta, "omega0": w0}.items()
-                          if k in names})
-    assert sp.simplify(mine - spin_rate) == 0
 
+
+
+def test_the_solution_shows_where_c_is_before_the_rolling_condition() -> None:
+    """r_C − r_G = −r e₃ in the triad (the seed's e₃ from C towards G), then v_C = 0."""
+    result = CliRunner().invoke(main, ["solve", str(PROBLEMS / "steady" / "rolling-coin.yaml")])
+    assert result.exit_code == 0, result.output
+    where = result.output.index("The contact point C is where the body touches the plane")
+    rolling = result.output.index("Rolling without slipping at C")
+    assert where < result.output.index("r_C − r_G = −r e₃") < rolling
 
 def test_the_contact_is_the_constraint_rolling_at_states(by_contact) -> None:
     """The scene with C written by hand (C = G − r e3) and named in 'rolling_at'."""
