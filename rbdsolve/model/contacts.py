@@ -31,7 +31,6 @@ the rolling body as an ordinary placed one.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from fractions import Fraction
 
 import sympy as sp
 
@@ -42,7 +41,7 @@ from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
-from rbdsolve.problem import expr as ex
+from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.contacts import NOT_PLANAR
 from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
 
@@ -113,21 +112,21 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     bodies = {b.name: b for b in problem.bodies}
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     placed, rollings = {}, []
-    reverse = _reverse(names)
+    reverse = reverse_names(names)
     for contact in problem.contacts:
         if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/plane_rolling.py
             continue
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
             origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
-            placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact))
+            placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
             rollings.append(rolling)
             continue
         under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
         frame = _frame(contact, under, names)
         origin, angle, rolling = _contact(contact, body, names, values, frame, under)
-        placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact),
-                                    angle=_expr(angle, reverse, names, contact))
+        placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact),
+                                    angle=as_expr(angle, reverse, names, contact))
         rollings.append(rolling)
     return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
 
@@ -443,10 +442,10 @@ def _wound(c: Contact, drum: Body, names: Symbols) -> tuple[Assumed, ...]:
 def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str, strict: bool = True) -> Assumed:
     """The assumption ``larger > smaller`` (≥ unless ``strict``) that contact ``c``'s
     geometry needs, located at the contact and saying ``why``."""
-    reverse = _reverse(names)
+    reverse = reverse_names(names)
     op = ">" if strict else ">="
     text = f"{to_unicode(larger)} {'>' if strict else '≥'} {to_unicode(smaller)}"
-    stated = Assumption(_expr(larger, reverse, names, c), op, _expr(smaller, reverse, names, c), text, c.loc)
+    stated = Assumption(as_expr(larger, reverse, names, c), op, as_expr(smaller, reverse, names, c), text, c.loc)
     return Assumed(sp.expand(larger - smaller), strict, stated, why)
 
 
@@ -460,47 +459,3 @@ def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
             raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the surface at the reference "
                              f"configuration ({c.coordinate} = 0): its {c.edge} edge faces away from it; turn the "
                              "shape with 'axis:' (for instance 'axis: -y', the curved side down)", c.loc)
-
-
-# --- back to expression trees ------------------------------------------------------------
-
-
-def _reverse(names: Symbols) -> dict:
-    table = {s: n for n, s in names.parameters.items()}
-    table.update({q: n for n, q in names.coordinates.items()})
-    table.update({f: n for n, f in names.prescribed.items() if isinstance(f, sp.Function)})
-    table[t] = "t"
-    return table
-
-
-def _expr(value, reverse: dict, names: Symbols, c: Contact) -> ex.Expr:
-    """A sympy value as a checked expression tree located at the contact."""
-    readable = {q: sp.Symbol(n) for n, q in names.coordinates.items()}
-    if isinstance(value, sp.MatrixBase):
-        items = list(value) if value[2] != 0 else list(value[:2])
-        tree = ex.Vec(tuple(_tree(x, reverse) for x in items))
-        return ex.Expr(tree, ex.Kind.VECTOR, sp.sstr(sp.Matrix(items).T.xreplace(readable)), c.loc)
-    return ex.Expr(_tree(value, reverse), ex.Kind.SCALAR, sp.sstr(value.xreplace(readable)), c.loc)
-
-
-def _tree(x: sp.Expr, reverse: dict) -> ex.Tree:
-    if x in reverse:
-        return ex.Name(reverse[x])
-    if x is sp.pi:
-        return ex.Const("pi")
-    if x.is_Rational:
-        number = ex.Num(Fraction(abs(x.p), x.q))
-        return ex.Neg(number) if x < 0 else number
-    if isinstance(x, (sp.Add, sp.Mul)):
-        op = "+" if isinstance(x, sp.Add) else "*"
-        trees = [_tree(a, reverse) for a in x.args]
-        out = trees[0]
-        for item in trees[1:]:
-            out = ex.BinOp(op, out, item)
-        return out
-    if isinstance(x, sp.Pow):
-        return ex.BinOp("**", _tree(x.base, reverse), _tree(x.exp, reverse))
-    name = type(x).__name__.lower()
-    if name in ex.SCALAR_FUNCTIONS:
-        return ex.Call(name, tuple(_tree(a, reverse) for a in x.args))
-    raise ValueError(f"cannot write {x} as a scene expression")  # pragma: no cover - from the trees above

@@ -78,7 +78,7 @@ questions: [inertia]
 """
     model = build_model(load_text(text, "ball.yaml"))
     (contact,) = model.plane_contacts
-    r, x = model.symbols.parameters["r"], model.symbols.coordinates["x"]
+    x = model.symbols.coordinates["x"]
     assert sp.simplify(contact.point - sp.Matrix([x, 0, 0])) == sp.zeros(3, 1)
     assert not model.assumptions
 
