@@ -149,6 +149,14 @@ def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
     return out
 
 
+def descending(poly: sp.Poly, variable: sp.Symbol | None = None) -> Terms:
+    """A polynomial highest power first, each coefficient in its factored form, as an
+    exam writes a characteristic equation: 25/48 μ² − 37/24 μ + 1, −3/2 m (R − r)² λ +
+    g m (R − r); in ``variable`` (κ) where the polynomial's own is a stand-in."""
+    x = variable if variable is not None else poly.gens[0]
+    return Terms(tuple(Product(factored(c), (x**k,) if k else ()) for (k,), c in poly.terms()))
+
+
 def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:
     """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors,
     each starting with a positive term where it has one (v₀ − P_y/m, not −P_y/m + v₀)."""

@@ -7,7 +7,8 @@ positive symbol: R > r becomes
 R = r + δ, and any sign that holds for every δ > 0 holds under the assumption
 (``decided_by``). One substitution per parameter, in the file's order; an assumption
 that is not linear in a free parameter is still checked, and used by the sampling in
-``solvers/shared/conditions.py``, but decides no sign exactly.
+``solvers/shared/conditions.py``, but decides no sign exactly. A contact's geometry adds
+its own (R > r for a body rolling inside a circle, model/contacts.py), after the file's.
 """
 
 from __future__ import annotations
@@ -34,6 +35,12 @@ class Assumed:
     difference: sp.Expr
     strict: bool
     source: Assumption
+    implied_by: str = ""  # a contact whose geometry needs it (R > r inside a circle), not 'assumptions:'
+
+    @property
+    def named(self) -> str:
+        """'R > r' as the file wrote it, or with the contact that implies it."""
+        return f"'{self.source.text}'" + (f" (implied by {self.implied_by})" if self.implied_by else "")
 
     @property
     def relation(self) -> sp.Basic:
@@ -56,16 +63,17 @@ def check(assumptions: tuple[Assumed, ...], values: Mapping[sp.Symbol, sp.Expr],
     for a in assumptions:
         if not a.difference.free_symbols:
             if not _holds(a.difference, a.strict):
-                raise InputError(f"the assumption '{a.source.text}' is false whatever the values", a.source.loc)
+                raise InputError(f"the assumption {a.named} is false whatever the values", a.source.loc)
             continue
         number = a.difference.xreplace(dict(values))
         if number.is_number and not _holds(number, a.strict):
             given = ", ".join(f"{k} = {v}" for k, v in values.items() if k in a.difference.free_symbols)
-            raise InputError(f"the values given ({given}) break the assumption '{a.source.text}'", a.source.loc)
+            raise InputError(f"the values given ({given}) break the assumption {a.named}", a.source.loc)
         others = substitutions(tuple(x for x in assumptions if x is not a), names)
         value = sp.factor(a.difference.xreplace(others))
         if value.is_negative or (a.strict and value.is_nonpositive):
-            raise InputError(f"the assumption '{a.source.text}' cannot hold with the others and the parameters' "
+            implied = "".join(f"; {x.named}" for x in assumptions if x.implied_by and x is not a)
+            raise InputError(f"the assumption {a.named} cannot hold with the others{implied} and the parameters' "
                              "signs", a.source.loc)
 
 

@@ -19,6 +19,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.contacts import place_contacts
+from rbdsolve.model.plane_rolling import plane_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
@@ -91,8 +92,9 @@ class Model:
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
     triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
-    assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:'
+    assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:' and implied by contacts
     contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
+    plane_contacts: tuple = ()  # model/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
 
     @cached_property  # asked in every sign decision; the model never changes
     def decided_by(self) -> dict:
@@ -186,8 +188,14 @@ def build_model(problem: Problem) -> Model:
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
+    planes = plane_contacts(problem, names, {b.name: b.rotation for b in bodies}, values)
+    points |= {c.name: c.point for c in planes}  # C, named in questions (steady_motion's about, rolling_at)
+    names = names.with_points(points)
+    stated = assumed(problem, names)
+    contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
     model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
-                  triads=triads, assumptions=assumed(problem, names), contacts=contacts)
+                  triads=triads, assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
+                  contacts=contacts, plane_contacts=planes)
     check_assumptions(model.assumptions, values, names)
     periodic = _periodic_coordinates(model)
     _refuse_winding_angles(model)
@@ -195,6 +203,20 @@ def build_model(problem: Problem) -> Model:
                        if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
                        or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
+
+
+def _implied(contacts: tuple, stated: tuple, names: Symbols) -> tuple:
+    """The contacts with what their geometry needs of the parameters (R > r for a body
+    inside a circle) kept where the file's own assumptions do not already give it (put
+    in as substitutions, R = r + δ, it is then positive), each once."""
+    given = substitutions(stated, names) if stated else {}
+    kept, out = [], []
+    for c in contacts:
+        needed = tuple(a for a in c.requires if not sp.factor(a.difference.xreplace(given)).is_positive
+                       and all(sp.expand(a.difference - b.difference) != 0 for b in kept))
+        kept += needed
+        out.append(replace(c, requires=needed))
+    return tuple(out)
 
 
 def _refuse_winding_angles(model: Model) -> None:

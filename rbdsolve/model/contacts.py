@@ -31,19 +31,19 @@ the rolling body as an ordinary placed one.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from fractions import Fraction
 
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
+from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
-from rbdsolve.problem import expr as ex
+from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.contacts import NOT_PLANAR
-from rbdsolve.problem.schema import Body, Contact, Measure, Problem, SurfaceKind
+from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -67,6 +67,7 @@ class Rolling:
     coordinate: sp.Symbol | None = None  # the contact's coordinate q
     measured: sp.Expr | None = None  # what the span bounds: q, or q − β on a turning body's edge
     normal: sp.Matrix | None = None  # the surface's unit normal at C, towards the body (for its push N)
+    requires: tuple[Assumed, ...] = ()  # what the geometry needs of the parameters (R > r inside a circle)
 
 
 @dataclass(frozen=True)
@@ -111,19 +112,21 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     bodies = {b.name: b for b in problem.bodies}
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     placed, rollings = {}, []
-    reverse = _reverse(names)
+    reverse = reverse_names(names)
     for contact in problem.contacts:
+        if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/plane_rolling.py
+            continue
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
             origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
-            placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact))
+            placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
             rollings.append(rolling)
             continue
         under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
         frame = _frame(contact, under, names)
         origin, angle, rolling = _contact(contact, body, names, values, frame, under)
-        placed[body.name] = replace(body, at=_expr(origin, reverse, names, contact),
-                                    angle=_expr(angle, reverse, names, contact))
+        placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact),
+                                    angle=as_expr(angle, reverse, names, contact))
         rollings.append(rolling)
     return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
 
@@ -158,7 +161,8 @@ def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling
     """A body on a string from a drum over a pulley (model/strings.py)."""
     e = _geometry(c, drum, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
-    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c)
+    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,
+                           requires=_wound(c, drum, names))
 
 
 def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=None):
@@ -167,9 +171,10 @@ def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=Non
     try:
         return edge(part.shape, edge_name, dims, names.axis(part.axis) if part.axis is not None else None, radius)
     except NotInPlane as exc:
-        raise InputError(f"contact '{c.name}': {exc}; a contact rolls in the xy-plane of the scene (rolling in 3D "
-                         "is not integrable: eom, equilibria and modes cannot take it; steady_motion's "
-                         "'rolling_at' states it for a steady motion)", c.loc) from None
+        raise InputError(f"contact '{c.name}': {exc}; a planar contact rolls in the xy-plane of the scene (rolling "
+                         "in 3D is not integrable: roll on a plane, 'rolls_on: {plane: {normal: z}}', with the body "
+                         "placed by its 'at' and 'orientation'; steady_motion keeps it as a constraint, eom, "
+                         "equilibria and modes cannot take it)", c.loc) from None
 
 
 def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame | None, under: Body | None):
@@ -185,7 +190,8 @@ def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame
     how = _Placing(sp.Dummy("w", real=True), relative, frame, q)
     if isinstance(geometry, Flat):
         return _flat(c, geometry, surface, sigma, how, names)
-    return _curved(c, geometry, surface, sigma, how, names, values)
+    placed, angle, rolling = _curved(c, geometry, surface, sigma, how, names, values)
+    return placed, angle, replace(rolling, requires=rolling.requires + _wound(c, body, names))
 
 
 def _surface(c: Contact, names: Symbols, sigma: sp.Symbol, under: Body | None) -> _Surface:
@@ -238,6 +244,7 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Sym
     """Placement and rolling of a curved edge (see the module docstring)."""
     rho = e.radius
     _check_fits(c, rho, s, values)
+    requires = _fits(c, rho, s, names)
     _check_touches(c, e, s, sigma)
     phi = sp.Dummy("phi", real=True)
     R = sp.rot_axis3(-phi)
@@ -252,8 +259,9 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Sym
         at = {phi: w, sigma: w / ratio}
         dependent, coefficient = _travel_name(c, s), (a, b)
     span = _arc_span(e, s, at[phi], {sigma: at[sigma]}, w)
-    return _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, coefficient,
-                   names, s.moving, how, span, s.normal.subs(sigma, at[sigma]))
+    placed, angle, rolling = _result(c, origin, at, phi, s.point.subs(sigma, at[sigma]), dependent, coefficient,
+                                     names, s.moving, how, span, s.normal.subs(sigma, at[sigma]))
+    return placed, angle, replace(rolling, requires=requires)
 
 
 def _flat(c: Contact, e: Flat, s: _Surface, sigma, how: _Placing, names: Symbols):
@@ -397,6 +405,50 @@ def _check_fits(c: Contact, rho: sp.Expr, s: _Surface, values: dict) -> None:
                          f"circle of radius {to_unicode(s.radius)}: the circle must be the larger", c.loc)
 
 
+def _fits(c: Contact, rho: sp.Expr, s: _Surface, names: Symbols) -> tuple[Assumed, ...]:
+    """Rolling inside a circle of radius R needs R > ρ (the body fits, and its centre
+    moves on the circle of radius R − ρ about the centre): the model assumes it, so that
+    signs decided later (stability, a mode's kind) never list the impossible ρ > R. Nothing
+    when the parameters' signs already decide it, or when both are numbers (checked above)."""
+    if s.radius is None or not s.inside:
+        return ()
+    room = sp.expand(s.radius - rho)
+    if not room.free_symbols or room.is_positive:
+        return ()
+    return (implied(c, s.radius, rho, names, f"contact '{c.name}': {c.body} rolls inside the circle"),)
+
+
+def _wound(c: Contact, drum: Body, names: Symbols) -> tuple[Assumed, ...]:
+    """A string wound at its own radius b on a drum of rim radius R lies on the drum:
+    R ≥ b. Refused when the numbers break it; assumed when the signs do not decide it."""
+    if c.radius is None:
+        return ()
+    dims = {k: names.scalar(v) for k, v in drum.parts[0].dimensions}
+    rim = dims.get("outer_radius", dims.get("radius"))
+    if rim is None:
+        return ()
+    b = names.scalar(c.radius)
+    room = sp.expand(rim - b)
+    if room.is_negative or (room.is_number and room < 0):
+        raise InputError(f"contact '{c.name}': the string is wound at the radius {to_unicode(b)}, outside the rim of "
+                         f"'{drum.name}' (radius {to_unicode(rim)}): a string winds on the body, at most at its rim",
+                         c.radius.loc)
+    if not room.free_symbols or room.is_nonnegative:
+        return ()
+    return (implied(c, rim, b, names, f"contact '{c.name}': the string is wound on {drum.name}, inside its rim",
+                    strict=False),)
+
+
+def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str, strict: bool = True) -> Assumed:
+    """The assumption ``larger > smaller`` (≥ unless ``strict``) that contact ``c``'s
+    geometry needs, located at the contact and saying ``why``."""
+    reverse = reverse_names(names)
+    op = ">" if strict else ">="
+    text = f"{to_unicode(larger)} {'>' if strict else '≥'} {to_unicode(smaller)}"
+    stated = Assumption(as_expr(larger, reverse, names, c), op, as_expr(smaller, reverse, names, c), text, c.loc)
+    return Assumed(sp.expand(larger - smaller), strict, stated, why)
+
+
 def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
     """At the reference configuration (angle 0) the edge's point facing the surface,
     −n in body axes, must lie on its arc."""
@@ -407,47 +459,3 @@ def _check_touches(c: Contact, e: Curved, s: _Surface, sigma) -> None:
             raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the surface at the reference "
                              f"configuration ({c.coordinate} = 0): its {c.edge} edge faces away from it; turn the "
                              "shape with 'axis:' (for instance 'axis: -y', the curved side down)", c.loc)
-
-
-# --- back to expression trees ------------------------------------------------------------
-
-
-def _reverse(names: Symbols) -> dict:
-    table = {s: n for n, s in names.parameters.items()}
-    table.update({q: n for n, q in names.coordinates.items()})
-    table.update({f: n for n, f in names.prescribed.items() if isinstance(f, sp.Function)})
-    table[t] = "t"
-    return table
-
-
-def _expr(value, reverse: dict, names: Symbols, c: Contact) -> ex.Expr:
-    """A sympy value as a checked expression tree located at the contact."""
-    readable = {q: sp.Symbol(n) for n, q in names.coordinates.items()}
-    if isinstance(value, sp.MatrixBase):
-        items = list(value) if value[2] != 0 else list(value[:2])
-        tree = ex.Vec(tuple(_tree(x, reverse) for x in items))
-        return ex.Expr(tree, ex.Kind.VECTOR, sp.sstr(sp.Matrix(items).T.xreplace(readable)), c.loc)
-    return ex.Expr(_tree(value, reverse), ex.Kind.SCALAR, sp.sstr(value.xreplace(readable)), c.loc)
-
-
-def _tree(x: sp.Expr, reverse: dict) -> ex.Tree:
-    if x in reverse:
-        return ex.Name(reverse[x])
-    if x is sp.pi:
-        return ex.Const("pi")
-    if x.is_Rational:
-        number = ex.Num(Fraction(abs(x.p), x.q))
-        return ex.Neg(number) if x < 0 else number
-    if isinstance(x, (sp.Add, sp.Mul)):
-        op = "+" if isinstance(x, sp.Add) else "*"
-        trees = [_tree(a, reverse) for a in x.args]
-        out = trees[0]
-        for item in trees[1:]:
-            out = ex.BinOp(op, out, item)
-        return out
-    if isinstance(x, sp.Pow):
-        return ex.BinOp("**", _tree(x.base, reverse), _tree(x.exp, reverse))
-    name = type(x).__name__.lower()
-    if name in ex.SCALAR_FUNCTIONS:
-        return ex.Call(name, tuple(_tree(a, reverse) for a in x.args))
-    raise ValueError(f"cannot write {x} as a scene expression")  # pragma: no cover - from the trees above

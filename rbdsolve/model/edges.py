@@ -51,16 +51,19 @@ class NotInPlane(ValueError):
 
 
 def edge(shape: Shape, name: str, dims: dict[str, sp.Expr], axis: sp.Matrix | None,
-         radius: sp.Expr | None = None) -> Curved | Flat:
+         radius: sp.Expr | None = None, planar: bool = True) -> Curved | Flat:
     """Edge ``name`` of the shape, turned by its ``axis`` (None: no turn). ``radius``:
-    a string wound at its own radius about the shape's centre (edge ``axle``)."""
+    a string wound at its own radius about the shape's centre (edge ``axle``).
+    ``planar``: the edge must lie in the scene's xy-plane (False: a rim rolling on a
+    plane in 3D, any way round)."""
     Q = rotation_to(axis, OWN_AXIS.get(shape, _Z)) if axis is not None else sp.eye(3)
     if name == "axle":
         return _in_plane(shape, Curved(sp.zeros(3, 1), radius, None, Q * _Z if shape in _ROUND_IN_PLANE else None))
     r = dims.get("outer_radius", dims.get("radius"))
     if name == "rim":
-        return _in_plane(shape, Curved(sp.zeros(3, 1), radius or r, None, None if shape in
-                                       (Shape.SPHERE, Shape.SPHERICAL_SHELL) else Q * _Z))
+        rim = Curved(sp.zeros(3, 1), radius or r, None, None if shape in (Shape.SPHERE, Shape.SPHERICAL_SHELL)
+                     else Q * _Z)
+        return _in_plane(shape, rim) if planar else rim
     if name == "curved":
         middle, half = _ARCS.get(shape, (_Z, sp.pi / 2))
         half = dims["half_angle"] if shape is Shape.CYLINDER_SEGMENT else half

@@ -6,13 +6,16 @@
       E: {body: half, edge: curved, rolls_on: floor, angle: theta}
       S: {body: yoyo, string: {fixed_at: A, direction: [0, -1], radius: r}, along: y}
       H: {body: block, hangs_from: {drum: cylinder, direction: [1, 0], over: P}}
+      P: {body: coin, rolls_on: {plane: {normal: z}}}     # in 3D: the coin has 'at' and 'orientation'
 
 A body hanging on a string (``hangs_from``) from a drum, over a light pulley, names no
 coordinate: the string's inextensibility places it from the drum's motion. Each other
 contact names one declared coordinate, as ``along`` (the contact point's travel:
 a distance along a line, the angle round a circle from its lowest point inside or its
 top outside) or ``angle`` (the body's turn); the body gives neither ``at`` nor
-``angle``: rolling places it (model/contacts.py). This module only reads and checks
+``angle``: rolling places it (model/contacts.py). A body rolling on a plane in 3D keeps
+its own ``at`` and ``orientation`` and names no coordinate: the condition does not
+integrate, so it stays a constraint (model/plane_rolling.py). This module only reads and checks
 names; the geometry (does the body fit, does it touch) is checked with sympy later.
 """
 
@@ -30,11 +33,13 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
 
 
-# a contact is planar: its rolling condition then integrates; in 3D it does not
-NOT_PLANAR = ("{what} is rolling in 3D, which a contact does not describe: a contact rolls in the xy-plane of "
-              "the scene, where its rolling condition integrates; rolling on a plane in 3D is not integrable "
-              "(non-holonomic), so eom, equilibria and modes cannot take it (they need independent coordinates); "
-              "state it for a steady motion with steady_motion's 'rolling_at'")
+# a planar contact's rolling condition integrates; in 3D it does not
+NOT_PLANAR = ("{what} is rolling in 3D, which a planar contact does not describe: a planar contact rolls in the "
+              "xy-plane of the scene, where its rolling condition integrates; in 3D roll on a plane, "
+              "'rolls_on: {{plane: {{normal: z}}}}', with the body placed by its own 'at' and 'orientation'")
+# why a rolling contact on a plane is a constraint kept, not a coordinate eliminated
+NOT_INTEGRABLE = ("rolling on a plane in 3D is not integrable (non-holonomic): v_C = 0 relates the rates but no "
+                  "coordinate can be eliminated")
 
 
 def contact_bodies(node: Node | None) -> dict[str, str]:
@@ -45,6 +50,8 @@ def contact_bodies(node: Node | None) -> dict[str, str]:
     out = {}
     for key, value in table.entries:
         body = value.get("body") if isinstance(value, Map) else None
+        if _on_plane(value):  # in 3D: the body is placed by its own 'at' and 'orientation'
+            continue
         if isinstance(body, Scalar) and not body.null:
             if body.text in out:
                 raise InputError(f"body '{body.text}' has two contacts ('{out[body.text]}' and '{key.text}'): "
@@ -78,6 +85,8 @@ class ContactReader:
         if spec.get("hangs_from") is not None:
             return self.hanging(name, spec, bodies, what)
         body = _body(spec.get("body"), bodies)
+        if _on_plane(spec):
+            return self.on_plane(name, spec, body, what)
         coordinate, measure = self.coordinate(spec, what)
         if spec.get("string") is not None:
             surface, radius = self.string(spec.get("string"))
@@ -112,6 +121,29 @@ class ContactReader:
         line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
         return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
+    def on_plane(self, name: str, spec: Map, body: Body, what: str) -> Contact:
+        """``rolls_on: {plane: {normal: z, through: P}}``: a round body rolling on a fixed
+        plane in 3D, placed by its own ``at`` and ``orientation``; no coordinate (the
+        condition does not integrate), the contact point C is derived in the model."""
+        for key in ("along", "angle"):
+            if spec.get(key) is not None:
+                raise InputError(f"{what}: {NOT_INTEGRABLE}, so the contact names no coordinate; the body keeps "
+                                 f"its own 'at' and 'orientation' (remove '{key}')", spec.get(key).loc)
+        if not body.orientation or body.at is None:
+            raise InputError(f"{what}: body '{body.name}' rolls on a plane in 3D: give it its place 'at' and its "
+                             "turns 'orientation' (the contact derives the point C where it touches)", spec.loc)
+        node = expect_mapping(spec.get("rolls_on").entries[0][1], "a plane: {normal, through}")
+        check_keys(node, (), ("normal", "through"), "a plane")
+        normal = self.reading.axis(node.get("normal")) if node.get("normal") is not None else _unit_z(node)
+        through = self.place(node.get("through"), node.loc) if node.get("through") is not None else None
+        edge = _edge(spec, body, string=False)
+        if edge != "rim":
+            raise InputError(f"{what}: a body rolls on a plane on a whole round edge ('rim' of a disk, ring, "
+                             f"cylinder or sphere), not '{edge}'", spec.get("edge").loc if spec.get("edge") else
+                             spec.loc)
+        plane = Surface(SurfaceKind.PLANE, through, normal, None, False, node.loc)
+        return Contact(name, body.name, edge, plane, None, None, None, False, spec.loc)
+
     def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
         """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
         given = [(m, spec.get(m.value)) for m in Measure if spec.get(m.value) is not None]
@@ -134,7 +166,7 @@ class ContactReader:
         spec = expect_mapping(node, "a surface: floor, {line: {...}}, {circle: {...}} or {body: B, edge: E}")
         if spec.get("body") is not None:
             return _body_surface(spec, bodies)
-        if len(spec.entries) == 1 and spec.entries[0][0].text in ("plane", "sphere"):
+        if len(spec.entries) == 1 and spec.entries[0][0].text == "sphere":
             raise InputError(NOT_PLANAR.format(what=f"rolling on a {spec.entries[0][0].text}"), spec.entries[0][0].loc)
         if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
             found = ", ".join(k.text for k, _ in spec.entries) or "nothing"
@@ -207,6 +239,16 @@ def _check_order(contacts: tuple[Contact, ...]) -> None:
             if d.body == used:
                 raise InputError(f"contact '{c.name}' uses '{used}', which contact '{d.name}' places later: "
                                  f"list '{d.name}' first", where)
+
+
+def _on_plane(spec: Node) -> bool:
+    """Does the contact roll on a plane (``rolls_on: {plane: …}``)?"""
+    surface = spec.get("rolls_on") if isinstance(spec, Map) else None
+    return isinstance(surface, Map) and len(surface.entries) == 1 and surface.entries[0][0].text == "plane"
+
+
+def _unit_z(where) -> ex.Expr:
+    return ex.Expr(ex.Vec(tuple(ex.Num(Fraction(v)) for v in (0, 0, 1))), ex.Kind.VECTOR, "z", where.loc)
 
 
 def _unit_x(where) -> ex.Expr:

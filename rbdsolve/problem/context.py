@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import keyword
 import re
+from dataclasses import replace
 from fractions import Fraction
 
 from rbdsolve.errors import InputError, did_you_mean
@@ -136,6 +137,12 @@ class Reading:
         refused += [(n, why_position) for n in sorted(positions)]
         self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates,
                               tuple(refused), max_order=1)
+
+    def add_positions(self, names: frozenset[str]) -> None:
+        """Points the model derives, named after their declaration (a contact on a plane,
+        C): the questions may take moments about them."""
+        self.positions = replace(self.positions, vectors=self.positions.vectors | names)
+        self.scope = replace(self.scope, vectors=self.scope.vectors | names)
 
     def point_names(self, expr: ex.Expr) -> set[str]:
         """Every name an expression uses, through the points it names."""

@@ -21,6 +21,7 @@ from rbdsolve.problem.schema import (
     Problem,
     Question,
     Spring,
+    SurfaceKind,
     ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
@@ -103,6 +104,7 @@ class _Loader:
         frames = self.frames(get("frames"))
         bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
         contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
+        self.reading.add_positions(frozenset(c.name for c in contacts if c.surface.kind is SurfaceKind.PLANE))
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
         known = _known_dimensions(parameters, bodies, springs, gravity, points)
         values, ranges = self.values(get("values"), parameters, known)

@@ -29,7 +29,9 @@ from rbdsolve.problem.schema import (
     Reaction,
     SteadyMotionOptions,
     SteadySpinOptions,
+    SurfaceKind,
 )
+from rbdsolve.problem.contacts import NOT_INTEGRABLE
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
@@ -45,6 +47,14 @@ OPTIONS = {
     QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
     QuestionKind.ENERGY: ("from_rest", "at", "to", "points"),
 }
+
+# the questions that need independent coordinates: a contact on a plane eliminates none
+NEED_INDEPENDENT_COORDINATES = (QuestionKind.EOM, QuestionKind.EQUILIBRIA, QuestionKind.MODES, QuestionKind.REACTIONS)
+
+
+def _point(contact: Contact) -> ex.Expr:
+    """A contact's point C as a point expression (the model derives its position)."""
+    return ex.Expr(ex.Name(contact.name), ex.Kind.VECTOR, contact.name, contact.loc)
 
 
 class QuestionReader:
@@ -75,6 +85,8 @@ class QuestionReader:
             raise InputError(f"'{kind.value}' needs generalized coordinates: add 'coordinates:'", key.loc)
         if kind.needs_positions:
             self.require_positions(kind, key)
+        if kind in NEED_INDEPENDENT_COORDINATES:
+            self.refuse_plane_rolling(kind, key)
         opts = None
         if options is not None and not (isinstance(options, Scalar) and options.null):
             if not OPTIONS[kind]:
@@ -183,15 +195,27 @@ class QuestionReader:
                 raise InputError(f"no triad '{triad}'{hint}", triad_node.loc)
         if get("about") is None:
             raise InputError("'steady_motion' needs 'about: POINT', the point for angular momentum", key.loc)
+        body = self.body(opts, key, QuestionKind.STEADY_MOTION)
         contacts = self.point_list(get("rolling_at"))
+        contacts += tuple(_point(c) for c in self.contacts if c.surface.kind is SurfaceKind.PLANE
+                          and c.body == body and c.name not in {p.text for p in contacts})
         reactions = self.reactions(get("reactions"))
         targets = self.constants(get("solve_for"), "what to solve for")
-        body = self.body(opts, key, QuestionKind.STEADY_MOTION)
         if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
         where = get("reactions").loc if get("reactions") is not None else None
         return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where)
+
+    def refuse_plane_rolling(self, kind: QuestionKind, key: Scalar) -> None:
+        """eom, equilibria, modes and reactions need independent coordinates: a contact
+        rolling on a plane in 3D gives a relation between the rates that eliminates none."""
+        for c in self.contacts:
+            if c.surface.kind is SurfaceKind.PLANE:
+                raise InputError(f"'{kind.value}' cannot take contact '{c.name}' (line {c.loc.line}): "
+                                 f"{NOT_INTEGRABLE}, and '{kind.value}' needs independent coordinates (Lagrange's "
+                                 "equations with constraint multipliers are not supported yet); a steady motion "
+                                 "takes it ('steady_motion' keeps it as a constraint)", key.loc)
 
     def point_list(self, node: Node | None) -> tuple[ex.Expr, ...]:
         """One point, or a list of points (a cone rolls at its tip and at its rim)."""

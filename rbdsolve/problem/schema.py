@@ -229,6 +229,7 @@ class SurfaceKind(Enum):
     LINE = "line"  # a straight line (a floor, an incline, a string)
     CIRCLE = "circle"  # a circle (a drum, a track, a bowl in its plane)
     BODY = "body"  # an edge of another body, moving with it (a turning disk, a sliding plank)
+    PLANE = "plane"  # a fixed plane in 3D (a table): rolling there is not integrable, kept as a constraint
 
 
 @dataclass(frozen=True)
@@ -238,11 +239,12 @@ class Surface:
     A line passes through ``point`` along ``direction`` (a vector) and the body lies on
     its left (``flip``: on its right); a circle has its centre at ``point`` and the body
     rolls on its ``inside`` or outside. A body's edge (kind BODY) names the body and the
-    edge; it moves and turns with that body."""
+    edge; it moves and turns with that body. A plane (kind PLANE, in 3D) has the
+    normal ``direction`` towards the body and passes through ``point`` (None: not said)."""
 
     kind: SurfaceKind
-    point: Expr | None  # None: a body's edge
-    direction: Expr | None  # line
+    point: Expr | None  # None: a body's edge, or a plane through no stated point
+    direction: Expr | None  # line; a plane's normal
     radius: Expr | None  # circle
     inside: bool  # circle: inside; line: the body on the right of ``direction``
     loc: Location

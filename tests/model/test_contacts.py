@@ -104,3 +104,69 @@ questions: [modes]
     omega2 = (K / M).xreplace(dict(model.values))
     expected = g * ybar / (k_G2 + (1 - ybar) ** 2)
     assert abs(sp.N((omega2 - expected).subs(g, 1), 30)) < 1e-25
+
+
+def test_rolling_inside_a_circle_assumes_the_circle_is_the_larger() -> None:
+    """A ball in a bowl with no 'assumptions:': the contact adds R > r (strict), shown as
+    a step, so the stability of θ = 0 (K = m g (R − r), by hand) is decided without a
+    case r > R; a file assuming R > r itself gets no second copy."""
+    from rbdsolve.solvers.shared.signs import sign_of
+    from rbdsolve.solvers.shared.summary import rolling_steps
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "ball-in-bowl.yaml"))
+    R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]
+    (implied,) = model.assumptions
+    assert implied.strict and sp.expand(implied.difference - (R - r)) == 0
+    assert "contact 'C'" in implied.implied_by
+    assert sign_of(R - r, model.assumed) == 1
+    assert any("R > r" in step.text for step in rolling_steps(model))
+    stated = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
+    assert len(stated.assumptions) == 1 and not stated.assumptions[0].implied_by
+
+
+def test_values_set_inside_out_break_the_implied_assumption() -> None:
+    """--set r=2 R=1 on the ball in the bowl: refused at the contact, naming it."""
+    from rbdsolve.errors import InputError
+
+    model = build_model(load_file(PROBLEMS / "contacts" / "ball-in-bowl.yaml"))
+    with pytest.raises(InputError, match=r"break the assumption 'R > r' \(implied by contact 'C'"):
+        model.with_values({"r": 2, "R": 1})
+
+
+SPOOL = """
+parameters: {m: mass, R: radius, b: radius, g: gravity}
+coordinates: [y]
+gravity: [0, -g]
+points: {A: [0, 0]}
+bodies:
+  spool: {shape: disk, mass: m, radius: R}
+contacts:
+  S: {body: spool, string: {fixed_at: A, direction: [0, -1], radius: b}, along: y}
+questions: [eom]
+"""
+
+
+def test_a_string_wound_on_an_axle_assumes_it_inside_the_rim_and_falls_at_the_hand_rate() -> None:
+    """Maxwell's wheel: a disk of radius R unwinding from a string wound at radius b.
+    By hand, b ω = −ẏ, T = ½ m ẏ² + ½ (m R²/2) ẏ²/b², V = −m g y, so
+    ÿ = g/(1 + R²/(2 b²)). The string lies on the disk: R ≥ b, assumed (not strict)."""
+    from rbdsolve.model.energy import kinetic_energy, potential_energy
+
+    model = build_model(load_text(SPOOL, "spool.yaml"))
+    p = model.symbols.parameters
+    (wound,) = model.assumptions
+    assert not wound.strict and sp.expand(wound.difference - (p["R"] - p["b"])) == 0 and "'S'" in wound.implied_by
+    y, yd = model.q[0], model.qd[0]
+    T, V = kinetic_energy(model).total, potential_energy(model).total
+    M, force = sp.diff(T, yd, 2), -sp.diff(V, y)
+    assert sp.simplify(force / M - p["g"] / (1 + p["R"] ** 2 / (2 * p["b"] ** 2))) == 0
+
+
+def test_a_string_wound_outside_the_rim_is_refused_at_its_radius() -> None:
+    from rbdsolve.errors import InputError
+
+    with pytest.raises(InputError, match="outside the rim of 'spool'") as caught:
+        build_model(load_text(SPOOL.replace("radius: b}", "radius: 2*R}"), "spool.yaml"))
+    assert (caught.value.location.line, caught.value.location.column) == (9, 70)  # at 2*R
+    with pytest.raises(InputError, match=r"break the assumption 'R ≥ b' \(implied by contact 'S'"):
+        build_model(load_text(SPOOL.replace("questions", "values: {R: 1, b: 2}\nquestions"), "spool.yaml"))

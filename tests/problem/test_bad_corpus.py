@@ -32,7 +32,7 @@ FILES = sorted(BAD.glob("*.yaml"))
 ALGEBRA_ONLY = ("is not a real number", "must not be zero or negative", "break the assumption",
                 "cannot hold with the others", "does not touch", "cannot roll inside", "does not roll",
                 "does not pass through the pulley", "does not move", "which also moves",
-                "a line out of the xy-plane", "not in the plane of the scene")
+                "a line out of the xy-plane", "not in the plane of the scene", "lies flat on the plane")
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.energy import body_kinetic_energy, tidy_quadratic
+from rbdsolve.model.plane_rolling import material_velocity, tangents
 from rbdsolve.model.state import t
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.impact import restitution_message
@@ -63,6 +64,12 @@ class Instant:
     T: sp.Expr  # ½ q̇ᵀ M q̇ + … at the instant
 
     def velocity(self, point: str) -> sp.Matrix:
+        """A point's velocity at the instant; at a contact on a plane, the body's material
+        point there (model/plane_rolling.py)."""
+        contact = next((c for c in self.model.plane_contacts if c.name == point), None)
+        if contact is not None:
+            body = next(b for b in self.model.bodies if b.name == contact.body)
+            return material_velocity(contact, body, self.model.state).xreplace(self.at)
         return self.model.point_velocity(point).xreplace(self.at)
 
     def body_velocity(self, body: RigidBody) -> sp.Matrix:
@@ -110,7 +117,27 @@ def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
         else:
             size = sp.Dummy(f"lamda_{c.point}")
             out.append(Blow(c.point, size * normal, size, normal, c))
-    return out
+    return out + [_rolling(c) for c in model.plane_contacts]
+
+
+def _rolling(contact) -> Blow:
+    """A body rolling on a plane keeps rolling through the impact (a rough plane, no
+    slip): the plane's impulse at C along it, F₁ t₁ + F₂ t₂, is unknown, and C's material
+    point is at rest just after along the plane. The push along n does no work on the
+    coordinates (they keep the body on the plane: v_C·n = 0), so it is not an unknown."""
+    t1, t2 = tangents(contact.normal)
+    components = (sp.Dummy(f"F1_{contact.name}"), sp.Dummy(f"F2_{contact.name}"))
+    return Blow(contact.name, components[0] * t1 + components[1] * t2, None, contact.normal, None, components)
+
+
+def _on_the_plane(blow: Blow, velocity: sp.Matrix) -> None:
+    """The coordinates must keep a rolling body on its plane, v_C·n = 0 for any rates:
+    then the plane's push does no work and only the impulse along it is unknown."""
+    normal = tidy(velocity.dot(blow.normal))
+    if normal != 0:
+        raise UnsolvedError(f"at the contact {blow.point} the body's point moves off the plane (v·n = "
+                            f"{to_unicode(normal)}): a contact on a plane needs coordinates that keep the body on "
+                            "it (its height given by its turns, as in 'at: [x, y, r]' for a ball)")
 
 
 def _nonzero(vector: sp.Matrix, collision: Collision) -> sp.Matrix:
@@ -190,7 +217,11 @@ class ImpactEquations:
         moves with the point just after (the particle's own momentum balance is in u_f)."""
         out = []
         for blow in self.hits:
-            if blow.components:
+            if blow.components and blow.collision is None:  # rolling on a plane: at rest along it
+                _on_the_plane(blow, self.now.velocity(blow.point))
+                v = self.now.velocity(blow.point).xreplace(self.after)
+                out += [v.dot(t) for t in tangents(blow.normal)]
+            elif blow.components:
                 v = self.now.velocity(blow.point).xreplace(self.after)
                 out += list(v - self.other_velocity(blow, final=True))
         return out
@@ -237,7 +268,8 @@ class ImpactEquations:
         centre, why = self.centre_of_percussion(support)
         contacts = {b.point: tidy_fraction(sol[b.size] * sp.sqrt(tidy_fraction(b.normal.dot(b.normal))))
                     for b in self.hits if b.size is not None}
-        sticking = {b.point: tuple(tidy_fraction(sol[x]) for x in b.components) for b in self.hits if b.components}
+        sticking = {b.point: tuple(tidy_fraction(x) for x in b.impulse.xreplace(sol)) for b in self.hits
+                    if b.components}
         notes += [f"the impulse at {p} comes out pulling ({to_unicode(v)} < 0): with several contacts at once "
                   "Newton's law can fail, and this contact probably separates" for p, v in contacts.items()
                   if v.is_negative or (_known_value(v, model) or 0) < 0]

@@ -74,17 +74,25 @@ def equation_steps(work: ImpactEquations) -> list[Step]:
     if restitution.math:
         out.append(restitution)
     if work.sticking_equations():
-        out.append(_sticking(work, show))
+        out += _sticking(work, show)
     return out
 
 
-def _sticking(work: ImpactEquations, show: _Show) -> Step:
-    """v_P|f = u|f = u|i − P/μ for each particle that embeds."""
+def _sticking(work: ImpactEquations, show: _Show) -> list[Step]:
+    """v_P|f = u|f = u|i − P/μ for each particle that embeds; v_C|f·t = 0 along the
+    plane for each body that rolls on one."""
     rows = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)),
                      show.vector(work.other_velocity(b, final=True)))
-            for b in work.hits if b.components]
-    return st.equation("A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/μ "
-                       "(P: its impulse on the system, every component unknown):", *rows)
+            for b in work.hits if b.components and b.collision is not None]
+    rolling = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)), sp.Integer(0))
+               for b in work.hits if b.components and b.collision is None]
+    out = [st.equation("A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/μ "
+                       "(P: its impulse on the system, every component unknown):", *rows)] if rows else []
+    if rolling:
+        out.append(st.equation("Rolling without slipping on the plane goes on: the body's point at the contact "
+                               "is at rest just after, v_C|f = 0 (the plane's impulse along it, F₁ t₁ + F₂ t₂, "
+                               "unknown; its push along n does no work on the coordinates):", *rolling))
+    return out
 
 
 def unknown_name(work: ImpactEquations, unknown: sp.Symbol) -> sp.Expr:
@@ -163,7 +171,11 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
         out.append(st.result(f"Velocities just after the impact{particles}:", *rows))
     out.append(_energy_step(work, show, answers))
     if answers.sticking_impulses:
-        out.append(st.result("The impulse of each sticking particle on the system:",
+        kinds = {b.collision is None for b in work.hits if b.components}
+        whose = " and ".join(text for rolls, text in ((False, "of each sticking particle on the system"),
+                                                      (True, "of the plane, along it, at each rolling contact"))
+                             if rolls in kinds)
+        out.append(st.result(f"The impulse {whose}:",
                              *[Relation(sp.Symbol(f"P_{p}"), show.vector(sp.Matrix(v)))
                                for p, v in answers.sticking_impulses.items()]))
     if answers.restitution:

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import scaled_matrix
+from rbdsolve.form.arrange import descending, scaled_matrix
+from rbdsolve.form.display import Label, Relation, Scaled, Terms
 from rbdsolve.form.factor import factored
-from rbdsolve.form.display import Label, Product, Relation, Scaled, Terms
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
@@ -70,8 +70,7 @@ def _unit_display(direction: sp.Matrix):
 
 
 def _cubic(poly: sp.Poly):
-    kappa = sp.Symbol("kappa")
-    return Terms(tuple(Product(c, (kappa**k,) if k else ()) for (k,), c in poly.terms()))
+    return descending(poly, sp.Symbol("kappa"))
 
 
 def scene_axes_step(J_G: sp.Matrix, symbols: set) -> st.Step:

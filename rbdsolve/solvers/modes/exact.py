@@ -43,7 +43,8 @@ from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relation
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
-from rbdsolve.solvers.modes.steps import descending, exact_steps
+from rbdsolve.form.arrange import descending
+from rbdsolve.solvers.modes.steps import exact_steps
 from rbdsolve.solvers.shared.conditions import changes, critical_values, exists_when, existing, partition, what_decides
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options

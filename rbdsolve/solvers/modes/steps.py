@@ -9,19 +9,13 @@ import math
 import sympy as sp
 
 from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
-from rbdsolve.form.display import Product, Relation, Terms
-from rbdsolve.form.factor import factored, no_longer
+from rbdsolve.form.display import Relation
+from rbdsolve.form.factor import no_longer
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
-
-
-def descending(poly: sp.Poly) -> Terms:
-    """25/48 μ² − 37/24 μ + 1: highest power first, as an exam solution writes it."""
-    x = poly.gens[0]
-    return Terms(tuple(Product(factored(c), (x**k,) if k else ()) for (k,), c in poly.terms()))
 
 
 def _repeated_notes(eigenvalues: tuple[sp.Expr, ...]) -> list[st.Step]:

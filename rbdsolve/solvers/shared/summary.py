@@ -59,6 +59,7 @@ def rolling_steps(model: Model) -> list[st.Step]:
                                    f"inextensible, so the hanging part lengthens as fast as the string leaves "
                                    f"{source.pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
                                    Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
+            out += _implied_notes(c)
             continue
         surface = source.surface
         on = ("its string" if source.string else f"{surface.body}'s {surface.edge}" if surface.body
@@ -68,7 +69,15 @@ def rolling_steps(model: Model) -> list[st.Step]:
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
                                Relation(c.lhs, c.rhs),
                                Relation(c.dependent, c.integrated, lead="⇒")))
+        out += _implied_notes(c)
     return out
+
+
+def _implied_notes(c) -> list[st.Step]:
+    """What the contact's geometry needs of the parameters (R > r inside a circle), as
+    the model assumes it (model/contacts.py)."""
+    return [st.note(f"{a.implied_by[0].upper()}{a.implied_by[1:]}, so {a.source.text} (assumed in what follows)")
+            for a in c.requires]
 
 
 @dataclass(frozen=True)

@@ -61,7 +61,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     k, vectors = setup(opts, model)
     omega, v_G = k.omega(), k.velocity(k.body.position)
     steps = [kinematics_step(vectors, k.Omega, omega, v_G)]
-    rates, rolling_steps = _rolling(opts, model, rolling_velocities(opts, model, k, omega, v_G), omega, vectors)
+    rates, rolling_steps = _rolling(opts, model, k, rolling_velocities(opts, model, k, omega, v_G), omega, vectors)
     steps += rolling_steps
     b = balances(opts, model, k, rates, omega, v_G)
     targets = tuple(model.symbols.scalar(x) for x in opts.solve_for)
@@ -96,17 +96,20 @@ def _reactions(opts: SteadyMotionOptions, k, names, targets, solved: dict, along
     return {at: SupportForce(tuple(tidy(x) for x in f)) for at, f in out.items()}
 
 
-def _rolling(opts: SteadyMotionOptions, model: Model, v_C: list[sp.Matrix], omega, vectors):
+def _rolling(opts: SteadyMotionOptions, model: Model, k, v_C: list[sp.Matrix], omega, vectors):
     """v_C = v_G + ω × (r_C − r_G) = 0 at the contact, solved for the unknown rates."""
     if not opts.contacts:
         return {}, []
+    named = {C.text for C in opts.contacts}
+    derived = [(c.name, k.components(c.point - k.body.position).applyfunc(tidy))
+               for c in model.plane_contacts if c.name in named]
     unknowns = [model.symbols.parameters[u] for u in model.problem.unknowns]
     equations = [x for v in v_C for x in v if x != 0]
     found = sp.solve(equations, unknowns, dict=True) if equations else [{}]
     if len(found) != 1:
         raise UnsolvedError("the rolling condition does not fix the unknown rates")
     rates = {a: tidy(b) for a, b in found[0].items()}
-    return rates, rolling_steps(opts, v_C, rates, omega.xreplace(rates).applyfunc(tidy), vectors)
+    return rates, rolling_steps(opts, v_C, rates, omega.xreplace(rates).applyfunc(tidy), vectors, derived)
 
 
 def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,

@@ -111,10 +111,21 @@ def kinematics_step(vectors, Omega_T, omega, v_G) -> st.Step:
                          Relation(sp.Symbol("v_G"), show(v_G, vectors)))
 
 
-def rolling_steps(opts: SteadyMotionOptions, v_C, rates: dict, omega, vectors) -> list[st.Step]:
-    """v_G + ω × (r_C − r_G) = 0 at each contact, the rates it gives, and ω with them."""
+def contact_point_step(name: str, offset, vectors) -> st.Step:
+    """C on the plane: a sphere's point along −n, a rim's point nearest the plane
+    (model/plane_rolling.py), shown in the triad."""
+    return st.definition(f"The contact point {name} is where the body touches the plane: for a rim of radius ρ "
+                         "and axis a on a plane of normal n, its point nearest the plane, r_C − r_G = "
+                         "−ρ (n − (n·a) a)/|n − (n·a) a| (a sphere: −ρ n):",
+                         Relation(sp.Symbol(f"r_{name}") - sp.Symbol("r_G"), show(offset, vectors)))
+
+
+def rolling_steps(opts: SteadyMotionOptions, v_C, rates: dict, omega, vectors, derived=()) -> list[st.Step]:
+    """Where each contact on a plane touches (``derived``: (C, r_C − r_G)), then
+    v_G + ω × (r_C − r_G) = 0 at each contact, the rates it gives, and ω with them."""
     where = " and ".join(C.text for C in opts.contacts)
-    steps = [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
+    steps = [contact_point_step(name, offset, vectors) for name, offset in derived]
+    steps += [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
                          "v_G + ω × (r_C − r_G) = 0:", *[Relation(show(v, vectors), sp.Integer(0)) for v in v_C])]
     if rates:
         steps.append(st.result("which gives", *[Relation(a, b) for a, b in rates.items()]))

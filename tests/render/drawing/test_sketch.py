@@ -155,3 +155,27 @@ def test_a_string_over_a_pulley_is_drawn_to_the_pulley_and_down_to_the_block() -
     floor, straight, hanging = drawing.grounds
     assert straight.string and close(straight.start, (3.0, 1.0)) and close(straight.end, (1.0, 1.0))
     assert hanging.string and close(hanging.start, (3.0, 1.0)) and close(hanging.end, (3.0, -4.0))
+
+
+def test_an_incline_and_a_drum_are_drawn_where_the_body_touches_them() -> None:
+    # the wheel at x = 1 on the incline at α = 1/2 down to the right (r = 1 drawn as 1):
+    # C = x (cos α, −sin α), the line along (cos α, −sin α), the wheel on its upper side,
+    # normal (sin α, cos α), and the wheel's centre r along it from C
+    a = 0.5
+    drawing = sketch(model_of(PROBLEMS / "contacts" / "wheel-on-incline.yaml"), {"x": 1.0})
+    (incline,) = drawing.grounds
+    C = (math.cos(a), -math.sin(a))
+    assert close({p.name: p.at for p in drawing.points}["C"], C)
+    direction = (incline.end[0] - incline.start[0], incline.end[1] - incline.start[1])
+    assert abs(direction[0] * math.sin(a) + direction[1] * math.cos(a)) < 1e-12  # along the incline
+    assert close(incline.normal, (math.sin(a), math.cos(a)))
+    wheel = next(s for s in drawing.shapes if isinstance(s, Circle))
+    assert close(wheel.centre, (C[0] + math.sin(a), C[1] + math.cos(a)))
+    # the ring off the top of a drum at θ = 0.4 (R = r = 1 drawn): the drum whole, outside;
+    # C = R (−sin θ, cos θ) on it, the ring's centre (R + r)(−sin θ, cos θ)
+    drawing = sketch(model_of(PROBLEMS / "contacts" / "ring-on-drum.yaml"), {"theta": 0.4})
+    (drum,) = drawing.grounds
+    assert drum.centre == (0.0, 0.0) and drum.radius == 1.0 and not drum.inside
+    assert close({p.name: p.at for p in drawing.points}["C"], (-math.sin(0.4), math.cos(0.4)))
+    ring = next(s for s in drawing.shapes if isinstance(s, Circle))
+    assert close(ring.centre, (-2 * math.sin(0.4), 2 * math.cos(0.4)))
