@@ -1,7 +1,9 @@
-"""LaTeX to PDF with the machine's own TeX engine (pdflatex first): nothing is fetched.
+"""LaTeX to PDF with the machine's own TeX engine (pdflatex first): nothing is fetched
+by rbdsolve.
 
 The document's text is escaped by render.latex, and the engine runs with shell escape
-off, so a problem file cannot make TeX run a command.
+off (``-no-shell-escape``; tectonic's ``--untrusted``), so a problem file cannot make
+TeX run a command.
 """
 
 from __future__ import annotations
@@ -13,37 +15,55 @@ from pathlib import Path
 
 from rbdsolve.errors import InputError, InternalError
 
-ENGINES = ("pdflatex", "lualatex", "xelatex")
+ENGINES = ("pdflatex", "lualatex", "xelatex", "tectonic")
+ENVIRONMENT = "RBDSOLVE_LATEX"  # a program name or path: the engine to use instead
 SECONDS = 300  # a whole exam's key compiles in seconds; minutes means TeX is stuck
 
 
 def engine() -> str | None:
     """The TeX engine to use: $RBDSOLVE_LATEX, else the first of ENGINES on PATH."""
-    chosen = os.environ.get("RBDSOLVE_LATEX")
+    chosen = os.environ.get(ENVIRONMENT)
     if chosen:
         return shutil.which(chosen)
     return next((found for name in ENGINES if (found := shutil.which(name))), None)
 
 
+def command(program: str, name: str) -> tuple[list[str], int]:
+    """The engine's command line for ``name.tex`` and how many times to run it: a
+    LaTeX engine twice (the second run settles page breaks around the pictures);
+    tectonic once (it reruns itself until the document settles), its log kept."""
+    if Path(program).name.lower().startswith("tectonic"):
+        return [program, "--untrusted", "--keep-logs", f"{name}.tex"], 1
+    return [program, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", f"{name}.tex"], 2
+
+
 def compile_pdf(tex: str, folder: Path, name: str = "key") -> Path:
-    """Write ``name.tex`` in ``folder`` (where its pictures are), compile it twice
-    (the second run settles page breaks around the pictures) and return the PDF."""
+    """Write ``name.tex`` in ``folder`` (where its pictures are), compile it and return
+    the PDF."""
     program = engine()
     if program is None:
-        raise InputError("a PDF needs a LaTeX engine (pdflatex, lualatex or xelatex) and none is "
-                         "installed; install TeX Live (Debian/Ubuntu: apt install texlive-latex-recommended) "
-                         "or write the key as .tex, .md or .html")
+        raise InputError(_no_engine())
     (folder / f"{name}.tex").write_text(tex, encoding="utf-8")
-    command = [program, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", f"{name}.tex"]
-    for _ in range(2):
+    line, runs = command(program, name)
+    for _ in range(runs):
         try:
-            done = subprocess.run(command, cwd=folder, capture_output=True, timeout=SECONDS,
+            done = subprocess.run(line, cwd=folder, capture_output=True, timeout=SECONDS,
                                   stdin=subprocess.DEVNULL)
         except subprocess.TimeoutExpired:
             raise InternalError(f"{Path(program).name} did not finish in {SECONDS} s") from None
         if done.returncode != 0:
             raise InternalError(f"{Path(program).name} could not compile the key: {_first_error(folder / f'{name}.log')}")
     return folder / f"{name}.pdf"
+
+
+def _no_engine() -> str:
+    chosen = os.environ.get(ENVIRONMENT)
+    if chosen:
+        return (f"a PDF needs a LaTeX engine, and {ENVIRONMENT}={chosen} names none on PATH; "
+                f"unset it to use the first of {', '.join(ENGINES)} found, or write the key as .tex, .md or .html")
+    return (f"a PDF needs a LaTeX engine ({', '.join(ENGINES[:-1])} or {ENGINES[-1]}) and none is "
+            "installed; install TeX Live (Debian/Ubuntu: apt install texlive-latex-recommended) "
+            "or write the key as .tex, .md or .html")
 
 
 def _first_error(log: Path) -> str:
