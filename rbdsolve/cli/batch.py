@@ -11,7 +11,7 @@ import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Callable, Iterable
+from typing import TYPE_CHECKING, Iterable
 
 from rbdsolve.cli.app import Source, check_sets, describe, internal_message
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, printable
@@ -87,32 +87,46 @@ def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:
 def solve_all(items: list[Source], settings: Settings, jobs: int = 1,
               progress: bool = False) -> list[Outcome]:
     """Every source's Outcome, in the sources' order, ``jobs`` at a time."""
-    with _bar(len(items), progress) as advance:
+    with _bar(len(items), progress) as bar:
         if jobs <= 1 or len(items) <= 1:
-            return [_advanced(solve_source(s, settings), advance) for s in items]
-        return _in_parallel(items, settings, min(jobs, len(items)), advance)
+            return [_one(s, settings, bar) for s in items]
+        return _in_parallel(items, settings, min(jobs, len(items)), bar)
 
 
-def _in_parallel(items: list[Source], settings: Settings, jobs: int,
-                 advance: Callable[[Outcome], None]) -> list[Outcome]:
+def _in_parallel(items: list[Source], settings: Settings, jobs: int, bar: _Shown) -> list[Outcome]:
     outcomes: list[Outcome | None] = [None] * len(items)
     lost: list[int] = []  # files whose worker died (with the pool, every file it still had)
     pool = ProcessPoolExecutor(max_workers=jobs, initializer=_quiet_worker)
     try:
         futures = {pool.submit(_solve_pickled, s, settings): i for i, s in enumerate(items)}
+        bar.solving(_under_way(items, outcomes, lost, jobs))
         for future in as_completed(futures):
             i = futures[future]
             try:
-                outcomes[i] = _advanced(pickle.loads(future.result()), advance)
+                outcomes[i] = bar.done(pickle.loads(future.result()))
             except BrokenProcessPool:
                 lost.append(i)
+            bar.solving(_under_way(items, outcomes, lost, jobs))
     except BaseException:  # Ctrl-C, SIGTERM: stop the workers now, not after their files
         _stop(pool)
         raise
     pool.shutdown()
     for i in sorted(lost):  # each alone, so that the one that kills its process is found
-        outcomes[i] = _advanced(_alone(items[i], settings), advance)
+        bar.solving([items[i].name])
+        outcomes[i] = bar.done(_alone(items[i], settings))
     return outcomes
+
+
+def _one(source: Source, settings: Settings, bar: _Shown) -> Outcome:
+    bar.solving([source.name])
+    return bar.done(solve_source(source, settings))
+
+
+def _under_way(items: list[Source], outcomes: list, lost: list[int], jobs: int) -> list[str]:
+    """The files the workers hold now: the pool hands files out in the order they
+    were submitted, so these are the first ``jobs`` not yet finished."""
+    waiting = [s.name for i, (s, o) in enumerate(zip(items, outcomes)) if o is None and i not in lost]
+    return waiting[:jobs]
 
 
 def _alone(source: Source, settings: Settings) -> Outcome:
@@ -196,20 +210,34 @@ def _user_function(name: str):
     return user_function(name)
 
 
-def _advanced(outcome: Outcome, advance: Callable[[Outcome], None]) -> Outcome:
-    advance(outcome)
-    return outcome
+class _Shown:
+    """What the bar is told: the files being solved now, and each file done."""
+
+    def __init__(self, progress=None, task=None):
+        self.progress, self.task = progress, task
+
+    def solving(self, names: list[str]) -> None:
+        if self.progress is not None:
+            from rich.markup import escape
+
+            self.progress.update(self.task, description=escape(printable(", ".join(names))))
+
+    def done(self, outcome: Outcome) -> Outcome:
+        if self.progress is not None:
+            self.progress.update(self.task, advance=1)
+        return outcome
 
 
 class _bar:
-    """A rich progress bar on standard error while files are solved, or nothing."""
+    """A rich progress bar on standard error while files are solved, naming the files
+    under way, or nothing."""
 
     def __init__(self, total: int, shown: bool):
         self.total, self.shown, self.progress = total, shown and total >= PROGRESS_FROM, None
 
-    def __enter__(self) -> Callable[[Outcome], None]:
+    def __enter__(self) -> _Shown:
         if not self.shown:
-            return lambda outcome: None
+            return _Shown()
         from rich.console import Console
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
@@ -217,10 +245,7 @@ class _bar:
                                  TimeElapsedColumn(), TextColumn("{task.description}"),
                                  console=Console(stderr=True), transient=True)
         self.progress.start()
-        task = self.progress.add_task("", total=self.total)
-        from rich.markup import escape
-
-        return lambda outcome: self.progress.update(task, advance=1, description=escape(printable(outcome.source)))
+        return _Shown(self.progress, self.progress.add_task("", total=self.total))
 
     def __exit__(self, *exc) -> None:
         if self.progress is not None:

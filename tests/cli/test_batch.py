@@ -58,7 +58,7 @@ def test_json_lines_stay_clean_and_the_summary_goes_to_stderr() -> None:
     assert result.exit_code == 2  # the worst of 0 and 2
     lines = [json.loads(x) for x in result.stdout.splitlines()]
     assert [x["file"].rsplit("/", 1)[1] for x in lines] == [PENDULUM.name, BAD.name]
-    assert lines[1]["ok"] is False and lines[1]["error"]["line"] == 10
+    assert lines[1]["ok"] is False and lines[1]["error"]["line"] == 9
     assert "Summary" in result.stderr and "bad input" in result.stderr and "solved" in result.stderr
     assert "Summary" not in result.stdout
 
@@ -81,3 +81,51 @@ def test_the_exit_code_is_the_worst_file(tmp_path) -> None:
 def test_standard_input_is_read_once() -> None:
     result = run("solve", "-", "-", input="")
     assert result.exit_code == 2 and "given more than once" in result.output
+
+
+class _Recorder:
+    """A stand-in for rich's Progress: the description and the count it was given."""
+
+    def __init__(self):
+        self.description, self.count = "", 0
+
+    def update(self, task, description=None, advance=0):
+        self.description = self.description if description is None else description
+        self.count += advance
+
+
+def test_the_progress_bar_names_the_file_being_solved(monkeypatch) -> None:
+    from rbdsolve.cli import batch
+    from rbdsolve.cli.app import Source
+
+    shown = _Recorder()
+    seen = []
+
+    class Bar:
+        def __init__(self, total, progress):
+            pass
+
+        def __enter__(self):
+            return batch._Shown(shown, 0)
+
+        def __exit__(self, *exc):
+            pass
+
+    def solve(source, settings):
+        seen.append((source.name, shown.description, shown.count))
+        return batch.Outcome(source.name, None, None, 0.0)
+
+    monkeypatch.setattr(batch, "_bar", Bar)
+    monkeypatch.setattr(batch, "solve_source", solve)
+    batch.solve_all([Source(n) for n in ("a.yaml", "b.yaml", "c[b].yaml")], batch.Settings(), progress=True)
+    assert seen == [("a.yaml", "a.yaml", 0), ("b.yaml", "b.yaml", 1), ("c[b].yaml", "c\\[b].yaml", 2)]
+    assert shown.count == 3
+
+
+def test_files_under_way_in_parallel_are_the_first_unfinished() -> None:
+    from rbdsolve.cli.app import Source
+    from rbdsolve.cli.batch import _under_way
+
+    items = [Source(n) for n in "abcde"]
+    assert _under_way(items, [1, None, None, None, None], [], 2) == ["b", "c"]
+    assert _under_way(items, [1, None, 1, None, None], [1], 2) == ["d", "e"]
