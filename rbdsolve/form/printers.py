@@ -8,6 +8,8 @@ Display values (:class:`Scaled`, :class:`Terms`, matrices) are laid out here too
 from __future__ import annotations
 
 import re
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -27,6 +29,50 @@ GREEK = {
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 _SUP = str.maketrans("0123456789+-=()n", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿ")
 _SUBSCRIPTABLE = set("0123456789+-=()aehijklmnoprstuvx")
+
+
+DIGITS = 6  # significant digits of a number in text, unless --digits says otherwise
+_DIGITS: ContextVar[int] = ContextVar("digits", default=DIGITS)
+NOISE = 64 * 2.0**-52  # relative size below which a float is not told from 0 in binary64
+
+
+@contextmanager
+def significant_digits(digits: int):
+    """Numbers printed to ``digits`` significant digits inside the block (every text
+    renderer; JSON answers keep full precision, they are not printed here)."""
+    token = _DIGITS.set(digits)
+    try:
+        yield
+    finally:
+        _DIGITS.reset(token)
+
+
+def digits() -> int:
+    return _DIGITS.get()
+
+
+def float_text(x: float) -> str:
+    """x to the current significant digits, as text: 9.8176, 2.5e-7, −0.5 (an exponent
+    without its padding zero: e-7, not e-07)."""
+    text = f"{x:.{digits()}g}"
+    mantissa, e, exponent = text.partition("e")
+    if e:
+        text = f"{mantissa}e{int(exponent)}"
+    return "−" + text[1:] if text.startswith("-") else text
+
+
+def within_rounding(values) -> set[int]:
+    """The positions of the floats among ``values`` that are zero within rounding:
+    smaller than NOISE times the largest (−3.08e-32 beside 1.5 is the residue of a
+    cancellation, not a value)."""
+    sizes = [abs(float(v)) if isinstance(v, sp.Float) else None for v in values]
+    scale = max((x for x in sizes if x is not None), default=0.0)
+    return {i for i, x in enumerate(sizes) if x is not None and x != 0 and x <= NOISE * scale}
+
+
+def _zeroed(values) -> list:
+    small = within_rounding(values)
+    return [sp.Integer(0) if i in small else v for i, v in enumerate(values)]
 
 
 def split_name(name: str) -> tuple[str, str]:
@@ -75,6 +121,14 @@ def _derivative(expr: sp.Derivative) -> tuple[str, int] | None:
     return name, expr.variable_count[0][1]
 
 
+def without_noise(terms: list) -> list:
+    """A sum's terms without those whose number is zero within rounding beside the
+    others' (1.5 θ̈ − 3.08e-32 θ̇ is 1.5 θ̈): only floats are judged, never exact terms."""
+    coefficients = [t.as_coeff_Mul()[0] for t in terms]
+    small = within_rounding(coefficients)
+    return [t for i, t in enumerate(terms) if i not in small] if small and len(small) < len(terms) else terms
+
+
 def positive_first(terms: list) -> list:
     """A sum's terms with a positive one first where the first is negative: g − R Ω²
     for −R Ω² + g, 9π − 16 for −16 + 9π, as an exam writes a difference."""
@@ -89,7 +143,7 @@ class UnicodePrinter(StrPrinter):
     """One-line unicode math: 7/8 m r² θ̇², √3 r, cos(φ − θ)."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(list(super()._as_ordered_terms(expr, order)))
+        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Symbol(self, expr):
         return unicode_name(expr.name)
@@ -155,12 +209,19 @@ class UnicodePrinter(StrPrinter):
     def _print_Rational(self, expr):
         return f"{expr.p}/{expr.q}"
 
+    def _print_Float(self, expr):
+        text = float_text(float(expr))
+        return "-" + text[1:] if text.startswith("−") else text  # made − with the rest (_tidy_unicode)
+
     def _print_ImmutableDenseMatrix(self, expr):
         if expr.shape == (1, 1):
             return self._print(expr[0, 0])
+        entries = _zeroed(list(expr))
         if 1 in expr.shape:  # a vector
-            return "(" + ", ".join(self._print(x) for x in expr) + ")"
-        rows = ["[" + ", ".join(self._print(x) for x in row) + "]" for row in expr.tolist()]
+            return "(" + ", ".join(self._print(x) for x in entries) + ")"
+        cols = expr.shape[1]
+        rows = ["[" + ", ".join(self._print(x) for x in entries[r * cols:(r + 1) * cols]) + "]"
+                for r in range(expr.shape[0])]
         return "[" + ", ".join(rows) + "]"
 
     _print_MutableDenseMatrix = _print_ImmutableDenseMatrix
@@ -213,7 +274,7 @@ class TexPrinter(LatexPrinter):
     """LaTeX with \\dot{\\theta}, rational coefficients in front, \\varphi."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(list(super()._as_ordered_terms(expr, order)))
+        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Pow(self, expr):
         base, exp = expr.as_base_exp()
@@ -223,6 +284,10 @@ class TexPrinter(LatexPrinter):
 
     def _print_Symbol(self, expr, style="plain"):
         return latex_name(expr.name)
+
+    def _print_Float(self, expr):
+        mantissa, _, exponent = float_text(float(expr)).replace("−", "-", 1).partition("e")
+        return f"{mantissa} \\cdot 10^{{{exponent}}}" if exponent else mantissa
 
     def _print_Function(self, expr, exp=None):
         name = _coordinate_name(expr)
@@ -337,9 +402,10 @@ def to_latex(value: Math) -> str:
     if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
         return to_latex(value[0, 0])
     if isinstance(value, sp.MatrixBase) and 1 in value.shape:
-        items = " \\\\ ".join(_TEX.doprint(x) for x in value)
+        items = " \\\\ ".join(_TEX.doprint(x) for x in _zeroed(list(value)))
         return f"\\begin{{pmatrix}} {items} \\end{{pmatrix}}"
     if isinstance(value, sp.MatrixBase):
+        value = sp.Matrix(value.shape[0], value.shape[1], _zeroed(list(value)))
         rows = " \\\\ ".join(" & ".join(_TEX.doprint(x) for x in row) for row in value.tolist())
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
     return _TEX.doprint(value)

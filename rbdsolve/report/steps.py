@@ -29,9 +29,14 @@ class Route(Enum):
 
 @dataclass(frozen=True)
 class Step:
+    """``accuracy``: the step says how accurate a numeric route is (conditioning, error
+    bounds, the search's tolerances), not what the answer is: renderers show it in a
+    quieter block under the answers."""
+
     kind: StepKind
     text: str = ""
     math: tuple[Relation, ...] = ()
+    accuracy: bool = False
 
 
 def given(text: str, *math: Relation) -> Step:
@@ -56,6 +61,19 @@ def result(text: str, *math: Relation) -> Step:
 
 def note(text: str, *math: Relation) -> Step:
     return Step(StepKind.NOTE, text, math)
+
+
+def accuracy(text: str, *math: Relation) -> Step:
+    """How accurate a numeric route's answers are: said apart, under them."""
+    return Step(StepKind.NOTE, text, math, accuracy=True)
+
+
+def answer_steps(steps: tuple[Step, ...]) -> tuple[Step, ...]:
+    return tuple(s for s in steps if not s.accuracy)
+
+
+def accuracy_steps(steps: tuple[Step, ...]) -> tuple[Step, ...]:
+    return tuple(s for s in steps if s.accuracy)
 
 
 @dataclass(frozen=True)

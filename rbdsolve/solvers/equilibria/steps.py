@@ -81,9 +81,9 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> t
     names = model.coordinate_names()
     how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
            else f"Newton's method from {a.starts} {sampling}")
-    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0, found by {how}. Stability from the eigenvalues of the "
-                         f"Hessian of V; one within {CURVATURE_TOL:g} × the Hessian's scale over the search box "
-                         "counts as zero (undetermined: higher-order terms decide):")]
+    steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),
+             st.accuracy(f"Equilibria found by {how}; an eigenvalue of the Hessian within {CURVATURE_TOL:g} × its "
+                         "scale over the search box counts as zero (undetermined: higher-order terms decide).")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)
                                                         for name, v in eq.at.items()])
@@ -92,7 +92,7 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> t
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
         if eq.recognized:
-            steps.append(st.note(f"Within the error bound {eq.bound:.2g} of a simple exact value: "
+            steps.append(st.accuracy(f"Equilibrium {i} is within the error bound {eq.bound:.2g} of a simple exact value: "
                                  f"{', '.join(f'{n} = {v}' for n, v in eq.recognized.items())}."))
         if eq.equivalent:
             steps.append(st.note("The same configuration is also written",

@@ -137,7 +137,7 @@ def _conditioning_note(a: NumericModesAnswers) -> st.Step:
         if len(group) > 1:
             text += (f"; λ{'/λ'.join(map(str, group))} are equal within their bounds: one mode space, "
                      "its shapes below an M-orthogonal basis of it")
-    return st.note(text + ".")
+    return st.accuracy(text + ".")
 
 
 def _floats(rows) -> sp.ImmutableMatrix:
