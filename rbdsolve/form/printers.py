@@ -76,10 +76,22 @@ def _zeroed(values) -> list:
 
 
 def split_name(name: str) -> tuple[str, str]:
-    """'omega0' -> ('omega', '0'); 'y_A' -> ('y', 'A'); 'T_long_rod' -> ('T', 'long_rod')."""
+    """'omega0' -> ('omega', '0'); 'y_A' -> ('y', 'A'); 'T_long_rod' -> ('T', 'long_rod');
+    'theta1_f' -> ('theta', '1,f') (an indexed name, then its own subscript: θ₁,f);
+    'xB' -> ('x', 'B') (one small letter and capitals: a point's coordinate, x_B)."""
     if "_" in name.strip("_"):
         base, sub = name.split("_", 1)
-        return base, sub
+        inner, index = _indexed(base)
+        return (inner, f"{index},{sub}") if index else (base, sub)
+    inner, index = _indexed(name)
+    if index:
+        return inner, index
+    match = re.fullmatch(r"([a-z])([A-Z][A-Z0-9]*)", name)
+    return (match.group(1), match.group(2)) if match else (name, "")
+
+
+def _indexed(name: str) -> tuple[str, str]:
+    """'theta1' -> ('theta', '1'); a name without a trailing number -> (name, '')."""
     match = re.fullmatch(r"([A-Za-z]+?)(\d+)", name)
     return (match.group(1), match.group(2)) if match else (name, "")
 
@@ -89,10 +101,17 @@ def unicode_name(name: str) -> str:
     base = GREEK.get(base, base)
     if not sub:
         return base
+    head, comma, rest = sub.partition(",")
+    return base + _subscript(head) + (comma + (GREEK.get(rest, rest)) if comma else "")
+
+
+def _subscript(sub: str) -> str:
+    """₁, ₐ where every character has a subscript form (and the subscript is short or a
+    number), else _sub: y_A, T_rod."""
     sub_text = GREEK.get(sub, sub)
     if set(sub_text) <= _SUBSCRIPTABLE and (len(sub_text) <= 2 or sub_text.isdigit()):
-        return base + sub_text.translate(_SUB)
-    return f"{base}_{sub_text}"
+        return sub_text.translate(_SUB)
+    return f"_{sub_text}"
 
 
 def latex_name(name: str) -> str:

@@ -10,6 +10,7 @@ from rbdsolve.form.arrange import configuration, scaled_matrix
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 
@@ -19,6 +20,8 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
     """∂V/∂q = 0, then each equilibrium with where it exists, its stability and K;
     ``periodic``: some angle was reduced to (−π, π]."""
     symbols = set(model.symbols.parameters.values())
+    labels = labels_for(model, "stiffness_matrix")
+    K = labels.symbol("stiffness_matrix")
     equilibria = answers.equilibria
     steps = [
         st.equation(
@@ -45,8 +48,8 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
                                  "not depend on) is also written", *[configuration(coordinates, list(e.values()))
                                                                       for e in eq.equivalent]))
         steps.append(st.equation(
-            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
-            Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
+            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian {labels.text('stiffness_matrix')} = ∂²V/∂q∂q there is",
+            Relation(K, scaled_matrix(eq.hessian, symbols)),
         ))
         if eq.stability_cases:
             steps.append(st.result("Its stability, case by case:",

@@ -106,16 +106,33 @@ def _given(work: ImpactEquations, show: _Show) -> list[Step]:
 
 def _velocities(work: ImpactEquations, show: _Show) -> Step:
     model, at = work.model, work.now.at
-    rows = []
+    rows, shown = [], set()
     for body in model.bodies:
-        rows.append(Relation(sp.Symbol(f"v_{body.name}"), show.vector(body.velocity(model.state).xreplace(at))))
+        shown.add(centre_name(body, model))
+        rows.append(Relation(sp.Symbol(f"v_{centre_name(body, model)}"),
+                             show.vector(body.velocity(model.state).xreplace(at))))
         omega = body.angular_velocity(model.state).xreplace(at)
         if omega != sp.zeros(3, 1) or body.given_angular_velocity is not None:
             rows.append(Relation(sp.Symbol(f"omega_{body.name}"), show.angular(omega)))
-    for point in dict.fromkeys(b.point for b in work.hits):
+    for point in dict.fromkeys(b.point for b in work.hits if b.point not in shown):  # each point once
         rows.append(Relation(sp.Symbol(f"v_{point}"), show.vector(work.now.velocity(point))))
     return st.definition("Velocities at the instant (of each body's centre of mass, and of the struck "
                          "points), linear in the generalized velocities:", *rows)
+
+
+def centre_name(body, model) -> str:
+    """The name of the point a body's centre of mass is at (G1 for a rod placed at G1),
+    so that its velocity reads v_G1 in every step; the body's name where no point is."""
+    named = body.source.at or body.source.velocity
+    preferred = sorted(named.names()) if named is not None else []
+    given = [(model.points, body.position), (model.velocities, body.given_velocity)]
+    for points, r in given:
+        if r is None:
+            continue
+        same = [n for n, p in points.items() if p == r]
+        if same:
+            return next((n for n in preferred if n in same), same[0])
+    return body.name
 
 
 def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:

@@ -12,6 +12,7 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 
 STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
 
@@ -39,7 +40,7 @@ def _centre_steps(body: RigidBody, model: Model, symbols: set, at: dict | None =
     steps = [st.definition(
         f"{body.name} is made of {len(parts)} parts (holes count with negative mass); its mass "
         "and centre of mass from its origin:",
-        Relation(sp.Symbol("m"), tidy(body.mass)),
+        Relation(labels_for(model, "total_mass").symbol("total_mass"), tidy(body.mass)),
         Relation(sp.Symbol("r_G"), sp.ImmutableMatrix(centre.applyfunc(tidy)).T),
     )]
     for part, p in zip(parts, props):
