@@ -8,6 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import configuration, scaled_matrix
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.labels import labels_for
@@ -95,8 +96,9 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> t
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
         if eq.recognized:
-            steps.append(st.accuracy(f"Equilibrium {i} is within the error bound {eq.bound:.2g} of a simple exact value: "
-                                 f"{', '.join(f'{n} = {v}' for n, v in eq.recognized.items())}."))
+            exact = ", ".join(f"{unicode_name(n)} = {to_unicode(_shown(n, 0.0, eq.recognized))}" for n in eq.recognized)
+            steps.append(st.accuracy(f"Equilibrium {i} is within the error bound {eq.bound:.2g} of a simple exact "
+                                     f"value: {exact}."))
         if eq.equivalent:
             steps.append(st.note("The same configuration is also written",
                                  *[configuration(model.state.functions(), [sp.Float(v, 12) for v in e.values()])

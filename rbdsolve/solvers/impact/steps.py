@@ -8,6 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import configuration, in_basis, ordered_sum, scaled_sum
 from rbdsolve.form.display import Label, Math, Relation
+from rbdsolve.form.printers import float_text, to_unicode, within_rounding
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.state import t
 from rbdsolve.report import steps as st
@@ -201,8 +202,11 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
 
 def numeric_steps(work: ImpactEquations, condition: float) -> tuple[Step, ...]:
     """The impulse equations, then their solution in floats at the parameter values."""
-    values = ", ".join(f"{k} = {float(v):g}" for k, v in work.model.values.items())
-    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve, condition number "
-                       f"{condition:.3g}):",
-                       *[Relation(unknown_name(work, u), sp.Float(float(v), 15)) for u, v in work.solution.items()])
-    return (*equation_steps(work), solved)
+    values = ", ".join(f"{to_unicode(k)} = {float_text(float(v))}" for k, v in work.model.values.items())
+    found = [sp.Float(float(v), 15) for v in work.solution.values()]
+    noise = within_rounding(found)  # a component that cancelled to 1e-17 beside the others is 0
+    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve):",
+                       *[Relation(unknown_name(work, u), sp.Integer(0) if i in noise else v)
+                         for i, (u, v) in enumerate(zip(work.solution, found))])
+    return (*equation_steps(work), solved, st.accuracy(f"The condition number of the impulse equations: "
+                                                       f"{condition:.3g}."))
