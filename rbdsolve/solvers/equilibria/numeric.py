@@ -76,7 +76,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)
-    return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model, found.sampling),
+    return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model),
                     warnings=warnings, error_estimate=float(max(errors)))
 
 

@@ -78,16 +78,15 @@ def _shown(name: str, value: float, recognized) -> sp.Expr:
     return exact[recognized[name]] if name in recognized else sp.Float(value, 12)
 
 
-def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
+def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
     # numpy's machinery only here: the exact route's steps load none of it
     from rbdsolve.solvers.shared.numeric_model import CURVATURE_TOL, continuum_text
 
     names = model.coordinate_names()
-    how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
-           else f"Newton's method from {a.starts} {sampling}")
     steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),
-             st.accuracy(f"Equilibria found by {how}; an eigenvalue of the Hessian within {CURVATURE_TOL:g} × its "
-                         "scale over the search box counts as zero (undetermined: higher-order terms decide).")]
+             st.accuracy(f"An eigenvalue of the Hessian within {CURVATURE_TOL:g} × its scale over the search box "
+                         "counts as zero (undetermined: higher-order terms decide); how the equilibria were "
+                         "searched for, and what that guarantees, is in the warning above.")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)
                                                         for name, v in eq.at.items()])
