@@ -8,6 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import in_basis
 from rbdsolve.form.display import Label, Product, Relation, Terms
+from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
@@ -84,7 +85,7 @@ def _target_first(relation: sp.Expr, target: sp.Expr | None):
 
 def numeric_steps(a: NumericSteadyMotionAnswers, opts: SteadyMotionOptions, omega, v_G, model: Model) -> tuple[st.Step, ...]:
     vectors = a.triad
-    values = ", ".join(f"{k} = {float(v):g}" for k, v in model.values.items())
+    values = ", ".join(f"{to_unicode(k)} = {float_text(float(v))}" for k, v in model.values.items())
     steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
                            f"{', '.join(vectors)}:",
                            Relation(sp.Symbol("omega"), show(omega, vectors)),
@@ -98,9 +99,8 @@ def numeric_steps(a: NumericSteadyMotionAnswers, opts: SteadyMotionOptions, omeg
         found.append(Relation(sp.Symbol("omega"), show([sp.Float(v, 15) if v else 0 for v in s.angular_velocity],
                                                        vectors)))
         where = f"With {values}, " if i == 1 and values else ""
-        steps.append(st.result(f"{where}solution {i} in floating point (least squares from {a.starts} starts):",
-                               *found))
-    return tuple(steps)
+        steps.append(st.result(f"{where}solution {i} in floating point:", *found))
+    return tuple(steps)  # how it was searched for: the search's warning
 
 
 def kinematics_step(vectors, Omega_T, omega, v_G) -> st.Step:
