@@ -17,7 +17,8 @@ name (a hoop's rate omega), and then prose writes it with an index k (ωₖ = �
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable
+from types import MappingProxyType
+from typing import Iterable, Mapping
 
 import sympy as sp
 
@@ -44,7 +45,7 @@ LAST_RESORT = "'"  # appended to the last candidate until it is free: M_q'
 class Labels:
     """The labels one solution prints, each chosen once: key → sympy name."""
 
-    chosen: dict[str, str]
+    chosen: Mapping[str, str]  # read-only
     taken: frozenset[str]  # how the problem's names print
 
     @staticmethod
@@ -60,7 +61,7 @@ class Labels:
             chosen[key] = name
             shown.add(unicode_name(name))
             letters.add(_letter(name))
-        return Labels(chosen, frozenset(unicode_name(n) for n in names))
+        return Labels(MappingProxyType(chosen), frozenset(unicode_name(n) for n in names))
 
     def name(self, key: str) -> str:
         return self.chosen[key]

@@ -87,7 +87,8 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
             Relation(labels.symbol("stiffness_matrix"), scaled_matrix(a.K, symbols)),
         ),
     ]
-    steps.append(st.equation(f"{t['u']} = {t['a']} cos({t['w']}t) gives the eigenvalue problem "
+    wt = f"{t['w']}t" if len(t["w"]) == 1 else f"{t['w']} t"  # cos(ωt), cos(ωₖ t)
+    steps.append(st.equation(f"{t['u']} = {t['a']} cos({wt}) gives the eigenvalue problem "
                              f"({t['K']} − {t['lam']}{t['M']}) {t['a']} = 0, {t['lam']} = {t['w']}², solvable when",
                              *char_steps))
     steps.append(st.result("Eigenvalues:", *[

@@ -66,7 +66,7 @@ def test_the_mass_and_stiffness_matrices_beside_parameters_m_and_k(outputs) -> N
 
 def test_the_amplitudes_beside_a_length_a_and_the_frequency_beside_a_rate(outputs) -> None:
     text, _ = outputs
-    assert "u = X cos(ωₖt)" in text and "\n    X₁ = (1, " in text and "\n    a₁" not in text
+    assert "u = X cos(ωₖ t)" in text and "\n    X₁ = (1, " in text and "\n    a₁" not in text
     assert "an oscillation at ωₖ = √λₖ with amplitudes X:" in text and "\n    ω₁ = " in text
 
 
