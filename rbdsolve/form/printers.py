@@ -61,6 +61,12 @@ def float_text(x: float) -> str:
     return "−" + text[1:] if text.startswith("-") else text
 
 
+def float_latex(x: float) -> str:
+    """x to the current significant digits, as LaTeX: 2.5 \\cdot 10^{-7}."""
+    mantissa, _, exponent = float_text(x).replace("−", "-", 1).partition("e")
+    return f"{mantissa} \\cdot 10^{{{exponent}}}" if exponent else mantissa
+
+
 def within_rounding(values) -> set[int]:
     """The positions of the floats among ``values`` that are zero within rounding:
     smaller than NOISE times the largest (−3.08e-32 beside 1.5 is the residue of a
@@ -305,8 +311,7 @@ class TexPrinter(LatexPrinter):
         return latex_name(expr.name)
 
     def _print_Float(self, expr):
-        mantissa, _, exponent = float_text(float(expr)).replace("−", "-", 1).partition("e")
-        return f"{mantissa} \\cdot 10^{{{exponent}}}" if exponent else mantissa
+        return float_latex(float(expr))
 
     def _print_Function(self, expr, exp=None):
         name = _coordinate_name(expr)

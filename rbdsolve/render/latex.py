@@ -7,7 +7,7 @@ import unicodedata
 
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.printers import GREEK
-from rbdsolve.render.numbers import answer_and_accuracy_lines, unit_text
+from rbdsolve.render.numbers import answer_and_accuracy_lines, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 
@@ -85,7 +85,7 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [text(report.statement), ""]
     lines += [line for picture in pictures for line in _picture(picture)]
     if report.values:
-        lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
+        lines.append("Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
     if report.model.steps:
         lines += ["\\subsection*{Model}"]
         for step in report.model.steps:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.form.printers import relation_latex
-from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text, unit_text
+from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 from rbdsolve.errors import printable
@@ -38,7 +38,7 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [md(report.statement, lines=True), ""]
     lines += [f"![{md(p.caption)}]({p.path.as_posix()})\n\n*{md(p.caption)}*\n" for p in pictures]
     if report.values:
-        lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
+        lines += ["Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
     if report.model.steps:
         lines += [f"{head}# Model", ""]
         for step in report.model.steps:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import NOISE, float_text
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name
 from rbdsolve.report.tree import Path, label
 
 
@@ -67,6 +67,12 @@ def _part(units: object, key: str | int) -> object:
     if isinstance(units, list) and isinstance(key, int) and key < len(units):
         return units[key]
     return None
+
+
+def value_latex(name: str, value: float) -> str:
+    """'\\Omega = 3', 'v_{0} = 300': a parameter's value as LaTeX math (its name as the
+    answers print it, the number to the digits asked)."""
+    return f"{latex_name(name)} = {float_latex(value)}"
 
 
 def unit_text(unit: object) -> str:

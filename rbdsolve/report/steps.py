@@ -11,6 +11,7 @@ from enum import Enum
 from typing import Mapping
 
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import float_text, unicode_name
 
 
 class StepKind(Enum):
@@ -123,9 +124,10 @@ class ProblemReport:
     units: Mapping[str, str] = field(default_factory=dict)  # SI unit of each value whose dimension is known
 
     def value_text(self, name: str) -> str:
-        """'m = 0.2 kg': a parameter's value, with its unit where known."""
+        """'m = 0.2 kg', 'v₀ = 300 m/s': a parameter's value as the answers print it,
+        with its unit where known."""
         unit = self.units.get(name)
-        return f"{name} = {self.values[name]:g}" + (f" {unit}" if unit else "")
+        return f"{unicode_name(name)} = {float_text(self.values[name])}" + (f" {unit}" if unit else "")
 
     @property
     def solved(self) -> bool:

@@ -263,7 +263,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
         flat = [q for q in model.q if not V.has(q)]
         if len(flat) == inertia.zero:
             return Equilibrium(where, Stability.NEUTRAL, H,
-                               "V does not depend on " + ", ".join(names[q] for q in flat))
+                               "V does not depend on " + ", ".join(unicode_name(names[q]) for q in flat))
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            "the Hessian of V is singular: higher-order terms decide")
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")
