@@ -89,9 +89,9 @@ def batch_options(command):
               show_default=True, help="Output format.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write to this file instead of standard output.")
-@click.option("--digits", type=click.IntRange(1, 17), default=6, show_default=True,
-              help="Significant digits of the numbers in text (terminal, Markdown, LaTeX); "
-                   "JSON keeps full precision.")
+@click.option("--digits", type=click.IntRange(1, 15), default=6, show_default=True,
+              help="Significant digits of the numbers in text (terminal, Markdown, LaTeX), 1 to 15 "
+                   "(a float holds about 15); JSON keeps full precision.")
 @batch_options
 def solve(paths, fmt, output, digits, sets, route, budget, jobs, quiet, debug):
     """Solve problem files and print their step-by-step solutions.

@@ -59,3 +59,9 @@ def test_json_marks_the_accuracy_steps(scene) -> None:
     steps = json.loads(solve(scene, "-f", "json"))["results"][0]["steps"]
     marked = [s for s in steps if s.get("accuracy")]
     assert len(marked) == 1 and marked[0]["text"].startswith("Conditioning:")
+
+
+def test_every_number_in_the_steps_holds_the_digits_asked(scene) -> None:
+    """Numbers are kept to 15 digits in the steps, so 12 digits asked are 12 true ones:
+    λ = g/l = 14.0142857142857…"""
+    assert f"λ₁ = {LAMBDA:.12g}" in solve(scene, "--digits", "12")

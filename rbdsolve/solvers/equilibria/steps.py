@@ -75,7 +75,7 @@ def singular_steps(points, model: Model) -> tuple[st.Step, ...]:
 def _shown(name: str, value: float, recognized) -> sp.Expr:
     """A recognized value exactly (0, π/2, π), else 12 digits."""
     exact = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
-    return exact[recognized[name]] if name in recognized else sp.Float(value, 12)
+    return exact[recognized[name]] if name in recognized else sp.Float(value, 15)
 
 
 def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
@@ -90,7 +90,7 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, .
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)
                                                         for name, v in eq.at.items()])
-        curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
+        curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 15) for c in eq.curvatures]]))
         family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
@@ -100,6 +100,6 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, .
                                      f"value: {exact}."))
         if eq.equivalent:
             steps.append(st.note("The same configuration is also written",
-                                 *[configuration(model.state.functions(), [sp.Float(v, 12) for v in e.values()])
+                                 *[configuration(model.state.functions(), [sp.Float(v, 15) for v in e.values()])
                                    for e in eq.equivalent]))
     return tuple(steps) + singular_steps(a.singular_points, model)

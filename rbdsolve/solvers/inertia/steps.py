@@ -129,7 +129,7 @@ def numeric_steps(J, moments, axes) -> tuple[st.Step, ...]:
                     Relation(sp.Symbol("J"), sp.ImmutableMatrix(J).applyfunc(lambda x: sp.Float(x, 15)))),
         st.result("Principal moments and axes, J e = λ e (numpy.linalg.eigh):",
                   *[Relation(sp.Symbol(f"J_{k + 1}"), sp.Float(m, 15), more=()) for k, m in enumerate(moments)],
-                  *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 12) for x in axes[:, k]]]))
+                  *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 15) for x in axes[:, k]]]))
                     for k in range(3)]),
     )
 
