@@ -34,6 +34,7 @@ REGISTRY: dict[str, tuple[str, ...]] = {
     "growth_rate": ("gamma", "sigma"),
     "amplitude": ("a", "X", "Y"),
     "total_mass": ("m", "M", "m_tot"),
+    "angular_velocity": ("omega", "omega_b"),  # a body's ω beside a spin rate named omega
 }
 INDEXED = frozenset({"eigenvalue", "frequency", "growth_rate", "amplitude"})
 STRICT = frozenset({"amplitude", "eigenvalue"})  # indexed, yet a bare name of the letter moves them too:

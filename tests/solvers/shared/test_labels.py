@@ -4,6 +4,7 @@ form/labels.py); the JSON keys stay as documented."""
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 from click.testing import CliRunner
@@ -80,3 +81,20 @@ def test_json_keys_stay_as_documented(outputs) -> None:
     modes = data["results"][1]["answers"]
     assert {"M", "K", "characteristic", "eigenvalues", "frequencies", "shapes"} <= set(modes)
     assert "lamda" in modes["characteristic"]
+
+
+def test_a_bodys_angular_velocity_beside_an_unknown_rate_named_omega() -> None:
+    """The rolling coin with its spin called omega: the body's angular velocity is ω_b."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+    from rbdsolve.render.terminal import step_lines
+    from rbdsolve.solvers import solve_problem
+
+    from conftest import PROBLEMS
+
+    text = (PROBLEMS / "steady" / "rolling-coin.yaml").read_text(encoding="utf-8")
+    text = re.sub(r"\bspin\b", "omega", text)
+    (solution,) = solve_problem(build_model(load_text(text, "coin.yaml"))).solutions
+    lines = [line.plain if hasattr(line, "plain") else line.text for s in solution.steps for line in step_lines(s)]
+    assert any(line.startswith("ω_b = ") for line in lines) and not any(line.startswith("ω = (") for line in lines)
+    assert any("v_G + ω_b × (r_C − r_G) = 0" in line for line in lines)
