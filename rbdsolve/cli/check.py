@@ -10,19 +10,22 @@ from rbdsolve.errors import ExitCode, InputError
 
 @main.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path())
+@click.option("-q", "--quiet", is_flag=True,
+              help="Say nothing of a good file: only the errors, on standard error (the exit code says the rest).")
 @debug_option
-def check(paths, debug):
+def check(paths, quiet, debug):
     """Validate problem files without solving them (fast: no algebra).
 
     \b
     Example:
       rbdsolve check problems/sg2150-2015-10-29/
       rbdsolve check 'problems/**/*.yaml'
+      rbdsolve check -q problems/ && echo all good
     """
-    run_guarded(debug, lambda: _check(paths))
+    run_guarded(debug, lambda: _check(paths, quiet))
 
 
-def _check(paths) -> ExitCode:
+def _check(paths, quiet: bool = False) -> ExitCode:
     worst = ExitCode.OK
     for source in sources(paths):
         try:
@@ -31,6 +34,7 @@ def _check(paths) -> ExitCode:
             click.echo(str(exc), err=True)
             worst = max(worst, exc.exit_code)
             continue
-        questions = ", ".join(q.kind.value for q in problem.questions)
-        click.echo(f"{source.name}: ok ({questions})")
+        if not quiet:
+            questions = ", ".join(q.kind.value for q in problem.questions)
+            click.echo(f"{source.name}: ok ({questions})")
     return worst

@@ -26,7 +26,8 @@ def key(paths, output, title, figures, sets, route, budget, jobs, quiet, debug):
     """Write an answer key for an exam: a folder (or files) of problems in, one document out.
 
     .tex and .md keys keep their pictures in a folder beside them (key-figures/); .pdf
-    and .html keys are single files (a PDF needs a LaTeX engine such as pdflatex).
+    and .html keys are single files. A PDF needs a TeX engine: the first of pdflatex,
+    lualatex, xelatex and tectonic on PATH, or the one $RBDSOLVE_LATEX names.
 
     \b
     Examples:

@@ -27,6 +27,7 @@ Examples:
   rbdsolve solve p1.yaml --set m=2 --set r=0.5 --set g=9.81
   rbdsolve solve p1.yaml --route numeric --set m=1 --set r=1 --set g=9.81
   rbdsolve solve p1.yaml --format latex -o p1.tex
+  rbdsolve solve p1.yaml --route numeric --digits 10  # numbers to 10 digits
 
 \b
 Exit codes (the worst of the files): 0 solved, 1 a question could not be
@@ -88,8 +89,11 @@ def batch_options(command):
               show_default=True, help="Output format.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write to this file instead of standard output.")
+@click.option("--digits", type=click.IntRange(1, 15), default=6, show_default=True,
+              help="Significant digits of the numbers in text (terminal, Markdown, LaTeX), 1 to 15 "
+                   "(a float holds about 15); JSON keeps full precision.")
 @batch_options
-def solve(paths, fmt, output, sets, route, budget, jobs, quiet, debug):
+def solve(paths, fmt, output, digits, sets, route, budget, jobs, quiet, debug):
     """Solve problem files and print their step-by-step solutions.
 
     PATHS are problem files, folders (their *.yaml files, in path order), quoted
@@ -97,21 +101,22 @@ def solve(paths, fmt, output, sets, route, budget, jobs, quiet, debug):
     error, so standard output holds only the solutions (JSON Lines with --format json).
     """
     run_guarded(debug, lambda: _solve(paths, fmt, output, Settings(tuple(parse_sets(sets).items()),
-                                                                   budget, route, debug), jobs, quiet))
+                                                                   budget, route, debug), jobs, quiet, digits))
 
 
 append_help(solve, SOLVE_EXAMPLES)
 
 
 def _solve(paths, fmt: str, output: str | None, settings: Settings, jobs: int = 1,
-           quiet: bool = False) -> ExitCode:
+           quiet: bool = False, digits: int = 6) -> ExitCode:
     from rbdsolve.cli.writing import Look, joined, rendered
 
     items = sources(paths)
     refuse_overwriting_inputs(output, items)
     shown = not quiet and fmt != "json" and stderr_is_terminal()  # JSON is for scripts: no display
     solved = solve_all(items, settings, jobs, progress=shown)
-    pieces = rendered(solved, fmt, Look() if output or fmt != "terminal" else Look.of_stdout(), settings.debug)
+    look = Look() if output or fmt != "terminal" else Look.of_stdout()
+    pieces = rendered(solved, fmt, look, settings.debug, digits)
     outcomes = [p.outcome for p in pieces]
     say_failures(outcomes)
     write_text(joined(fmt, pieces), output)

@@ -8,10 +8,11 @@ from pathlib import Path
 import click
 
 from rbdsolve.cli.app import STDIN_NAME, Source, append_help, debug_option, main, read_stdin, \
-    refuse_overwriting_inputs, run_guarded, write_text
+    refuse_overwriting_inputs, run_guarded, stderr_is_terminal, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
+PROGRESS_FROM = 1000  # variants: fewer are done before a bar would be drawn
 MAX_COUNT = 100_000  # a class is hundreds; a million rows is a typo that would fill the memory
 FORMATS = ("csv", "json", "tex")
 SUFFIXES = {".csv": "csv", ".json": "json", ".tex": "tex"}
@@ -86,8 +87,41 @@ def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | N
     kind = output_format(output, fmt)
     source = Source(STDIN_NAME, read_stdin()) if path == "-" else Source(path)
     refuse_overwriting_inputs(output, [source])
-    table = make(source.load(), count, seed, Options(route=RouteChoice(route), budget=budget), verify)
+    problem = source.load()
+    with _progress(count >= PROGRESS_FROM and stderr_is_terminal()) as stage:
+        table = make(problem, count, seed, Options(route=RouteChoice(route), budget=budget), verify, stage)
+        stage("writing the table", 0, 1)
+        text = RENDERERS[kind](table)
     for line in (*table.notes, *(f"warning: {w}" for w in table.warnings)):
         click.echo(f"{table.file}: {line}", err=True)
-    write_text(RENDERERS[kind](table), output)
+    write_text(text, output)
+    if output:
+        click.echo(f"{table.file}: wrote {count} variant{'s' if count > 1 else ''} to {output} ({kind})", err=True)
     return ExitCode.OK
+
+
+class _progress:
+    """A bar on standard error, one stage at a time (the stage's name, its count), while
+    a large table is made on a terminal; nothing otherwise."""
+
+    def __init__(self, shown: bool):
+        self.shown, self.bar, self.task, self.stage = shown, None, None, None
+
+    def __enter__(self):
+        if not self.shown:
+            return lambda what, done, total: None
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+        self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                            TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+        self.bar.start()
+        self.task = self.bar.add_task("", total=1)
+        return self.show
+
+    def show(self, what: str, done: int, total: int) -> None:
+        self.bar.update(self.task, description=what, completed=done, total=total)
+
+    def __exit__(self, *exc) -> None:
+        if self.bar is not None:
+            self.bar.stop()

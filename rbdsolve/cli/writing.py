@@ -39,10 +39,21 @@ class Look:
         return Look(console.width, console.color_system, console.is_terminal, console.no_color)
 
 
-def rendered(outcomes: list[Outcome], fmt: str, look: Look = Look(), debug: bool = False) -> list[Piece]:
-    """Every outcome's text, each rendered inside its own guard."""
+def rendered(outcomes: list[Outcome], fmt: str, look: Look = Look(), debug: bool = False,
+             digits: int | None = None) -> list[Piece]:
+    """Every outcome's text, each rendered inside its own guard, numbers in text to
+    ``digits`` significant digits (the printers' default where None)."""
+    from contextlib import nullcontext
+
     render = _renderer(fmt, look)
-    return [_guarded(outcome, render, fmt, debug) for outcome in outcomes]
+    if digits is None:
+        shown = nullcontext()
+    else:
+        from rbdsolve.form.printers import significant_digits
+
+        shown = significant_digits(digits)
+    with shown:
+        return [_guarded(outcome, render, fmt, debug) for outcome in outcomes]
 
 
 def _guarded(outcome: Outcome, render: Callable, fmt: str, debug: bool) -> Piece:

@@ -8,6 +8,8 @@ Display values (:class:`Scaled`, :class:`Terms`, matrices) are laid out here too
 from __future__ import annotations
 
 import re
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -29,11 +31,73 @@ _SUP = str.maketrans("0123456789+-=()n", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼�
 _SUBSCRIPTABLE = set("0123456789+-=()aehijklmnoprstuvx")
 
 
+DIGITS = 6  # significant digits of a number in text, unless --digits says otherwise
+_DIGITS: ContextVar[int] = ContextVar("digits", default=DIGITS)
+NOISE = 64 * 2.0**-52  # relative size below which a float is not told from 0 in binary64
+
+
+@contextmanager
+def significant_digits(digits: int):
+    """Numbers printed to ``digits`` significant digits inside the block (every text
+    renderer; JSON answers keep full precision, they are not printed here)."""
+    token = _DIGITS.set(digits)
+    try:
+        yield
+    finally:
+        _DIGITS.reset(token)
+
+
+def digits() -> int:
+    return _DIGITS.get()
+
+
+def float_text(x: float) -> str:
+    """x to the current significant digits, as text: 9.8176, 2.5e-7, −0.5 (an exponent
+    without its padding zero: e-7, not e-07)."""
+    text = f"{x:.{digits()}g}"
+    mantissa, e, exponent = text.partition("e")
+    if e:
+        text = f"{mantissa}e{int(exponent)}"
+    return "−" + text[1:] if text.startswith("-") else text
+
+
+def float_latex(x: float) -> str:
+    """x to the current significant digits, as LaTeX: 2.5 \\cdot 10^{-7}."""
+    mantissa, _, exponent = float_text(x).replace("−", "-", 1).partition("e")
+    return f"{mantissa} \\cdot 10^{{{exponent}}}" if exponent else mantissa
+
+
+def within_rounding(values) -> set[int]:
+    """The positions of the floats among ``values`` that are zero within rounding:
+    smaller than NOISE times the largest (−3.08e-32 beside 1.5 is the residue of a
+    cancellation, not a value)."""
+    sizes = [abs(float(v)) if isinstance(v, sp.Float) else None for v in values]
+    scale = max((x for x in sizes if x is not None), default=0.0)
+    return {i for i, x in enumerate(sizes) if x is not None and x != 0 and x <= NOISE * scale}
+
+
+def _zeroed(values) -> list:
+    small = within_rounding(values)
+    return [sp.Integer(0) if i in small else v for i, v in enumerate(values)]
+
+
 def split_name(name: str) -> tuple[str, str]:
-    """'omega0' -> ('omega', '0'); 'y_A' -> ('y', 'A'); 'T_long_rod' -> ('T', 'long_rod')."""
+    """'omega0' -> ('omega', '0'); 'y_A' -> ('y', 'A'); 'T_long_rod' -> ('T', 'long_rod');
+    'theta1_f' -> ('theta', '1,f') (an indexed name, then its own subscript: θ₁,f);
+    'xB' -> ('x', 'B') (one small letter and capitals: a point's coordinate, x_B)."""
     if "_" in name.strip("_"):
         base, sub = name.split("_", 1)
-        return base, sub
+        inner, index = _indexed(base)
+        return (inner, f"{index},{sub}") if index else (base, sub)
+    inner, index = _indexed(name)
+    if index:
+        return inner, index
+    match = re.fullmatch(r"([a-z])([A-Z][A-Z0-9]*)", name)
+    return (match.group(1), match.group(2)) if match else (name, "")
+
+
+def _indexed(name: str) -> tuple[str, str]:
+    """'theta1' -> ('theta', '1'); a name without a trailing number -> (name, '')."""
     match = re.fullmatch(r"([A-Za-z]+?)(\d+)", name)
     return (match.group(1), match.group(2)) if match else (name, "")
 
@@ -43,10 +107,17 @@ def unicode_name(name: str) -> str:
     base = GREEK.get(base, base)
     if not sub:
         return base
+    head, comma, rest = sub.partition(",")
+    return base + _subscript(head) + (comma + (GREEK.get(rest, rest)) if comma else "")
+
+
+def _subscript(sub: str) -> str:
+    """₁, ₐ where every character has a subscript form (and the subscript is short or a
+    number), else _sub: y_A, T_rod."""
     sub_text = GREEK.get(sub, sub)
     if set(sub_text) <= _SUBSCRIPTABLE and (len(sub_text) <= 2 or sub_text.isdigit()):
-        return base + sub_text.translate(_SUB)
-    return f"{base}_{sub_text}"
+        return sub_text.translate(_SUB)
+    return f"_{sub_text}"
 
 
 def latex_name(name: str) -> str:
@@ -75,6 +146,14 @@ def _derivative(expr: sp.Derivative) -> tuple[str, int] | None:
     return name, expr.variable_count[0][1]
 
 
+def without_noise(terms: list) -> list:
+    """A sum's terms without those whose number is zero within rounding beside the
+    others' (1.5 θ̈ − 3.08e-32 θ̇ is 1.5 θ̈): only floats are judged, never exact terms."""
+    coefficients = [t.as_coeff_Mul()[0] for t in terms]
+    small = within_rounding(coefficients)
+    return [t for i, t in enumerate(terms) if i not in small] if small and len(small) < len(terms) else terms
+
+
 def positive_first(terms: list) -> list:
     """A sum's terms in the order an exam writes a difference: a positive number first
     beside symbols (1 + e, 1 − e², 1 + 3 cos²α), else a positive term first where the
@@ -93,7 +172,7 @@ class UnicodePrinter(StrPrinter):
     """One-line unicode math: 7/8 m r² θ̇², √3 r, cos(φ − θ)."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(list(super()._as_ordered_terms(expr, order)))
+        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Symbol(self, expr):
         return unicode_name(expr.name)
@@ -159,12 +238,19 @@ class UnicodePrinter(StrPrinter):
     def _print_Rational(self, expr):
         return f"{expr.p}/{expr.q}"
 
+    def _print_Float(self, expr):
+        text = float_text(float(expr))
+        return "-" + text[1:] if text.startswith("−") else text  # made − with the rest (_tidy_unicode)
+
     def _print_ImmutableDenseMatrix(self, expr):
         if expr.shape == (1, 1):
             return self._print(expr[0, 0])
+        entries = _zeroed(list(expr))
         if 1 in expr.shape:  # a vector
-            return "(" + ", ".join(self._print(x) for x in expr) + ")"
-        rows = ["[" + ", ".join(self._print(x) for x in row) + "]" for row in expr.tolist()]
+            return "(" + ", ".join(self._print(x) for x in entries) + ")"
+        cols = expr.shape[1]
+        rows = ["[" + ", ".join(self._print(x) for x in entries[r * cols:(r + 1) * cols]) + "]"
+                for r in range(expr.shape[0])]
         return "[" + ", ".join(rows) + "]"
 
     _print_MutableDenseMatrix = _print_ImmutableDenseMatrix
@@ -217,7 +303,7 @@ class TexPrinter(LatexPrinter):
     """LaTeX with \\dot{\\theta}, rational coefficients in front, \\varphi."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(list(super()._as_ordered_terms(expr, order)))
+        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Pow(self, expr):
         base, exp = expr.as_base_exp()
@@ -227,6 +313,9 @@ class TexPrinter(LatexPrinter):
 
     def _print_Symbol(self, expr, style="plain"):
         return latex_name(expr.name)
+
+    def _print_Float(self, expr):
+        return float_latex(float(expr))
 
     def _print_Function(self, expr, exp=None):
         name = _coordinate_name(expr)
@@ -349,9 +438,10 @@ def to_latex(value: Math) -> str:
     if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
         return to_latex(value[0, 0])
     if isinstance(value, sp.MatrixBase) and 1 in value.shape:
-        items = " \\\\ ".join(_TEX.doprint(x) for x in value)
+        items = " \\\\ ".join(_TEX.doprint(x) for x in _zeroed(list(value)))
         return f"\\begin{{pmatrix}} {items} \\end{{pmatrix}}"
     if isinstance(value, sp.MatrixBase):
+        value = sp.Matrix(value.shape[0], value.shape[1], _zeroed(list(value)))
         rows = " \\\\ ".join(" & ".join(_TEX.doprint(x) for x in row) for row in value.tolist())
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
     return _TEX.doprint(value)

@@ -183,8 +183,12 @@ def _compose(text: str, path: str) -> yaml.Node | None:
 
 
 def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputError:
+    lines = Lines(text)
+    unclosed = _unclosed_bracket(exc, text, lines, path)
+    if unclosed is not None:
+        return unclosed
     mark = exc.problem_mark or exc.context_mark
-    loc = Lines(text).at(path, mark) if mark else Location(path, 1, 1)
+    loc = lines.at(path, mark) if mark else Location(path, 1, 1)
     problem = exc.problem or "invalid YAML"
     if "'\\t'" in problem or "tab" in problem.lower():
         problem = "a tab character: YAML indents with spaces only"
@@ -194,6 +198,49 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputEr
             problem += f" ({printable(exc.context)})"
         problem += _bracket_hint(text, loc.line - 1)
     return InputError(problem, loc)
+
+
+_FLOW = {"while parsing a flow sequence": "[", "while parsing a flow mapping": "{"}
+
+
+def _unclosed_bracket(exc: yaml.MarkedYAMLError, text: str, lines: Lines, path: str) -> InputError | None:
+    """A '[' or '{' left open is said where it opens: PyYAML notices only at the next
+    line's key or at the end of the file (an unclosed '[' on line 1 would read as an
+    error at 2:1). None where the error is on the bracket's own line, or where the
+    bracket is closed further on (the error is then inside it, where PyYAML says)."""
+    bracket = _FLOW.get(exc.context or "")
+    if bracket is None or exc.problem_mark is None or exc.context_mark is None:
+        return None
+    opened, found = lines.at(path, exc.context_mark), lines.at(path, exc.problem_mark)
+    if found.line == opened.line or _closed(text, exc.context_mark.index):
+        return None
+    where = "the end of the file" if "<stream end>" in (exc.problem or "") else f"{found.line}:{found.column}"
+    closing = "]" if bracket == "[" else "}"
+    return InputError(f"YAML syntax error: this '{bracket}' is never closed: no '{closing}' before "
+                      f"{where} ({printable(exc.context)})", opened)
+
+
+def _closed(text: str, start: int) -> bool:
+    """Whether the bracket at ``start`` has its match further on: brackets counted
+    outside quotes and comments."""
+    depth, quote, comment = 0, "", False
+    for i in range(start, len(text)):
+        ch = text[i]
+        if comment:
+            comment = ch not in "\r\n"
+        elif quote:
+            quote = "" if ch == quote else quote
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "#" and (i == 0 or text[i - 1] in " \t"):
+            comment = True
+        elif ch in "[{":
+            depth += 1
+        elif ch in "]}":
+            depth -= 1
+            if depth == 0:
+                return True
+    return False
 
 
 def _bracket_hint(text: str, line: int) -> str:

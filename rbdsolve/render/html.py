@@ -12,9 +12,9 @@ import re
 from pathlib import Path
 
 from rbdsolve.form.mathml import relation_mathml
-from rbdsolve.render.numbers import numeric_lines, route_text
+from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
-from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind, accuracy_steps, answer_steps
 
 PAGE_STYLE = """
 body { font-family: Georgia, 'DejaVu Serif', serif; max-width: 52em; margin: 2em auto;
@@ -100,13 +100,18 @@ def _report(report: ProblemReport, figures: tuple[str, ...]) -> list[str]:
 
 def _solution(number: int, s: Solution) -> list[str]:
     out = [f'<h3>Question {number}: {_e(s.question)} <span class="route">({_e(route_text(s))})</span></h3>']
-    out += [line for step in s.steps for line in _step(step)]
+    out += [line for step in answer_steps(s.steps) for line in _step(step)]
     out += [f'<p class="warning"><b>Warning:</b> {_e(w)}</p>' for w in s.warnings]
     if s.error:
         out.append(f'<p class="error"><b>Could not answer:</b> {_e(s.error)}</p>')
-    numbers = numeric_lines(s.values, s.units)
+    numbers, accuracy = answer_and_accuracy_lines(s)
     if numbers:
         out += ["<p>Numeric values:</p><ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in numbers] + ["</ul>"]
+    steps = accuracy_steps(s.steps)
+    if steps or accuracy:  # how accurate the numeric route is: small, under the answers
+        out += ['<div class="accuracy"><small><p>Accuracy:</p>', *[x for step in steps for x in _step(step)]]
+        out += (["<ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in accuracy] + ["</ul>"] if accuracy else [])
+        out.append("</small></div>")
     return out
 
 

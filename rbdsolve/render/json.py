@@ -57,7 +57,8 @@ def relation(rel: Relation) -> dict:
 
 
 def step(s: Step) -> dict:
-    return {"kind": s.kind.value, "text": s.text, "math": [relation(r) for r in s.math]}
+    out = {"kind": s.kind.value, "text": s.text, "math": [relation(r) for r in s.math]}
+    return out | {"accuracy": True} if s.accuracy else out
 
 
 def solution(s: Solution) -> dict:

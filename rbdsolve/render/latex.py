@@ -7,9 +7,9 @@ import unicodedata
 
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.printers import GREEK
-from rbdsolve.render.numbers import unit_text, numeric_lines
+from rbdsolve.render.numbers import answer_and_accuracy_lines, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
-from rbdsolve.report.steps import ProblemReport, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 
 PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage[utf8]{inputenc}
@@ -85,24 +85,37 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [text(report.statement), ""]
     lines += [line for picture in pictures for line in _picture(picture)]
     if report.values:
-        lines.append("Parameter values: " + ", ".join(f"${k} = {v:g}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
+        lines.append("Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
     if report.model.steps:
         lines += ["\\subsection*{Model}"]
         for step in report.model.steps:
             lines += _step(step)
     for number, s in enumerate(report.solutions, start=1):
         lines.append(f"\\subsection*{{Question {number}: {text(s.question)}}}")
-        for step in s.steps:
+        for step in answer_steps(s.steps):
             lines += _step(step)
         lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
         if s.error:
             lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
-        numbers = numeric_lines(s.values, s.units)
+        numbers, accuracy = answer_and_accuracy_lines(s)
         if numbers:
             lines.append("Numeric values: \\begin{itemize}")
             lines += [f"\\item \\texttt{{{text(line)}}}" for line in numbers]
             lines.append("\\end{itemize}")
+        lines += _accuracy(accuracy_steps(s.steps), accuracy)
     return lines
+
+
+def _accuracy(steps, numbers: list[str]) -> list[str]:
+    """How accurate the numeric route's answers are, in small print under them."""
+    if not steps and not numbers:
+        return []
+    lines = ["{\\small \\textit{Accuracy:}\\par"]
+    for step in steps:
+        lines += _step(step)
+    if numbers:
+        lines += ["\\begin{itemize}", *[f"\\item \\texttt{{{text(line)}}}" for line in numbers], "\\end{itemize}"]
+    return lines + ["}"]
 
 
 def _picture(picture: Picture) -> list[str]:

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from rbdsolve.form.printers import relation_latex
-from rbdsolve.render.numbers import unit_text, numeric_lines, route_text
+from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
-from rbdsolve.report.steps import ProblemReport, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 from rbdsolve.errors import printable
 
 
@@ -38,22 +38,33 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [md(report.statement, lines=True), ""]
     lines += [f"![{md(p.caption)}]({p.path.as_posix()})\n\n*{md(p.caption)}*\n" for p in pictures]
     if report.values:
-        lines += ["Parameter values: " + ", ".join(f"${k} = {v:g}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
+        lines += ["Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
     if report.model.steps:
         lines += [f"{head}# Model", ""]
         for step in report.model.steps:
             lines += _step(step)
     for number, s in enumerate(report.solutions, start=1):
         lines += [f"{head}# Question {number}: {s.question}", "", f"*Route: {route_text(s)}.*", ""]
-        for step in s.steps:
+        for step in answer_steps(s.steps):
             lines += _step(step)
         lines += [f"> **Warning:** {md(w)}" for w in s.warnings]
         if s.error:
             lines += [f"> **Could not answer:** {md(s.error)}", ""]
-        numbers = numeric_lines(s.values, s.units)
+        numbers, accuracy = answer_and_accuracy_lines(s)
         if numbers:
             lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numbers] + [""]
+        lines += _accuracy(accuracy_steps(s.steps), accuracy)
     return "\n".join(lines) + "\n"
+
+
+def _accuracy(steps: tuple[Step, ...], numbers: list[str]) -> list[str]:
+    """How accurate the numeric route's answers are, under them, set apart."""
+    if not steps and not numbers:
+        return []
+    lines = ["*Accuracy:*", ""]
+    for step in steps:
+        lines += _step(step)
+    return lines + [f"- `{line}`" for line in numbers] + ([""] if numbers else [])
 
 
 def render_key(key: AnswerKey) -> str:

@@ -2,27 +2,63 @@
 
 from __future__ import annotations
 
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name
 from rbdsolve.report.tree import Path, label
 
 
-def numeric_lines(values: object, units: object = None, path: Path = ()) -> list[str]:
+ACCURACY = frozenset({"absolute_errors", "relative_errors", "absolute_error", "shape_errors", "condition_M",
+                      "spread", "residual", "residuals", "bound", "starts"})
+MODES_ACCURACY = ACCURACY | {"conditions"}  # modes: condition numbers (equilibria: where one exists)
+
+
+def accuracy_keys(question: str) -> frozenset[str]:
+    """The keys of a question's numeric values that say how accurate its answers are
+    (bounds, condition numbers, residuals, the search's count): shown apart from the
+    answers, in a quieter block under them."""
+    return MODES_ACCURACY if question == "modes" else ACCURACY
+
+
+def answer_and_accuracy_lines(solution) -> tuple[list[str], list[str]]:
+    """A solution's numeric values as lines: the answers, then how accurate they are."""
+    keys = accuracy_keys(solution.question)
+    return (numeric_lines(solution.values, solution.units, skip=keys),
+            numeric_lines(solution.values, solution.units, only=keys))
+
+
+def numeric_lines(values: object, units: object = None, path: Path = (), skip: frozenset[str] = frozenset(),
+                  only: frozenset[str] | None = None) -> list[str]:
     """Flatten a numeric values tree into 'name = value unit' lines, skipping the empty;
     names are spelled by ``report.tree.label``; ``units`` is the same tree of SI units
-    (``Solution.units``; None or '' where there is none to print)."""
+    (``Solution.units``; None or '' where there is none to print). ``skip``: keys left
+    out at any depth; ``only``: just the keys named, at any depth, whole. Numbers to the
+    significant digits asked (form.printers.digits); an entry of a list of values that
+    is zero within rounding beside the list's largest is 0 (the residue of a
+    cancellation; bounds and residuals are printed as they are)."""
     prefix = label(path)
     if isinstance(values, dict):
-        return [line for k, v in values.items() for line in numeric_lines(v, _part(units, k), (*path, k))]
-    if isinstance(values, list) and values and all(isinstance(v, float) or v is None for v in values):
+        return [line for k, v in values.items() if k not in skip
+                for line in numeric_lines(v, _part(units, k), (*path, k), skip, None if only is None or k in only
+                                          else only)]
+    if only is not None and not (isinstance(values, list) and not _flat(values)):
+        return []
+    if isinstance(values, list) and _flat(values):
         if all(v is None for v in values):
             return []
         shown = {_part(units, i) for i, v in enumerate(values) if v is not None}
         unit = shown.pop() if len(shown) == 1 else None
-        return [f"{prefix} = [" + ", ".join("—" if v is None else f"{v:.6g}" for v in values) + "]" + unit_text(unit)]
+        zeroed = not (path and isinstance(path[-1], str) and path[-1] in ACCURACY | MODES_ACCURACY)
+        scale = max(abs(v) for v in values if v is not None)
+        texts = ["—" if v is None else "0" if zeroed and abs(v) <= NOISE * scale else float_text(v) for v in values]
+        return [f"{prefix} = [" + ", ".join(texts) + "]" + unit_text(unit)]
     if isinstance(values, list):
-        return [line for i, v in enumerate(values) for line in numeric_lines(v, _part(units, i), (*path, i))]
+        return [line for i, v in enumerate(values) for line in numeric_lines(v, _part(units, i), (*path, i), skip, only)]
     if isinstance(values, float):
-        return [f"{prefix} = {values:.6g}" + unit_text(units)]
+        return [f"{prefix} = {float_text(values)}" + unit_text(units)]
     return []
+
+
+def _flat(values: list) -> bool:
+    return bool(values) and all(isinstance(v, float) or v is None for v in values)
 
 
 def _part(units: object, key: str | int) -> object:
@@ -31,6 +67,12 @@ def _part(units: object, key: str | int) -> object:
     if isinstance(units, list) and isinstance(key, int) and key < len(units):
         return units[key]
     return None
+
+
+def value_latex(name: str, value: float) -> str:
+    """'\\Omega = 3', 'v_{0} = 300': a parameter's value as LaTeX math (its name as the
+    answers print it, the number to the digits asked)."""
+    return f"{latex_name(name)} = {float_latex(value)}"
 
 
 def unit_text(unit: object) -> str:

@@ -10,9 +10,9 @@ from rich.text import Text
 
 from rbdsolve.errors import printable
 from rbdsolve.form.printers import relation_text
-from rbdsolve.render.numbers import numeric_lines, route_text
+from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text
 from rbdsolve.render.wrap import wrap_math
-from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind
+from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind, accuracy_steps, answer_steps
 
 _STYLE = {
     StepKind.GIVEN: "",
@@ -64,14 +64,25 @@ def _solution(number: int, s: Solution) -> list:
     head = Text(f"Question {number}: {s.question}", style="bold underline")
     head.append(f"   ({route_text(s)})", style="dim")
     out: list = [Padding(head, (1, 0, 0, 0))]
-    for step in s.steps:
+    for step in answer_steps(s.steps):
         out += step_lines(step)
     for warning in s.warnings:
         out.append(Text(f"warning: {printable(warning)}", style="yellow"))
     if s.error:
         out.append(Text(f"could not answer: {printable(s.error)}", style="bold red"))
-    numbers = numeric_lines(s.values, s.units)
+    numbers, accuracy = answer_and_accuracy_lines(s)
     if numbers:
         out += [Text("Numeric values:")]
         out += [Text("    " + line, style="cyan") for line in numbers]
-    return out
+    return out + _accuracy(accuracy_steps(s.steps), accuracy)
+
+
+def _accuracy(steps: tuple[Step, ...], numbers: list[str]) -> list:
+    """How accurate the numeric route's answers are, dim, under them."""
+    if not steps and not numbers:
+        return []
+    out: list = [Text("Accuracy:", style="dim")]
+    for step in steps:
+        out += [Text(line.plain, style="dim") if isinstance(line, Text) else MathLine(line.text, "dim")
+                for line in step_lines(step)]
+    return out + [Text("    " + line, style="dim") for line in numbers]

@@ -14,6 +14,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.factor import factored
+from rbdsolve.form.printers import float_text, unicode_name
 
 
 class StepKind(Enum):
@@ -32,9 +33,14 @@ class Route(Enum):
 
 @dataclass(frozen=True)
 class Step:
+    """``accuracy``: the step says how accurate a numeric route is (conditioning, error
+    bounds, the search's tolerances), not what the answer is: renderers show it in a
+    quieter block under the answers."""
+
     kind: StepKind
     text: str = ""
     math: tuple[Relation, ...] = ()
+    accuracy: bool = False
 
 
 def given(text: str, *math: Relation) -> Step:
@@ -71,6 +77,19 @@ def _factored(rel: Relation) -> Relation:
 
 def note(text: str, *math: Relation) -> Step:
     return Step(StepKind.NOTE, text, math)
+
+
+def accuracy(text: str, *math: Relation) -> Step:
+    """How accurate a numeric route's answers are: said apart, under them."""
+    return Step(StepKind.NOTE, text, math, accuracy=True)
+
+
+def answer_steps(steps: tuple[Step, ...]) -> tuple[Step, ...]:
+    return tuple(s for s in steps if not s.accuracy)
+
+
+def accuracy_steps(steps: tuple[Step, ...]) -> tuple[Step, ...]:
+    return tuple(s for s in steps if s.accuracy)
 
 
 @dataclass(frozen=True)
@@ -120,9 +139,10 @@ class ProblemReport:
     units: Mapping[str, str] = field(default_factory=dict)  # SI unit of each value whose dimension is known
 
     def value_text(self, name: str) -> str:
-        """'m = 0.2 kg': a parameter's value, with its unit where known."""
+        """'m = 0.2 kg', 'v₀ = 300 m/s': a parameter's value as the answers print it,
+        with its unit where known."""
         unit = self.units.get(name)
-        return f"{name} = {self.values[name]:g}" + (f" {unit}" if unit else "")
+        return f"{unicode_name(name)} = {float_text(self.values[name])}" + (f" {unit}" if unit else "")
 
     @property
     def solved(self) -> bool:

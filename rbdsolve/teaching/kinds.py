@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
-from typing import Sequence
+from typing import Callable, Sequence
 
 import sympy as sp
 from sympy.logic.boolalg import BooleanAtom
@@ -90,18 +90,27 @@ def _at(value, path: Path):
     return value
 
 
-def per_variant(found: list[Kind], symbols: list[sp.Symbol], draws: list[tuple[Value, ...]]
-                ) -> tuple[tuple[str | None, ...], ...]:
-    """Each variant's kinds, in the order of ``found`` (None: no kind claimed there)."""
+Progress = Callable[[int], None]  # told how many variants are done so far
+TICK = 1000  # variants between two calls of a Progress
+
+
+def per_variant(found: list[Kind], symbols: list[sp.Symbol], draws: list[tuple[Value, ...]],
+                progress: Progress | None = None) -> tuple[tuple[str | None, ...], ...]:
+    """Each variant's kind, in the order of ``found`` (None: no kind claimed there).
+    Each record's existence is made strict once, not once per variant."""
+    exists = [_strict(k.exists) for k in found]
+    exact: dict[Value, sp.Expr] = {}  # a range has few distinct values: each converted once
     rows = []
-    for draw in draws:
-        values = {s: exact_number(v) for s, v in zip(symbols, draw)}
-        rows.append(tuple(_one(k, values) for k in found))
+    for n, draw in enumerate(draws, 1):
+        values = {s: exact[v] if v in exact else exact.setdefault(v, exact_number(v)) for s, v in zip(symbols, draw)}
+        rows.append(tuple(_one(k, e, values) for k, e in zip(found, exists)))
+        if progress is not None and (n % TICK == 0 or n == len(draws)):
+            progress(n)
     return tuple(rows)
 
 
-def _one(kind: Kind, values: dict) -> str | None:
-    if _holds(_strict(kind.exists), values) is not True:
+def _one(kind: Kind, exists: sp.Basic, values: dict) -> str | None:
+    if _holds(exists, values) is not True:
         return None  # absent there, or on its boundary (Ω = Ω_c: branches meet, K = 0)
     if kind.fixed is not None:
         return kind.fixed

@@ -27,6 +27,7 @@ one note naming them.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Callable
 
 import numpy as np
 import sympy as sp
@@ -85,17 +86,28 @@ ORDERED = (
 MATCHED = {"equilibria": "at"}
 
 
+Stage = Callable[[str, int, int], None]  # (what is under way, how much of it is done, out of)
+
+
+def _silent(what: str, done: int, total: int) -> None:
+    pass
+
+
 def variants(problem: Problem, count: int, seed: int, options: Options = Options(),
-             verify: int = DEFAULT_VERIFY) -> VariantTable:
-    """``count`` variants of ``problem`` drawn with ``seed``: see the module docstring."""
+             verify: int = DEFAULT_VERIFY, progress: Stage = _silent) -> VariantTable:
+    """``count`` variants of ``problem`` drawn with ``seed``: see the module docstring.
+    ``progress`` is told each stage as it goes (a bar on a terminal: cli/variants.py)."""
     if not problem.ranges:
         raise InputError(f"{problem.file}: no parameter has a range to draw from; give one in "
                          "'values:', e.g. values: {m: {range: [1, 5], step: 0.5}}")
     if count < 1:
         raise InputError(f"--count must be at least 1, found {count}")
+    progress("drawing the values", 0, count)
     draws = draw(problem.ranges, count, seed)
+    progress("solving the problem exactly", 0, 1)
     model = build_model(problem)
     report = _exact(model, options)
+    progress("evaluating the answers", 0, count)
     symbols = [model.symbols.parameters[r.name] for r in problem.ranges]
     found, conditions, left_out = _answers(report, model, set(symbols))
     arrays = [np.array([float(d[i]) for d in draws]) for i in range(len(symbols))]
@@ -110,9 +122,11 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     table = _table(problem, report, seed, draws, found, cells, warnings, left_out)
     found_kinds = kinds(report.solutions, dict(model.values))
     table = replace(table, kind_columns=tuple(label((labels[k.question], *k.path)) for k in found_kinds),
-                    kinds=per_variant(found_kinds, symbols, draws))
+                    kinds=per_variant(found_kinds, symbols, draws,
+                                      lambda n: progress("each variant's stability and motions", n, count)))
     checked = _spread(count, verify)
-    for k in checked:
+    for n, k in enumerate(checked):
+        progress("checking variants by a full solve", n, len(checked))
         _verify(model, options, table, found, found_kinds, k)
     return replace(table, verified=tuple(k + 1 for k in checked))
 
@@ -320,8 +334,8 @@ def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple
            found: list[_Leaf], cells: np.ndarray, warnings: list[str], left_out: list[str]) -> VariantTable:
     labels = question_labels([s.question for s in report.solutions])
     columns = tuple(label((labels[leaf.question], *leaf.path)) for leaf in found)
-    answers = tuple(tuple(None if np.isnan(x.real) else float(x.real) + 0.0 for x in cells[:, v])
-                    for v in range(len(draws)))
+    real = cells.real.reshape(len(found), len(draws)) + 0.0  # −0.0 as 0.0
+    answers = tuple(tuple(None if x != x else x for x in row) for row in real.T.tolist())  # NaN: no value
     notes = (f"not numbers, so not in the table: {', '.join(left_out)}",) if left_out else ()
     return VariantTable(problem.file, problem.title, problem.statement, tuple(labels), seed,
                         tuple(r.name for r in problem.ranges), problem.values, columns,

@@ -58,7 +58,7 @@ def test_json_lines_stay_clean_and_the_summary_goes_to_stderr() -> None:
     assert result.exit_code == 2  # the worst of 0 and 2
     lines = [json.loads(x) for x in result.stdout.splitlines()]
     assert [x["file"].rsplit("/", 1)[1] for x in lines] == [PENDULUM.name, BAD.name]
-    assert lines[1]["ok"] is False and lines[1]["error"]["line"] == 10
+    assert lines[1]["ok"] is False and lines[1]["error"]["line"] == 9
     assert "Summary" in result.stderr and "bad input" in result.stderr and "solved" in result.stderr
     assert "Summary" not in result.stdout
 

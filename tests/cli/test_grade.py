@@ -110,6 +110,10 @@ def test_the_assumptions_decide_where_answers_are_compared(tmp_path) -> None:
     answer = "omega1 = sqrt(2*g/3)/sqrt(R - r)"
     assert grade(path, "-a", answer).exit_code == 0
     path.write_text(ROLLING.replace("assumptions: [R > r]\n", ""), encoding="utf-8")
+    assert grade(path, "-a", answer).exit_code == 0  # rolling inside implies R > r
+    by_hand = ROLLING.replace("assumptions: [R > r]\n", "").split("contacts:")[0].replace(
+        "height: 1}", "height: 1, at: '(R - r)*[sin(theta), -cos(theta)]', angle: -(R - r)*theta/r}")
+    path.write_text(by_hand + "questions:\n  - modes: {about: {theta: 0}}\n", encoding="utf-8")
     result = grade(path, "-a", answer)
     assert result.exit_code == 1  # for R < r it is −1 times the answer: not the same expression
 

@@ -270,7 +270,7 @@ def test_a_declared_angle_that_is_not_periodic_keeps_its_equilibrium() -> None:
     assert [sp.simplify(eq.at["theta"] - 3 * sp.pi / 2) for eq in exact.answers.equilibria] == [0]
     numeric = equilibria_numeric.solve(None, model, Options())
     assert [eq.at["theta"] for eq in numeric.answers.equilibria] == pytest.approx([3 * float(sp.pi) / 2], abs=TOL)
-    assert any("theta in [-31.4159, 31.4159] (±10π: an angle that winds up" in w for w in numeric.warnings)
+    assert any("θ in [-31.4159, 31.4159] (±10π: an angle that winds up" in w for w in numeric.warnings)
 
 
 def test_the_same_angle_declared_periodic_is_refused() -> None:

@@ -124,6 +124,29 @@ def test_bad_documents(text: str, words: str) -> None:
     assert words in info.value.message
 
 
+@pytest.mark.parametrize(
+    "text, at, words",
+    [
+        ("title: [unclosed\n", (1, 8), "this '[' is never closed: no ']' before the end of the file"),
+        ("title: x\nparameters: {m: mass\n", (2, 13), "this '{' is never closed"),
+        ("coordinates: [theta\ngravity: [0, -g]\nquestions: [eom]\n", (1, 14), "no ']' before 2:8"),
+    ],
+)
+def test_an_unclosed_bracket_is_said_where_it_opens(text: str, at: tuple[int, int], words: str) -> None:
+    with pytest.raises(InputError) as info:
+        load_text(text, "p.yaml")
+    assert words in info.value.message
+    assert (info.value.location.line, info.value.location.column) == at
+
+
+def test_a_bracket_closed_further_on_keeps_the_error_inside_it() -> None:
+    """{a: 1,↵ c: [1, 2] + 3}: the '{' is closed; the error is the unquoted '[' on line 2."""
+    with pytest.raises(InputError) as info:
+        load_text("a: {b: 1,\n  c: [1, 2] + 3}\nquestions: [eom]\n", "p.yaml")
+    assert "never closed" not in info.value.message
+    assert info.value.location.line == 2
+
+
 def load_file_text(text: str):
     from rbdsolve.problem.yamlnodes import read_text
 

@@ -37,18 +37,15 @@ def frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: bool
     ]
 
 
-SHOWN_DIGITS = 6  # the numeric route's coefficients as printed (the JSON has them whole)
-
-
 def numeric_steps(answers: NumericEomAnswers, model: Model, error: float,
                   reference_digits: int) -> tuple[st.Step, ...]:
     def shown(equations):
-        return [Relation(sp.N(E, SHOWN_DIGITS), sp.Integer(0)) for E in equations]
+        return [Relation(E, sp.Integer(0)) for E in equations]  # printed to the digits asked (--digits)
 
-    how = (f"coefficients shown to {SHOWN_DIGITS} digits; relative error ≤ {error:.1e} against the same "
-           f"derivation in {reference_digits}-digit arithmetic")
     steps = [st.result("Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, the parameter values put "
-                       f"in as floats before differentiating ({how}):", *shown(answers.equations))]
+                       "in as floats before differentiating:", *shown(answers.equations)),
+             st.accuracy(f"Relative error ≤ {error:.1e} against the same derivation in {reference_digits}-digit "
+                         "arithmetic.")]
     for frame in answers.frames:
         verdict = ("They are the scene's equations, coefficient by coefficient within the errors."
                    if frame.equivalent else "They differ from the scene's equations beyond the errors.")

@@ -24,7 +24,7 @@ from typing import Mapping
 
 import sympy as sp
 
-from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
@@ -58,13 +58,13 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
         return [], []
     free = [q for q in model.q if not any(e.has(q) for e in equations)]
     if free:
-        warnings = [f"V does not depend on {', '.join(q.name for q in free)}: "
+        warnings = [f"V does not depend on {', '.join(unicode_name(q.name) for q in free)}: "
                     "every value is an equilibrium; it is shown as 0"]
     else:
         warnings = []
     unknowns = [q for q in model.q if q not in free]
     angles = periodic_angles(model) | repeating(model)
-    warnings += [f"V is not 2π-periodic in {q.name} (it enters V outside sin and cos, e.g. in a torsional "
+    warnings += [f"V is not 2π-periodic in {unicode_name(q.name)} (it enters V outside sin and cos, e.g. in a torsional "
                  "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
     warnings += [_repeats(model, q) for q in unknowns if q in repeating(model)]
     solutions = _solve_trig_polynomial(equations, unknowns, angles)
@@ -108,13 +108,14 @@ def repeating(model: Model) -> frozenset:
 
 def _repeats(model: Model, q: sp.Symbol) -> str:
     """The warning that equilibria in q repeat every 2π, and where a contact allows them."""
-    why = (f"V is 2π-periodic in {q.name} though the scene is not ({q.name} also enters the positions outside "
+    name, zero = unicode_name(q.name), unicode_name(f"{q.name}_0")
+    why = (f"V is 2π-periodic in {name} though the scene is not ({name} also enters the positions outside "
            f"sin and cos, as a rolling body's travel does): ")
     held = contact_span.held_for(model, q)
     if held:
-        return why + (f"each equilibrium {q.name}₀ would repeat at {q.name}₀ + 2kπ, but the contact holds only for "
+        return why + (f"each equilibrium {zero} would repeat at {zero} + 2kπ, but the contact holds only for "
                       f"{held}; those in (−π, π] where it holds are listed")
-    return why + (f"each equilibrium {q.name}₀ repeats at {q.name}₀ + 2kπ, k an integer, the body moved on by whole "
+    return why + (f"each equilibrium {zero} repeats at {zero} + 2kπ, k an integer, the body moved on by whole "
                   "turns; those in (−π, π] are listed")
 
 
@@ -264,7 +265,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
         flat = [q for q in model.q if not V.has(q)]
         if len(flat) == inertia.zero:
             return Equilibrium(where, Stability.NEUTRAL, H,
-                               "V does not depend on " + ", ".join(names[q] for q in flat))
+                               "V does not depend on " + ", ".join(unicode_name(names[q]) for q in flat))
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            "the Hessian of V is singular: higher-order terms decide")
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")

@@ -22,6 +22,7 @@ import math
 import numpy as np
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -75,7 +76,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)
-    return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model, found.sampling),
+    return Solution("equilibria", Route.NUMERIC, answers, numeric_steps(answers, model),
                     warnings=warnings, error_estimate=float(max(errors)))
 
 
@@ -100,7 +101,7 @@ def search_claim(model: Model, found) -> str:
 def _range_warnings(model: Model, found) -> list[str]:
     """Declared angles along which V is not 2π-periodic, and intervals left unsettled."""
     names = dict(zip(model.q, model.coordinate_names()))
-    lines = [f"V is not 2π-periodic in {names[q]} (it enters V outside sin and cos, e.g. in a torsional "
+    lines = [f"V is not 2π-periodic in {unicode_name(names[q])} (it enters V outside sin and cos, e.g. in a torsional "
              "spring): it was searched as a length, not only over (−π, π]"
              for q in model.q if q in model.angles and q not in periodic_angles(model)]
     if found.unresolved:

@@ -8,8 +8,10 @@ import sympy as sp
 
 from rbdsolve.form.arrange import configuration, scaled_matrix
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 
@@ -19,6 +21,8 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
     """∂V/∂q = 0, then each equilibrium with where it exists, its stability and K;
     ``periodic``: some angle was reduced to (−π, π]."""
     symbols = set(model.symbols.parameters.values())
+    labels = labels_for(model, "stiffness_matrix")
+    K = labels.symbol("stiffness_matrix")
     equilibria = answers.equilibria
     steps = [
         st.equation(
@@ -45,8 +49,8 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
                                  "not depend on) is also written", *[configuration(coordinates, list(e.values()))
                                                                       for e in eq.equivalent]))
         steps.append(st.equation(
-            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian K = ∂²V/∂q∂q there is",
-            Relation(sp.Symbol("K"), scaled_matrix(eq.hessian, symbols)),
+            f"{eq.stability.value.capitalize()}: {eq.reason}; the Hessian {labels.text('stiffness_matrix')} = ∂²V/∂q∂q there is",
+            Relation(K, scaled_matrix(eq.hessian, symbols)),
         ))
         if eq.stability_cases:
             steps.append(st.result("Its stability, case by case:",
@@ -71,31 +75,31 @@ def singular_steps(points, model: Model) -> tuple[st.Step, ...]:
 def _shown(name: str, value: float, recognized) -> sp.Expr:
     """A recognized value exactly (0, π/2, π), else 12 digits."""
     exact = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
-    return exact[recognized[name]] if name in recognized else sp.Float(value, 12)
+    return exact[recognized[name]] if name in recognized else sp.Float(value, 15)
 
 
-def numeric_steps(a: NumericEquilibriaAnswers, model: Model, sampling: str) -> tuple[st.Step, ...]:
+def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
     # numpy's machinery only here: the exact route's steps load none of it
     from rbdsolve.solvers.shared.numeric_model import CURVATURE_TOL, continuum_text
 
     names = model.coordinate_names()
-    how = (f"a sign-change scan of ∂V/∂q at {a.starts} {sampling}, each root by Brent's method" if len(model.q) == 1
-           else f"Newton's method from {a.starts} {sampling}")
-    steps = [st.equation(f"Equilibria solve ∂V/∂q = 0, found by {how}. Stability from the eigenvalues of the "
-                         f"Hessian of V; one within {CURVATURE_TOL:g} × the Hessian's scale over the search box "
-                         "counts as zero (undetermined: higher-order terms decide):")]
+    steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),
+             st.accuracy(f"An eigenvalue of the Hessian within {CURVATURE_TOL:g} × its scale over the search box "
+                         "counts as zero (undetermined: higher-order terms decide); how the equilibria were "
+                         "searched for, and what that guarantees, is in the warning above.")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)
                                                         for name, v in eq.at.items()])
-        curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 6) for c in eq.curvatures]]))
+        curv = Relation(sp.Symbol("eig(H)"), sp.ImmutableMatrix([[sp.Float(c, 15) for c in eq.curvatures]]))
         family = f" ({continuum_text(eq.free, names)})" if eq.free else ""
         steps.append(st.result(f"Equilibrium {i}{family}: {eq.stability.value} (eigenvalues of ∂²V/∂q∂q there):",
                                where, curv))
         if eq.recognized:
-            steps.append(st.note(f"Within the error bound {eq.bound:.2g} of a simple exact value: "
-                                 f"{', '.join(f'{n} = {v}' for n, v in eq.recognized.items())}."))
+            exact = ", ".join(f"{unicode_name(n)} = {to_unicode(_shown(n, 0.0, eq.recognized))}" for n in eq.recognized)
+            steps.append(st.accuracy(f"Equilibrium {i} is within the error bound {eq.bound:.2g} of a simple exact "
+                                     f"value: {exact}."))
         if eq.equivalent:
             steps.append(st.note("The same configuration is also written",
-                                 *[configuration(model.state.functions(), [sp.Float(v, 12) for v in e.values()])
+                                 *[configuration(model.state.functions(), [sp.Float(v, 15) for v in e.values()])
                                    for e in eq.equivalent]))
     return tuple(steps) + singular_steps(a.singular_points, model)

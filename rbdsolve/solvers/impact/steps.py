@@ -8,6 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import configuration, in_basis, ordered_sum, scaled_sum
 from rbdsolve.form.display import Label, Math, Relation
+from rbdsolve.form.printers import float_text, to_unicode, within_rounding
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.state import t
 from rbdsolve.report import steps as st
@@ -115,16 +116,33 @@ def _given(work: ImpactEquations, show: _Show) -> list[Step]:
 
 def _velocities(work: ImpactEquations, show: _Show) -> Step:
     model, at = work.model, work.now.at
-    rows = []
+    rows, shown = [], set()
     for body in model.bodies:
-        rows.append(Relation(sp.Symbol(f"v_{body.name}"), show.vector(body.velocity(model.state).xreplace(at))))
+        shown.add(centre_name(body, model))
+        rows.append(Relation(sp.Symbol(f"v_{centre_name(body, model)}"),
+                             show.vector(body.velocity(model.state).xreplace(at))))
         omega = body.angular_velocity(model.state).xreplace(at)
         if omega != sp.zeros(3, 1) or body.given_angular_velocity is not None:
             rows.append(Relation(sp.Symbol(f"omega_{body.name}"), show.angular(omega)))
-    for point in dict.fromkeys(b.point for b in work.hits):
+    for point in dict.fromkeys(b.point for b in work.hits if b.point not in shown):  # each point once
         rows.append(Relation(sp.Symbol(f"v_{point}"), show.vector(work.now.velocity(point))))
     return st.definition("Velocities at the instant (of each body's centre of mass, and of the struck "
                          "points), linear in the generalized velocities:", *rows)
+
+
+def centre_name(body, model) -> str:
+    """The name of the point a body's centre of mass is at (G1 for a rod placed at G1),
+    so that its velocity reads v_G1 in every step; the body's name where no point is."""
+    named = body.source.at or body.source.velocity
+    preferred = sorted(named.names()) if named is not None else []
+    given = [(model.points, body.position), (model.velocities, body.given_velocity)]
+    for points, r in given:
+        if r is None:
+            continue
+        same = [n for n, p in points.items() if p == r]
+        if same:
+            return next((n for n in preferred if n in same), same[0])
+    return body.name
 
 
 def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:
@@ -215,8 +233,11 @@ def _energy_step(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> 
 
 def numeric_steps(work: ImpactEquations, condition: float) -> tuple[Step, ...]:
     """The impulse equations, then their solution in floats at the parameter values."""
-    values = ", ".join(f"{k} = {float(v):g}" for k, v in work.model.values.items())
-    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve, condition number "
-                       f"{condition:.3g}):",
-                       *[Relation(unknown_name(work, u), sp.Float(float(v), 15)) for u, v in work.solution.items()])
-    return (*equation_steps(work), solved)
+    values = ", ".join(f"{to_unicode(k)} = {float_text(float(v))}" for k, v in work.model.values.items())
+    found = [sp.Float(float(v), 15) for v in work.solution.values()]
+    noise = within_rounding(found)  # a component that cancelled to 1e-17 beside the others is 0
+    solved = st.result(f"With {values}, solved in floating point (numpy.linalg.solve):",
+                       *[Relation(unknown_name(work, u), sp.Integer(0) if i in noise else v)
+                         for i, (u, v) in enumerate(zip(work.solution, found))])
+    return (*equation_steps(work), solved, st.accuracy(f"The condition number of the impulse equations: "
+                                                       f"{condition:.3g}."))

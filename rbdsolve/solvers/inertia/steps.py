@@ -13,6 +13,7 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 
 STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
 
@@ -40,7 +41,7 @@ def _centre_steps(body: RigidBody, model: Model, symbols: set, at: dict | None =
     steps = [st.definition(
         f"{body.name} is made of {len(parts)} parts (holes count with negative mass); its mass "
         "and centre of mass from its origin:",
-        Relation(sp.Symbol("m"), tidy(body.mass)),
+        Relation(labels_for(model, "total_mass").symbol("total_mass"), tidy(body.mass)),
         Relation(sp.Symbol("r_G"), sp.ImmutableMatrix(centre.applyfunc(tidy)).T),
     )]
     for part, p in zip(parts, props):
@@ -134,7 +135,7 @@ def numeric_steps(J, moments, axes) -> tuple[st.Step, ...]:
                     Relation(sp.Symbol("J"), sp.ImmutableMatrix(J).applyfunc(lambda x: sp.Float(x, 15)))),
         st.result("Principal moments and axes, J e = λ e (numpy.linalg.eigh):",
                   *[Relation(sp.Symbol(f"J_{k + 1}"), sp.Float(m, 15), more=()) for k, m in enumerate(moments)],
-                  *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 12) for x in axes[:, k]]]))
+                  *[Relation(sp.Symbol(f"e_{k + 1}"), sp.ImmutableMatrix([[sp.Float(x, 15) for x in axes[:, k]]]))
                     for k in range(3)]),
     )
 

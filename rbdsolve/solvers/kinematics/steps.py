@@ -53,7 +53,7 @@ def exact_steps(answers: KinematicsAnswers, general: dict, model: Model) -> tupl
 
 def numeric_steps(answers: NumericKinematicsAnswers) -> tuple[st.Step, ...]:
     def show(x):
-        return sp.nan if x is None else sp.Float(x, 6)
+        return sp.nan if x is None else sp.Float(x, 15)
 
     steps = [st.result(f"Point {p.point} at the parameter values (floating point):",
                        Relation(sp.Symbol(f"r_{p.point}"), _row(map(show, p.position))),

@@ -44,7 +44,7 @@ from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relation
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
 from rbdsolve.form.arrange import descending
-from rbdsolve.solvers.modes.steps import exact_steps
+from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
 from rbdsolve.solvers.shared.conditions import changes, critical_values, exists_when, existing, partition, what_decides
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
@@ -52,11 +52,16 @@ from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, si
 from rbdsolve.solvers.shared.singular import exact_reason
 from rbdsolve.solvers.shared.values import sample
 
-LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
+LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword (the JSON's characteristic)
 MU = sp.Symbol("mu")
-# det(K − λM) as it is written, in that order (non-commutative symbols keep it)
-DET = sp.Function("det")(sp.Symbol("K", commutative=False)
-                         - sp.Symbol("lamda", commutative=False) * sp.Symbol("M", commutative=False))
+
+
+def _det(labels) -> sp.Expr:
+    """det(K − λM) as it is written, in that order (non-commutative symbols keep it), in
+    the labels the solution prints."""
+    K, lam, M = (sp.Symbol(labels.name(k), commutative=False)
+                 for k in ("stiffness_matrix", "eigenvalue", "mass_matrix"))
+    return sp.Function("det")(K - lam * M)
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -134,18 +139,21 @@ class _Spectrum:
 def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectrum:
     s_M, s_K = common_scale(list(M), symbols), common_scale(list(K), symbols)
     scale = s_K / s_M  # λ = scale · μ
+    labels = mode_labels(model)
     M_hat, K_hat = M / s_M, K / s_K
     if _rational(M_hat) and _rational(K_hat):
         poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
         pairs = [(tidy(scale * mu), mu, f) for mu, f in _rational_roots(poly)]
-        steps = (Relation(DET, sp.Integer(0)), Relation(descending(poly), sp.Integer(0), lead="⇒"),
-                 Relation(MU, tidy(LAMBDA / scale)))
+        mu, lam = labels.symbol("scaled_eigenvalue"), labels.symbol("eigenvalue")
+        steps = (Relation(_det(labels), sp.Integer(0)), Relation(descending(poly, mu), sp.Integer(0), lead="⇒"),
+                 Relation(mu, tidy(lam / scale), lead="with"))
         # det(K − λM) = s_Kⁿ det(K̂ − μM̂) with μ = λ s_M/s_K
         characteristic = tidy(s_K ** K.rows * poly.as_expr().subs(MU, LAMBDA * s_M / s_K))
         return _Spectrum(K_hat, M_hat, MU, _ascending(pairs, model), steps, characteristic)
     poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
     pairs = [(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
-    steps = (Relation(DET, sp.Integer(0)), Relation(descending(poly), sp.Integer(0), lead="⇒"))
+    steps = (Relation(_det(labels), sp.Integer(0)),
+             Relation(descending(poly, labels.symbol("eigenvalue")), sp.Integer(0), lead="⇒"))
     return _Spectrum(K, M, LAMBDA, _ascending(pairs, model), steps, tidy(poly.as_expr()))
 
 

@@ -79,7 +79,7 @@ def _at_each(model: Model) -> Solution:
     for k, (root, _) in enumerate(numeric_listing(model, find_numeric(model).equilibria)[0], 1):
         about = {n: sp.Float(float(x), 17) for n, x in zip(names, root.at)}
         steps.append(st.result(f"About equilibrium {k}:", configuration(model.state.functions(),
-                                                                        [sp.Float(float(x), 12) for x in root.at])))
+                                                                        [sp.Float(float(x), 15) for x in root.at])))
         try:
             answers, more, w, estimate = modes_at(about, model)
         except UnsolvedError as exc:

@@ -11,63 +11,97 @@ import sympy as sp
 from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.form.factor import no_longer
+from rbdsolve.form.labels import Labels
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
+from rbdsolve.solvers.shared.labels import MODES, labels_for
 
 
-def _repeated_notes(eigenvalues: tuple[sp.Expr, ...]) -> list[st.Step]:
+def _repeated_notes(eigenvalues: tuple[sp.Expr, ...], labels: Labels) -> list[st.Step]:
     """A note per repeated λ: its mode space and the basis shown."""
     notes, seen = [], set()
-    for lam in eigenvalues:
-        modes = [i for i, x in enumerate(eigenvalues, 1) if x == lam]
-        if len(modes) > 1 and lam not in seen:
-            seen.add(lam)
-            names = ", ".join(f"a{subscript(i)}" for i in modes)
+    lam, a, M = labels.text("eigenvalue"), _letter(labels, "amplitude"), labels.text("mass_matrix")
+    letter = _letter(labels, "eigenvalue")
+    for value in eigenvalues:
+        modes = [i for i, x in enumerate(eigenvalues, 1) if x == value]
+        if len(modes) > 1 and value not in seen:
+            seen.add(value)
+            names = ", ".join(f"{a}{subscript(i)}" for i in modes)
             notes.append(st.note(
-                f"{' = '.join(f'λ{subscript(i)}' for i in modes)}: a root of multiplicity {len(modes)}, so its mode "
-                f"space is {len(modes)}-dimensional; {names} below are an M-orthogonal basis of it "
-                "(aᵢᵀ M aⱼ = 0), and every combination of them is a mode with the same λ."))
+                f"{' = '.join(f'{letter}{subscript(i)}' for i in modes)}: a root of "
+                f"multiplicity {len(modes)}, so its mode space is {len(modes)}-dimensional; {names} below are an "
+                f"{M}-orthogonal basis of it ({a}ᵢᵀ {M} {a}ⱼ = 0), and every combination of them is a mode with "
+                f"the same {lam}."))
     return notes
+
+
+def _letter(labels: Labels, key: str) -> str:
+    """The label's letter, which an index follows: λ in λ₁, λ₂."""
+    return unicode_name(labels.name(key))
+
+
+def mode_labels(model: Model) -> Labels:
+    return labels_for(model, *MODES)
+
+
+def _texts(labels: Labels) -> dict[str, str]:
+    """The labels as prose writes them: M, K, u, λ, ω, γ, a."""
+    keys = {"M": "mass_matrix", "K": "stiffness_matrix", "u": "displacement", "lam": "eigenvalue",
+            "w": "frequency", "g": "growth_rate", "a": "amplitude"}
+    indexed = labels.needs_index("frequency") or labels.needs_index("growth_rate")  # then λₖ = ωₖ² alike
+    return {k: labels.text(v, indexed and k in ("lam", "w", "g")) for k, v in keys.items()}
+
+
+def _motion_text(i: int, motion: Motion, labels: Labels) -> str:
+    t = _texts(labels)
+    if motion is Motion.OSCILLATION:
+        return f"Mode {i}: {t['lam']} > 0, an oscillation at {t['w']} = √{t['lam']} with amplitudes {t['a']}:"
+    if motion is Motion.GROWTH:
+        return f"Mode {i}: {t['lam']} < 0, exponential growth at the rate {t['g']} = √(−{t['lam']}): unstable:"
+    if motion is Motion.DEPENDS:
+        return f"Mode {i}: the sign of {t['lam']} depends on the parameters, case by case:"
+    return f"Mode {i}: {t['lam']} = 0, neutral (no restoring force along this mode):"
 
 
 def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> tuple:
     symbols = set(model.symbols.parameters.values())
+    labels = mode_labels(model)
+    t = _texts(labels)
     steps = [
-        st.given("Small motions q = q₀ + u about the equilibrium",
+        st.given(f"Small motions q = q₀ + {t['u']} about the equilibrium",
                  configuration(model.state.functions(), list(a.about.values()))),
         st.equation(
-            "Linearized equations M u\u0308 + K u = 0, with M = ∂²T/∂q̇∂q̇ and K = ∂²V/∂q∂q "
-            "at the equilibrium:",
-            Relation(sp.Symbol("M"), scaled_matrix(a.M, symbols)),
-            Relation(sp.Symbol("K"), scaled_matrix(a.K, symbols)),
+            f"Linearized equations {t['M']} {t['u']}\u0308 + {t['K']} {t['u']} = 0, with {t['M']} = ∂²T/∂q̇∂q̇ "
+            f"and {t['K']} = ∂²V/∂q∂q at the equilibrium:",
+            Relation(labels.symbol("mass_matrix"), scaled_matrix(a.M, symbols)),
+            Relation(labels.symbol("stiffness_matrix"), scaled_matrix(a.K, symbols)),
         ),
     ]
-    steps.append(st.equation("u = a cos(ωt) gives the eigenvalue problem (K − λM) a = 0, "
-                             "λ = ω², solvable when", *char_steps))
+    wt = f"{t['w']}t" if len(t["w"]) == 1 else f"{t['w']} t"  # cos(ωt), cos(ωₖ t)
+    steps.append(st.equation(f"{t['u']} = {t['a']} cos({wt}) gives the eigenvalue problem "
+                             f"({t['K']} − {t['lam']}{t['M']}) {t['a']} = 0, {t['lam']} = {t['w']}², solvable when",
+                             *char_steps))
     steps.append(st.result("Eigenvalues:", *[
-        Relation(sp.Symbol(f"lambda_{i}"), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
-    steps += _repeated_notes(a.eigenvalues)
+        Relation(labels.symbol("eigenvalue", i), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
+    steps += _repeated_notes(a.eigenvalues, labels)
     for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
         vector = sp.ImmutableMatrix([shape]) if shape else None
         if motion is Motion.OSCILLATION:
             root = sp.Pow(lam, sp.S.Half, evaluate=False)
-            rel = [Relation(sp.Symbol(f"omega_{i}"), root, more=() if no_longer(root, w) else (w,))]
-            text = f"Mode {i}: λ > 0, an oscillation at ω = √λ with amplitudes a:"
+            rel = [Relation(labels.symbol("frequency", i), root, more=() if no_longer(root, w) else (w,))]
         elif motion is Motion.GROWTH:
-            rel = [Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
-            text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
+            rel = [Relation(labels.symbol("growth_rate", i), tidy(sp.sqrt(-lam)))]
         elif motion is Motion.DEPENDS:
-            rel = [r for c in a.cases[i - 1] for r in _case(c, i, lam, a.critical)]
-            text = f"Mode {i}: the sign of λ depends on the parameters, case by case:"
+            rel = [r for c in a.cases[i - 1] for r in _case(c, i, lam, a.critical, labels)]
         else:
             rel = []
-            text = f"Mode {i}: λ = 0, neutral (no restoring force along this mode):"
         if vector is not None:
-            rel.append(Relation(sp.Symbol(f"a_{i}"), vector))
-        steps.append(st.result(text, *rel))
+            rel.append(Relation(labels.symbol("amplitude", i), vector))
+        steps.append(st.result(_motion_text(i, motion, labels), *rel))
         if motion is not Motion.DEPENDS and a.cases and a.cases[i - 1]:  # decided by the values
             steps.append(st.note("Where that holds, case by case:", *[
                 condition_relation(c.when, a.critical, lead=f"{c.kind.value} when") for c in a.cases[i - 1]]))
@@ -75,14 +109,14 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
     return tuple(steps)
 
 
-def _case(case, i: int, lam: sp.Expr, critical) -> list[Relation]:
+def _case(case, i: int, lam: sp.Expr, critical, labels: Labels) -> list[Relation]:
     """oscillation when Ω < Ω_c, ω₁ = √λ; growth when Ω > Ω_c, γ₁ = √(−λ)."""
     condition = condition_relation(case.when, critical, lead=f"{case.kind.value} when")
     if case.kind is Motion.OSCILLATION:
-        return [condition, Relation(sp.Symbol(f"omega_{i}"), tidy(sp.sqrt(lam)))]
+        return [condition, Relation(labels.symbol("frequency", i), tidy(sp.sqrt(lam)))]
     if case.kind is Motion.GROWTH:
-        return [condition, Relation(sp.Symbol(f"gamma_{i}"), tidy(sp.sqrt(-lam)))]
-    return [condition, Relation(sp.Symbol(f"lambda_{i}"), sp.Integer(0))]
+        return [condition, Relation(labels.symbol("growth_rate", i), tidy(sp.sqrt(-lam)))]
+    return [condition, Relation(labels.symbol("eigenvalue", i), sp.Integer(0))]
 
 
 EPS = 2.0**-52  # binary64's machine epsilon, in which the numeric route works
@@ -91,31 +125,36 @@ MAX_SHOWN = 8  # larger matrices and mode shapes are left to the JSON answers
 
 def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...]:
     n = len(a.eigenvalues)
-    matrices = ((Relation(sp.Symbol("M"), _floats(a.M)), Relation(sp.Symbol("K"), _floats(a.K)))
-                if n <= MAX_SHOWN else ())
+    labels = mode_labels(model)
+    t = _texts(labels)
+    matrices = ((Relation(labels.symbol("mass_matrix"), _floats(a.M)),
+                 Relation(labels.symbol("stiffness_matrix"), _floats(a.K))) if n <= MAX_SHOWN else ())
     steps = [
-        st.given("Small motions q = q₀ + u about the equilibrium",
+        st.given(f"Small motions q = q₀ + {t['u']} about the equilibrium",
                  configuration(model.state.functions(), [sp.Float(v, 15) for v in a.about.values()])),
-        st.equation(f"Linearized equations M u\u0308 + K u = 0 at the equilibrium, in numbers ({how}"
-                    + (f"; M and K are {n}×{n}, in the JSON answers):" if n > MAX_SHOWN else "):"), *matrices),
-        st.equation("The generalized symmetric eigenproblem K a = λ M a, by Cholesky factorization of M "
-                    "(scipy.linalg.eigh):",
-                    *[Relation(sp.Symbol(f"lambda_{i}"), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
+        st.equation(f"Linearized equations {t['M']} {t['u']}\u0308 + {t['K']} {t['u']} = 0 at the equilibrium, "
+                    f"in numbers ({how}"
+                    + (f"; {t['M']} and {t['K']} are {n}×{n}, in the JSON answers):" if n > MAX_SHOWN else "):"),
+                    *matrices),
+        st.equation(f"The generalized symmetric eigenproblem {t['K']} {t['a']} = {t['lam']} {t['M']} {t['a']}, "
+                    f"by Cholesky factorization of {t['M']} (scipy.linalg.eigh):",
+                    *[Relation(labels.symbol("eigenvalue", i), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
         _conditioning_note(a),
     ]
     for i, (lam, w, motion, shape, err) in enumerate(
             zip(a.eigenvalues, a.frequencies, a.motions, a.shapes, a.absolute_errors), 1):
         rel = []
         if motion is Motion.OSCILLATION:
-            rel.append(Relation(sp.Symbol(f"omega_{i}"), sp.Float(w, 15)))
-            text = f"Mode {i}: λ > 0, an oscillation at ω = √λ with amplitudes a:"
+            rel.append(Relation(labels.symbol("frequency", i), sp.Float(w, 15)))
+            text = _motion_text(i, motion, labels)
         elif motion is Motion.GROWTH:
-            rel.append(Relation(sp.Symbol(f"gamma_{i}"), sp.Float(math.sqrt(-lam), 15)))
-            text = f"Mode {i}: λ < 0, exponential growth at the rate γ = √(−λ): unstable:"
+            rel.append(Relation(labels.symbol("growth_rate", i), sp.Float(math.sqrt(-lam), 15)))
+            text = _motion_text(i, motion, labels)
         else:
-            text = f"Mode {i}: |λ| ≤ {err:.1e}, its error bound: λ is not told from 0 within rounding, neutral:"
+            text = (f"Mode {i}: |{t['lam']}| ≤ {err:.1e}, its error bound: {t['lam']} is not told from 0 within "
+                    "rounding, neutral:")
         if n <= MAX_SHOWN:
-            rel.append(Relation(sp.Symbol(f"a_{i}"), _floats((shape,))))
+            rel.append(Relation(labels.symbol("amplitude", i), _floats((shape,))))
         steps.append(st.result(text, *rel))
     return tuple(steps)
 
@@ -133,7 +172,7 @@ def _conditioning_note(a: NumericModesAnswers) -> st.Step:
         if len(group) > 1:
             text += (f"; λ{'/λ'.join(map(str, group))} are equal within their bounds: one mode space, "
                      "its shapes below an M-orthogonal basis of it")
-    return st.note(text + ".")
+    return st.accuracy(text + ".")
 
 
 def _floats(rows) -> sp.ImmutableMatrix:

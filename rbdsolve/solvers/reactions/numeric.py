@@ -49,5 +49,5 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                                       residual)
     step = st.result("The forces at the state, from Newton–Euler per body with the values as floats (least "
                      f"squares; balances left ≤ {max(residual, EPS):.1e} of their size):",
-                     *[Relation(sp.Symbol(k), sp.Float(v, 6)) for name in at for k, v in at[name].items()])
+                     *[Relation(sp.Symbol(k), sp.Float(v, 15)) for name in at for k, v in at[name].items()])
     return Solution("reactions", Route.NUMERIC, answers, (step,), error_estimate=max(residual, EPS))

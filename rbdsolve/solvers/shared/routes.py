@@ -102,10 +102,17 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
         return exact
     solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
     if not solution.solved:
-        return replace(solution, error=f"the exact route could not answer ({exact.error}); "
-                                       f"nor could the numeric route ({solution.error})")
+        return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _both_failed(exact: str, numeric: str) -> str:
+    """Why neither route answered: one reason said once where both give it (a scene
+    that depends on time is refused by both alike), else each route's."""
+    if exact == numeric:
+        return f"{exact} (the exact and the numeric route alike)"
+    return f"the exact route could not answer ({exact}); nor could the numeric route ({numeric})"
 
 
 def _solved_for(question: Question) -> tuple[str, ...]:

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.quantity import LENGTH
 from rbdsolve.problem.schema import CoordinateKind
@@ -82,5 +83,5 @@ def _number(value: sp.Expr, name: str) -> float:
 
 def box_text(model: Model, angles: frozenset) -> str:
     """'θ in [−25.1327, 25.1327] (declared)', one per coordinate."""
-    return "; ".join(f"{name} in [{i.low:.6g}, {i.high:.6g}] ({i.why})"
+    return "; ".join(f"{unicode_name(name)} in [{i.low:.6g}, {i.high:.6g}] ({i.why})"
                      for name, i in zip(model.coordinate_names(), search_box(model, angles)))

@@ -53,14 +53,15 @@ from rbdsolve.solvers.steady_motion.balances import (
     twin,
     unknown_symbols,
 )
-from rbdsolve.solvers.steady_motion.steps import balance_steps, kinematics_step, rolling_steps
+from rbdsolve.solvers.steady_motion.steps import balance_steps, kinematics_step, omega_label, rolling_steps
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: SteadyMotionOptions = question.options
     k, vectors = setup(opts, model)
     omega, v_G = k.omega(), k.velocity(k.body.position)
-    steps = [kinematics_step(vectors, k.Omega, omega, v_G)]
+    w = omega_label(model)
+    steps = [kinematics_step(vectors, k.Omega, omega, v_G, w)]
     rates, rolling_steps = _rolling(opts, model, k, rolling_velocities(opts, model, k, omega, v_G), omega, vectors)
     steps += rolling_steps
     b = balances(opts, model, k, rates, omega, v_G)
@@ -75,7 +76,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
                                   several, critical, _reactions(opts, k, names, targets, solved, along, held))
-    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G)
+    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
 
 
@@ -109,7 +110,8 @@ def _rolling(opts: SteadyMotionOptions, model: Model, k, v_C: list[sp.Matrix], o
     if len(found) != 1:
         raise UnsolvedError("the rolling condition does not fix the unknown rates")
     rates = {a: tidy(b) for a, b in found[0].items()}
-    return rates, rolling_steps(opts, v_C, rates, omega.xreplace(rates).applyfunc(tidy), vectors, derived)
+    return rates, rolling_steps(opts, v_C, rates, omega.xreplace(rates).applyfunc(tidy), vectors, derived,
+                                omega_label(model))
 
 
 def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relations, model: Model,

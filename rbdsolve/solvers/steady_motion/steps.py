@@ -8,9 +8,11 @@ import sympy as sp
 
 from rbdsolve.form.arrange import in_basis
 from rbdsolve.form.display import Label, Product, Relation, Terms
+from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
 
@@ -19,8 +21,16 @@ def show(v, vectors):
     return in_basis([(x, sp.Symbol(name)) for x, name in zip(v, vectors) if x != 0])
 
 
+OMEGA = sp.Symbol("omega")
+
+
+def omega_label(model: Model) -> sp.Symbol:
+    """The body's angular velocity, ω unless the problem names something omega."""
+    return labels_for(model, "angular_velocity").symbol("angular_velocity")
+
+
 def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptions, targets=(),
-                   a_G: sp.Matrix | None = None) -> list[st.Step]:
+                   a_G: sp.Matrix | None = None, w: sp.Symbol = OMEGA) -> list[st.Step]:
     e = answers.triad
     about = opts.about.text if opts.about.text.isidentifier() else "P"
     target = targets[0] if len(targets) == 1 else None
@@ -31,7 +41,7 @@ def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptio
                 f"dL/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
                 f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:")
     return [
-        st.definition(f"Angular momentum about {about}, L = J_G ω + r_{about}G × m v_G:",
+        st.definition(f"Angular momentum about {about}, L = J_G {to_unicode(w)} + r_{about}G × m v_G:",
                       Relation(sp.Symbol(f"L_{about}"), show(answers.angular_momentum, e))),
         st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
                     Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), show(dL, e))),
@@ -84,10 +94,10 @@ def _target_first(relation: sp.Expr, target: sp.Expr | None):
 
 def numeric_steps(a: NumericSteadyMotionAnswers, opts: SteadyMotionOptions, omega, v_G, model: Model) -> tuple[st.Step, ...]:
     vectors = a.triad
-    values = ", ".join(f"{k} = {float(v):g}" for k, v in model.values.items())
+    values = ", ".join(f"{to_unicode(k)} = {float_text(float(v))}" for k, v in model.values.items())
     steps = [st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
                            f"{', '.join(vectors)}:",
-                           Relation(sp.Symbol("omega"), show(omega, vectors)),
+                           Relation(omega_label(model), show(omega, vectors)),
                            Relation(sp.Symbol("v_G"), show(v_G, vectors))),
              st.equation("The rolling conditions and the balances (Newton's law for G first, with reactions), "
                          "each = 0, the unknown rates left in:", *[Relation(r, sp.Integer(0)) for r in a.relations])]
@@ -95,19 +105,18 @@ def numeric_steps(a: NumericSteadyMotionAnswers, opts: SteadyMotionOptions, omeg
         found = [Relation(sp.Symbol(n), sp.Float(v, 15)) for n, v in s.unknowns.items() if v is not None]
         found += [Relation(model.symbols.scalar(q), sp.Float(s.solved[q.text], 15))
                   for q in opts.solve_for if q.text not in s.unknowns]
-        found.append(Relation(sp.Symbol("omega"), show([sp.Float(v, 15) if v else 0 for v in s.angular_velocity],
+        found.append(Relation(omega_label(model), show([sp.Float(v, 15) if v else 0 for v in s.angular_velocity],
                                                        vectors)))
         where = f"With {values}, " if i == 1 and values else ""
-        steps.append(st.result(f"{where}solution {i} in floating point (least squares from {a.starts} starts):",
-                               *found))
-    return tuple(steps)
+        steps.append(st.result(f"{where}solution {i} in floating point:", *found))
+    return tuple(steps)  # how it was searched for: the search's warning
 
 
-def kinematics_step(vectors, Omega_T, omega, v_G) -> st.Step:
+def kinematics_step(vectors, Omega_T, omega, v_G, w: sp.Symbol = OMEGA) -> st.Step:
     return st.definition(f"The body's angular velocity and the velocity of its centre of mass, in the triad "
                          f"{', '.join(vectors)} (which turns at Ω_T):",
                          Relation(sp.Symbol("Omega_T"), show(Omega_T, vectors)),
-                         Relation(sp.Symbol("omega"), show(omega, vectors)),
+                         Relation(w, show(omega, vectors)),
                          Relation(sp.Symbol("v_G"), show(v_G, vectors)))
 
 
@@ -120,14 +129,15 @@ def contact_point_step(name: str, offset, vectors) -> st.Step:
                          Relation(sp.Symbol(f"r_{name}") - sp.Symbol("r_G"), show(offset, vectors)))
 
 
-def rolling_steps(opts: SteadyMotionOptions, v_C, rates: dict, omega, vectors, derived=()) -> list[st.Step]:
+def rolling_steps(opts: SteadyMotionOptions, v_C, rates: dict, omega, vectors, derived=(),
+                  w: sp.Symbol = OMEGA) -> list[st.Step]:
     """Where each contact on a plane touches (``derived``: (C, r_C − r_G)), then
     v_G + ω × (r_C − r_G) = 0 at each contact, the rates it gives, and ω with them."""
     where = " and ".join(C.text for C in opts.contacts)
     steps = [contact_point_step(name, offset, vectors) for name, offset in derived]
     steps += [st.equation(f"Rolling without slipping at {where}: the body's point there is at rest, "
-                         "v_G + ω × (r_C − r_G) = 0:", *[Relation(show(v, vectors), sp.Integer(0)) for v in v_C])]
+                         f"v_G + {to_unicode(w)} × (r_C − r_G) = 0:", *[Relation(show(v, vectors), sp.Integer(0)) for v in v_C])]
     if rates:
         steps.append(st.result("which gives", *[Relation(a, b) for a, b in rates.items()]))
-        steps.append(st.result("so the angular velocity is", Relation(sp.Symbol("omega"), show(omega, vectors))))
+        steps.append(st.result("so the angular velocity is", Relation(w, show(omega, vectors))))
     return steps

@@ -46,7 +46,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     answers = NumericSteadySpinAnswers(name, tuple(float(x) for x in J), spins, free)
     steps = numeric_steps(answers)
     if free is not None:  # the exact route's steps, with the numbers
-        shown = {f.name: sp.Float(getattr(free, f.name), 12) for f in fields(free) if f.name != "axis"}
+        shown = {f.name: sp.Float(getattr(free, f.name), 15) for f in fields(free) if f.name != "axis"}
         steps += tuple(precession_steps(replace(free, **shown)))
     return Solution("steady_spin", Route.NUMERIC, answers, steps,
                     error_estimate=relative_estimate(J, absolute))

@@ -20,7 +20,7 @@ import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.display import Relation
+from rbdsolve.form.display import Label, Relation
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import PrecessionOptions
@@ -60,15 +60,14 @@ def symmetry_axis(J: tuple[sp.Expr, ...], model: Model) -> tuple[int, sp.Expr, s
 
 
 def precession_steps(p: FreePrecession) -> list[st.Step]:
-    names = [("omega_3", p.spin), ("omega_perp", p.transverse)]
     return [
         st.given(f"The free motion: ω along the symmetry axis {p.axis} and across it,",
-                 *[Relation(sp.Symbol(n), v) for n, v in names]),
+                 Relation(sp.Symbol("omega_3"), p.spin), Relation(Label("ω⊥", r"\omega_{\perp}"), p.transverse)),
         st.equation("L = A ω⊥ e⊥ + C ω₃ e₃ is fixed in space (A across the axis, C about it):",
-                    Relation(sp.Symbol("|L|"), p.angular_momentum), Relation(sp.Symbol("|omega|"), p.omega)),
+                    Relation(sp.Symbol("|L|"), p.angular_momentum), Relation(Label("|ω|", r"|\omega|"), p.omega)),
         st.result("Seen from the body, ω turns about the symmetry axis at Ω_b = (C − A) ω₃/A; seen from space, "
                   "the axis turns about L at φ̇ = |L|/A:",
-                  Relation(sp.Symbol("Omega_b"), p.body_rate), Relation(sp.Symbol("phi_dot"), p.space_rate)),
+                  Relation(sp.Symbol("Omega_b"), p.body_rate), Relation(Label("φ̇", r"\dot{\varphi}"), p.space_rate)),
         st.result("The constant angles: α between ω and the axis (tan α = ω⊥/ω₃), ν between the axis and L "
                   "(tan ν = A ω⊥/(C ω₃)), γ between ω and L:",
                   Relation(sp.Symbol("alpha"), p.alpha), Relation(sp.Symbol("nu"), p.nu),

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Product, Relation, Terms
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.state import t
@@ -20,7 +21,8 @@ from rbdsolve.solvers.steady_spin.answers import (
 
 def describe(condition: Condition) -> str:
     """J₁ = J₂, J₂ ≠ J₃ (or 'in every case')."""
-    parts = [f"{a} = {b}" for a, b in condition.equal] + [f"{a} ≠ {b}" for a, b in condition.different]
+    parts = [f"{to_unicode(a)} = {to_unicode(b)}" for a, b in condition.equal]
+    parts += [f"{to_unicode(a)} ≠ {to_unicode(b)}" for a, b in condition.different]
     return ", ".join(parts) if parts else "in every case"
 
 

@@ -422,3 +422,15 @@ def test_auto_falls_back_when_the_real_alarm_rings_in_the_summary(monkeypatch) -
     monkeypatch.setattr(routes, "summarize_model", endless)
     report = solve_file(_problem(PENDULUM), Options(budget=1.0))
     assert report.model.T is None and report.model.steps[0].text.startswith("warning: the model (T and V) ran out")
+
+
+def test_one_reason_both_routes_give_is_said_once(monkeypatch) -> None:
+    """A scene that moves with time is refused by both routes alike: one sentence."""
+    from rbdsolve import solvers
+
+    def refuse(question, model, options):
+        raise UnsolvedError("the scene depends explicitly on time t")
+
+    monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EQUILIBRIA, solvers.Family(refuse, refuse))
+    (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options()).solutions
+    assert solution.error == "the scene depends explicitly on time t (the exact and the numeric route alike)"

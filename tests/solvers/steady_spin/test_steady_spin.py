@@ -82,3 +82,13 @@ questions: [steady_spin]
     J1, J3 = found.moments[0], found.moments[2]
     assert sp.simplify(axis.rate - sp.Symbol("Omega") * (J3 - J1) / J1) == 0
     assert math.isclose(number(J1), 1 / 3, rel_tol=1e-12)  # m (3 r² + h²)/12 at 1
+
+
+def test_a_case_is_said_in_the_printer_of_the_answers() -> None:
+    """J₁ = J₂, J₁ ≠ J₃, not J1 = J2 in sympy's spelling."""
+    from rbdsolve.solvers.steady_spin.answers import Condition
+    from rbdsolve.solvers.steady_spin.steps import describe
+
+    J1, J2, J3 = sp.symbols("J1 J2 J3", positive=True)
+    assert describe(Condition(((J1, J2),), ((J1, J3),))) == "J₁ = J₂, J₁ ≠ J₃"
+    assert describe(Condition((), ())) == "in every case"
