@@ -178,7 +178,7 @@ def _print_summary(grades) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    from rbdsolve.cli.writing import no_trailing_spaces
+    from rbdsolve.render.text import no_trailing_spaces
     from rbdsolve.errors import printable
     from rbdsolve.teaching.grading import Outcome, score_counts, tallies
 

@@ -50,8 +50,19 @@ def configurations(problem, count: int = 3) -> list[list[Fraction]]:
     return [[Fraction(rng.randint(-1500, 1500), 1000) for _ in problem.coordinates] for _ in range(count)]
 
 
+_REFERENCES: dict = {}
+
+
 def symbolic(problem, values: dict[str, Fraction], q: list[Fraction]):
-    """M, ∂V/∂q, ∂²V/∂q² from the symbolic model, as 60-digit mpmath matrices."""
+    """M, ∂V/∂q, ∂²V/∂q² from the symbolic model, as 60-digit mpmath matrices; computed
+    once for both arithmetics (the reference is the same, and the slow part)."""
+    key = (str(problem.file), tuple(sorted(values.items())), tuple(q))
+    if key not in _REFERENCES:
+        _REFERENCES[key] = _symbolic(problem, values, q)
+    return _REFERENCES[key]
+
+
+def _symbolic(problem, values: dict[str, Fraction], q: list[Fraction]):
     model = build_model(problem)
     at = {qi: sp.Rational(x.numerator, x.denominator) for qi, x in zip(model.q, q)}
     subs = {s: exact_number(values[k]) for k, s in model.symbols.parameters.items()}
