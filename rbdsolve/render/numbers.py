@@ -53,8 +53,17 @@ def numeric_lines(values: object, units: object = None, path: Path = (), skip: f
     if isinstance(values, list):
         return [line for i, v in enumerate(values) for line in numeric_lines(v, _part(units, i), (*path, i), skip, only)]
     if isinstance(values, float):
-        return [f"{prefix} = {float_text(values)}" + unit_text(units)]
+        return [f"{prefix} = {float_text(values)}" + unit_text(units) + _negative_reading(path, values, units)]
     return []
+
+
+# A negative value of these reads as its opposite (an impulse that adds energy loses none)
+NEGATIVE_READS = {"energy_lost": "energy gained"}
+
+
+def _negative_reading(path: Path, value: float, units: object) -> str:
+    word = NEGATIVE_READS.get(path[-1]) if path and isinstance(path[-1], str) else None
+    return f" (an {word} of {float_text(-value)}{unit_text(units)})" if word and value < 0 else ""
 
 
 def _flat(values: list) -> bool:

@@ -37,3 +37,11 @@ def test_a_vector_entry_zero_within_rounding_is_zero() -> None:
 def test_a_term_zero_within_rounding_leaves_the_sum() -> None:
     assert to_unicode(sp.Float(1.5, 15) * x + sp.Float(-3.08e-32, 15) * y) == "1.5 x"
     assert to_unicode(x + sp.Float(1e-20, 15) * y) == "x + 1e-20 y"  # an exact term is never judged
+
+
+def test_a_negative_energy_lost_reads_as_energy_gained() -> None:
+    from rbdsolve.render.numbers import numeric_lines
+
+    assert numeric_lines({"energy_lost": -1.44}, {"energy_lost": "J"}) == [
+        "energy_lost = −1.44 J (an energy gained of 1.44 J)"]
+    assert numeric_lines({"energy_lost": 0.5}) == ["energy_lost = 0.5"]
