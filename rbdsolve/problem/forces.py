@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.readers import check_keys, expect_scalar
+from rbdsolve.problem.readers import check_keys, expect_scalar, read_bool
 from rbdsolve.problem.schema import Body, Contact, EnergyOptions, Instant, ReactionsOptions, Support, SupportKind
 from rbdsolve.problem.yamlnodes import Map, Node, Seq
 
@@ -118,7 +118,7 @@ class _Supports:
                 raise InputError(f"say which body the force at '{name}' acts on: {{at: {name}, on: BODY}} (bodies: "
                                  f"{', '.join(self.bodies)})", node.loc)
             return Support(SupportKind.POINT, name, self.bodies[0], None, None, node.loc)
-        check_keys(node, ("at",), ("on", "by", "normal"), "a force asked for")
+        check_keys(node, ("at",), ("on", "by", "normal", "two_sided"), "a force asked for")
         name = expect_scalar(node.get("at"), "a point name").text.strip()
         if name in self.contacts:
             return self._at_contact(name, node)
@@ -129,7 +129,9 @@ class _Supports:
             raise InputError(f"a body does not hold itself: 'by' names '{on}' as 'on' does", node.get("by").loc)
         normal = node.get("normal")
         direction = self.reading.axis(normal) if normal is not None else None
-        return Support(SupportKind.POINT, name, on, by, direction, node.loc)
+        both = node.get("two_sided")
+        two_sided = read_bool(both, "true or false") if both is not None else False
+        return Support(SupportKind.POINT, name, on, by, direction, node.loc, two_sided)
 
     def _at_contact(self, name: str, node: Map) -> Support:
         contact = self.contacts[name]
@@ -137,7 +139,7 @@ class _Supports:
         if on is not None and expect_scalar(on, "a body name").text.strip() != contact.body:
             raise InputError(f"body '{on.text.strip()}' is not in contact at '{name}': contact '{name}' holds "
                              f"body '{contact.body}'", on.loc)
-        for extra in ("by", "normal"):
+        for extra in ("by", "normal", "two_sided"):
             if node.get(extra) is not None:
                 raise InputError(f"contact '{name}' gives its own surface; '{extra}' is not needed",
                                  node.get(extra).loc)

@@ -353,7 +353,9 @@ class SupportKind(Enum):
 class Support:
     """A force asked for: at point ``point`` on body ``on``, from the ground (``by`` None)
     or from body ``by``; or the contact named ``point``. ``normal``: the direction a
-    one-sided push is counted positive along (None: against gravity)."""
+    one-sided push is counted positive along (None: against gravity). ``two_sided``: a
+    guide that holds both ways (a bead threaded on its wire, a pin in a slot), so its
+    push may change sign and no contact is lost."""
 
     kind: SupportKind
     point: str
@@ -361,6 +363,7 @@ class Support:
     by: str | None
     normal: Expr | None
     loc: Location
+    two_sided: bool = False
 
 
 @dataclass(frozen=True)

@@ -115,9 +115,12 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
     strings = {str(c.symbol) for s in supports if s.how is How.STRING for c in s.components}
+    guides = {str(c.symbol) for s in supports if s.how is How.GUIDE for c in s.components}
     for name, where in lost.items():
         if where:
-            lost_how = "the string goes slack" if name in strings else "the contact is lost"
+            lost_how = "the string goes slack" if name in strings else "the contact is lost" + (
+                " (it can only push, N ≥ 0; a bead threaded on its wire, held both ways, is 'two_sided: true')"
+                if name in guides else "")
             steps.append(st.result(f"{name} = 0, so {lost_how}, where:", *[Relation(eq.lhs, eq.rhs) for eq in where]))
             for eq, h in zip(where, reached[name]):
                 if h.condition is not sp.true:

@@ -127,7 +127,7 @@ def _point(model: Model, support: Support) -> Held:
         return Held(support.point, P, on.name, support.by, _free(support.point, 2) + moment, How.PIVOT)
     if rank == 1:
         n = _normal(model, support, next(c for c in columns if c != sp.zeros(3, 1)))
-        push = Component(sp.Symbol(f"N_{support.point}"), n, one_sided=support.by is None)
+        push = Component(sp.Symbol(f"N_{support.point}"), n, one_sided=support.by is None and not support.two_sided)
         return Held(support.point, P, on.name, support.by, (push,) + moment, How.GUIDE)
     what = f"body '{on.name}'" + (f" relative to body '{support.by}'" if support.by else "")
     raise InputError(f"'{support.point}' is not a support of {what}: its point there moves freely in the plane "
