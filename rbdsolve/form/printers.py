@@ -260,21 +260,56 @@ class UnicodePrinter(StrPrinter):
 
 
 def sign_into_difference(expr: sp.Mul) -> sp.Expr | None:
-    """A negative product with a difference among its factors, the sign taken into the
-    difference: −2g/(3(r − R)) as 2g/(3(R − r)), −6g(a − 2R) as 6g(2R − a), as a worked
-    solution writes it (an odd power only; a common number factored out of it). None
-    where there is no such factor."""
+    """A product's signs where a worked solution puts them, or None where nothing moves:
+
+    - a factor whose terms are all negative gives its sign to the product,
+      (−a sin θ − b sin φ) θ̇ as −(a sin θ + b sin φ) θ̇, and so does a negative number,
+      (4 − 2π) as −(2π − 4);
+    - a negative product takes its sign into a difference: −2g/(3(r − R)) as
+      2g/(3(R − r)), −6g(a − 2R) as 6g(2R − a), −2g(cos θ₀ − 1) as 2g(1 − cos θ₀)
+      (an odd power only; a common number factored out of it)."""
     coeff, rest = expr.as_coeff_Mul()
-    if not (coeff.is_Rational and coeff < 0):
+    if not coeff.is_Rational:
         return None
-    factors = list(sp.Mul.make_args(rest))
+    factors, moved = list(sp.Mul.make_args(rest)), False
     for i, factor in enumerate(factors):
         base, exp = factor.as_base_exp()
-        if base.is_Add and exp.is_Integer and exp % 2 == 1 and base.could_extract_minus_sign():
-            turned = [p if exp == 1 else sp.Pow(p, exp, evaluate=False) for p in sp.Mul.make_args(sp.factor_terms(-base))]
-            factors[i:i + 1] = turned
-            return sp.Mul(-coeff, *factors, evaluate=False) if -coeff != 1 else sp.Mul(*factors, evaluate=False)
-    return None
+        if base.is_Add and exp.is_Integer and exp % 2 == 1 and _negative_sum(base):
+            factors[i], coeff, moved = _power(-base, exp), -coeff, True
+    if coeff < 0:
+        for i, factor in enumerate(factors):
+            base, exp = factor.as_base_exp()
+            if base.is_Add and exp.is_Integer and exp % 2 == 1 and _turnable(base):
+                turned = [p if exp == 1 else sp.Pow(p, exp, evaluate=False)
+                          for p in sp.Mul.make_args(sp.factor_terms(-base))]
+                factors[i:i + 1] = turned
+                coeff, moved = -coeff, True
+                break
+    if not moved:
+        return None
+    return sp.Mul(coeff, *factors, evaluate=False) if coeff != 1 else sp.Mul(*factors, evaluate=False)
+
+
+def _negative_sum(base: sp.Add) -> bool:
+    """Every term negative, or a number below zero (4 − 2π)."""
+    if base.is_number:
+        return bool(base.is_negative)
+    return all(term.could_extract_minus_sign() for term in base.args)
+
+
+def _turnable(base: sp.Add) -> bool:
+    """A difference a negative sign may go into: sympy's own sign rule (r − R), or a
+    number taken from a symbol (cos θ₀ − 1, which reads 1 − cos θ₀ turned); never a
+    number (2π − 4 is positive as it stands)."""
+    if base.is_number:
+        return False
+    if base.could_extract_minus_sign():
+        return True
+    return len(base.args) == 2 and any(t.is_Number and t.is_negative for t in base.args)
+
+
+def _power(base: sp.Expr, exp: sp.Expr) -> sp.Expr:
+    return base if exp == 1 else sp.Pow(base, exp, evaluate=False)
 
 
 def _rational_lead(expr: sp.Mul) -> tuple[str, sp.Rational, sp.Expr] | None:

@@ -56,3 +56,14 @@ def test_numbers_first_and_zero_terms_dropped():
 
 def test_a_coefficient_over_a_symbol_divides_the_whole():
     assert to_unicode(Product(1 / m, (sp.Symbol("lambda_A"),))) == "λ_A/m"
+
+
+@pytest.mark.parametrize("expr, form", [
+    (sp.sqrt(-2 * g * (sp.cos(th) - 1) / R), "√2 √g √(1 − cos(θ))/√R"),  # no leading minus under the root
+    ((-a * sp.sin(th) - b * sp.sin(th + W)) * e, "−e (a sin(θ) + b sin(Ω + θ))"),  # a negative sum's sign out
+    (a**2 * m * (4 - 2 * sp.pi) / sp.pi, "−a² m (2 π − 4)/π"),  # a negative number's sign out
+    (-2 * g / (3 * (r - R)), "2 g/(3 (R − r))"),
+    (-g * m * (R - r), "−g m (R − r)"),  # kept: the sign is outside a difference already written R − r
+])
+def test_signs_where_a_worked_solution_puts_them(expr, form):
+    assert to_unicode(expr) == form
