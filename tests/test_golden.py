@@ -70,7 +70,7 @@ def compare(got, want, where: str) -> None:
 
 SCANS = {
     # what the printed text of a solution must never have (issue 27)
-    "sympy syntax in prose": re.compile(r"\*\*|[A-Za-z0-9)]\*[A-Za-z(]|sqrt\(|Derivative\(|Integral\(|lamda"),
+    "sympy syntax in prose": re.compile(r"\*\*|[A-Za-z0-9)]\*[A-Za-z(]|sqrt\(|Derivative\(|Integral\(|Abs\(|lamda"),
     "a zero term": re.compile(r"[+−] 0(?![\d.])"),
     "a binomial with a leading minus": re.compile(r"\(−[^(),\[\]]* [+−] [^(),\[\]]*\)"),
     "a float that is zero within rounding": re.compile(r"= −?\d(\.\d+)?e-(1[2-9]|[2-9]\d)"),

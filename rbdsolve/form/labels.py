@@ -35,6 +35,8 @@ REGISTRY: dict[str, tuple[str, ...]] = {
     "amplitude": ("a", "X", "Y"),
     "total_mass": ("m", "M", "m_tot"),
     "angular_velocity": ("omega", "omega_b"),  # a body's ω beside a spin rate named omega
+    "coordinate_index": ("a", "j", "k"),  # I_a, ∂T/∂q̇_a in the impact's prose
+    "particle_mass": ("mu", "m_p"),  # u|i − P/μ: a sticking particle's mass
 }
 INDEXED = frozenset({"eigenvalue", "frequency", "growth_rate", "amplitude"})
 STRICT = frozenset({"amplitude", "eigenvalue"})  # indexed, yet a bare name of the letter moves them too:

@@ -188,6 +188,9 @@ class UnicodePrinter(StrPrinter):
     def _print_Pi(self, expr):
         return "π"
 
+    def _print_Abs(self, expr):
+        return f"|{self._print(expr.args[0])}|"
+
     def _print_Integral(self, expr):
         """∫ f dt (indefinite, one variable), as in F = … + ∫ (½ ẏ² − g y) dt."""
         if len(expr.limits) == 1 and len(expr.limits[0]) == 1:

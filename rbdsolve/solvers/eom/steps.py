@@ -11,6 +11,7 @@ from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.eom.answers import NumericEomAnswers
 from rbdsolve.solvers.shared.accelerations import state_step
 from rbdsolve.solvers.shared.present import present, present_equation
@@ -61,8 +62,9 @@ def lagrange_step(equations: tuple[sp.Expr, ...], model: Model) -> st.Step:
 
 def solved_step(solved: tuple[sp.Expr, ...], model: Model) -> st.Step:
     """q̈ = −M⁻¹ h, one line per coordinate."""
-    return st.result("Solved for the accelerations (the equations are linear in q̈: M(q) q̈ = −h(q, q̇), and "
-                     "det M ≠ 0):", *[Relation(model.to_time(a), model.to_time(v))
+    M = labels_for(model, "mass_matrix").text("mass_matrix")  # M_q beside a parameter M
+    return st.result(f"Solved for the accelerations (the equations are linear in q̈: {M}(q) q̈ = −h(q, q̇), and "
+                     f"det {M} ≠ 0):", *[Relation(model.to_time(a), model.to_time(v))
                                        for a, v in zip(model.qdd, solved)])
 
 

@@ -15,6 +15,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Step
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.impact.equations import ImpactEquations
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.shared.signs import sign_of
 
 BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))
@@ -87,8 +88,10 @@ def _sticking(work: ImpactEquations, show: _Show) -> list[Step]:
             for b in work.hits if b.components and b.collision is not None]
     rolling = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)), sp.Integer(0))
                for b in work.hits if b.components and b.collision is None]
-    out = [st.equation("A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/μ "
-                       "(P: its impulse on the system, every component unknown):", *rows)] if rows else []
+    mu = labels_for(work.model, "particle_mass").text("particle_mass")
+    out = [st.equation(f"A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/{mu} "
+                       f"(P: its impulse on the system, every component unknown; {mu}: the particle's mass):",
+                       *rows)] if rows else []
     if rolling:
         out.append(st.equation("Rolling without slipping on the plane goes on: the body's point at the contact "
                                "is at rest just after, v_C|f = 0 (the plane's impulse along it, F₁ t₁ + F₂ t₂, "
@@ -157,14 +160,21 @@ def _impulses(work: ImpactEquations, show: _Show) -> Step:
     rows = [Relation(sp.Symbol(f"P_{b.point}"), show.vector(b.impulse)) for b in work.hits]
     rows += [Relation(sp.Symbol(f"I_{n}"), show.scalar(I)) for n, I in zip(work.model.coordinate_names(), work.I)]
     unknown = "; λ n is a collision's unknown impulse, n its normal as given" if any(b.size for b in work.hits) else ""
-    return st.equation(f"Impulses on the system and the generalized impulses I_a = Σ P · ∂v/∂q̇_a{unknown}:",
+    a = _index(work)
+    return st.equation(f"Impulses on the system and the generalized impulses I{a} = Σ P · ∂v/∂q̇{a}{unknown}:",
                        *rows)
+
+
+def _index(work: ImpactEquations) -> str:
+    """_a, or _j where the scene has a name a (a parameter, a point)."""
+    return "_" + labels_for(work.model, "coordinate_index").name("coordinate_index")
 
 
 def _lagrange(work: ImpactEquations, show: _Show) -> Step:
     rows = [Relation(show.scalar(p.xreplace(work.after) - p.xreplace(work.before)), show.scalar(I))
             for p, I in zip(work.momenta, work.I)]
-    return st.equation("Lagrange's equations for impact, ∂T/∂q̇_a|f − ∂T/∂q̇_a|i = I_a (f: just after, "
+    a = _index(work)
+    return st.equation(f"Lagrange's equations for impact, ∂T/∂q̇{a}|f − ∂T/∂q̇{a}|i = I{a} (f: just after, "
                        "i: just before):", *rows)
 
 

@@ -11,6 +11,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.reactions.applied import Applied, applied
 from rbdsolve.solvers.reactions.balances import Balance
 from rbdsolve.solvers.reactions.supports import Held, How
@@ -63,7 +64,8 @@ def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance
 
 
 def accelerations_step(model: Model, solved) -> st.Step:
-    return st.substitution("The accelerations from Lagrange's equations (M q̈ = −h), put in:",
+    M = labels_for(model, "mass_matrix").text("mass_matrix")  # M_q beside a parameter M
+    return st.substitution(f"The accelerations from Lagrange's equations ({M} q̈ = −h), put in:",
                            *[Relation(model.to_time(a), model.to_time(v)) for a, v in zip(model.qdd, solved)])
 
 
