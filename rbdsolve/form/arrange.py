@@ -101,7 +101,7 @@ def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp
     if not terms:
         return sp.Integer(0)
     scale = common_scale([c for c, _ in terms], symbols) if len(terms) > 1 else sp.Integer(1)
-    items = tuple(Product(factored(sp.expand(c / scale)), factors) for c, factors in terms)
+    items = tuple(Product(factored(sp.expand(c / scale), bracketed=bool(factors)), factors) for c, factors in terms)
     inner = Terms(items) if len(items) > 1 else items[0]
     return inner if scale == 1 else Scaled(scale, inner)
 
@@ -154,7 +154,7 @@ def descending(poly: sp.Poly, variable: sp.Symbol | None = None) -> Terms:
     exam writes a characteristic equation: 25/48 μ² − 37/24 μ + 1, −3/2 m (R − r)² λ +
     g m (R − r); in ``variable`` (κ) where the polynomial's own is a stand-in."""
     x = variable if variable is not None else poly.gens[0]
-    return Terms(tuple(Product(factored(c), (x**k,) if k else ()) for (k,), c in poly.terms()))
+    return Terms(tuple(Product(factored(c, bracketed=k > 0), (x**k,) if k else ()) for (k,), c in poly.terms()))
 
 
 def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:

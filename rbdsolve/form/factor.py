@@ -23,10 +23,11 @@ MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs 
 
 
 @lru_cache(maxsize=4096)  # one quantity is shown in several steps (T, then the equations)
-def factored(expr: sp.Expr) -> sp.Expr:
+def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     """``expr`` with each sum in it factored for reading (``factored_sum``), where that
     prints no longer; sin θ, cos θ, q̇ … are taken as symbols, and π too where that
-    reads shorter ((7π² − 128π + 1024)/(3 (π − 16)²))."""
+    reads shorter ((7π² − 128π + 1024)/(3 (π − 16)²)). ``bracketed``: a sum would be
+    printed in brackets where it stands (a coefficient before q̈), so they count."""
     if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.has(sp.Add):
         return expr
     if sp.count_ops(expr) > MAX_OPS or expr.has(sp.Float):
@@ -39,7 +40,8 @@ def factored(expr: sp.Expr) -> sp.Expr:
     candidates = [c for c in candidates if c != expr] or [expr]
     best = min(candidates, key=lambda c: len(to_unicode(c)))
     # a sum of negative terms may spend its brackets: −(3/2 M r² + e² m), not (−3/2 M r² − e² m)
-    allowance = 2 if expr.is_Add and all(x.could_extract_minus_sign() for x in expr.args) else 0
+    negative = all(x.could_extract_minus_sign() for x in expr.args) if expr.is_Add else False
+    allowance = 2 if expr.is_Add and ((bracketed and not best.is_Add) or negative) else 0
     return best if len(to_unicode(best)) <= len(to_unicode(expr)) + allowance else expr
 
 

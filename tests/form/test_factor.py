@@ -67,3 +67,10 @@ def test_a_coefficient_over_a_symbol_divides_the_whole():
 ])
 def test_signs_where_a_worked_solution_puts_them(expr, form):
     assert to_unicode(expr) == form
+
+
+def test_a_coefficient_in_brackets_counts_them() -> None:
+    """Before q̈ a sum prints in brackets, so 1/3 a² (M + 3m) θ̈ is no longer than
+    (1/3 M a² + a² m) θ̈ — and a sum that stays a sum gains nothing."""
+    assert to_unicode(factored(M * a**2 / 3 + a**2 * m, bracketed=True)) == "1/3 a² (M + 3 m)"
+    assert to_unicode(factored(M * a**2 / 3 + a**2 * m)) == "1/3 M a² + a² m"
