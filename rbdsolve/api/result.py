@@ -139,9 +139,10 @@ class Result:
             return answers[key]
         found = [a for a in answers if a.question == key]
         if len(found) != 1:
-            kinds = ", ".join(a.question for a in answers)
-            why = "no" if not found else f"{len(found)} (index them: result[i])"
-            raise KeyError(f"{why} question '{key}' in {self.report.file}; its questions: {kinds}")
+            kinds = ", ".join(f"[{i}] {a.question}" for i, a in enumerate(answers))
+            why = (f"{self.report.file} has no question '{key}'" if not found else
+                   f"{self.report.file} asks '{key}' {len(found)} times: take one by its place, result[i]")
+            raise KeyError(f"{why}; its questions: {kinds}")
         return found[0]
 
     def __iter__(self) -> Iterator[Answer]:

@@ -3,6 +3,7 @@ solution; a teacher grades a class's numeric answers against ``rbdsolve variants
 
 from __future__ import annotations
 
+import sys
 from dataclasses import replace
 from pathlib import Path
 
@@ -192,7 +193,7 @@ def _print_summary(grades) -> None:
         share = f" ({100 * t.counts[Outcome.RIGHT] / max(sum(t.counts.values()), 1):.0f} %)"
         table.add_row(escape(t.answer), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
                       str(t.counts[Outcome.WRONG]), str(t.counts[Outcome.BLANK]), str(t.counts[Outcome.UNGRADED]))
-    console = Console(highlight=False, width=100, no_color=True) if not click.get_text_stream("stdout").isatty() \
+    console = Console(highlight=False, width=100, no_color=True) if not sys.stdout.isatty() \
         else Console(highlight=False)
     with console.capture() as captured:
         console.print(table)

@@ -31,6 +31,7 @@ from rbdsolve.errors import InputError, Location, did_you_mean
 
 _SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _INDEX = re.compile(r"\[(\d+)\]")
+_FIRST = re.compile(r"^([A-Za-z_]+)\(1\)(?=\.|$)")
 
 # (pattern of the alias, the question kind it belongs to, the path it stands for)
 ALIASES: tuple[tuple[re.Pattern, str, str], ...] = (
@@ -57,6 +58,7 @@ def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
     if any(int(i) == 0 for i in _INDEX.findall(address)):
         raise InputError(f"'{address}': indices count from 1, as in the printed solution "
                          "(modes.frequencies[1] is ω₁)", loc)
+    address = _FIRST.sub(r"\1", address)  # reactions(1).… is the first reactions question: reactions.…
     known = set(labels)
     if address in known:
         return address

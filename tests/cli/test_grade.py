@@ -178,3 +178,11 @@ def test_an_equilibrium_named_by_a_place_it_is_not(tmp_path, answer: str, messag
                  "equilibrium(theta=-pi).stability = unstable").exit_code == 0
     result = grade(path, "-a", answer)
     assert result.exit_code == 2 and message in result.stderr
+
+
+def test_the_first_of_repeated_questions_may_be_numbered_one(pendulum) -> None:
+    """The first question of a kind is 'modes', the second 'modes(2)'; 'modes(1)' is the
+    first too, as a student counting would write it."""
+    first = grade(pendulum, "-a", "modes(1).eigenvalues[1] = 2*g/l")
+    plain = grade(pendulum, "-a", "modes.eigenvalues[1] = 2*g/l")
+    assert first.exit_code == plain.exit_code != 2 and first.output == plain.output
