@@ -47,6 +47,25 @@ class Assumed:
         return sp.StrictGreaterThan(self.difference, 0) if self.strict else sp.GreaterThan(self.difference, 0)
 
 
+def implies(assumptions: tuple[Assumed, ...], condition: sp.Basic) -> bool:
+    """Whether the assumptions make a condition on one parameter hold for every value
+    they allow: the interval the assumptions on that parameter leave lies within the
+    condition's set (α ≤ π/2 under 0 < α < π/2). False where that is not decided so."""
+    free = condition.free_symbols
+    if len(free) != 1 or condition in (sp.true, sp.false):
+        return False
+    (p,) = free
+    mine = [a.relation for a in assumptions if a.relation.free_symbols == {p}]
+    if not mine:
+        return False
+    try:
+        allowed = sp.Intersection(*[r.as_set() for r in mine], sp.Interval.open(0, sp.oo) if p.is_positive else sp.S.Reals)
+        holds = sp.solveset(condition, p, allowed)  # over the allowed values only (tan α ≥ 0 is periodic)
+        return allowed.is_subset(holds) is True
+    except (NotImplementedError, TypeError, ValueError):
+        return False
+
+
 def assumed(problem: Problem, names: Symbols) -> tuple[Assumed, ...]:
     out = []
     for a in problem.assumptions:

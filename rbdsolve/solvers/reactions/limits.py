@@ -24,6 +24,7 @@ from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import clean_fraction
+from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.shared.conditions import Critical, exists_when
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
@@ -63,6 +64,10 @@ def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     ratio = sp.simplify(clean_fraction(F / N))
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
+        if implies(model.assumptions, sp.Ge(ratio, 0)):  # tan α ≥ 0 under 0 < α < π/2
+            return ratio
+        if implies(model.assumptions, sp.Le(ratio, 0)):
+            return -ratio
         return sp.Abs(ratio)
     return ratio if sign >= 0 else -ratio
 
@@ -104,6 +109,8 @@ def _nonnegative(value: sp.Expr, model: Model) -> Holds:
     found = exists_when((), model, [value])
     if found is None:
         return Holds(sp.Ge(value, 0), ())
+    if implies(model.assumptions, found.condition):  # α ≤ π/2 under 0 < α < π/2: it always holds
+        return Holds(sp.true, ())
     return Holds(found.condition, found.criticals)
 
 
