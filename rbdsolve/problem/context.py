@@ -185,8 +185,9 @@ class Reading:
         for key, value in table.entries:
             order, name = _state_key(key.text)
             if name not in names or order not in orders:
+                keys = [_state_name(k, n) for k in orders for n in names]  # dot(thta): dot(theta)
                 raise InputError(f"'{key.text}' is not a coordinate{_ORDER_WORDS[orders]}"
-                                 f"{did_you_mean(name, names)}", key.loc)
+                                 f"{did_you_mean(key.text.strip(), keys)}", key.loc)
             given[(order, name)] = self.constant(value, f"{_WHAT[order]} in {what}")
         wanted = [(k, n) for k in orders for n in names]
         missing = [_state_name(k, n) for k, n in wanted if (k, n) not in given]

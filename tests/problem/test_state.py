@@ -36,7 +36,7 @@ def _check(tmp_path, text: str):
     (_rod("at: {dot(theta): 0}"), "questions[0].reactions.at", "missing theta"),
     (_rod("from_rest: {}"), "questions[0].reactions.from_rest", "missing theta"),
     (_rod("at: {theta: 0, dot(thta): 0}"), "questions[0].reactions.at.dot(thta)",
-     "'dot(thta)' is not a coordinate, nor dot() of one (did you mean 'theta'?)"),
+     "'dot(thta)' is not a coordinate, nor dot() of one (did you mean 'dot(theta)'?)"),
     (_rod("at: {theta: 0, dot(theta): 0, ddot(theta): 0}"), "questions[0].reactions.at.ddot(theta)",
      "'ddot(theta)' is not a coordinate, nor dot() of one"),
     (_rod("from_rest: {dot(theta): 0}"), "questions[0].reactions.from_rest.dot(theta)",
