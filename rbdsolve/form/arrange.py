@@ -157,6 +157,9 @@ def descending(poly: sp.Poly, variable: sp.Symbol | None = None) -> Terms:
     return Terms(tuple(Product(factored(c, bracketed=k > 0), (x**k,) if k else ()) for (k,), c in poly.terms()))
 
 
+SCENE_BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))  # the scene's axes, eₓ, e_y, e_z
+
+
 def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:
     """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors,
     each starting with a positive term where it has one (v₀ − P_y/m, not −P_y/m + v₀)."""

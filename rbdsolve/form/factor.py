@@ -51,12 +51,25 @@ def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
     back = {v: k for k, v in table.items()}
     plain = expr.xreplace(table)
     if plain.is_Add:
-        return factored_sum(plain).xreplace(back)
+        return _restored(factored_sum(plain, alone=True), back)
     factors = sp.Mul.make_args(plain)
     turned = [_factored_power(f) for f in factors]
     if list(factors) == turned:
         return expr  # (rebuilding the product could lose a form such as −(R + r))
-    return sp.Mul(*turned).xreplace(back)
+    return _restored(sp.Mul(*turned), back)
+
+
+def _restored(expr: sp.Expr, back: dict) -> sp.Expr:
+    """The stand-ins put back without evaluating sums and products again: xreplace would
+    multiply −1 (or 1/2) back into the sum that factoring took it out of."""
+    if expr in back:
+        return back[expr]
+    if not expr.args:
+        return expr
+    args = [_restored(a, back) for a in expr.args]
+    if isinstance(expr, (sp.Add, sp.Mul, sp.Pow)):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
 
 
 def _number_distributed(expr: sp.Expr) -> sp.Expr:
@@ -76,25 +89,31 @@ def _factored_power(factor: sp.Expr) -> sp.Expr:
     return factored_sum(base) ** exp if base.is_Add else factor
 
 
-def factored_sum(total: sp.Add) -> sp.Expr:
+def factored_sum(total: sp.Add, alone: bool = False) -> sp.Expr:
     """content × primitive part, the primitive part factored over the rationals where it
     splits: 3/4 R² m − 3/2 R m r + 3/4 m r² = 3/4 m (R − r)², l₁m₁ + l₁m₂ + l₂m₁ + l₂m₂
     = (l₁ + l₂)(m₁ + m₂). The content is the common monomial, with the common rational
     when every coefficient is rational (1/12 m (4a² + b²)), and −1 when every term is
-    negative; a coefficient with π keeps its fraction (R² m (3/4 − 4 cos θ/(3π)))."""
+    negative; a coefficient with π keeps its fraction (R² m (3/4 − 4 cos θ/(3π))).
+    ``alone``: the sum is the whole expression, not a factor beside others (k (…)), so
+    a number would be all it has in front."""
     terms = sp.Add.make_args(sp.expand(total))
-    integral, plain = (_with_content(total, _content(terms, rational)) for rational in (True, False))
+    integral, plain = (_with_content(total, _content(terms, rational), alone) for rational in (True, False))
+    if integral == total:
+        return plain
     # whole coefficients inside, 1/2 g m (2R − a), unless that costs more than the "1/2 "
     return integral if len(to_unicode(integral)) <= len(to_unicode(plain)) + 4 else plain
 
 
-def _with_content(total: sp.Add, content: sp.Expr) -> sp.Expr:
+def _with_content(total: sp.Add, content: sp.Expr, alone: bool) -> sp.Expr:
     """content × (total/content), the second factor factored where it splits."""
     inner = sp.expand(total / content)
     symbols = sorted(inner.free_symbols, key=sp.default_sort_key)
     if symbols and inner.is_polynomial(*symbols):
         if _splits(sp.Poly(inner, *symbols)):
             inner = squares_joined(sp.factor(inner))
+        elif alone and content.is_Number and content not in (1, -1) and any(isinstance(x, sp.Dummy) for x in symbols):
+            return total  # a number alone out of a sum with sin θ, 1/8 (4cθ² − 4πcθ + …), only clutters
     elif symbols:
         whole = squares_joined(sp.factor(sp.together(total)))  # one fraction, if shorter
         if len(to_unicode(whole)) < len(to_unicode(sp.Mul(content, inner))):

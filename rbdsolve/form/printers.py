@@ -413,7 +413,7 @@ def to_unicode(value: Math) -> str:
     if isinstance(value, Scaled):
         inner = to_unicode(value.inner)
         if value.factor == -1 and isinstance(value.inner, Terms):  # −(P_y/m + v₁), not −1 [P_y/m + v₁]
-            return f"-({inner})"
+            return f"−({inner})"
         bracket = isinstance(value.inner, Terms) or (
             isinstance(value.inner, sp.MatrixBase) and 1 not in value.inner.shape)
         return f"{to_unicode(value.factor)} {inner}" if bracket and inner.startswith("[") else (

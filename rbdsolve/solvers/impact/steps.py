@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import configuration, in_basis, ordered_sum, scaled_sum
+from rbdsolve.form.arrange import SCENE_BASIS, configuration, in_basis, ordered_sum, scaled_sum
 from rbdsolve.form.display import Label, Math, Relation
 from rbdsolve.form.printers import float_text, to_unicode, within_rounding
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
@@ -18,7 +18,7 @@ from rbdsolve.solvers.impact.equations import ImpactEquations
 from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.shared.signs import sign_of
 
-BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))
+BASIS = SCENE_BASIS
 
 
 class _Show:

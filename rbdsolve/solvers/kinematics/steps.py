@@ -5,14 +5,23 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.display import Relation
+from rbdsolve.form.arrange import SCENE_BASIS, in_basis
+from rbdsolve.form.display import Math, Relation
+from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.shared.present import present
 from rbdsolve.solvers.kinematics.answers import KinematicsAnswers, NumericKinematicsAnswers
 
 
 def _row(vector) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix([list(vector)]).T
+
+
+def _vector(vector, model: Model) -> Math:
+    """Along the scene's axes, each component collected in the rates as Lagrange's
+    equations are (q̈, then q̇²…): a_B = (… θ̈ − … θ̇²) eₓ + …"""
+    return in_basis([(present(tidy(x), model), e) for x, e in zip(vector, SCENE_BASIS) if sp.expand(x) != 0])
 
 
 def _state_symbol(key: str, model: Model) -> sp.Expr:
@@ -30,12 +39,12 @@ def exact_steps(answers: KinematicsAnswers, general: dict, model: Model) -> tupl
     if answers.at:
         steps.append(st.given("The state:", *(Relation(_state_symbol(k, model), v) for k, v in answers.at.items())))
     for name in general:
-        r, v, a = (model.to_time(m) for m in general[name])
+        r, v, a = (_vector(m, model) for m in general[name])
         steps.append(st.equation(
             f"Point {name}: its position in the scene's axes, and by the chain rule "
             "v = Σ ∂r/∂q q̇ + ∂r/∂t, a = dv/dt:",
-            Relation(sp.Symbol(f"r_{name}"), _row(r)), Relation(sp.Symbol(f"v_{name}"), _row(v)),
-            Relation(sp.Symbol(f"a_{name}"), _row(a))))
+            Relation(sp.Symbol(f"r_{name}"), r), Relation(sp.Symbol(f"v_{name}"), v),
+            Relation(sp.Symbol(f"a_{name}"), a)))
     for p in answers.points:
         steps.append(st.result(
             f"Point {p.point}" + (" at the state:" if answers.at else ":"),
