@@ -53,6 +53,8 @@ def answer_units(answers: object, model: Model) -> object:
             return None
         if _coordinate_value(named, coordinates):
             return _coordinate_unit(named[-1], coordinates, angles)
+        if _kinematic(named):  # what it is fixes it: a state's bare rate 2 is 2 rad/s, not a pure number
+            return _RATES[named[-1]].unit if named[-1] in _RATES else (LENGTH / TIME).unit
         if leaf == 0:
             return _ZERO
         found = dimension_of(leaf, dimensions)
@@ -75,6 +77,13 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
 }
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
 _PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
+
+
+def _kinematic(named: list[str]) -> bool:
+    """A point's position, velocity, acceleration or speed, or a distance and its rate:
+    their units are fixed, and a state's rates given as bare numbers carry none to read."""
+    return bool(named) and ("points" in named and named[-1] in ("position", "velocity", "acceleration", "speed")
+                            or "distances" in named and named[-1] in ("distance", "rate"))
 
 
 def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:

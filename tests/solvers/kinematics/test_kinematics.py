@@ -53,3 +53,26 @@ def test_bad_options_are_located(option, message, tmp_path) -> None:
     assert result.exit_code == 2 and message in result.output and f"{path}:11:" in result.output, result.output
     with pytest.raises(InputError):
         load_text(path.read_text())
+
+
+def test_a_state_given_as_bare_numbers_still_gives_si_units(tmp_path) -> None:
+    """A state's rates are SI numbers (dot(theta): 2 is 2 rad/s), so a point's velocity
+    is in m/s and its acceleration in m/s² (by hand: v = l θ̇ = 0.6 m/s here)."""
+    import json
+
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    path = tmp_path / "pendulum.yaml"
+    path.write_text(
+        "parameters: {m: mass, l: length, g: gravity}\nvalues: {m: 200 g, l: 30 cm, g: 9.81 m/s^2}\n"
+        "coordinates: [theta]\ngravity: [0, -g]\npoints:\n  P: l*[sin(theta), -cos(theta)]\n"
+        "bodies:\n  bob: {shape: particle, mass: m, at: P}\nquestions:\n"
+        "  - kinematics: {points: [P], at: {theta: pi/6, dot(theta): 2, ddot(theta): 0}}\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    solution = json.loads(result.stdout)["results"][0]
+    point = solution["units"]["points"][0]
+    assert point["velocity"] == ["m/s"] * 3 and point["acceleration"] == ["m/s²"] * 3 and point["speed"] == "m/s"
+    assert abs(solution["values"]["points"][0]["speed"] - 0.6) < 1e-12
