@@ -160,6 +160,11 @@ def descending(poly: sp.Poly, variable: sp.Symbol | None = None) -> Terms:
 SCENE_BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))  # the scene's axes, eₓ, e_y, e_z
 
 
+def along_axes(vector, shown: Callable[[sp.Expr], Math]) -> Math:
+    """A scene vector along eₓ, e_y, e_z, each nonzero component as ``shown`` writes it."""
+    return in_basis([(shown(x), e) for x, e in zip(vector, SCENE_BASIS) if sp.expand(x) != 0])
+
+
 def in_basis(components: list[tuple[Math, sp.Symbol]]) -> Math:
     """(ẋ − 1/2 l φ̇) eₓ + ω₀ cos θ e₃: the nonzero components along their basis vectors,
     each starting with a positive term where it has one (v₀ − P_y/m, not −P_y/m + v₀)."""

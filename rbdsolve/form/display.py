@@ -37,6 +37,12 @@ class Product:
     def value(self) -> sp.Expr:
         return sp.Mul(self.coefficient, *self.factors)
 
+    def divides(self) -> bool:
+        """A coefficient 1/m (a number over symbols) reads as dividing the whole: λ_A/m,
+        not 1/m λ_A; every printer then prints the plain product."""
+        top, bottom = sp.fraction(self.coefficient)
+        return bool(self.factors) and top.is_Number and bool(bottom.free_symbols)
+
 
 @dataclass(frozen=True)
 class Scaled:
@@ -47,6 +53,10 @@ class Scaled:
 
     def value(self):
         return self.factor * plain(self.inner)
+
+    def negates(self) -> bool:
+        """−1 × a sum: printed −(P_y/m + v₁), not −1 [P_y/m + v₁]."""
+        return self.factor == -1 and isinstance(self.inner, Terms)
 
 
 @dataclass(frozen=True)

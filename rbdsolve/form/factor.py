@@ -199,8 +199,7 @@ def _conjugate(factor: sp.Expr, others: list[sp.Expr]) -> sp.Expr | None:
     u, v = base.args
     for other in others:
         b, e = other.as_base_exp()
-        if e == exp and b.is_Add and len(b.args) == 2 and b != base and (
-                {b, -b} & {u - v, v - u}) and base in (u + v,):
+        if e == exp and b != base and {b, -b} & {u - v, v - u}:
             return other
     return None
 

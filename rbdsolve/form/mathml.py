@@ -20,7 +20,7 @@ from sympy.printing.mathml import MathMLPresentationPrinter
 
 from rbdsolve.form.display import Along, Label, Math, Product, Relation, Scaled, Terms
 from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, positive_first, \
-    sign_into_difference, split_name
+    signs_placed, split_name
 
 _DOTS = {1: "\u02d9", 2: "\u00a8", 3: "\u20db"}  # ˙ ¨ ⃛ : spacing accents over the base letter
 _XML_ENTITIES = {"lt", "gt", "amp", "quot", "apos"}
@@ -133,7 +133,7 @@ class MathMLPrinter(MathMLPresentationPrinter):
         return super()._print_Pow(e)
 
     def _print_Mul(self, expr):
-        turned = sign_into_difference(expr)
+        turned = signs_placed(expr)
         if turned is not None:
             return self._print(turned)
         lead = _rational_lead(expr)
@@ -234,7 +234,7 @@ def to_mathml(value: Math) -> str:
         return _token("mtext", value)
     if isinstance(value, Scaled):
         inner = to_mathml(value.inner)
-        if value.factor == -1 and isinstance(value.inner, Terms):  # −(P_y/m + v₁)
+        if value.negates():
             return _tag("mrow", _mo("−"), fenced(inner))
         return _tag("mrow", to_mathml(value.factor), fenced(inner, "[", "]") if isinstance(value.inner, Terms) else inner)
     if isinstance(value, Terms):
@@ -248,8 +248,8 @@ def to_mathml(value: Math) -> str:
 
 def _product(value: Product) -> str:
     c = value.coefficient
-    if value.factors and sp.fraction(c)[0].is_Number and sp.fraction(c)[1].free_symbols:
-        return to_mathml(sp.Mul(c, *value.factors))  # λ_A/m, as the other printers
+    if value.divides():
+        return to_mathml(value.value())
     parts = []
     if c == -1 and value.factors:
         parts.append(_mo("−"))

@@ -228,7 +228,7 @@ class UnicodePrinter(StrPrinter):
         return super()._print_Pow(expr, rational)
 
     def _print_Mul(self, expr):
-        turned = sign_into_difference(expr)
+        turned = signs_placed(expr)
         if turned is not None:
             return self._print(turned)
         lead = _rational_lead(expr)
@@ -262,7 +262,7 @@ class UnicodePrinter(StrPrinter):
         return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
 
 
-def sign_into_difference(expr: sp.Mul) -> sp.Expr | None:
+def signs_placed(expr: sp.Mul) -> sp.Expr | None:
     """A product's signs where a worked solution puts them, or None where nothing moves:
 
     - a factor whose terms are all negative gives its sign to the product,
@@ -374,7 +374,7 @@ class TexPrinter(LatexPrinter):
         return super()._print_Derivative(expr)
 
     def _print_Mul(self, expr):
-        turned = sign_into_difference(expr)
+        turned = signs_placed(expr)
         if turned is not None:
             return self._print(turned)
         lead = _rational_lead(expr)
@@ -393,8 +393,8 @@ def _product_parts(value: Product, printer) -> list[str]:
     """The coefficient, then the factors in their order: 1/4 cos(φ − θ) θ̇ φ̇; a
     coefficient over a symbol divides the whole, λ_A/m, not 1/m λ_A."""
     c = value.coefficient
-    if value.factors and sp.fraction(c)[0].is_Number and sp.fraction(c)[1].free_symbols:
-        return [printer(sp.Mul(c, *value.factors))]
+    if value.divides():
+        return [printer(value.value())]
     parts = []
     if c == -1 and value.factors:
         parts.append("-")
@@ -412,7 +412,7 @@ def to_unicode(value: Math) -> str:
         return value.text
     if isinstance(value, Scaled):
         inner = to_unicode(value.inner)
-        if value.factor == -1 and isinstance(value.inner, Terms):  # −(P_y/m + v₁), not −1 [P_y/m + v₁]
+        if value.negates():
             return f"−({inner})"
         bracket = isinstance(value.inner, Terms) or (
             isinstance(value.inner, sp.MatrixBase) and 1 not in value.inner.shape)
@@ -454,7 +454,7 @@ def to_latex(value: Math) -> str:
         return f"\\text{{{value.encode('ascii', 'replace').decode()}}}"
     if isinstance(value, Scaled):
         inner = to_latex(value.inner)
-        if value.factor == -1 and isinstance(value.inner, Terms):
+        if value.negates():
             return f"-\\left({inner}\\right)"
         if isinstance(value.inner, Terms):
             inner = f"\\left[{inner}\\right]"

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import SCENE_BASIS, configuration, in_basis, ordered_sum, scaled_sum
+from rbdsolve.form.arrange import along_axes, configuration, ordered_sum, scaled_sum
 from rbdsolve.form.display import Label, Math, Relation
 from rbdsolve.form.printers import float_text, to_unicode, within_rounding
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
@@ -18,7 +18,6 @@ from rbdsolve.solvers.impact.equations import ImpactEquations
 from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.shared.signs import sign_of
 
-BASIS = SCENE_BASIS
 
 
 class _Show:
@@ -48,7 +47,7 @@ class _Show:
 
     def vector(self, v: sp.Matrix) -> Math:
         """(ẋ − 1/2 l φ̇) eₓ + …"""
-        return in_basis([(self.scalar(x), e) for x, e in zip(v, BASIS) if sp.expand(x) != 0])
+        return along_axes(v, self.scalar)
 
     def angular(self, omega: sp.Matrix) -> Math:
         """A planar ω (about z) as a scalar, else a vector."""

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import SCENE_BASIS, in_basis
+from rbdsolve.form.arrange import along_axes
 from rbdsolve.form.display import Math, Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
@@ -21,7 +21,7 @@ def _row(vector) -> sp.ImmutableMatrix:
 def _vector(vector, model: Model) -> Math:
     """Along the scene's axes, each component collected in the rates as Lagrange's
     equations are (q̈, then q̇²…): a_B = (… θ̈ − … θ̇²) eₓ + …"""
-    return in_basis([(present(tidy(x), model), e) for x, e in zip(vector, SCENE_BASIS) if sp.expand(x) != 0])
+    return along_axes(vector, lambda x: present(tidy(x), model))
 
 
 def _state_symbol(key: str, model: Model) -> sp.Expr:
