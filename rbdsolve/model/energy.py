@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.model.build import Model, RigidBody
-from rbdsolve.model.state import State
+from rbdsolve.model.state import State, t
 from rbdsolve.form.tidy import collect_in, tidy, tidy_matrix
 
 
@@ -95,6 +95,56 @@ def tidy_quadratic(T: sp.Expr, qd: tuple[sp.Expr, ...]) -> sp.Expr:
     return sp.Add(*[mono * coeff for mono, coeff in collect_in(T, list(qd)).items()])
 
 
+@dataclass(frozen=True)
+class BodyJacobians:
+    """A body's v_G = J_v q̇ + v_t and ω = J_ω q̇ + ω_t: the Jacobians, its inertia J_G in
+    scene axes, and whether it moves when every q̇ is 0 (v_t or ω_t ≠ 0: a driven
+    frame, a given velocity)."""
+
+    body: RigidBody
+    J_v: sp.Matrix
+    J_w: sp.Matrix
+    J_G: sp.Matrix
+    moves_at_rest: bool
+
+
+@memoized
+def jacobians(model: Model) -> tuple[BodyJacobians, ...]:
+    """Each body's velocity Jacobians (once per model: M at every configuration, and the
+    model section's M(q), use them)."""
+    out = []
+    for body in model.bodies:
+        (J_v, v_t), (J_w, w_t) = _translation(body, model.state), _rotation(body, model.state)
+        moves = any(x != sp.zeros(*x.shape) for x in (v_t, w_t))
+        out.append(BodyJacobians(body, J_v, J_w, body.inertia_in_scene(), moves))
+    return tuple(out)
+
+
+def _translation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
+    """(J_v, v_t): from r_G(q, t) directly, J_v = ∂r_G/∂q and v_t = ∂r_G/∂t (cheaper
+    than differentiating v_G = dr_G/dt again); from v_G where it is given."""
+    r = body.position
+    if r is not None and not r.has(*state.qd):
+        return r.jacobian(state.q), sp.diff(r, t)
+    return _split(body.velocity(state), state)
+
+
+def _rotation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
+    """(J_ω, ω_t): for a planar angle α(q, t), ω = α̇ e_z, so J_ω's last row is ∂α/∂q."""
+    angle = body.angle
+    if body.given_angular_velocity is None and not body.turns_3d and angle is not None \
+            and not angle.has(*state.qd):
+        J = sp.zeros(3, len(state.q))
+        J[2, :] = sp.Matrix([[sp.diff(angle, q) for q in state.q]])
+        return J, sp.Matrix([0, 0, sp.diff(angle, t)])
+    return _split(body.angular_velocity(state), state)
+
+
+def _split(velocity: sp.Matrix, state: State) -> tuple[sp.Matrix, sp.Matrix]:
+    """A velocity linear in q̇, J q̇ + v_t, as (J, v_t)."""
+    return velocity.jacobian(state.qd), velocity.xreplace({qd: 0 for qd in state.qd})
+
+
 def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Matrix:
     """M(q) = Σ (m J_vᵀ J_v + J_ωᵀ J_G J_ω), optionally evaluated at a configuration.
 
@@ -103,13 +153,11 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
     """
     n = len(model.q)
     M = sp.zeros(n, n)
-    for body in model.bodies:
-        J_v = body.velocity(model.state).jacobian(model.qd)
-        J_w = body.angular_velocity(model.state).jacobian(model.qd)
-        J_G = body.inertia_in_scene()
+    for b in jacobians(model):
+        J_v, J_w, J_G = b.J_v, b.J_w, b.J_G
         if at:
             J_v, J_w, J_G = (x.xreplace(at) for x in (J_v, J_w, J_G))
-        M += body.mass * J_v.T * J_v + J_w.T * J_G * J_w
+        M += b.body.mass * J_v.T * J_v + J_w.T * J_G * J_w
     return tidy_matrix(M)
 
 

@@ -12,6 +12,7 @@ Answers leave the model as functions of time (``theta(t)``), via :meth:`State.to
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property, lru_cache
 
 import sympy as sp
 from sympy.core.function import UndefinedFunction
@@ -20,6 +21,7 @@ from sympy.printing.precedence import PRECEDENCE
 t = sp.Symbol("t", real=True)
 
 
+@lru_cache(maxsize=None)
 def user_function(name: str) -> UndefinedFunction:
     """The real function of time that a name from a problem file stands for (θ(t)).
 
@@ -27,7 +29,10 @@ def user_function(name: str) -> UndefinedFunction:
     precedence up by class name: a coordinate called ``Integer``, ``Rational`` or
     ``Float`` would be printed as if it were that number class, and crash. An object's
     own ``precedence`` is asked first, so giving the class one (that of any function)
-    keeps the user's names in a namespace of their own."""
+    keeps the user's names in a namespace of their own.
+
+    Cached: each call would otherwise build a new class (sympy prepares its assumptions
+    per class), thousands of times for a large model's answers."""
     return UndefinedFunction(name, __dict__={"precedence": PRECEDENCE["Func"]}, real=True)
 
 
@@ -55,13 +60,22 @@ class State:
         return out
 
     def functions(self) -> tuple[sp.Expr, ...]:
+        return self._functions
+
+    @cached_property
+    def _functions(self) -> tuple[sp.Expr, ...]:
         return tuple(user_function(n)(t) for n in self.names)
 
-    def to_time(self, expr):
-        """q -> q(t), q̇ -> Derivative(q(t), t), q̈ -> Derivative(q(t), (t, 2))."""
+    @cached_property
+    def _to_time_table(self) -> dict:
         table = {}
         for f, q, qd, qdd in zip(self.functions(), self.q, self.qd, self.qdd):
             table[q] = f
             table[qd] = sp.Derivative(f, t)
             table[qdd] = sp.Derivative(f, (t, 2))
+        return table
+
+    def to_time(self, expr):
+        """q -> q(t), q̇ -> Derivative(q(t), t), q̈ -> Derivative(q(t), (t, 2))."""
+        table = self._to_time_table
         return expr.xreplace(table) if table else expr

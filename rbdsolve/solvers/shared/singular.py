@@ -28,6 +28,7 @@ import random
 from typing import TYPE_CHECKING, Sequence
 
 import sympy as sp
+from sympy.polys.matrices import DomainMatrix
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
@@ -58,8 +59,11 @@ def describe(vectors: Sequence[Sequence[str]], names: Sequence[str], where: str)
 
 
 def exact_reason(M: sp.Matrix, names: Sequence[str], where: str) -> str | None:
-    """None when M is regular, else the reason (exact null space)."""
-    if M.det() != 0:
+    """None when M is regular, else the reason (exact null space). The determinant is
+    taken over the ring of M's entries (DomainMatrix: fraction-free, fast on the
+    polynomials in the parameters that M at a configuration usually holds)."""
+    ring = DomainMatrix.from_Matrix(sp.Matrix(M))
+    if not ring.domain.is_zero(ring.det()):
         return None
     null = sp.Matrix(M).nullspace(simplify=True)
     texts = []
