@@ -18,6 +18,14 @@ class Motion(Enum):
     DEPENDS = "depends"  # on the parameters: see cases
 
 
+class Form(Enum):
+    """How an exact route's eigenvalue is given: a formula, or a decimal each of whose
+    digits is proven (a root of a factor of degree ≥ 5: solvers/modes/certified.py)."""
+
+    EXACT = "exact"
+    CERTIFIED = "certified"
+
+
 @dataclass(frozen=True)
 class MotionCase:
     when: sp.Basic  # a condition on the parameters
@@ -39,6 +47,8 @@ class ModesAnswers:
     amplitude_check: object = None  # solvers/modes/amplitude.py, with 'check_amplitudes'
     cases: tuple[tuple[MotionCase, ...], ...] = ()  # per λ: its kind case by case (empty: decided)
     critical: tuple[CriticalValue, ...] = ()  # where a λ changes sign
+    forms: tuple[Form, ...] = ()  # per λ: a formula, or certified decimals (its ω, γ and shape alike)
+    certified_digits: int | None = None  # the significant digits of every certified decimal
 
 
 @dataclass(frozen=True)

@@ -42,7 +42,8 @@ from rbdsolve.solvers.modes.amplitude import with_check
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relation
-from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers, Motion, MotionCase, Skipped
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped
+from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
 from rbdsolve.solvers.shared.conditions import changes, critical_values, exists_when, existing, partition, what_decides
@@ -110,17 +111,40 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true) -> tuple[ModesAn
     if singular:
         raise UnsolvedError(singular)
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
-    eigenvalues = [lam for lam, _, _ in spectrum.pairs]
+    eigenvalues = [pair.lam for pair in spectrum.pairs]
     motions, cases, criticals = _motions(eigenvalues, K, model, where)
-    frequencies = tuple(tidy(sp.sqrt(lam)) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
-                        for lam, mo in zip(eigenvalues, motions))
+    frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
+                        for pair, mo in zip(spectrum.pairs, motions))
     shapes = _shapes(spectrum, model.values)
-    rates = tuple(tidy(sp.sqrt(-lam)) if mo in (Motion.GROWTH, Motion.DEPENDS) else None
-                  for lam, mo in zip(eigenvalues, motions))
+    rates = tuple(_rate(pair, spectrum.scale, -1) if mo in (Motion.GROWTH, Motion.DEPENDS) else None
+                  for pair, mo in zip(spectrum.pairs, motions))
+    certified = [pair.certified for pair in spectrum.pairs]
     answers = ModesAnswers(chosen, M, K, spectrum.characteristic, tuple(eigenvalues), frequencies, motions, shapes,
                            rates, tuple(eigenvalues.count(lam) for lam in eigenvalues), None,
-                           cases if any(cases) else (), critical_values(criticals))
+                           cases if any(cases) else (), critical_values(criticals),
+                           tuple(Form.EXACT if c is None else Form.CERTIFIED for c in certified),
+                           next((c.digits for c in certified if c is not None), None))
     return answers, exact_steps(answers, model, spectrum.steps)
+
+
+def _rate(pair: _Pair, scale: sp.Expr, sign: int) -> sp.Expr:
+    """ω = √λ (sign 1) or γ = √(−λ) (sign −1); for a certified μ, √scale times its own
+    certified √|μ| (rounding √ of the rounded μ would not keep every digit proven)."""
+    if pair.certified is not None:
+        return pair.certified.root * sp.Pow(scale, sp.S.Half, evaluate=scale.is_Atom)
+    return tidy(sp.sqrt(sign * pair.lam))
+
+
+@dataclass(frozen=True)
+class _Pair:
+    """An eigenvalue λ and the root of the eigenproblem actually solved (μ, or λ
+    itself), with the irreducible factor it solves and, for a factor of high degree,
+    its certified decimals (certified.py)."""
+
+    lam: sp.Expr
+    root: sp.Expr
+    factor: sp.Poly
+    certified: CertifiedRoot | None = None
 
 
 @dataclass(frozen=True)
@@ -131,9 +155,10 @@ class _Spectrum:
     K: sp.Matrix
     M: sp.Matrix
     x: sp.Symbol  # the variable of the eigenproblem solved: μ (scaled) or λ
-    pairs: list[tuple[sp.Expr, sp.Expr, sp.Poly]]  # (λ, root, the irreducible factor it solves)
+    pairs: list[_Pair]
     steps: tuple[Relation, ...]
     characteristic: sp.Expr  # det(K − λM)
+    scale: sp.Expr = sp.Integer(1)  # λ = scale · x
 
 
 def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectrum:
@@ -143,15 +168,15 @@ def _spectrum(K: sp.Matrix, M: sp.Matrix, symbols: set, model: Model) -> _Spectr
     M_hat, K_hat = M / s_M, K / s_K
     if _rational(M_hat) and _rational(K_hat):
         poly = _charpoly_rational(K_hat, M_hat)  # det(K̂ − μ M̂) over QQ
-        pairs = [(tidy(scale * mu), mu, f) for mu, f in _rational_roots(poly)]
+        pairs = [_Pair(tidy(scale * mu), mu, f, c) for mu, f, c in _rational_roots(poly, K_hat, M_hat)]
         mu, lam = labels.symbol("scaled_eigenvalue"), labels.symbol("eigenvalue")
         steps = (Relation(_det(labels), sp.Integer(0)), Relation(descending(poly, mu), sp.Integer(0), lead="⇒"),
                  Relation(mu, tidy(lam / scale), lead="with"))
         # det(K − λM) = s_Kⁿ det(K̂ − μM̂) with μ = λ s_M/s_K
         characteristic = tidy(s_K ** K.rows * poly.as_expr().subs(MU, LAMBDA * s_M / s_K))
-        return _Spectrum(K_hat, M_hat, MU, _ascending(pairs, model), steps, characteristic)
+        return _Spectrum(K_hat, M_hat, MU, _ascending(pairs, model), steps, characteristic, scale)
     poly = sp.Poly((K - LAMBDA * M).det(method="berkowitz"), LAMBDA)
-    pairs = [(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
+    pairs = [_Pair(lam, lam, poly) for lam in (sp.factor_terms(sp.together(x)) for x in _roots(poly, LAMBDA))]
     steps = (Relation(_det(labels), sp.Integer(0)),
              Relation(descending(poly, labels.symbol("eigenvalue")), sp.Integer(0), lead="⇒"))
     return _Spectrum(K, M, LAMBDA, _ascending(pairs, model), steps, tidy(poly.as_expr()))
@@ -162,21 +187,32 @@ def _rational(matrix: sp.Matrix) -> bool:
 
 
 def _charpoly_rational(K_hat: sp.Matrix, M_hat: sp.Matrix) -> sp.Poly:
-    """det(K̂ − μ M̂) with exact rational arithmetic (DomainMatrix over QQ[μ])."""
-    A = DomainMatrix.from_Matrix(sp.Matrix(K_hat - MU * M_hat)).convert_to(sp.QQ[MU])
-    return sp.Poly(A.det().as_expr(), MU)
+    """det(K̂ − μ M̂) with exact rational arithmetic: with M̂ invertible,
+
+        det(K̂ − μM̂) = det(M̂) det(M̂⁻¹K̂ − μ1) = (−1)ⁿ det(M̂) p(μ),
+
+    p the characteristic polynomial det(μ1 − M̂⁻¹K̂), over QQ (DomainMatrix; a
+    determinant over QQ[μ] costs seconds from n ≈ 30)."""
+    M_q, K_q = (DomainMatrix.from_Matrix(sp.Matrix(A)).convert_to(sp.QQ) for A in (M_hat, K_hat))
+    p = sp.Poly([sp.QQ.to_sympy(c) for c in (M_q.inv() * K_q).charpoly()], MU)
+    return p * (sp.Integer(-1) ** K_hat.rows * sp.QQ.to_sympy(M_q.det()))
 
 
 MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CRootOf
 
 
-def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
-    """Every root of a polynomial over QQ, with the irreducible factor it belongs to:
-    closed forms for factors of degree ≤ 2 and for cubics with a compact real
-    (trigonometric) form, each checked against the isolated roots (``_agree``); exact
-    CRootOf(f, k) otherwise. No Ferrari quartics."""
+def _rational_roots(poly: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[tuple]:
+    """Every root of det(K − μM), a polynomial over QQ, with the irreducible factor it
+    belongs to and, for a factor of degree ≥ 5, its certified decimals: closed forms for
+    factors of degree ≤ 2 and for cubics with a compact real (trigonometric) form, each
+    checked against the isolated roots (``_agree``); certified decimals for degree ≥ 5
+    (certified.py); exact CRootOf(f, k) otherwise. No Ferrari quartics."""
     out = []
     for factor, multiplicity in poly.factor_list()[1]:
+        certified = certified_roots(factor, K, M) if factor.degree() >= CERTIFIED_DEGREE else None
+        if certified is not None:
+            out += [(c.value, factor, c) for c in certified for _ in range(multiplicity)]
+            continue
         roots = None
         if factor.degree() <= 3:
             found = sp.roots(factor, trig=True)
@@ -186,7 +222,7 @@ def _rational_roots(poly: sp.Poly) -> list[tuple[sp.Expr, sp.Poly]]:
                 roots = list(found)
         if roots is None:
             roots = factor.all_roots()
-        out += [(r, factor) for r in roots for _ in range(multiplicity)]
+        out += [(r, factor, None) for r in roots for _ in range(multiplicity)]
     return out
 
 
@@ -222,7 +258,7 @@ def _ascending(pairs: list[tuple], model: Model) -> list:
     """Sorted by λ: at the given parameter values, or with every parameter 1."""
 
     def key(pair):
-        lam = pair[0]
+        lam = pair.lam
         number = sample(lam, model.values)
         if number.imag != 0:
             return (1, 0.0, sp.default_sort_key(lam))
@@ -295,17 +331,20 @@ def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
     Rational roots and repeated ones use the null space.
     """
     K, M, x = spectrum.K, spectrum.M, spectrum.x
-    roots = [root for _, root, _ in spectrum.pairs]
+    roots = [pair.root for pair in spectrum.pairs]
     counts = {root: roots.count(root) for root in roots}
     adjugate = None
     bases: dict[sp.Expr, list[tuple[sp.Expr, ...]]] = {}
     used: dict[sp.Expr, int] = {}
     out = []
     conjugates: dict[sp.Poly, tuple[sp.Expr, ...] | None] = {}
-    for _, root, factor in spectrum.pairs:
+    for pair in spectrum.pairs:
+        root, factor = pair.root, pair.factor
         if root not in bases:
             vector = None
-            if counts[root] == 1 and not root.is_Rational and _rational(K) and _rational(M):
+            if pair.certified is not None:
+                vector = pair.certified.shape
+            elif counts[root] == 1 and not root.is_Rational and _rational(K) and _rational(M):
                 if factor not in conjugates:
                     conjugates[factor] = _field_null_vector(K, M, x, factor)
                 if conjugates[factor] is not None:

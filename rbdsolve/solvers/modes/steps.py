@@ -17,7 +17,8 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
-from rbdsolve.solvers.modes.answers import ModesAnswers, Motion, NumericModesAnswers
+from rbdsolve.solvers.modes.answers import Form, ModesAnswers, Motion, NumericModesAnswers
+from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE
 from rbdsolve.solvers.shared.labels import MODES, labels_for
 
 
@@ -37,6 +38,21 @@ def _repeated_notes(eigenvalues: tuple[sp.Expr, ...], labels: Labels) -> list[st
                 f"{M}-orthogonal basis of it ({a}ᵢᵀ {M} {a}ⱼ = 0), and every combination of them is a mode with "
                 f"the same {lam}."))
     return notes
+
+
+def _certified_note(a: ModesAnswers, labels: Labels) -> list[st.Step]:
+    """Which eigenvalues are certified decimals, and what that promises."""
+    modes = [i for i, form in enumerate(a.forms, 1) if form is Form.CERTIFIED]
+    if not modes:
+        return []
+    letter = _letter(labels, "eigenvalue")
+    which = ("All eigenvalues are" if len(modes) == len(a.forms)
+             else f"{', '.join(f'{letter}{subscript(i)}' for i in modes)} are")
+    return [st.accuracy(
+        f"{which} roots of an irreducible factor of degree ≥ {CERTIFIED_DEGREE} of the characteristic "
+        f"polynomial, which no formula gives: each is enclosed by ball arithmetic (Arb) and given as a decimal "
+        f"whose {a.certified_digits} significant digits are all proven, and so are their frequencies and "
+        f"amplitudes (the text rounds them to fewer digits; the JSON answers hold all {a.certified_digits}).")]
 
 
 def _letter(labels: Labels, key: str) -> str:
@@ -85,8 +101,10 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
     steps.append(st.equation(f"{t['u']} = {t['a']} cos({wt}) gives the eigenvalue problem "
                              f"({t['K']} − {t['lam']}{t['M']}) {t['a']} = 0, {t['lam']} = {t['w']}², solvable when",
                              *char_steps))
-    steps.append(st.result("Eigenvalues:", *[
+    certified = Form.CERTIFIED in a.forms
+    steps.append(st.result("Eigenvalues, in certified decimals (see Accuracy):" if certified else "Eigenvalues:", *[
         Relation(labels.symbol("eigenvalue", i), lam) for i, lam in enumerate(a.eigenvalues, 1)]))
+    steps += _certified_note(a, labels)
     steps += _repeated_notes(a.eigenvalues, labels)
     for i, (lam, w, motion, shape) in enumerate(zip(a.eigenvalues, a.frequencies, a.motions, a.shapes), 1):
         vector = sp.ImmutableMatrix([shape]) if shape else None
