@@ -11,9 +11,11 @@ import sympy as sp
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import Energy, kinetic_energy, potential_energy
+from rbdsolve.model.energy import Energy, kinetic_energy, mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
+from rbdsolve.solvers.shared.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
+                                                  potential_steps, quadratic_products, terms)
 from rbdsolve.solvers.shared.present import present
 from rbdsolve.solvers.shared.values import parameter_sample
 
@@ -29,22 +31,41 @@ def coordinates_only(model: Model) -> ModelSummary:
                                   Relation(sp.Symbol("q"), q)), *rolling_steps(model)))
 
 
+KINETIC = "Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of mass)"
+POTENTIAL = "Potential energy, −m g·r per body in gravity and ½ k s² per spring of stretch s"
+
+
 def summarize_model(model: Model) -> ModelSummary:
     if not model.q:
         return ModelSummary((), None, None, ())
-    T = kinetic_energy(model)
     q = sp.ImmutableMatrix([model.state.functions()])
     steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q)), *rolling_steps(model)]
-    steps += _energy_steps("Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of "
-                           "mass)", "T", T, model)
+    T, kinetic = _kinetic(model)
+    steps += kinetic
     if model.instant:  # velocities at one instant: no positions, so no V
-        return ModelSummary(model.state.functions(), model.to_time(T.total), None, tuple(steps))
+        return ModelSummary(model.state.functions(), model.to_time(T), None, tuple(steps))
     V = potential_energy(model)
-    steps += _energy_steps("Potential energy, −m g·r per body in gravity and ½ k s² per spring of "
-                           "stretch s", "V", V, model)
+    steps += _potential_steps(V, model)
     steps += _unturned(model)
-    return ModelSummary(model.state.functions(), model.to_time(T.total), model.to_time(V.total),
-                        tuple(steps))
+    return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
+
+
+def _kinetic(model: Model) -> tuple[sp.Expr, list[st.Step]]:
+    """T and its steps: body by body, or, past SCAN_TERMS products q̇ᵢq̇ⱼ, as ½ q̇ᵀ M(q) q̇
+    (large_energy.py; T then built from M, not expanded and collected)."""
+    products = quadratic_products(model)
+    if products is not None and products > SCAN_TERMS:
+        M = mass_matrix(model)
+        return kinetic_from_matrix(M, model.qd), kinetic_steps(KINETIC, products, M, model)
+    T = kinetic_energy(model)
+    return T.total, _energy_steps(KINETIC, "T", T, model)
+
+
+def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
+    """V term by term, or, past SCAN_TERMS terms, as ½ qᵀ K q or one sum."""
+    if V.terms and terms(V.total) > SCAN_TERMS:
+        return potential_steps(POTENTIAL, V, model, present(V.total, model))
+    return _energy_steps(POTENTIAL, "V", V, model)
 
 
 def rolling_steps(model: Model) -> list[st.Step]:
