@@ -152,13 +152,27 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
     modes question never builds M(q) for general q.
     """
     n = len(model.q)
-    M = sp.zeros(n, n)
+    terms: dict[tuple[int, int], list[sp.Expr]] = {(i, j): [] for i in range(n) for j in range(i, n)}
     for b in jacobians(model):
         J_v, J_w, J_G = b.J_v, b.J_w, b.J_G
         if at:
             J_v, J_w, J_G = (x.xreplace(at) for x in (J_v, J_w, J_G))
-        M += b.body.mass * J_v.T * J_v + J_w.T * J_G * J_w
-    return tidy_matrix(M)
+        _add_products(terms, b.body.mass, J_v, J_v)
+        if any(x != 0 for x in J_w):
+            _add_products(terms, sp.Integer(1), J_w, J_G * J_w)
+    # each entry one sum over the bodies (no matrix of partial sums rebuilt per body);
+    # M is symmetric: the upper triangle, mirrored
+    upper = {key: tidy(sp.Add(*parts)) for key, parts in terms.items()}
+    return sp.Matrix(n, n, lambda i, j: upper[(min(i, j), max(i, j))])
+
+
+def _add_products(terms: dict, factor: sp.Expr, A: sp.Matrix, B: sp.Matrix) -> None:
+    """The terms of factor·(Aᵀ B)_ij, i ≤ j, skipping zero columns."""
+    columns = [j for j in range(A.cols) if any(x != 0 for x in A[:, j])]
+    b_columns = {j for j in range(B.cols) if any(x != 0 for x in B[:, j])}
+    for i in columns:
+        for j in (j for j in columns if j >= i and j in b_columns):
+            terms[(i, j)] += [factor * A[k, i] * B[k, j] for k in range(A.rows) if A[k, i] != 0 and B[k, j] != 0]
 
 
 def stiffness_matrix(V: sp.Expr, q: tuple[sp.Expr, ...], at: dict[sp.Expr, sp.Expr]) -> sp.Matrix:
