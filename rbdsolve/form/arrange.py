@@ -74,7 +74,7 @@ def common_scale(exprs: list[sp.Expr], symbols: set[sp.Symbol]) -> sp.Expr:
     m r² [7/8 θ̇² + …] and a matrix as m r² [[7/4, 1/4], [1/4, 1/3]]. A common sign
     is included when every expression is negative.
     """
-    nonzero = [sp.factor_terms(e) for e in exprs if e != 0]
+    nonzero = [sp.factor_terms(e) for e in dict.fromkeys(exprs) if e != 0]  # each distinct entry once
     if not nonzero:
         return sp.Integer(1)
     powers: dict[sp.Symbol, sp.Expr] | None = None
