@@ -7,12 +7,12 @@ and SVG). The targets are recomputed from the measurements in results.json.
 
 from __future__ import annotations
 
+import argparse
 import json
-import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from benchmarks.scale import chart_scaling, scale_tables
+from benchmarks.scale import chart_scaling, fill_docs, scale_tables
 
 CLIP = 1e-17  # errors below this (the exact route's ~1e-30) are drawn at the clip
 ROUTE_STYLE = {"exact": ("tab:blue", "o"), "numeric": ("tab:orange", "s"), "auto": ("tab:green", "D"),
@@ -332,8 +332,18 @@ def write_charts(result: dict, out: Path) -> None:
         chart_conditioning(result, out)
 
 
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description="Redraw the tables and charts from results.json.")
+    parser.add_argument("folder", nargs="?", default="benchmarks/results", type=Path)
+    parser.add_argument("--docs", type=Path, help="also refill the issue-23 block of this file "
+                                                  "(docs/performance.md)")
+    args = parser.parse_args(argv)
+    data = json.loads((args.folder / "results.json").read_text())
+    write_tables(data, args.folder / "tables.md")
+    write_charts(data, args.folder)
+    if args.docs:
+        fill_docs(data, args.docs)
+
+
 if __name__ == "__main__":
-    folder = Path(sys.argv[1] if len(sys.argv) > 1 else "benchmarks/results")
-    data = json.loads((folder / "results.json").read_text())
-    write_tables(data, folder / "tables.md")
-    write_charts(data, folder)
+    main()

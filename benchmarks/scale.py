@@ -226,7 +226,7 @@ def chart_scaling(result: dict, out) -> None:
     compute on the left and the whole process on the right; each legend entry carries
     the fitted slope; × marks a timeout at its limit."""
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FuncFormatter
+    from matplotlib.ticker import FuncFormatter, NullFormatter
 
     from benchmarks.report import _save
 
@@ -243,7 +243,10 @@ def chart_scaling(result: dict, out) -> None:
             for n, limit in s.timeouts:
                 ax.plot([n], [limit], marker="x", color=color, ms=10, mew=2, ls="none")
         ax.set(xscale="log", yscale="log", title=titles[time], xlabel="n (links of the chain)")
+        sizes = sorted({n for s in series(result) for n, _ in s.points + s.timeouts})
+        ax.set_xticks(sizes)  # the sizes measured, as plain numbers
         ax.xaxis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:g}"))
+        ax.xaxis.set_minor_formatter(NullFormatter())
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7, loc="upper left")
     axes[0].set_ylabel("seconds")
@@ -251,3 +254,19 @@ def chart_scaling(result: dict, out) -> None:
                  f"{SLOPE_POINTS} sizes that finished; × = timed out at that limit)", fontsize=11)
     fig.tight_layout()
     _save(fig, out / "scaling")
+
+
+BEGIN = "<!-- issue-23 tables:"
+END = "<!-- end of issue-23 tables -->"
+
+
+def fill_docs(result: dict, path) -> None:
+    """Rewrite the block between BEGIN's line and END in ``path`` (docs/performance.md)
+    with this result's issue-23 tables, headings one level down; the rest is untouched."""
+    text = path.read_text()
+    start, end = text.index(BEGIN), text.index(END)
+    start = text.index("\n", start) + 1
+    tables = [("#" + line) if line.startswith("### ") else line for line in scale_tables(result)]
+    block = [f"Plan: {result['plan']}; Python {result['python']}; whole run {result['wall_seconds']:.0f} s "
+             "(benchmarks/results/results.json).", "", *tables]
+    path.write_text(text[:start] + "\n".join(block) + "\n" + text[end:])
