@@ -1,18 +1,21 @@
-"""From a benchmark result: the targets of issue 7 (met or missed, by how much), the
-Markdown tables and the charts (matplotlib, Agg; PNG and SVG).
+"""From a benchmark result: the targets of issue 7 (met or missed, by how much) and of
+issue 23 (benchmarks.scale), the Markdown tables and the charts (matplotlib, Agg; PNG
+and SVG). The targets are recomputed from the measurements in results.json.
 
     python3 -m benchmarks.report benchmarks/results   # redraw from results.json
 """
 
 from __future__ import annotations
 
+import argparse
 import json
-import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from benchmarks.scale import chart_scaling, fill_docs, scale_tables
+
 CLIP = 1e-17  # errors below this (the exact route's ~1e-30) are drawn at the clip
-ROUTE_STYLE = {"exact": ("tab:blue", "o"), "numeric": ("tab:orange", "s"),
+ROUTE_STYLE = {"exact": ("tab:blue", "o"), "numeric": ("tab:orange", "s"), "auto": ("tab:green", "D"),
                "lagrange": ("tab:red", "^"), "kane": ("tab:purple", "v")}
 
 
@@ -49,7 +52,7 @@ def _exact_target(routes) -> Target:
     r = _find(routes, family="chain_points", size=10, route="exact")
     if r is None or r["status"] != "ok":
         return Target("chain exact n=10", "< 1 s of compute",
-                      f"not answered in this run ({r['status'] if r else 'not run'})", False)
+                      f"not answered in this run ({r['status'] if r else 'not run'})", False if r else None)
     return Target("chain exact n=10", "< 1 s of compute",
                   f"{_compute(r):.2f} s compute (load + build + modes solver, {r['solution_s']:.2f} s of it in "
                   f"the solver); {r['median_s']:.2f} s with the report's T and V", _compute(r) < 1.0)
@@ -62,7 +65,7 @@ def _ratio_target(routes, baselines) -> Target:
     if b is None:
         return Target(name, asked, "baseline not run", None)
     if r is None or r["status"] != "ok":
-        return Target(name, asked, "rbdsolve exact not answered", False)
+        return Target(name, asked, "rbdsolve exact not answered", False if r else None)
     ours, whole = _compute(r), r["median_s"]
     if b["status"] == "timeout":
         return Target(name, asked, f"Lagrange > {b['timeout_s']:.0f} s (timed out); rbdsolve {ours:.2f} s: "
@@ -77,7 +80,8 @@ def _numeric_target(routes) -> Target:
     asked = "n=50 in < 0.1 s of compute, relative error ≤ 1e-12"
     r = _find(routes, family="chain_points", size=50, route="numeric")
     if r is None or r["status"] != "ok":
-        return Target("chain numeric n=50", asked, f"not answered ({r['status'] if r else 'not run'})", False)
+        return Target("chain numeric n=50", asked, f"not answered ({r['status'] if r else 'not run'})",
+                      False if r else None)
     return Target("chain numeric n=50", asked,
                   f"{_compute(r):.3f} s compute (load + build + solver, {r['solution_s']:.3f} s in the solver), "
                   f"{r['median_s']:.3f} s in-process in all; relative error {r['relative_error']:.1e}",
@@ -147,9 +151,10 @@ def write_tables(result: dict, path: Path) -> None:
         heavy = "–" if s["heavy_modules"] is None else (", ".join(s["heavy_modules"]) or "none")
         lines.append(f"| `{s['label']}` | {_s(s['median_s'])} | {heavy} |")
     lines += ["", "### Targets", "", "| target | asked | measured | met |", "|---|---|---|---|"]
-    for t in result["targets"]:
+    for t in (asdict(t) for t in targets(result["routes"], result["baselines"], result["startup"])):
         met = "yes" if t["met"] else ("no" if t["met"] is False else "?")
         lines.append(f"| {t['name']} | {t['asked']} | {t['measured']} | {met} |")
+    lines += ["", *scale_tables(result)]
     path.write_text("\n".join(lines) + "\n")
 
 
@@ -227,7 +232,7 @@ def chart_time_size(result: dict, out: Path) -> None:
     for ax in axes.flat[len(families):]:
         ax.set_visible(False)
     for ax, family in zip(axes.flat, families):
-        for route in ("exact", "numeric"):
+        for route in ("exact", "numeric", "auto"):
             rows = _series(result, family, route)
             if rows:
                 color, marker = ROUTE_STYLE[route]
@@ -250,7 +255,8 @@ def chart_time_size(result: dict, out: Path) -> None:
 
         ax.xaxis.set_major_formatter(ScalarFormatter())
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+        if ax.get_legend_handles_labels()[0]:  # a family this plan did not run has no curve
+            ax.legend(fontsize=8)
     fig.suptitle("Time against problem size (× at a time limit: did not finish within it)", fontsize=11)
     fig.tight_layout()
     _save(fig, out / "time_vs_size")
@@ -321,12 +327,23 @@ def write_charts(result: dict, out: Path) -> None:
     matplotlib.use("Agg")
     chart_time_error(result, out)
     chart_time_size(result, out)
+    chart_scaling(result, out)
     if result.get("conditioning"):
         chart_conditioning(result, out)
 
 
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description="Redraw the tables and charts from results.json.")
+    parser.add_argument("folder", nargs="?", default="benchmarks/results", type=Path)
+    parser.add_argument("--docs", type=Path, help="also refill the issue-23 block of this file "
+                                                  "(docs/performance.md)")
+    args = parser.parse_args(argv)
+    data = json.loads((args.folder / "results.json").read_text())
+    write_tables(data, args.folder / "tables.md")
+    write_charts(data, args.folder)
+    if args.docs:
+        fill_docs(data, args.docs)
+
+
 if __name__ == "__main__":
-    folder = Path(sys.argv[1] if len(sys.argv) > 1 else "benchmarks/results")
-    data = json.loads((folder / "results.json").read_text())
-    write_tables(data, folder / "tables.md")
-    write_charts(data, folder)
+    main()
