@@ -131,7 +131,7 @@ def _rate(pair: _Pair, scale: sp.Expr, sign: int) -> sp.Expr:
     """ω = √λ (sign 1) or γ = √(−λ) (sign −1); for a certified μ, √scale times its own
     certified √|μ| (rounding √ of the rounded μ would not keep every digit proven)."""
     if pair.certified is not None:
-        return pair.certified.root * sp.Pow(scale, sp.S.Half, evaluate=scale.is_Atom)
+        return pair.certified.root * tidy(sp.sqrt(scale))
     return tidy(sp.sqrt(sign * pair.lam))
 
 
