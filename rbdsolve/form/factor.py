@@ -165,6 +165,7 @@ def _irrational(rest: sp.Expr) -> bool:
     return any(f.is_number for f in sp.Mul.make_args(rest))
 
 
+@lru_cache(maxsize=4096)  # factored_sum asks of one sum twice (its two contents), factored again later
 def _splits(poly: sp.Poly) -> bool:
     """Whether a polynomial has more than one irreducible factor, or a repeated one."""
     factors = poly.factor_list()[1]
