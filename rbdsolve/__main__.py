@@ -1,3 +1,3 @@
-from rbdsolve.cli import main
+from rbdsolve.cli import run
 
-main()
+run()

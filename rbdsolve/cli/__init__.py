@@ -7,7 +7,7 @@ One module per command, each registering itself on the ``main`` group. Heavy mod
 
 from __future__ import annotations
 
-from rbdsolve.cli.app import main
+from rbdsolve.cli.app import main, run
 from rbdsolve.cli import check, draw, grade, key, new, solve, variants, watch  # noqa: E402,F401 - each registers its command on main
 
-__all__ = ["main"]
+__all__ = ["main", "run"]

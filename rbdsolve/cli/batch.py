@@ -8,15 +8,15 @@ from __future__ import annotations
 import pickle
 import time
 import traceback
-from concurrent.futures import ProcessPoolExecutor, as_completed
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Iterable
 
 from rbdsolve.cli.app import Source, check_sets, describe, internal_message
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, printable
 
-if TYPE_CHECKING:  # the report module imports sympy: not at start-up
+if TYPE_CHECKING:  # not at start-up: the report module imports sympy, the pool multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
     from rbdsolve.problem.quantity import Value
     from rbdsolve.report.steps import ProblemReport
 
@@ -102,6 +102,10 @@ def _one(source: Source, settings: Settings, shown) -> Outcome:
 
 def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
+    # the process pool (multiprocessing, sockets, logging) only where --jobs asks for it
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures.process import BrokenProcessPool
+
     outcomes: list[Outcome | None] = [None] * len(items)
     lost: list[int] = []  # files whose worker died (with the pool, every file it still had)
     pool = ProcessPoolExecutor(max_workers=jobs, initializer=_quiet_worker)
@@ -123,6 +127,8 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
 
 
 def _alone(source: Source, settings: Settings) -> Outcome:
+    from concurrent.futures import ProcessPoolExecutor
+
     start = time.perf_counter()
     pool = ProcessPoolExecutor(max_workers=1, initializer=_quiet_worker)
     try:

@@ -8,12 +8,15 @@ size limit is left expanded rather than risk a long simplification.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
 MAX_OPS = 400  # larger coefficients are expanded but not rewritten
 
 
+@lru_cache(maxsize=4096)  # a coefficient recurs: T's in the equations, M's in q̈ and in the modes
 def tidy(expr: sp.Expr) -> sp.Expr:
     """A short form of one coefficient.
 

@@ -5,7 +5,7 @@ import pytest
 import sympy as sp
 
 from rbdsolve.form.display import Product, Terms
-from rbdsolve.form.factor import factored, squares_joined
+from rbdsolve.form.factor import _splits, factored, squares_joined
 from rbdsolve.form.printers import to_unicode
 
 R, r, m, g, a, b, c, e, M = sp.symbols("R r m g a b c e M", positive=True)
@@ -74,3 +74,23 @@ def test_a_coefficient_in_brackets_counts_them() -> None:
     (1/3 M a² + a² m) θ̈ — and a sum that stays a sum gains nothing."""
     assert to_unicode(factored(M * a**2 / 3 + a**2 * m, bracketed=True)) == "1/3 a² (M + 3 m)"
     assert to_unicode(factored(M * a**2 / 3 + a**2 * m)) == "1/3 M a² + a² m"
+
+
+x, y, z, w = sp.symbols("x y z w")
+
+
+@pytest.mark.parametrize("expr, splits", [
+    (x * y + 2 * z + 3, False),  # linear in z, gcd(2, xy + 3) = 1
+    (x * y + x * z, True),  # linear in y, but x divides both parts: x (y + z)
+    (6 * x * y + 4 * x, True),  # 2x (3y + 2): x is a factor, the 2 is not counted
+    (4 * x * y + 6 * z + 2, False),  # 2 (2xy + 3z + 1): a number alone is no factor
+    (x**2 * y + x**2 + y * z**2 + z**2, True),  # (x² + z²)(y + 1): linear in y, gcd x² + z²
+    (x**2 - y**2, True),  # no variable of degree 1: factored, (x − y)(x + y)
+    (x**2 + y**2, False),
+    ((x + 1)**2 * y, True),  # linear in y, b = 0: the gcd (x + 1)² is not a number
+    (x**2 * w - 3 * y * z**2 + 7, False),  # linear in w, gcd(x², 7 − 3yz²) = 1
+])
+def test_whether_a_polynomial_splits(expr, splits):
+    """By hand: a factor of a x + b of degree 0 in x divides a and b."""
+    symbols = sorted(expr.free_symbols, key=sp.default_sort_key)
+    assert _splits(sp.Poly(expr, *symbols)) is splits
