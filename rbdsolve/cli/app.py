@@ -191,14 +191,16 @@ def _leave(code: object) -> None:
     and error flushed. Freeing every object one by one when an interpreter that holds
     sympy's caches shuts down takes about 0.07 s after one solve, and nothing comes of
     it. The exit handlers still run (the site's own, a library's); any doubt (a code
-    that is not a number, a stream that cannot be flushed) leaves it to Python's exit."""
+    that is not a number, a stream that cannot be flushed, a profiler or tracer that
+    writes its results when the interpreter ends) leaves it to Python's exit."""
     import atexit
     import threading
 
     if code is None:
         code = 0
     others = [t for t in threading.enumerate() if t is not threading.main_thread() and not t.daemon]
-    if not isinstance(code, int) or others or "concurrent.futures.process" in sys.modules:
+    watched = sys.getprofile() is not None or sys.gettrace() is not None  # a profiler, coverage: they write at exit
+    if not isinstance(code, int) or others or watched or "concurrent.futures.process" in sys.modules:
         return
     try:
         for stream in (sys.stdout, sys.stderr):

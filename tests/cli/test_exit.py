@@ -52,3 +52,13 @@ def test_exit_handlers_still_run() -> None:
     done = process(code=code)
     assert done.returncode == 0
     assert done.stdout.endswith("handler ran\n") and "version" in done.stdout
+
+
+def test_a_profiler_still_writes_its_results(tmp_path) -> None:
+    """python -m cProfile -o FILE -m rbdsolve …: the profile is written when the
+    interpreter ends, so a profiled process leaves by Python's own exit."""
+    out = tmp_path / "check.prof"
+    done = subprocess.run([sys.executable, "-m", "cProfile", "-o", str(out), "-m", "rbdsolve", "--version"],
+                          capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert out.stat().st_size > 0
