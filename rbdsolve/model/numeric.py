@@ -105,20 +105,30 @@ class NumericScene:
     def potential(self, q: Sequence) -> tuple[object, np.ndarray, np.ndarray]:
         """V(q), ∂V/∂q (n,) and ∂²V/∂q∂q (n, n), with
         V = −Σ m g·r_G + Σ ½ k s² (s = |r_a − r_b| − L₀, or α − α₀ for a torsional spring)."""
-        arithmetic = self.arithmetic
-        with arithmetic.precision():
-            scene = _Evaluator(self, q, order=2)
-            V = arithmetic.number(0)
-            if self.gravity is not None:
-                g = scene.eval(self.gravity)
-                for body in self.bodies:
-                    V = V - body.mass * _dot(g, scene.position(body))
-            for spring in self.springs:
-                k = scene.eval(spring.stiffness.tree)
-                V = V + k / 2 * scene.stretch_squared(spring)
-            grad, hess = full(V, self.n, arithmetic)
+        with self.arithmetic.precision():
+            V = self._potential(q, order=2)
+            grad, hess = full(V, self.n, self.arithmetic)
             value = V.value if isinstance(V, Jet) else V
-            return arithmetic.number(value), grad, hess
+            return self.arithmetic.number(value), grad, hess
+
+    def gradient(self, q: Sequence) -> np.ndarray:
+        """∂V/∂q (n,) alone: first-order jets, without the Hessian's n² work per term."""
+        with self.arithmetic.precision():
+            grad, _ = full(self._potential(q, order=1), self.n, self.arithmetic, hessian=False)
+            return grad
+
+    def _potential(self, q: Sequence, order: int):
+        """V as a jet of the given order (or a number where V is constant)."""
+        scene = _Evaluator(self, q, order=order)
+        V = self.arithmetic.number(0)
+        if self.gravity is not None:
+            g = scene.eval(self.gravity)
+            for body in self.bodies:
+                V = V - body.mass * _dot(g, scene.position(body))
+        for spring in self.springs:
+            k = scene.eval(spring.stiffness.tree)
+            V = V + k / 2 * scene.stretch_squared(spring)
+        return V
 
 
 # --- what the numeric route covers ----------------------------------------------------

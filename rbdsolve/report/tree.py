@@ -19,7 +19,9 @@ Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an ans
 
 def leaves(value: object, path: Path = ()) -> Iterator[tuple[Path, object]]:
     """Each leaf of an answers tree with its path, in the order ``map_leaves`` walks."""
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+    if type(value) is float:  # most leaves of a numeric route (an n×n matrix): no type tests
+        yield path, value
+    elif dataclasses.is_dataclass(value) and not isinstance(value, type):
         for f in dataclasses.fields(value):
             yield from leaves(getattr(value, f.name), (*path, f.name))
     elif isinstance(value, Mapping):
@@ -51,6 +53,8 @@ def label(path: Path) -> str:
 
 def map_paths(value: object, leaf: Callable[[Path, object], object], path: Path = ()) -> object:
     """``map_leaves`` with each leaf's path given to ``leaf`` too."""
+    if type(value) is float:  # most leaves of a numeric route (an n×n matrix): no type tests
+        return leaf(path, value)
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
         return {f.name: map_paths(getattr(value, f.name), leaf, (*path, f.name)) for f in dataclasses.fields(value)}
     if isinstance(value, Mapping):

@@ -161,7 +161,7 @@ def compiled_gradient(model: Model):
     from the numeric scene where it applies, else compiled from the symbolic V."""
     scene = numeric_scene(model)
     if scene is not None:
-        return finite(lambda x: scene.potential(x)[1], model), finite(lambda x: scene.potential(x)[2], model)
+        return finite(scene.gradient, model), finite(lambda x: scene.potential(x)[2], model)
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
@@ -373,10 +373,19 @@ def _box(model: Model) -> tuple[tuple[float, float], ...]:
 
 
 def periodic_angles(model: Model) -> frozenset:
-    """The angle coordinates along which ∂V/∂q is 2π-periodic, checked at PERIODIC_SAMPLES
-    points to PERIODIC_TOL: an angle that also enters V bare (a torsional spring counts
-    turns) is searched, wrapped and merged as a length instead."""
-    return _periodic(model) if model.angles else frozenset()
+    """The angle coordinates along which ∂V/∂q is 2π-periodic: an angle that also enters
+    V bare (a torsional spring counts turns) is searched, wrapped and merged as a length
+    instead.
+
+    Where V is only gravity and springs (no inertial potential of a moving frame), the
+    build has already proved it for every angle of ``model.angles``: each enters the
+    positions and stretches only through sin and cos of integer multiples of itself
+    (model.build: ``_periodic_coordinates``, ``_refuse_winding_angles``), and masses,
+    stiffnesses and gravity are constants. Otherwise it is checked at PERIODIC_SAMPLES
+    points to PERIODIC_TOL."""
+    if not model.angles:
+        return frozenset()
+    return model.angles if not model.inertial else _periodic(model)
 
 
 @memoized

@@ -44,11 +44,12 @@ def answer_units(answers: object, model: Model) -> object:
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
+    numeric_unit = _memoized_numeric_unit(coordinates, angles)
 
     def unit(path: Path, leaf: object) -> str | None:
         named = [p for p in path if isinstance(p, str)]
         if isinstance(leaf, float):  # a numeric route's answer
-            return _numeric_unit(named, [p for p in path if isinstance(p, int)], coordinates, angles)
+            return numeric_unit(named, path)
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
         if _coordinate_value(named, coordinates):
@@ -75,6 +76,7 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
     "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
     "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
 }
+_RATE_UNITS = {k: d.unit for k, d in _RATES.items()}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
 _PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 
@@ -112,7 +114,7 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
         return _coordinate_unit(named[-1], coordinates, angles)
     key = named[-1] if named else None
     if key in _RATES:
-        return _RATES[key].unit
+        return _RATE_UNITS[key]
     if key not in _PER_COORDINATES:
         return None
     dims = list(coordinates.values())
@@ -124,6 +126,25 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
     if pair is None or any(i >= len(dims) or dims[i] is None for i in pair):
         return None
     return (_PER_COORDINATES[key] / (dims[pair[0]] * dims[pair[1]])).unit
+
+
+def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
+    """``_numeric_unit`` as a function of the leaf's path, computed once per distinct
+    answer: its keys and the dimensions of the last two indices' coordinates decide it,
+    and an n×n matrix (M, K, the mode shapes) repeats the same few."""
+    dims = tuple(coordinates.values())
+    kinds = list(dict.fromkeys(dims))
+    kind_of = tuple(kinds.index(d) for d in dims)
+    memo: dict = {}
+
+    def unit(named: list[str], path: Path) -> str | None:
+        indices = [p for p in path if isinstance(p, int)]
+        key = (tuple(named), tuple(kind_of[i] if i < len(dims) else -1 for i in indices[-2:]))
+        if key not in memo:
+            memo[key] = _numeric_unit(named, indices, coordinates, angles)
+        return memo[key]
+
+    return unit
 
 
 _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any

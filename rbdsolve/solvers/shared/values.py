@@ -184,6 +184,8 @@ def with_irrelevant_filled(model, question):
     """The model with PLACEHOLDER for each parameter that has no value and that the
     question's answer cannot depend on (a yo-yo axle's length in a planar motion): the
     floating-point machinery evaluates every ingredient, the answer never sees these."""
+    if all(s in model.values for s in model.symbols.parameters.values()):
+        return model  # nothing to fill (and no need to read every body for what is relevant)
     relevant = relevant_parameters(model, question)
     filler = {s: PLACEHOLDER for s in model.symbols.parameters.values()
               if s not in model.values and s not in relevant}
