@@ -28,7 +28,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from rbdsolve.model.build import body_mass_properties
+from rbdsolve.model.build import body_mass_properties, parts_key
 from rbdsolve.model.jet import FLOAT, MP50, Arithmetic, Jet, apply, atan2, full, power
 from rbdsolve.model.state import State
 from rbdsolve.model.symbols import Symbols, exact_number
@@ -229,20 +229,13 @@ def exact_fraction(x) -> Fraction:
 def _numeric_body(body: Body, names: Symbols, arithmetic: Arithmetic, cache: dict) -> NumericBody:
     """Mass, centre and J_zz from the shape library's formulas with numbers put in
     (once per distinct body description: a chain of equal links needs one)."""
-    key = tuple(_part_key(p) for p in body.parts)
+    key = parts_key(body)
     if key not in cache:
         props = body_mass_properties(body, names)
         cache[key] = tuple(_number(x, arithmetic) for x in (props.mass, *props.centre, props.inertia[2, 2]))
     mass, cx, cy, cz, J_zz = cache[key]
     angle = body.angle.tree if body.angle is not None else None
     return NumericBody(body.name, mass, (cx, cy, cz), J_zz, body.at.tree, angle)
-
-
-def _part_key(part) -> tuple:
-    tree = lambda e: None if e is None else e.tree  # noqa: E731
-    entries = tuple(e.tree for e in part.inertia.entries) if part.inertia else None
-    return (part.shape, tree(part.mass), tuple((k, v.tree) for k, v in part.dimensions),
-            tree(part.at), tree(part.axis), entries, part.hole)
 
 
 def _number(x: sp.Expr, arithmetic: Arithmetic):

@@ -135,6 +135,15 @@ def _shown(x) -> str:
 def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
     """The scene for floating-point evaluation, or None where it needs the symbolic model
     (3D orientations, frames, prescribed motion, …: see NotNumeric)."""
+    return _float_scene(model) if arithmetic is FLOAT else _scene(model, arithmetic)
+
+
+@memoized  # the gradient, the Hessian and M of one model share it
+def _float_scene(model: Model) -> NumericScene | None:
+    return _scene(model, FLOAT)
+
+
+def _scene(model: Model, arithmetic) -> NumericScene | None:
     values = {str(k): exact_fraction(v) for k, v in model.values.items()}
     try:
         return NumericScene.build(model.problem, values, arithmetic)
