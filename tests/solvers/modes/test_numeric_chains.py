@@ -5,7 +5,7 @@ at θ = 0 every point moves horizontally, ∂x/∂θ_j = l for each link j above
 
 - Point masses m at the link ends P_k = Σ_{j≤k} l e(θ_j): M_ij = m l² (n − max(i, j) + 1),
   and V = −m g Σ_k Σ_{j≤k} l cos θ_j gives K = diag(m g l (n − i + 1)).
-- Uniform rods (mass m, length l, J = m l²/12 about the centre G_k = P_{k−1} + l/2 e(θ_k)):
+- Uniform rods (mass m, length l, J = m l²/12 about the centre G_k = P_{k−1} + l/2 e(θ_k)),
   for i < j, M_ij = m l² (n − j + ½) (rod j contributes l · l/2, the n − j rods below
   it l · l); M_jj = m l² (n − j + ¼ + 1/12) = m l² (n − j + ⅓); K = diag(m g l (n − j + ½)).
 
@@ -28,45 +28,27 @@ from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
+from conftest import chain, hand_matrices
+
 G = Fraction(981, 100)
 N = 40  # the chains' length: M and K have N² entries each
 SMALL = 12  # the length at which the bounds are checked at 40 digits
 
 
-def chain(n: int, rods: bool) -> str:
-    """The chain as a problem file (m = l = 1, g = 9.81), modes about θ = 0."""
-    points = ["  P0: [0, 0]"]
-    bodies = []
-    for k in range(1, n + 1):
-        points.append(f"  P{k}: P{k - 1} + l * [sin(q{k}), -cos(q{k})]")
-        if rods:
-            points.append(f"  G{k}: P{k - 1} + l/2 * [sin(q{k}), -cos(q{k})]")
-            bodies.append(f"  link{k}: {{shape: rod, mass: m, length: l, at: G{k}, angle: q{k}, axis: y}}")
-        else:
-            bodies.append(f"  link{k}: {{shape: particle, mass: m, at: P{k}}}")
-    rest = ", ".join(f"q{k}: 0" for k in range(1, n + 1))
-    return (f"title: {n}-link chain\nparameters: {{m: mass, l: length, g: acceleration}}\n"
-            f"values: {{m: 1, l: 1, g: {G}}}\ncoordinates: [{', '.join(f'q{k}' for k in range(1, n + 1))}]\n"
-            "gravity: [0, -g]\npoints:\n" + "\n".join(points) + "\nbodies:\n" + "\n".join(bodies)
-            + f"\nquestions:\n  - modes: {{about: {{{rest}}}}}\n")
+def problem_text(n: int, rods: bool) -> str:
+    """The chain with m = l = 1, g = 9.81, asked for its modes about θ = 0."""
+    rest = ", ".join(f"th{k}: 0" for k in range(1, n + 1))
+    return chain(n, rods).replace("questions: [modes]",
+                                  f"values: {{m: 1, l: 1, g: {G}}}\nquestions:\n  - modes: {{about: {{{rest}}}}}")
 
 
 def hand(n: int, rods: bool) -> tuple[list[list[Fraction]], list[list[Fraction]]]:
-    """M and K at θ = 0 from the module docstring's formulas (m = l = 1), exact."""
-    def mass(i: int, j: int) -> Fraction:
-        below = n - max(i, j)
-        if not rods:
-            return Fraction(below + 1)
-        return below + (Fraction(1, 3) if i == j else Fraction(1, 2))
-
-    stiff = (lambda j: G * (n - j + Fraction(1, 2))) if rods else (lambda j: G * (n - j + 1))
-    M = [[mass(i, j) for j in range(1, n + 1)] for i in range(1, n + 1)]
-    K = [[stiff(i) if i == j else Fraction(0) for j in range(1, n + 1)] for i in range(1, n + 1)]
-    return M, K
+    """M and K at θ = 0 by the formulas of the module docstring (conftest.hand_matrices)."""
+    return hand_matrices(n, rods, Fraction(1), Fraction(1), G)
 
 
 def answers(n: int, rods: bool):
-    report = solve_problem(build_model(load_text(chain(n, rods))), Options(route=RouteChoice.NUMERIC))
+    report = solve_problem(build_model(load_text(problem_text(n, rods))), Options(route=RouteChoice.NUMERIC))
     solution = report.solutions[0]
     assert solution.solved, solution.error
     return solution.answers
