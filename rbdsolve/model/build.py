@@ -146,7 +146,7 @@ class Model:
         parts = [*self._positions(), *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
-        return any(sp.sympify(p).has(t) for p in parts)
+        return _holds(parts, t)
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]
@@ -204,6 +204,23 @@ def build_model(problem: Problem) -> Model:
                        if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
                        or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
+
+
+def _holds(parts: list, symbol: sp.Symbol) -> bool:
+    """Does ``symbol`` occur in any of the expressions or matrices? As ``has``, but each
+    shared subexpression looked at once: a chain's positions repeat the terms of the
+    ones above them, so asking each position alone walks n² terms."""
+    stack = [x for p in parts for x in (p if isinstance(p, sp.MatrixBase) else [sp.sympify(p)])]
+    seen = set(stack)
+    while stack:
+        expr = stack.pop()
+        if expr == symbol:
+            return True
+        for arg in expr.args:
+            if arg not in seen:
+                seen.add(arg)
+                stack.append(arg)
+    return False
 
 
 def _implied(contacts: tuple, stated: tuple, names: Symbols) -> tuple:

@@ -46,10 +46,12 @@ def answer_units(answers: object, model: Model) -> object:
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
     numeric_unit = _memoized_numeric_unit(coordinates, angles)
 
+    zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
+
     def unit(path: Path, leaf: object) -> str | None:
-        named = [p for p in path if isinstance(p, str)]
         if isinstance(leaf, float):  # a numeric route's answer
-            return numeric_unit(named, path)
+            return numeric_unit(path)
+        named = [p for p in path if isinstance(p, str)]
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
         if _coordinate_value(named, coordinates):
@@ -57,13 +59,15 @@ def answer_units(answers: object, model: Model) -> object:
         if _kinematic(named):  # what it is fixes it: a state's bare rate 2 is 2 rad/s, not a pure number
             return _RATES[named[-1]].unit if named[-1] in _RATES else (LENGTH / TIME).unit
         if leaf == 0:
+            zeros.append(path)
             return _ZERO
         found = dimension_of(leaf, dimensions)
         if found is None:
             return None
         return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
 
-    return _zeros_filled(map_paths(answers, unit))
+    units = map_paths(answers, unit)
+    return _zeros_filled(units) if zeros else units
 
 
 MASS = Dimension(mass=Fraction(1))
@@ -130,18 +134,20 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
 
 def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
     """``_numeric_unit`` as a function of the leaf's path, computed once per distinct
-    answer: its keys and the dimensions of the last two indices' coordinates decide it,
-    and an n×n matrix (M, K, the mode shapes) repeats the same few."""
+    answer. The path but its last two steps, and those two with each index of a
+    coordinate replaced by its dimension's place in a list, decide it (the keys, and the
+    coordinates' dimensions for M_ij and K_ij): an n×n matrix repeats the same few."""
     dims = tuple(coordinates.values())
     kinds = list(dict.fromkeys(dims))
     kind_of = tuple(kinds.index(d) for d in dims)
     memo: dict = {}
 
-    def unit(named: list[str], path: Path) -> str | None:
-        indices = [p for p in path if isinstance(p, int)]
-        key = (tuple(named), tuple(kind_of[i] if i < len(dims) else -1 for i in indices[-2:]))
+    def unit(path: Path) -> str | None:
+        tail = tuple(("kind", kind_of[p]) if isinstance(p, int) and p < len(dims) else p for p in path[-2:])
+        key = (path[:-2], tail)
         if key not in memo:
-            memo[key] = _numeric_unit(named, indices, coordinates, angles)
+            memo[key] = _numeric_unit([p for p in path if isinstance(p, str)], [p for p in path if isinstance(p, int)],
+                                      coordinates, angles)
         return memo[key]
 
     return unit
