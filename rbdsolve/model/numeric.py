@@ -91,16 +91,25 @@ class NumericScene:
 
     def mass_matrix(self, q: Sequence) -> np.ndarray:
         """M(q) = Σ_bodies (m J_vᵀ J_v + J_zz ∇α ∇αᵀ), n×n (first-order jets suffice)."""
-        arithmetic = self.arithmetic
-        with arithmetic.precision():
-            scene = _Evaluator(self, q, order=1)
-            M = arithmetic.zeros((self.n, self.n))
-            for body in self.bodies:
-                for x in scene.position(body):
-                    _add_outer(M, body.mass, x)
-                if body.angle is not None:
-                    _add_outer(M, body.J_zz, scene.eval(body.angle))
-            return arithmetic.array(M)
+        with self.arithmetic.precision():
+            return self._mass(_Evaluator(self, q, order=1))
+
+    def linearized(self, q: Sequence) -> tuple[np.ndarray, np.ndarray]:
+        """M(q) and ∂²V/∂q∂q from one pass of second-order jets: M reads only their
+        gradients, which are the first-order jets' to the last bit (the same operations)."""
+        with self.arithmetic.precision():
+            scene = _Evaluator(self, q, order=2)
+            _, hess = full(self._energy(scene), self.n, self.arithmetic)
+            return self._mass(scene), hess
+
+    def _mass(self, scene: _Evaluator) -> np.ndarray:
+        M = self.arithmetic.zeros((self.n, self.n))
+        for body in self.bodies:
+            for x in scene.position(body):
+                _add_outer(M, body.mass, x)
+            if body.angle is not None:
+                _add_outer(M, body.J_zz, scene.eval(body.angle))
+        return self.arithmetic.array(M)
 
     def potential(self, q: Sequence) -> tuple[object, np.ndarray, np.ndarray]:
         """V(q), ∂V/∂q (n,) and ∂²V/∂q∂q (n, n), with
@@ -119,7 +128,10 @@ class NumericScene:
 
     def _potential(self, q: Sequence, order: int):
         """V as a jet of the given order (or a number where V is constant)."""
-        scene = _Evaluator(self, q, order=order)
+        return self._energy(_Evaluator(self, q, order=order))
+
+    def _energy(self, scene: _Evaluator):
+        """V on the evaluator's jets (the formula of ``potential``)."""
         V = self.arithmetic.number(0)
         if self.gravity is not None:
             g = scene.eval(self.gravity)

@@ -87,8 +87,7 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     scene = numeric_scene(model)
     if scene is not None:
         q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
-        K = finite(lambda x: scene.potential(x)[2], model)(q0)
-        M = finite(scene.mass_matrix, model)(q0)
+        M, K = finite(lambda x: np.stack(scene.linearized(x)), model)(q0)
         return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
