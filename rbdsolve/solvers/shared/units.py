@@ -44,7 +44,7 @@ def answer_units(answers: object, model: Model) -> object:
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
-    numeric_unit = _memoized_numeric_unit(coordinates, angles)
+    numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles)
 
     zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
 
@@ -66,7 +66,7 @@ def answer_units(answers: object, model: Model) -> object:
             return None
         return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
 
-    units = map_paths(answers, unit)
+    units = map_paths(answers, unit, row=numeric_row)
     return _zeros_filled(units) if zeros else units
 
 
@@ -150,7 +150,16 @@ def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
                                       coordinates, angles)
         return memo[key]
 
-    return unit
+    def row(path: Path, values: tuple) -> list:
+        """The units of a row of floats at once: they follow from the row's path but its
+        last step, that step (as ``unit`` sees it) and the row's length."""
+        last = ("kind", kind_of[path[-1]]) if path and isinstance(path[-1], int) and path[-1] < len(dims) else path[-1:]
+        key = ("row", path[:-1], last, len(values))
+        if key not in memo:
+            memo[key] = [unit((*path, j)) for j in range(len(values))]
+        return list(memo[key])
+
+    return unit, row
 
 
 _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any
