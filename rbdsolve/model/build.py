@@ -146,7 +146,7 @@ class Model:
         parts = [*self._positions(), *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
-        return any(sp.sympify(p).has(t) for p in parts)
+        return _holds(parts, t)
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]
@@ -183,7 +183,8 @@ def build_model(problem: Problem) -> Model:
     names = symbols.with_points(points)
     problem, contacts = place_contacts(problem, names)  # rolling places its bodies: at and angle
     q = names.state.q
-    bodies = tuple(_body(b, names, symbols.with_points(velocities), triads) for b in problem.bodies)
+    masses: dict = {}
+    bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
@@ -203,6 +204,23 @@ def build_model(problem: Problem) -> Model:
                        if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
                        or (c.kind is CoordinateKind.AUTO and qi in periodic))
     return replace(model, angles=angles)
+
+
+def _holds(parts: list, symbol: sp.Symbol) -> bool:
+    """Does ``symbol`` occur in any of the expressions or matrices? As ``has``, but each
+    shared subexpression looked at once: a chain's positions repeat the terms of the
+    ones above them, so asking each position alone walks n² terms."""
+    stack = [x for p in parts for x in (p if isinstance(p, sp.MatrixBase) else [sp.sympify(p)])]
+    seen = set(stack)
+    while stack:
+        expr = stack.pop()
+        if expr == symbol:
+            return True
+        for arg in expr.args:
+            if arg not in seen:
+                seen.add(arg)
+                stack.append(arg)
+    return False
 
 
 def _implied(contacts: tuple, stated: tuple, names: Symbols) -> tuple:
@@ -288,11 +306,15 @@ def _turns(turns, names: Symbols, start: sp.Matrix | None = None) -> sp.Matrix:
     return R if start is None else (start * R).applyfunc(tidy)
 
 
-def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Matrix]) -> RigidBody:
-    """A body's mass properties combined from its parts; its centre of mass is its
-    origin plus the parts' combined centre, turned with the body: r_G = r_at + R c.
+def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Matrix], masses: dict) -> RigidBody:
+    """A body's mass properties combined from its parts (once per distinct description,
+    ``masses`` keeps them by ``parts_key``); its centre of mass is its origin plus the
+    parts' combined centre, turned with the body: r_G = r_at + R c.
     A body at an instant has v_G and ω given instead (a scalar ω turns about z)."""
-    props = body_mass_properties(body, names)
+    key = parts_key(body)
+    if key not in masses:
+        masses[key] = body_mass_properties(body, names)
+    props = masses[key]
     if body.velocity is not None:
         velocity = _affine_in_rates(rates.vector(body.velocity), body.velocity, rates)
         w = body.angular_velocity
@@ -306,8 +328,18 @@ def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Ma
         return RigidBody(body.name, props.mass, position, rotation, None, props.inertia, body, turns_3d=True)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
-    position = names.vector(body.at) + rotation * props.centre
+    position = names.vector(body.at)
+    if any(c != 0 for c in props.centre):  # adding R·0 would rebuild every sum of r_at for nothing
+        position = position + rotation * props.centre
     return RigidBody(body.name, props.mass, position, rotation, angle, props.inertia, body)
+
+
+def parts_key(body: Body) -> tuple:
+    """What a body's mass properties depend on besides the names: its parts' trees. Two
+    bodies with equal keys have equal properties (a chain of equal links: one key)."""
+    tree = lambda e: None if e is None else e.tree  # noqa: E731
+    return tuple((p.shape, tree(p.mass), tuple((k, v.tree) for k, v in p.dimensions), tree(p.at), tree(p.axis),
+                  tuple(e.tree for e in p.inertia.entries) if p.inertia else None, p.hole) for p in body.parts)
 
 
 def body_mass_properties(body: Body, names: Symbols) -> MassProperties:

@@ -204,14 +204,16 @@ def _product(a: Jet, b: Jet) -> Jet:
     return Jet(a.value * b.value, index, grad, hess)
 
 
-def full(jet, n: int, arithmetic: Arithmetic) -> tuple[np.ndarray, np.ndarray]:
-    """The gradient (n,) and Hessian (n, n) of a jet, or of a constant (zeros)."""
-    grad, hess = arithmetic.zeros(n), arithmetic.zeros((n, n))
+def full(jet, n: int, arithmetic: Arithmetic, hessian: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+    """The gradient (n,) and Hessian (n, n) of a jet, or of a constant (zeros); the
+    Hessian None where ``hessian`` is False."""
+    grad = arithmetic.zeros(n)
+    hess = arithmetic.zeros((n, n)) if hessian else None
     if isinstance(jet, Jet):
         grad[jet.index] = jet.grad
-        if jet.hess is not None:
+        if hess is not None and jet.hess is not None:
             hess[np.ix_(jet.index, jet.index)] = jet.hess
-    return arithmetic.array(grad), arithmetic.array(hess)
+    return arithmetic.array(grad), None if hess is None else arithmetic.array(hess)
 
 
 # --- scalar functions: f, f′, f″ at a point -------------------------------------------

@@ -28,7 +28,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from rbdsolve.model.build import body_mass_properties
+from rbdsolve.model.build import body_mass_properties, parts_key
 from rbdsolve.model.jet import FLOAT, MP50, Arithmetic, Jet, apply, atan2, full, power
 from rbdsolve.model.state import State
 from rbdsolve.model.symbols import Symbols, exact_number
@@ -91,34 +91,56 @@ class NumericScene:
 
     def mass_matrix(self, q: Sequence) -> np.ndarray:
         """M(q) = Σ_bodies (m J_vᵀ J_v + J_zz ∇α ∇αᵀ), n×n (first-order jets suffice)."""
-        arithmetic = self.arithmetic
-        with arithmetic.precision():
-            scene = _Evaluator(self, q, order=1)
-            M = arithmetic.zeros((self.n, self.n))
-            for body in self.bodies:
-                for x in scene.position(body):
-                    _add_outer(M, body.mass, x)
-                if body.angle is not None:
-                    _add_outer(M, body.J_zz, scene.eval(body.angle))
-            return arithmetic.array(M)
+        with self.arithmetic.precision():
+            return self._mass(_Evaluator(self, q, order=1))
+
+    def linearized(self, q: Sequence) -> tuple[np.ndarray, np.ndarray]:
+        """M(q) and ∂²V/∂q∂q from one pass of second-order jets: M reads only their
+        gradients, which are the first-order jets' to the last bit (the same operations)."""
+        with self.arithmetic.precision():
+            scene = _Evaluator(self, q, order=2)
+            _, hess = full(self._energy(scene), self.n, self.arithmetic)
+            return self._mass(scene), hess
+
+    def _mass(self, scene: _Evaluator) -> np.ndarray:
+        M = self.arithmetic.zeros((self.n, self.n))
+        for body in self.bodies:
+            for x in scene.position(body):
+                _add_outer(M, body.mass, x)
+            if body.angle is not None:
+                _add_outer(M, body.J_zz, scene.eval(body.angle))
+        return self.arithmetic.array(M)
 
     def potential(self, q: Sequence) -> tuple[object, np.ndarray, np.ndarray]:
         """V(q), ∂V/∂q (n,) and ∂²V/∂q∂q (n, n), with
         V = −Σ m g·r_G + Σ ½ k s² (s = |r_a − r_b| − L₀, or α − α₀ for a torsional spring)."""
-        arithmetic = self.arithmetic
-        with arithmetic.precision():
-            scene = _Evaluator(self, q, order=2)
-            V = arithmetic.number(0)
-            if self.gravity is not None:
-                g = scene.eval(self.gravity)
-                for body in self.bodies:
-                    V = V - body.mass * _dot(g, scene.position(body))
-            for spring in self.springs:
-                k = scene.eval(spring.stiffness.tree)
-                V = V + k / 2 * scene.stretch_squared(spring)
-            grad, hess = full(V, self.n, arithmetic)
+        with self.arithmetic.precision():
+            V = self._potential(q, order=2)
+            grad, hess = full(V, self.n, self.arithmetic)
             value = V.value if isinstance(V, Jet) else V
-            return arithmetic.number(value), grad, hess
+            return self.arithmetic.number(value), grad, hess
+
+    def gradient(self, q: Sequence) -> np.ndarray:
+        """∂V/∂q (n,) alone: first-order jets, without the Hessian's n² work per term."""
+        with self.arithmetic.precision():
+            grad, _ = full(self._potential(q, order=1), self.n, self.arithmetic, hessian=False)
+            return grad
+
+    def _potential(self, q: Sequence, order: int):
+        """V as a jet of the given order (or a number where V is constant)."""
+        return self._energy(_Evaluator(self, q, order=order))
+
+    def _energy(self, scene: _Evaluator):
+        """V on the evaluator's jets (the formula of ``potential``)."""
+        V = self.arithmetic.number(0)
+        if self.gravity is not None:
+            g = scene.eval(self.gravity)
+            for body in self.bodies:
+                V = V - body.mass * _dot(g, scene.position(body))
+        for spring in self.springs:
+            k = scene.eval(spring.stiffness.tree)
+            V = V + k / 2 * scene.stretch_squared(spring)
+        return V
 
 
 # --- what the numeric route covers ----------------------------------------------------
@@ -219,20 +241,13 @@ def exact_fraction(x) -> Fraction:
 def _numeric_body(body: Body, names: Symbols, arithmetic: Arithmetic, cache: dict) -> NumericBody:
     """Mass, centre and J_zz from the shape library's formulas with numbers put in
     (once per distinct body description: a chain of equal links needs one)."""
-    key = tuple(_part_key(p) for p in body.parts)
+    key = parts_key(body)
     if key not in cache:
         props = body_mass_properties(body, names)
         cache[key] = tuple(_number(x, arithmetic) for x in (props.mass, *props.centre, props.inertia[2, 2]))
     mass, cx, cy, cz, J_zz = cache[key]
     angle = body.angle.tree if body.angle is not None else None
     return NumericBody(body.name, mass, (cx, cy, cz), J_zz, body.at.tree, angle)
-
-
-def _part_key(part) -> tuple:
-    tree = lambda e: None if e is None else e.tree  # noqa: E731
-    entries = tuple(e.tree for e in part.inertia.entries) if part.inertia else None
-    return (part.shape, tree(part.mass), tuple((k, v.tree) for k, v in part.dimensions),
-            tree(part.at), tree(part.axis), entries, part.hole)
 
 
 def _number(x: sp.Expr, arithmetic: Arithmetic):

@@ -7,6 +7,7 @@ and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Mapping
@@ -74,11 +75,19 @@ class Symbols:
 
 
 def _real(value, expr: ex.Expr):
-    """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show."""
+    """Scene values are real numbers: refuse 1/(1-1), sqrt(-1), log(0) where they show.
+    A sum is real in this sense exactly when each of its terms is, and a point of a
+    chain repeats the terms of the point before it, so each term is asked once."""
     for item in (value if isinstance(value, sp.MatrixBase) else [value]):
-        if item.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or item.has(sp.I) or _provably_complex(item):
+        if not all(_real_term(term) for term in sp.Add.make_args(item)):
             raise InputError(f"'{expr.text}' is not a real number here ({to_unicode(item)})", expr.loc)
     return value
+
+
+@functools.lru_cache(maxsize=4096)
+def _real_term(term: sp.Expr) -> bool:
+    """No infinity, NaN or i in the term, and no piece of it provably complex."""
+    return not (term.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or term.has(sp.I) or _provably_complex(term))
 
 
 def _provably_complex(item: sp.Expr) -> bool:

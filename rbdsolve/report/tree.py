@@ -19,7 +19,9 @@ Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an ans
 
 def leaves(value: object, path: Path = ()) -> Iterator[tuple[Path, object]]:
     """Each leaf of an answers tree with its path, in the order ``map_leaves`` walks."""
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+    if type(value) is float:  # most leaves of a numeric route (an n×n matrix): no type tests
+        yield path, value
+    elif dataclasses.is_dataclass(value) and not isinstance(value, type):
         for f in dataclasses.fields(value):
             yield from leaves(getattr(value, f.name), (*path, f.name))
     elif isinstance(value, Mapping):
@@ -49,14 +51,23 @@ def label(path: Path) -> str:
     return out
 
 
-def map_paths(value: object, leaf: Callable[[Path, object], object], path: Path = ()) -> object:
-    """``map_leaves`` with each leaf's path given to ``leaf`` too."""
+Row = Callable[[Path, tuple], list]  # a tuple of floats at a path -> what ``leaf`` gives for each, as a list
+
+
+def map_paths(value: object, leaf: Callable[[Path, object], object], path: Path = (), row: Row | None = None) -> object:
+    """``map_leaves`` with each leaf's path given to ``leaf`` too. ``row``, where given,
+    maps a whole tuple of floats (a row of a numeric route's n×n matrix) in one call,
+    instead of ``leaf`` on each of its entries, and must give the same list."""
+    if type(value) is float:  # most leaves of a numeric route (an n×n matrix): no type tests
+        return leaf(path, value)
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        return {f.name: map_paths(getattr(value, f.name), leaf, (*path, f.name)) for f in dataclasses.fields(value)}
+        return {f.name: map_paths(getattr(value, f.name), leaf, (*path, f.name), row) for f in dataclasses.fields(value)}
     if isinstance(value, Mapping):
-        return {str(k): map_paths(v, leaf, (*path, str(k))) for k, v in value.items()}
+        return {str(k): map_paths(v, leaf, (*path, str(k)), row) for k, v in value.items()}
     if isinstance(value, sp.MatrixBase):
-        return [[map_paths(x, leaf, (*path, i, j)) for j, x in enumerate(row)] for i, row in enumerate(value.tolist())]
+        return [[map_paths(x, leaf, (*path, i, j), row) for j, x in enumerate(r)] for i, r in enumerate(value.tolist())]
     if isinstance(value, (list, tuple)):
-        return [map_paths(v, leaf, (*path, i)) for i, v in enumerate(value)]
+        if row is not None and value and all(type(v) is float for v in value):
+            return row(path, value)
+        return [map_paths(v, leaf, (*path, i), row) for i, v in enumerate(value)]
     return leaf(path, value)

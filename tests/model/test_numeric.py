@@ -27,7 +27,7 @@ from rbdsolve.model.energy import mass_matrix, potential_energy
 from rbdsolve.model.numeric import FLOAT, MP50, NotNumeric, NumericScene
 from rbdsolve.problem import load_file, load_text
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, chain, hand_matrices
 
 TOLERANCE = {FLOAT.name: 1e-12, MP50.name: 1e-40}
 SAMPLE_VALUES = [Fraction(13, 10), Fraction(7, 10), Fraction(11, 10), Fraction(9, 10), Fraction(17, 10),
@@ -169,44 +169,6 @@ def test_every_function_against_the_symbolic_model(arithmetic) -> None:
 
 
 # --- a chain against hand formulas ----------------------------------------------------
-
-
-def chain(n: int, rods: bool) -> str:
-    """Links of length l hanging from O: P_i = P_(i−1) + l [sin θ_i, −cos θ_i]; a particle
-    at each P_i, or a rod along each link (its centre at the midpoint)."""
-    lines = ["parameters: {m: mass, l: length, g: gravity}",
-             f"coordinates: [{', '.join(f'th{i}' for i in range(1, n + 1))}]",
-             "gravity: [0, -g]", "points:", "  P0: [0, 0]"]
-    bodies = ["bodies:"]
-    for i in range(1, n + 1):
-        lines.append(f"  P{i}: P{i - 1} + l*[sin(th{i}), -cos(th{i})]")
-        if rods:
-            lines.append(f"  G{i}: P{i - 1} + l/2*[sin(th{i}), -cos(th{i})]")
-            bodies.append(f"  rod{i}: {{shape: rod, mass: m, length: l, at: G{i}, angle: th{i} - pi/2}}")
-        else:
-            bodies.append(f"  bob{i}: {{shape: particle, mass: m, at: P{i}}}")
-    return "\n".join(lines + bodies + ["questions: [modes]", ""])
-
-
-def hand_matrices(n: int, rods: bool, m, l, g) -> tuple[list, list]:
-    """M and K at q = 0 (1-based i, j). At q = 0 each point moves horizontally by
-    Σ_(j below) l θ̇_j, and V = −m g Σ y has ∂²V/∂θ_j² = m g l × (the mass below joint j).
-
-    Particles: M_ij = m l² (n − max(i, j) + 1),  K_ii = m g l (n − i + 1).
-    Rods (centre at the link's half, J = m l²/12): M_ij = m l² (n − j + 1/2) for i < j,
-    M_ii = m l² (n − i + 1/3) (= n − i + 1/4 + 1/12), K_ii = m g l (n − i + 1/2)."""
-    half = Fraction(1, 2) if rods else 0
-    M = [[0] * n for _ in range(n)]
-    K = [[0] * n for _ in range(n)]
-    for i in range(1, n + 1):
-        for j in range(1, n + 1):
-            below = n - max(i, j) + 1
-            if i == j:
-                M[i - 1][j - 1] = m * l**2 * (below - (Fraction(2, 3) if rods else 0))
-                K[i - 1][j - 1] = m * g * l * (below - half)
-            else:
-                M[i - 1][j - 1] = m * l**2 * (below - half)
-    return M, K
 
 
 @pytest.mark.parametrize("rods", [False, True], ids=["particles", "rods"])

@@ -77,7 +77,8 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     given = np.array([_real(model.symbols.scalar(e), model, e, name) for name, e in about])
     g, H = compiled_gradient(model)
     residual = np.asarray(g(given), dtype=float)
-    tol = ROOT_TOL * gradient_scale(model, g)
+    # ∂V/∂q exactly 0 is within any tolerance: V's scale over the box is then not needed
+    tol = ROOT_TOL * gradient_scale(model, g) if np.any(residual) else 0.0
     if np.max(np.abs(residual)) <= tol:
         return {n: model.symbols.scalar(e) for n, e in about}, ()
     refined = newton(given, g, H)

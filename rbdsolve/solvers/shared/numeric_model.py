@@ -87,8 +87,7 @@ def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, 
     scene = numeric_scene(model)
     if scene is not None:
         q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
-        K = finite(lambda x: scene.potential(x)[2], model)(q0)
-        M = finite(scene.mass_matrix, model)(q0)
+        M, K = finite(lambda x: np.stack(scene.linearized(x)), model)(q0)
         return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
     M = to_floats(mass_matrix(model, at), model.values)
@@ -135,6 +134,15 @@ def _shown(x) -> str:
 def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
     """The scene for floating-point evaluation, or None where it needs the symbolic model
     (3D orientations, frames, prescribed motion, …: see NotNumeric)."""
+    return _float_scene(model) if arithmetic is FLOAT else _scene(model, arithmetic)
+
+
+@memoized  # the gradient, the Hessian and M of one model share it
+def _float_scene(model: Model) -> NumericScene | None:
+    return _scene(model, FLOAT)
+
+
+def _scene(model: Model, arithmetic) -> NumericScene | None:
     values = {str(k): exact_fraction(v) for k, v in model.values.items()}
     try:
         return NumericScene.build(model.problem, values, arithmetic)
@@ -161,7 +169,7 @@ def compiled_gradient(model: Model):
     from the numeric scene where it applies, else compiled from the symbolic V."""
     scene = numeric_scene(model)
     if scene is not None:
-        return finite(lambda x: scene.potential(x)[1], model), finite(lambda x: scene.potential(x)[2], model)
+        return finite(scene.gradient, model), finite(lambda x: scene.potential(x)[2], model)
     V = potential_energy(model).total.xreplace(dict(model.values))
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
@@ -373,10 +381,19 @@ def _box(model: Model) -> tuple[tuple[float, float], ...]:
 
 
 def periodic_angles(model: Model) -> frozenset:
-    """The angle coordinates along which ∂V/∂q is 2π-periodic, checked at PERIODIC_SAMPLES
-    points to PERIODIC_TOL: an angle that also enters V bare (a torsional spring counts
-    turns) is searched, wrapped and merged as a length instead."""
-    return _periodic(model) if model.angles else frozenset()
+    """The angle coordinates along which ∂V/∂q is 2π-periodic: an angle that also enters
+    V bare (a torsional spring counts turns) is searched, wrapped and merged as a length
+    instead.
+
+    Where V is only gravity and springs (no inertial potential of a moving frame), the
+    build has already proved it for every angle of ``model.angles``: each enters the
+    positions and stretches only through sin and cos of integer multiples of itself
+    (model.build: ``_periodic_coordinates``, ``_refuse_winding_angles``), and masses,
+    stiffnesses and gravity are constants. Otherwise it is checked at PERIODIC_SAMPLES
+    points to PERIODIC_TOL."""
+    if not model.angles:
+        return frozenset()
+    return model.angles if not model.inertial else _periodic(model)
 
 
 @memoized

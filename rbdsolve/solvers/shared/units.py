@@ -44,11 +44,14 @@ def answer_units(answers: object, model: Model) -> object:
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
+    numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles)
+
+    zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
 
     def unit(path: Path, leaf: object) -> str | None:
-        named = [p for p in path if isinstance(p, str)]
         if isinstance(leaf, float):  # a numeric route's answer
-            return _numeric_unit(named, [p for p in path if isinstance(p, int)], coordinates, angles)
+            return numeric_unit(path)
+        named = [p for p in path if isinstance(p, str)]
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
         if _coordinate_value(named, coordinates):
@@ -56,13 +59,15 @@ def answer_units(answers: object, model: Model) -> object:
         if _kinematic(named):  # what it is fixes it: a state's bare rate 2 is 2 rad/s, not a pure number
             return _RATES[named[-1]].unit if named[-1] in _RATES else (LENGTH / TIME).unit
         if leaf == 0:
+            zeros.append(path)
             return _ZERO
         found = dimension_of(leaf, dimensions)
         if found is None:
             return None
         return "rad" if found == NUMBER and named and named[-1] in angles else found.unit
 
-    return _zeros_filled(map_paths(answers, unit))
+    units = map_paths(answers, unit, row=numeric_row)
+    return _zeros_filled(units) if zeros else units
 
 
 MASS = Dimension(mass=Fraction(1))
@@ -75,6 +80,7 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
     "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
     "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
 }
+_RATE_UNITS = {k: d.unit for k, d in _RATES.items()}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
 _PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 
@@ -112,7 +118,7 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
         return _coordinate_unit(named[-1], coordinates, angles)
     key = named[-1] if named else None
     if key in _RATES:
-        return _RATES[key].unit
+        return _RATE_UNITS[key]
     if key not in _PER_COORDINATES:
         return None
     dims = list(coordinates.values())
@@ -124,6 +130,36 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
     if pair is None or any(i >= len(dims) or dims[i] is None for i in pair):
         return None
     return (_PER_COORDINATES[key] / (dims[pair[0]] * dims[pair[1]])).unit
+
+
+def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
+    """``_numeric_unit`` as a function of the leaf's path, computed once per distinct
+    answer. The path but its last two steps, and those two with each index of a
+    coordinate replaced by its dimension's place in a list, decide it (the keys, and the
+    coordinates' dimensions for M_ij and K_ij): an n×n matrix repeats the same few."""
+    dims = tuple(coordinates.values())
+    kinds = list(dict.fromkeys(dims))
+    kind_of = tuple(kinds.index(d) for d in dims)
+    memo: dict = {}
+
+    def unit(path: Path) -> str | None:
+        tail = tuple(("kind", kind_of[p]) if isinstance(p, int) and p < len(dims) else p for p in path[-2:])
+        key = (path[:-2], tail)
+        if key not in memo:
+            memo[key] = _numeric_unit([p for p in path if isinstance(p, str)], [p for p in path if isinstance(p, int)],
+                                      coordinates, angles)
+        return memo[key]
+
+    def row(path: Path, values: tuple) -> list:
+        """The units of a row of floats at once: they follow from the row's path but its
+        last step, that step (as ``unit`` sees it) and the row's length."""
+        last = ("kind", kind_of[path[-1]]) if path and isinstance(path[-1], int) and path[-1] < len(dims) else path[-1:]
+        key = ("row", path[:-1], last, len(values))
+        if key not in memo:
+            memo[key] = [unit((*path, j)) for j in range(len(values))]
+        return list(memo[key])
+
+    return unit, row
 
 
 _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix, if any

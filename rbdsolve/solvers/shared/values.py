@@ -16,7 +16,7 @@ from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.problem.expr import Expr
-from rbdsolve.report.tree import label, leaves, map_leaves
+from rbdsolve.report.tree import label, leaves, map_paths
 
 
 SAMPLE_POINTS = (1, sp.Rational(13, 10), sp.Rational(17, 7))  # each symbol without a value, in turn
@@ -59,7 +59,8 @@ def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     count, a text), so the tree reads like the answers.
     """
     roots: dict[sp.Expr, sp.Expr] = {}
-    return map_leaves(value, lambda leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf))
+    return map_paths(value, lambda _, leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf),
+                     row=lambda _, floats: list(floats))  # a numeric route's floats are their own values
 
 
 CONDITIONS = (Relational, BooleanAtom, BooleanFunction)  # exists_when, a case's when
@@ -184,6 +185,8 @@ def with_irrelevant_filled(model, question):
     """The model with PLACEHOLDER for each parameter that has no value and that the
     question's answer cannot depend on (a yo-yo axle's length in a planar motion): the
     floating-point machinery evaluates every ingredient, the answer never sees these."""
+    if all(s in model.values for s in model.symbols.parameters.values()):
+        return model  # nothing to fill (and no need to read every body for what is relevant)
     relevant = relevant_parameters(model, question)
     filler = {s: PLACEHOLDER for s in model.symbols.parameters.values()
               if s not in model.values and s not in relevant}
