@@ -62,8 +62,9 @@ def _kinetic(model: Model) -> tuple[sp.Expr, list[st.Step]]:
 
 
 def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
-    """V term by term, or, past SCAN_TERMS terms, as ½ qᵀ K q or one sum."""
-    if V.terms and terms(V.total) > SCAN_TERMS:
+    """V term by term, or, past SCAN_TERMS terms in all (or twice that in its parts
+    together: a chain's bodies each repeat the links above them), as ½ qᵀ K q or one sum."""
+    if V.terms and (terms(V.total) > SCAN_TERMS or sum(terms(t.value) for t in V.terms) > 2 * SCAN_TERMS):
         return potential_steps(POTENTIAL, V, model, present(V.total, model))
     return _energy_steps(POTENTIAL, "V", V, model)
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.display import Scaled
+from rbdsolve.form.display import Scaled, plain
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers.shared.large_energy import SCAN_TERMS
@@ -69,3 +69,15 @@ def test_a_long_spring_chain_has_its_potential_as_a_matrix() -> None:
     expected[n - 1, n - 1] = k
     assert matrix_of(relation(summary, "K").rhs) == expected
     assert SCAN_TERMS == 12
+
+
+def test_a_chain_of_seven_has_its_potential_as_one_sum() -> None:
+    n = 7  # its bodies' V together: 1 + 2 + … + 7 = 28 terms > 2 SCAN_TERMS
+    model = build_model(load_text(chain(n), "chain.yaml"))
+    summary = summarize_model(model)
+    assert not any(str(r.lhs) == "V_1" for s in summary.steps for r in s.math)
+    theta = model.state.functions()
+    expected = -m * g * l * sum((n - i) * sp.cos(theta[i]) for i in range(n))  # by hand
+    shown = relation(summary, "V").rhs
+    assert sp.expand(plain(shown) - expected) == 0
+    assert sp.expand(summary.V - expected) == 0
