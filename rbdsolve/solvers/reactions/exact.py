@@ -30,6 +30,8 @@ def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
     supports = tuple(held(model, s) for s in question.options.supports)
     found = accelerations(lagrange_equations(model), model)
+    if found.too_long:
+        raise UnsolvedError("the general accelerations are too long to write out, and Newton–Euler needs them")
     if found.solved is None:
         raise UnsolvedError("the mass matrix is singular: Lagrange's equations do not fix the accelerations, "
                             "so Newton–Euler cannot give the forces")

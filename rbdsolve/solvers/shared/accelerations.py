@@ -28,10 +28,12 @@ from rbdsolve.solvers.shared.values import sample
 class Accelerations:
     M: sp.Matrix  # ∂E/∂q̈
     h: tuple[sp.Expr, ...]  # E − M q̈
-    solved: tuple[sp.Expr, ...] | None  # q̈_i(q, q̇, t); None where det M = 0 identically
+    solved: tuple[sp.Expr, ...] | None  # q̈_i(q, q̇, t); None where det M = 0 identically, or too long
+    too_long: bool = False  # None because the general form is too long to write out, not a singular M
 
 
 GENERAL_OPS = 400  # beyond this size of h the general q̈ is not written out
+NUMERATOR_OPS = 4000  # nor beyond this size of a q̈'s numerator (Cramer's rule): a 5-link chain's has 10⁴
 
 
 def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None = None,
@@ -45,16 +47,18 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None 
     if at is not None:
         M, h = M.xreplace(at).applyfunc(sp.simplify), tuple(sp.simplify(x.xreplace(at)) for x in h)
     elif general and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
-        return Accelerations(M, h, None)
+        return Accelerations(M, h, None, too_long=True)
     det = tidy(sp.expand(M.det(method="berkowitz")))
     if det == 0:
         return Accelerations(M, h, None)
-    solved = []
+    numerators = []
     for i in range(n):
         Mi = M.copy()
         Mi[:, i] = sp.Matrix([-x for x in h])
-        solved.append(_fraction(tidy(sp.expand(Mi.det(method="berkowitz"))), det))
-    return Accelerations(M, h, tuple(solved))
+        numerators.append(tidy(sp.expand(Mi.det(method="berkowitz"))))
+        if at is None and general and sp.count_ops(numerators[-1]) > NUMERATOR_OPS:
+            return Accelerations(M, h, None, too_long=True)  # cancelling it would take minutes
+    return Accelerations(M, h, tuple(_fraction(num, det) for num in numerators))
 
 
 def _radicals(h: tuple[sp.Expr, ...]) -> bool:
