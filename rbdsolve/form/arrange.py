@@ -113,14 +113,8 @@ def scaled_matrix(matrix: sp.Matrix, symbols: set[sp.Symbol]) -> Scaled | sp.Mat
     scale = abs(scale) if scale.could_extract_minus_sign() else scale
     if scale == 1:
         return sp.ImmutableMatrix(matrix)
-    entries: dict[sp.Expr, sp.Expr] = {}  # once per distinct entry (a symmetric M, K: half of them)
-
-    def entry(x: sp.Expr) -> sp.Expr:
-        if x not in entries:
-            entries[x] = factored(tidy(x / scale))
-        return entries[x]
-
-    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(entry)))
+    # tidy and factored are cached: a symmetric M or K works once per distinct entry
+    return Scaled(scale, sp.ImmutableMatrix(matrix.applyfunc(lambda x: factored(tidy(x / scale)))))
 
 
 def monomial_order(monomials: list[sp.Expr], generators: list[sp.Expr]) -> list[sp.Expr]:

@@ -141,13 +141,8 @@ def _pythagoras_in(expr: sp.Expr, x: sp.Expr) -> sp.Expr:
 
 
 def tidy_matrix(matrix: sp.Matrix) -> sp.Matrix:
-    """Each entry tidied; a symmetric matrix (M, K, a Hessian) tidies its upper
-    triangle and mirrors it, half the work."""
-    if not matrix.is_square or not matrix.is_symmetric(simplify=False):
-        return matrix.applyfunc(tidy)
-    n = matrix.rows
-    upper = {(i, j): tidy(matrix[i, j]) for i in range(n) for j in range(i, n)}
-    return sp.Matrix(n, n, lambda i, j: upper[(min(i, j), max(i, j))])
+    """Each entry tidied (a symmetric matrix's mirrored entries are the cache's)."""
+    return matrix.applyfunc(tidy)
 
 
 def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False) -> dict[sp.Expr, sp.Expr]:

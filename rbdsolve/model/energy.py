@@ -162,8 +162,7 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
             _add_products(terms, sp.Integer(1), J_w, J_G * J_w)
     # each entry one sum over the bodies (no matrix of partial sums rebuilt per body);
     # M is symmetric: the upper triangle, mirrored
-    upper = {key: tidy(sp.Add(*parts)) for key, parts in terms.items()}
-    return sp.Matrix(n, n, lambda i, j: upper[(min(i, j), max(i, j))])
+    return tidy_matrix(sp.Matrix(n, n, lambda i, j: sp.Add(*terms[(min(i, j), max(i, j))])))
 
 
 def _add_products(terms: dict, factor: sp.Expr, A: sp.Matrix, B: sp.Matrix) -> None:
