@@ -12,6 +12,7 @@ import json
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from benchmarks.figures import save
 from benchmarks.scale import chart_scaling, fill_docs, scale_tables
 
 CLIP = 1e-17  # errors below this (the exact route's ~1e-30) are drawn at the clip
@@ -208,7 +209,7 @@ def chart_time_error(result: dict, out: Path) -> None:
     axes[0].set_ylabel("max relative error of the eigenvalues λ")
     fig.suptitle("Speed against accuracy, modes (labels: n). Errors below 1e-17 "
                  "(exact route: ~1e-30) drawn at 1e-17", fontsize=11)
-    _save(fig, out / "time_vs_error")
+    save(fig, out / "time_vs_error")
 
 
 def _scatter(ax, xy, label, style) -> None:
@@ -259,7 +260,7 @@ def chart_time_size(result: dict, out: Path) -> None:
             ax.legend(fontsize=8)
     fig.suptitle("Time against problem size (× at a time limit: did not finish within it)", fontsize=11)
     fig.tight_layout()
-    _save(fig, out / "time_vs_size")
+    save(fig, out / "time_vs_size")
 
 
 def _timeouts(ax, rows, key: str, color: str) -> None:
@@ -268,11 +269,6 @@ def _timeouts(ax, rows, key: str, color: str) -> None:
             ax.plot([r[key]], [r["timeout_s"]], marker="x", color=color, ms=10, mew=2, ls="none")
             ax.annotate(f"> {r['timeout_s']:.0f} s", (r[key], r["timeout_s"]), textcoords="offset points",
                         xytext=(4, -10), fontsize=7, color=color)
-
-
-def _save(fig, stem: Path) -> None:
-    fig.savefig(stem.with_suffix(".png"), dpi=110, bbox_inches="tight")
-    fig.savefig(stem.with_suffix(".svg"), bbox_inches="tight")
 
 
 KIND_STYLE = {"mass": ("tab:blue", "o", "one small mass m₃ = r"),
@@ -318,7 +314,7 @@ def chart_conditioning(result: dict, out: Path) -> None:
     fig.suptitle("Numeric modes route, three masses on springs, ratio r = 1 … 1e-12: actual error against the "
                  "50-digit reference and stated bound. Errors below 1e-17 drawn at 1e-17", fontsize=10)
     fig.tight_layout()
-    _save(fig, out / "conditioning")
+    save(fig, out / "conditioning")
 
 
 def write_charts(result: dict, out: Path) -> None:

@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass
 
+from benchmarks.figures import save
+
 SLOPE_POINTS = 4  # the last sizes that finished, fitted for the slope
 DEFAULT = "auto"  # the route `rbdsolve solve FILE` takes without --route
 
@@ -228,8 +230,6 @@ def chart_scaling(result: dict, out) -> None:
     import matplotlib.pyplot as plt
     from matplotlib.ticker import FuncFormatter, NullFormatter
 
-    from benchmarks.report import _save
-
     fig, axes = plt.subplots(1, 2, figsize=(16, 6.5), sharey=True)
     titles = {"compute": "compute: load + build + solver (in-process median)",
               "whole": "whole process: rbdsolve solve FILE --format json (median)"}
@@ -253,7 +253,7 @@ def chart_scaling(result: dict, out) -> None:
     fig.suptitle("Chains, modes: time against n (log–log; slope = least squares over the last "
                  f"{SLOPE_POINTS} sizes that finished; × = timed out at that limit)", fontsize=11)
     fig.tight_layout()
-    _save(fig, out / "scaling")
+    save(fig, out / "scaling")
 
 
 BEGIN = "<!-- issue-23 tables:"
