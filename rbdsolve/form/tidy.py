@@ -32,12 +32,33 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         return expr
     if expr.has(sp.sin, sp.cos):
         expr = _pythagoras(expr)
-        folded = TR10i(expr)
-        if sp.count_ops(folded) <= sp.count_ops(expr):
-            expr = folded
+        if _foldable(expr):
+            folded = TR10i(expr)
+            if sp.count_ops(folded) <= sp.count_ops(expr):
+                expr = folded
     if _has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(sp.factor_terms(expr))
+
+
+def _foldable(expr: sp.Expr) -> bool:
+    """Could ``fu.TR10i`` fold anything in ``expr``? It rewrites a pair of terms of one
+    sum, cos a cos b ± sin a sin b, sin a cos b ± cos a sin b, or a cos x + b sin x with
+    b/a ∈ {1, √3, 1/√3}: in each, one term has a factor cos x and another sin x for the
+    same x. Where no sum has such a pair, TR10i returns ``expr`` itself, and skipping
+    it saves its search over all pairs (a chain's V, n cosines: n² pairs, for nothing)."""
+    for total in expr.atoms(sp.Add):
+        cosines: dict[sp.Expr, set[int]] = {}
+        sines: dict[sp.Expr, set[int]] = {}
+        for i, term in enumerate(total.args):
+            for factor in sp.Mul.make_args(term):
+                base = factor.as_base_exp()[0]
+                if isinstance(base, (sp.sin, sp.cos)):
+                    (sines if isinstance(base, sp.sin) else cosines).setdefault(base.args[0], set()).add(i)
+        for x in cosines.keys() & sines.keys():
+            if len(cosines[x] | sines[x]) > 1:  # cos x in one term, sin x in another
+                return True
+    return False
 
 
 def tidy_fraction(expr: sp.Expr) -> sp.Expr:

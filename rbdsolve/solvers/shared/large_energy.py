@@ -15,7 +15,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.form.arrange import scaled_matrix
-from rbdsolve.form.display import Relation
+from rbdsolve.form.display import Relation, Scaled
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import Energy, hessian, jacobians
 from rbdsolve.report import steps as st
@@ -52,7 +52,7 @@ def kinetic_steps(text: str, products: int, M: sp.Matrix, model: Model) -> list[
         f"{text}. T has {products} products q̇ᵢq̇ⱼ, so it is written as a matrix: T = ½ q̇ᵀ M(q) q̇ with "
         f"M(q) = Σ (m J_vᵀ J_v + J_ωᵀ J_G J_ω) over the bodies (J_v, J_ω: the Jacobians of v_G and ω "
         "with respect to q̇):",
-        Relation(_M_of_q(), scaled_matrix(model.to_time(M), symbols)))]
+        Relation(_M_of_q(), _in_time(scaled_matrix(M, symbols), model)))]
 
 
 def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> list[st.Step]:
@@ -62,8 +62,17 @@ def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> 
     if _quadratic_form(energy.total, model.q):
         K = hessian(energy.total, tuple(model.q))
         return [st.definition(f"{text}. V is a quadratic form in q, written as a matrix: V = ½ qᵀ K q with "
-                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), scaled_matrix(model.to_time(K), symbols)))]
+                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), _in_time(scaled_matrix(K, symbols), model)))]
     return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), shown))]
+
+
+def _in_time(shown: Scaled | sp.Matrix, model: Model) -> Scaled | sp.Matrix:
+    """A matrix arranged over q, shown over q(t): its scale is a product of parameters,
+    so only the inner matrix changes (arranging over q lets the entries be the ones M's
+    and K's tidying cached, and the q(t) form is one substitution at the end)."""
+    if isinstance(shown, Scaled):
+        return Scaled(shown.factor, model.to_time(shown.inner))
+    return model.to_time(shown)
 
 
 def terms(expr: sp.Expr) -> int:
