@@ -37,7 +37,9 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     if expr.has(sp.pi):
         candidates.append(_factored_over(expr, atoms | {sp.pi}))
     candidates.append(_number_distributed(expr))
-    candidates = [c for c in candidates if c != expr] or [expr]
+    candidates = [c for c in candidates if c != expr]
+    if not candidates:  # nothing to weigh: printing expr twice would only compare it with itself
+        return expr
     best = min(candidates, key=lambda c: len(to_unicode(c)))
     # a sum of negative terms may spend its brackets: −(3/2 M r² + e² m), not (−3/2 M r² − e² m)
     negative = all(x.could_extract_minus_sign() for x in expr.args) if expr.is_Add else False

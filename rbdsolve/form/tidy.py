@@ -28,13 +28,15 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     expr = sp.expand(expr)
     if expr.is_Rational:
         return expr
-    if expr.count_ops() > MAX_OPS:
+    ops = sp.count_ops(expr)
+    if ops > MAX_OPS:
         return expr
     if expr.has(sp.sin, sp.cos):
-        expr = _pythagoras(expr)
+        shorter = _pythagoras(expr)
+        ops, expr = (ops if shorter is expr else sp.count_ops(shorter)), shorter
         if _foldable(expr):
             folded = TR10i(expr)
-            if sp.count_ops(folded) <= sp.count_ops(expr):
+            if sp.count_ops(folded) <= ops:
                 expr = folded
     if _has_denominator(expr):
         expr = _cancel(expr)

@@ -125,8 +125,15 @@ def _translation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
     than differentiating v_G = dr_G/dt again); from v_G where it is given."""
     r = body.position
     if r is not None and not r.has(*state.qd):
-        return r.jacobian(state.q), sp.diff(r, t)
+        return _jacobian(r, state.q), sp.diff(r, t)
     return _split(body.velocity(state), state)
+
+
+def _jacobian(r: sp.Matrix, q: tuple[sp.Expr, ...]) -> sp.Matrix:
+    """∂rᵢ/∂qⱼ, differentiating only by the coordinates rᵢ holds (a chain's link k
+    holds q₁ … q_k: half of Matrix.jacobian's derivatives are zeros it works out)."""
+    present = [r_i.free_symbols for r_i in r]
+    return sp.Matrix(len(r), len(q), lambda i, j: sp.diff(r[i], q[j]) if q[j] in present[i] else sp.Integer(0))
 
 
 def _rotation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:

@@ -14,6 +14,7 @@ and say what null means in docs/json.md), so it is an InternalError here, not a
 from __future__ import annotations
 
 import json
+from functools import lru_cache
 from enum import Enum
 import sympy as sp
 
@@ -36,8 +37,13 @@ def _exact_leaf(value: object) -> object:
     if isinstance(value, Enum):
         return value.value
     if isinstance(value, sp.Basic):
-        return str(value)
+        return _text(value)
     return value
+
+
+@lru_cache(maxsize=4096)  # a symmetric M or K, and T's coefficients in M, print each entry once
+def _text(value: sp.Basic) -> str:
+    return str(value)
 
 
 def _math(value: Math) -> object:
