@@ -19,8 +19,9 @@ import sympy as sp
 from sympy.printing.mathml import MathMLPresentationPrinter
 
 from rbdsolve.form.display import Along, Label, Math, Product, Relation, Scaled, Terms
-from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, positive_first, \
+from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, \
     signs_placed, split_name
+from rbdsolve.form.term_order import exam_order, readable_cosine
 
 _DOTS = {1: "\u02d9", 2: "\u00a8", 3: "\u20db"}  # ˙ ¨ ⃛ : spacing accents over the base letter
 _XML_ENTITIES = {"lt", "gt", "amp", "quot", "apos"}
@@ -84,7 +85,7 @@ class MathMLPrinter(MathMLPresentationPrinter):
         return self.dom.createTextNode(markup)
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(list(super()._as_ordered_terms(expr, order)))
+        return exam_order(list(super()._as_ordered_terms(expr, order)))
 
     def parenthesize(self, item, level, strict=False):
         from sympy.printing.precedence import precedence_traditional
@@ -108,7 +109,7 @@ class MathMLPrinter(MathMLPresentationPrinter):
         name = _coordinate_name(e)
         if name is not None:
             return self._raw(name_mathml(name))
-        return super()._print_Function(e)
+        return super()._print_Function(readable_cosine(e))
 
     def _print_Derivative(self, e):
         if e.expr.is_Symbol and len(e.variables) == 1:  # ∂V/∂θ

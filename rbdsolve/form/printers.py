@@ -17,6 +17,7 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 from rbdsolve.form.display import Along, Label, Math, Product, Scaled, Terms
+from rbdsolve.form.term_order import exam_order, readable_cosine
 
 GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -154,25 +155,11 @@ def without_noise(terms: list) -> list:
     return [t for i, t in enumerate(terms) if i not in small] if small and len(small) < len(terms) else terms
 
 
-def positive_first(terms: list) -> list:
-    """A sum's terms in the order an exam writes a difference: a positive number first
-    beside symbols (1 + e, 1 − e², 1 + 3 cos²α), else a positive term first where the
-    first is negative (g − R Ω² for −R Ω² + g, 9π − 16 for −16 + 9π)."""
-    number = next((t for t in terms if t.is_Rational and t.is_positive), None)
-    if number is not None and len(terms) > 1 and any(t.free_symbols for t in terms):
-        return [number, *(t for t in terms if t is not number)]
-    if terms and terms[0].could_extract_minus_sign():
-        first = next((t for t in terms if not t.could_extract_minus_sign()), None)
-        if first is not None:
-            return [first, *(t for t in terms if t is not first)]
-    return terms
-
-
 class UnicodePrinter(StrPrinter):
     """One-line unicode math: 7/8 m r² θ̇², √3 r, cos(φ − θ)."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
+        return exam_order(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Symbol(self, expr):
         return unicode_name(expr.name)
@@ -183,7 +170,7 @@ class UnicodePrinter(StrPrinter):
         name = _coordinate_name(expr)
         if name is not None:
             return unicode_name(name)
-        return super()._print_Function(expr)
+        return super()._print_Function(readable_cosine(expr))
 
     def _print_Pi(self, expr):
         return "π"
@@ -341,7 +328,7 @@ class TexPrinter(LatexPrinter):
     """LaTeX with \\dot{\\theta}, rational coefficients in front, \\varphi."""
 
     def _as_ordered_terms(self, expr, order=None):
-        return positive_first(without_noise(list(super()._as_ordered_terms(expr, order))))
+        return exam_order(without_noise(list(super()._as_ordered_terms(expr, order))))
 
     def _print_Pow(self, expr):
         base, exp = expr.as_base_exp()
@@ -360,7 +347,7 @@ class TexPrinter(LatexPrinter):
         if name is not None:
             text = latex_name(name)
             return f"{text}^{{{exp}}}" if exp else text
-        return super()._print_Function(expr, exp)
+        return super()._print_Function(readable_cosine(expr), exp)
 
     def _print_Derivative(self, expr):
         if expr.expr.is_Symbol and len(expr.variables) == 1:  # ∂V/∂θ

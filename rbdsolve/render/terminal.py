@@ -73,7 +73,7 @@ def _solution(number: int, s: Solution) -> list:
     numbers, accuracy = answer_and_accuracy_lines(s)
     if numbers:
         out += [Text("Numeric values:")]
-        out += [Text("    " + line, style="cyan") for line in numbers]
+        out += [MathLine(line, "cyan") for line in numbers]
     return out + _accuracy(accuracy_steps(s.steps), accuracy)
 
 

@@ -1,6 +1,9 @@
 """Long math lines broken where a reader expects it: before a + or − (or an = of a
 chain) at the outermost bracket depth that fits, the continuation lines indented
-further (a hanging indent), never inside a term such as `(8` / `R)`."""
+further (a hanging indent), never inside a term such as `(8` / `R)`. A matrix too
+long for a line is written a row per line, the rows aligned under the first, as a
+textbook sets M(q) of an n-link chain; a row too long for its line breaks between
+entries."""
 
 from __future__ import annotations
 
@@ -8,40 +11,106 @@ OPERATORS = (" + ", " − ", " = ", " ⇒ ", " < ", " > ", " ≤ ", " ≥ ")
 OPEN, CLOSE = "([{", ")]}"
 
 
-def break_points(text: str) -> list[tuple[int, int]]:
+def break_points(text: str, entries: bool = False) -> list[tuple[int, int]]:
     """(position, bracket depth) of each place a line may break: the space before an
-    operator (the operator then starts the next line)."""
+    operator (the operator then starts the next line); with ``entries``, also the space
+    after a comma (the next entry of a matrix row starts the next line)."""
     points, depth = [], 0
     for i, ch in enumerate(text):
         if ch in OPEN:
             depth += 1
         elif ch in CLOSE:
             depth = max(0, depth - 1)
-        elif ch == " " and i > 0 and any(text.startswith(op, i) for op in OPERATORS):
+        elif ch == " " and i > 0 and (any(text.startswith(op, i) for op in OPERATORS)
+                                      or (entries and text[i - 1] == ",")):
             points.append((i, depth))
     return points
 
 
 def wrap_math(text: str, width: int, indent: int = 4, hang: int = 8) -> list[str]:
     """``text`` as lines of at most ``width`` columns where it can be: the first line
-    indented by ``indent``, the others by ``hang``. Each break is the one at the least
-    bracket depth among those that fit and fill at least half the line (any that fit,
-    if none does), the furthest of them; a term longer than a line stays whole (the
-    terminal folds it)."""
+    indented by ``indent``, the others by ``hang``; a matrix longer than a line, a row
+    per line (``matrix_rows``)."""
+    if indent + len(text) <= width:
+        return [" " * indent + text]
+    found = _first_matrix(text)
+    if found is None or indent + found[2] - found[0] <= width:  # a matrix that fits a line stays whole
+        return _wrapped(text, width, indent, hang)
+    column = indent + found[0] + 1  # under the first row's own "["
+    column = column if column <= width // 2 else hang  # a long name before it: rows at the hang
+    rows = matrix_rows(text)
+    lines = _wrapped(rows[0], width, indent, column + 1, entries=True)
+    for row in rows[1:]:
+        lines += _wrapped(row, width, column, column + 1, entries=True)
+    return lines
+
+
+def matrix_rows(text: str) -> list[str]:
+    """``text`` cut after each "]," that ends a row of its first matrix (a list of
+    lists, "[[…], […]]"): ["M = m [[a, b],", "[c, d]]"]; [text] without one."""
+    found = _first_matrix(text)
+    if found is None:
+        return [text]
+    pieces, last = [], 0
+    for cut in found[1]:
+        pieces.append(text[last:cut])
+        last = cut + 1  # the space after "],"
+    return [*pieces, text[last:]]
+
+
+def _first_matrix(text: str) -> tuple[int, list[int], int] | None:
+    """The first "[[…]]" in ``text``: where it starts, where each row but the last ends
+    (after its "],"), and where it ends; None without one."""
+    start = text.find("[[")
+    if start < 0:
+        return None
+    cuts, depth = [], 0
+    for i in range(start, len(text)):
+        if text[i] in OPEN:
+            depth += 1
+        elif text[i] in CLOSE:
+            depth -= 1
+            if depth == 0:
+                return start, cuts, i + 1
+            if depth == 1 and text.startswith("], ", i):
+                cuts.append(i + 2)
+    return None  # unbalanced: not a matrix
+
+
+def _wrapped(text: str, width: int, indent: int, hang: int, entries: bool = False) -> list[str]:
+    """``text`` broken at ``_cut`` until each line fits; a term longer than a line stays
+    whole (the terminal folds it)."""
     lines, rest, lead = [], text, indent
     while lead + len(rest) > width:
-        room = width - lead
-        fitting = [(p, d) for p, d in break_points(rest) if 0 < p <= room]
-        if not fitting:
-            later = [p for p, _ in break_points(rest) if p > 0]
-            if not later:
-                break
-            cut = later[0]
-        else:
-            fitting = [(p, d) for p, d in fitting if p >= room // 2] or fitting
-            least = min(d for _, d in fitting)
-            cut = max(p for p, d in fitting if d == least)
+        cut = _cut(rest, width - lead, width - hang, entries)
+        if cut is None:
+            break
         lines.append(" " * lead + rest[:cut])
         rest, lead = rest[cut + 1:], hang
     lines.append(" " * lead + rest)
     return lines
+
+
+def _cut(rest: str, room: int, next_room: int, entries: bool) -> int | None:
+    """Where to break: the break at the least bracket depth among those that fit and
+    fill at least half the line (any that fit, if none does), the furthest of them.
+    Where no operator break fills half the line and what follows it would not fit the
+    next line either, after a comma too (a long vector's entries); the first break
+    there is if none fits; None if there is none."""
+    points = break_points(rest, entries)
+    fitting = [(p, d) for p, d in points if 0 < p <= room]
+    if not entries and not any(p >= room // 2 for p, _ in fitting) and len(rest) - _best(fitting, room) > next_room:
+        fitting += [(p, d) for p, d in break_points(rest, entries=True) if 0 < p <= room and rest[p - 1] == ","]
+    if fitting:
+        return _best(fitting, room)
+    later = [p for p, _ in points if p > 0]
+    return later[0] if later else None
+
+
+def _best(fitting: list[tuple[int, int]], room: int) -> int:
+    """The furthest of the least deep breaks that fill half the line (of all, if none does); 0 if none fits."""
+    if not fitting:
+        return 0
+    fitting = [(p, d) for p, d in fitting if p >= room // 2] or fitting
+    least = min(d for _, d in fitting)
+    return max(p for p, d in fitting if d == least)

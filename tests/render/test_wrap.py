@@ -42,3 +42,34 @@ def test_piped_text_has_no_trailing_spaces_and_no_broken_terms() -> None:
     # a math line's continuation starts with an operator, not with the rest of a term
     continuations = [line for line in result.output.splitlines() if re.match(r" {8}\S", line)]
     assert all(re.match(r" {8}[+−=⇒<>≤≥] ", line) for line in continuations), continuations
+
+
+def _row(i: int, n: int) -> str:
+    return "[" + ", ".join(f"{2 * n - i - j}/2 cos(th{i} − th{j})" for j in range(1, n + 1)) + "]"
+
+
+def test_a_matrix_too_long_for_a_line_is_set_a_row_per_line_under_the_first() -> None:
+    text = "M(q) = l² m [" + ", ".join(_row(i, 6) for i in range(1, 7)) + "]"
+    lines = wrap_math(text, 100)
+    assert all(len(line) <= 100 for line in lines)
+    column = len("    M(q) = l² m [")
+    starts = [line for line in lines if line.lstrip().startswith("[")]
+    assert lines[0].startswith("    M(q) = l² m [[") and len(starts) == 5  # rows 2 … 6 each start a line
+    assert all(line.index("[") == column for line in starts)  # under the first row's "["
+    # a row too long for its line breaks between entries, never inside cos(th1 − th2)
+    assert all(line.rstrip().endswith(",") or line.rstrip().endswith("]") for line in lines)
+    assert " ".join(line.strip() for line in lines) == text
+
+
+def test_a_long_vector_breaks_after_its_commas() -> None:
+    text = "a₂ = (" + ", ".join(f"−{k}.{k}2345" for k in range(1, 21)) + ")"
+    lines = wrap_math(text, 60)
+    assert lines[0].startswith("    a₂ = (−1.12345,") and all(len(line) <= 60 for line in lines)
+    assert all(line.startswith("        −") for line in lines[1:])
+    assert " ".join(line.strip() for line in lines) == text
+
+
+def test_a_matrix_that_fits_a_line_stays_whole_on_it() -> None:
+    text = "J_O = J_G + m (|d|² 1 − d dᵀ) = m s² [[1/2, −1/4, −1/4], [−1/4, 1/2, −1/4], [−1/4, −1/4, 1/2]]"
+    assert wrap_math(text, 80) == ["    J_O = J_G + m (|d|² 1 − d dᵀ)",
+                                   "        = m s² [[1/2, −1/4, −1/4], [−1/4, 1/2, −1/4], [−1/4, −1/4, 1/2]]"]
