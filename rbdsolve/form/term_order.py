@@ -55,7 +55,7 @@ def natural_order(terms: list) -> list:
 def readable_cosine(expr: sp.Expr) -> sp.Expr:
     """cos(th₁₀ − th₂) as cos(th₂ − th₁₀), unevaluated (cos is even; sympy keeps the
     argument whose first term, in its order of names, is positive)."""
-    if not isinstance(expr, sp.cos) or not expr.args[0].is_Add:
+    if not isinstance(expr, sp.cos) or not expr.args[0].is_Add or not _counted_past_nine(expr.args[0].args):
         return expr
     argument = expr.args[0]
     ordered = argument.as_ordered_terms()
