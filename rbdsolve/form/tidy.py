@@ -48,6 +48,14 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     For answers built from solved linear systems, where ``tidy`` would swell."""
     if expr.is_Rational:
         return expr
+    return _leading_plus(sp.factor_terms(cancelled(expr)))
+
+
+def cancelled(expr: sp.Expr) -> sp.Expr:
+    """``tidy_fraction``'s one cancelled fraction before its common factors are pulled
+    out: numerator and denominator expanded, for a caller that rewrites them anyway."""
+    if expr.is_Rational:
+        return expr
     table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
     back = {v: k for k, v in table.items()}
     plain = expr.xreplace(table)
@@ -57,7 +65,7 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
         value = _reduced(value, pairs, rational)
-    return _leading_plus(sp.factor_terms(value.xreplace(back)))
+    return value.xreplace(back)
 
 
 def _rational(expr: sp.Expr) -> bool:
