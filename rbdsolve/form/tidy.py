@@ -71,26 +71,61 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     For answers built from solved linear systems, where ``tidy`` would swell."""
     if expr.is_Rational:
         return expr
+    return _leading_plus(sp.factor_terms(cancelled(expr)))
+
+
+def cancelled(expr: sp.Expr) -> sp.Expr:
+    """``tidy_fraction``'s one cancelled fraction before its common factors are pulled
+    out: numerator and denominator expanded, for a caller that rewrites them anyway."""
+    if expr.is_Rational:
+        return expr
     table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
     back = {v: k for k, v in table.items()}
-    value = sp.cancel(sp.together(expr.xreplace(table)), extension=True)
+    plain = expr.xreplace(table)
+    rational = _rational(plain)
+    value = _cancel_over(sp.together(plain), rational)
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
-        value = _reduced(value, pairs)
-    return _leading_plus(sp.factor_terms(value.xreplace(back)))
+        value = _reduced(value, pairs, rational)
+    return value.xreplace(back)
 
 
-def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]]) -> sp.Expr:
+def _rational(expr: sp.Expr) -> bool:
+    """No algebraic number for ``cancel(..., extension=True)`` to adjoin: every leaf a
+    rational or a symbol not known to be algebraic (an integer symbol counts as one),
+    and no power of a number left unevaluated (√3). Then the extension changes nothing
+    but costs an assumption query on every factor of every term (3x the time)."""
+    for atom in expr.atoms():
+        if atom.is_Symbol:
+            if atom.is_algebraic:
+                return False
+        elif not atom.is_Rational:
+            return False
+    return not any(p.is_number for p in expr.atoms(sp.Pow))
+
+
+def _cancel_over(expr: sp.Expr, rational: bool) -> sp.Expr:
+    """``cancel`` over the rationals, adjoining the expression's algebraic numbers
+    (√3) unless ``rational`` says it has none."""
+    return sp.cancel(expr) if rational else sp.cancel(expr, extension=True)
+
+
+def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: bool = False) -> sp.Expr:
     """Numerator and denominator modulo s² + c² − 1, in s; unchanged when they are not
-    polynomials in s (a root of sin α, which a target such as 1/ω₀ gives)."""
+    polynomials in s (a root of sin α, which a target such as 1/ω₀ gives), or when no
+    s has a power above 1 (nothing to reduce: ``value`` is cancelled already)."""
     num, den = sp.fraction(value)
+    squares = {s for s, _ in pairs}
+    if not any(p.base in squares and p.exp.is_Integer and p.exp > 1
+               for p in (num.atoms(sp.Pow) | den.atoms(sp.Pow))):
+        return value
     try:
         for s, c in pairs:
             num, den = sp.rem(num, s**2 + c**2 - 1, s), sp.rem(den, s**2 + c**2 - 1, s)
     except sp.PolynomialError:
         return value
-    return sp.cancel(num / den, extension=True)
+    return _cancel_over(num / den, rational)
 
 
 def _cancel(expr: sp.Expr) -> sp.Expr:

@@ -14,8 +14,9 @@ and say what null means in docs/json.md), so it is an InternalError here, not a
 from __future__ import annotations
 
 import json
-from functools import lru_cache
 from enum import Enum
+from functools import lru_cache
+
 import sympy as sp
 
 from rbdsolve.errors import InputError, InternalError, UnsolvedError
@@ -37,12 +38,15 @@ def _exact_leaf(value: object) -> object:
     if isinstance(value, Enum):
         return value.value
     if isinstance(value, sp.Basic):
-        return _text(value)
+        return str(value) if isinstance(value, sp.MatrixBase) or value.has(sp.Float) else _printed(value)
     return value
 
 
-@lru_cache(maxsize=4096)  # a symmetric M or K, and T's coefficients in M, print each entry once
-def _text(value: sp.Basic) -> str:
+@lru_cache(maxsize=4096)
+def _printed(value: sp.Basic) -> str:
+    """``str`` of an exact expression, which a report prints several times (an answer,
+    then in its step; the zeros of every matrix): sympy orders a sum's terms each time.
+    (Not for floats: 0.5 at 15 and at 30 digits are equal keys that print differently.)"""
     return str(value)
 
 

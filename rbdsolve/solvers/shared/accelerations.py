@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.form.display import Relation
-from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Instant
 from rbdsolve.report import steps as st
@@ -69,8 +69,10 @@ def _radicals(h: tuple[sp.Expr, ...]) -> bool:
 
 
 def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:
-    """num/den cancelled, its denominator led by a plus sign: (28 − 3 cos²(φ − θ))."""
-    value = tidy_fraction(num / den)
+    """num/den cancelled, its denominator led by a plus sign: (28 − 3 cos²(φ − θ)).
+    (Each part's factors are pulled out here, so the cancelled fraction is taken as it
+    comes, without ``tidy_fraction``'s own factor_terms: the same result.)"""
+    value = cancelled(num / den)
     top, bottom = sp.fraction(value)
     if sample(bottom, {}).real < 0:  # a denominator such as 3 cos² − 28, negative throughout
         top, bottom = -top, -bottom
