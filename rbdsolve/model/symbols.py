@@ -8,6 +8,7 @@ and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
 from __future__ import annotations
 
 import functools
+from collections import ChainMap
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Mapping
@@ -57,7 +58,11 @@ class Symbols:
         return dict(zip(self.state.names, self.state.q))
 
     def with_points(self, points: Mapping[str, sp.Matrix]) -> Symbols:
-        return Symbols(self.parameters, self.state, {**self.points, **points}, self.prescribed)
+        """These names and ``points`` (which win over points of the same name), merged
+        without reading them: points may be folded on first read (model/deferred.py)."""
+        own = dict(points) if isinstance(points, dict) else points  # a caller's dict may change later
+        return Symbols(self.parameters, self.state, ChainMap(own, self.points) if self.points else own,
+                       self.prescribed)
 
     def scalar(self, expr: ex.Expr) -> sp.Expr:
         return _real(to_sympy(expr.tree, self), expr)
