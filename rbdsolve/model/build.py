@@ -25,7 +25,7 @@ from rbdsolve.model.plane_rolling import plane_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
-from rbdsolve.model.symbols import Symbols, exact_number
+from rbdsolve.model.symbols import Symbols, exact_number, plainly_real
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.quantity import Value
@@ -221,10 +221,13 @@ def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> 
     makes, here at the cost of one term a link of a chain rather than of the whole sum
     that its point is (the fold, on first read, checks the whole sum again). A located
     InputError, as from the fold."""
-    stand_in = sp.Matrix(sp.symbols("x y z", real=True, cls=sp.Dummy))
-    within = names.with_points({name: stand_in for name in given})
-    for expr in [*given.values(), *(b.at for b in problem.bodies if b.at is not None and not b.orientation)]:
-        within.vector(expr)
+    exprs = [*given.values(), *(b.at for b in problem.bodies if b.at is not None and not b.orientation)]
+    asked = [e for e in exprs if not plainly_real(e.tree)]  # most are sums of sin and cos: nothing to ask
+    if asked:
+        stand_in = sp.Matrix(sp.symbols("x y z", real=True, cls=sp.Dummy))
+        within = names.with_points({name: stand_in for name in given})
+        for expr in asked:
+            within.vector(expr)
 
 
 def _angles(model: Model) -> frozenset:

@@ -8,8 +8,11 @@ import pytest
 import sympy as sp
 
 from rbdsolve.model.build import build_model
+from rbdsolve.errors import Location
 from rbdsolve.model.deferred import Deferred, Later, Points
+from rbdsolve.model.symbols import plainly_real
 from rbdsolve.problem import load_text
+from rbdsolve.problem.expr import Scope, parse
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 
 CHAIN = """\
@@ -80,3 +83,16 @@ def test_the_numeric_route_makes_no_position() -> None:
     assert solution.error is None
     assert not any(Deferred.made(b, "position") for b in model.bodies)
     assert not Deferred.made(model, "angles")
+
+
+@pytest.mark.parametrize("text, plain", [
+    ("P + l/2 * [sin(a), -cos(a)]", True), ("[l**2, a*l - 3, pi]", True), ("inner(P, P) * [1, 0]", True),
+    ("[1/l, 0]", False),  # l may be zero for all this test knows: the fold is asked
+    ("[sqrt(l), 0]", False), ("[l**(1/2), 0]", False), ("[l**-1, 0]", False), ("[log(l), 0]", False),
+])
+def test_plainly_real_trees_need_no_fold(text: str, plain: bool) -> None:
+    # By hand: sums, products, sin and cos of real names are real; division by a name,
+    # roots, negative powers and logarithms may leave the reals.
+    scope = Scope(scalars=frozenset({"l", "a"}), vectors=frozenset({"P"}))
+    expr = parse(text, Location("t.yaml", 1, 1), scope)
+    assert plainly_real(expr.tree) is plain
