@@ -7,6 +7,7 @@ planar ``angle`` is a rotation about z. Energies are computed on demand
 
 from __future__ import annotations
 
+from collections import ChainMap
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 from fractions import Fraction
@@ -19,11 +20,12 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.contacts import place_contacts
+from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.plane_rolling import plane_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
-from rbdsolve.model.symbols import Symbols, exact_number
+from rbdsolve.model.symbols import Symbols, exact_number, plainly_real
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.quantity import Value
@@ -41,7 +43,7 @@ class RigidBody:
 
     name: str
     mass: sp.Expr
-    position: sp.Matrix | None  # r_G, scene axes
+    position: sp.Matrix | None = Deferred()  # r_G, scene axes; made on first read (model/deferred.py)
     rotation: sp.Matrix
     angle: sp.Expr | None  # planar rotation about z (None: no rotation)
     inertia: sp.Matrix
@@ -49,6 +51,12 @@ class RigidBody:
     given_velocity: sp.Matrix | None = None  # v_G at the instant, linear in q̇
     given_angular_velocity: sp.Matrix | None = None
     turns_3d: bool = False  # oriented by a sequence of turns: ω from Ṙ Rᵀ
+
+    @property
+    def placed(self) -> bool:
+        """Has the body a position (it is not given by its velocities at an instant)?
+        Told without making a deferred position."""
+        return not Deferred.made(self, "position") or self.position is not None
 
     def velocity(self, state: State) -> sp.Matrix:
         """v_G in scene axes: given, or dr_G/dt."""
@@ -83,7 +91,7 @@ class SpringModel:
 class Model:
     problem: Problem
     symbols: Symbols
-    angles: frozenset[sp.Symbol]  # the coordinates that are periodic angles
+    angles: frozenset[sp.Symbol] = Deferred()  # the coordinates that are periodic angles; made on first read
     points: Mapping[str, sp.Matrix]
     bodies: tuple[RigidBody, ...]
     springs: tuple[SpringModel, ...]
@@ -110,7 +118,7 @@ class Model:
     @property
     def instant(self) -> bool:
         """A scene at one instant: some velocities are given, not positions."""
-        return bool(self.velocities) or any(b.position is None for b in self.bodies)
+        return bool(self.velocities) or any(not b.placed for b in self.bodies)
 
     def point_velocity(self, name: str) -> sp.Matrix:
         """v_P: given, or dr_P/dt."""
@@ -142,8 +150,12 @@ class Model:
 
     def depends_on_time(self) -> bool:
         """Does the scene move by itself (t in a body's position or angle, a spring, gravity
-        or an inertial potential)? Points alone carry no energy."""
-        parts = [*self._positions(), *(b.rotation for b in self.bodies),
+        or an inertial potential)? Points alone carry no energy. A position not made yet
+        is made from the file's points and origins, which cannot bring in t where none
+        of them names t or a prescribed motion (``_timed``): it is then not made here."""
+        positions = self._positions() if _timed(self.problem) else [
+            b.position for b in self.bodies if Deferred.made(b, "position") and b.position is not None]
+        parts = [*positions, *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
         return _holds(parts, t)
@@ -171,18 +183,17 @@ def build_model(problem: Problem) -> Model:
     triads = {tr.name: _turns(tr.turns, names) for tr in problem.triads}
     unit_vectors = {v: triads[tr.name][:, k] for tr in problem.triads for k, v in enumerate(tr.vectors)}
     names = names.with_points(unit_vectors)
-    points: dict[str, sp.Matrix] = {}
     velocities: dict[str, sp.Matrix] = {}
     symbols = names
     for point in problem.points:  # dependency order: each names only earlier points
-        if point.position is not None:
-            points[point.name] = symbols.with_points(points).vector(point.position)
-        else:
+        if point.position is None:
             velocities[point.name] = _affine_in_rates(symbols.with_points(velocities).vector(point.velocity),
                                                       point.velocity, symbols)
-    names = symbols.with_points(points)
+    given = {p.name: p.position for p in problem.points if p.position is not None}
+    points = Points(tuple(given), lambda name: within.vector(given[name]))  # folded on first read
+    names = within = symbols.with_points(points)
+    _check_real(given, problem, symbols)
     problem, contacts = place_contacts(problem, names)  # rolling places its bodies: at and angle
-    q = names.state.q
     masses: dict = {}
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
@@ -190,20 +201,51 @@ def build_model(problem: Problem) -> Model:
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
     planes = plane_contacts(problem, names, {b.name: b.rotation for b in bodies}, values)
-    points |= {c.name: c.point for c in planes}  # C, named in questions (steady_motion's about, rolling_at)
+    if planes:  # C, named in questions (steady_motion's about, rolling_at)
+        points = ChainMap({c.name: c.point for c in planes}, points)
     names = names.with_points(points)
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
-    model = Model(problem, names, frozenset(), points, bodies, springs, gravity, values, velocities,
-                  triads=triads, assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
+    model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
+                  velocities, triads=triads,
+                  assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
                   contacts=contacts, plane_contacts=planes)
     check_assumptions(model.assumptions, values, names)
-    periodic = _periodic_coordinates(model)
     _refuse_winding_angles(model)
-    angles = frozenset(qi for c, qi in zip(problem.coordinates, q)
-                       if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
-                       or (c.kind is CoordinateKind.AUTO and qi in periodic))
-    return replace(model, angles=angles)
+    return model
+
+
+def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> None:
+    """Each point's and each body origin's own terms are real numbers (``Symbols.vector``),
+    with the points it names standing for one real vector (x, y, z): the check a fold
+    makes, here at the cost of one term a link of a chain rather than of the whole sum
+    that its point is (the fold, on first read, checks the whole sum again). A located
+    InputError, as from the fold."""
+    exprs = [*given.values(), *(b.at for b in problem.bodies if b.at is not None and not b.orientation)]
+    asked = [e for e in exprs if not plainly_real(e.tree)]  # most are sums of sin and cos: nothing to ask
+    if asked:
+        stand_in = sp.Matrix(sp.symbols("x y z", real=True, cls=sp.Dummy))
+        within = names.with_points({name: stand_in for name in given})
+        for expr in asked:
+            within.vector(expr)
+
+
+def _angles(model: Model) -> frozenset:
+    """The coordinates that are periodic angles: declared so, or AUTO and entering the
+    scene only through sin and cos of integer multiples (``_periodic_coordinates``)."""
+    periodic = _periodic_coordinates(model)
+    return frozenset(qi for c, qi in zip(model.problem.coordinates, model.q)
+                     if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
+                     or (c.kind is CoordinateKind.AUTO and qi in periodic))
+
+
+def _timed(problem: Problem) -> bool:
+    """Does a point or a body's origin of the file name t or a prescribed motion? Where
+    none does, positions made from them are free of t."""
+    timed = {"t", *(p.name for p in problem.prescribed)}
+    exprs = [p.position for p in problem.points if p.position is not None]
+    exprs += [b.at for b in problem.bodies if b.at is not None]
+    return any(not timed.isdisjoint(e.names()) for e in exprs)
 
 
 def _holds(parts: list, symbol: sp.Symbol) -> bool:
@@ -328,10 +370,15 @@ def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Ma
         return RigidBody(body.name, props.mass, position, rotation, None, props.inertia, body, turns_3d=True)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
-    position = names.vector(body.at)
-    if any(c != 0 for c in props.centre):  # adding R·0 would rebuild every sum of r_at for nothing
-        position = position + rotation * props.centre
-    return RigidBody(body.name, props.mass, position, rotation, angle, props.inertia, body)
+    return RigidBody(body.name, props.mass, Later(lambda: _placed(names.vector(body.at), rotation, props.centre)),
+                     rotation, angle, props.inertia, body)
+
+
+def _placed(at: sp.Matrix, rotation: sp.Matrix, centre: sp.Matrix) -> sp.Matrix:
+    """r_G = r_at + R c."""
+    if any(c != 0 for c in centre):  # adding R·0 would rebuild every sum of r_at for nothing
+        return at + rotation * centre
+    return at
 
 
 def parts_key(body: Body) -> tuple:

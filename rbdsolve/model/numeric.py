@@ -70,13 +70,15 @@ class NumericScene:
 
     @classmethod
     def build(cls, problem: Problem, values: Mapping[str, float | Fraction | mpmath.mpf],
-              arithmetic: Arithmetic = FLOAT) -> NumericScene:
+              arithmetic: Arithmetic = FLOAT, state: State | None = None) -> NumericScene:
         """The scene of ``problem`` with ``values`` for its parameters (these override the
-        file's ``values:``). Raises NotNumeric for what needs the symbolic route."""
+        file's ``values:``). Raises NotNumeric for what needs the symbolic route.
+        ``state``: the model's coordinates as symbols, if there is a model (else made
+        here; a mass property that names one is refused either way)."""
         _check_supported(problem)
         exact = _exact_values(problem, values)
         names = Symbols({k: sp.Rational(v.numerator, v.denominator) for k, v in exact.items()},
-                        State.of(tuple(c.name for c in problem.coordinates)), {})
+                        state or State.of(tuple(c.name for c in problem.coordinates)), {})
         with arithmetic.precision():
             parameters = tuple((k, arithmetic.number(v)) for k, v in exact.items())
             cache: dict = {}

@@ -8,6 +8,7 @@ and its rates are the plain symbols of :class:`~rbdsolve.model.state.State`, so
 from __future__ import annotations
 
 import functools
+from collections import ChainMap
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Mapping
@@ -52,12 +53,16 @@ class Symbols:
                       for p in problem.prescribed}
         return Symbols(params, state, {}, prescribed)
 
-    @property
+    @functools.cached_property  # read at every name a fold meets
     def coordinates(self) -> Mapping[str, sp.Symbol]:
         return dict(zip(self.state.names, self.state.q))
 
     def with_points(self, points: Mapping[str, sp.Matrix]) -> Symbols:
-        return Symbols(self.parameters, self.state, {**self.points, **points}, self.prescribed)
+        """These names and ``points`` (which win over points of the same name), merged
+        without reading them: points may be folded on first read (model/deferred.py)."""
+        own = dict(points) if isinstance(points, dict) else points  # a caller's dict may change later
+        return Symbols(self.parameters, self.state, ChainMap(own, self.points) if self.points else own,
+                       self.prescribed)
 
     def scalar(self, expr: ex.Expr) -> sp.Expr:
         return _real(to_sympy(expr.tree, self), expr)
@@ -82,6 +87,35 @@ def _real(value, expr: ex.Expr):
         if not all(_real_term(term) for term in sp.Add.make_args(item)):
             raise InputError(f"'{expr.text}' is not a real number here ({to_unicode(item)})", expr.loc)
     return value
+
+
+_REAL_CALLS = frozenset({"sin", "cos", "cross", "inner"})  # real and defined for every real argument
+
+
+def plainly_real(tree: ex.Tree) -> bool:
+    """Is the tree real wherever its names are, so that ``_real`` could never refuse its
+    fold? Names, numbers and π, combined by −, +, ×, division by a nonzero number,
+    powers to integers ≥ 0, sin, cos, cross and inner products: no term can then be
+    infinite, NaN, imaginary or leave the reals. (Other trees may be real too: ask
+    ``_real`` about their fold.)"""
+    if isinstance(tree, (ex.Num, ex.Const, ex.Name)):
+        return True
+    if isinstance(tree, ex.Neg):
+        return plainly_real(tree.operand)
+    if isinstance(tree, ex.Vec):
+        return all(plainly_real(x) for x in tree.items)
+    if isinstance(tree, ex.Call):
+        return tree.func in _REAL_CALLS and all(plainly_real(x) for x in tree.args)
+    if isinstance(tree, ex.BinOp):
+        right = tree.right
+        if tree.op == "/":
+            safe = isinstance(right, ex.Num) and right.value != 0
+        elif tree.op == "**":
+            safe = isinstance(right, ex.Num) and right.value.denominator == 1 and right.value >= 0
+        else:
+            safe = plainly_real(right)
+        return safe and plainly_real(tree.left)
+    return False  # a rate dot(…): its fold is asked
 
 
 @functools.lru_cache(maxsize=4096)

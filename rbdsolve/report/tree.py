@@ -17,23 +17,27 @@ def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
 Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an answers tree
 
 
-def leaves(value: object, path: Path = ()) -> Iterator[tuple[Path, object]]:
-    """Each leaf of an answers tree with its path, in the order ``map_leaves`` walks."""
+def leaves(value: object, path: Path = (), floats: bool = True) -> Iterator[tuple[Path, object]]:
+    """Each leaf of an answers tree with its path, in the order ``map_leaves`` walks;
+    with ``floats`` False, a tuple of floats (a row of a numeric route's n×n matrix) is
+    passed over whole, for a caller that looks only at the other leaves."""
     if type(value) is float:  # most leaves of a numeric route (an n×n matrix): no type tests
-        yield path, value
+        if floats:
+            yield path, value
     elif dataclasses.is_dataclass(value) and not isinstance(value, type):
         for f in dataclasses.fields(value):
-            yield from leaves(getattr(value, f.name), (*path, f.name))
+            yield from leaves(getattr(value, f.name), (*path, f.name), floats)
     elif isinstance(value, Mapping):
         for k, v in value.items():
-            yield from leaves(v, (*path, str(k)))
+            yield from leaves(v, (*path, str(k)), floats)
     elif isinstance(value, sp.MatrixBase):
         for i, row in enumerate(value.tolist()):
             for j, x in enumerate(row):
-                yield from leaves(x, (*path, i, j))
+                yield from leaves(x, (*path, i, j), floats)
     elif isinstance(value, (list, tuple)):
-        for i, v in enumerate(value):
-            yield from leaves(v, (*path, i))
+        if floats or not all(type(v) is float for v in value):
+            for i, v in enumerate(value):
+                yield from leaves(v, (*path, i), floats)
     else:
         yield path, value
 

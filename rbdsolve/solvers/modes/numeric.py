@@ -34,6 +34,8 @@ warnings past the tolerance 1e-8: ``modes_spaces``. The 50-digit reference
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import sympy as sp
 
@@ -103,10 +105,10 @@ def modes_at(about: dict, model: Model):
     M, K, how = linearized(model, about)
     if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
         raise UnsolvedError(singular)
-    lam, vectors, absolute = generalized_eigh(K, M)
+    lam, vectors, absolute, pencil = solve_pencil(K, M)
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
-    spaces = analyse(K, M, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
+    spaces = analyse(pencil, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
     answers = NumericModesAnswers(
         {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K),
         tuple(float(x) for x in lam),
@@ -129,9 +131,30 @@ def classify(lam: float, bound: float) -> Motion:
     return Motion.OSCILLATION if lam > 0 else Motion.GROWTH
 
 
+@dataclass(frozen=True)
+class Pencil:
+    """What the eigenvalue bounds and the conditioning (``spaces.analyse``) share of one
+    K a = λ M a, each computed once: L⁻¹ (M = L Lᵀ), λ_min(M) = 1/‖L⁻¹‖₂²,
+    η = n ε ‖M‖₂/λ_min(M), ‖K‖₂, ‖M‖₂ and the residuals ‖L⁻¹(K âᵢ − λ̂ᵢ M âᵢ)‖ (one per mode).
+    Arrays inside: compared by identity, never hashed."""
+
+    Linv: np.ndarray
+    smallest: float
+    eta: float
+    norm_K: float
+    norm_M: float
+    residual: np.ndarray
+
+
 def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """λ ascending, M-orthonormal eigenvectors (columns) and each λ's absolute error bound
     (the module docstring derives it)."""
+    lam, vectors, bounds, _ = solve_pencil(K, M)
+    return lam, vectors, bounds
+
+
+def solve_pencil(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, Pencil]:
+    """``generalized_eigh`` and the Pencil its bounds were computed from."""
     from scipy.linalg import LinAlgError, cholesky, eigh, solve_triangular
 
     try:
@@ -140,35 +163,36 @@ def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarr
         raise UnsolvedError("the mass matrix is not positive definite at this configuration: "
                             "a coordinate carries no inertia") from None
     Linv = solve_triangular(L, np.eye(len(M)), lower=True)
-    smallest, eta = _conditioning(M, Linv)
+    norm_M = np.linalg.norm(M, 2)
+    smallest, eta = _conditioning(M, Linv, norm_M)
     lam, vectors = eigh(K, M)
     # eigh's vectors are M-orthonormal only to rounding (less so as M is ill-conditioned);
     # ‖Lᵀ a‖ is √(aᵀ M a) without the cancellation that could make it negative.
     vectors = vectors / np.linalg.norm(L.T @ vectors, axis=0)
-    return lam, vectors, eigen_bounds(K, M, Linv, lam, vectors, smallest, eta)
+    residual = np.linalg.norm(Linv @ (K @ vectors - M @ vectors * lam), axis=0)
+    pencil = Pencil(Linv, smallest, eta, np.linalg.norm(K, 2), norm_M, residual)
+    return lam, vectors, eigen_bounds(pencil, lam, vectors), pencil
 
 
-def _conditioning(M: np.ndarray, Linv: np.ndarray) -> tuple[float, float]:
+def _conditioning(M: np.ndarray, Linv: np.ndarray, norm_M: float) -> tuple[float, float]:
     """λ_min(M) = 1/‖L⁻¹‖₂² (the same factor as eigh's) and η = n ε ‖M‖₂/λ_min(M), the
     rounding of M relative to its smallest eigenvalue; refused where η ≥ 1."""
     smallest = 1.0 / np.linalg.norm(Linv, 2) ** 2
-    eta = len(M) * EPS * np.linalg.norm(M, 2) / smallest
+    eta = len(M) * EPS * norm_M / smallest
     if not eta < 1:  # also refuses a NaN
         raise UnsolvedError(f"the mass matrix is singular in floating point (condition number "
-                            f"{np.linalg.norm(M, 2) / smallest:.3g}): its rounding may be as large as its smallest "
+                            f"{norm_M / smallest:.3g}): its rounding may be as large as its smallest "
                             "eigenvalue, so the eigenvalues are not determined; a coordinate carries (almost) no "
                             "inertia")
     return smallest, eta
 
 
-def eigen_bounds(K: np.ndarray, M: np.ndarray, Linv: np.ndarray, lam: np.ndarray, vectors: np.ndarray,
-                 smallest: float, eta: float) -> np.ndarray:
+def eigen_bounds(pencil: Pencil, lam: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     """|λ̂ − λ| ≤ ‖r‖_{M⁻¹} + n ε (‖K‖ + |λ̂| ‖M‖) (‖â‖/√λ_min(M) + ‖â‖²/(1 − η)), â M-normalized
     (Parlett Thm 4.5.1; Higham & Higham 1998; the module docstring)."""
-    residual = np.linalg.norm(Linv @ (K @ vectors - M @ vectors * lam), axis=0)
-    scale = len(lam) * EPS * (np.linalg.norm(K, 2) + np.abs(lam) * np.linalg.norm(M, 2))
+    scale = len(lam) * EPS * (pencil.norm_K + np.abs(lam) * pencil.norm_M)
     length = np.linalg.norm(vectors, axis=0)
-    return residual + scale * (length / np.sqrt(smallest) + length**2 / (1 - eta))
+    return pencil.residual + scale * (length / np.sqrt(pencil.smallest) + length**2 / (1 - pencil.eta))
 
 
 def reference_eigenvalues(K, M, digits: int = 50) -> list:

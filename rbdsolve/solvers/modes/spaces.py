@@ -46,21 +46,15 @@ class Spaces:
     shape_errors: tuple[float, ...]  # sin Θ bound of each mode's space (its cluster's)
 
 
-def analyse(K: np.ndarray, M: np.ndarray, lam: np.ndarray, vectors: np.ndarray, bounds: np.ndarray,
-            neutral: tuple[bool, ...]) -> Spaces:
-    """Clusters, subspace bounds and condition numbers (the module docstring)."""
-    from scipy.linalg import cholesky, solve_triangular
-
-    L = cholesky(M, lower=True)
-    Linv = solve_triangular(L, np.eye(len(M)), lower=True)
-    smallest = 1.0 / np.linalg.norm(Linv, 2) ** 2
-    norm_K, norm_M = np.linalg.norm(K, 2), np.linalg.norm(M, 2)
-    residual = np.linalg.norm(Linv @ (K @ vectors - M @ vectors * lam), axis=0)
-    eta = len(M) * EPS * norm_M / smallest
+def analyse(pencil, lam: np.ndarray, vectors: np.ndarray, bounds: np.ndarray, neutral: tuple[bool, ...]) -> Spaces:
+    """Clusters, subspace bounds and condition numbers (the module docstring), from the
+    factors and norms the eigenvalue bounds used (``modes.numeric.Pencil``)."""
+    smallest, eta, norm_K, norm_M = pencil.smallest, pencil.eta, pencil.norm_K, pencil.norm_M
+    residual, n = pencil.residual, len(lam)
     groups = clusters(lam, bounds)
     errors = [0.0] * len(lam)
     for group in groups:
-        rounding = len(M) * EPS * (norm_K + max(abs(lam[i]) for i in group) * norm_M) * (
+        rounding = n * EPS * (norm_K + max(abs(lam[i]) for i in group) * norm_M) * (
             max(np.linalg.norm(vectors[:, i]) for i in group) / np.sqrt(smallest) + 1 / (smallest * (1 - eta)))
         angle = subspace_bound(group, lam, bounds, float(np.linalg.norm(residual[list(group)])) + rounding)
         for i in group:
@@ -88,10 +82,12 @@ def clusters(lam: np.ndarray, bounds: np.ndarray) -> list[tuple[int, ...]]:
 def subspace_bound(group: tuple[int, ...], lam: np.ndarray, bounds: np.ndarray, residual: float) -> float:
     """sin Θ ≤ residual/δ (Davis–Kahan), δ the gap to the exact eigenvalues outside the
     cluster, each within its bound of its computed value; 1 where δ ≤ residual."""
-    others = [j for j in range(len(lam)) if j not in group]
-    if not others:
+    others = np.ones(len(lam), dtype=bool)
+    others[list(group)] = False
+    if not others.any():
         return 0.0
-    gap = min(abs(lam[i] - lam[j]) - bounds[j] for i in group for j in others)
+    lam, bounds = np.asarray(lam), np.asarray(bounds)
+    gap = min(np.min(np.abs(lam[i] - lam[others]) - bounds[others]) for i in group)
     return 1.0 if gap <= residual else float(residual / gap)
 
 

@@ -145,7 +145,7 @@ def _float_scene(model: Model) -> NumericScene | None:
 def _scene(model: Model, arithmetic) -> NumericScene | None:
     values = {str(k): exact_fraction(v) for k, v in model.values.items()}
     try:
-        return NumericScene.build(model.problem, values, arithmetic)
+        return NumericScene.build(model.problem, values, arithmetic, model.state)
     except NotNumeric:
         return None
 

@@ -203,9 +203,12 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     """Parameters, coordinates (as symbols and as functions of time) and t."""
     out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
                                     if n in model.symbols.parameters}
+    turned = _turned_by_bodies(model)
     for c, q in zip(model.problem.coordinates, model.q):
+        # model.angles after the bodies' own angles: it reads every position (model/deferred.py)
         found = (LENGTH if c.kind is CoordinateKind.LENGTH
-                 else NUMBER if q in model.angles or c.kind is CoordinateKind.ANGLE or _turns_by(q, model)
+                 else NUMBER if c.kind is CoordinateKind.ANGLE or q in turned or q in model.angles
+                 or _turns_in_points(q, model)
                  else None)
         if found is not None:
             out[q] = out[c.name] = found
@@ -213,17 +216,25 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     return out
 
 
-def _turns_by(q: sp.Symbol, model: Model) -> bool:
-    """Is q an angle, though not a periodic one (a torsional spring winds it up)? A body
-    turns by a number times it, or a point's position takes sin or cos of a number times
-    it: an argument of sin and cos is a pure number, so q is one (in radians)."""
-    def number_times(expr: sp.Expr) -> bool:
-        rate = sp.diff(expr, q)
-        return rate != 0 and rate.is_number
+def _number_times(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Is ``expr`` a number times q (plus what does not hold q)? ∂expr/∂q a nonzero number."""
+    rate = sp.diff(expr, q)
+    return rate != 0 and rate.is_number
 
-    if any(b.angle is not None and number_times(b.angle) for b in model.bodies):
-        return True
-    return any(number_times(f.args[0]) for point in model.points.values()
+
+def _turned_by_bodies(model: Model) -> set:
+    """The coordinates q that are angles, though perhaps not periodic ones (a torsional
+    spring winds them up), because a body turns by a number times q: an angle is a pure
+    number (in radians). Each body's angle is asked about its own coordinates only."""
+    q = set(model.q)
+    return {x for b in model.bodies if b.angle is not None for x in b.angle.free_symbols & q
+            if _number_times(b.angle, x)}
+
+
+def _turns_in_points(q: sp.Symbol, model: Model) -> bool:
+    """Is q an angle because a point's position takes sin or cos of a number times it
+    (an argument of sin and cos is a pure number)?"""
+    return any(_number_times(f.args[0], q) for point in model.points.values()
                for f in sp.Matrix(point).atoms(sp.sin, sp.cos) if f.has(q))
 
 

@@ -71,7 +71,7 @@ def not_finite(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> str | None:
     the parameter values (1e300**3 overflows a float; 1/(1 - 1) divides by zero), which
     the numbers show as null; None when there are none."""
     bad = []
-    for path, leaf in leaves(value):
+    for path, leaf in leaves(value, floats=False):  # a float is its own value, finite or not
         if isinstance(leaf, sp.Basic) and not isinstance(leaf, sp.MatrixBase) and _overflows(leaf, subs):
             bad.append(label(path))
     if not bad:
