@@ -130,10 +130,19 @@ def _translation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
 
 
 def _jacobian(r: sp.Matrix, q: tuple[sp.Expr, ...]) -> sp.Matrix:
-    """∂rᵢ/∂qⱼ, differentiating only by the coordinates rᵢ holds (a chain's link k
-    holds q₁ … q_k: half of Matrix.jacobian's derivatives are zeros it works out)."""
-    present = [r_i.free_symbols for r_i in r]
-    return sp.Matrix(len(r), len(q), lambda i, j: sp.diff(r[i], q[j]) if q[j] in present[i] else sp.Integer(0))
+    """∂rᵢ/∂qⱼ = Σ ∂(term)/∂qⱼ over the terms of rᵢ that hold qⱼ: what Add's own
+    derivative sums, less the terms it differentiates to zero. A chain's link k holds
+    k terms, one per angle: each is differentiated once, not once per angle (n³ → n²)."""
+    index = {qj: j for j, qj in enumerate(q)}
+    J = sp.zeros(len(r), len(q))
+    for i, r_i in enumerate(r):
+        parts: dict[int, list[sp.Expr]] = {}
+        for term in sp.Add.make_args(r_i):
+            for qj in term.free_symbols & index.keys():
+                parts.setdefault(index[qj], []).append(sp.diff(term, qj))
+        for j, derivatives in parts.items():
+            J[i, j] = sp.Add(*derivatives)
+    return J
 
 
 def _rotation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
@@ -178,7 +187,15 @@ def _add_products(terms: dict, factor: sp.Expr, A: sp.Matrix, B: sp.Matrix) -> N
     b_columns = {j for j in range(B.cols) if any(x != 0 for x in B[:, j])}
     for i in columns:
         for j in (j for j in columns if j >= i and j in b_columns):
-            terms[(i, j)] += [factor * A[k, i] * B[k, j] for k in range(A.rows) if A[k, i] != 0 and B[k, j] != 0]
+            terms[(i, j)] += [_product(factor, A[k, i], B[k, j]) for k in range(A.rows)
+                              if A[k, i] != 0 and B[k, j] != 0]
+
+
+@functools.lru_cache(maxsize=8192)
+def _product(factor: sp.Expr, a: sp.Expr, b: sp.Expr) -> sp.Expr:
+    """factor·a·b, made once: a chain's links share their Jacobians' columns (link k's
+    ∂r/∂θⱼ is the same for every k > j), so M's n³/3 products are mostly repeats."""
+    return factor * a * b
 
 
 def stiffness_matrix(V: sp.Expr, q: tuple[sp.Expr, ...], at: dict[sp.Expr, sp.Expr]) -> sp.Matrix:
