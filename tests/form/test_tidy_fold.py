@@ -1,0 +1,41 @@
+"""tidy's direct fold C cos a cos b + C sin a sin b = C cos(a − b) gives exactly what
+sympy's fu.TR10i gives for it (the oracle), and steps aside for every other form."""
+
+from __future__ import annotations
+
+import itertools
+
+import sympy as sp
+from sympy.simplify.fu import TR10i
+
+from rbdsolve.form.tidy import _cosine_of_difference, tidy
+
+x, y, a, b = sp.symbols("x y a b")
+ANGLES = [x, y, x + y, 2 * x, x - y, x + sp.pi / 3, sp.pi / 2 - y]
+COEFFICIENTS = [sp.Integer(1), sp.Integer(-1), a, -a, 2 * a * b, sp.Rational(-3, 4) * a**2, sp.sqrt(2) * a,
+                a / (b + 1)]
+
+
+def test_the_direct_fold_is_tr10is_fold_term_for_term() -> None:
+    folded = 0
+    for (p, q), C in itertools.product(itertools.permutations(ANGLES, 2), COEFFICIENTS):
+        e = sp.expand(C * sp.cos(p) * sp.cos(q) + C * sp.sin(p) * sp.sin(q))
+        mine = _cosine_of_difference(e)
+        if mine is not None:
+            folded += 1
+            assert sp.srepr(mine) == sp.srepr(TR10i(e)), e
+    assert folded > 200  # the pattern was met, not skipped
+
+
+def test_other_forms_are_left_to_tr10i() -> None:
+    assert _cosine_of_difference(sp.cos(x) * sp.cos(y) - sp.sin(x) * sp.sin(y)) is None  # cos(x + y)
+    assert _cosine_of_difference(a * sp.cos(x) * sp.cos(y) + b * sp.sin(x) * sp.sin(y)) is None
+    assert _cosine_of_difference(sp.sin(x) * sp.cos(y) + sp.cos(x) * sp.sin(y)) is None  # sin(x + y)
+    assert _cosine_of_difference(sp.cos(x) * sp.cos(sp.sin(y)) + sp.sin(x) * sp.sin(sp.sin(y))) is None
+    assert tidy(sp.cos(x) * sp.cos(y) - sp.sin(x) * sp.sin(y)) == sp.cos(x + y)
+
+
+def test_a_chain_entry_reads_as_one_cosine() -> None:
+    m, l = sp.symbols("m l", positive=True)
+    entry = sp.Rational(21, 2) * l**2 * m * (sp.cos(x) * sp.cos(y) + sp.sin(x) * sp.sin(y))
+    assert tidy(entry) == sp.Rational(21, 2) * l**2 * m * sp.cos(x - y)
