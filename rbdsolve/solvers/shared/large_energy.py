@@ -69,10 +69,15 @@ def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> 
 def _in_time(shown: Scaled | sp.Matrix, model: Model) -> Scaled | sp.Matrix:
     """A matrix arranged over q, shown over q(t): its scale is a product of parameters,
     so only the inner matrix changes (arranging over q lets the entries be the ones M's
-    and K's tidying cached, and the q(t) form is one substitution at the end)."""
-    if isinstance(shown, Scaled):
-        return Scaled(shown.factor, model.to_time(shown.inner))
-    return model.to_time(shown)
+    and K's tidying cached). Each distinct entry is substituted once (M and K are
+    symmetric)."""
+    matrix = shown.inner if isinstance(shown, Scaled) else shown
+    timed: dict[sp.Expr, sp.Expr] = {}
+    for x in matrix:
+        if x not in timed:
+            timed[x] = model.to_time(x)
+    matrix = sp.ImmutableMatrix(matrix.rows, matrix.cols, [timed[x] for x in matrix])
+    return Scaled(shown.factor, matrix) if isinstance(shown, Scaled) else matrix
 
 
 def terms(expr: sp.Expr) -> int:
