@@ -51,7 +51,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         answer, frame_steps = _in_frame(model, model.problem.frame(name), equations)
         frames.append(answer)
         steps += frame_steps
-    solved, at, acceleration_steps = _accelerations(question, model, equations)
+    solved, at, acceleration_steps, M = _accelerations(question, model, equations)
     answers = EomAnswers(
         tuple(model.to_time(E) for E in equations),
         tuple(frames),
@@ -61,24 +61,25 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         at,
     )
     steps[1:1] = acceleration_steps  # right after Lagrange's equations, before the frames
-    return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=eom_warnings(model))
+    return Solution("eom", Route.EXACT, answers, tuple(steps), warnings=eom_warnings(model, M))
 
 
 def _accelerations(question: Question, model: Model, equations):
-    """q̈ = −M⁻¹ h, and at the state asked for (``at:``, ``from_rest:``), with its steps."""
+    """q̈ = −M⁻¹ h, and at the state asked for (``at:``, ``from_rest:``), with its steps;
+    and M(q) = ∂E/∂q̈."""
     found = accelerations(equations, model)
     names = model.coordinate_names()
     steps = [solved_step(found.solved, model)] if found.solved is not None else [singular_step(found)]
     solved = {n: model.to_time(a) for n, a in zip(names, found.solved)} if found.solved is not None else None
     instant = question.options.instant if question.options else None
     if instant is None:
-        return solved, None, steps
+        return solved, None, steps, found.M
     there = accelerations(equations, model, state_values(model, instant))
     if there.solved is None:
-        return solved, None, steps + [singular_step(there)]
+        return solved, None, steps + [singular_step(there)], found.M
     at = tuple(at_state(a, {}) for a in there.solved)
     steps += instant_steps(instant, at, model)
-    return solved, dict(zip(names, at)), steps
+    return solved, dict(zip(names, at)), steps, found.M
 
 
 def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[FrameAnswers, list[st.Step]]:

@@ -99,16 +99,18 @@ def _texts(v: Sequence[float]) -> list[str]:
     return ["0" if abs(x) < 1e-9 else f"{x:.4g}" for x in v]
 
 
-def generic_reason(model: Model) -> str | None:
+def generic_reason(model: Model, M: sp.Matrix | None = None) -> str | None:
     """The reason M(q) is singular at every configuration, or None (regular at a random
-    one, or not a number there: a prescribed function of time in the Jacobians)."""
+    one, or not a number there: a prescribed function of time in the Jacobians). ``M``:
+    M(q) already in hand (∂E/∂q̈ of Lagrange's equations), else built at the sample
+    (tidying its entries there costs more than the test: ~15 ms on a seed problem)."""
     import mpmath
 
     rng = random.Random(SEED)
     sample = {q: sp.Rational(rng.randint(100, 900), 1000) for q in model.q}
     for s in model.symbols.parameters.values():
         sample[s] = model.values.get(s, sp.Rational(rng.randint(500, 2000), 1000))
-    M = mass_matrix(model, sample).xreplace(sample)
+    M = (mass_matrix(model, sample) if M is None else M).xreplace(sample)
     if M.free_symbols or any(x.has(sp.Function) and not x.is_number for x in M):
         return None
     with mpmath.workdps(GENERIC_DIGITS):
@@ -122,8 +124,8 @@ def generic_reason(model: Model) -> str | None:
     return describe([_texts(v) for v in vecs], model.coordinate_names(), "at every configuration")
 
 
-def eom_warnings(model: Model) -> tuple[str, ...]:
+def eom_warnings(model: Model, M: sp.Matrix | None = None) -> tuple[str, ...]:
     """Lagrange's equations are right even with a singular M, but cannot be solved for
-    the accelerations: both eom routes say so."""
-    singular = generic_reason(model)
+    the accelerations: both eom routes say so (``M``: as for ``generic_reason``)."""
+    singular = generic_reason(model, M)
     return (f"{singular}: these equations cannot be solved for the accelerations",) if singular else ()
