@@ -13,7 +13,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
-from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.shared.present_conditions import condition_relation, condition_relations, critical_steps
 
 
 def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Model,
@@ -39,7 +39,7 @@ def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Mo
         if eq.exists_when is not sp.true:
             steps.append(st.result(f"Equilibrium {number} (it exists only where the following holds):",
                                    configuration(coordinates, list(eq.at.values())),
-                                   *[condition_relation(c, answers.critical) for c in sp.And.make_args(eq.exists_when)]))
+                                   *condition_relations(eq.exists_when, answers.critical)))
         else:
             exists = "" if not eq.conditions else " (it exists only where the following are ≥ 0)"
             steps.append(st.result(f"Equilibrium {number}{exists}:", configuration(coordinates, list(eq.at.values())),

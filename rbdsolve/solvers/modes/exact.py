@@ -41,7 +41,7 @@ from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.amplitude import with_check
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
-from rbdsolve.solvers.shared.present_conditions import condition_relation
+from rbdsolve.solvers.shared.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
@@ -83,7 +83,7 @@ def _at_each(model: Model) -> Solution:
         about = {n: listed.at[q] for n, q in zip(names, model.q)}
         found_real = exists_when(listed.at.values(), model)
         where = found_real.condition if found_real else sp.true
-        bounds = [] if where is sp.true else [condition_relation(c) for c in sp.And.make_args(where)]
+        bounds = [] if where is sp.true else condition_relations(where)
         steps.append(st.result(f"About equilibrium {k}" + (" (it exists only where the following holds)"
                                                             if bounds else "") + ":",
                                configuration(model.state.functions(), list(about.values())), *bounds))

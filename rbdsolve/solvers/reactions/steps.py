@@ -17,7 +17,7 @@ from rbdsolve.solvers.reactions.balances import Balance
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import state_step
 from rbdsolve.solvers.shared.conditions import critical_values
-from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
 
 
 def _vector(v) -> str:
@@ -81,7 +81,7 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
 
 
 def _conditions(condition, criticals) -> list[Relation]:
-    return [condition_relation(c, criticals) for c in sp.And.make_args(condition)]
+    return condition_relations(condition, criticals)
 
 
 def holds_steps(model: Model, supports: tuple[Held, ...], limits: dict, criticals) -> list[st.Step]:

@@ -50,6 +50,14 @@ OPS = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp
 TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤"}
 
 
+def condition_relations(condition, critical: Sequence = ()) -> list[Relation]:
+    """Each part of a conjunction as ``condition_relation`` writes it, in sympy's sorted
+    order of its parts (``And.args``): ``And.make_args`` gives a frozenset, whose order
+    changes with string hashing from one run to the next."""
+    parts = condition.args if isinstance(condition, sp.And) else (condition,)
+    return [condition_relation(c, critical) for c in parts]
+
+
 def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Relation:
     """p < p_c with p_c by name where it is one of the ``critical`` values: Ω < Ω_c;
     a piece between two, Ω_c1 < Ω < Ω_c2."""

@@ -13,7 +13,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
 
 
@@ -72,8 +72,7 @@ def _branch_steps(answers: SteadyMotionAnswers, targets) -> list[st.Step]:
     """Every solution, each with where it is real, then the critical values."""
     steps = []
     for k, branch in enumerate(answers.branches, 1):
-        where = [condition_relation(c, answers.critical) for c in sp.And.make_args(branch.exists_when)
-                 if branch.exists_when is not sp.true]
+        where = condition_relations(branch.exists_when, answers.critical) if branch.exists_when is not sp.true else []
         name = "Solved" if len(answers.branches) == 1 else f"Solution {k}"
         steps.append(st.result(name + (" (real only where the following holds)" if where else "") + ":",
                                *[Relation(x, v) for x, v in zip(targets, branch.solved.values())], *where))
