@@ -182,7 +182,8 @@ def _sum(a: Jet, b: Jet) -> Jet:
         a, b = b, a
     index = _union(a, b)
     grad, hess = a.on(index, _zeros_like(a.grad))
-    grad, hess = grad.copy(), None if hess is None else hess.copy()
+    if grad is a.grad:  # the same index: a's own arrays, which stay a's; else new ones already
+        grad, hess = grad.copy(), None if hess is None else hess.copy()
     at = np.searchsorted(index, b.index)
     grad[at] += b.grad
     if hess is not None:

@@ -29,6 +29,8 @@ from sympy.core.function import AppliedUndef
 
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
+from rbdsolve.model.symbols import to_sympy
+from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.report.tree import Path, map_paths
@@ -203,9 +205,10 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     """Parameters, coordinates (as symbols and as functions of time) and t."""
     out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
                                     if n in model.symbols.parameters}
-    turned = _turned_by_bodies(model)
+    turned = _turned_by_bodies(model) | _turned_in_point_trees(model)
     for c, q in zip(model.problem.coordinates, model.q):
-        # model.angles after the bodies' own angles: it reads every position (model/deferred.py)
+        # model.angles after the bodies' angles and the points' trees: it reads every
+        # position (model/deferred.py), which a chain of n links writes out in n² terms
         found = (LENGTH if c.kind is CoordinateKind.LENGTH
                  else NUMBER if c.kind is CoordinateKind.ANGLE or q in turned or q in model.angles
                  or _turns_in_points(q, model)
@@ -229,6 +232,34 @@ def _turned_by_bodies(model: Model) -> set:
     q = set(model.q)
     return {x for b in model.bodies if b.angle is not None for x in b.angle.free_symbols & q
             if _number_times(b.angle, x)}
+
+
+def _turned_in_point_trees(model: Model) -> set:
+    """The coordinates q whose sine or cosine, of a number times q, a point's expression
+    takes: read from the file's own trees, each argument folded alone, so that no point
+    is written out. As ``_turns_in_points`` asks of the folded points, except that a
+    sine the fold would cancel (sin q − sin q) still counts."""
+    q = set(model.q)
+    arguments = {to_sympy(a, model.symbols) for p in model.problem.points if p.position is not None
+                 for a in _trig_arguments(p.position.tree)}
+    return {x for a in arguments for x in a.free_symbols & q if _number_times(a, x)}
+
+
+def _trig_arguments(tree: ex.Tree):
+    """The argument of each sin and cos in ``tree``."""
+    if isinstance(tree, ex.Call):
+        if tree.func in ("sin", "cos"):
+            yield tree.args[0]
+        for a in tree.args:
+            yield from _trig_arguments(a)
+    elif isinstance(tree, ex.BinOp):
+        yield from _trig_arguments(tree.left)
+        yield from _trig_arguments(tree.right)
+    elif isinstance(tree, ex.Neg):
+        yield from _trig_arguments(tree.operand)
+    elif isinstance(tree, ex.Vec):
+        for item in tree.items:
+            yield from _trig_arguments(item)
 
 
 def _turns_in_points(q: sp.Symbol, model: Model) -> bool:
