@@ -98,5 +98,8 @@ def measure(family: str, size: int, route: str, repeats: int) -> dict:
 
 
 if __name__ == "__main__":
+    from rbdsolve.cli.app import process_settings
+
+    process_settings()  # timed as the rbdsolve command runs: BLAS on one thread, the collector less often
     family, size, route, repeats = sys.argv[1], int(sys.argv[2]), sys.argv[3], int(sys.argv[4])
     print(json.dumps(measure(family, size, route, repeats)))

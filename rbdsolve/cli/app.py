@@ -178,12 +178,34 @@ def run() -> None:
     """``rbdsolve`` as a process (the console script, ``python -m rbdsolve``): ``main``,
     then out with its exit code without tearing the interpreter down where nothing is
     left to finish (``_leave``). Tests call ``main``, which returns to them."""
-    _collect_less_often()
+    process_settings()
     try:
         main()  # standalone: click always ends it with SystemExit
     except SystemExit as exc:
         _leave(exc.code)
         raise
+
+
+def process_settings() -> None:
+    """What the ``rbdsolve`` process sets for itself before it solves anything (the
+    benchmarks' in-process measurements set the same, to time the command as it runs):
+    the cycle collector less often, and BLAS on one thread."""
+    _collect_less_often()
+    _one_blas_thread()
+
+
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def _one_blas_thread() -> None:
+    """numpy's BLAS on one thread unless the environment says otherwise (read when
+    numpy is first imported, which is later). rbdsolve's matrices are n ≤ a few hundred:
+    at n = 50, eigh(K, M) takes 7 ms on OpenBLAS's threads and 0.2 ms on one, and on a
+    busy machine the threads wait for each other (a 50-link chain on the numeric
+    route: 0.09 s → 0.06 s). A larger system can still ask for threads:
+    OPENBLAS_NUM_THREADS=4 rbdsolve solve …"""
+    for name in BLAS_THREADS:
+        os.environ.setdefault(name, "1")
 
 
 GC_YOUNG = 200_000  # net allocations between collections of the youngest generation (Python's: 700)

@@ -14,6 +14,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 _NUMBER = re.compile(r"\d+")
+_NAME_NUMBER = re.compile(r"(?<=[A-Za-z_])\d+")  # a number in a name (th10), not 0.25, l**2 or sqrt(3)
 
 
 def exam_order(terms: list) -> list:
@@ -66,6 +67,8 @@ def readable_cosine(expr: sp.Expr) -> sp.Expr:
 
 
 def _counted_past_nine(terms: list) -> bool:
+    """Does a name in ``terms`` (a symbol's, or a coordinate's function's) carry a number
+    of two digits or more? Below that, sympy's order of names is the counting one."""
     names = set()
     for t in terms:
         names |= {s.name for s in t.free_symbols} | {f.func.__name__ for f in t.atoms(AppliedUndef)}
@@ -73,7 +76,8 @@ def _counted_past_nine(terms: list) -> bool:
 
 
 def _family(term: sp.Expr) -> tuple[str, tuple[int, ...]]:
-    """The term without its number, with the numbers in its text taken out: the family
-    ("cos(th#)") and the numbers ((10,))."""
+    """The term without its number, with the numbers in its names taken out: the family
+    ("cos(th#)") and those numbers ((10,)); other digits (√3, l², 0.25) stay in the
+    family, so terms that differ in them are not reordered."""
     text = str(term.as_coeff_Mul()[1])
-    return _NUMBER.sub("#", text), tuple(int(n) for n in _NUMBER.findall(text))
+    return _NAME_NUMBER.sub("#", text), tuple(int(n) for n in _NAME_NUMBER.findall(text))

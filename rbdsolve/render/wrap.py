@@ -99,18 +99,21 @@ def _cut(rest: str, room: int, next_room: int, entries: bool) -> int | None:
     there is if none fits; None if there is none."""
     points = break_points(rest, entries)
     fitting = [(p, d) for p, d in points if 0 < p <= room]
-    if not entries and not any(p >= room // 2 for p, _ in fitting) and len(rest) - _best(fitting, room) > next_room:
+    best = _best(fitting, room)
+    if not entries and not any(p >= room // 2 for p, _ in fitting) and len(rest) - (best or 0) > next_room:
         fitting += [(p, d) for p, d in break_points(rest, entries=True) if 0 < p <= room and rest[p - 1] == ","]
-    if fitting:
-        return _best(fitting, room)
+        best = _best(fitting, room)
+    if best is not None:
+        return best
     later = [p for p, _ in points if p > 0]
     return later[0] if later else None
 
 
-def _best(fitting: list[tuple[int, int]], room: int) -> int:
-    """The furthest of the least deep breaks that fill half the line (of all, if none does); 0 if none fits."""
+def _best(fitting: list[tuple[int, int]], room: int) -> int | None:
+    """The furthest of the least deep breaks that fill half the line (of all, if none
+    does); None if none fits."""
     if not fitting:
-        return 0
+        return None
     fitting = [(p, d) for p, d in fitting if p >= room // 2] or fitting
     least = min(d for _, d in fitting)
     return max(p for p, d in fitting if d == least)

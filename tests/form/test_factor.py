@@ -94,3 +94,4 @@ def test_whether_a_polynomial_splits(expr, splits):
     """By hand: a factor of a x + b of degree 0 in x divides a and b."""
     symbols = sorted(expr.free_symbols, key=sp.default_sort_key)
     assert _splits(sp.Poly(expr, *symbols)) is splits
+

@@ -42,3 +42,13 @@ def test_coordinates_of_time_and_mathml_count_the_same_way() -> None:
     assert shown == "cos(th₁) + cos(th₂) + cos(th₁₀) + cos(th₁₁)"
     markup = to_mathml(sp.cos(q[2] - q[1]))
     assert markup.index("th") < markup.index("10") and markup.index(">2<") < markup.index("10")
+
+
+def test_only_the_numbers_in_names_count() -> None:
+    """√3, l² and 0.25 are not coordinate numbers: terms that differ in them stay in
+    sympy's order (a reviewer's cases)."""
+    l = sp.Symbol("l")
+    shown = to_unicode(sp.sqrt(3) * sp.cos(th[0]) + sp.sqrt(2) * sp.cos(th[9]) + sp.cos(th[1]))
+    assert shown.index("√3 cos(th₁)") < shown.index("√2 cos(th₁₀)")
+    assert to_unicode(l * sp.cos(th[0]) + l * sp.cos(th[9]) + l * sp.cos(th[1])) == \
+        "l cos(th₁) + l cos(th₂) + l cos(th₁₀)"

@@ -12,10 +12,12 @@ from the velocity Jacobians is also cheaper than expanding and collecting T.
 
 from __future__ import annotations
 
+from typing import Callable
+
 import sympy as sp
 
 from rbdsolve.form.arrange import scaled_matrix
-from rbdsolve.form.display import Relation, Scaled
+from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import Energy, hessian, jacobians
 from rbdsolve.report import steps as st
@@ -52,7 +54,7 @@ def kinetic_steps(text: str, products: int, M: sp.Matrix, model: Model) -> list[
         f"{text}. T has {products} products q̇ᵢq̇ⱼ, so it is written as a matrix: T = ½ q̇ᵀ M(q) q̇ with "
         f"M(q) = Σ (m J_vᵀ J_v + J_ωᵀ J_G J_ω) over the bodies (J_v, J_ω: the Jacobians of v_G and ω "
         "with respect to q̇):",
-        Relation(_M_of_q(), _in_time(scaled_matrix(M, symbols), model)))]
+        Relation(_M_of_q(), scaled_matrix(in_time(M, model.to_time), symbols)))]
 
 
 def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> list[st.Step]:
@@ -62,22 +64,19 @@ def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> 
     if _quadratic_form(energy.total, model.q):
         K = hessian(energy.total, tuple(model.q))
         return [st.definition(f"{text}. V is a quadratic form in q, written as a matrix: V = ½ qᵀ K q with "
-                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), _in_time(scaled_matrix(K, symbols), model)))]
+                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), scaled_matrix(in_time(K, model.to_time), symbols)))]
     return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), shown))]
 
 
-def _in_time(shown: Scaled | sp.Matrix, model: Model) -> Scaled | sp.Matrix:
-    """A matrix arranged over q, shown over q(t): its scale is a product of parameters,
-    so only the inner matrix changes (arranging over q lets the entries be the ones M's
-    and K's tidying cached). Each distinct entry is substituted once (M and K are
-    symmetric)."""
-    matrix = shown.inner if isinstance(shown, Scaled) else shown
+def in_time(matrix: sp.Matrix, to_time: Callable[[sp.Expr], sp.Expr]) -> sp.ImmutableMatrix:
+    """q → q(t) in each entry, each distinct entry once (M and K are symmetric). Before
+    the matrix is arranged: substituting into entries already factored would undo their
+    form (it rebuilds 3/2 (1 + cos θ) as 3/2 + 3/2 cos θ)."""
     timed: dict[sp.Expr, sp.Expr] = {}
     for x in matrix:
         if x not in timed:
-            timed[x] = model.to_time(x)
-    matrix = sp.ImmutableMatrix(matrix.rows, matrix.cols, [timed[x] for x in matrix])
-    return Scaled(shown.factor, matrix) if isinstance(shown, Scaled) else matrix
+            timed[x] = to_time(x)
+    return sp.ImmutableMatrix(matrix.rows, matrix.cols, [timed[x] for x in matrix])
 
 
 def terms(expr: sp.Expr) -> int:

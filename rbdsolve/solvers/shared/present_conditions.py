@@ -50,7 +50,7 @@ OPS = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp
 TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤"}
 
 
-def condition_relations(condition, critical: Sequence = ()) -> list[Relation]:
+def condition_relations(condition: sp.Basic, critical: Sequence = ()) -> list[Relation]:
     """Each part of a conjunction as ``condition_relation`` writes it, in sympy's sorted
     order of its parts (``And.args``): ``And.make_args`` gives a frozenset, whose order
     changes with string hashing from one run to the next."""

@@ -127,7 +127,7 @@ def unturned(model: Model) -> tuple[Unturned, ...]:
     """The bodies that move with an angle coordinate without turning (see Unturned)."""
     out = []
     for body in model.bodies:
-        if body.angle is not None or body.turns_3d or body.position is None or body.inertia == sp.zeros(3, 3):
+        if body.angle is not None or body.turns_3d or body.inertia == sp.zeros(3, 3) or not body.placed:
             continue
         moves = tuple(n for q, n in zip(model.q, model.coordinate_names())
                       if q in model.angles and body.position.has(q))

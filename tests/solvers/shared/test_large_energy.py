@@ -81,3 +81,21 @@ def test_a_chain_of_seven_has_its_potential_as_one_sum() -> None:
     shown = relation(summary, "V").rhs
     assert sp.expand(plain(shown) - expected) == 0
     assert sp.expand(summary.V - expected) == 0
+
+
+def test_a_matrix_shown_over_q_of_t_keeps_its_factored_entries() -> None:
+    """M(q) is put over q(t) before it is arranged, as substituting into M(q(t)) whole
+    did: after factoring, 3/2 (1 + cos θ + cos φ) would be multiplied out again (a
+    reviewer's case: an entry that is a number times a sum holding a coordinate)."""
+    from rbdsolve.form.arrange import scaled_matrix
+    from rbdsolve.form.printers import to_unicode
+    from rbdsolve.solvers.shared.large_energy import in_time
+
+    m, l, th, ph = sp.symbols("m l theta phi")
+    t = sp.Symbol("t", real=True)
+    timed = {th: sp.Function("theta")(t), ph: sp.Function("phi")(t)}
+    M = sp.Matrix([[m * l**2 * (sp.Rational(3, 2) + sp.Rational(3, 2) * sp.cos(th) + sp.Rational(3, 2) * sp.cos(ph)),
+                    m * l**2 * sp.cos(th - ph)], [m * l**2 * sp.cos(th - ph), m * l**2 / 3]])
+    shown = to_unicode(scaled_matrix(in_time(M, lambda e: e.xreplace(timed)), {m, l}))
+    assert shown == to_unicode(scaled_matrix(M.xreplace(timed), {m, l}))
+    assert "3/2 (1 + cos(φ) + cos(θ))" in shown
