@@ -37,7 +37,12 @@ def wrap_math(text: str, width: int, indent: int = 4, hang: int = 8) -> list[str
     if found is None or indent + found[2] - found[0] <= width:  # a matrix that fits a line stays whole
         return _wrapped(text, width, indent, hang)
     column = indent + found[0] + 1  # under the first row's own "["
-    column = column if column <= width // 2 else hang  # a long name before it: rows at the hang
+    if column > width // 2:  # much written before it: the matrix starts its own line, at the hang
+        before = [p for p, depth in break_points(text[:found[0]]) if depth == 0 and p > 0]
+        if before:
+            head, tail = text[:before[-1]], text[before[-1] + 1:]
+            return _wrapped(head, width, indent, hang) + wrap_math(tail, width, hang, hang)
+        column = hang
     rows = matrix_rows(text)
     lines = _wrapped(rows[0], width, indent, column + 1, entries=True)
     for row in rows[1:]:

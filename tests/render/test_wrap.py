@@ -73,3 +73,16 @@ def test_a_matrix_that_fits_a_line_stays_whole_on_it() -> None:
     text = "J_O = J_G + m (|d|² 1 − d dᵀ) = m s² [[1/2, −1/4, −1/4], [−1/4, 1/2, −1/4], [−1/4, −1/4, 1/2]]"
     assert wrap_math(text, 80) == ["    J_O = J_G + m (|d|² 1 − d dᵀ)",
                                    "        = m s² [[1/2, −1/4, −1/4], [−1/4, 1/2, −1/4], [−1/4, −1/4, 1/2]]"]
+
+
+def test_a_long_matrix_after_much_else_starts_its_own_line() -> None:
+    """With more than half a line before it, the matrix starts a line of its own at the
+    hang, after the last operator, and its rows align there (a reviewer's case)."""
+    head = "J_O = J_G + m (|d|² 1 − d dᵀ) + another long term here"
+    text = head + " = m s² [" + ", ".join(_row(i, 5) for i in range(1, 6)) + "]"
+    lines = wrap_math(text, 90)
+    assert lines[0] == "    " + head and lines[1].startswith("        = m s² [[")
+    column = len("        = m s² [")
+    assert [line.index("[") for line in lines[2:] if line.lstrip().startswith("[")] == [column] * 4
+    assert all(len(line) <= 90 for line in lines)
+    assert " ".join(line.strip() for line in lines) == text
