@@ -42,6 +42,11 @@ def natural_order(terms: list) -> list:
     th₂, …, th₁₀. Only where a name has a number of two digits or more."""
     if len(terms) < 2 or not _counted_past_nine(terms):
         return terms
+    return _by_name_numbers(terms)
+
+
+def _by_name_numbers(terms: list) -> list:
+    """``natural_order`` without its check that a name is numbered past nine."""
     keys = [_family(t) for t in terms]
     places: dict[str, list[int]] = {}
     for i, (family, _) in enumerate(keys):
@@ -60,7 +65,7 @@ def readable_cosine(expr: sp.Expr) -> sp.Expr:
         return expr
     argument = expr.args[0]
     ordered = argument.as_ordered_terms()
-    natural = natural_order(ordered)
+    natural = _by_name_numbers(ordered)
     if natural != ordered and natural[0].could_extract_minus_sign():
         return sp.cos(-argument, evaluate=False)
     return expr

@@ -105,8 +105,6 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     applied (numerator and denominator reduced to degree < 2 in sin α); radicals such
     as √3 are algebraic numbers. So the result is zero exactly when the expression is.
     For answers built from solved linear systems, where ``tidy`` would swell."""
-    if expr.is_Rational:
-        return expr
     return _leading_plus(sp.factor_terms(_cancelled(expr, False)))
 
 
@@ -146,7 +144,7 @@ def _rational(expr: sp.Expr) -> bool:
     return not any(p.is_number for p in expr.atoms(sp.Pow))
 
 
-def _cancel_over(expr: sp.Expr, rational: bool, any_form: bool = False) -> sp.Expr:
+def _cancel_over(expr: sp.Expr, rational: bool, any_form: bool) -> sp.Expr:
     """``cancel`` over the rationals, adjoining the expression's algebraic numbers
     (√3) unless ``rational`` says it has none. ``any_form``: the numerator and
     denominator cancelled as they stand, without ``cancel``'s own sign and common-factor
@@ -158,8 +156,8 @@ def _cancel_over(expr: sp.Expr, rational: bool, any_form: bool = False) -> sp.Ex
     return sp.cancel(expr) if rational else sp.cancel(expr, extension=True)
 
 
-def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: bool = False,
-             any_form: bool = False) -> sp.Expr:
+def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: bool,
+             any_form: bool) -> sp.Expr:
     """Numerator and denominator modulo s² + c² − 1, in s; unchanged when they are not
     polynomials in s (a root of sin α, which a target such as 1/ω₀ gives), or when no
     s has a power above 1 (nothing to reduce: ``value`` is cancelled already)."""

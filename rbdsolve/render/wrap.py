@@ -30,7 +30,7 @@ def break_points(text: str, entries: bool = False) -> list[tuple[int, int]]:
 def wrap_math(text: str, width: int, indent: int = 4, hang: int = 8) -> list[str]:
     """``text`` as lines of at most ``width`` columns where it can be: the first line
     indented by ``indent``, the others by ``hang``; a matrix longer than a line, a row
-    per line (``matrix_rows``)."""
+    per line (``_rows``)."""
     if indent + len(text) <= width:
         return [" " * indent + text]
     found = _first_matrix(text)
@@ -43,21 +43,18 @@ def wrap_math(text: str, width: int, indent: int = 4, hang: int = 8) -> list[str
             head, tail = text[:before[-1]], text[before[-1] + 1:]
             return _wrapped(head, width, indent, hang) + wrap_math(tail, width, hang, hang)
         column = hang
-    rows = matrix_rows(text)
+    rows = _rows(text, found[1])
     lines = _wrapped(rows[0], width, indent, column + 1, entries=True)
     for row in rows[1:]:
         lines += _wrapped(row, width, column, column + 1, entries=True)
     return lines
 
 
-def matrix_rows(text: str) -> list[str]:
-    """``text`` cut after each "]," that ends a row of its first matrix (a list of
-    lists, "[[…], […]]"): ["M = m [[a, b],", "[c, d]]"]; [text] without one."""
-    found = _first_matrix(text)
-    if found is None:
-        return [text]
+def _rows(text: str, cuts: list[int]) -> list[str]:
+    """``text`` cut after each "]," that ends a row of its first matrix (``cuts``, from
+    ``_first_matrix``): ["M = m [[a, b],", "[c, d]]"]."""
     pieces, last = [], 0
-    for cut in found[1]:
+    for cut in cuts:
         pieces.append(text[last:cut])
         last = cut + 1  # the space after "],"
     return [*pieces, text[last:]]

@@ -80,10 +80,6 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
     return [state_step(model, instant), st.result(f"{when}, the forces are:", *math)]
 
 
-def _conditions(condition, criticals) -> list[Relation]:
-    return condition_relations(condition, criticals)
-
-
 def holds_steps(model: Model, supports: tuple[Held, ...], limits: dict, criticals) -> list[st.Step]:
     """Each support holds while its push or tension is ≥ 0 (and rolls while |F| ≤ μ N):
     said where that is a condition, with the critical values by name."""
@@ -97,7 +93,7 @@ def holds_steps(model: Model, supports: tuple[Held, ...], limits: dict, critical
                                  "the motion assumed is not possible there."))
         elif h.condition is not sp.true:
             steps.append(st.result(f"{what[0].upper() + what[1:]} holds there when:",
-                                   *_conditions(model.to_time(h.condition), criticals)))
+                                   *condition_relations(model.to_time(h.condition), criticals)))
     return steps
 
 
@@ -130,7 +126,7 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                     steps += critical_steps(named, "where that point stops being reached")
                     steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
                                            "and q̇² ≥ 0 there) only when:",
-                                           *_conditions(model.to_time(h.condition), named)))
+                                           *condition_relations(model.to_time(h.condition), named)))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
     q = model.to_time(model.q[0])
