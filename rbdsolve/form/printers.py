@@ -211,6 +211,8 @@ class UnicodePrinter(StrPrinter):
             if exp % 2 == 0 and base.is_Add and base.could_extract_minus_sign():
                 base = -base  # (R − r)², not (r − R)²
             text = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Pow"])
+            if isinstance(base, sp.Derivative) and "/" in text:  # (dth₁/dt)², not dth₁/dt²
+                text = f"({text})"
             return text + str(exp).translate(_SUP)
         return super()._print_Pow(expr, rational)
 
