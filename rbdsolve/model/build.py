@@ -75,8 +75,12 @@ class RigidBody:
         return sp.Matrix([0, 0, state.d_dt(self.angle)])
 
     def inertia_in_scene(self) -> sp.Matrix:
-        """J_G in scene axes: R J Rᵀ."""
-        return self.rotation * self.inertia * self.rotation.T
+        """J_G in scene axes: R J Rᵀ (a fresh matrix: a caller may change it in place)."""
+        return sp.Matrix(self._inertia_in_scene)
+
+    @cached_property  # once per body: T, the Jacobians, M at each configuration and the balances ask for it
+    def _inertia_in_scene(self) -> sp.ImmutableMatrix:
+        return sp.ImmutableMatrix(self.rotation * self.inertia * self.rotation.T)
 
 
 @dataclass(frozen=True)
