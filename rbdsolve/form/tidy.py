@@ -82,19 +82,27 @@ def _two_trig_factors(term: sp.Expr) -> tuple[sp.Expr | None, type | None, froze
 def _foldable(expr: sp.Expr) -> bool:
     """Could ``fu.TR10i`` fold anything in ``expr``? It rewrites a pair of terms of one
     sum, cos a cos b ± sin a sin b, sin a cos b ± cos a sin b, or a cos x + b sin x with
-    b/a ∈ {1, √3, 1/√3}: in each, one term has a factor cos x and another sin x for the
-    same x. Where no sum has such a pair, TR10i returns ``expr`` itself, and skipping
-    it saves its search over all pairs (a chain's V, n cosines: n² pairs, for nothing)."""
+    b/a ∈ {1, √3, 1/√3}: in each, one term has a factor cos x and the other sin x for
+    the same x, and the two terms differ by a number and by sines and cosines only
+    (``fu.trig_split`` refuses a pair whose quotient holds anything else). Where no sum
+    has such a pair, TR10i returns ``expr`` itself, and skipping it saves its search
+    over all pairs (a chain's V, n cosines: n² pairs, for nothing; a q̈ numerator's
+    terms in θ̇² and φ̇²)."""
     for total in expr.atoms(sp.Add):
         cosines: dict[sp.Expr, set[int]] = {}
         sines: dict[sp.Expr, set[int]] = {}
+        rests = []
         for i, term in enumerate(total.args):
+            rest = []
             for factor in sp.Mul.make_args(term):
                 base = factor.as_base_exp()[0]
                 if isinstance(base, (sp.sin, sp.cos)):
                     (sines if isinstance(base, sp.sin) else cosines).setdefault(base.args[0], set()).add(i)
+                elif not factor.is_number:
+                    rest.append(factor)
+            rests.append(sp.Mul(*rest))
         for x in cosines.keys() & sines.keys():
-            if len(cosines[x] | sines[x]) > 1:  # cos x in one term, sin x in another
+            if any(i != j and rests[i] == rests[j] for i in cosines[x] for j in sines[x]):
                 return True
     return False
 
