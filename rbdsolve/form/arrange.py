@@ -18,6 +18,7 @@ from typing import Callable, Sequence
 import sympy as sp
 
 from rbdsolve.form.display import Along, Math, Product, Relation, Scaled, Terms
+from rbdsolve.form.expansion import expanded
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import collect_in, tidy
@@ -58,7 +59,7 @@ def arranged_equation(expr: sp.Expr, generators: Sequence[sp.Expr], coordinates:
     still = parts.get(sp.Integer(1), sp.Integer(0))
     groups = [arranged(moving, generators, coordinates, scale_symbols, show)] if moving != 0 else []
     if still != 0:
-        common = sp.factor_terms(sp.expand(still))
+        common = sp.factor_terms(expanded(still))
         pulled = [f for f in sp.Mul.make_args(common) if not f.is_Add]
         if len(pulled) < len(sp.Mul.make_args(common)) and any(f.has(*coordinates) for f in pulled):
             groups.append(show(common))
@@ -101,7 +102,7 @@ def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp
     if not terms:
         return sp.Integer(0)
     scale = common_scale([c for c, _ in terms], symbols) if len(terms) > 1 else sp.Integer(1)
-    items = tuple(Product(factored(sp.expand(c / scale), bracketed=bool(factors)), factors) for c, factors in terms)
+    items = tuple(Product(factored(expanded(c / scale), bracketed=bool(factors)), factors) for c, factors in terms)
     inner = Terms(items) if len(items) > 1 else items[0]
     return inner if scale == 1 else Scaled(scale, inner)
 
@@ -139,7 +140,7 @@ def ordered_sum(parts: dict[sp.Expr, sp.Expr], generators: list[sp.Expr],
             powers = mono.as_powers_dict()
             out.append((parts[mono], tuple(g**powers[g] for g in generators if g in powers)))
             continue
-        rest = sp.Add.make_args(sp.expand(parts[mono]))
+        rest = sp.Add.make_args(expanded(parts[mono]))
         rank = {q: i for i, q in enumerate(coordinates)}
 
         def first_coordinate(term: sp.Expr) -> tuple:

@@ -17,6 +17,7 @@ from functools import lru_cache
 
 import sympy as sp
 
+from rbdsolve.form.expansion import expanded
 from rbdsolve.form.printers import to_unicode
 
 MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs more than it reads
@@ -99,7 +100,7 @@ def factored_sum(total: sp.Add, alone: bool = False) -> sp.Expr:
     negative; a coefficient with π keeps its fraction (R² m (3/4 − 4 cos θ/(3π))).
     ``alone``: the sum is the whole expression, not a factor beside others (k (…)), so
     a number would be all it has in front."""
-    terms = sp.Add.make_args(sp.expand(total))
+    terms = sp.Add.make_args(expanded(total))
     integral, plain = (_with_content(total, _content(terms, rational), alone) for rational in (True, False))
     if integral == total:
         return plain
@@ -109,7 +110,7 @@ def factored_sum(total: sp.Add, alone: bool = False) -> sp.Expr:
 
 def _with_content(total: sp.Add, content: sp.Expr, alone: bool) -> sp.Expr:
     """content × (total/content), the second factor factored where it splits."""
-    inner = sp.expand(total / content)
+    inner = expanded(total / content)
     symbols = sorted(inner.free_symbols, key=sp.default_sort_key)
     if symbols and inner.is_polynomial(*symbols):
         if _splits(sp.Poly(inner, *symbols)):

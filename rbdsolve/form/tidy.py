@@ -13,6 +13,8 @@ from functools import lru_cache
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
+from rbdsolve.form.expansion import expanded
+
 MAX_OPS = 400  # larger coefficients are expanded but not rewritten
 
 
@@ -25,7 +27,7 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     then fold sums of products into sums of angles, cos θ cos φ + sin θ sin φ =
     cos(φ − θ) (``fu.TR10i``), then pull out common factors.
     """
-    expr = sp.expand(expr)
+    expr = expanded(expr)
     if expr.is_Rational:
         return expr
     ops = sp.count_ops(expr)
@@ -264,7 +266,7 @@ def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False)
     finish = (lambda c: sp.factor_terms(c)) if tidied else tidy
     if not generators:
         return {sp.Integer(1): finish(expr)}
-    grouped = _group_by_monomial(sp.expand(expr), set(generators))
+    grouped = _group_by_monomial(expanded(expr), set(generators))
     if grouped is None:  # a generator inside a function or a denominator: let Poly judge
         poly = sp.Poly(sp.expand(expr), *generators)
         grouped = {sp.Mul(*[g**p for g, p in zip(generators, powers)]): [coeff]

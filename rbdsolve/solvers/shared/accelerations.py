@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.form.display import Relation
+from rbdsolve.form.expansion import expanded
 from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Instant
@@ -43,19 +44,19 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None 
     general form is too long to write out (``general``: refuse rather than wait)."""
     n = len(model.q)
     M = sp.Matrix(n, n, lambda i, j: sp.diff(equations[i], model.qdd[j]))
-    h = tuple(sp.expand(E.xreplace({a: 0 for a in model.qdd})) for E in equations)
+    h = tuple(expanded(E.xreplace({a: 0 for a in model.qdd})) for E in equations)
     if at is not None:
         M, h = M.xreplace(at).applyfunc(sp.simplify), tuple(sp.simplify(x.xreplace(at)) for x in h)
     elif general and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
         return Accelerations(M, h, None, too_long=True)
-    det = tidy(sp.expand(M.det(method="berkowitz")))
+    det = tidy(expanded(M.det(method="berkowitz")))
     if det == 0:
         return Accelerations(M, h, None)
     numerators = []
     for i in range(n):
         Mi = M.copy()
         Mi[:, i] = sp.Matrix([-x for x in h])
-        numerators.append(tidy(sp.expand(Mi.det(method="berkowitz"))))
+        numerators.append(tidy(expanded(Mi.det(method="berkowitz"))))
         if at is None and general and sp.count_ops(numerators[-1]) > NUMERATOR_OPS:
             return Accelerations(M, h, None, too_long=True)  # cancelling it would take minutes
     return Accelerations(M, h, tuple(_fraction(num, det) for num in numerators))
@@ -76,7 +77,7 @@ def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:
     top, bottom = sp.fraction(value)
     if sample(bottom, {}).real < 0:  # a denominator such as 3 cos² − 28, negative throughout
         top, bottom = -top, -bottom
-    top, bottom = sp.factor_terms(sp.expand(top)), sp.factor_terms(sp.expand(bottom))
+    top, bottom = sp.factor_terms(expanded(top)), sp.factor_terms(expanded(bottom))
     return top / bottom
 
 
@@ -84,7 +85,7 @@ def clean_fraction(expr: sp.Expr) -> sp.Expr:
     """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
     value = tidy_fraction(expr)
     top, bottom = sp.fraction(value)
-    return sp.factor_terms(tidy(sp.expand(top))) / sp.factor_terms(tidy(sp.expand(bottom)))
+    return sp.factor_terms(tidy(expanded(top))) / sp.factor_terms(tidy(expanded(bottom)))
 
 
 def state_values(model: Model, instant: Instant) -> dict[sp.Symbol, sp.Expr]:
