@@ -18,6 +18,8 @@ with their Jacobians together reaching the full rank, shows that it is one.
 
 Rank and fibre tests are numeric: 30 digits, the parameters at their values or at fixed
 random samples, rank against a relative 1e-20; they classify, never print, a number.
+A float64 screen first (rank_screen.py) lets a point through as regular where ∂φ/∂q has
+full column rank by a margin no rounding can close: the 30-digit rank there is full too.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import memoized, potential_energy
+from rbdsolve.solvers.shared.rank_screen import clearly_full_rank
 from rbdsolve.solvers.shared.values import parameter_sample
 
 DIGITS = 30
@@ -102,7 +105,7 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
         return None
     with mp.workdps(DIGITS):
         q0 = _point(model, at)
-        if q0 is None:
+        if q0 is None or _clearly_regular(model, q0):  # the common case, without 30-digit work
             return None
         try:
             rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0), tol)
@@ -126,6 +129,24 @@ def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
     return out
 
 
+@memoized
+def _float_sample(model: Model) -> dict[sp.Symbol, float]:
+    """The sampled parameters that are plain numbers, as floats (any other stops the screen)."""
+    out = {}
+    for s, v in _sample(model).items():
+        try:
+            out[s] = float(v)
+        except TypeError:
+            continue
+    return out
+
+
+def _clearly_regular(model: Model, q: list) -> bool:
+    """∂φ/∂q at q of full column rank by the float64 screen: then its 30-digit rank is
+    full as well, at least the generic rank, and singularity's answer is None."""
+    return clearly_full_rank(list(placement(model)), model.q, [float(x) for x in q], _float_sample(model))
+
+
 class _NotFinite(ArithmeticError):
     """A placement or its derivative is not a finite number at a point."""
 
@@ -147,9 +168,10 @@ def _generic_rank(model: Model) -> int:
     """The rank of ∂φ/∂q at two random configurations (the larger)."""
     rng = random.Random(7)
     with mp.workdps(DIGITS):
-        ranks = [_rank_and_kernel(_numeric_jacobian(model, [mp.mpf(rng.uniform(-3, 3)) for _ in model.q]))[0]
-                 for _ in range(2)]
-    return max(ranks)
+        points = [[mp.mpf(rng.uniform(-3, 3)) for _ in model.q] for _ in range(2)]
+        if all(_clearly_regular(model, p) for p in points):  # full column rank at both, by the screen
+            return len(model.q)
+        return max(_rank_and_kernel(_numeric_jacobian(model, p))[0] for p in points)
 
 
 def _image_rank(J: mp.matrix, tol) -> int:
