@@ -18,8 +18,10 @@ with their Jacobians together reaching the full rank, shows that it is one.
 
 Rank and fibre tests are numeric: 30 digits, the parameters at their values or at fixed
 random samples, rank against a relative 1e-20; they classify, never print, a number.
-A float64 screen first (rank_screen.py) lets a point through as regular where ∂φ/∂q has
-full column rank by a margin no rounding can close: the 30-digit rank there is full too.
+Float64 screens first (placement_screen.py): a point is regular where ∂φ/∂q has full
+column rank by a margin no rounding can close (the 30-digit rank there is full too), and
+two placements differ where an entry of φ(a) − φ(b) at the sampled parameters is far
+larger than rounding could make of zero (no identity can cancel it).
 """
 
 from __future__ import annotations
@@ -35,7 +37,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import memoized, potential_energy
-from rbdsolve.solvers.shared.rank_screen import clearly_full_rank
+from rbdsolve.solvers.shared.placement_screen import clearly_different, clearly_full_rank
 from rbdsolve.solvers.shared.values import parameter_sample
 
 DIGITS = 30
@@ -119,14 +121,30 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
 
 
 def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
+    """The coordinates at ``at``, the parameters sampled, to 30 digits; None where one is
+    not real. Kept per model: the listing asks about each solution several times."""
+    key = tuple(sp.sympify(at.get(q, 0)) for q in model.q)
+    known = _points(model)
+    if key not in known:
+        known[key] = _evaluate_point(model, key)
+    return None if known[key] is None else list(known[key])
+
+
+@memoized
+def _points(model: Model) -> dict:
+    return {}
+
+
+def _evaluate_point(model: Model, values: tuple) -> tuple | None:
     sample = _sample(model)
     out = []
-    for q in model.q:
-        real, imag = sp.N(sp.sympify(at.get(q, 0)).xreplace(sample), DIGITS).as_real_imag()
-        if abs(imag) > 1e-12 * max(1, abs(real)):
-            return None
-        out.append(mp.mpf(str(real)))
-    return out
+    with mp.workdps(DIGITS):
+        for value in values:
+            real, imag = sp.N(value.xreplace(sample), DIGITS).as_real_imag()
+            if abs(imag) > 1e-12 * max(1, abs(real)):
+                return None
+            out.append(mp.mpf(str(real)))
+    return tuple(out)
 
 
 @memoized
@@ -243,6 +261,8 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     sin² + cos² = 1 vanishes, or, with free angles, the polynomial system in their sines
     and cosines on the unit circle has a real solution."""
     phi = placement(model)
+    if _clearly_apart(model, a, b, free):  # the common case, without reducing anything
+        return False
     left = phi.xreplace(dict(a))
     fixed = {q: v for q, v in b.items() if q not in free}
     right = phi.xreplace(fixed)
@@ -250,6 +270,21 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     if not free:
         return all(x == 0 for x in difference)
     return _solvable(difference, free, model)
+
+
+def _clearly_apart(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.Symbol, sp.Expr],
+                   free: tuple[sp.Symbol, ...]) -> bool:
+    """An entry of φ without a free coordinate differs between ``a`` and ``b`` at the
+    sampled parameters (float64 screen): then it is not zero as an expression either,
+    and same_placement's exact test would answer no."""
+    entries = [e for e in placement(model) if not e.has(*free)]
+    if not entries:
+        return False
+    points = _point(model, a), _point(model, b)
+    if any(p is None for p in points):
+        return False
+    left, right = ([float(x) for x in p] for p in points)
+    return clearly_different(entries, model.q, left, right, _float_sample(model))
 
 
 def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Model) -> bool:

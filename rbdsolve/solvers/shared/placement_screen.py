@@ -1,23 +1,29 @@
-"""A float64 screen for full column rank of ∂φ/∂q: the regular case without 30 digits.
+"""Float64 screens for placement.py: the regular case without 30 digits or sympy.
 
 placement.singularity decides the rank of J = ∂φ/∂q at 30 digits against a relative
-tolerance (1e-20, or 1e-7 for a floating-point root). Nearly every point asked about
-is regular, where the smallest singular value of J is a sizeable fraction of the
-largest; this screen says so in float64 and nothing else.
+tolerance (1e-20, or 1e-7 for a floating-point root); placement.same_placement decides
+φ(a) = φ(b) by reducing the difference exactly. Nearly every point asked about is
+regular, and nearly every pair of equilibria is two configurations; these screens say
+so in float64 and say nothing else.
 
-J comes from one forward pass over φ's expression tree: each node carries its value,
-its gradient in q, and sizes m, h that bound their rounding error (|error| ≤ K·u·m and
+Both take one forward pass over φ's expression tree: each node carries its value, its
+gradient in q, and sizes m, h that bound their rounding error (|error| ≤ K·u·m and
 ≤ K·u·hₖ, u the unit roundoff, K = 4 × the nodes walked: first-order error analysis,
 each sum charged n × Σ of its terms' sizes so cancellation is paid for, sin and cos
-charged their argument's absolute error). Then the Cholesky factorisation of
-JᵀJ − c·I, c = MARGIN²·‖J‖_F², must succeed: then σ_min(J) > MARGIN·‖J‖_F ≥ MARGIN·σ_max(J).
-The rounding bound E = K·u·‖h‖_F must also stay below MARGIN·‖J‖_F / 1000: by Weyl's
-inequality the exact J then has σ_min/σ_max above ~MARGIN = 1e-4, a thousand times the
-largest tolerance, so its 30-digit rank is full as well.
+charged their argument's absolute error; a coordinate's value its own rounding).
+
+Rank: the Cholesky factorisation of JᵀJ − c·I, c = MARGIN²·‖J‖_F², must succeed; then
+σ_min(J) > MARGIN·‖J‖_F ≥ MARGIN·σ_max(J). The rounding bound E = K·u·‖h‖_F must also
+stay below MARGIN·‖J‖_F / 1000: by Weyl's inequality the exact J then has σ_min/σ_max
+above ~MARGIN = 1e-4, a thousand times the largest tolerance, so its 30-digit rank is
+full as well.
+
+Placements: an entry of φ(a) − φ(b) larger than 1000 × its rounding bound is not zero
+at these parameter values, so no identity makes the two placements equal.
 
 Anything else (a node the pass does not know, a symbol without a number, a value that
-is not finite or not real, a margin too small) answers False, and the 30-digit path
-decides as it always did.
+is not finite or not real, a margin too small) answers False, and the exact or
+30-digit path decides as it always did.
 """
 
 from __future__ import annotations
@@ -29,10 +35,14 @@ import sympy as sp
 
 MARGIN = 1e-4
 UNIT_ROUNDOFF = 2.0 ** -53
+SAFETY = 1000  # how far beyond the first-order rounding bound a screen asks a number to be
 
 
 class _Unscreened(Exception):
     """A node or value the float pass does not take."""
+
+
+_FAILED = (_Unscreened, ArithmeticError, ValueError, TypeError)
 
 
 def clearly_full_rank(entries: Sequence[sp.Expr], q: Sequence[sp.Symbol], at: Sequence[float],
@@ -43,20 +53,42 @@ def clearly_full_rank(entries: Sequence[sp.Expr], q: Sequence[sp.Symbol], at: Se
     n = len(q)
     if n == 0 or len(entries) < n:
         return False
+    try:
+        rows, bound = _forward(entries, q, at, values, n)
+    except _FAILED:
+        return False
+    J = [r[2] for r in rows]
+    size = math.sqrt(sum(x * x for row in J for x in row))
+    error = bound * math.sqrt(sum(x * x for r in rows for x in r[3]))
+    if not (math.isfinite(size) and math.isfinite(error)) or size == 0 or error > MARGIN * size / SAFETY:
+        return False
+    return _positive_definite_above(_gram(J, n), (MARGIN * size) ** 2)
+
+
+def clearly_different(entries: Sequence[sp.Expr], q: Sequence[sp.Symbol], a: Sequence[float],
+                      b: Sequence[float], values: Mapping[sp.Symbol, float]) -> bool:
+    """Does φ = ``entries`` differ between q = ``a`` and q = ``b`` (the other symbols at
+    ``values``) in some entry by far more than rounding could make of equal values?
+    False means: not shown here."""
+    try:
+        (left, bound_a), (right, bound_b) = (_forward(entries, q, x, values, 0) for x in (a, b))
+    except _FAILED:
+        return False
+    bound = max(bound_a, bound_b)
+    return any(abs(u[0] - v[0]) > SAFETY * bound * (u[1] + v[1]) for u, v in zip(left, right))
+
+
+def _forward(entries, q, at, values, n: int) -> tuple[list[tuple], float]:
+    """Each entry's (value, error size, gradient in the first n coordinates, gradient
+    error sizes), and K·u, the factor that turns a size into an error bound."""
     walk = _Walk(n, {s: (v, abs(v), (0.0,) * n, (0.0,) * n) for s, v in values.items()})
     for k, (s, x) in enumerate(zip(q, at)):
         unit = tuple(1.0 if i == k else 0.0 for i in range(n))
         walk.memo[s] = (x, abs(x), unit, unit)
-    try:
-        rows = [walk.node(e) for e in entries]
-    except (_Unscreened, ArithmeticError, ValueError, TypeError):
-        return False
-    J = [r[2] for r in rows]
-    size = math.sqrt(sum(x * x for row in J for x in row))
-    error = 4 * len(walk.memo) * UNIT_ROUNDOFF * math.sqrt(sum(x * x for r in rows for x in r[3]))
-    if not (math.isfinite(size) and math.isfinite(error)) or size == 0 or error > MARGIN * size / 1000:
-        return False
-    return _positive_definite_above(_gram(J, n), (MARGIN * size) ** 2)
+    rows = [walk.node(e) for e in entries]
+    if not all(math.isfinite(r[0]) for r in rows):
+        raise _Unscreened
+    return rows, 4 * len(walk.memo) * UNIT_ROUNDOFF
 
 
 def _gram(J: list[tuple[float, ...]], n: int) -> list[list[float]]:

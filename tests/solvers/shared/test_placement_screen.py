@@ -1,4 +1,4 @@
-"""The float64 rank screen (solvers/shared/rank_screen.py): it lets a point through as
+"""The float64 rank screen (solvers/shared/placement_screen.py): it lets a point through as
 regular only where ∂φ/∂q has full column rank by a wide margin, and says "not shown"
 wherever a 30-digit test could see otherwise.
 
@@ -9,13 +9,17 @@ ratio of the singular values |sin θ|; at θ = 0 the second column vanishes (the
 φ = (c x, y) with c = P − Q − 1, P = 10²⁰, Q = 10²⁰ − 1: exactly c = 0, rank 1; in
 float64 Q rounds to 10²⁰ and c comes out −1, which a float-only test would call full
 rank.
+φ = (l sin x, l cos² x) takes the same value at x = 0 and x = π (sin π = 0, cos² π = 1),
+though float64 gives sin π ≈ 1.2e-16; l cos x does not (l and −l).
 """
 
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 
-from rbdsolve.solvers.shared.rank_screen import clearly_full_rank
+from rbdsolve.solvers.shared.placement_screen import clearly_different, clearly_full_rank
 
 th, ps, l, x, y, P, Q = sp.symbols("theta psi l x y P Q", real=True)
 SPHERE = [l * sp.sin(th) * sp.cos(ps), l * sp.sin(th) * sp.sin(ps), -l * sp.cos(th)]
@@ -50,3 +54,15 @@ def test_what_the_pass_does_not_know_is_not_let_through() -> None:
 
 def test_fewer_entries_than_coordinates_is_never_full_rank() -> None:
     assert not clearly_full_rank([x + y], [x, y], [1.0, 2.0], {})
+
+
+def test_placements_equal_up_to_rounding_are_not_called_different() -> None:
+    assert not clearly_different([l * sp.sin(x), l * sp.cos(x) ** 2], [x], [0.0], [math.pi], {l: 2.0})
+
+
+def test_placements_that_differ_are_called_different() -> None:
+    assert clearly_different([l * sp.sin(x), l * sp.cos(x)], [x], [0.0], [math.pi], {l: 2.0})
+
+
+def test_placements_the_pass_cannot_evaluate_are_not_called_different() -> None:
+    assert not clearly_different([sp.Abs(x)], [x], [1.0], [2.0], {})
