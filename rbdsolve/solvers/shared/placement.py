@@ -122,29 +122,38 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
 
 def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
     """The coordinates at ``at``, the parameters sampled, to 30 digits; None where one is
-    not real. Kept per model: the listing asks about each solution several times."""
+    not real (its real part taken where the imaginary part is below 1e-12 of it)."""
+    parts = _complex_point(model, at)
+    if any(abs(imag) > 1e-12 * max(1, abs(real)) for real, imag in parts):
+        return None
+    with mp.workdps(DIGITS):
+        return [mp.mpf(str(real)) for real, _ in parts]
+
+
+def _float_point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list[float] | None:
+    """The coordinates at ``at`` in float64, None unless each is a real number to far
+    below a float's resolution (the screens must see the point the exact test sees)."""
+    parts = _complex_point(model, at)
+    if not all(real.is_Number and (imag == 0 or imag.is_Number and abs(imag) <= 1e-25 * max(1, abs(real)))
+               for real, imag in parts):
+        return None
+    return [float(real) for real, _ in parts]
+
+
+def _complex_point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> tuple:
+    """Real and imaginary part of each coordinate, 30 digits; kept per model (the listing
+    asks about each solution several times)."""
     key = tuple(sp.sympify(at.get(q, 0)) for q in model.q)
     known = _points(model)
     if key not in known:
-        known[key] = _evaluate_point(model, key)
-    return None if known[key] is None else list(known[key])
+        sample = _sample(model)
+        known[key] = tuple(sp.N(value.xreplace(sample), DIGITS).as_real_imag() for value in key)
+    return known[key]
 
 
 @memoized
 def _points(model: Model) -> dict:
     return {}
-
-
-def _evaluate_point(model: Model, values: tuple) -> tuple | None:
-    sample = _sample(model)
-    out = []
-    with mp.workdps(DIGITS):
-        for value in values:
-            real, imag = sp.N(value.xreplace(sample), DIGITS).as_real_imag()
-            if abs(imag) > 1e-12 * max(1, abs(real)):
-                return None
-            out.append(mp.mpf(str(real)))
-    return tuple(out)
 
 
 @memoized
@@ -280,10 +289,9 @@ def _clearly_apart(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     entries = [e for e in placement(model) if not e.has(*free)]
     if not entries:
         return False
-    points = _point(model, a), _point(model, b)
-    if any(p is None for p in points):
+    left, right = _float_point(model, a), _float_point(model, b)
+    if left is None or right is None:
         return False
-    left, right = ([float(x) for x in p] for p in points)
     return clearly_different(entries, model.q, left, right, _float_sample(model))
 
 
