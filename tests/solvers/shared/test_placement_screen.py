@@ -1,6 +1,7 @@
-"""The float64 rank screen (solvers/shared/placement_screen.py): it lets a point through as
-regular only where ∂φ/∂q has full column rank by a wide margin, and says "not shown"
-wherever a 30-digit test could see otherwise.
+"""The float64 screens (solvers/shared/placement_screen.py): a point is let through as
+regular only where ∂φ/∂q has full column rank by a wide margin, two placements are
+called different only where rounding cannot explain the difference; anything else is
+"not shown", left to the 30-digit or exact test.
 
 Hand derivations. φ = l (sin θ cos ψ, sin θ sin ψ, −cos θ), a spherical pendulum:
 ∂φ/∂θ = l (cos θ cos ψ, cos θ sin ψ, sin θ), ∂φ/∂ψ = l sin θ (−sin ψ, cos ψ, 0); the
