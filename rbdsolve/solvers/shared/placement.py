@@ -18,6 +18,10 @@ with their Jacobians together reaching the full rank, shows that it is one.
 
 Rank and fibre tests are numeric: 30 digits, the parameters at their values or at fixed
 random samples, rank against a relative 1e-20; they classify, never print, a number.
+Float64 screens first (placement_screen.py): a point is regular where ∂φ/∂q has full
+column rank by a margin no rounding can close (the 30-digit rank there is full too), and
+two placements differ where an entry of φ(a) − φ(b) at the sampled parameters is far
+larger than rounding could make of zero (no identity can cancel it).
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import memoized, potential_energy
+from rbdsolve.solvers.shared.placement_screen import clearly_different, clearly_full_rank
 from rbdsolve.solvers.shared.values import parameter_sample
 
 DIGITS = 30
@@ -102,7 +107,7 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
         return None
     with mp.workdps(DIGITS):
         q0 = _point(model, at)
-        if q0 is None:
+        if q0 is None or _clearly_regular(model, q0):  # the common case, without 30-digit work
             return None
         try:
             rank, kernel = _rank_and_kernel(_numeric_jacobian(model, q0), tol)
@@ -116,14 +121,57 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
 
 
 def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
-    sample = _sample(model)
-    out = []
-    for q in model.q:
-        real, imag = sp.N(sp.sympify(at.get(q, 0)).xreplace(sample), DIGITS).as_real_imag()
-        if abs(imag) > 1e-12 * max(1, abs(real)):
-            return None
-        out.append(mp.mpf(str(real)))
+    """The coordinates at ``at``, the parameters sampled, to 30 digits; None where one is
+    not real (its real part taken where the imaginary part is below 1e-12 of it)."""
+    parts = _complex_point(model, at)
+    if any(abs(imag) > 1e-12 * max(1, abs(real)) for real, imag in parts):
+        return None
+    with mp.workdps(DIGITS):
+        return [mp.mpf(str(real)) for real, _ in parts]
+
+
+def _float_point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list[float] | None:
+    """The coordinates at ``at`` in float64, None unless each is a real number to far
+    below a float's resolution (the screens must see the point the exact test sees)."""
+    parts = _complex_point(model, at)
+    if not all(real.is_Number and (imag == 0 or imag.is_Number and abs(imag) <= 1e-25 * max(1, abs(real)))
+               for real, imag in parts):
+        return None
+    return [float(real) for real, _ in parts]
+
+
+def _complex_point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> tuple:
+    """Real and imaginary part of each coordinate, 30 digits; kept per model (the listing
+    asks about each solution several times)."""
+    key = tuple(sp.sympify(at.get(q, 0)) for q in model.q)
+    known = _points(model)
+    if key not in known:
+        sample = _sample(model)
+        known[key] = tuple(sp.N(value.xreplace(sample), DIGITS).as_real_imag() for value in key)
+    return known[key]
+
+
+@memoized
+def _points(model: Model) -> dict:
+    return {}
+
+
+@memoized
+def _float_sample(model: Model) -> dict[sp.Symbol, float]:
+    """The sampled parameters that are plain numbers, as floats (any other stops the screen)."""
+    out = {}
+    for s, v in _sample(model).items():
+        try:
+            out[s] = float(v)
+        except TypeError:
+            continue
     return out
+
+
+def _clearly_regular(model: Model, q: list) -> bool:
+    """∂φ/∂q at q of full column rank by the float64 screen: then its 30-digit rank is
+    full as well, at least the generic rank, and singularity's answer is None."""
+    return clearly_full_rank(list(placement(model)), model.q, [float(x) for x in q], _float_sample(model))
 
 
 class _NotFinite(ArithmeticError):
@@ -147,9 +195,10 @@ def _generic_rank(model: Model) -> int:
     """The rank of ∂φ/∂q at two random configurations (the larger)."""
     rng = random.Random(7)
     with mp.workdps(DIGITS):
-        ranks = [_rank_and_kernel(_numeric_jacobian(model, [mp.mpf(rng.uniform(-3, 3)) for _ in model.q]))[0]
-                 for _ in range(2)]
-    return max(ranks)
+        points = [[mp.mpf(rng.uniform(-3, 3)) for _ in model.q] for _ in range(2)]
+        if all(_clearly_regular(model, p) for p in points):  # full column rank at both, by the screen
+            return len(model.q)
+        return max(_rank_and_kernel(_numeric_jacobian(model, p))[0] for p in points)
 
 
 def _image_rank(J: mp.matrix, tol) -> int:
@@ -221,6 +270,8 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     sin² + cos² = 1 vanishes, or, with free angles, the polynomial system in their sines
     and cosines on the unit circle has a real solution."""
     phi = placement(model)
+    if _clearly_apart(model, a, b, free):  # the common case, without reducing anything
+        return False
     left = phi.xreplace(dict(a))
     fixed = {q: v for q, v in b.items() if q not in free}
     right = phi.xreplace(fixed)
@@ -228,6 +279,20 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     if not free:
         return all(x == 0 for x in difference)
     return _solvable(difference, free, model)
+
+
+def _clearly_apart(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.Symbol, sp.Expr],
+                   free: tuple[sp.Symbol, ...]) -> bool:
+    """An entry of φ without a free coordinate differs between ``a`` and ``b`` at the
+    sampled parameters (float64 screen): then it is not zero as an expression either,
+    and same_placement's exact test would answer no."""
+    entries = [e for e in placement(model) if not e.has(*free)]
+    if not entries:
+        return False
+    left, right = _float_point(model, a), _float_point(model, b)
+    if left is None or right is None:
+        return False
+    return clearly_different(entries, model.q, left, right, _float_sample(model))
 
 
 def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Model) -> bool:
