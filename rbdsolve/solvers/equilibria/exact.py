@@ -162,8 +162,7 @@ def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
         if any(sp.sympify(v).is_real is False for v in root.values()):
             continue
         if len(root) < len(symbols):  # a family of solutions: not isolated points
-            raise UnsolvedError("the equilibria form a continuum (V is flat along a curve); "
-                                "rbdsolve reports isolated equilibria only")
+            raise _continuum()
         sol = {q: _angle(root[s[q]], root[c[q]]) for q in s}
         sol |= {q: tidy(root[q]) for q in plain}
         out.append(sol)
@@ -212,7 +211,14 @@ def _solve_general(equations, unknowns, model: Model) -> list[dict]:
         roots = sp.solve(equations, unknowns, dict=True)
     except NotImplementedError:
         raise refusal from None
+    if any(len(r) < len(unknowns) or any(sp.sympify(v).has(*unknowns) for v in r.values()) for r in roots):
+        raise _continuum()  # x = √(L² − y²) for every y: a spring's natural length all round
     return [r for r in roots if all(sp.sympify(v).is_real is not False for v in r.values())]
+
+
+def _continuum() -> UnsolvedError:
+    return UnsolvedError("the equilibria form a continuum (V is flat along a curve); "
+                         "rbdsolve reports isolated equilibria only")
 
 
 def _monotone(equations, unknowns, model: Model) -> tuple[dict, str] | None:

@@ -122,8 +122,11 @@ def singularity(model: Model, at: Mapping[sp.Symbol, sp.Expr], tol=RANK_TOL) -> 
 
 def _point(model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> list | None:
     """The coordinates at ``at``, the parameters sampled, to 30 digits; None where one is
-    not real (its real part taken where the imaginary part is below 1e-12 of it)."""
+    not real (its real part taken where the imaginary part is below 1e-12 of it), or not
+    a number: a family of equilibria (x = √(L² − y²) for every y) is no one point."""
     parts = _complex_point(model, at)
+    if not all(real.is_Number and imag.is_Number for real, imag in parts):
+        return None
     if any(abs(imag) > 1e-12 * max(1, abs(real)) for real, imag in parts):
         return None
     with mp.workdps(DIGITS):

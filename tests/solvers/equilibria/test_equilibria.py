@@ -106,3 +106,20 @@ questions: [equilibria]
     assert solution.error is None, solution.error
     got = {sp.sympify(e.at["theta"]): e.stability.value for e in solution.answers.equilibria}
     assert got == {sp.Integer(0): "stable", sp.pi: "unstable"}
+
+
+def test_a_circle_of_equilibria_is_refused_as_a_continuum() -> None:
+    # A particle at (x, y) on a spring from O of natural length L: V = ½ k (√(x² + y²) − L)²,
+    # ∂V/∂x = k (r − L) x/r and ∂V/∂y = k (r − L) y/r vanish all round the circle r = L:
+    # no isolated equilibrium to list (sympy's solve leaves y free there).
+    scene = """\
+parameters: {m: mass, k: stiffness, L: natural length}
+coordinates: [x, y]
+points: {O: [0, 0], P: [x, y]}
+bodies: {bead: {shape: particle, mass: m, at: P}}
+springs: {s: {between: [O, P], stiffness: k, natural_length: L}}
+questions: [equilibria]
+"""
+    result = solve(scene).solutions[0]
+    assert not result.solved
+    assert "continuum" in result.error
