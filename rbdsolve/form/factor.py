@@ -19,6 +19,7 @@ import sympy as sp
 
 from rbdsolve.form.expansion import expanded
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.stand_ins import stand_ins
 
 MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs more than it reads
 
@@ -50,7 +51,7 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
 
 def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
     """``factored_sum`` with the given atoms taken as symbols."""
-    table = {f: sp.Dummy() for f in atoms}
+    table = stand_ins(atoms)
     back = {v: k for k, v in table.items()}
     plain = expr.xreplace(table)
     if plain.is_Add:

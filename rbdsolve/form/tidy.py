@@ -14,6 +14,7 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from rbdsolve.form.expansion import expanded
+from rbdsolve.form.stand_ins import stand_ins
 
 MAX_OPS = 400  # larger coefficients are expanded but not rewritten
 
@@ -128,7 +129,7 @@ def cancelled(expr: sp.Expr) -> sp.Expr:
 def _cancelled(expr: sp.Expr, any_form: bool) -> sp.Expr:
     if expr.is_Rational:
         return expr
-    table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
+    table = stand_ins(expr.atoms(sp.Function))
     back = {v: k for k, v in table.items()}
     plain = expr.xreplace(table)
     rational = _rational(plain)
@@ -187,7 +188,7 @@ def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: b
 def _cancel(expr: sp.Expr) -> sp.Expr:
     """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
     rational function of them, as impact and statics answers are."""
-    table = {f: sp.Dummy() for f in expr.atoms(sp.Function)}
+    table = stand_ins(expr.atoms(sp.Function))
     back = {v: k for k, v in table.items()}
     return sp.cancel(sp.together(expr.xreplace(table))).xreplace(back)
 

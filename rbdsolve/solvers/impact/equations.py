@@ -31,6 +31,7 @@ from sympy.polys.matrices import DomainMatrix
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.form.stand_ins import stand_ins
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.energy import body_kinetic_energy, tidy_quadratic
@@ -365,7 +366,7 @@ def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
     """
     atoms = {x for x in (A.atoms(sp.Function) | b.atoms(sp.Function))}
     atoms |= {p for p in (A.atoms(sp.Pow) | b.atoms(sp.Pow)) if not p.exp.is_Integer}
-    table = {a: sp.Dummy() for a in atoms}
+    table = stand_ins(atoms)
     back = {v: k for k, v in table.items()}
     square = DomainMatrix.from_Matrix(A.xreplace(table)).to_field()
     # singular also when det A vanishes only through √3·√3 = 3 or sin² + cos² = 1

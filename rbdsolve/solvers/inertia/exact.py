@@ -26,6 +26,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import common_scale, scaled_matrix
 from rbdsolve.form.display import Relation
+from rbdsolve.form.stand_ins import stand_ins
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.inertia import parallel_axis
@@ -277,7 +278,7 @@ def _polynomial_direction(v: sp.Matrix) -> sp.Matrix:
     factor). Directions free of functions are left as they are."""
     if not v.atoms(sp.Function):
         return v
-    table = {f: sp.Dummy() for f in v.atoms(sp.Function)}
+    table = stand_ins(v.atoms(sp.Function))
     back = {d: f for f, d in table.items()}
     parts = [sp.fraction(sp.cancel(sp.together(x.xreplace(table)))) for x in v]
     denominator = sp.lcm([den for _, den in parts])
