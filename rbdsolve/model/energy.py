@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.model.build import Model, RigidBody
+from rbdsolve.model.derivative import derivative
 from rbdsolve.model.state import State, t
 from rbdsolve.form.tidy import collect_in, tidy, tidy_matrix
 
@@ -139,7 +140,7 @@ def _jacobian(r: sp.Matrix, q: tuple[sp.Expr, ...]) -> sp.Matrix:
         parts: dict[int, list[sp.Expr]] = {}
         for term in sp.Add.make_args(r_i):
             for qj in term.free_symbols & index.keys():
-                parts.setdefault(index[qj], []).append(sp.diff(term, qj))
+                parts.setdefault(index[qj], []).append(derivative(term, qj))
         for j, derivatives in parts.items():
             J[i, j] = sp.Add(*derivatives)
     return J
@@ -151,7 +152,7 @@ def _rotation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
     if body.given_angular_velocity is None and not body.turns_3d and angle is not None \
             and not angle.has(*state.qd):
         J = sp.zeros(3, len(state.q))
-        J[2, :] = sp.Matrix([[sp.diff(angle, q) for q in state.q]])
+        J[2, :] = sp.Matrix([[derivative(angle, q) for q in state.q]])
         return J, sp.Matrix([0, 0, sp.diff(angle, t)])
     return _split(body.angular_velocity(state), state)
 
@@ -206,5 +207,5 @@ def stiffness_matrix(V: sp.Expr, q: tuple[sp.Expr, ...], at: dict[sp.Expr, sp.Ex
 @functools.lru_cache(maxsize=64)
 def hessian(V: sp.Expr, q: tuple[sp.Expr, ...]) -> sp.ImmutableMatrix:
     """∂²V/∂q_i∂q_j (cached: every equilibrium of a model uses the same one)."""
-    grad = [sp.diff(V, qi) for qi in q]
-    return sp.ImmutableMatrix(len(q), len(q), lambda i, j: sp.diff(grad[i], q[j]))
+    grad = [derivative(V, qi) for qi in q]
+    return sp.ImmutableMatrix(len(q), len(q), lambda i, j: derivative(grad[i], q[j]))

@@ -18,6 +18,8 @@ import sympy as sp
 from sympy.core.function import UndefinedFunction
 from sympy.printing.precedence import PRECEDENCE
 
+from rbdsolve.model.derivative import derivative
+
 t = sp.Symbol("t", real=True)
 
 
@@ -54,9 +56,10 @@ class State:
 
     def d_dt(self, expr):
         """Total time derivative (works on scalars and matrices)."""
-        out = sp.diff(expr, t)
+        d = derivative if isinstance(expr, sp.Expr) else sp.diff
+        out = d(expr, t)
         for q, qd, qdd in zip(self.q, self.qd, self.qdd):
-            out += sp.diff(expr, q) * qd + sp.diff(expr, qd) * qdd
+            out += d(expr, q) * qd + d(expr, qd) * qdd
         return out
 
     def functions(self) -> tuple[sp.Expr, ...]:

@@ -17,6 +17,7 @@ import sympy as sp
 
 from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
+from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import kinetic_energy, potential_energy
 from rbdsolve.model.frames import frame_lagrangian, frame_motion
 from rbdsolve.problem.schema import Question
@@ -37,7 +38,7 @@ def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr,
     generators = [*model.qdd, *model.qd]
     out = []
     for q, qd in zip(model.q, model.qd):
-        E = model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q)
+        E = model.state.d_dt(derivative(L, qd)) - derivative(L, q)
         out.append(sp.Add(*[c * m for m, c in collect_in(E, generators).items()]))
     return tuple(out)
 

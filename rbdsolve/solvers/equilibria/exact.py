@@ -28,6 +28,7 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import hessian, memoized, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -48,7 +49,7 @@ from rbdsolve.solvers.shared.values import sample
 @memoized
 def gradient(model: Model) -> tuple[sp.Expr, ...]:
     V = potential_energy(model).total
-    return tuple(tidy(sp.diff(V, q)) for q in model.q)
+    return tuple(tidy(derivative(V, q)) for q in model.q)
 
 
 def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:

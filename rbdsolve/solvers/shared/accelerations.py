@@ -20,6 +20,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.expansion import expanded
 from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction
 from rbdsolve.model.build import Model
+from rbdsolve.model.derivative import derivative
 from rbdsolve.problem.schema import Instant
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.shared.values import sample
@@ -43,7 +44,7 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None 
     when given (put in first: numbers are cheap); ``solved`` is None too where the
     general form is too long to write out (``general``: refuse rather than wait)."""
     n = len(model.q)
-    M = sp.Matrix(n, n, lambda i, j: sp.diff(equations[i], model.qdd[j]))
+    M = sp.Matrix(n, n, lambda i, j: derivative(equations[i], model.qdd[j]))
     h = tuple(expanded(E.xreplace({a: 0 for a in model.qdd})) for E in equations)
     if at is not None:
         M, h = M.xreplace(at).applyfunc(sp.simplify), tuple(sp.simplify(x.xreplace(at)) for x in h)
