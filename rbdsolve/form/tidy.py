@@ -243,15 +243,23 @@ def _squared_angles(expr: sp.Expr) -> list:
 
 
 def _pythagoras_in(expr: sp.Expr, x: sp.Expr) -> sp.Expr:
-    """sin²x → 1 − cos²x or cos²x → 1 − sin²x, whichever is shorter (or neither)."""
-    best = expr
+    """sin²x → 1 − cos²x or cos²x → 1 − sin²x, whichever is shorter (or neither).
+    ``expr`` is expanded: where it has no even power of sin x (of cos x), that rewrite
+    would give ``expr`` again, and is not made."""
+    best, best_ops = expr, None
+    powers = expr.atoms(sp.Pow)
     for square, other in ((sp.sin(x), sp.cos(x)), (sp.cos(x), sp.sin(x))):
+        if not any(p.base == square and p.exp.is_even and p.exp > 0 for p in powers):
+            continue
         candidate = sp.expand(expr.replace(
             lambda e: e.is_Pow and e.base == square and e.exp.is_even and e.exp > 0,
             lambda e: (1 - other**2) ** (e.exp // 2),
         ))
-        if sp.count_ops(candidate) < sp.count_ops(best):
-            best = candidate
+        ops = sp.count_ops(candidate)
+        if best_ops is None:
+            best_ops = sp.count_ops(best)
+        if ops < best_ops:
+            best, best_ops = candidate, ops
     return best
 
 
