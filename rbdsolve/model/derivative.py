@@ -29,6 +29,12 @@ def derivative(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     return _of(expr, x)
 
 
+def matrix_derivative(matrix: sp.MatrixBase, x: sp.Symbol) -> sp.MatrixBase:
+    """∂M/∂x entry by entry: what ``Matrix.diff`` gives, without its route through sympy's
+    array derivatives (and their import)."""
+    return matrix.applyfunc(lambda e: derivative(e, x))
+
+
 def _of(e: sp.Expr, x: sp.Symbol) -> sp.Expr:
     if e == x:
         return sp.Integer(1)

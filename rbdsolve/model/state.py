@@ -18,7 +18,7 @@ import sympy as sp
 from sympy.core.function import UndefinedFunction
 from sympy.printing.precedence import PRECEDENCE
 
-from rbdsolve.model.derivative import derivative
+from rbdsolve.model.derivative import derivative, matrix_derivative
 
 t = sp.Symbol("t", real=True)
 
@@ -56,7 +56,7 @@ class State:
 
     def d_dt(self, expr):
         """Total time derivative (works on scalars and matrices)."""
-        d = derivative if isinstance(expr, sp.Expr) else sp.diff
+        d = matrix_derivative if isinstance(expr, sp.MatrixBase) else derivative
         out = d(expr, t)
         for q, qd, qdd in zip(self.q, self.qd, self.qdd):
             out += d(expr, q) * qd + d(expr, qd) * qdd

@@ -31,3 +31,12 @@ def test_a_lagrangian_and_its_rules() -> None:
     assert derivative(L, y) == sp.Rational(7, 4) * m * r**2 * y + m * r**2 * sp.cos(x) / 4
     assert derivative(L, x) == -m * r**2 * sp.sin(x) * y / 4 - 2 * g * m * r * sp.sin(x)
     assert derivative(L, g) == 2 * m * r * sp.cos(x) and derivative(L, sp.Symbol("k")) == 0
+
+
+def test_a_matrix_is_differentiated_entry_by_entry_as_matrix_diff_does() -> None:
+    from rbdsolve.model.derivative import matrix_derivative
+
+    for M in (sp.Matrix([[x * sp.sin(y), (x - y) ** 2], [m * r, theta]]), sp.ImmutableMatrix([x**2, sp.cos(x * y)])):
+        for v in (x, t):
+            mine, theirs = matrix_derivative(M, v), M.diff(v)
+            assert mine == theirs and type(mine) is type(theirs)
