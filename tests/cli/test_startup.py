@@ -9,14 +9,17 @@ import sys
 import pytest
 
 from conftest import ROOT, SEED
+from rbdsolve.cli.app import COMMANDS
 
 HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
+COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imported when its command runs
 
 
 def loaded_after(*args: str) -> set[str]:
+    """Which of HEAVY and COMMAND_MODULES the command ``args`` imported."""
     code = ("import sys; from rbdsolve.cli import main\n"
             f"try: main({list(args)!r}, standalone_mode=False)\n"
-            f"finally: print(','.join(m for m in {HEAVY!r} if m in sys.modules), file=sys.stderr)")
+            f"finally: print(','.join(m for m in {HEAVY + COMMAND_MODULES!r} if m in sys.modules), file=sys.stderr)")
     done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True,
                           text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=60)
     assert done.returncode == 0, done.stderr
@@ -27,9 +30,15 @@ def loaded_after(*args: str) -> set[str]:
 @pytest.mark.parametrize("args", [["--help"], ["solve", "--help"], ["key", "--help"],
                                   ["check", str(SEED / "p1-two-rods.yaml")]])
 def test_commands_without_algebra_load_no_sympy(args: list[str]) -> None:
-    assert loaded_after(*args) == set()
+    assert loaded_after(*args) - set(COMMAND_MODULES) == set()
+
+
+def test_help_imports_no_command() -> None:
+    assert loaded_after("--help") == set()
 
 
 def test_the_probe_sees_an_import() -> None:
     """The check itself: solving loads sympy, and the probe says so."""
-    assert "sympy" in loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
+    loaded = loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
+    assert "sympy" in loaded
+    assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
