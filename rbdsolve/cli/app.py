@@ -8,7 +8,6 @@ import glob
 import inspect
 import os
 import sys
-import traceback
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable
@@ -392,6 +391,8 @@ def guard(debug: bool, run: Callable[[], ExitCode]) -> ExitCode:
         return ExitCode.TERMINATED
     except Exception as exc:  # noqa: BLE001 - the one place that reports a bug
         if debug:
+            import traceback  # only for a bug's traceback (--debug)
+
             traceback.print_exc()
         click.echo(internal_message(exc), err=True)
         return ExitCode.INTERNAL
