@@ -1,4 +1,5 @@
-"""Start-up: the commands that do no algebra load none (docs/architecture.md, rule 5).
+"""Start-up: the commands that do no algebra load none (docs/architecture.md, rule 5),
+and a command loads no other command's module, nor machinery its problem does not use.
 Each runs in a fresh interpreter, which then reports what it imported."""
 
 from __future__ import annotations
@@ -13,13 +14,17 @@ from rbdsolve.cli.app import COMMANDS
 
 HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
 COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imported when its command runs
+# imported only for a scene or question that uses them: seed problem 1 has none
+FEATURES = ("rbdsolve.model.contacts", "rbdsolve.model.plane_rolling", "rbdsolve.solvers.modes.amplitude",
+            "rbdsolve.solvers.shared.monotone")
+WATCHED = HEAVY + COMMAND_MODULES + FEATURES
 
 
 def loaded_after(*args: str) -> set[str]:
-    """Which of HEAVY and COMMAND_MODULES the command ``args`` imported."""
+    """Which of WATCHED the command ``args`` imported."""
     code = ("import sys; from rbdsolve.cli import main\n"
             f"try: main({list(args)!r}, standalone_mode=False)\n"
-            f"finally: print(','.join(m for m in {HEAVY + COMMAND_MODULES!r} if m in sys.modules), file=sys.stderr)")
+            f"finally: print(','.join(m for m in {WATCHED!r} if m in sys.modules), file=sys.stderr)")
     done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True,
                           text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=60)
     assert done.returncode == 0, done.stderr
@@ -42,3 +47,4 @@ def test_the_probe_sees_an_import() -> None:
     loaded = loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
     assert "sympy" in loaded
     assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
+    assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ
