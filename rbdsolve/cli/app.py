@@ -27,7 +27,7 @@ _GLOB_CHARS = frozenset("*?[")
 
 class Commands(click.Group):
     """The commands by name, each module imported when its command runs: importing
-    every command's module (and what each imports) cost a solve ~20 ms of start-up.
+    every command's module (and what each imports) cost a solve ~8 ms of start-up.
     ``--help`` lists them from ``COMMANDS``' short help, importing none."""
 
     def list_commands(self, ctx: click.Context) -> list[str]:
