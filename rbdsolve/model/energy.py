@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.model.build import Model, RigidBody
-from rbdsolve.model.state import State, partial, t
+from rbdsolve.model.state import State, t
 from rbdsolve.form.tidy import collect_in, tidy, tidy_matrix
 
 
@@ -125,7 +125,7 @@ def _translation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
     than differentiating v_G = dr_G/dt again); from v_G where it is given."""
     r = body.position
     if r is not None and not r.has(*state.qd):
-        return _jacobian(r, state.q), partial(r, t)
+        return _jacobian(r, state.q), sp.diff(r, t)
     return _split(body.velocity(state), state)
 
 

@@ -36,14 +36,6 @@ def user_function(name: str) -> UndefinedFunction:
     return UndefinedFunction(name, __dict__={"precedence": PRECEDENCE["Func"]}, real=True)
 
 
-def partial(expr, x):
-    """∂expr/∂x, a matrix entry by entry: the entries Matrix.diff gives, without its
-    route through sympy's array derivatives (an import of ~3 ms, and twice the time a call)."""
-    if isinstance(expr, sp.MatrixBase):
-        return expr.applyfunc(lambda entry: entry.diff(x))
-    return sp.diff(expr, x)
-
-
 @dataclass(frozen=True)
 class State:
     names: tuple[str, ...]
@@ -62,9 +54,9 @@ class State:
 
     def d_dt(self, expr):
         """Total time derivative (works on scalars and matrices)."""
-        out = partial(expr, t)
+        out = sp.diff(expr, t)
         for q, qd, qdd in zip(self.q, self.qd, self.qdd):
-            out += partial(expr, q) * qd + partial(expr, qd) * qdd
+            out += sp.diff(expr, q) * qd + sp.diff(expr, qd) * qdd
         return out
 
     def functions(self) -> tuple[sp.Expr, ...]:
