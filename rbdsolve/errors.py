@@ -12,7 +12,6 @@ The CLI maps each class to an exit code (documented in the README):
 
 from __future__ import annotations
 
-import difflib
 import re
 from dataclasses import dataclass
 from enum import IntEnum
@@ -128,6 +127,8 @@ class UnsolvedError(RbdError):
 
 def did_you_mean(word: str, choices: object) -> str:
     """A ' (did you mean 'x'?)' suffix naming the closest choice, or ''."""
+    import difflib  # only when a name is wrong: ~1 ms of start-up otherwise
+
     close = difflib.get_close_matches(word, [str(c) for c in choices], n=1, cutoff=0.6)
     if not close and word.lower() in {str(c).lower() for c in choices}:
         close = [c for c in map(str, choices) if c.lower() == word.lower()]

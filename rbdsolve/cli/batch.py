@@ -5,9 +5,7 @@ exit code is the worst of the files."""
 
 from __future__ import annotations
 
-import pickle
 import time
-import traceback
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Iterable
 
@@ -72,6 +70,8 @@ def solve_source(source: Source, settings: Settings, on_stage: Callable[[str], N
         return Outcome(source.name, None, failure, time.perf_counter() - start)
     except Exception as exc:  # noqa: BLE001 - a bug in one file must not lose the others
         if settings.debug:
+            import traceback  # only for a bug's traceback (--debug)
+
             traceback.print_exc()
         return crashed(source.name, exc, time.perf_counter() - start)
     return Outcome(source.name, report, None, time.perf_counter() - start)
@@ -103,6 +103,7 @@ def _one(source: Source, settings: Settings, shown) -> Outcome:
 def _in_parallel(items: list[Source], settings: Settings, jobs: int,
                  advance: Callable[[Outcome], None]) -> list[Outcome]:
     # the process pool (multiprocessing, sockets, logging) only where --jobs asks for it
+    import pickle
     from concurrent.futures import ProcessPoolExecutor, as_completed
     from concurrent.futures.process import BrokenProcessPool
 
@@ -127,6 +128,7 @@ def _in_parallel(items: list[Source], settings: Settings, jobs: int,
 
 
 def _alone(source: Source, settings: Settings) -> Outcome:
+    import pickle
     from concurrent.futures import ProcessPoolExecutor
 
     start = time.perf_counter()
@@ -173,6 +175,7 @@ def _solve_pickled(source: Source, settings: Settings) -> bytes:
     that keeps a coordinate called Float from being printed as a number)."""
     import copyreg
     import io
+    import pickle
 
     import sympy as sp
     from sympy.core.function import UndefinedFunction

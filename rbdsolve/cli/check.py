@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import debug_option, main, run_guarded, sources
+from rbdsolve.cli.app import debug_option, run_guarded, sources
 from rbdsolve.errors import ExitCode, InputError
 
 
-@main.command()
+@click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path())
 @click.option("-q", "--quiet", is_flag=True,
               help="Say nothing of a good file: only the errors, on standard error (the exit code says the rest).")

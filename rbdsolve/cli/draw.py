@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, check_sets, debug_option, main, parse_sets, run_guarded
+from rbdsolve.cli.app import Source, append_help, check_sets, debug_option, parse_sets, run_guarded
 from rbdsolve.cli.solve import DEFAULT_BUDGET, Budget, sets_option
 from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, did_you_mean
 
@@ -24,7 +24,7 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
 """
 
 
-@main.command()
+@click.command()
 @click.argument("path", type=click.Path(dir_okay=False))
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
               help="The picture to write: a .png or .svg file.")

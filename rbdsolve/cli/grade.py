@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, debug_option, main, refuse_overwriting_inputs, run_guarded, \
+from rbdsolve.cli.app import Source, append_help, debug_option, refuse_overwriting_inputs, run_guarded, \
     write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option
 from rbdsolve.errors import ExitCode, InputError, Location
@@ -49,7 +49,7 @@ rest is still graded), 3 internal error.
 FORMATS = ("text", "json")
 
 
-@main.command()
+@click.command()
 @click.argument("file", type=click.Path())
 @click.argument("answers", required=False, type=click.Path())
 @click.option("-a", "--answer", "entries", multiple=True, metavar="'ANSWER = EXPRESSION'",

@@ -8,13 +8,13 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import main, parse_sets, refuse_overwriting_inputs, run_guarded, sources, stderr_is_terminal
+from rbdsolve.cli.app import parse_sets, refuse_overwriting_inputs, run_guarded, sources, stderr_is_terminal
 from rbdsolve.cli.batch import Settings, solve_all, worst
 from rbdsolve.cli.solve import batch_options, print_summary, say_failures
 from rbdsolve.errors import ExitCode
 
 
-@main.command()
+@click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path())
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False, writable=True),
               help="The key: key.pdf, key.tex, key.md or key.html (the suffix picks the format).")

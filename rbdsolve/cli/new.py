@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, run_guarded, write_text
+from rbdsolve.cli.app import append_help, debug_option, run_guarded, write_text
 from rbdsolve.errors import ExitCode, InputError
 
 # Spelled out (as solve's ROUTES are) so that the command line starts without loading the
@@ -43,7 +43,7 @@ Examples:
 """
 
 
-@main.command()
+@click.command()
 @click.argument("kind", required=False, type=click.Choice([*KINDS, *SCENES]), metavar="KIND")
 @click.option("-o", "--output", type=click.Path(dir_okay=False),
               help="Write to this file instead of standard output.")

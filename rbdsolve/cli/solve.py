@@ -7,7 +7,7 @@ import sys
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, main, parse_sets, refuse_overwriting_inputs, \
+from rbdsolve.cli.app import append_help, debug_option, parse_sets, refuse_overwriting_inputs, \
     run_guarded, sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
@@ -83,7 +83,7 @@ def batch_options(command):
     return command
 
 
-@main.command()
+@click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path(allow_dash=True))
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="terminal",
               show_default=True, help="Output format.")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import STDIN_NAME, Source, append_help, debug_option, main, read_stdin, \
+from rbdsolve.cli.app import STDIN_NAME, Source, append_help, debug_option, read_stdin, \
     refuse_overwriting_inputs, run_guarded, stderr_is_terminal, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
@@ -35,7 +35,7 @@ check by a full solve disagrees (no table is written), 2 bad input or usage,
 """
 
 
-@main.command()
+@click.command()
 @click.argument("path", type=click.Path(allow_dash=True))
 @click.option("-n", "--count", type=click.IntRange(min=1, max=MAX_COUNT), default=30, show_default=True,
               help="How many variants (students).")

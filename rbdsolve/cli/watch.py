@@ -6,14 +6,14 @@ from __future__ import annotations
 
 import click
 
-from rbdsolve.cli.app import Source, debug_option, main, parse_sets, run_guarded, sources
+from rbdsolve.cli.app import Source, debug_option, parse_sets, run_guarded, sources
 from rbdsolve.cli.batch import Settings, solve_source
 from rbdsolve.cli.solve import budget_option, route_option, sets_option
 from rbdsolve.cli.watching import INTERVAL, Loop
 from rbdsolve.errors import ExitCode, InputError
 
 
-@main.command()
+@click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path())
 @click.option("--interval", type=click.FloatRange(0.05, 60), default=INTERVAL, show_default=True,
               metavar="SECONDS", help="How often to look at the files for a save.")

@@ -5,7 +5,6 @@ solution and JSON line is still written."""
 from __future__ import annotations
 
 import time
-import traceback
 from dataclasses import dataclass
 from typing import Callable
 
@@ -64,6 +63,8 @@ def _guarded(outcome: Outcome, render: Callable, fmt: str, debug: bool) -> Piece
         return Piece(outcome, render(outcome.report))
     except Exception as exc:  # noqa: BLE001 - one file's rendering bug must not lose the others
         if debug:
+            import traceback  # only for a bug's traceback (--debug)
+
             traceback.print_exc()
         failed = crashed(outcome.source, exc, outcome.seconds + time.perf_counter() - start)
         return Piece(failed, _error_line(failed) if fmt == "json" else "")

@@ -19,9 +19,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.assumptions import check as check_assumptions
-from rbdsolve.model.contacts import place_contacts
 from rbdsolve.model.deferred import Deferred, Later, Points
-from rbdsolve.model.plane_rolling import plane_contacts
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import angular_velocity, sequence_rotation
@@ -197,14 +195,14 @@ def build_model(problem: Problem) -> Model:
     points = Points(tuple(given), lambda name: within.vector(given[name]))  # folded on first read
     names = within = symbols.with_points(points)
     _check_real(given, problem, symbols)
-    problem, contacts = place_contacts(problem, names)  # rolling places its bodies: at and angle
+    problem, contacts = _place_contacts(problem, names)  # rolling places its bodies: at and angle
     masses: dict = {}
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
-    planes = plane_contacts(problem, names, {b.name: b.rotation for b in bodies}, values)
+    planes = _plane_contacts(problem, names, bodies, values)
     if planes:  # C, named in questions (steady_motion's about, rolling_at)
         points = ChainMap({c.name: c.point for c in planes}, points)
     names = names.with_points(points)
@@ -267,6 +265,25 @@ def _holds(parts: list, symbol: sp.Symbol) -> bool:
                 seen.add(arg)
                 stack.append(arg)
     return False
+
+
+def _place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple]:
+    """model/contacts.py's ``place_contacts``, its machinery (edges, strings) imported
+    only for a scene with contacts: ~4 ms of start-up that a scene without them skips."""
+    if not problem.contacts:
+        return problem, ()
+    from rbdsolve.model.contacts import place_contacts
+
+    return place_contacts(problem, names)
+
+
+def _plane_contacts(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], values) -> tuple:
+    """The contacts on a plane (model/plane_rolling.py, imported only for a scene with contacts)."""
+    if not problem.contacts:
+        return ()
+    from rbdsolve.model.plane_rolling import plane_contacts
+
+    return plane_contacts(problem, names, {b.name: b.rotation for b in bodies}, values)
 
 
 def _implied(contacts: tuple, stated: tuple, names: Symbols) -> tuple:

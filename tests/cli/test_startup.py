@@ -1,4 +1,5 @@
-"""Start-up: the commands that do no algebra load none (docs/architecture.md, rule 5).
+"""Start-up: the commands that do no algebra load none (docs/architecture.md, rule 5),
+and a command loads no other command's module, nor machinery its problem does not use.
 Each runs in a fresh interpreter, which then reports what it imported."""
 
 from __future__ import annotations
@@ -9,14 +10,21 @@ import sys
 import pytest
 
 from conftest import ROOT, SEED
+from rbdsolve.cli.app import COMMANDS
 
 HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
+COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imported when its command runs
+# imported only for a scene or question that uses them: seed problem 1 has none
+FEATURES = ("rbdsolve.model.contacts", "rbdsolve.model.plane_rolling", "rbdsolve.solvers.modes.amplitude",
+            "rbdsolve.solvers.shared.monotone")
+WATCHED = HEAVY + COMMAND_MODULES + FEATURES
 
 
 def loaded_after(*args: str) -> set[str]:
+    """Which of WATCHED the command ``args`` imported."""
     code = ("import sys; from rbdsolve.cli import main\n"
             f"try: main({list(args)!r}, standalone_mode=False)\n"
-            f"finally: print(','.join(m for m in {HEAVY!r} if m in sys.modules), file=sys.stderr)")
+            f"finally: print(','.join(m for m in {WATCHED!r} if m in sys.modules), file=sys.stderr)")
     done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True,
                           text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT)}, timeout=60)
     assert done.returncode == 0, done.stderr
@@ -27,9 +35,16 @@ def loaded_after(*args: str) -> set[str]:
 @pytest.mark.parametrize("args", [["--help"], ["solve", "--help"], ["key", "--help"],
                                   ["check", str(SEED / "p1-two-rods.yaml")]])
 def test_commands_without_algebra_load_no_sympy(args: list[str]) -> None:
-    assert loaded_after(*args) == set()
+    assert loaded_after(*args) - set(COMMAND_MODULES) == set()
+
+
+def test_help_imports_no_command() -> None:
+    assert loaded_after("--help") == set()
 
 
 def test_the_probe_sees_an_import() -> None:
     """The check itself: solving loads sympy, and the probe says so."""
-    assert "sympy" in loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
+    loaded = loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
+    assert "sympy" in loaded
+    assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
+    assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ

@@ -86,3 +86,14 @@ class EachModesAnswers:
 
     modes: tuple  # a ModesAnswers (or NumericModesAnswers) per equilibrium answered
     skipped: tuple[Skipped, ...] = ()  # the others (a singular mass matrix, an undecidable sign)
+
+
+def with_amplitude_check(question, model, solution):
+    """The modes solution with ``amplitude_check`` filled in when the question asks for
+    it (solvers/modes/amplitude.py's ``with_check``; both routes call this); unchanged
+    otherwise, without importing the simulation's module (~2 ms of start-up)."""
+    if not getattr(question.options, "check_amplitudes", ()):
+        return solution
+    from rbdsolve.solvers.modes.amplitude import with_check
+
+    return with_check(question, model, solution)

@@ -38,11 +38,11 @@ from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matri
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
-from rbdsolve.solvers.modes.amplitude import with_check
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relations
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped, \
+    with_amplitude_check
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
@@ -71,7 +71,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         return _at_each(model)
     at, notes = exact_equilibrium(question, model)
     answers, steps = modes_at(at, model)
-    return with_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
+    return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
 
 
 def _at_each(model: Model) -> Solution:

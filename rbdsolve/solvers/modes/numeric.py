@@ -43,10 +43,9 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.modes.amplitude import with_check
 from rbdsolve.form.arrange import configuration
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Motion, NumericModesAnswers, Skipped
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Motion, NumericModesAnswers, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.shared.frames import require_static
@@ -66,8 +65,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         return _at_each(model)
     about, notes = equilibrium_for_modes(question, model)
     answers, steps, warned, estimate = modes_at(about, model)
-    return with_check(question, model, Solution("modes", Route.NUMERIC, answers, steps,
-                                                warnings=tuple(notes) + warned, error_estimate=estimate))
+    return with_amplitude_check(question, model, Solution("modes", Route.NUMERIC, answers, steps,
+                                                          warnings=tuple(notes) + warned, error_estimate=estimate))
 
 
 def _at_each(model: Model) -> Solution:
