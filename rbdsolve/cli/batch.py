@@ -42,6 +42,9 @@ class Failure:
 
 @dataclass(frozen=True)
 class Outcome:
+    """One file's result: its report, or the failure that stopped it (with its exit
+    code), and the seconds it took."""
+
     source: str
     report: ProblemReport | None  # None with a failure
     failure: Failure | None

@@ -83,6 +83,9 @@ class RigidBody:
 
 @dataclass(frozen=True)
 class SpringModel:
+    """A spring as sympy objects: its stiffness and its stretch, |r_a − r_b| − l₀ (or
+    α − α₀ for a torsional spring)."""
+
     name: str
     stiffness: sp.Expr
     stretch: sp.Expr  # |r_a − r_b| − l₀ for a linear spring, α − α₀ for a torsional one
@@ -91,6 +94,10 @@ class SpringModel:
 
 @dataclass(frozen=True, eq=False)  # identity equality: energies are memoized per model
 class Model:
+    """A scene as sympy objects, the input of every solver: the problem and its symbols,
+    the points, bodies and springs, gravity, the parameter values, and what triads,
+    moving frames, assumptions and contacts add."""
+
     problem: Problem
     symbols: Symbols
     angles: frozenset[sp.Symbol] = Deferred()  # the coordinates that are periodic angles; made on first read

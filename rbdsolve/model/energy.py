@@ -35,6 +35,9 @@ class EnergyTerm:
 
 @dataclass(frozen=True)
 class Energy:
+    """An energy term by term (a body's T, gravity on a body, a spring, a frame's
+    inertial potential) and its tidied total."""
+
     terms: tuple[EnergyTerm, ...]
     total: sp.Expr
 

@@ -41,6 +41,9 @@ from rbdsolve.problem.schema import Frame
 
 @dataclass(frozen=True)
 class FrameMotion:
+    """A frame's motion in the scene: the position of its origin, its rotation (frame
+    axes to scene axes) and its angular velocity."""
+
     frame: Frame
     origin: sp.Matrix  # r_O(t), scene axes
     rotation: sp.Matrix  # R(t): F's axes -> scene axes
@@ -60,6 +63,9 @@ class FrameMotion:
 
 @dataclass(frozen=True)
 class FrameLagrangian:
+    """The motion seen from a frame: T' and V' measured in it, L' = T' − V', and F
+    with L − L' = dF/dt."""
+
     frame: str
     kinetic: tuple[EnergyTerm, ...]  # T'-like parts: relative, gyroscopic, spin
     potential: tuple[EnergyTerm, ...]  # V' parts: gravity, springs, inertial potentials

@@ -40,6 +40,9 @@ def user_function(name: str) -> UndefinedFunction:
 
 @dataclass(frozen=True)
 class State:
+    """The coordinates q and their rates q̇, q̈ as plain real symbols, with their names;
+    ``to_time`` writes them as q(t) and its derivatives."""
+
     names: tuple[str, ...]
     q: tuple[sp.Symbol, ...]
     qd: tuple[sp.Symbol, ...]

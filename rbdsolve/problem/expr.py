@@ -54,21 +54,30 @@ CONSTANTS = {"pi"}
 
 @dataclass(frozen=True)
 class Num:
+    """A number of the expression tree, exact."""
+
     value: Fraction
 
 
 @dataclass(frozen=True)
 class Name:
+    """A name of the expression tree: a parameter, coordinate, point or prescribed
+    function."""
+
     id: str
 
 
 @dataclass(frozen=True)
 class Const:
+    """A constant of the expression tree (pi)."""
+
     id: str
 
 
 @dataclass(frozen=True)
 class BinOp:
+    """``left op right`` in the expression tree."""
+
     op: str  # one of + - * / **
     left: Tree
     right: Tree
@@ -76,23 +85,32 @@ class BinOp:
 
 @dataclass(frozen=True)
 class Neg:
+    """−operand in the expression tree."""
+
     operand: Tree
 
 
 @dataclass(frozen=True)
 class Call:
+    """A function applied to its arguments in the expression tree (sin, sqrt, dot, …)."""
+
     func: str
     args: tuple[Tree, ...]
 
 
 @dataclass(frozen=True)
 class Derivative:
+    """A coordinate's time derivative of the given order in the expression tree
+    (``diff(theta)``)."""
+
     name: str
     order: int
 
 
 @dataclass(frozen=True)
 class Vec:
+    """A vector of the expression tree, [x, y] or [x, y, z]."""
+
     items: tuple[Tree, ...]
 
 

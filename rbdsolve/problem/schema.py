@@ -122,6 +122,9 @@ class QuestionKind(Enum):
 
 @dataclass(frozen=True)
 class Parameter:
+    """A parameter of the problem: its name, what it is, whether it is positive, and its
+    unit where one is declared."""
+
     name: str
     description: str
     positive: bool
@@ -142,6 +145,9 @@ class Prescribed:
 
 @dataclass(frozen=True)
 class Coordinate:
+    """A generalized coordinate: an angle, a length, or decided from the energies; an
+    angle may be declared not periodic, and a search range given."""
+
     name: str
     kind: CoordinateKind
     loc: Location
@@ -338,6 +344,9 @@ class Instant:
 
 @dataclass(frozen=True)
 class EomOptions:
+    """What an ``eom`` question asks beyond Lagrange's equations: the equations in moving
+    frames too, and q̈ at a state."""
+
     frames: tuple[str, ...]  # frames to write the Lagrangian and the equations in, too
     instant: Instant | None = None  # where to give q̈ too (numbers with values)
 
@@ -368,6 +377,9 @@ class Support:
 
 @dataclass(frozen=True)
 class ReactionsOptions:
+    """A ``reactions`` question: the supports whose forces are asked, at a state or as
+    functions of the state."""
+
     supports: tuple[Support, ...]
     instant: Instant | None  # None: the forces as functions of the state
     loc: Location
@@ -386,11 +398,17 @@ class EnergyOptions:
 
 @dataclass(frozen=True)
 class EquilibriaOptions:
+    """An ``equilibria`` question: relative equilibria in a moving frame, or in the
+    scene's axes."""
+
     frame: str | None  # relative equilibria in a moving frame; None: the scene's axes
 
 
 @dataclass(frozen=True)
 class ModesOptions:
+    """A ``modes`` question: the equilibrium to linearize about (given, numbered, each,
+    or the stable one), a frame, and amplitudes to check by simulation."""
+
     about: tuple[tuple[str, Expr], ...] | None  # the equilibrium (refined if near one); None: see equilibrium
     frame: str | None = None
     check_amplitudes: tuple[Fraction, ...] = ()  # amplitudes to simulate each mode at (solvers/modes/amplitude.py)
@@ -411,6 +429,9 @@ class StateValue:
 
 @dataclass(frozen=True)
 class KinematicsOptions:
+    """A ``kinematics`` question: the points whose position, velocity and acceleration
+    are asked, the state, and distances between points."""
+
     points: tuple[str, ...]  # the points whose position, velocity and acceleration are asked
     at: tuple[StateValue, ...]  # the state; what it leaves out stays symbolic
     distances: tuple[tuple[str, str], ...] = ()  # pairs of points: |r_B − r_A| and its rate
@@ -418,6 +439,9 @@ class KinematicsOptions:
 
 @dataclass(frozen=True)
 class InertiaOptions:
+    """An ``inertia`` question: the body, the point and axes (or one axis) the inertia
+    tensor is asked about, at a configuration."""
+
     body: str  # the body asked about
     about: Expr | None  # a point (vector); None: the centre of mass only
     axes: tuple[Expr, Expr, Expr] | None  # unit vectors of a rotated frame; None: scene axes
@@ -453,6 +477,9 @@ class Collision:
 
 @dataclass(frozen=True)
 class ImpactOptions:
+    """An ``impact`` question: the configuration and the rates just before, the impulses
+    and collisions, the points asked about after, and a centre of percussion to find."""
+
     at: tuple[tuple[str, Expr], ...]  # the configuration at the instant (some coordinates)
     before: tuple[tuple[str, Expr], ...]  # generalized velocities just before (default 0)
     impulses: tuple[tuple[str, Expr], ...]  # known impulses: point -> vector
@@ -473,6 +500,9 @@ class Reaction:
 
 @dataclass(frozen=True)
 class SteadyMotionOptions:
+    """A ``steady_motion`` question: the body, the triad the motion is steady in, the
+    point for angular momentum, rolling contacts, reactions and what to solve for."""
+
     body: str
     triad: str  # the turning triad the motion is steady in
     about: Expr  # the point to take angular momentum about
@@ -495,12 +525,17 @@ class PrecessionOptions:
 
 @dataclass(frozen=True)
 class SteadySpinOptions:
+    """A ``steady_spin`` question: the free body, and its torque-free precession where
+    asked."""
+
     body: str  # the free body asked about
     precession: PrecessionOptions | None = None  # torque-free precession, asked with 'precession'
 
 
 @dataclass(frozen=True)
 class Question:
+    """One question of the problem: its kind, its options, and where it is in the file."""
+
     kind: QuestionKind
     options: (EomOptions | EquilibriaOptions | ModesOptions | InertiaOptions | ImpactOptions
               | SteadySpinOptions | SteadyMotionOptions | KinematicsOptions | ReactionsOptions | EnergyOptions
@@ -547,6 +582,10 @@ class Assumption:
 
 @dataclass(frozen=True)
 class Problem:
+    """A problem file, validated and located: parameters, coordinates, points, bodies,
+    springs, gravity, values, the questions, and what frames, triads, contacts and
+    assumptions add. Free of sympy."""
+
     file: str
     title: str
     source: str

@@ -29,6 +29,9 @@ _UTF16_32_BOMS = (b"\xff\xfe", b"\xfe\xff", b"\x00\x00\xfe\xff")
 
 @dataclass(frozen=True)
 class Scalar:
+    """A YAML scalar with its location; ``plain`` when unquoted on one line (columns in
+    it map to the file), ``null`` for an empty value."""
+
     text: str
     loc: Location
     plain: bool  # unquoted, single line: columns inside the text map to the file
@@ -39,6 +42,8 @@ class Scalar:
 
 @dataclass(frozen=True)
 class Seq:
+    """A YAML list with its location."""
+
     items: tuple[Node, ...]
     loc: Location
 
@@ -47,6 +52,8 @@ class Seq:
 
 @dataclass(frozen=True)
 class Map:
+    """A YAML mapping with its location, its keys kept in the file's order."""
+
     entries: tuple[tuple[Scalar, Node], ...]
     loc: Location
 

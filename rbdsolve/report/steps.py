@@ -128,6 +128,9 @@ class ModelSummary:
 
 @dataclass(frozen=True)
 class ProblemReport:
+    """A solved problem: the file and its title, source and statement, the model section,
+    a Solution per question, and the parameter values, symbols and units used."""
+
     file: str
     title: str
     source: str

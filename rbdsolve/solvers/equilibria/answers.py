@@ -21,6 +21,8 @@ class Stability(Enum):
 
 @dataclass(frozen=True)
 class StabilityCase:
+    """A stability that holds when a condition on the parameters does."""
+
     when: sp.Basic  # a condition on the parameters (a sympy relational)
     stability: Stability
 
@@ -29,6 +31,10 @@ class StabilityCase:
 
 @dataclass(frozen=True)
 class Equilibrium:
+    """One equilibrium, exact: where it is, its stability and why (the Hessian), the
+    conditions on the parameters for it to exist and for each stability, and the
+    configurations it equals."""
+
     at: Mapping[str, sp.Expr]  # coordinate name -> value
     stability: Stability
     hessian: sp.ImmutableMatrix
@@ -52,6 +58,9 @@ class SingularPoint:
 
 @dataclass(frozen=True)
 class EquilibriaAnswers:
+    """Every equilibrium found exactly, the configurations where the coordinates are
+    singular, and the critical parameter values where a stability changes."""
+
     equilibria: tuple[Equilibrium, ...]
     singular_points: tuple[SingularPoint, ...] = ()
     critical: tuple[CriticalValue, ...] = ()  # where an existence or a stability changes
@@ -59,6 +68,10 @@ class EquilibriaAnswers:
 
 @dataclass(frozen=True)
 class NumericEquilibrium:
+    """One equilibrium with numbers: where it is, its stability from the Hessian's
+    curvatures, its free directions, the same configuration written otherwise, an
+    exact form where recognized, and its error bound."""
+
     at: Mapping[str, float]
     stability: Stability
     curvatures: tuple[float, ...]  # eigenvalues of the Hessian of V there, ascending
@@ -70,6 +83,9 @@ class NumericEquilibrium:
 
 @dataclass(frozen=True)
 class NumericEquilibriaAnswers:
+    """Every equilibrium found numerically, the starts searched from, and the singular
+    configurations."""
+
     equilibria: tuple[NumericEquilibrium, ...]
     starts: int  # Newton starts
     singular_points: tuple[SingularPoint, ...] = ()

@@ -313,6 +313,9 @@ class Listed:
 
 @dataclass(frozen=True)
 class Listing:
+    """The equilibria of a model, each classified, with the singular configurations among
+    them and the warnings of the search."""
+
     equilibria: tuple[Listed, ...]
     singular_points: tuple[tuple[dict, Singularity], ...]  # not equilibria, or undecided
     warnings: tuple[str, ...]

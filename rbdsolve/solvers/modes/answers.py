@@ -28,12 +28,19 @@ class Form(Enum):
 
 @dataclass(frozen=True)
 class MotionCase:
+    """The kind of small motion (oscillation, growth) that holds when a condition on the
+    parameters does."""
+
     when: sp.Basic  # a condition on the parameters
     kind: Motion
 
 
 @dataclass(frozen=True)
 class ModesAnswers:
+    """Small motions about an equilibrium, exact: M and K, det(K − λM), the eigenvalues
+    and what each gives (a frequency, a growth rate), the mode shapes, and the
+    conditions and critical values where the motion changes kind."""
+
     about: Mapping[str, sp.Expr]
     M: sp.ImmutableMatrix
     K: sp.ImmutableMatrix
@@ -53,6 +60,10 @@ class ModesAnswers:
 
 @dataclass(frozen=True)
 class NumericModesAnswers:
+    """Small motions about an equilibrium with numbers: M and K, the eigenvalues,
+    frequencies and shapes with their error bounds, and the conditioning they come
+    from."""
+
     about: Mapping[str, float]
     M: tuple[tuple[float, ...], ...]
     K: tuple[tuple[float, ...], ...]

@@ -28,6 +28,8 @@ from rbdsolve.solvers.shared.values import sample
 
 @dataclass(frozen=True)
 class Accelerations:
+    """M(q) = ∂E/∂q̈ and h = E − M q̈ of Lagrange's equations, and q̈ solved from them."""
+
     M: sp.Matrix  # ∂E/∂q̈
     h: tuple[sp.Expr, ...]  # E − M q̈
     solved: tuple[sp.Expr, ...] | None  # q̈_i(q, q̇, t); None where det M = 0 identically, or too long

@@ -15,6 +15,8 @@ from rbdsolve.form.tidy import tidy
 
 @dataclass(frozen=True)
 class Undecided:
+    """A sign the decision could not make: the expression whose sign is unknown."""
+
     expr: sp.Expr  # the quantity whose sign could not be decided
 
 
