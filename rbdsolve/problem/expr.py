@@ -92,7 +92,7 @@ class Neg:
 
 @dataclass(frozen=True)
 class Call:
-    """A function applied to its arguments in the expression tree (sin, sqrt, dot, …)."""
+    """A function applied to its arguments in the expression tree (sin, sqrt, cross, …)."""
 
     func: str
     args: tuple[Tree, ...]
@@ -100,8 +100,8 @@ class Call:
 
 @dataclass(frozen=True)
 class Derivative:
-    """A coordinate's time derivative of the given order in the expression tree
-    (``diff(theta)``)."""
+    """A coordinate's time derivative of the given order in the expression tree:
+    ``dot(theta)`` (order 1), ``ddot(theta)`` (order 2)."""
 
     name: str
     order: int
