@@ -30,8 +30,8 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     prints no longer; sin θ, cos θ, q̇ … are taken as symbols, and π too where that
     reads shorter ((7π² − 128π + 1024)/(3 (π − 16)²)). ``bracketed``: a sum would be
     printed in brackets where it stands (a coefficient before q̈), so they count."""
-    if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.has(sp.Add):
-        return expr
+    if not isinstance(expr, sp.Expr) or expr.is_Atom or not _sum_outside_functions(expr):
+        return expr  # a product of powers of symbols and functions: nothing to factor
     if sp.count_ops(expr) > MAX_OPS or expr.has(sp.Float):
         return expr
     atoms = expr.atoms(sp.Function, sp.Derivative)
@@ -47,6 +47,17 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     negative = all(x.could_extract_minus_sign() for x in expr.args) if expr.is_Add else False
     allowance = 2 if expr.is_Add and ((bracketed and not best.is_Add) or negative) else 0
     return best if len(to_unicode(best)) <= len(to_unicode(expr)) + allowance else expr
+
+
+def _sum_outside_functions(expr: sp.Expr) -> bool:
+    """Is there a sum in ``expr`` other than inside a function's arguments (sin(φ − θ)) or
+    a derivative? Functions and derivatives are taken as symbols below, so without one
+    every candidate form is ``expr`` itself."""
+    if expr.is_Add:
+        return True
+    if isinstance(expr, (sp.Function, sp.Derivative)) or expr.is_Atom:
+        return False
+    return any(_sum_outside_functions(a) for a in expr.args)
 
 
 def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
