@@ -6,9 +6,9 @@ already (they were made by expanding), and ``expand`` then walks them once per h
 find nothing to do: about 0.2 ms a coefficient, 45 times in seed problem 1. A single
 walk that recognises the plainly expanded form costs a tenth of that.
 
-Plainly expanded: a sum of products of numbers (rationals, π), symbols, their powers
-with rational exponents, and sin, cos or an undefined function (a coordinate θ(t)) of
-plainly expanded arguments. Each default hint leaves such an expression as it is:
+Plainly expanded: a sum of products of numbers (rationals, π, at most one radical of an
+integer), symbols, their powers with rational exponents, and sin, cos or an undefined
+function (a coordinate θ(t)) of plainly expanded arguments. Each default hint leaves such an expression as it is:
 there is no product with a sum for ``mul`` to distribute, no power of a sum for
 ``multinomial``, no power of a sum or product for ``power_exp`` and ``power_base``, no
 log, and ``deep`` finds the arguments plainly expanded in turn. Anything else (a Float,
@@ -34,8 +34,12 @@ def plainly_expanded(expr: sp.Basic) -> bool:
 
 
 def _plain_term(term: sp.Basic) -> bool:
+    """At most one radical of an integer in a product: Mul's flattening is not idempotent
+    on several (2**(1/3)·√6·2·18**(1/3) stays 2·6**(1/3)·6**(5/6), which ``mul`` rebuilds
+    as 12·6**(1/6))."""
     if term.is_Mul:
-        return all(_plain_factor(factor) for factor in term.args)
+        radicals = sum(1 for factor in term.args if factor.is_Pow and factor.base.is_Integer)
+        return radicals <= 1 and all(_plain_factor(factor) for factor in term.args)
     return _plain_factor(term)
 
 

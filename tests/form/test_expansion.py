@@ -33,3 +33,13 @@ def test_what_expand_would_change_is_not_plain() -> None:
     for e in (a * (x + y), (x + 1) ** 2, sp.exp(x + y), sp.cos(a * (x + y)), sp.log(a * b), 1 / (x + 1) ** 2):
         assert not plainly_expanded(e) and sp.expand(e) != e, e
     assert plainly_expanded(sp.Rational(7, 8) * a * b**2 * sp.cos(x - y) * theta + sp.sqrt(3) * sp.pi)
+
+
+def test_a_product_of_radicals_is_left_to_expand() -> None:
+    # Mul's flattening is not idempotent on radicals of one base: 2**(1/3)·√6·2·18**(1/3)
+    # evaluates to 2·6**(1/3)·6**(5/6), which expand (rebuilding n/d) turns into 12·6**(1/6).
+    cube_2, root_6, two_cube_18 = sp.cbrt(2), sp.sqrt(6), 2 * sp.cbrt(18)
+    for e in (sp.Mul(cube_2, root_6, two_cube_18), sp.Mul(cube_2, root_6, two_cube_18, x) + a,
+              sp.Mul(root_6, two_cube_18, sp.sqrt(2) / 2, sp.sin(x))):
+        assert sp.srepr(sp.expand(e)) != sp.srepr(e), e  # the case is real in this sympy
+        assert expanded(e) == sp.expand(e), e
