@@ -211,10 +211,28 @@ class UnicodePrinter(StrPrinter):
             if exp % 2 == 0 and base.is_Add and base.could_extract_minus_sign():
                 base = -base  # (R − r)², not (r − R)²
             text = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Pow"])
-            if isinstance(base, sp.Derivative) and "/" in text:  # (dth₁/dt)², not dth₁/dt²
-                text = f"({text})"
             return text + str(exp).translate(_SUP)
         return super()._print_Pow(expr, rational)
+
+    def parenthesize(self, item, level, strict=False):
+        """A rate in Leibniz's form is bracketed as a power's base: (dth₁/dt)², not dth₁/dt²
+        (a derivative with respect to t²); 1/(dth₁/dt), not 1/dth₁/dt."""
+        text = super().parenthesize(item, level, strict)
+        if isinstance(item, sp.Derivative) and "/" in text and not text.startswith("(") \
+                and level >= sp.printing.precedence.PRECEDENCE["Pow"]:
+            return f"({text})"
+        return text
+
+    def _over_rate(self, expr: sp.Mul, text: str) -> str:
+        """g/(dth₁/dt), not g/dth₁/dt (which reads as (g/dth₁)/dt): StrPrinter writes a
+        product's one factor below the bar after a bare "/"."""
+        below = [f for f in expr.args if (f.is_Pow and f.exp.is_negative) or (f.is_Rational and f.q != 1)]
+        if len(below) != 1 or not (below[0].is_Pow and below[0].exp == -1 and isinstance(below[0].base, sp.Derivative)):
+            return text
+        rate = self._print(below[0].base)
+        if "/" in rate and text.endswith("/" + rate):
+            return f"{text[:-len(rate)]}({rate})"
+        return text
 
     def _print_Mul(self, expr):
         turned = signs_placed(expr)
@@ -222,7 +240,7 @@ class UnicodePrinter(StrPrinter):
             return self._print(turned)
         lead = _rational_lead(expr)
         if lead is None:
-            return super()._print_Mul(expr)
+            return self._over_rate(expr, super()._print_Mul(expr))
         sign, coeff, rest = lead
         inner = f"({self._print(rest)})" if rest.is_Add else self._print(rest)
         return f"{sign}{coeff.p}/{coeff.q} {inner}"
