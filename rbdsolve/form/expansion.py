@@ -9,9 +9,9 @@ walk that recognises the plainly expanded form costs a tenth of that.
 Plainly expanded: a sum of products of numbers (rationals, π, at most one radical of an
 integer), symbols, their powers with rational exponents, and sin, cos or an undefined
 function (a coordinate θ(t)) of plainly expanded arguments. Each default hint leaves
-such an expression as it is: there is no product with a sum for ``mul`` to distribute, no power of a sum for
-``multinomial``, no power of a sum or product for ``power_exp`` and ``power_base``, no
-log, and ``deep`` finds the arguments plainly expanded in turn. Anything else (a Float,
+such an expression as it is: there is no product with a sum for ``mul`` to distribute,
+no power of a sum for ``multinomial``, no power of a sum or product for ``power_exp``
+and ``power_base``, no log, and ``deep`` finds the arguments plainly expanded in turn. Anything else (a Float,
 exp, a power of a sum, a derivative) goes to ``expand`` itself.
 """
 
