@@ -271,8 +271,13 @@ def _sampler(model: Model) -> Sampler:
     names = {s: to_unicode(s) for s in parameters}
     names |= {q: to_unicode(sp.Symbol(n)) for n, q in model.symbols.coordinates.items()}
 
+    # The assumptions' own symbols are drawn after the answer's, in name order: drawn in
+    # a set's iteration order (the hash seed's), they took other values, so another
+    # point was admissible first and a wrong answer was shown "different at" another point.
+    assumed = sorted({s for a in model.assumptions for s in a.difference.free_symbols}, key=sp.default_sort_key)
+
     def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
-        wanted = list(dict.fromkeys([*symbols, *(s for a in model.assumptions for s in a.difference.free_symbols)]))
+        wanted = list(dict.fromkeys([*symbols, *assumed]))
         if not nice:
             return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200)
         for _ in range(50):

@@ -434,7 +434,8 @@ def _same_kinds(table: VariantTable, found_kinds: list, k: int, row: dict, their
 def _same_count(row: dict[tuple, float | None], theirs: dict[tuple, object], file: str, where: str) -> None:
     """As many elements of each MATCHED list in the row as the full solve finds: the
     element-by-element comparison alone would let two rows match one equilibrium."""
-    for q, name in {(k[0], k[1]) for k in row if len(k) > 2 and k[1] in MATCHED}:
+    # in order, not a set's (the hash seed's): where two lists differ, the same one is named
+    for q, name in sorted({(k[0], k[1]) for k in row if len(k) > 2 and k[1] in MATCHED}):
         ours = {k[2] for k, x in row.items() if k[:2] == (q, name) and x is not None}
         others = _distinct(q, name, theirs)
         if len(ours) != others:

@@ -15,7 +15,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: ImpactOptions = question.options
     now = instant(model, opts)
     hits = blows(model, opts)
-    for point in {b.point for b in hits} | set(opts.points):
+    # in order, not a set's (the hash seed's): the first point not known names what it misses
+    for point in dict.fromkeys([*(b.point for b in hits), *opts.points]):
         require_known(now.velocity(point), model, opts)
     work = ImpactEquations(model, opts, now, hits)
     answers, warnings = work.results()

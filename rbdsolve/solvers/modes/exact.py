@@ -214,7 +214,7 @@ def _rational_roots(poly: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[tuple]:
             out += [(c.value, factor, c) for c in certified for _ in range(multiplicity)]
             continue
         roots = None
-        if factor.degree() <= 3:
+        if factor.degree() <= 2 or (factor.degree() == 3 and not _near_double_root(factor)):
             found = sp.roots(factor, trig=True)
             if sum(found.values()) == factor.degree() and all(
                     not r.has(sp.I) and sp.count_ops(r) <= MAX_ROOT_OPS for r in found) \
@@ -224,6 +224,23 @@ def _rational_roots(poly: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[tuple]:
             roots = factor.all_roots()
         out += [(r, factor, None) for r in roots for _ in range(multiplicity)]
     return out
+
+
+NEAR_DOUBLE = sp.Rational(1, 10**6)  # sympy's trig formula goes wrong from 1 − x ≈ 1e-8 (failure-edges.md)
+
+
+def _near_double_root(cubic: sp.Poly) -> bool:
+    """Two of a cubic's three real roots nearly equal beside its spread: in the trig
+    form t = 2√(−p/3) cos(acos(x)/3 − 2πk/3) of its depressed form t³ + pt + q, x² is
+    within NEAR_DOUBLE of 1 (1 − x² = −(4p³ + 27q²)/(−4p³), the discriminant over −4p³,
+    exact in rationals). For such a cubic sympy's roots(trig=True) returned the trig form
+    in some runs and, in others, one with cos(acos(x)/3) already taken as 1 (wrong by
+    2.5e-10 in 2e9, which ``_agree`` refuses): which one depended on what was solved
+    before it in the same run, so the printed form did too. Such a cubic keeps CRootOf."""
+    a, b, c, d = (sp.Rational(v) for v in cubic.all_coeffs())
+    p = (3 * a * c - b**2) / (3 * a**2)
+    q = (2 * b**3 - 9 * a * b * c + 27 * a**2 * d) / (27 * a**3)
+    return p < 0 and 0 <= -(4 * p**3 + 27 * q**2) / (-4 * p**3) < NEAR_DOUBLE
 
 
 CHECK_DIGITS = 50

@@ -60,7 +60,9 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     if None in points:
         return None
     inside: dict[sp.Expr, list[float]] = {}
-    for r in found:
+    # in sort order, not the set's (the hash seed's): of two forms of one root the first
+    # is kept, and two that simplify cannot tell equal keep this order among equal values
+    for r in sorted(found, key=sp.default_sort_key):
         turns = {_turns_into(complex(sp.N(r.xreplace(point), 20)), low, high, p in angles) for point in points}
         if turns == {None}:
             continue  # never real inside the range
