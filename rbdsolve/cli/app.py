@@ -43,11 +43,10 @@ class Commands(click.Group):
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
         """click's own listing (the short help cut to the width left beside the longest
         name), from the registry rather than from each command."""
-        from click.utils import make_default_short_help
-
         limit = formatter.width - 6 - max(map(len, COMMANDS))
         with formatter.section("Commands"):
-            formatter.write_dl([(name, make_default_short_help(COMMANDS[name], limit)) for name in sorted(COMMANDS)])
+            formatter.write_dl([(name, click.Command(name, help=COMMANDS[name]).get_short_help_str(limit))
+                                for name in sorted(COMMANDS)])
 
 
 # Each command: its module rbdsolve/cli/<name>.py defines it as <name>; the first

@@ -10,7 +10,6 @@ import pkgutil
 import click
 import pytest
 from click.testing import CliRunner
-from click.utils import make_default_short_help
 
 import rbdsolve.cli
 from rbdsolve.cli import main
@@ -35,7 +34,7 @@ def test_the_registry_names_every_command() -> None:
 def test_the_short_help_is_the_docstrings_first_sentence(name: str) -> None:
     command = main.get_command(click.Context(main), name)
     assert command.name == name
-    assert COMMANDS[name] == make_default_short_help(command.help, 10**6)
+    assert COMMANDS[name] == command.get_short_help_str(10**6)
 
 
 @pytest.mark.parametrize("width", [40, 80, 120])
