@@ -5,6 +5,7 @@ an exception into a message and an exit code."""
 from __future__ import annotations
 
 import glob
+import importlib
 import inspect
 import os
 import sys
@@ -36,8 +37,6 @@ class Commands(click.Group):
     def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
         if name not in COMMANDS:
             return None
-        import importlib
-
         return getattr(importlib.import_module(f"rbdsolve.cli.{name}"), name)
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:

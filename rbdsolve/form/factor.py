@@ -62,8 +62,7 @@ def _sum_outside_functions(expr: sp.Expr) -> bool:
 
 def _factored_over(expr: sp.Expr, atoms: set) -> sp.Expr:
     """``factored_sum`` with the given atoms taken as symbols."""
-    table = stand_ins(atoms)
-    back = {v: k for k, v in table.items()}
+    table, back = stand_ins(atoms)
     plain = expr.xreplace(table)
     if plain.is_Add:
         return _restored(factored_sum(plain, alone=True), back)

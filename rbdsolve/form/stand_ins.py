@@ -14,6 +14,8 @@ from typing import Iterable
 import sympy as sp
 
 
-def stand_ins(atoms: Iterable[sp.Expr]) -> dict[sp.Expr, sp.Dummy]:
-    """{atom: a new Dummy}, made in ``default_sort_key`` order of the atoms."""
-    return {a: sp.Dummy() for a in sorted(atoms, key=sp.default_sort_key)}
+def stand_ins(atoms: Iterable[sp.Expr]) -> tuple[dict[sp.Expr, sp.Dummy], dict[sp.Dummy, sp.Expr]]:
+    """{atom: a new Dummy}, made in ``default_sort_key`` order of the atoms, and the
+    table back {Dummy: atom} that puts them in again."""
+    table = {a: sp.Dummy() for a in sorted(atoms, key=sp.default_sort_key)}
+    return table, {d: a for a, d in table.items()}

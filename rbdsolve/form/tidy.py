@@ -129,8 +129,7 @@ def cancelled(expr: sp.Expr) -> sp.Expr:
 def _cancelled(expr: sp.Expr, any_form: bool) -> sp.Expr:
     if expr.is_Rational:
         return expr
-    table = stand_ins(expr.atoms(sp.Function))
-    back = {v: k for k, v in table.items()}
+    table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
     value = _cancel_over(sp.together(plain), rational, any_form)
@@ -188,8 +187,7 @@ def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: b
 def _cancel(expr: sp.Expr) -> sp.Expr:
     """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
     rational function of them, as impact and statics answers are."""
-    table = stand_ins(expr.atoms(sp.Function))
-    back = {v: k for k, v in table.items()}
+    table, back = stand_ins(expr.atoms(sp.Function))
     return sp.cancel(sp.together(expr.xreplace(table))).xreplace(back)
 
 
@@ -249,18 +247,21 @@ def _pythagoras_in(expr: sp.Expr, x: sp.Expr) -> sp.Expr:
     best, best_ops = expr, None
     powers = expr.atoms(sp.Pow)
     for square, other in ((sp.sin(x), sp.cos(x)), (sp.cos(x), sp.sin(x))):
-        if not any(p.base == square and p.exp.is_even and p.exp > 0 for p in powers):
+        if not any(_even_power_of(p, square) for p in powers):
             continue
-        candidate = sp.expand(expr.replace(
-            lambda e: e.is_Pow and e.base == square and e.exp.is_even and e.exp > 0,
-            lambda e: (1 - other**2) ** (e.exp // 2),
-        ))
+        candidate = sp.expand(expr.replace(lambda e: _even_power_of(e, square),
+                                           lambda e: (1 - other**2) ** (e.exp // 2)))
         ops = sp.count_ops(candidate)
         if best_ops is None:
             best_ops = sp.count_ops(best)
         if ops < best_ops:
             best, best_ops = candidate, ops
     return best
+
+
+def _even_power_of(e: sp.Expr, square: sp.Expr) -> bool:
+    """Is ``e`` square², square⁴, …?"""
+    return e.is_Pow and e.base == square and e.exp.is_even and e.exp > 0
 
 
 def tidy_matrix(matrix: sp.Matrix) -> sp.Matrix:

@@ -156,7 +156,7 @@ def _rotation(body: RigidBody, state: State) -> tuple[sp.Matrix, sp.Matrix]:
             and not angle.has(*state.qd):
         J = sp.zeros(3, len(state.q))
         J[2, :] = sp.Matrix([[derivative(angle, q) for q in state.q]])
-        return J, sp.Matrix([0, 0, sp.diff(angle, t)])
+        return J, sp.Matrix([0, 0, derivative(angle, t)])
     return _split(body.angular_velocity(state), state)
 
 

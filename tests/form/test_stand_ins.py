@@ -36,6 +36,6 @@ def test_a_factored_form_is_the_same_whatever_the_hash_seed() -> None:
 
 def test_stand_ins_are_made_in_sort_order() -> None:
     x, y, z = sp.symbols("x y z")
-    table = stand_ins({sp.cos(z), sp.sin(x), y})
+    table, _ = stand_ins({sp.cos(z), sp.sin(x), y})
     assert list(table) == sorted(table, key=sp.default_sort_key)
     assert [d.dummy_index for d in table.values()] == sorted(d.dummy_index for d in table.values())

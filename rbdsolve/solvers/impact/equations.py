@@ -366,8 +366,7 @@ def solve_linear(A: sp.Matrix, b: sp.Matrix) -> list[sp.Expr] | None:
     """
     atoms = {x for x in (A.atoms(sp.Function) | b.atoms(sp.Function))}
     atoms |= {p for p in (A.atoms(sp.Pow) | b.atoms(sp.Pow)) if not p.exp.is_Integer}
-    table = stand_ins(atoms)
-    back = {v: k for k, v in table.items()}
+    table, back = stand_ins(atoms)
     square = DomainMatrix.from_Matrix(A.xreplace(table)).to_field()
     # singular also when det A vanishes only through √3·√3 = 3 or sin² + cos² = 1
     if tidy_fraction(square.domain.to_sympy(square.det()).xreplace(back)) == 0:

@@ -278,8 +278,7 @@ def _polynomial_direction(v: sp.Matrix) -> sp.Matrix:
     factor). Directions free of functions are left as they are."""
     if not v.atoms(sp.Function):
         return v
-    table = stand_ins(v.atoms(sp.Function))
-    back = {d: f for f, d in table.items()}
+    table, back = stand_ins(v.atoms(sp.Function))
     parts = [sp.fraction(sp.cancel(sp.together(x.xreplace(table)))) for x in v]
     denominator = sp.lcm([den for _, den in parts])
     entries = [sp.cancel(num * denominator / den) for num, den in parts]
