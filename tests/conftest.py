@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import time
 from fractions import Fraction
 from pathlib import Path
 
@@ -22,6 +23,14 @@ def needs_tex() -> None:
         if os.environ.get("CI"):
             pytest.fail("CI installs TeX Live (.ci/run), but pdflatex is not on PATH")
         pytest.skip("no TeX engine installed")
+
+
+def spin(seconds: float) -> None:
+    """Spend ``seconds`` of processor time, the clock of rbdsolve's budgets (forever for
+    inf): work a budget must stop, where time.sleep would spend none."""
+    end = time.process_time() + seconds
+    while time.process_time() < end:
+        sum(range(1000))
 
 
 def read_back(text: str, names: dict[str, sp.Symbol] | None = None) -> sp.Expr:

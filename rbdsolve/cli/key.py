@@ -41,6 +41,9 @@ def key(paths, output, title, figures, sets, route, budget, jobs, quiet, debug):
 
 def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, jobs: int,
          settings: Settings) -> ExitCode:
+    from rbdsolve.render.files import require_folder
+
+    require_folder(output, "the key")  # a typo in -o is said first, before a missing engine
     if output.suffix == ".pdf":  # before sympy is even imported: a missing engine costs no solve
         from rbdsolve.render.pdf import require_engine
 

@@ -60,7 +60,7 @@ class Budget(click.ParamType):
 budget_option = click.option(
     "--budget", type=Budget(), default=DEFAULT_BUDGET,
     show_default=True, metavar="SECONDS",
-    help="Time budget for building each file's model and for each route of each question; "
+    help="Budget of processor seconds (the same on a quiet or a busy machine) for building each file's model and for each route of each question; "
          "a question past it is left unanswered (exit code 1), or, with --route auto and "
          "every value given, answered by the numeric route, which gets the same budget "
          "again (so a question may take twice the budget; a model whose T and V run out "

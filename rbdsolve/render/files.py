@@ -19,6 +19,13 @@ from typing import Iterator
 from rbdsolve.errors import InputError
 
 
+def require_folder(output: Path, what: str) -> None:
+    """Before any work: the folder ``output`` is to be written in exists (exit code 2
+    otherwise, naming ``what`` is written)."""
+    if not output.parent.is_dir():
+        raise InputError(f"-o {output}: there is no folder {output.parent}/ to write {what} in")
+
+
 def write_file(path: str | Path, data: str | bytes) -> None:
     """``data`` (text as UTF-8) to ``path``, whole or not at all."""
     raw = data.encode("utf-8") if isinstance(data, str) else data

@@ -27,7 +27,7 @@ from rbdsolve.problem.schema import Problem
 from rbdsolve.problem.quantity import Value
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
-from rbdsolve.render.files import write_file
+from rbdsolve.render.files import require_folder, write_file
 
 KINDS = (".pdf", ".tex", ".md", ".html")
 
@@ -47,8 +47,7 @@ def check_output(output: Path) -> None:
     """Before any solving: a key's format and a folder to write it in."""
     if output.suffix not in KINDS:
         raise InputError(f"-o {output}: the key is written as {', '.join(KINDS)}; found '{output.suffix or output.name}'")
-    if not output.parent.is_dir():
-        raise InputError(f"-o {output}: there is no folder {output.parent}/ to write the key in")
+    require_folder(output, "the key")
 
 
 def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:

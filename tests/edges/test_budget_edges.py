@@ -1,10 +1,10 @@
-"""Issue 8, case 6: an exact route that would run long is stopped at its budget, and
-with values the numeric route answers (auto). A 64-link chain of rods with symbolic
-m, l, g: the exact route's model section and its modes each take well over 1 s (issue 23
-made the 32-link chain's exact modes, the case before, finish within 1 s with values);
-with --budget 1 the command must end within the budget(s) plus the start-up of a
-trivial solve (import of sympy, measured in the same test) and a 1.5 s margin. Three
-CLI runs in subprocesses: about 8 s in all.
+"""Issue 8, case 6: an exact route that would run long is stopped at its budget, in a
+whole process. A 64-link chain of rods with symbolic m, l, g: the exact route's model
+section and its modes each take seconds of processor time, twenty times a budget of
+0.1 s, so the budget runs out on any machine, quiet or loaded (the budget counts
+processor time). That auto then answers on the numeric route, with the budget again,
+is tested with a fake route (tests/solvers/shared/test_routes.py): no budget separates
+the two real routes by a wide enough margin on every machine.
 """
 
 from __future__ import annotations
@@ -12,16 +12,14 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
-import time
 
 import pytest
 
 from rbdsolve.solvers.shared.budget import available
 
-pytestmark = pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
+pytestmark = pytest.mark.skipif(not available(), reason="no SIGPROF on this platform")
 
 N = 64
-MARGIN = 1.5  # seconds over the budgets and the start-up
 
 
 def chain(n: int) -> str:
@@ -38,33 +36,16 @@ def chain(n: int) -> str:
             + f"\nquestions:\n  - modes: {{about: {{{at_rest}}}}}\n")
 
 
-def _run(path, *args: str) -> tuple[subprocess.CompletedProcess, float]:
-    start = time.perf_counter()
-    run = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(path), "--format", "json", *args],
-                         capture_output=True, text=True, timeout=60)
-    return run, time.perf_counter() - start
+def _run(path, *args: str) -> subprocess.CompletedProcess:
+    # the 300 s timeout guards against a hang, far from the work
+    return subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(path), "--format", "json", *args],
+                          capture_output=True, text=True, timeout=300)
 
 
-def test_the_budget_is_honoured_and_auto_answers_with_values(tmp_path) -> None:
-    trivial = tmp_path / "pendulum.yaml"
-    trivial.write_text(chain(1))
-    _, startup = _run(trivial, "--route", "exact")
+def test_the_budget_is_honoured_in_a_whole_process(tmp_path) -> None:
     path = tmp_path / "chain.yaml"
     path.write_text(chain(N))
-
-    exact, elapsed = _run(path, "--route", "exact", "--budget", "1")
-    assert exact.returncode == 1
-    assert "ran out of its 1 s budget" in json.loads(exact.stdout)["error"]["message"]
-    assert elapsed <= startup + 1 + MARGIN, (elapsed, startup)
-
-    # auto with values: the model's budget (then the coordinates only), the exact modes'
-    # budget (they need about 2 s), then the numeric route's (about 0.35 s)
-    auto, elapsed = _run(path, "--budget", "1", "--set", "m=1", "--set", "l=1", "--set", "g=9.81")
-    assert elapsed <= startup + 3 * 1 + MARGIN, (elapsed, startup)
-    assert auto.returncode == 0, auto.stderr
-    result = json.loads(auto.stdout)["results"][0]
-    assert result["ok"] and result["route"] == "numeric"
-    assert "ran out of its 1 s budget" in result["warnings"][0]
-    # K = g l m diag(n − i + 1/2) and M are positive definite: every λ an oscillation
-    assert len(result["answers"]["eigenvalues"]) == N
-    assert all(m == "oscillation" for m in result["answers"]["motions"])
+    exact = _run(path, "--route", "exact", "--budget", "0.1")
+    assert exact.returncode == 1, exact.stderr
+    assert "ran out of its 0.1 s budget" in json.loads(exact.stdout)["error"]["message"]
+    assert "Traceback" not in exact.stderr

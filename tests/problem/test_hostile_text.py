@@ -10,7 +10,6 @@ import re
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 import pytest
@@ -92,21 +91,17 @@ def test_unknown_yaml_tags_are_bad_input(tmp_path, tagged, shown) -> None:
 def test_standard_input_is_limited_while_it_is_read() -> None:
     """50 MB on standard input: refused after reading one byte past the limit."""
     command = [sys.executable, "-m", "rbdsolve", "solve", "-"]
-    start = time.perf_counter()
     done = subprocess.run(command, input=b"#" * (50 * 1024 * 1024), capture_output=True, timeout=60,
                           env={**os.environ, "PYTHONPATH": str(ROOT)})
     assert done.returncode == 2 and b"<stdin>:1:1: file is more than 262144 bytes" in done.stderr
-    assert time.perf_counter() - start < 10
 
 
 def test_a_pipe_that_never_ends_is_not_waited_for() -> None:
     read_end, write_end = os.pipe()  # the write end stays open: no end of file ever
     try:
         with open(read_end, "rb", buffering=0) as stream:
-            start = time.perf_counter()
             with pytest.raises(InputError, match="no end of file within 0.3 s"):
                 yamlnodes.read_stream(stream, "<stdin>", seconds=0.3)
-            assert time.perf_counter() - start < 10  # loose for a loaded machine
     finally:
         os.close(write_end)
 
@@ -116,10 +111,8 @@ def test_a_fifo_as_a_problem_file_does_not_block(tmp_path, monkeypatch) -> None:
     monkeypatch.setattr(yamlnodes, "READ_SECONDS", 0.3)
     fifo = tmp_path / "p.yaml"
     os.mkfifo(fifo)
-    start = time.perf_counter()
     with pytest.raises(InputError, match="no end of file"):
         load_file(fifo)  # nobody writes: it used to block in open() forever
-    assert time.perf_counter() - start < 10  # loose for a loaded machine
 
     def writer() -> None:
         with open(fifo, "w") as handle:

@@ -6,7 +6,6 @@ well under a second, because a limit is checked before the work it guards.
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import pytest
@@ -20,10 +19,8 @@ SCOPE = ex.Scope(frozenset({"m", "x"}))
 
 
 def refused(text: str, words: str) -> InputError:
-    start = time.perf_counter()
     with pytest.raises(InputError) as info:
         ex.parse(text, HERE, SCOPE)
-    assert time.perf_counter() - start < 5  # refused at once: the expansion would take far longer (loose for a loaded machine)
     assert words in info.value.message, info.value.message
     assert str(info.value).startswith("p.yaml:3:")
     return info.value
@@ -67,17 +64,13 @@ def test_file_size_is_refused_before_reading(tmp_path: Path, monkeypatch) -> Non
     big = tmp_path / "big.yaml"
     with open(big, "wb") as handle:  # a sparse 100 MB file: its size is known without reading it
         handle.truncate(100 * 1024 * 1024)
-    start = time.perf_counter()
     with pytest.raises(InputError, match=f"file is 104857600 bytes; the limit is {yamlnodes.MAX_FILE_BYTES} bytes"):
         load_file(big)
-    assert time.perf_counter() - start < 5  # refused at once: the expansion would take far longer (loose for a loaded machine)
 
 
 def test_a_stream_of_unknown_size_is_read_no_further_than_the_limit() -> None:
-    start = time.perf_counter()
     with pytest.raises(InputError, match="file is more than 262144 bytes"):
         load_file("/dev/zero")  # endless: reading it all would never end
-    assert time.perf_counter() - start < 5  # refused at once: the expansion would take far longer (loose for a loaded machine)
 
 
 def billion_laughs(levels: int = 9) -> str:
@@ -88,15 +81,11 @@ def billion_laughs(levels: int = 9) -> str:
 
 
 def test_billion_laughs_is_refused_without_expanding() -> None:
-    start = time.perf_counter()
     with pytest.raises(InputError, match=f"more than {yamlnodes.MAX_NODES} nodes"):
         load_text(billion_laughs(), "laughs.yaml")
-    assert time.perf_counter() - start < 5  # refused at once: the expansion would take far longer (loose for a loaded machine)
 
 
 @pytest.mark.parametrize("depth", [yamlnodes.MAX_DEPTH + 5, 10_000])
 def test_deep_yaml_nesting_is_refused(depth: int) -> None:
-    start = time.perf_counter()
     with pytest.raises(InputError, match="nest"):
         load_text("title: " + "[" * depth + "]" * depth + "\nquestions: [eom]\n", "deep.yaml")
-    assert time.perf_counter() - start < 5  # refused at once: the expansion would take far longer (loose for a loaded machine)

@@ -8,13 +8,12 @@ Invariants of every case: exit code 0, 1 or 2 (never 3); no traceback and no
 naming the file; JSON is strict (no NaN, no Infinity), and a numeric value left null
 where the exact answer is a plain number comes with a warning that says so.
 
-The normal run is bounded by time (RBDSOLVE_MUTATION_SECONDS, default 20) and by cases
-(RBDSOLVE_MUTATION_CASES, default 1000), whichever ends first; the cases are the same
-on every machine for a seed (RBDSOLVE_MUTATION_SEED, default 28). A long run, before a
-release or after touching the loader (about a minute per 1000 cases on two cores):
+The normal run is 150 cases (RBDSOLVE_MUTATION_CASES), about 20 s on a quiet two-core
+machine; the cases are the same on every machine, quiet or loaded, for a seed
+(RBDSOLVE_MUTATION_SEED, default 28). A long run, before a release or after touching
+the loader (about two minutes per 1000 cases):
 
-    RBDSOLVE_MUTATION_SECONDS=0 RBDSOLVE_MUTATION_CASES=1000 \\
-        python3 -m pytest -q tests/problem/test_mutation_fuzz.py
+    RBDSOLVE_MUTATION_CASES=1000 python3 -m pytest -q tests/problem/test_mutation_fuzz.py
 
 and with other seeds: RBDSOLVE_MUTATION_SEED=1, 2, … A case that hangs is caught by a
 watchdog (faulthandler, 120 s) that prints every thread's stack and ends the run; the
@@ -41,8 +40,7 @@ from rbdsolve.cli import main
 from conftest import PROBLEMS
 
 SEED = int(os.environ.get("RBDSOLVE_MUTATION_SEED", "28"))
-SECONDS = float(os.environ.get("RBDSOLVE_MUTATION_SECONDS", "20"))
-CASES = int(os.environ.get("RBDSOLVE_MUTATION_CASES", "1000"))
+CASES = int(os.environ.get("RBDSOLVE_MUTATION_CASES", "150"))
 BUDGET = "1"  # seconds per question and for the model: a case costs a few seconds at most
 HANG = 120  # seconds: a case still running then is a hang
 
@@ -181,8 +179,6 @@ def test_seeded_mutations_of_the_golden_files(tmp_path: Path) -> None:
     start, done = time.monotonic(), 0
     try:
         for number in range(CASES):
-            if SECONDS and time.monotonic() - start > SECONDS:
-                break
             name, text, fmt = case(SEED, number)
             current.write_bytes(text.encode("utf-8", "surrogatepass"))
             faulthandler.dump_traceback_later(HANG, exit=True)  # re-armed for each case
@@ -193,5 +189,5 @@ def test_seeded_mutations_of_the_golden_files(tmp_path: Path) -> None:
             done += 1
     finally:
         faulthandler.cancel_dump_traceback_later()
-    print(f"{done} mutation cases (seed {SEED}) in {time.monotonic() - start:.1f} s")
-    assert done >= min(CASES, 10), f"only {done} cases in {SECONDS} s"
+    print(f"{done} mutation cases (seed {SEED}) in {time.monotonic() - start:.1f} s")  # measured, not asserted
+    assert done == CASES

@@ -1,13 +1,20 @@
-"""A time budget for one piece of solving, kept by the real-time alarm (SIGALRM).
+"""A time budget for one piece of solving, in seconds of the processor's time this
+process spends (user and system), kept by the profiling timer (ITIMER_PROF, SIGPROF).
+
+Processor time, not the wall clock: a machine whose cores are busy with other work
+runs rbdsolve more slowly but gives it the same processor seconds for the same work, so
+a file gets the same answer, the same route and the same exit code on a quiet machine
+and on a loaded one. (Waiting — on a pipe, a FIFO, a lock — spends no processor time:
+what waits is bounded where it waits, not here.)
 
 Solvers are pure functions and know nothing of time: the caller wraps a question, or
-the building of the model, in ``within(seconds, what)``. When the time is up the alarm
+the building of the model, in ``within(seconds, what)``. When the time is up the timer
 raises :class:`OutOfTime` in whatever sympy is doing. It derives from BaseException
 because sympy catches ``Exception`` in many places and would swallow it; should a bare
 ``except:`` swallow it anyway, the alarm rings again every REPEAT seconds until it
 gets through. On leaving, the alarm is disarmed and the previous handler restored.
 
-Where there is no SIGALRM (Windows) or when not on the main thread (signal handlers
+Where there is no SIGPROF (Windows) or when not on the main thread (signal handlers
 belong to it), ``within`` does nothing: the work runs to its end. Windows do not nest.
 """
 
@@ -20,6 +27,7 @@ from contextlib import contextmanager
 from typing import Iterator
 
 REPEAT = 0.05  # seconds between rings once the budget is spent
+TIMER, SIGNAL = getattr(signal, "ITIMER_PROF", None), getattr(signal, "SIGPROF", None)
 
 
 class OutOfTime(BaseException):
@@ -33,12 +41,13 @@ class OutOfTime(BaseException):
 
 
 def available() -> bool:
-    return hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
+    return (hasattr(signal, "setitimer") and SIGNAL is not None
+            and threading.current_thread() is threading.main_thread())
 
 
 @contextmanager
 def within(seconds: float | None, what: str) -> Iterator[None]:
-    """Run the body with at most ``seconds`` of wall-clock time (None: no limit)."""
+    """Run the body with at most ``seconds`` of processor time (None: no limit)."""
     if seconds is None or not available():
         yield
         return
@@ -52,10 +61,10 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
         if not isinstance(info.exc_value, OutOfTime):
             hook(info)
 
-    previous, hook = signal.signal(signal.SIGALRM, ring), sys.unraisablehook
+    previous, hook = signal.signal(SIGNAL, ring), sys.unraisablehook
     try:  # armed inside: a budget so short that it rings at once still disarms
         sys.unraisablehook = unraisable
-        signal.setitimer(signal.ITIMER_REAL, seconds, REPEAT)
+        signal.setitimer(TIMER, seconds, REPEAT)
         yield
     finally:
         _disarm(previous)
@@ -65,14 +74,14 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
 def _disarm(previous) -> None:
     # The alarm may ring between the body's end and the disarming: retry until the
     # timer is off, then put the previous handler back. Never the default action: a
-    # ring that was already on its way would kill the process ("Alarm clock").
+    # ring that was already on its way would kill the process ("Profiling timer expired").
     while True:
         try:
-            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.setitimer(TIMER, 0)
             break
         except OutOfTime:
             continue
-    signal.signal(signal.SIGALRM, _stray if previous in (signal.SIG_DFL, None) else previous)
+    signal.signal(SIGNAL, _stray if previous in (signal.SIG_DFL, None) else previous)
 
 
 def _stray(signum, frame) -> None:

@@ -7,7 +7,6 @@ from __future__ import annotations
 import json
 
 import pytest
-import sympy as sp
 from click.testing import CliRunner
 
 from rbdsolve.cli import main

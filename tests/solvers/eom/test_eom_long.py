@@ -4,7 +4,6 @@ once rather than cancelled for minutes (shared/accelerations.py, NUMERATOR_OPS).
 
 from __future__ import annotations
 
-import time
 
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
@@ -14,9 +13,7 @@ from conftest import chain  # the n-link chain of the numeric tests, shared
 
 
 def test_five_links_give_their_equations_without_the_general_accelerations() -> None:
-    start = time.perf_counter()
     report = solve_problem(build_model(load_text(chain(5, rods=False).replace("questions: [modes]", "questions: [eom]"), "chain.yaml")))
-    assert time.perf_counter() - start < 60  # about 2 s; minutes before the guard
     eom = report.solutions[0]
     assert eom.error is None and eom.answers.accelerations is None
     assert len(eom.answers.equations) == 5

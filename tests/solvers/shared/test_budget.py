@@ -1,5 +1,10 @@
-"""The time budget: a slow question ends on time with exit code 1 and a message, the
-alarm gets through sympy's ``except Exception`` blocks, and nothing is left armed."""
+"""The time budget: a slow question ends with exit code 1 and a message, the timer's
+ring gets through sympy's ``except Exception`` blocks, and nothing is left armed.
+
+The budget counts processor time, so no test here reads a clock: each asserts what
+happened (the work stopped, the next question ran), with budgets far from the work
+(a tenth of a second against minutes), and loops that spend processor time where the
+work must be endless."""
 
 from __future__ import annotations
 
@@ -8,7 +13,6 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 import pytest
@@ -22,9 +26,9 @@ from rbdsolve.solvers import Options, solve_file
 from rbdsolve.solvers.shared import budget
 from rbdsolve.solvers.shared.budget import OutOfTime, available, within
 
-from conftest import ROOT
+from conftest import ROOT, spin
 
-pytestmark = pytest.mark.skipif(not available(), reason="no SIGALRM on this platform")
+pytestmark = pytest.mark.skipif(not available(), reason="no SIGPROF on this platform")
 
 # Two pendulums and a spring with a natural length to a point off the axis: sympy's
 # solve of the equilibrium equations runs for minutes (measured: over 40 s).
@@ -67,33 +71,31 @@ def assert_disarmed(previous) -> None:
     """The timer is off and the handler is the previous one; in place of the default
     action, the quiet handler (budget._disarm: a ring already on its way must not kill
     the process), whichever test happened to run first."""
-    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    assert signal.getitimer(budget.TIMER) == (0.0, 0.0)
     restored = budget._stray if previous in (signal.SIG_DFL, None) else previous
-    assert signal.getsignal(signal.SIGALRM) is restored
+    assert signal.getsignal(budget.SIGNAL) is restored
 
 
 @pytest.mark.parametrize("swallow_first", [False, True])
 def test_the_alarm_gets_through_except_exception(swallow_first: bool) -> None:
-    previous = signal.getsignal(signal.SIGALRM)
-    start = time.perf_counter()
+    previous = signal.getsignal(budget.SIGNAL)
     with pytest.raises(OutOfTime, match="'work' ran out of its 0.1 s budget"):
         with within(0.1, "'work'"):
-            busy_swallowing(swallow_first)
-    assert time.perf_counter() - start < 5  # it ended: the loop alone never would (a bound loose enough for a loaded machine)
+            busy_swallowing(swallow_first)  # it ended: the loop alone never would
     assert_disarmed(previous)
 
 
 def test_nothing_is_left_armed_after_work_that_ends_in_time() -> None:
-    previous = signal.getsignal(signal.SIGALRM)
+    previous = signal.getsignal(budget.SIGNAL)
     with within(5, "'work'"):
         pass
     assert_disarmed(previous)
-    time.sleep(0.1)  # a stray SIGALRM would kill the test process here
+    spin(0.1)  # a stray ring would kill the test process here
 
 
 def test_no_budget_and_other_threads_arm_nothing() -> None:
     with within(None, "'work'"):
-        assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+        assert signal.getitimer(budget.TIMER) == (0.0, 0.0)
     seen = []
     thread = threading.Thread(target=lambda: seen.append(_armed_in_a_thread()))
     thread.start()
@@ -103,27 +105,20 @@ def test_no_budget_and_other_threads_arm_nothing() -> None:
 
 def _armed_in_a_thread() -> bool:
     with within(0.01, "'work'"):
-        return signal.getitimer(signal.ITIMER_REAL) != (0.0, 0.0)
+        return signal.getitimer(budget.TIMER) != (0.0, 0.0)
 
 
 def test_a_slow_question_is_left_unanswered_and_the_next_one_runs() -> None:
-    start = time.perf_counter()
     report = solve_file(load_text(SLOW, "slow.yaml"), Options(budget=1.0))
-    elapsed = time.perf_counter() - start
     first, second = report.solutions
     assert first.error == "'equilibria' ran out of its 1 s budget (--budget to change it)"
-    assert second.error is None and second.answers
-    assert elapsed < 1.0 + 1.0 + 1.0  # the second question (eom) takes well under 1 s
-    # the overrun of one question: sympy sees the alarm between its own steps, later on a
-    # loaded machine (1.2 s was seen with the suite running twice at once)
-    assert first.seconds < 1.0 + 0.5
-    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    assert second.error is None and second.answers  # eom: well under the 1 s
+    assert signal.getitimer(budget.TIMER) == (0.0, 0.0)
 
 
 def test_a_model_past_its_budget_fails_the_file_in_one_line(monkeypatch, tmp_path: Path) -> None:
     def endless(problem):
-        while True:
-            time.sleep(0.01)
+        spin(float("inf"))
 
     monkeypatch.setattr(solvers, "build_model", endless)
     with pytest.raises(UnsolvedError, match=r"slow.yaml: the model \(T and V\) ran out of its 0.2 s budget"):
@@ -144,12 +139,10 @@ def test_budget_must_be_positive() -> None:
 def test_the_whole_process_ends_within_its_budget(tmp_path: Path) -> None:
     path = tmp_path / "slow.yaml"
     path.write_text(SLOW.replace("  - eom\n", ""), encoding="utf-8")
-    start = time.perf_counter()
+    # it ends: the 300 s timeout is a guard against a hang, far from the work
     done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(path), "--budget", "0.5", "-f", "json"],
-                          capture_output=True, text=True, timeout=60, cwd=ROOT)
-    elapsed = time.perf_counter() - start
+                          capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 1, done.stderr
     result = json.loads(done.stdout)["results"][0]
     assert result["error"] == "'equilibria' ran out of its 0.5 s budget (--budget to change it)"
     assert "Traceback" not in done.stderr
-    assert elapsed < 0.5 + 15  # it ended (start-up is about 0.7 s; the bound is loose for a loaded machine)
