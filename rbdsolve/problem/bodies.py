@@ -174,9 +174,6 @@ def _refuse_placement(spec: Map, name: str, contact: str) -> None:
         if spec.get(key) is not None:
             raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
                              f"angle); remove '{key}'", spec.get(key).loc)
-    if spec.get("parts") is not None:
-        raise InputError(f"body '{name}' rolls (contact '{contact}'): give it one shape, not parts",
-                         spec.get("parts").loc)
 
 
 def _is_zero(expr: ex.Expr | None) -> bool:
