@@ -477,7 +477,8 @@ class Collision:
     restitution: Expr | None
     particle: Particle | None
     loc: Location
-    sticks: bool = False  # the particle embeds: it moves with the point after, the impulse has every component
+    sticks: bool = False  # the particle embeds (or, without one, the point sticks): it moves with the point after
+    to: str | None = None  # a sticking point of a body sticks to this point of another body (None: a fixed point)
 
 
 @dataclass(frozen=True)
