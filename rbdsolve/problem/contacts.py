@@ -135,7 +135,7 @@ class ContactReader:
         down = self.reading.axis(hang.get("down")) if hang.get("down") is not None else None
         length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
         pulley = Pulley(drum.name, edge, radius, self.place(hang.get("over"), hang.loc), self.direction(hang),
-                        down, length, hang.loc, part.name)
+                        down, length, hang.loc, part=part.name)
         line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
         return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
@@ -336,7 +336,7 @@ def _body_surface(spec: Map, bodies: dict[str, Body], radius: ex.Expr | None) ->
     if word not in SIDES["circle"]:
         raise InputError(f"expected side inside or outside, found {describe(side)}"
                          f"{did_you_mean(word, list(SIDES['circle']))}", side.loc)
-    return Surface(SurfaceKind.BODY, None, None, radius, word == "inside", spec.loc, body.name, edge, part.name)
+    return Surface(SurfaceKind.BODY, None, None, radius, word == "inside", spec.loc, body.name, edge, part=part.name)
 
 
 def _edge(spec: Map, part: Part, string: bool) -> str:
