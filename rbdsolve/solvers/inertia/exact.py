@@ -218,10 +218,11 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     axes = [axis for _, axis in pairs]
     x, y, z = ("xyz"[n] for n in (i, j, k))
     shown = sp.Symbol("alpha")
-    note = st.equation(f"No product of inertia couples the {z} axis (J_{x}{z} = J_{y}{z} = 0): it is a principal "
-                       f"axis, with J_{z}{z}; the other two lie in the {x}{y}-plane, at the angle α from the {x} axis, "
-                       f"λ = (a + b)/2 ± √(((a − b)/2)² + c²) and α = ½ atan2(2c, a − b) for its block "
-                       f"[[a, c], [c, b]] = [[J_{x}{x}, J_{x}{y}], [J_{x}{y}, J_{y}{y}]]:", Relation(shown, alpha))
+    note = st.equation(f"No product of inertia couples the {z} axis (J_{x}{z} = J_{y}{z} = 0): it is a "
+                       f"principal axis, with J_{z}{z}; the other two lie in the {x}{y}-plane, at the angle α "
+                       f"from the {x} axis, λ = (a + b)/2 ± √(((a − b)/2)² + c²) and α = ½ atan2(2c, a − b) "
+                       f"for its block [[a, c], [c, b]] = [[J_{x}{x}, J_{x}{y}], [J_{x}{y}, J_{y}{y}]]:",
+                       Relation(shown, alpha))
     steps = (note, *principal_steps(moments, [v.xreplace({alpha: shown}) for v in axes], []))
     return Principal(tuple(moments), tuple(tuple(x) for x in axes), (), steps, ())
 

@@ -155,8 +155,8 @@ def normal_step(label: str, body: RigidBody, J_G: sp.Matrix, about: sp.Matrix, J
     return st.result(f"The moment of inertia about the axis through {label} normal to the plane of the motion (z), "
                      f"J_{label} = J_G + m |G{label}|² (the parallel axis theorem in the plane):",
                      Relation(Label(f"|G{label}|²", rf"|G{label}|^2"), factored(distance)),
-                     Relation(Label(f"J_{label},z", f"J_{{{label},z}}"), Terms((tidy(J_G[2, 2]), tidy(body.mass * distance))),
-                              more=(factored(J_axis),)))
+                     Relation(Label(f"J_{label},z", f"J_{{{label},z}}"),
+                              Terms((tidy(J_G[2, 2]), tidy(body.mass * distance))), more=(factored(J_axis),)))
 
 
 def configuration_step(at: dict, model: Model) -> st.Step:

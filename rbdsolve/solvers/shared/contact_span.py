@@ -53,7 +53,8 @@ def undecided(model: Model, solutions) -> list[str]:
     for sol in solutions:
         for c, value, sign in _measures(model, sol):
             if isinstance(sign, Undecided):
-                lines.append(f"{to_unicode(model.readable(c.measured))} = {to_unicode(value)} is an equilibrium only while "
+                name = to_unicode(model.readable(c.measured))
+                lines.append(f"{name} = {to_unicode(value)} is an equilibrium only while "
                              f"the contact point {c.name} is on {c.body}'s {c.source.edge} edge, "
                              f"{span_text(model, c)}: the parameters leave that open")
     return lines
