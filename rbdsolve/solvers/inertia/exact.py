@@ -198,7 +198,8 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
         the plane's first axis, α = ½ atan2(2c, a − b),
 
     forms that stay short where the null space of J − λ1 with the root's square root does
-    not. None: J does not move, no axis decouples, or the pair is repeated."""
+    not. None: J does not move, no axis decouples, or the root is no square root of the
+    coordinates (a disk circling O: its axes along OG and across it, from the null space)."""
     if not J_hat.free_symbols & set(model.q):
         return None
     k = next((k for k in range(3) if all(tidy(J_hat[k, i]) == 0 for i in range(3) if i != k)), None)
@@ -207,8 +208,8 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     i, j = (x for x in range(3) if x != k)
     a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
     root = sp.sqrt(tidy((a - b) ** 2 / 4 + c**2))
-    if tidy(root) == 0:
-        return None
+    if not any(p.exp == sp.S.Half and p.base.free_symbols & set(model.q) for p in root.atoms(sp.Pow)):
+        return None  # rational in the coordinates' sines: the null space gives short axes (OG and across)
     alpha = sp.atan2(tidy(2 * c), tidy(a - b)) / 2
     plus, minus = sp.zeros(3, 1), sp.zeros(3, 1)
     plus[i], plus[j], minus[i], minus[j] = sp.cos(alpha), sp.sin(alpha), -sp.sin(alpha), sp.cos(alpha)
