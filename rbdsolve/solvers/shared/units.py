@@ -13,9 +13,13 @@ dimensions, the answer gets no unit (None).
 A numeric route's answers are floats, with no expression to read: a coordinate's value
 (under ``at``, ``about`` or ``equivalent``) takes the coordinate's unit on every route,
 and the small-oscillation numbers take theirs from what they are: λ = ω² in 1/s², ω in
-rad/s, a growth rate in 1/s (printed rad/s, as every rate), an inertia's J and
-moments in kg·m², a point's position, velocity and acceleration in m, m/s, m/s², M_ij = ∂²T/∂q̇_i∂q̇_j in J·s²/(q_i q_j), K_ij and a
-curvature of V in J/(q_i q_j).
+rad/s, an inertia's J and moments in kg·m², a point's position, velocity and
+acceleration in m, m/s, m/s².
+
+On both routes, an answer whose meaning fixes its unit takes that unit first
+(``fixed_units.py``: M_ij and K_ij per the coordinates' units, K over two angles in
+N·m/rad, a moment in N·m, q̈ of an angle in rad/s², a growth rate in 1/s), and a
+critical value takes its parameter's unit.
 """
 
 from __future__ import annotations
@@ -34,19 +38,24 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.report.tree import Path, map_paths
+from rbdsolve.solvers.shared.fixed_units import TORSIONAL, fixed_unit, torsional_stiffnesses
+from rbdsolve.solvers.shared.numbers import at
 from rbdsolve.solvers.shared.values import CONDITIONS
 
 TIME = Dimension(time=Fraction(1))
 
 
-def answer_units(answers: object, model: Model) -> object:
-    """The answers tree with each numeric leaf's SI unit ('rad/s', 'kg·m²', '' for a
-    pure number, 'rad' for an angle coordinate's value), None where it is unknown or
-    the leaf is not a number at the values."""
+def answer_units(answers: object, model: Model, kind: str = "") -> object:
+    """The answers tree of a ``kind`` question with each numeric leaf's SI unit ('rad/s',
+    'kg·m²', '' for a pure number, 'rad' for an angle coordinate's value), None where
+    it is unknown or the leaf is not a number at the values. A unit that the answer's
+    meaning fixes comes first (fixed_units.py: N·m/rad for K over angles, N·m for a
+    moment), then a critical value takes its parameter's unit."""
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
-    numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles)
+    numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles, kind)
+    parameters = parameter_units(model)
 
     zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
 
@@ -56,6 +65,9 @@ def answer_units(answers: object, model: Model) -> object:
         named = [p for p in path if isinstance(p, str)]
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
+        fixed = fixed_unit(kind, path, coordinates) or _critical_unit(answers, path, parameters)
+        if fixed is not None:
+            return fixed
         if _coordinate_value(named, coordinates):
             return _coordinate_unit(named[-1], coordinates, angles)
         if _kinematic(named):  # what it is fixes it: a state's bare rate 2 is 2 rad/s, not a pure number
@@ -84,7 +96,6 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
 }
 _RATE_UNITS = {k: d.unit for k, d in _RATES.items()}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
-_PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 
 
 def _kinematic(named: list[str]) -> bool:
@@ -113,28 +124,25 @@ def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], ang
     return None if found is None else (found / TIME ** (1 if rate.group(1) == "dot" else 2)).unit
 
 
-def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str, Dimension | None],
-                  angles) -> str | None:
+def _critical_unit(answers: object, path: Path, parameters: Mapping[str, str]) -> str | None:
+    """A critical value's unit is its parameter's: path (…, 'critical', i, 'value')."""
+    if len(path) < 3 or path[-1] != "value" or path[-3] != "critical":
+        return None
+    return parameters.get(getattr(at(answers, path[:-1]), "parameter", None))
+
+
+def _numeric_unit(path: Path, coordinates: Mapping[str, Dimension | None], angles, kind: str = "") -> str | None:
     """The unit of a numeric route's float, from what its key means (module docstring)."""
+    fixed = fixed_unit(kind, path, coordinates)
+    if fixed is not None:
+        return fixed
+    named = [p for p in path if isinstance(p, str)]
     if _coordinate_value(named, coordinates):
         return _coordinate_unit(named[-1], coordinates, angles)
-    key = named[-1] if named else None
-    if key in _RATES:
-        return _RATE_UNITS[key]
-    if key not in _PER_COORDINATES:
-        return None
-    dims = list(coordinates.values())
-    if key == "curvatures":  # eigenvalues of the Hessian: one unit only if every q shares it
-        shared = set(dims)
-        across = shared.pop() if len(shared) == 1 else None
-        return None if across is None else (ENERGY / across ** 2).unit
-    pair = indices[-2:] if len(indices) >= 2 else None
-    if pair is None or any(i >= len(dims) or dims[i] is None for i in pair):
-        return None
-    return (_PER_COORDINATES[key] / (dims[pair[0]] * dims[pair[1]])).unit
+    return _RATE_UNITS.get(named[-1]) if named else None
 
 
-def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
+def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles, kind: str = ""):
     """``_numeric_unit`` as a function of the leaf's path, computed once per distinct
     answer. The path but its last two steps, and those two with each index of a
     coordinate replaced by its dimension's place in a list, decide it (the keys, and the
@@ -148,8 +156,7 @@ def _memoized_numeric_unit(coordinates: Mapping[str, Dimension | None], angles):
         tail = tuple(("kind", kind_of[p]) if isinstance(p, int) and p < len(dims) else p for p in path[-2:])
         key = (path[:-2], tail)
         if key not in memo:
-            memo[key] = _numeric_unit([p for p in path if isinstance(p, str)], [p for p in path if isinstance(p, int)],
-                                      coordinates, angles)
+            memo[key] = _numeric_unit(path, coordinates, angles, kind)
         return memo[key]
 
     def row(path: Path, values: tuple) -> list:
@@ -197,8 +204,10 @@ def _valued(expr: sp.Expr, model: Model) -> bool:
 
 
 def parameter_units(model: Model) -> dict[str, str]:
-    """The SI unit of each parameter whose dimension is known ('' for a pure number)."""
-    return {name: d.unit for name, d in model.problem.dimensions}
+    """The SI unit of each parameter whose dimension is known ('' for a pure number); a
+    torsional spring's stiffness in N·m/rad."""
+    torsional = torsional_stiffnesses(model.problem)
+    return {name: TORSIONAL if name in torsional else d.unit for name, d in model.problem.dimensions}
 
 
 def known_dimensions(model: Model) -> dict[object, Dimension]:

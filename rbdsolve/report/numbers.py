@@ -1,0 +1,57 @@
+"""The numeric block of a solution: each answer's value under the name the worked
+solution prints it by (ω₁, λ₂, M, K, Ω_c, v_G1), with its unit and what a reader wants
+beside it (a frequency's period, an angle in degrees, the fraction of energy lost).
+
+A family says which answers carry which printed name (``Named``: a path in the answers
+tree, docs/json.md, and the name); ``solvers/shared/numbers.py`` reads their values and
+units and writes the lines (``Number``), which every renderer prints. The grading of a
+student's answers reads the same names (teaching/), so that ``omega_c = …`` is checked
+against the answer the solution calls ω_c.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+import sympy as sp
+
+from rbdsolve.form.display import Label, Relation
+from rbdsolve.report.tree import Path
+
+
+class Meaning(Enum):
+    """What a number is, where that puts something beside it."""
+
+    PLAIN = "plain"
+    FREQUENCY = "frequency"  # an angular frequency ω: its period 2π/ω beside it
+    ENERGY_LOST = "energy_lost"  # Tᵢ − T_f: negative reads as an energy gained
+    FRACTION = "fraction"  # a ratio shown also as a percentage
+
+
+@dataclass(frozen=True)
+class Named:
+    """An answer (or a group of them: a vector, a matrix, a state) at ``path`` in the
+    answers tree, printed as ``name``: a sympy symbol (omega_1, M), an expression of
+    symbols (T_i − T_f, Ω²) or a tuple of them ((θ, φ) for an equilibrium's place).
+    ``group``: the heading it falls under (Equilibrium 2, Branch 1), '' for none."""
+
+    path: Path
+    name: sp.Basic | Label  # a Label where no sympy name prints as the solution does (ω⊥, φ̇)
+    group: str = ""
+    meaning: Meaning = Meaning.PLAIN
+    accuracy: bool = False  # says how accurate an answer is (a bound, a residual): shown apart
+
+
+@dataclass(frozen=True)
+class Number:
+    """One line of the numeric block: ``relation`` (name = value, floats), the SI unit of
+    its value ('' for none or a pure number), and a note beside it ('period 1.45 s',
+    '60°')."""
+
+    relation: Relation
+    unit: str = ""
+    note: str = ""
+    group: str = ""
+    accuracy: bool = False
+    path: Path = ()
