@@ -23,3 +23,4 @@ class ImpactAnswers:
     energy_lost: sp.Expr
     support_impulse: tuple[sp.Expr, sp.Expr, sp.Expr]  # Δp − Σ P: what the supports gave
     centre_of_percussion: sp.Expr | None  # the asked parameter's value for no support impulse
+    energy_fraction: sp.Expr | None = None  # (Tᵢ − T_f)/Tᵢ, the fraction lost; None where Tᵢ = 0

@@ -348,6 +348,7 @@ class ImpactEquations:
             energy_lost=tidy_fraction(before - after),
             support_impulse=support,
             centre_of_percussion=centre,
+            energy_fraction=None if before == 0 else tidy_fraction((before - after) / before),
         )
         return answers, tuple(notes + ([why] if why else []))
 
