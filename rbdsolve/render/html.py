@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from rbdsolve.form.mathml import relation_mathml
-from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text
+from rbdsolve.render.numbers import accuracy_lines, groups, route_text, tail_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind, accuracy_steps, answer_steps
 
@@ -104,14 +104,25 @@ def _solution(number: int, s: Solution) -> list[str]:
     out += [f'<p class="warning"><b>Warning:</b> {_e(w)}</p>' for w in s.warnings]
     if s.error:
         out.append(f'<p class="error"><b>Could not answer:</b> {_e(s.error)}</p>')
-    numbers, accuracy = answer_and_accuracy_lines(s)
-    if numbers:
-        out += ["<p>Numeric values:</p><ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in numbers] + ["</ul>"]
+    out += _numbers(s)
+    accuracy = accuracy_lines(s)
     steps = accuracy_steps(s.steps)
     if steps or accuracy:  # how accurate the numeric route is: small, under the answers
         out += ['<div class="accuracy"><small><p>Accuracy:</p>', *[x for step in steps for x in _step(step)]]
         out += (["<ul>"] + [f"<li><code>{_e(n)}</code></li>" for n in accuracy] + ["</ul>"] if accuracy else [])
         out.append("</small></div>")
+    return out
+
+
+def _numbers(s: Solution) -> list[str]:
+    """The numeric block, each value under the name the solution prints, by heading."""
+    blocks = groups(s.numbers)
+    if not blocks:
+        return []
+    out = ["<p>Numeric values:</p>"]
+    for heading, numbers in blocks:
+        out += [f"<p>{_e(heading)}:</p>"] if heading else []
+        out += ["<ul>"] + [f"<li>{relation_mathml(n.relation)}{_e(tail_text(n))}</li>" for n in numbers] + ["</ul>"]
     return out
 
 

@@ -7,7 +7,7 @@ import unicodedata
 
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.printers import GREEK
-from rbdsolve.render.numbers import answer_and_accuracy_lines, unit_text, value_latex
+from rbdsolve.render.numbers import accuracy_lines, groups, tail_text, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 
@@ -97,13 +97,21 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
         if s.error:
             lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
-        numbers, accuracy = answer_and_accuracy_lines(s)
-        if numbers:
-            lines.append("Numeric values: \\begin{itemize}")
-            lines += [f"\\item \\texttt{{{text(line)}}}" for line in numbers]
-            lines.append("\\end{itemize}")
-        lines += _accuracy(accuracy_steps(s.steps), accuracy)
+        lines += _numbers(s)
+        lines += _accuracy(accuracy_steps(s.steps), accuracy_lines(s))
     return lines
+
+
+def _numbers(s) -> list[str]:
+    """The numeric block, each value under the name the solution prints, by heading."""
+    blocks = groups(s.numbers)
+    if not blocks:
+        return []
+    lines = ["Numeric values: \\begin{itemize}"]
+    for heading, numbers in blocks:
+        lines += [f"\\item[] {text(heading)}:"] if heading else []
+        lines += [f"\\item ${relation_latex(n.relation)}${text(tail_text(n))}" for n in numbers]
+    return lines + ["\\end{itemize}"]
 
 
 def _accuracy(steps, numbers: list[str]) -> list[str]:

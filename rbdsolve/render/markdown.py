@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.form.printers import relation_latex
-from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text, unit_text, value_latex
+from rbdsolve.render.numbers import accuracy_lines, groups, route_text, tail_text, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
 from rbdsolve.errors import printable
@@ -50,11 +50,22 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [f"> **Warning:** {md(w)}" for w in s.warnings]
         if s.error:
             lines += [f"> **Could not answer:** {md(s.error)}", ""]
-        numbers, accuracy = answer_and_accuracy_lines(s)
-        if numbers:
-            lines += ["Numeric values:", ""] + [f"- `{line}`" for line in numbers] + [""]
-        lines += _accuracy(accuracy_steps(s.steps), accuracy)
+        lines += _numbers(s)
+        lines += _accuracy(accuracy_steps(s.steps), accuracy_lines(s))
     return "\n".join(lines) + "\n"
+
+
+def _numbers(s) -> list[str]:
+    """The numeric block, each value under the name the solution prints, by heading."""
+    blocks = groups(s.numbers)
+    if not blocks:
+        return []
+    lines = ["Numeric values:", ""]
+    for heading, numbers in blocks:
+        lines += [f"- {md(heading)}:"] if heading else []
+        indent = "  " if heading else ""
+        lines += [f"{indent}- ${relation_latex(n.relation)}${md(tail_text(n))}" for n in numbers]
+    return lines + [""]
 
 
 def _accuracy(steps: tuple[Step, ...], numbers: list[str]) -> list[str]:

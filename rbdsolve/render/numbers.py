@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text
+from rbdsolve.report.numbers import Number
 from rbdsolve.report.tree import Path, label
 
 
@@ -18,11 +19,33 @@ def accuracy_keys(question: str) -> frozenset[str]:
     return MODES_ACCURACY if question == "modes" else ACCURACY
 
 
-def answer_and_accuracy_lines(solution) -> tuple[list[str], list[str]]:
-    """A solution's numeric values as lines: the answers, then how accurate they are."""
-    keys = accuracy_keys(solution.question)
-    return (numeric_lines(solution.values, solution.units, skip=keys),
-            numeric_lines(solution.values, solution.units, only=keys))
+def accuracy_lines(solution) -> list[str]:
+    """How accurate a numeric route's answers are (bounds, residuals), as lines."""
+    return numeric_lines(solution.values, solution.units, only=accuracy_keys(solution.question))
+
+
+def groups(numbers: tuple[Number, ...]) -> list[tuple[str, list[Number]]]:
+    """The numeric block's lines under their headings (Equilibrium 2, Branch 1; '' for
+    none), consecutive lines of one heading together."""
+    out: list[tuple[str, list[Number]]] = []
+    for n in numbers:
+        if n.accuracy:
+            continue
+        if out and out[-1][0] == n.group:
+            out[-1][1].append(n)
+        else:
+            out.append((n.group, [n]))
+    return out
+
+
+def number_text(n: Number) -> str:
+    """'ω₁ = 4.33995 rad/s (period 1.44778 s)': a line of the numeric block in unicode."""
+    return relation_text(n.relation) + tail_text(n)
+
+
+def tail_text(n: Number) -> str:
+    """' rad/s (period 1.44778 s)': what follows a number's math, its unit and note."""
+    return unit_text(n.unit) + (f" ({n.note})" if n.note else "")
 
 
 def numeric_lines(values: object, units: object = None, path: Path = (), skip: frozenset[str] = frozenset(),

@@ -10,7 +10,7 @@ from rich.text import Text
 
 from rbdsolve.errors import printable
 from rbdsolve.form.printers import relation_text
-from rbdsolve.render.numbers import answer_and_accuracy_lines, route_text
+from rbdsolve.render.numbers import accuracy_lines, groups, number_text, route_text
 from rbdsolve.render.wrap import wrap_math
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind, accuracy_steps, answer_steps
 
@@ -70,11 +70,13 @@ def _solution(number: int, s: Solution) -> list:
         out.append(Text(f"warning: {printable(warning)}", style="yellow"))
     if s.error:
         out.append(Text(f"could not answer: {printable(s.error)}", style="bold red"))
-    numbers, accuracy = answer_and_accuracy_lines(s)
-    if numbers:
+    blocks = groups(s.numbers)
+    if blocks:
         out += [Text("Numeric values:")]
-        out += [MathLine(line, "cyan") for line in numbers]
-    return out + _accuracy(accuracy_steps(s.steps), accuracy)
+        for heading, numbers in blocks:
+            out += [Text(f"  {heading}:")] if heading else []
+            out += [MathLine(number_text(n), "cyan") for n in numbers]
+    return out + _accuracy(accuracy_steps(s.steps), accuracy_lines(s))
 
 
 def _accuracy(steps: tuple[Step, ...], numbers: list[str]) -> list:

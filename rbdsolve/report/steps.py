@@ -15,6 +15,7 @@ import sympy as sp
 from rbdsolve.form.display import Relation
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import float_text, unicode_name
+from rbdsolve.report.numbers import Number
 
 
 class StepKind(Enum):
@@ -110,6 +111,7 @@ class Solution:
     seconds: float = 0.0
     error: str | None = None
     error_estimate: float | None = None  # numeric route: bound on the answers' relative error
+    numbers: tuple[Number, ...] = ()  # the numeric block: values by their printed names (report/numbers.py)
 
     @property
     def solved(self) -> bool:

@@ -34,16 +34,16 @@ from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.routes import Family, later
 
 FAMILIES = {
-    QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric")),
-    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric")),
-    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric")),
-    QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric")),
-    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric")),
-    QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),
-    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
-    QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric")),
-    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric")),
-    QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric")),
+    QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric"), later("eom.named", "named")),
+    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"), later("equilibria.named", "named")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later("modes.named", "named")),
+    QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric"), later("inertia.named", "named")),
+    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric"), later("impact.named", "named")),
+    QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric"), later("steady_spin.named", "named")),
+    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric"), later("steady_motion.named", "named")),
+    QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric"), later("kinematics.named", "named")),
+    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric"), later("reactions.named", "named")),
+    QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric"), later("energy.named", "named")),
 }
 
 

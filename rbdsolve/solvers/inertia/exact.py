@@ -35,6 +35,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import InertiaAnswers, Principal
 from rbdsolve.solvers.inertia.configuration import about_point, at_configuration, substitution
+from rbdsolve.solvers.inertia.named import point_label
 from rbdsolve.solvers.inertia.steps import (
     CONVENTION,
     _centre_steps,
@@ -69,7 +70,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     J, about, label = J_G, None, "G"
     if opts.about is not None:
         about = about_point(opts, model, at)
-        label = opts.about.text if opts.about.text.isidentifier() else "P"
+        label = point_label(opts)
         J, shift_steps = _shift(body, J_G, about, label, symbols)
         steps += shift_steps
     e, J_axis = axis_moment(opts, model, J)

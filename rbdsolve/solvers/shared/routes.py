@@ -24,6 +24,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
+from rbdsolve.solvers.shared.numbers import numbers
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
@@ -32,23 +33,29 @@ from rbdsolve.solvers.shared.values import missing_for, missing_values, not_fini
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 
 
+Names = Callable[[Question, object, Model], tuple]  # (question, answers, model) -> tuple[Named, ...]
+
+
 @dataclass(frozen=True)
 class Family:
-    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+    """A solver family's routes, each a pure function (question, model, options) ->
+    Solution, and ``named``: which answers the worked solution prints under which name
+    (report/numbers.py), for the numeric block and for grading."""
 
     exact: Solver
     numeric: Solver
+    named: Names | None = None
 
 
-def later(module: str) -> Solver:
+def later(module: str, function: str = "solve"):
     """A route whose module (``rbdsolve.solvers.<family>.<route>``) is imported when first
     asked: numpy, scipy and the numeric machinery stay out of a process that only takes
-    the exact route."""
+    the exact route. ``function``: the module's function to call (a family's ``named``)."""
 
-    def solve(question: Question, model: Model, options: Options) -> Solution:
-        return importlib.import_module(f"rbdsolve.solvers.{module}").solve(question, model, options)
+    def solve(*args):
+        return getattr(importlib.import_module(f"rbdsolve.solvers.{module}"), function)(*args)
 
-    solve.__qualname__ = f"{module}.solve"
+    solve.__qualname__ = f"{module}.{function}"
     return solve
 
 
@@ -61,9 +68,17 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     overflow = not_finite(solution.answers, model.values) if values else None
     solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
-    units = answer_units(solution.answers, model) if values else {}
-    return replace(_finite_estimate(solution), values=values or {}, units=units,
+    units = answer_units(solution.answers, model, question.kind.value) if values else {}
+    lines = _numbers(family, question, solution, model, values, units) if values else ()
+    return replace(_finite_estimate(solution), values=values or {}, units=units, numbers=lines,
                    seconds=time.perf_counter() - start)
+
+
+def _numbers(family: Family, question: Question, solution: Solution, model: Model, values, units) -> tuple:
+    """The numeric block: the values under the names the solution prints."""
+    if family.named is None:
+        return ()
+    return numbers(family.named(question, solution.answers, model), solution.answers, values, units)
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT})

@@ -1,0 +1,44 @@
+"""The names the modes' worked solution prints its answers by (report/numbers.py): the
+equilibrium (θ, φ), M and K, λᵢ, ωᵢ (with its period), γᵢ, the amplitudes aᵢ and the
+critical values (Ω_c)."""
+
+from __future__ import annotations
+
+from rbdsolve.model.build import Model
+from rbdsolve.report.numbers import Meaning, Named
+from rbdsolve.report.tree import Path
+from rbdsolve.solvers.modes.answers import EachModesAnswers
+from rbdsolve.solvers.modes.steps import mode_labels
+from rbdsolve.solvers.shared.naming import criticals, state
+
+
+def named(question, answers, model: Model) -> tuple[Named, ...]:
+    if isinstance(answers, EachModesAnswers):
+        return tuple(n for k, a in enumerate(answers.modes)
+                     for n in _modes(a, model, ("modes", k), "" if len(answers.modes) == 1 else _heading(k, answers)))
+    return tuple(_modes(answers, model))
+
+
+def _heading(k: int, answers: EachModesAnswers) -> str:
+    return f"About equilibrium {k + 1}" if not answers.skipped else f"About the {_ordinal(k + 1)} equilibrium answered"
+
+
+def _ordinal(n: int) -> str:
+    return {1: "first", 2: "second", 3: "third"}.get(n, f"{n}th")
+
+
+def _modes(a, model: Model, path: Path = (), group: str = "") -> list[Named]:
+    labels = mode_labels(model)
+    out = [Named((*path, "about"), state(model, a.about), group),
+           Named((*path, "M"), labels.symbol("mass_matrix"), group),
+           Named((*path, "K"), labels.symbol("stiffness_matrix"), group)]
+    out += [Named((*path, "eigenvalues", i), labels.symbol("eigenvalue", i + 1), group)
+            for i in range(len(a.eigenvalues))]
+    for i in range(len(a.eigenvalues)):  # then each mode, as the steps go
+        if i < len(a.frequencies):
+            out.append(Named((*path, "frequencies", i), labels.symbol("frequency", i + 1), group, Meaning.FREQUENCY))
+        if i < len(a.growth_rates):
+            out.append(Named((*path, "growth_rates", i), labels.symbol("growth_rate", i + 1), group))
+        if i < len(a.shapes):
+            out.append(Named((*path, "shapes", i), labels.symbol("amplitude", i + 1), group))
+    return out + criticals((*path, "critical"), getattr(a, "critical", ()), group)

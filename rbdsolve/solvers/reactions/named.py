@@ -1,0 +1,24 @@
+"""The names the reactions' worked solution prints its answers by (report/numbers.py):
+each q̈, q̇² from the energy integral, each reaction's components at the state asked
+(R_Ox, N_C, F_C, T_S, M_O), the least friction coefficients μ_C and the critical values."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.model.build import Model
+from rbdsolve.report.numbers import Named
+from rbdsolve.solvers.shared.naming import coordinate, criticals
+
+
+def named(question, answers, model: Model) -> tuple[Named, ...]:
+    out = [Named(("accelerations", k), coordinate(model, f"ddot({k})")) for k in answers.accelerations]
+    out += [Named(("rate_squared", k), coordinate(model, f"dot({k})") ** 2) for k in (getattr(answers, "rate_squared", None) or {})]
+    for name, r in (answers.at or {}).items():
+        components = r.components if hasattr(r, "components") else r  # the numeric route: component -> value
+        path = ("at", name, "components") if hasattr(r, "components") else ("at", name)
+        out += [Named((*path, c), sp.Symbol(c), "At the state asked") for c in components]
+    out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
+    if hasattr(answers, "residual"):
+        out.append(Named(("residual",), sp.Symbol("residual"), accuracy=True))
+    return tuple(out + criticals(("critical",), getattr(answers, "critical", ())))
