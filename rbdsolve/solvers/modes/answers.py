@@ -8,6 +8,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.shared.conditions import CriticalValue
 
 
@@ -108,3 +109,35 @@ def with_amplitude_check(question, model, solution):
     from rbdsolve.solvers.modes.amplitude import with_check
 
     return with_check(question, model, solution)
+
+
+@dataclass(frozen=True)
+class GyroscopicCase:
+    """A stability of M ü + G u̇ + K u = 0 that holds when a condition on the parameters
+    does, with the growth rate of the motion where it is unstable and one is known."""
+
+    when: sp.Basic
+    stability: Stability
+    growth_rate: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class GyroscopicModesAnswers:
+    """Small motions with gyroscopic terms (a spinning top, a rotor in gimbals, a body in a
+    turning frame), exact: the steady state (the coordinates kept and the cyclic ones'
+    steady rates and momenta), M, G and K, det(K − ω²M + iωG), the frequencies ω, and
+    where the motion is stable: the conditions, case by case, and the critical values."""
+
+    about: Mapping[str, sp.Expr]  # coordinates kept -> value
+    steady: Mapping[str, sp.Expr]  # cyclic coordinate -> its steady rate (Routh's reduction)
+    momenta: Mapping[str, sp.Expr]  # cyclic coordinate -> its constant momentum ∂L/∂q̇
+    M: sp.ImmutableMatrix
+    G: sp.ImmutableMatrix  # skew: Gᵢⱼ = ∂cᵢ/∂qⱼ − ∂cⱼ/∂qᵢ
+    K: sp.ImmutableMatrix
+    characteristic: sp.Expr  # det(K − ω²M + iωG), even in ω
+    frequencies: tuple[sp.Expr, ...]  # ω > 0, ascending; real where the motion is stable
+    stability: Stability  # stable, unstable, depends (see cases), undetermined, neutral
+    stable_if: tuple[sp.Expr, ...]  # each > 0 where stable (the signs the parameters decide left out)
+    cases: tuple[GyroscopicCase, ...] = ()
+    critical: tuple[CriticalValue, ...] = ()
+    neutral: int = 0  # directions with ω = 0
