@@ -141,3 +141,22 @@ class GyroscopicModesAnswers:
     cases: tuple[GyroscopicCase, ...] = ()
     critical: tuple[CriticalValue, ...] = ()
     neutral: int = 0  # directions with ω = 0
+
+
+@dataclass(frozen=True)
+class NumericGyroscopicModesAnswers:
+    """Small motions with gyroscopic terms in numbers: the steady state, M, G and K, the
+    frequencies ω of the roots s = iω on the imaginary axis, the growth rates Re s > 0
+    of the others, every root s with its error bound, and the stability."""
+
+    about: Mapping[str, float]
+    steady: Mapping[str, float]
+    M: tuple[tuple[float, ...], ...]
+    G: tuple[tuple[float, ...], ...]
+    K: tuple[tuple[float, ...], ...]
+    frequencies: tuple[float, ...]  # ω > 0 of the roots on the axis, ascending
+    stability: Stability  # stable (every root on the axis within its bound) or unstable
+    growth_rates: tuple[float, ...]  # Re s > 0 of the roots off the axis, ascending
+    roots: tuple[complex, ...]  # every s of (s² M + s G + K) X = 0
+    root_errors: tuple[float, ...]  # the bound on |ŝ − s| of each root
+    neutral: int = 0  # directions with s = 0

@@ -73,6 +73,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if question.options.each:
         return _at_each(model)
     at, notes = exact_equilibrium(question, model)
+    notes += gyroscopic.spin_notes(question, model)
     answers, steps = modes_at(at, model)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
 

@@ -47,7 +47,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.answers import GyroscopicCase, GyroscopicModesAnswers
-from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_steps
+from rbdsolve.solvers.modes.gyroscopic_steps import cyclic_note, gyroscopic_steps
 from rbdsolve.solvers.modes.routh import Linear, linearize
 from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters
 from rbdsolve.solvers.shared.conditions import Piece, at_samples, changes, critical_values, partition
@@ -64,6 +64,21 @@ def applies(question: Question, model: Model) -> bool:
     if question.options.steady:
         return True
     return len(model.q) > 1 and has_gyroscopic_terms(model) and gyroscopic_matrix(model) != sp.zeros(len(model.q))
+
+
+def spin_notes(question: Question, model: Model) -> tuple[str, ...]:
+    """A spin angle (a coordinate in a body's turns that L does not hold) given a value
+    in 'about': the modes are those of the body at rest, said so, with the form for a
+    steady spin."""
+    turned = {s for b in model.bodies for _, angle in b.turns for s in angle.free_symbols}
+    given = [n for n, _ in (question.options.about or ())]
+    spins = [n for n, q in zip(model.coordinate_names(), model.q) if n in given and q in turned]
+    if not spins:
+        return ()
+    from rbdsolve.solvers.modes.routh import lagrangian
+
+    L = lagrangian(model)
+    return tuple(cyclic_note(n) for n, q in zip(model.coordinate_names(), model.q) if n in spins and not L.has(q))
 
 
 def solve(question: Question, model: Model) -> Solution:
@@ -147,8 +162,9 @@ def essential(expr: sp.Expr) -> sp.Expr:
     kept, sign = [], 1
     for factor in sp.Mul.make_args(sp.factor(tidy(expr))):
         decided = symbolic_sign(factor)
-        if decided == 1:
-            continue
+        base, exp = factor.as_base_exp()
+        if decided == 1 or (exp.is_Integer and exp % 2 == 0 and base.is_real is not False):
+            continue  # an even power is positive but where its base vanishes: a neutral root, not a loss
         if decided == -1:
             sign = -sign
             continue
@@ -180,7 +196,7 @@ def frequency_forms(P: sp.Expr, model: Model) -> tuple[list[sp.Expr], list[sp.Ex
             raise UnsolvedError("det(K − ω²M + iωG) has a factor without its mirror image in ω")
         used |= {i, mirror}
         chosen = _positive_of(poly, sp.Poly(factors[mirror], OMEGA), model)
-        out += [tidy(x) for x in _all_roots(chosen)]
+        out += [_positive(tidy(x), model) for x in _all_roots(chosen)]
         if chosen.degree() == 2:
             quadratics.append(chosen.as_expr())
     return sorted(out, key=lambda w: sample(w, model.values).real), quadratics
@@ -195,6 +211,13 @@ def _positive_of(f: sp.Poly, mirror: sp.Poly, model: Model) -> sp.Poly:
         raise UnsolvedError(f"which of ±ω are the frequencies depends on the sign of {sp.sstr(total)}: "
                             "state it under 'assumptions:'")
     return f if sign > 0 else mirror
+
+
+def _positive(root: sp.Expr, model: Model) -> sp.Expr:
+    """A root ω of the chosen factor, turned positive where the parameters (or values)
+    make it negative: Ω − √(k/m) is √(k/m) − Ω where √(k/m) > Ω."""
+    sign = sign_of(root, model.decided_by)
+    return tidy(-root) if sign == -1 else root
 
 
 def _all_roots(poly: sp.Poly) -> list[sp.Expr]:

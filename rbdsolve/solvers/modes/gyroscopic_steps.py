@@ -108,3 +108,41 @@ def cyclic_note(name: str) -> str:
     """A spin angle given a value where a steady spin is likely meant."""
     return (f"{unicode_name(name)} is cyclic (L holds its rate, not itself): its mode here is a free turning at "
             f"rest; for a steady spin give its rate instead, about: {{…, dot({name}): RATE}}")
+
+
+def numeric_gyroscopic_steps(a, linear: Linear, model: Model) -> tuple[st.Step, ...]:
+    """The floating-point route's worked solution: the matrices, the roots s = iω, the
+    verdict."""
+    labels = gyroscopic_labels(model)
+    M, G, K, w = (labels.text(k) for k in ("mass_matrix", "gyroscopic_matrix", "stiffness_matrix", "frequency"))
+    rates = [Relation(sp.Derivative(f, t), sp.Float(a.steady[n], 15))
+             for n, f in zip(model.coordinate_names(), model.state.functions()) if n in a.steady]
+    floats = lambda rows: sp.ImmutableMatrix([[sp.Float(x, 15) for x in row] for row in rows])  # noqa: E731
+    steps = [*linear.steps,
+             st.given("Small motions q = q₀ + u about the steady state",
+                      configuration(linear.functions, [sp.Float(v, 15) for v in a.about.values()]), *rates),
+             st.equation(f"Linearized equations {M} ü + {G} u̇ + {K} u = 0 at the parameter values (the exact "
+                         "linearization, rounded once):",
+                         Relation(labels.symbol("mass_matrix"), floats(a.M)),
+                         Relation(labels.symbol("gyroscopic_matrix"), floats(a.G)),
+                         Relation(labels.symbol("stiffness_matrix"), floats(a.K))),
+             st.equation(f"u = X e^(st) gives (s²{M} + s{G} + {K}) X = 0, solved in its first-order form by the QZ "
+                         f"algorithm (scipy.linalg.eig); s = i{w} on the imaginary axis is an oscillation:",
+                         *[Relation(sp.Symbol(f"s_{i}"), sp.Float(z.real, 15) + sp.I * sp.Float(z.imag, 15))
+                           for i, z in enumerate(a.roots, 1)])]
+    if a.frequencies:
+        steps.append(st.result("Frequencies:", *[Relation(labels.symbol("frequency", i), sp.Float(x, 15))
+                                                for i, x in enumerate(a.frequencies, 1)]))
+    if a.stability is Stability.STABLE:
+        steps.append(st.result("Every root lies on the imaginary axis within its error bound: the motion is "
+                               "stable to first order."))
+    else:
+        steps.append(st.result("A root lies right of the imaginary axis: the motion is unstable, growing at",
+                               *[Relation(labels.symbol("growth_rate", i), sp.Float(x, 15))
+                                 for i, x in enumerate(a.growth_rates, 1)]))
+    steps.append(st.accuracy(f"Each root's error bound is {SAFETY_TEXT} its distance to the same root at 50 digits "
+                             f"(mpmath); largest {max(a.root_errors):.1e}."))
+    return tuple(steps)
+
+
+SAFETY_TEXT = "10 times"

@@ -76,13 +76,23 @@ def test_a_spring_anchored_off_the_axis_is_not_still_in_the_frame() -> None:
     assert modes.error is not None and "still depends on t" in modes.error
 
 
-def test_gyroscopic_coupling_is_refused_for_modes() -> None:
+def test_gyroscopic_coupling_is_answered_with_g() -> None:
+    """A bead held to the axis of a turntable by a spring, free in the plane (x, y in
+    the table's frame). By hand: L' = ½ m (ẋ² + ẏ²) + m Ω (x ẏ − y ẋ) − ½ (k − m Ω²)(x² + y²),
+    so c = m Ω (−y, x), G = 2 m Ω [[0, −1], [1, 0]] (Gᵢⱼ = ∂cᵢ/∂qⱼ − ∂cⱼ/∂qᵢ), and
+    det(K − ω²M + iωG) = (k − m Ω² − m ω²)² − 4 m² Ω² ω² = 0: ω = √(k/m) ± Ω, stable for
+    every Ω (k = 10, m = 1, Ω = 1: ω = √10 ∓ 1)."""
     text = SLOT.replace("coordinates: [r]", "coordinates: [x, y]").replace(
         "P: r*[cos(Omega*t), sin(Omega*t)]",
         "P: [x*cos(Omega*t) - y*sin(Omega*t), x*sin(Omega*t) + y*cos(Omega*t)]").replace(
         "about: {r: 0}", "about: {x: 0, y: 0}")
     (modes,) = solve(text)
-    assert modes.error is not None and "gyroscopic (Coriolis) coupling" in modes.error
+    assert modes.error is None, modes.error
+    a = modes.answers
+    assert sp.simplify(a.G - sp.Matrix([[0, -2 * m * Omega], [2 * m * Omega, 0]])) == sp.zeros(2)
+    assert a.stability.value == "stable"
+    assert sorted(float(x.subs({m: 1, k: 10, Omega: 1})) for x in a.frequencies) == \
+        pytest.approx([10**0.5 - 1, 10**0.5 + 1], rel=1e-12)
 
 
 @pytest.mark.parametrize(
