@@ -52,7 +52,7 @@ bodies:
 questions: [eom]
 """
     model = build_model(load_text(text, "top.yaml"))
-    (a, b), (da, db) = model.q, model.qd
+    (_, b), (da, db) = model.q, model.qd
     A, C, s = (model.symbols.parameters[n] for n in ("A", "C", "s"))
     T = kinetic_energy(model).total
     expected = A * (da**2 * sp.cos(b) ** 2 + db**2) / 2 + C * (s + da * sp.sin(b)) ** 2 / 2

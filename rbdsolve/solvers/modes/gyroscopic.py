@@ -196,10 +196,27 @@ def frequency_forms(P: sp.Expr, model: Model) -> tuple[list[sp.Expr], list[sp.Ex
             raise UnsolvedError("det(K − ω²M + iωG) has a factor without its mirror image in ω")
         used |= {i, mirror}
         chosen = _positive_of(poly, sp.Poly(factors[mirror], OMEGA), model)
-        out += [_positive(tidy(x), model) for x in _all_roots(chosen)]
         if chosen.degree() == 2:
+            out += _quadratic_frequencies(chosen, model)
             quadratics.append(chosen.as_expr())
+        else:
+            out += [_positive(tidy(x), model) for x in _all_roots(chosen)]
     return sorted(out, key=lambda w: sample(w, model.values).real), quadratics
+
+
+def _quadratic_frequencies(f: sp.Poly, model: Model) -> list[sp.Expr]:
+    """The roots of a ω² + b ω + c (its roots summing to a positive value) by the
+    quadratic formula, ω = (−b ± √(b² − 4ac))/(2a), as an exam writes them; where
+    c/a < 0 the roots have opposite signs and the smaller one is taken with its sign
+    turned: the gimbals' (√(C² s² + 4 A k) ∓ C s)/(2A)."""
+    a, b, c = f.all_coeffs()
+    if sign_of(a, model.decided_by) == -1:
+        a, b, c = -a, -b, -c
+    root = squares_out(sp.sqrt(sp.factor(tidy(b**2 - 4 * a * c))))
+    low, high = tidy((-b - root) / (2 * a)), tidy((-b + root) / (2 * a))
+    if sign_of(c / a, model.decided_by) == -1:
+        return [high, tidy((b + root) / (2 * a))]
+    return [low, high]
 
 
 def _positive_of(f: sp.Poly, mirror: sp.Poly, model: Model) -> sp.Poly:

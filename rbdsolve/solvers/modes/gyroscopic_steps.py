@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import configuration, descending, scaled_matrix
+from rbdsolve.form.arrange import configuration, scaled_matrix
 from rbdsolve.form.display import Relation
 from rbdsolve.form.labels import Labels
 from rbdsolve.form.printers import unicode_name
@@ -18,6 +18,7 @@ from rbdsolve.solvers.modes.answers import GyroscopicModesAnswers
 from rbdsolve.solvers.modes.routh import Linear
 from rbdsolve.solvers.shared.labels import labels_for
 from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.shared.signs import Inertia, matrix_inertia
 
 KEYS = ("mass_matrix", "stiffness_matrix", "gyroscopic_matrix", "displacement", "frequency", "growth_rate",
         "amplitude", "eigenvalue")
@@ -34,7 +35,8 @@ def gyroscopic_steps(a: GyroscopicModesAnswers, linear: Linear, model: Model) ->
     symbols = set(model.symbols.parameters.values())
     rates = [Relation(sp.Derivative(f, t), a.steady[n]) for n, f in zip(model.coordinate_names(),
                                                                         model.state.functions()) if n in a.steady]
-    where = ", with the steady rate" + ("s" if len(rates) > 1 else "") if rates else ""
+    where = (", the cyclic coordinate" + ("s" if len(rates) > 1 else "") + " at the steady rate"
+             + ("s" if len(rates) > 1 else "")) if rates else ""
     routh = bool(a.steady)
     how = (f"from Routh's function R = R₂ + R₁ + R₀ (by degree in the rates): {M} = ∂²R₂/∂q̇∂q̇, {G} from "
            f"R₁ = Σ cᵢ q̇ᵢ and {K} = −∂²R₀/∂q∂q" if routh else
@@ -50,12 +52,22 @@ def gyroscopic_steps(a: GyroscopicModesAnswers, linear: Linear, model: Model) ->
                          Relation(labels.symbol("stiffness_matrix"), scaled_matrix(a.K, symbols))),
              st.equation(f"{u} = {X} e^(i{w}t) gives ({K} − {w}²{M} + i{w}{G}) {X} = 0, a real {w} for an "
                          f"oscillation; solvable when det({K} − {w}²{M} + i{w}{G}) = 0:",
-                         Relation(sp.factor(a.characteristic.subs(sp.Symbol("omega"), labels.symbol("frequency"))),
-                                  sp.Integer(0)))]
+                         Relation(_factors(a.characteristic, labels.symbol("frequency")), sp.Integer(0)))]
     steps += _frequency_steps(a, labels)
     steps += _stability_steps(a, labels)
     steps += critical_steps(a.critical, "where the motion changes from stable to unstable")
     return tuple(steps)
+
+
+def _factors(P: sp.Expr, w: sp.Symbol) -> sp.Expr:
+    """P(ω) = 0 as a product of its factors over the parameters, each with a leading
+    coefficient the parameters make positive where they do, the constant left out."""
+    omega = sp.Symbol("omega")
+    out = []
+    for factor, power in sp.factor_list(P, omega)[1]:
+        lead = sp.Poly(factor, omega).LC()
+        out.append((-factor if lead.could_extract_minus_sign() else factor).subs(omega, w) ** power)
+    return sp.Mul(*out) if out else P
 
 
 def _frequency_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]:
@@ -79,11 +91,13 @@ def _stability_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]
         return []
     lam, w = labels.text("eigenvalue"), labels.text("frequency")
     conditions = [Relation(c, sp.Integer(0), ">") for c in a.stable_if]
+    which = ("that is when each of these is positive:" if conditions else
+             "which the parameters' signs decide: it is so for every value.")
     steps = [st.equation(f"In {lam} = {w}² the equation has degree {len(a.frequencies)}; the motion is stable to first "
                          f"order when its roots {lam} are all real, positive and distinct (every {w} real), "
-                         "that is when each of these is positive:", *conditions)]
-    verdict = {Stability.STABLE: "Every condition holds: the motion is stable (the spin holds it where K alone "
-                                 "would not).",
+                         + which, *conditions)]
+    held = "" if _positive_definite(a) else " (the gyroscopic terms hold it where K alone would not)"
+    verdict = {Stability.STABLE: f"Every condition holds: the motion is stable{held}.",
                Stability.UNSTABLE: "A condition fails: the motion is unstable.",
                Stability.UNDETERMINED: "Whether they hold depends on the parameters in a way not split here: give "
                                        "values, or state the signs under 'assumptions:'."}
@@ -95,6 +109,12 @@ def _stability_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]
         if cases:
             steps.append(st.note("Where that holds, case by case:", *[r for rel in cases for r in rel]))
     return steps
+
+
+def _positive_definite(a: GyroscopicModesAnswers) -> bool:
+    """Is K positive definite by the parameters' signs (then stable without G too)?"""
+    found = matrix_inertia(sp.Matrix(a.K), {})
+    return isinstance(found, Inertia) and found.positive == a.K.rows
 
 
 def _case(case, a: GyroscopicModesAnswers, labels: Labels) -> list[Relation]:

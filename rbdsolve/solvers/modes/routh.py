@@ -70,8 +70,9 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr])
     L = lagrangian(model)
     for k in rates:
         if L.has(model.q[k]):
-            raise UnsolvedError(f"a steady rate dot({names[k]}) is for a cyclic coordinate (one L does not hold, "
-                                f"as a top's spin angle); L holds {names[k]}: give its value instead, {names[k]}: VALUE")
+            raise UnsolvedError(f"a steady rate dot({names[k]}) is for a cyclic coordinate (one L does not "
+                                f"hold, as a top's spin angle); L holds {names[k]}: give its value instead, "
+                                f"{names[k]}: VALUE")
     kept = [k for k in range(len(names)) if k not in rates]
     R, momenta, steps = _routhian(L, model, rates, kept, at)
     q, qd = [model.q[k] for k in kept], [model.qd[k] for k in kept]
@@ -86,10 +87,9 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr])
     G = sp.Matrix(len(q), len(q), lambda i, j: derivative(c[i], q[j]) - derivative(c[j], q[i]))
     K = sp.Matrix(len(q), len(q), lambda i, j: -derivative(derivative(R0, q[i]), q[j]))
     functions = tuple(model.state.functions()[k] for k in kept)
+    G, K = (sp.ImmutableMatrix(x.xreplace(at).applyfunc(tidy)) for x in (G, K))
     return Linear(tuple(names[k] for k in kept), functions, {names[k]: at[model.q[k]] for k in kept},
-                  {names[k]: r for k, r in rates.items()}, momenta, M,
-                  sp.ImmutableMatrix(G.xreplace(at).applyfunc(tidy)), sp.ImmutableMatrix(K.xreplace(at).applyfunc(tidy)),
-                  steps)
+                  {names[k]: r for k, r in rates.items()}, momenta, M, G, K, steps)
 
 
 def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tuple[sp.Expr, dict, tuple]:
@@ -118,9 +118,9 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
                  for k, x in zip(cyclic, solved)]
     which = ", ".join(unicode_name(names[k]) for k in cyclic)
     steps = (
-        st.equation(f"{which} cyclic (L holds its rate, not itself): its momentum p = ∂L/∂q̇ is constant, "
-                    "its value that of the steady motion:", *shown),
-        st.equation(f"Routh's function R = L − Σ p q̇ over the cyclic coordinates, a Lagrangian for the others, "
+        st.equation(f"{which} {'is' if len(cyclic) == 1 else 'are'} cyclic (L holds its rate, not itself): "
+                    "its momentum p = ∂L/∂q̇ is constant, its value that of the steady motion:", *shown),
+        st.equation("Routh's function R = L − Σ p q̇ over the cyclic coordinates, a Lagrangian for the others, "
                     "with", *rate_rows),
     )
     return R, momenta, steps
