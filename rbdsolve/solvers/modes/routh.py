@@ -66,6 +66,7 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr])
     """M, G and K about the configuration ``at`` of the coordinates kept, the cyclic
     coordinates at the steady rates the question gives (Routh's reduction)."""
     names = model.coordinate_names()
+    _refuse_unknowns(model)
     rates = {names.index(n): model.symbols.scalar(e) for n, e in question.options.steady}
     L = lagrangian(model)
     for k in rates:
@@ -90,6 +91,17 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr])
     G, K = (sp.ImmutableMatrix(x.xreplace(at).applyfunc(tidy)) for x in (G, K))
     return Linear(tuple(names[k] for k in kept), functions, {names[k]: at[model.q[k]] for k in kept},
                   {names[k]: r for k, r in rates.items()}, momenta, M, G, K, steps)
+
+
+def _refuse_unknowns(model: Model) -> None:
+    """A spin rate among the 'unknowns' (a constant a steady_motion question finds) is not
+    given: small oscillations about a steady spin need it as a parameter."""
+    unknowns = [model.symbols.parameters[n] for n in model.problem.unknowns]
+    held = [str(u) for u in unknowns if any(u in b.rotation.free_symbols for b in model.bodies)]
+    if held:
+        raise UnsolvedError(f"'{held[0]}' is an unknown (a constant that 'steady_motion' finds), and the small "
+                            f"oscillations about a steady spin need it given: declare '{held[0]}' under "
+                            "'parameters' (with a value, or kept symbolic)")
 
 
 def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tuple[sp.Expr, dict, tuple]:
@@ -118,8 +130,10 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
                  for k, x in zip(cyclic, solved)]
     which = ", ".join(unicode_name(names[k]) for k in cyclic)
     steps = (
-        st.equation(f"{which} {'is' if len(cyclic) == 1 else 'are'} cyclic (L holds its rate, not itself): "
-                    "its momentum p = ∂L/∂q̇ is constant, its value that of the steady motion:", *shown),
+        st.equation(f"{which} {'is' if len(cyclic) == 1 else 'are'} cyclic (L holds "
+                    f"{'its rate' if len(cyclic) == 1 else 'their rates'}, not {'itself' if len(cyclic) == 1 else 'them'}): "
+                    f"{'its momentum' if len(cyclic) == 1 else 'each momentum'} p = ∂L/∂q̇ is constant, its value that of "
+                    "the steady motion:", *shown),
         st.equation("Routh's function R = L − Σ p q̇ over the cyclic coordinates, a Lagrangian for the others, "
                     "with", *rate_rows),
     )
@@ -131,6 +145,9 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
     what = "−R₀ (Routh's function without rates)" if routh else "V − T₀"
     for name, qi in zip(names, q):
         residual = tidy(derivative(R0, qi).xreplace(at))
+        if residual.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise UnsolvedError(f"∂({what})/∂{unicode_name(name)} has no value at this configuration: the "
+                                "coordinates are singular there" + (_euler_hint({0: None}, names) if routh else ""))
         if residual != 0 and sp.simplify(residual) != 0:
             shown = to_unicode(model.readable(-residual)) if sp.count_ops(residual) <= 30 else "not zero"
             raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there")
