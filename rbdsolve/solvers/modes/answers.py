@@ -157,6 +157,6 @@ class NumericGyroscopicModesAnswers:
     frequencies: tuple[float, ...]  # ω > 0 of the roots on the axis, ascending
     stability: Stability  # stable (every root on the axis within its bound) or unstable
     growth_rates: tuple[float, ...]  # Re s > 0 of the roots off the axis, ascending
-    roots: tuple[complex, ...]  # every s of (s² M + s G + K) X = 0
+    roots: tuple[tuple[float, float], ...]  # every s of (s² M + s G + K) X = 0, as (re, im)
     root_errors: tuple[float, ...]  # the bound on |ŝ − s| of each root
     neutral: int = 0  # directions with s = 0

@@ -83,13 +83,21 @@ def spin_notes(question: Question, model: Model) -> tuple[str, ...]:
 
 def solve(question: Question, model: Model) -> Solution:
     """The exact route's answer about the steady state the question names."""
-    if question.options.each:
-        raise UnsolvedError("'about: each' is not available where the scene has gyroscopic terms: name the steady "
-                            "state, about: {…}")
+    refuse_options(question)
     at, notes = _steady_state(question, model)
     linear = linearize(question, model, at)
     answers = gyroscopic_modes(linear, model)
     return Solution("modes", Route.EXACT, answers, gyroscopic_steps(answers, linear, model), warnings=notes)
+
+
+def refuse_options(question: Question) -> None:
+    """What the gyroscopic route does not answer, said rather than ignored (both routes)."""
+    if question.options.each:
+        raise UnsolvedError("'about: each' is not available where the scene has gyroscopic terms: name the steady "
+                            "state, about: {…}")
+    if question.options.check_amplitudes:
+        raise UnsolvedError("'check_amplitudes' simulates normal modes, and the scene has gyroscopic terms (its "
+                            "modes are not normal modes): ask without it")
 
 
 def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:

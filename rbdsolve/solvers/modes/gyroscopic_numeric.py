@@ -27,6 +27,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
+from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
 from rbdsolve.solvers.modes.routh import linearize
 from rbdsolve.solvers.shared.numeric_model import to_floats
@@ -37,9 +38,7 @@ SAFETY = 10.0  # the bound is this many times the distance to the 50-digit eigen
 
 def solve(question: Question, model: Model) -> Solution:
     """The floating-point route's answer about the steady state the question names."""
-    if question.options.each:
-        raise UnsolvedError("'about: each' is not available where the scene has gyroscopic terms: name the steady "
-                            "state, about: {…}")
+    refuse_options(question)
     at, notes = _steady_state(question, model)
     linear = linearize(question, model, at)
     M, G, K = (to_floats(x, model.values) for x in (linear.M, linear.G, linear.K))
@@ -54,7 +53,7 @@ def solve(question: Question, model: Model) -> Solution:
         numbers, {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in linear.steady.items()},
         _rows(M), _rows(G), _rows(K), tuple(frequencies), stability,
         tuple(sorted({round(float(x), 12): float(x) for x in s.real[s.real - bounds > 0]}.values())),
-        tuple(complex(x) for x in s), tuple(float(b) for b in bounds), neutral)
+        tuple((float(x.real), float(x.imag)) for x in s), tuple(float(b) for b in bounds), neutral)
     estimate = max((float(b / abs(x)) for x, b in zip(s, bounds) if abs(x) > b), default=None)
     return Solution("modes", Route.NUMERIC, answers, numeric_gyroscopic_steps(answers, linear, model),
                     warnings=notes, error_estimate=estimate)

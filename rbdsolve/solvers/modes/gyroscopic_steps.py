@@ -148,8 +148,8 @@ def numeric_gyroscopic_steps(a, linear: Linear, model: Model) -> tuple[st.Step, 
                          Relation(labels.symbol("stiffness_matrix"), floats(a.K))),
              st.equation(f"u = X e^(st) gives (s²{M} + s{G} + {K}) X = 0, solved in its first-order form by the QZ "
                          f"algorithm (scipy.linalg.eig); s = i{w} on the imaginary axis is an oscillation:",
-                         *[Relation(sp.Symbol(f"s_{i}"), sp.Float(z.real, 15) + sp.I * sp.Float(z.imag, 15))
-                           for i, z in enumerate(a.roots, 1)])]
+                         *[Relation(sp.Symbol(f"s_{i}"), sp.Float(re, 15) + sp.Symbol("i") * sp.Float(im, 15))
+                           for i, (re, im) in enumerate(a.roots, 1)])]
     if a.frequencies:
         steps.append(st.result("Frequencies:", *[Relation(labels.symbol("frequency", i), sp.Float(x, 15))
                                                 for i, x in enumerate(a.frequencies, 1)]))

@@ -167,3 +167,16 @@ questions:
     assert modes.error is None, modes.error
     assert modes.answers.neutral == 1
     assert [sp.simplify(w - 2 * s) for w in modes.answers.frequencies] == [0]
+
+
+def test_both_routes_write_strict_json() -> None:
+    import json
+
+    from rbdsolve.render.json import report_object
+
+    values = "values: {m: 1, h: 0.1, A: 0.02, C: 0.01, g: 9.81, s: 10}\n"
+    for route in (RouteChoice.EXACT, RouteChoice.NUMERIC):
+        report = solve_problem(build_model(load_text(values + FREE_TOP, "top.yaml")), Options(route=route))
+        data = json.loads(json.dumps(report_object(report), allow_nan=False))
+        answers = data["results"][0]["answers"]
+        assert answers["stability"] == "unstable" and answers["steady"]["phi"] in ("s", 10.0)
