@@ -176,7 +176,7 @@ class Model:
         parts = [*positions, *(b.rotation for b in self.bodies if not b.turns),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
-        return _holds(parts, t) or any(_turning_holds_time(b, self.state) for b in self.bodies if b.turns)
+        return _holds(parts, t) or any(turning_holds_time(b, self.state) for b in self.bodies if b.turns)
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]
@@ -268,7 +268,7 @@ def _timed(problem: Problem) -> bool:
     return any(not timed.isdisjoint(e.names()) for e in exprs)
 
 
-def _turning_holds_time(body: RigidBody, state: State) -> bool:
+def turning_holds_time(body: RigidBody, state: State) -> bool:
     """Does a body turned by a sequence bring t into T? Its rotational energy
     ω·J_scene ω, not its rotation: a top spun at a constant rate about its axis of
     symmetry (a last turn [z, s t]) turns with t, yet its T holds none (model/rotation.py).

@@ -60,10 +60,14 @@ LAMBDA = sp.Symbol("lamda")
 
 def applies(question: Question, model: Model) -> bool:
     """Steady rates in 'about' (Routh), or terms linear in the rates that couple the
-    coordinates (G ≠ 0 somewhere): then the gyroscopic route answers."""
+    coordinates (G ≠ 0 somewhere): then the gyroscopic route answers. Only a body turned
+    by a sequence of turns (a spin) or a frame's Coriolis terms bring such terms into a
+    scene without t."""
     if question.options.steady:
         return True
-    return len(model.q) > 1 and has_gyroscopic_terms(model) and gyroscopic_matrix(model) != sp.zeros(len(model.q))
+    if len(model.q) < 2 or not (model.gyroscopic or any(b.turns for b in model.bodies)):
+        return False  # only these can have such terms in a still scene: T is not built otherwise
+    return has_gyroscopic_terms(model) and gyroscopic_matrix(model) != sp.zeros(len(model.q))
 
 
 def spin_notes(question: Question, model: Model) -> tuple[str, ...]:
@@ -108,7 +112,11 @@ def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ..
         values = dict(options.about)
         return {q: model.symbols.scalar(values[n]) for q, n in zip(model.q, model.coordinate_names())
                 if n in values}, ()
-    return exact_equilibrium(question, model)
+    try:
+        return exact_equilibrium(question, model)
+    except UnsolvedError as exc:
+        raise UnsolvedError(f"{exc} (stable by K alone: with gyroscopic terms an equilibrium unstable by K may be "
+                            "held by the spin: name it, about: {…})") from None
 
 
 def gyroscopic_modes(linear: Linear, model: Model) -> GyroscopicModesAnswers:

@@ -22,7 +22,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.model.build import Model
+from rbdsolve.model.build import Model, turning_holds_time
+from rbdsolve.model.state import t
 from rbdsolve.model.energy import potential_energy
 from rbdsolve.model.frames import FrameMotion, frame_motion, in_frame
 from rbdsolve.problem.schema import Question
@@ -95,6 +96,13 @@ def require_static(model: Model, what: str) -> None:
     """Equilibria and small oscillations of a scene that moves by itself (t appears in
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
     if model.depends_on_time():
+        spun = [b.name for b in model.bodies if b.turns and any(angle.has(t) for _, angle in b.turns)
+                and turning_holds_time(b, model.state)]
+        if spun:
+            raise UnsolvedError(f"body '{spun[0]}' turns at a rate (an angle with t) about an axis that is not one of "
+                                "symmetry of its inertia, so its T changes with t and the scene has no steady state: "
+                                "a steady spin is one about an axis of symmetry (a disk's or a top's axis; "
+                                "docs/format.md, spinning bodies)")
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
                             "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
                             "question's 'frame' option)")

@@ -180,3 +180,46 @@ def test_both_routes_write_strict_json() -> None:
         data = json.loads(json.dumps(report_object(report), allow_nan=False))
         answers = data["results"][0]["answers"]
         assert answers["stability"] == "unstable" and answers["steady"]["phi"] in ("s", 10.0)
+
+
+def test_a_spin_about_an_axis_that_is_not_of_symmetry_is_named() -> None:
+    """A box (three different moments) spun at s t about its own z: T changes with t."""
+    text = DRIVEN_TOP.replace("inertia: [A - m*h**2, A - m*h**2, C]", "inertia: [A - m*h**2, 2*A, C]")
+    (modes,) = solutions(text)
+    assert "not one of symmetry of its inertia" in modes.error and "body 'top'" in modes.error
+
+
+def test_without_about_the_first_equilibrium_stable_by_k_is_taken() -> None:
+    """The hanging top, b = π: by hand M = A 1, K = m g h 1, G = −C s [[0, 1], [−1, 0]]
+    (cos b = −1), ω = (√(C² s² + 4 A m g h) ∓ C s)/(2A), stable for every s."""
+    (modes,) = solutions(DRIVEN_TOP.replace("  - modes: {about: {a: 0, b: 0}}", "  - modes"))
+    a = modes.answers
+    assert a.about == {"a": 0, "b": sp.pi} and a.stability.value == "stable"
+    D = C**2 * s**2 + 4 * A * m * g * h
+    assert all(sp.simplify(x - y) == 0 for x, y in zip(a.frequencies, [(sp.sqrt(D) - C * s) / (2 * A),
+                                                                       (sp.sqrt(D) + C * s) / (2 * A)]))
+
+
+def test_the_modes_of_a_gyroscopic_scene_are_not_drawn() -> None:
+    from rbdsolve.errors import UnsolvedError
+    from rbdsolve.render.drawing.mode_shapes import mode_shapes
+
+    text = """
+parameters: {m: mass, k: stiffness, Omega: rate}
+values: {m: 1, k: 10, Omega: 1}
+coordinates: [x, y]
+frames:
+  table: {axis: z, rate: Omega}
+points:
+  A: [0, 0]
+  P: [x*cos(Omega*t) - y*sin(Omega*t), x*sin(Omega*t) + y*cos(Omega*t)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+springs:
+  s: {between: [P, A], stiffness: k}
+questions:
+  - modes: {frame: table, about: {x: 0, y: 0}}
+"""
+    model = build_model(load_text(text, "slot.yaml"))
+    with pytest.raises(UnsolvedError, match="whirls, not normal modes"):
+        mode_shapes(model, model.problem.questions[0])
