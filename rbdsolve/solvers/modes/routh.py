@@ -30,7 +30,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import kinetic_energy, potential_energy
@@ -122,22 +122,32 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
                             "(∂²L/∂q̇² singular there): Routh's reduction needs it")
     b = sp.Matrix(dL).xreplace({x: 0 for x in cd})
     solved = (A.inv() * (sp.Matrix(p) - b)).applyfunc(tidy)
-    R = (L - sum(pi * x for pi, x in zip(p, cd))).xreplace(dict(zip(cd, solved)))
-    R = sp.expand(R.xreplace(dict(zip(p, values))))
+    routhian = (L - sum(pi * x for pi, x in zip(p, cd))).xreplace(dict(zip(cd, solved)))
+    R = sp.expand(routhian.xreplace(dict(zip(p, values))))
     momenta = {names[k]: v for k, v in zip(cyclic, values)}
     shown = [Relation(pi, model.to_time(d), more=(v,)) for pi, d, v in zip(p, map(tidy, dL), values)]
     rate_rows = [Relation(model.state.functions()[k].diff(sp.Symbol("t", real=True)), model.to_time(x))
                  for k, x in zip(cyclic, solved)]
+    one = len(cyclic) == 1
     which = ", ".join(unicode_name(names[k]) for k in cyclic)
+    written = _by_rates(routhian, [model.qd[k] for k in kept])
+    rows = [Relation(sp.Symbol("R"), model.to_time(written))] if sp.count_ops(written) <= MAX_SHOWN_OPS else []
     steps = (
-        st.equation(f"{which} {'is' if len(cyclic) == 1 else 'are'} cyclic (L holds "
-                    f"{'its rate' if len(cyclic) == 1 else 'their rates'}, not {'itself' if len(cyclic) == 1 else 'them'}): "
-                    f"{'its momentum' if len(cyclic) == 1 else 'each momentum'} p = ∂L/∂q̇ is constant, its value that of "
-                    "the steady motion:", *shown),
+        st.equation(f"{which} {'is' if one else 'are'} cyclic (L holds {'its rate' if one else 'their rates'}, "
+                    f"not {'itself' if one else 'them'}): {'its momentum' if one else 'each momentum'} p = ∂L/∂q̇ "
+                    "is constant, its value that of the steady motion:", *shown),
         st.equation("Routh's function R = L − Σ p q̇ over the cyclic coordinates, a Lagrangian for the others, "
-                    "with", *rate_rows),
+                    "with", *rate_rows, *rows),
     )
     return R, momenta, steps
+
+
+MAX_SHOWN_OPS = 80  # a longer Routhian is left out of the steps (its M, G and K follow)
+
+
+def _by_rates(expr: sp.Expr, rates: list) -> sp.Expr:
+    """Written as Σ (coefficient) × (monomial in the rates), each coefficient tidied."""
+    return sp.Add(*[mono * coefficient for mono, coefficient in collect_in(tidy(expr), rates).items()])
 
 
 def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], routh: bool) -> None:
