@@ -89,8 +89,8 @@ def _jacobian_roots(method, q, values: dict, state0: list) -> list[complex]:
 
 
 def _case_at(answers, point: dict) -> str:
-    held = [c.stability.value for c in answers.cases if bool(c.when.xreplace(point))]
-    assert len(held) == 1, (answers.cases, point)
+    held = [c.stability.value for c in answers.stability_cases if bool(c.when.xreplace(point))]
+    assert len(held) == 1, (answers.stability_cases, point)
     return held[0]
 
 
@@ -119,7 +119,7 @@ def test_sleeping_top_against_a_simulation_of_its_linearized_mechanics(seed) -> 
             got = sorted(float(w.xreplace(point)) for w in answers.frequencies)
             assert got == pytest.approx(expected, rel=1e-8)
         else:
-            rate = next(c.growth_rate for c in answers.cases if c.stability.value == "unstable")
+            rate = next(c.growth_rate for c in answers.stability_cases if c.stability.value == "unstable")
             assert float(rate.xreplace(point)) == pytest.approx(growth, rel=1e-7)
 
 

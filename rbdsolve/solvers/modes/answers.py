@@ -138,7 +138,7 @@ class GyroscopicModesAnswers:
     frequencies: tuple[sp.Expr, ...]  # ω > 0, ascending; real where the motion is stable
     stability: Stability  # stable, unstable, depends (see cases), undetermined, neutral
     stable_if: tuple[sp.Expr, ...]  # each > 0 where stable (the signs the parameters decide left out)
-    cases: tuple[GyroscopicCase, ...] = ()
+    stability_cases: tuple[GyroscopicCase, ...] = ()  # with stability DEPENDS, or where the values decide it
     critical: tuple[CriticalValue, ...] = ()
     neutral: int = 0  # directions with ω = 0
 

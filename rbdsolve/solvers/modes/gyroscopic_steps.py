@@ -101,7 +101,7 @@ def _stability_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]
                Stability.UNSTABLE: "A condition fails: the motion is unstable.",
                Stability.UNDETERMINED: "Whether they hold depends on the parameters in a way not split here: give "
                                        "values, or state the signs under 'assumptions:'."}
-    cases = [_case(c, a, labels) for c in a.cases]
+    cases = [_case(c, a, labels) for c in a.stability_cases]
     if a.stability is Stability.DEPENDS:
         steps.append(st.result("Case by case:", *[r for rel in cases for r in rel]))
     else:
