@@ -150,7 +150,8 @@ def test_a_rod_pinned_at_its_centre_turns_across_the_shaft() -> None:
     θ = ±π/2 stable with λ = Ω² (by hand), θ = 0, π unstable."""
     text = DISK_ON_SHAFT.replace("r: radius", "l: length").replace(
         "  G: r*[sin(theta)*cos(Omega*t), sin(theta)*sin(Omega*t), -cos(theta)]\n", "  G: [0, 0, 0]\n").replace(
-        "disk: {shape: disk, mass: m, radius: r, at: G, axis: x,", "rod: {shape: rod, mass: m, length: l, at: G, axis: z,")
+        "disk: {shape: disk, mass: m, radius: r, at: G, axis: x,",
+        "rod: {shape: rod, mass: m, length: l, at: G, axis: z,")
     text = text.replace("about: {theta: 0}", "about: {theta: pi/2}")
     equilibria, modes = solve(text)
     found = {e.at["theta"]: e.stability.value for e in equilibria.answers.equilibria}
