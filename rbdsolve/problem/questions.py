@@ -108,10 +108,14 @@ class QuestionReader:
                 raise InputError("'check_amplitudes' takes one equilibrium; with 'about: each' ask it in a "
                                  "question of its own", get("check_amplitudes").loc)
             number = self.equilibrium_number(about) if about and not each else None
-            point = self.equilibrium(about) if about and number is None and not each else None
+            point, steady = self.steady_state(about) if about and number is None and not each else (None, ())
+            if steady and get("check_amplitudes") is not None:
+                raise InputError("'check_amplitudes' simulates the scene's own equations about an equilibrium; it is "
+                                 "not available about a steady spin (a rate dot(q) in 'about')",
+                                 get("check_amplitudes").loc)
             return Question(kind, ModesOptions(point, self.frame(get("frame")),
                                                amplitudes(get("check_amplitudes"), get("frame")), equilibrium=number,
-                                               each=each, loc=about.loc if about else None), key.loc)
+                                               each=each, loc=about.loc if about else None, steady=steady), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:
@@ -166,6 +170,24 @@ class QuestionReader:
 
     def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
         return self.reading.coordinate_values(node, "an equilibrium", complete=True)
+
+    def steady_state(self, node: Node) -> tuple[tuple[tuple[str, ex.Expr], ...], tuple[tuple[str, ex.Expr], ...]]:
+        """'about': a value for every coordinate, except a cyclic one (a spin angle) that
+        may be given by its steady rate instead, dot(phi): s: (values, rates). Without a
+        rate, read as an equilibrium (every coordinate, its messages unchanged)."""
+        if not isinstance(node, Map) or not any(k.text.strip().startswith("dot") for k, _ in node.entries):
+            return self.equilibrium(node), ()
+        given = self.reading.state(node, "an equilibrium or a steady spin", (0, 1))
+        values = tuple((v.coordinate, v.value) for v in given if v.order == 0)
+        rates = tuple((v.coordinate, v.value) for v in given if v.order == 1)
+        held = {name for name, _ in (*values, *rates)}
+        missing = [name for name in self.reading.coordinates if name not in held]
+        if missing:
+            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)} (a cyclic "
+                             "coordinate, such as a top's spin angle, may be given by its steady rate instead, "
+                             f"dot({missing[0]}): RATE)", node.loc)
+        kept = {name for name, _ in rates}
+        return tuple((n, e) for n, e in values if n not in kept), rates
 
     def body(self, opts: Map | None, key: Scalar, kind: QuestionKind) -> str:
         """The body a question is about: 'body: NAME', or the scene's only body."""

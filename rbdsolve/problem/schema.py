@@ -420,6 +420,7 @@ class ModesOptions:
     equilibrium: int | None = None  # 'about: {equilibrium: N}', as 'equilibria' numbers them; neither: the stable one
     each: bool = False  # 'about: each': the modes at every equilibrium
     loc: Location | None = None  # where 'about' is
+    steady: tuple[tuple[str, Expr], ...] = ()  # 'about: {dot(phi): s}': cyclic coordinates' steady rates
 
 
 @dataclass(frozen=True)

@@ -38,7 +38,7 @@ from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
-from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.frames import require_static, spin_warnings
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of, symbolic_sign
@@ -392,7 +392,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     classified = [with_cases(classify_listed(model, x), model, x.at.values()) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
-    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]
+    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model)]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)

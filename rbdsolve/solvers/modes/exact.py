@@ -37,6 +37,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.modes import gyroscopic
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
@@ -67,9 +68,12 @@ def _det(labels) -> sp.Expr:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
+    if gyroscopic.applies(question, model):
+        return gyroscopic.solve(question, model)
     if question.options.each:
         return _at_each(model)
     at, notes = exact_equilibrium(question, model)
+    notes += gyroscopic.spin_notes(question, model)
     answers, steps = modes_at(at, model)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
 
