@@ -30,6 +30,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import hessian, memoized, potential_energy
+from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
@@ -260,7 +261,7 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
 
 def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
-    H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
+    H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
     inertia = matrix_inertia(H, model.decided_by)

@@ -35,6 +35,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
@@ -106,10 +107,13 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true) -> tuple[ModesAn
     ``where``: where it exists (a case outside it is dropped)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
-    K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    K = sp.ImmutableMatrix(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)))
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
     if singular:
         raise UnsolvedError(singular)
+    if K.has(sp.DiracDelta):
+        raise UnsolvedError("K = ∂²V/∂q∂q does not exist at this configuration: a spring's length |…| is zero "
+                            "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [pair.lam for pair in spectrum.pairs]
     motions, cases, criticals = _motions(eigenvalues, K, model, where)

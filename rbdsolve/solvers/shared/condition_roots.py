@@ -63,6 +63,8 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     # in sort order, not the set's (the hash seed's): of two forms of one root the first
     # is kept, and two that simplify cannot tell equal keep this order among equal values
     for r in sorted(found, key=sp.default_sort_key):
+        if r.has(sp.DiracDelta, sp.sign, sp.Heaviside):
+            return None  # not a number at a sample (DiracDelta(0) where a spring passes zero length)
         turns = {_turns_into(complex(sp.N(r.xreplace(point), 20)), low, high, p in angles) for point in points}
         if turns == {None}:
             continue  # never real inside the range

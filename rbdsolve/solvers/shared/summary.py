@@ -11,6 +11,7 @@ import sympy as sp
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.quantity import ACCELERATION
 from rbdsolve.problem.usage import unused_parameters
@@ -49,6 +50,7 @@ def summarize_model(model: Model) -> ModelSummary:
         return ModelSummary(model.state.functions(), model.to_time(T), None, tuple(steps))
     V = potential_energy(model)
     steps += _potential_steps(V, model)
+    steps += _two_sided(model)
     steps += _unturned(model)
     return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
 
@@ -205,6 +207,37 @@ def swing_warnings(model: Model) -> tuple[str, ...]:
     """The warnings for bodies that evidently swing without an angle (``Unturned`` with
     a pivot), for every question that uses T."""
     return tuple(u.text() for u in unturned(model) if u.pivot is not None)
+
+
+def _two_sided(model: Model) -> list[st.Step]:
+    """A note for each spring length |u| whose sign at the reference configuration is
+    not known (model/spring_length.py): the two cases, in words, and what decides them."""
+    out = []
+    at = ", ".join(f"{n} = 0" for n in model.coordinate_names())
+    for spring in model.springs:
+        for length in spring.lengths:
+            if length.sign is not None:
+                continue
+            u = model.readable(length.inside)
+            shown, minus = to_unicode(u), to_unicode(tidy(-u))
+            here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
+            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
+                   f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
+                   f"'assumptions:', such as {_positive(here)}, to take one side)")
+            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
+                               f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
+                               "keep |…| and sign(…)"))
+    return out
+
+
+def _positive(value: sp.Expr) -> str:
+    """value > 0 as an assumption is written in a file: [l > h] for l − h."""
+    terms = sp.Add.make_args(value)
+    below = [-x for x in terms if x.could_extract_minus_sign()]
+    above = [x for x in terms if not x.could_extract_minus_sign()]
+    if above and below:
+        return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
+    return f"[{value} > 0]"
 
 
 def unused_warnings(model: Model) -> tuple[str, ...]:
