@@ -183,3 +183,27 @@ def test_for_a_mass() -> None:
     _critical(answers, "M", s["m"] * s["l"] / (2 * s["a"]), s)
     _sampled(answers, s, _balance_point,
              lambda v: "oscillation" if v["m"] * v["l"] / 2 - v["M"] * v["a"] > 0 else "growth")
+
+
+# A heavy top at the tilt θ (problems/conditions): the two precession rates are real where
+# D = J3² s² − 4 (J1 + m h² − J3) m g h cos θ ≥ 0 (by hand, its golden file), in the spin s
+# by kind (a rate), and, asked 'for: g', where g ≤ g_c = J3² s²/(4 (J1 + m h² − J3) m h cos θ).
+TOP = (PROBLEMS / "conditions" / "heavy-top-precession-rates.yaml").read_text()
+
+
+def test_for_names_the_parameter_a_steady_motion_exists_in() -> None:
+    s = _symbols("m h J1 J3 g theta spin")
+    answers = _answers(TOP.replace("solve_for: Omega}", "solve_for: Omega, for: g}"), "steady_motion")
+    want = s["J3"] ** 2 * s["spin"] ** 2 / (4 * (s["J1"] + s["m"] * s["h"] ** 2 - s["J3"]) * s["m"] * s["h"]
+                                            * sp.cos(s["theta"]))
+    _critical(answers, "g", want, s)
+    rng = random.Random(38)
+    for _ in range(20):
+        v = {"m": rng.uniform(0.1, 3), "h": rng.uniform(0.1, 2), "J3": rng.uniform(0.1, 1), "theta": rng.uniform(0.1, 1.5),
+             "spin": rng.uniform(1, 30)}
+        v["J1"] = v["J3"] * rng.uniform(1.1, 3)
+        v["g"] = float(want.subs({s[n]: x for n, x in v.items()})) * rng.choice([rng.uniform(0.2, 0.98), rng.uniform(1.02, 5)])
+        D = v["J3"] ** 2 * v["spin"] ** 2 - 4 * (v["J1"] + v["m"] * v["h"] ** 2 - v["J3"]) * v["m"] * v["g"] * v["h"] \
+            * math.cos(v["theta"])
+        for branch in answers.branches:
+            assert bool(_read(branch.exists_when, s).subs({s[n]: x for n, x in v.items()})) == (D >= 0)
