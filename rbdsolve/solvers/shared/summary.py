@@ -10,7 +10,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.quantity import ACCELERATION
@@ -213,7 +213,7 @@ def _two_sided(model: Model) -> list[st.Step]:
     """A note for each spring length |u| whose sign at the reference configuration is
     not known (model/spring_length.py): the two cases, in words, and what decides them."""
     out = []
-    at = ", ".join(f"{n} = 0" for n in model.coordinate_names())
+    at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
     for spring in model.springs:
         for length in spring.lengths:
             if length.sign is not None:
