@@ -29,7 +29,6 @@ from typing import Mapping
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
-from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import common_scale, configuration
 from rbdsolve.form.display import Relation
@@ -41,19 +40,17 @@ from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
+from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.equilibria.exact import decided_inertia, listing
-from rbdsolve.solvers.shared.present_conditions import condition_relations, condition_text
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped, \
-    with_amplitude_check
+from rbdsolve.solvers.equilibria.exact import listing
+from rbdsolve.solvers.shared.present_conditions import condition_relations
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
-from rbdsolve.solvers.shared.conditions import (asked, changes, critical_values, exists_when, existing, partition,
-                                                 what_decides)
+from rbdsolve.solvers.shared.conditions import asked, critical_values
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.signs import Inertia, Undecided, sign_of
 from rbdsolve.solvers.shared.singular import exact_reason
 from rbdsolve.solvers.shared.values import sample
 
@@ -76,37 +73,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         return _at_each(model, first)
     at, notes = exact_equilibrium(question, model)
     where = existence(at, model, first)
-    absent = _absent(at, where, model)
-    if absent:
-        raise UnsolvedError(absent)
+    missing = absent(at, where, model)
+    if missing:
+        raise UnsolvedError(missing)
     answers, steps = modes_at(at, model, where, first)
     if where is not sp.true:  # a case outside it is left out: say so
         steps = (st.note("The equilibrium exists only where the following holds; its small motions are "
                          "answered there:", *condition_relations(where)), *steps)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
-
-
-def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
-    """Where the equilibrium ``at`` is real (θ = acos(g/(R Ω²)) only where Ω ≥ √(g/R)),
-    solved for ``first`` where it can; true where it always is, or cannot be split."""
-    found = exists_when(at.values(), model, first=first)
-    return found.condition if found else sp.true
-
-
-def _absent(at: dict, where: sp.Basic, model: Model) -> str | None:
-    """Why the equilibrium ``at`` does not exist at the given values (a coordinate that is
-    not a real number there: acos(g/(R Ω²)) below Ω_c), or None: no modes of it."""
-    names = dict(zip(model.q, model.coordinate_names()))
-    for q, value in at.items():
-        number = value.xreplace(dict(model.values))
-        if not model.values or number.free_symbols:
-            continue
-        z = complex(sp.N(number, 20))
-        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
-            needs = "" if where is sp.true else f": it exists only where {condition_text(where)}"
-            return (f"the equilibrium {unicode_name(names[q])} = {to_unicode(value)} does not exist at the parameter "
-                    f"values ({unicode_name(names[q])} is not a real number there){needs}")
-    return None
 
 
 def _at_each(model: Model, first: sp.Symbol | None) -> Solution:
@@ -151,7 +125,7 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
                             "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [pair.lam for pair in spectrum.pairs]
-    motions, cases, criticals = _motions(eigenvalues, K, model, where, first)
+    motions, cases, criticals = kinds(eigenvalues, K, model, where, first)
     frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for pair, mo in zip(spectrum.pairs, motions))
     shapes = _shapes(spectrum, model.values)
@@ -334,72 +308,6 @@ def _ordering_point(model: Model) -> dict:
         return dict(model.values)
     point = admissible_sample(model.assumptions, model.symbols, random.Random(38), fixed=model.values)
     return point or dict(model.values)
-
-
-def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
-             first: sp.Symbol | None = None):
-    """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
-    parameters decide (its critical values: ``shared/conditions.py``), those outside
-    ``where`` the equilibrium exists or outside the assumptions left out (a λ left with
-    one case is of that kind: an off-axis equilibrium that exists only above Ω_c
-    oscillates there). A λ has cases only where it has two or more; then its kind is
-    ``depends``, or, where the values decide its sign, the kind of the case they fall in. When a λ's
-    sign is not decided by itself, Sylvester's law of inertia decides it: with M
-    positive definite, K a = λ M a has as many positive, zero and negative λ as K has
-    eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
-    every λ positive."""
-    counts = decided_inertia(K, model)
-    motions, cases, criticals = [], [], []
-    for lam in eigenvalues:
-        sign = _decided_sign(lam, model)
-        if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
-                and counts.positive + counts.zero + counts.negative == len(eigenvalues):
-            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
-        if isinstance(sign, Undecided):
-            found = _cases(lam, model, where, first)
-            if found is None:
-                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
-                                    f"way rbdsolve cannot split into cases; {what_decides(lam)}")
-            if len(found[0]) == 1:
-                motions.append(found[0][0].kind)
-                cases.append(())
-                continue
-            motions.append(Motion.DEPENDS)
-            cases.append(found[0])
-            criticals += found[1]
-            continue
-        motions.append(KIND[sign])
-        # decided by the values: the cases still say where that holds, as for equilibria
-        open_ = model.values and isinstance(sign_of(lam, model.assumed), Undecided)
-        found = _cases(lam, model, where, first) if open_ else None
-        kept = found if found and len(found[0]) > 1 else None
-        cases.append(kept[0] if kept else ())
-        criticals += kept[1] if kept else []
-    return tuple(motions), tuple(cases), criticals
-
-
-KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
-
-
-def _decided_sign(lam: sp.Expr, model: Model) -> int | Undecided:
-    """λ's sign by the values and the assumptions' substitutions, else by the assumptions
-    alone (as ``decided_inertia``: R given drops R = r + δ)."""
-    sign = sign_of(lam, model.decided_by)
-    if isinstance(sign, Undecided) and model.assumed:
-        alone = sign_of(lam, model.assumed)
-        return sign if isinstance(alone, Undecided) else alone
-    return sign
-
-
-def _cases(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None = None):
-    """(cases, critical values) for a λ whose sign changes at critical values, the
-    pieces where the equilibrium does not exist (or the assumptions rule out) left out;
-    None where it cannot be split (or a piece lies partly where it exists)."""
-    found = partition(lam, model, first)
-    kept = existing(found.pieces, where, model) if found else None
-    if not kept:
-        return None
-    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))
 
 
 def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:
