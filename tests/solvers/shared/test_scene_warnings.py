@@ -10,8 +10,7 @@ import sympy as sp
 
 from conftest import PROBLEMS
 from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file, load_text
-from rbdsolve.problem.usage import unused_parameters
+from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
 
 # A rod (m, l) hung from an unnamed pivot at the origin by its end, G = l/2 (sin θ, −cos θ),
@@ -87,15 +86,3 @@ def test_a_parameter_used_nowhere_is_warned_about() -> None:
     for solution in _report(text).solutions:
         assert any(w.startswith("parameter 'c' is declared but used nowhere") and "gravity:" not in w
                    for w in solution.warnings)
-
-
-def test_a_parameter_used_only_in_a_question_is_used() -> None:
-    text = HUNG.replace("g: acceleration of gravity}", "g: acceleration of gravity, theta0: start}").replace(
-        "from_rest: {theta: pi/2}", "from_rest: {theta: theta0}")
-    assert unused_parameters(load_text(text, "scene.yaml")) == ()
-
-
-def test_no_example_declares_a_parameter_it_does_not_use() -> None:
-    files = [p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml")]
-    assert {str(p.relative_to(PROBLEMS)): [x.name for x in unused_parameters(load_file(p))]
-            for p in files if unused_parameters(load_file(p))} == {}
