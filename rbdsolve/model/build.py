@@ -18,6 +18,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
+from rbdsolve.model.spring_length import signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
@@ -98,6 +99,12 @@ class SpringModel:
     stiffness: sp.Expr
     stretch: sp.Expr  # |r_a − r_b| − l₀ for a linear spring, α − α₀ for a torsional one
     source: Spring
+    lengths: tuple = ()  # model/spring_length.py Length's: each |u| of the length, written ±u where its sign is known
+
+    def signed(self, expr: sp.Expr) -> sp.Expr:
+        """expr with each |u| of the length written as the stretch writes it (±u where
+        its sign is known): the direction d/|d| of the pull, as the stretch has it."""
+        return expr.xreplace({sp.Abs(x.inside): x.sign * x.inside for x in self.lengths if x.sign is not None})
 
 
 @dataclass(frozen=True, eq=False)  # identity equality: energies are memoized per model
@@ -226,10 +233,10 @@ def build_model(problem: Problem) -> Model:
     names = names.with_points(points)
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
+    assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
+    springs = _signed(springs, names, assumptions)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
-                  velocities, triads=triads,
-                  assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
-                  contacts=contacts, plane_contacts=planes)
+                  velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes)
     check_assumptions(model.assumptions, values, names)
     _refuse_winding_angles(model)
     return model
@@ -511,6 +518,20 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
         rest = names.scalar(spring.rest) if spring.rest else sp.Integer(0)
         stretch = names.scalar(spring.angle) - rest
     return SpringModel(spring.name, k, stretch, spring)
+
+
+def _signed(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
+    """Each linear spring's length with |u| written ±u where u's sign at the reference
+    configuration (q = 0) is known (model/spring_length.py)."""
+    reference = {q: sp.Integer(0) for q in names.state.q}
+    assumed = substitutions(assumptions, names) if assumptions else {}
+    out = []
+    for s in springs:
+        if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
+            stretch, lengths = signed_length(s.stretch, reference, assumed)
+            s = replace(s, stretch=stretch, lengths=lengths)
+        out.append(s)
+    return tuple(out)
 
 
 def _periodic_coordinates(model: Model) -> frozenset:

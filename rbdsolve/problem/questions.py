@@ -39,11 +39,11 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 OPTIONS = {
     QuestionKind.EOM: ("frames", "at", "from_rest"),
-    QuestionKind.EQUILIBRIA: ("frame",),
-    QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
+    QuestionKind.EQUILIBRIA: ("frame", "for"),
+    QuestionKind.MODES: ("about", "frame", "check_amplitudes", "for"),
     QuestionKind.INERTIA: ("body", "about", "axes", "at", "axis"),
     QuestionKind.STEADY_SPIN: ("body", "precession"),
-    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
+    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for", "for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
     QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
@@ -100,7 +100,7 @@ class QuestionReader:
             frames = self.frame_list(get("frames")) if get("frames") is not None else ()
             return Question(kind, EomOptions(frames, instant(self.reading, opts)), key.loc)
         if kind is QuestionKind.EQUILIBRIA:
-            return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
+            return Question(kind, EquilibriaOptions(self.frame(get("frame")), self.parameter(get("for"))), key.loc)
         if kind is QuestionKind.MODES:
             about = get("about")
             each = isinstance(about, Scalar) and about.text.strip() == "each"
@@ -115,7 +115,8 @@ class QuestionReader:
                                  get("check_amplitudes").loc)
             return Question(kind, ModesOptions(point, self.frame(get("frame")),
                                                amplitudes(get("check_amplitudes"), get("frame")), equilibrium=number,
-                                               each=each, loc=about.loc if about else None, steady=steady), key.loc)
+                                               each=each, loc=about.loc if about else None, steady=steady,
+                                               for_parameter=self.parameter(get("for"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:
@@ -142,6 +143,19 @@ class QuestionReader:
         if name not in self.frames:
             known = f" (frames: {', '.join(self.frames)})" if self.frames else " (declare it under 'frames:')"
             raise InputError(f"no frame '{name}'{did_you_mean(name, list(self.frames)) or known}", node.loc)
+        return name
+
+    def parameter(self, node: Node | None) -> str | None:
+        """'for: k': the parameter whose critical values the conditions are written in."""
+        if node is None:
+            return None
+        name = expect_scalar(node, "a parameter name").text.strip()
+        declared = [n for n, what in self.reading.taken.items() if what == "parameter"]
+        if name not in declared:
+            what = self.reading.taken.get(name)
+            hint = (f" ('{name}' is a {what}; conditions are written in a parameter)" if what
+                    else did_you_mean(name, declared) or f" (parameters: {', '.join(declared) or 'none'})")
+            raise InputError(f"no parameter '{name}'{hint}", node.loc)
         return name
 
     def frame_list(self, node: Node) -> tuple[str, ...]:
@@ -229,7 +243,8 @@ class QuestionReader:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
         where = get("reactions").loc if get("reactions") is not None else None
-        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where)
+        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where,
+                                   self.parameter(get("for")))
 
     def refuse_plane_rolling(self, kind: QuestionKind, key: Scalar) -> None:
         """eom, equilibria, modes and reactions need independent coordinates: a contact
