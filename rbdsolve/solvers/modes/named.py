@@ -4,12 +4,15 @@ critical values (Ω_c)."""
 
 from __future__ import annotations
 
+import sympy as sp
+
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Meaning, Named
 from rbdsolve.report.tree import Path
 from rbdsolve.solvers.modes.answers import EachModesAnswers
 from rbdsolve.solvers.modes.steps import mode_labels
-from rbdsolve.solvers.shared.naming import criticals, state
+from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_labels
+from rbdsolve.solvers.shared.naming import coordinate, criticals, state
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:
@@ -28,17 +31,23 @@ def _ordinal(n: int) -> str:
 
 
 def _modes(a, model: Model, path: Path = (), group: str = "") -> list[Named]:
-    labels = mode_labels(model)
-    out = [Named((*path, "about"), state(model, a.about), group),
-           Named((*path, "M"), labels.symbol("mass_matrix"), group),
-           Named((*path, "K"), labels.symbol("stiffness_matrix"), group)]
+    gyroscopic = hasattr(a, "G")  # M ü + G u̇ + K u = 0: the cyclic rates, G, no λ (gyroscopic_steps.py)
+    labels = gyroscopic_labels(model) if gyroscopic else mode_labels(model)
+    out = [Named((*path, "about"), state(model, a.about), group)]
+    out += [Named((*path, "steady", k), coordinate(model, f"dot({k})"), group) for k in getattr(a, "steady", {})]
+    out += [Named((*path, "momenta", k), sp.Symbol(f"p_{k}"), group) for k in getattr(a, "momenta", {})]
+    out += [Named((*path, "M"), labels.symbol("mass_matrix"), group)]
+    out += [Named((*path, "G"), labels.symbol("gyroscopic_matrix"), group)] if gyroscopic else []
+    out += [Named((*path, "K"), labels.symbol("stiffness_matrix"), group)]
+    eigenvalues = getattr(a, "eigenvalues", ())
     out += [Named((*path, "eigenvalues", i), labels.symbol("eigenvalue", i + 1), group)
-            for i in range(len(a.eigenvalues))]
-    for i in range(len(a.eigenvalues)):  # then each mode, as the steps go
+            for i in range(len(eigenvalues))]
+    shapes = getattr(a, "shapes", ())
+    for i in range(max(len(eigenvalues), len(a.frequencies), len(getattr(a, "growth_rates", ())))):  # each mode
         if i < len(a.frequencies):
             out.append(Named((*path, "frequencies", i), labels.symbol("frequency", i + 1), group, Meaning.FREQUENCY))
-        if i < len(a.growth_rates):
+        if i < len(getattr(a, "growth_rates", ())):
             out.append(Named((*path, "growth_rates", i), labels.symbol("growth_rate", i + 1), group))
-        if i < len(a.shapes):
+        if i < len(shapes):
             out.append(Named((*path, "shapes", i), labels.symbol("amplitude", i + 1), group))
     return out + criticals((*path, "critical"), getattr(a, "critical", ()), group)

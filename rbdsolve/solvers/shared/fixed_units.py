@@ -7,7 +7,8 @@ coordinates are angles (``units.known_dimensions``). With q_i an angle in radian
 - K_ij = ∂²V/∂q_i∂q_j (and a Hessian of V, its eigenvalues): J/rad² is a torsional
   stiffness, N·m/rad; J/(m·rad) is N/rad; over two lengths, N/m;
 - M_ij = ∂²T/∂q̇_i∂q̇_j: kg·m² over two angles (J·s²/rad²), kg·m over an angle and a
-  length, kg over two lengths;
+  length, kg over two lengths; G_ij (the gyroscopic matrix, of q̇_j in ∂L/∂q̇_i) is J·s
+  over the same;
 - a generalized impulse I_θ = Δ(∂T/∂θ̇) is an angular impulse, N·m·s (I_x: N·s);
 - q̇ and q̈ of an angle are rad/s and rad/s², q̇² rad²/s² (of a length m/s, m/s², m²/s²);
 - a moment (of gravity, of a support: M_C, M_O) is a torque, N·m;
@@ -34,7 +35,7 @@ TORSIONAL = "N·m/rad"
 # (dimension, radians it is per) -> its unit; any other keeps its dimension's unit
 PER_RADIAN = {(ENERGY, 1): "N·m", (ENERGY, 2): TORSIONAL, (ENERGY / LENGTH, 1): "N/rad",
               (INERTIA / TIME, 1): "N·m·s"}  # fmt: skip
-_PER_COORDINATE_PAIR = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
+_PER_COORDINATE_PAIR = {"M": ENERGY * TIME ** 2, "G": ENERGY * TIME, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")
 
 
