@@ -19,13 +19,16 @@ kind, so that it names one answer):
     dot(x)                 impact.velocities.x   (the velocity just after the impact)
     J1                     inertia.principal_moments[1]
 
+and every name the printed solution gives an answer (Omega_c, Ω_c, R_c, T_f, v_A:
+teaching/printed.py), where it names one answer.
+
 (A student's check also names an equilibrium by its place: teaching/check._by_place.)
 """
 
 from __future__ import annotations
 
 import re
-from typing import Sequence
+from typing import Mapping, Sequence
 
 from rbdsolve.errors import InputError, Location, did_you_mean
 
@@ -49,9 +52,10 @@ def normal(text: str) -> str:
     return "".join(text.split()).translate(_SUBSCRIPTS)
 
 
-def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
-    """The label among ``labels`` that ``text`` addresses (itself, an alias, or a path
-    whose question is left out); an InputError at ``loc`` naming the closest otherwise."""
+def resolve(text: str, labels: Sequence[str], loc: Location, printed: Mapping[str, tuple[str, ...]] = {}) -> str:
+    """The label among ``labels`` that ``text`` addresses (itself, an alias, a path whose
+    question is left out, or a name as the solution prints it: ``printed``,
+    teaching/printed.py); an InputError at ``loc`` naming the closest otherwise."""
     address = normal(text)
     if not address:
         raise InputError("expected the name of an answer before '=', found nothing", loc)
@@ -62,7 +66,10 @@ def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
     known = set(labels)
     if address in known:
         return address
-    found = _by_alias(address, labels) or _without_question(address, labels)
+    found = _by_alias(address, labels) or _without_question(address, labels) or list(printed.get(address, ()))
+    if len(found) == 1 and found[0] not in known:  # a printed name of a vector, a matrix, a state
+        address = found[0]
+        found = []
     if len(found) == 1:
         return found[0]
     if len(found) > 1:

@@ -31,6 +31,8 @@ from rbdsolve.solvers import Options, RouteChoice, solve_problem
 from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.compare import Sampler, compare, value_at
 from rbdsolve.teaching.files import read_file
+from rbdsolve.teaching.given_units import factor_to, split_unit
+from rbdsolve.teaching.printed import printed_names
 from rbdsolve.teaching.variants import question_labels
 from rbdsolve.teaching.grading import Rule, slip_of
 from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Undecided, Verdict
@@ -114,29 +116,33 @@ def check(problem: Problem, entries: list[Entry], budget: float | None = None, r
                for path, leaf in leaves(s.answers)}
     unsolved = {q: s.error for q, s in zip(kinds, report.solutions) if s.answers is None}
     sampler = _sampler(model)
+    names = printed_names(model, report, kinds)
+    units = {label((q, *path)): u for q, s in zip(kinds, report.solutions) for path, u in leaves(s.units)
+             if isinstance(u, str)}
     checked, errors = [], []
     for entry in entries:
         try:
-            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule))
+            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule, names, units))
         except InputError as exc:
             errors.append(exc)
     return CheckRun(problem.file, tuple(checked), tuple(errors))
 
 
-def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule) -> Checked:
+def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule,
+               names: dict, units: dict) -> Checked:
     head = "".join(entry.address.split()).split(".", 1)[0]
     if head in unsolved:
         return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
                                                            f"({unsolved[head]})"), "", entry.loc)
     start = Location(entry.loc.file, entry.loc.line, 1)
-    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start)
+    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start, names)
     right = answers[address]
     if isinstance(right, Enum):
         return _check_word(entry, address, right)
     if not isinstance(right, sp.Expr):
         what = "has no value here" if right is None else "is not an expression"
         raise InputError(f"'{address}' {what}, so it cannot be checked", entry.loc)
-    given = _read(entry, model)
+    given = _read(entry, model, units.get(address))
     if _a_number_for_values(given, right, model):
         verdict = _at_values(given, right, model, rule)
     else:
@@ -239,9 +245,17 @@ def scope(problem: Problem) -> ex.Scope:
     return ex.Scope(frozenset(names), frozenset(), frozenset(coordinates | functions))
 
 
-def _read(entry: Entry, model: Model) -> sp.Expr:
+def _read(entry: Entry, model: Model, answer_unit: str | None = None) -> sp.Expr:
     """The student's expression in the model's symbols, coordinates as functions of time
-    (as the answers are)."""
+    (as the answers are); a number with its unit ('4.58 rad/s', '30°') in the answer's
+    unit (teaching/given_units.py)."""
+    with_unit = split_unit(entry.text)
+    if with_unit is not None:
+        number, unit = with_unit
+        factor = factor_to(unit, answer_unit)
+        if factor is None:
+            raise InputError(f"'{unit}' is not the unit of this answer: give it in {answer_unit}", entry.loc)
+        return sp.Rational(number.replace("−", "-")) * factor
     names = scope(model.problem)
     try:
         parsed = ex.parse(entry.text, entry.loc, names)
