@@ -74,7 +74,10 @@ def resolve(text: str, labels: Sequence[str], loc: Location, printed: Mapping[st
         return found[0]
     if len(found) > 1:
         raise InputError(f"'{address}' could be any of {', '.join(found)}: give the whole path", loc)
-    inside = [label for label in labels if label.startswith((address + "[", address + "."))]
+    inside = [label for label in labels if label.startswith((address + "[", address + "."))
+              or "." in label and label.split(".", 1)[1].startswith((address + "[", address + "."))]
+    if len(inside) == 1:  # a list of one (where contact is lost: one equation)
+        return inside[0]
     if inside:
         raise InputError(f"'{address}' holds several answers: check them one by one, e.g. {inside[0]}", loc)
     raise InputError(f"no answer is called '{address}'{_hint(address, labels)}", loc)

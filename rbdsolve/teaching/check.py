@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 import sympy as sp
+from sympy.core.relational import Relational
 
 from rbdsolve.errors import InputError, Location
 from rbdsolve.form.printers import to_unicode
@@ -33,6 +34,7 @@ from rbdsolve.teaching.compare import Sampler, compare, value_at
 from rbdsolve.teaching.files import read_file
 from rbdsolve.teaching.given_units import factor_to, split_unit
 from rbdsolve.teaching.printed import printed_names
+from rbdsolve.teaching.relations import compare_relation, relation, split_relation
 from rbdsolve.teaching.variants import question_labels
 from rbdsolve.teaching.grading import Rule, slip_of
 from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Undecided, Verdict
@@ -139,6 +141,9 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
     right = answers[address]
     if isinstance(right, Enum):
         return _check_word(entry, address, right)
+    if isinstance(right, (Relational, sp.And, sp.Or, sp.Not)):  # an equation or a condition as the answer
+        verdict = compare_relation(_read_relation(entry, model), right, sampler)
+        return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
     if not isinstance(right, sp.Expr):
         what = "has no value here" if right is None else "is not an expression"
         raise InputError(f"'{address}' {what}, so it cannot be checked", entry.loc)
@@ -268,6 +273,18 @@ def _read(entry: Entry, model: Model, answer_unit: str | None = None) -> sp.Expr
         raise InputError("give one number or expression, not a vector: check a vector's entries one by one, "
                          "e.g. 'modes.shapes[1][2] = 4/3'", entry.loc)
     return model.state.to_time(model.symbols.scalar(parsed))
+
+
+def _read_relation(entry: Entry, model: Model) -> sp.Basic:
+    """'cos(theta) = 2/3', 'Omega > sqrt(g/R)': each side read as an expression."""
+    split = split_relation(entry.text)
+    if split is None:
+        raise InputError("this answer is an equation or a condition: give one, e.g. 'cos(theta) = 2/3' or "
+                         "'Omega > sqrt(g/R)'", entry.loc)
+    left, op, right = split
+    sides = [_read(Entry(entry.address, text, entry.loc.shifted(shift)), model)
+             for text, shift in ((left, 0), (right, len(left) + len(op)))]
+    return relation(sides[0], op, sides[1])
 
 
 def _is_angle(address: str, model: Model) -> bool:

@@ -57,3 +57,45 @@ def test_a_unit_that_is_not_the_answers_and_a_name_printed_twice_are_one_message
     assert result.exit_code == 2
     assert body["errors"][0] == "--answer:11:9: 'Hz' is not the unit of this answer: give it in rad/s"
     assert "give the whole path" in body["errors"][1] and "modes.K" in body["errors"][1]
+
+
+# A particle released from rest on top of a smooth sphere leaves it where
+# m g cos θ − m v²/R = 0 with v² = 2 g R (1 − cos θ): cos θ = 2/3 (by hand).
+EQUATIONS = [
+    ("contact_lost.N_P = cos(theta) = 2/3", True),
+    ("contact_lost.N_P = 3*cos(theta) = 2", True),  # a constant factor: the same equation
+    ("contact_lost.N_P = theta = acos(2/3)", True),  # solved for θ
+    ("contact_lost.N_P = cos(theta) = 1/3", False),
+    ("contact_lost.N_P = cos(theta) > 2/3", False),  # a condition for an equation
+]
+
+# The bead on a hoop turning at Ω: the off-axis equilibria cos θ₀ = g/(Ω² R) exist
+# where g/(Ω² R) ≤ 1, Ω ≥ √(g/R) (by hand).
+CONDITIONS = [
+    ("equilibria.equilibria[2].exists_when = Omega > sqrt(g/R)", True),  # > for ≥: the boundary only
+    ("equilibria.equilibria[2].exists_when = Omega**2*R >= g", True),
+    ("equilibria.equilibria[2].exists_when = g <= R*Omega**2", True),
+    ("equilibria.equilibria[2].exists_when = Omega > sqrt(2*g/R)", False),
+    ("equilibria.equilibria[2].exists_when = Omega < sqrt(g/R)", False),
+]
+
+
+def _grade(problem: str, lines: list[str]):
+    args = ["grade", str(PROBLEMS / problem), "--format", "json"]
+    for line in lines:
+        args += ["--answer", line]
+    result = CliRunner().invoke(main, args)
+    return result, json.loads(result.stdout)
+
+
+def test_an_equation_as_the_answer_is_compared_as_a_set_of_points() -> None:
+    result, body = _grade("forces/particle-on-sphere.yaml", [line for line, _ in EQUATIONS] + ["contact_lost.N_P = 2/3"])
+    assert [a["right"] for a in body["answers"]] == [want for _, want in EQUATIONS]
+    assert {a["answer"] for a in body["answers"]} == {"reactions.contact_lost.N_P[1]"}
+    assert body["errors"] == ["--answer:6:19: this answer is an equation or a condition: give one, "
+                              "e.g. 'cos(theta) = 2/3' or 'Omega > sqrt(g/R)'"]
+
+
+def test_a_condition_as_the_answer_is_compared_as_a_region() -> None:
+    _, body = _grade("conditions/bead-on-turning-hoop.yaml", [line for line, _ in CONDITIONS])
+    assert [a["right"] for a in body["answers"]] == [want for _, want in CONDITIONS]
