@@ -307,13 +307,19 @@ def _sampler(model: Model) -> Sampler:
     # point was admissible first and a wrong answer was shown "different at" another point.
     assumed = sorted({s for a in model.assumptions for s in a.difference.free_symbols}, key=sp.default_sort_key)
 
+    # An angle coordinate's value (θ(t), a plain symbol in compare._plain) is drawn in
+    # (−π, π], where the solution lists it: "different at θ = −7" named a point no reader
+    # would look at.
+    angles = {f"{n}(t)" for n, q in model.symbols.coordinates.items() if q in model.angles}
+
     def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
         wanted = list(dict.fromkeys([*symbols, *assumed]))
+        turning = {s: (-sp.pi, sp.pi) for s in wanted if getattr(s, "name", "") in angles}
         if not nice:
-            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200)
+            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200, ranges=turning)
         for _ in range(50):
-            point = {s: sp.Integer(rng.randint(1, 9)) * (1 if s.is_positive or rng.random() < 0.5 else -1)
-                     for s in wanted}
+            point = {s: sp.Integer(rng.randint(1, 3 if s in turning else 9))
+                     * (1 if s.is_positive or rng.random() < 0.5 else -1) for s in wanted}
             if admissible_sample(model.assumptions, model.symbols, rng, fixed=point, symbols=[], tries=1):
                 return point
         return None

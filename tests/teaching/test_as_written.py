@@ -11,6 +11,7 @@ off-axis equilibria have cos θ₀ = g/(Ω² R) = 0.3924, θ₀ = ±66.896°, th
 from __future__ import annotations
 
 import json
+import math
 
 import pytest
 from click.testing import CliRunner
@@ -99,3 +100,15 @@ def test_an_equation_as_the_answer_is_compared_as_a_set_of_points() -> None:
 def test_a_condition_as_the_answer_is_compared_as_a_region() -> None:
     _, body = _grade("conditions/bead-on-turning-hoop.yaml", [line for line, _ in CONDITIONS])
     assert [a["right"] for a in body["answers"]] == [want for _, want in CONDITIONS]
+
+
+def test_a_wrong_answer_is_shown_at_angles_inside_their_range() -> None:
+    """Lagrange's first equation of seed problem 1 with cos θ for sin θ: the point it is
+    shown different at has θ and φ in (−π, π], where the solution lists them."""
+    wrong = ("eom.equations[1] = m*r**2*(7*ddot(theta)/4 + cos(phi - theta)*ddot(phi)/4"
+             " - sin(phi - theta)*dot(phi)**2/4) + 2*m*g*r*cos(theta)")
+    _, body = _grade("sg2150-2015-10-29/p1-two-rods.yaml", [wrong])
+    (answer,) = body["answers"]
+    point = {k: float(v) for k, v in answer["point"].items()}
+    assert not answer["right"] and {"θ", "φ"} <= set(point)
+    assert all(-math.pi < point[q] <= math.pi for q in ("θ", "φ"))
