@@ -74,14 +74,15 @@ FORMATS = ("text", "json")
 def grade(file, answers, entries, show, rtol, atol, sig_figs, slip_credit, output, fmt, budget, debug):
     """Check answers: a student's expressions against a problem's exact solution
     (FILE a problem, answers by --answer or an ANSWERS file), or a class's numbers
-    against a variants table (FILE the JSON of 'rbdsolve variants', ANSWERS a CSV).
+    against a variants table (FILE the JSON or the CSV of 'rbdsolve variants',
+    ANSWERS a CSV).
 
     Expressions are read like a problem file's (+ - * / **, sqrt, sin, pi, ...; the
     problem's symbols only) and compared exactly, then at random admissible
     parameter values; a wrong answer is said to be off by a sign, a factor 2, 2π
     (ω ↔ f), in degrees, or missing a square root where it is.
     """
-    if file.lower().endswith(".json"):
+    if file.lower().endswith((".json", ".csv")):
         run_guarded(debug, lambda: _grade_class(file, answers, entries, sig_figs, rtol, atol, slip_credit,
                                                 output, fmt))
     else:

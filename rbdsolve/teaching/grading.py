@@ -2,8 +2,9 @@
 
     grade(read_key(variants.json), answers.csv, Rule()) -> ClassGrades
 
-The key is the JSON table ``rbdsolve variants -o variants.json`` writes (one row per
-variant: its parameter values and its numeric answers). The answers are a CSV with a
+The key is the table ``rbdsolve variants -o variants.json`` (or ``-o variants.csv``,
+teaching/key_csv.py) writes (one row per variant: its parameter values and its numeric
+answers). The answers are a CSV with a
 header ``student, variant, ANSWER, ANSWER, …`` (or separated by ';', with decimal commas,
 as spreadsheets in much of Europe write it) — each ANSWER a column of the key or an
 alias (teaching/addresses.py: ``omega1`` for ``modes.frequencies[1]``) — and one row per
@@ -30,6 +31,7 @@ from enum import Enum
 from rbdsolve.errors import InputError, Location
 from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.files import read_file
+from rbdsolve.teaching.key_csv import looks_like_csv, read_key_csv
 from rbdsolve.teaching.verdicts import FACTOR_SLIPS, Slip
 
 STUDENT, VARIANT = "student", "variant"
@@ -119,8 +121,14 @@ class ClassGrades:
 
 
 def read_key(path: str) -> Key:
-    """The JSON table of ``rbdsolve variants``; an InputError for anything else."""
+    """The table of ``rbdsolve variants``, its JSON or its CSV (teaching/key_csv.py); an
+    InputError that says which file to give for anything else."""
     text = read_file(path)
+    if looks_like_csv(text):
+        return read_key_csv(path, text, Key)
+    if text.lstrip("\ufeff \t\r\n").lower().startswith(STUDENT):
+        raise InputError("this is a class's answers ('student,variant,…'); give the variants table first: "
+                         f"rbdsolve grade variants.csv {path}", Location(path, 1, 1))
     try:
         body = json.loads(text, parse_constant=_refuse_constant)
     except json.JSONDecodeError as exc:
@@ -130,7 +138,8 @@ def read_key(path: str) -> Key:
     except RecursionError:
         raise InputError("the JSON is nested too deeply", Location(path, 1, 1)) from None
     if not isinstance(body, dict) or not isinstance(body.get("rows"), list) or "columns" not in body:
-        raise InputError("not a variants table (write one with: rbdsolve variants PROBLEM -o variants.json)",
+        raise InputError("not a variants table (write one with: rbdsolve variants PROBLEM -o variants.csv, "
+                         "or -o variants.json)",
                          Location(path, 1, 1))
     columns = _strings(body, "columns", path)
     kind_columns = _strings(body, "kind_columns", path)

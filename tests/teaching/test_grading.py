@@ -259,3 +259,25 @@ def test_a_cell_that_is_not_a_number(table, cell: str) -> None:
     result = CliRunner().invoke(main, ["grade", str(variants), str(path)])
     assert result.exit_code == 2
     assert result.stderr == f"{path}:2:6: modes.frequencies[1]: '{cell}' is not a number\n"
+
+
+def test_the_variants_csv_grades_the_class_as_the_json_does(table, seeded_class) -> None:
+    """The same draw written as CSV (issue 41, item 3): every seeded error found and no
+    right answer marked wrong, as with the JSON; the answers CSV given first is one
+    message that says which file to give."""
+    answers, expected = seeded_class
+    folder, _, _ = table
+    variants_csv = folder / "variants.csv"
+    result = CliRunner().invoke(main, ["variants", str(P1), "--count", str(STUDENTS), "--seed", "11",
+                                       "-o", str(variants_csv)])
+    assert result.exit_code == 0, result.output
+    out = folder / "grades-from-csv.csv"
+    result = CliRunner().invoke(main, ["grade", str(variants_csv), str(answers), "-o", str(out)])
+    assert result.exit_code == 1, result.output
+    rows = list(csv.DictReader(io.StringIO(out.read_text(encoding="utf-8"))))
+    assert len(rows) == STUDENTS
+    for row in rows:
+        assert [row[p] for p in PATHS] == expected[row["student"]], row["student"]
+    result = CliRunner().invoke(main, ["grade", str(answers), str(answers)])
+    assert result.exit_code == 2
+    assert "this is a class's answers ('student,variant,…'); give the variants table first" in result.stderr
