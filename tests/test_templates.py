@@ -311,3 +311,16 @@ def test_kinematics_slider_crank_at_a_quarter_turn() -> None:
     # r = 0.1 m, l = 0.3 m, ω = 1200·2π/60 = 40π rad/s
     assert values["points"][1]["acceleration"][0] == pytest.approx(0.01 * (40 * math.pi) ** 2 / math.sqrt(0.08))
     assert solved("kinematics")["results"][0]["units"]["points"][1]["acceleration"][0] == "m/s²"
+
+
+def test_the_main_help_and_the_readme_name_every_question_kind_and_template() -> None:
+    """Issue 41, item 6: `rbdsolve --help` lists every question kind; the README's
+    tables list every kind (what it solves) and every template `rbdsolve new` offers."""
+    from rbdsolve.cli.new import SCENES
+
+    helped = " ".join(run("--help").stdout.split())
+    assert all(f"{kind.value} (" in helped or f"{kind.value}," in helped for kind in QuestionKind)
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    rows = [line.split("|")[1].strip() for line in readme.splitlines() if line.startswith("| `")]
+    for name in [*KINDS, *SCENES]:
+        assert rows.count(f"`{name}`") >= (2 if name in KINDS else 1), name  # a template row, and what it solves

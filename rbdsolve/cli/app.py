@@ -77,7 +77,10 @@ def main() -> None:
     Questions: eom, equilibria, modes (Lagrange's equations, equilibria and their
     stability, small oscillations; in moving frames too), impact (Lagrange's
     equations for impact), inertia (tensors, principal axes), steady_spin (Euler's
-    equations of a free body), steady_motion (rolling, tops, in a turning triad).
+    equations of a free body), steady_motion (rolling, tops, in a turning triad),
+    kinematics (a point's position, velocity and acceleration), reactions (forces
+    at the supports, contact lost), energy (speeds by T + V constant).
+    Templates of each: rbdsolve new --list.
 
     \b
     Shell completion (bash; zsh and fish alike, see the README):
