@@ -177,9 +177,27 @@ def draw_sketch(ax, drawing: Sketch, labels: bool, faint: bool = False) -> None:
     for spring in drawing.springs:
         xs, ys = zip(*spring.vertices)
         ax.plot(xs, ys, color="0.35", lw=1.2, alpha=alpha, zorder=2)
+    for pivot in drawing.pivots:  # the support on the side away from the scene's middle (a ceiling above a pendulum)
+        _draw_pivot(ax, pivot, 0.04 * drawing.size(), alpha, 1.0 if pivot[1] >= _centre(drawing)[1] else -1.0)
     if labels:
         _points(ax, drawing)
         ax.plot(0, 0, "+", color="0.55", ms=9, mew=1, zorder=1)  # the scene's origin
+
+
+def _draw_pivot(ax, at: tuple[float, float], size: float, alpha: float, side: float) -> None:
+    """A fixed support as a textbook draws it: a hinge (an open circle) on a small
+    triangle whose base is hatched, on ``side`` (+1 above the hinge, −1 below)."""
+    from matplotlib import patches
+
+    x, y = at
+    base = y + side * 1.6 * size
+    ax.add_patch(patches.Polygon([(x, y), (x - size, base), (x + size, base)], closed=True,
+                                 facecolor="0.85", edgecolor="0.25", lw=1.2, alpha=alpha, zorder=1))
+    ax.plot([x - 1.5 * size, x + 1.5 * size], [base, base], color="0.25", lw=1.2, alpha=alpha, zorder=1)
+    for k in range(6):
+        x0 = x - 1.5 * size + k * 0.6 * size
+        ax.plot([x0, x0 - 0.5 * size], [base, base + side * 0.5 * size], color="0.5", lw=0.8, alpha=alpha, zorder=1)
+    ax.plot(x, y, "o", ms=6, mfc="white", mec="0.15", mew=1.3, alpha=alpha, zorder=8)
 
 
 def _draw_ground(ax, g: Ground, alpha: float) -> None:
@@ -249,7 +267,7 @@ def _points(ax, drawing: Sketch) -> None:
         right = dx >= -1e-9 * drawing.size()  # labels lean away from the scene's middle
         ax.annotate(", ".join(names), at, xytext=(7 if right else -7, 6 if dy >= 0 else -6),
                     textcoords="offset points", ha="left" if right else "right",
-                    va="bottom" if dy >= 0 else "top", fontsize=10, zorder=7,
+                    va="bottom" if dy >= 0 else "top", fontsize=12, zorder=7,
                     bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.75})
 
 

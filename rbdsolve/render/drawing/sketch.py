@@ -136,6 +136,7 @@ class Sketch:
     bodies: tuple[str, ...] = field(default=())  # names, in the scene's order
     links: tuple[Link, ...] = ()
     grounds: tuple[Ground, ...] = ()  # the floors, inclines, tracks, drums and strings of the contacts
+    pivots: tuple[Vec2, ...] = ()  # fixed points bodies turn about, marked as supports whether named or not
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x_min, y_min, x_max, y_max) of everything drawn."""
@@ -254,7 +255,61 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
                   ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
                   tuple(_links(model, {p.name: p.at for p in points})),
                   tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface)
-                  + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None))
+                  + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None),
+                  _pivots(model, values, shapes))
+
+
+def _pivots(model: Model, values: _Values, shapes: list[Primitive]) -> tuple[Vec2, ...]:
+    """Each place a body turns about while it stays put, marked as a support whether or
+    not the file names a point there: a point c fixed in the body whose place
+    X(q) = r(q) + R(q) c does not move, ∂X/∂qᵢ = ∂r/∂qᵢ + ∂R/∂qᵢ c = 0 for every i,
+    solved by least squares at this configuration and checked at another (a rolling
+    contact's point is still only for an instant), and on the body as drawn (two rods
+    sliding in a circle turn about its centre, which holds neither). Each place once."""
+    if not model.q or any(model.symbols.vector(b.source.at).atoms(AppliedUndef) for b in model.bodies):
+        return ()
+    other = _Values(model, {n: v + 0.7 for n, v in values.configuration.items()})
+    out: list[Vec2] = []
+    for body in model.bodies:
+        r = model.symbols.vector(body.source.at)
+        if not (r.free_symbols | body.rotation.free_symbols) & set(model.q) or t in r.free_symbols:
+            continue
+        c = _still_point(r, body.rotation, model.q, values)
+        if c is None or _still_point(r, body.rotation, model.q, other, c) is None:
+            continue
+        at = _xy(values.vector(r) + values.matrix(body.rotation) @ c)
+        if not any(_on(at, shape) for shape in shapes if shape.body == body.name):
+            continue
+        if all(math.dist(at, p) > 1e-9 * (1 + math.hypot(*at)) for p in out):
+            out.append(at)
+    return tuple(out)
+
+
+def _on(at: Vec2, shape: Primitive, tolerance: float = 1e-6) -> bool:
+    """Is ``at`` on a drawn part (a segment's line, inside a circle or a polygon)?"""
+    if isinstance(shape, Segment):
+        (x0, y0), (x1, y1) = shape.start, shape.end
+        length2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
+        k = 0.0 if length2 == 0 else max(0.0, min(1.0, ((at[0] - x0) * (x1 - x0) + (at[1] - y0) * (y1 - y0)) / length2))
+        return math.dist(at, (x0 + k * (x1 - x0), y0 + k * (y1 - y0))) <= tolerance * (1 + math.sqrt(length2))
+    if isinstance(shape, Circle):
+        return not shape.hole and math.dist(at, shape.centre) <= shape.radius * (1 + tolerance)
+    if isinstance(shape, Polygon) and len(shape.vertices) >= 3 and not shape.hole:
+        v = shape.vertices
+        return all(_cross(v[i], v[(i + 1) % len(v)], at) >= -tolerance for i in range(len(v)))
+    return False
+
+
+def _still_point(r, R, q, values: _Values, c: np.ndarray | None = None) -> np.ndarray | None:
+    """The body point c with ∂r/∂qᵢ + ∂R/∂qᵢ c = 0 for all i (or whether the given c is
+    one), None where there is none."""
+    A = np.vstack([values.matrix(R.diff(qi)) for qi in q])
+    b = -np.concatenate([values.vector(r.diff(qi)) for qi in q])
+    if not np.any(A):
+        return None  # the body does not turn: a slider, a particle
+    found = np.linalg.lstsq(A, b, rcond=None)[0] if c is None else c
+    scale = 1 + np.abs(b).max() + np.abs(A).max()
+    return found if np.abs(A @ found - b).max() <= 1e-9 * scale else None
 
 
 class _Values:
@@ -262,6 +317,7 @@ class _Values:
     value) put in, t = 0, an unknown prescribed function 0."""
 
     def __init__(self, model: Model, configuration: Mapping[str, float]):
+        self.configuration = dict(configuration)
         table: dict = {s: sp.Integer(1) for s in model.symbols.parameters.values()}
         table.update(model.values)
         table.update({q: sp.Float(configuration[n]) for q, n in zip(model.q, model.coordinate_names())

@@ -179,3 +179,16 @@ def test_an_incline_and_a_drum_are_drawn_where_the_body_touches_them() -> None:
     assert close({p.name: p.at for p in drawing.points}["C"], (-math.sin(0.4), math.cos(0.4)))
     ring = next(s for s in drawing.shapes if isinstance(s, Circle))
     assert close(ring.centre, (-2 * math.sin(0.4), 2 * math.cos(0.4)))
+
+
+def test_a_pivot_is_marked_whether_or_not_a_point_is_named_there() -> None:
+    """By hand: the pinned rod turns about its top end (0, 0), with no point named
+    there; seed problem 1's long rod slides in a circle, turning about its centre O,
+    which is not on the rod (no support there); a cylinder rolling inside a cylinder
+    has no fixed point (its contact point is still for an instant only), and the
+    accelerated pendulum's pivot A moves."""
+    assert sketch(model_of(EXAM / "p1-two-rods.yaml")).pivots == ()
+    pinned = sketch(model_of(PROBLEMS / "impact" / "ball-hits-pinned-rod.yaml"))
+    assert pinned.pivots == ((0.0, 0.0),) and all(p.at != (0.0, 0.0) for p in pinned.points)
+    assert sketch(model_of(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml")).pivots == ()
+    assert sketch(model_of(EXAM / "p5-accelerated-pendulum.yaml")).pivots == ()
