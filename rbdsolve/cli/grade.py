@@ -83,7 +83,7 @@ def grade(file, answers, entries, show, rtol, atol, sig_figs, slip_credit, outpu
     """
     if file.lower().endswith(".json"):
         run_guarded(debug, lambda: _grade_class(file, answers, entries, sig_figs, rtol, atol, slip_credit,
-                                                output, fmt))
+                                                output, fmt, budget))
     else:
         run_guarded(debug, lambda: _check(file, answers, entries, show, output, fmt, _rule(rtol, atol, sig_figs,
                                                                                            slip_credit), budget))
@@ -147,7 +147,8 @@ def _check_line(checked, show: bool) -> str:
 
 
 def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_figs: int | None, rtol: float,
-                 atol: float, slip_credit: float, output: str | None, fmt: str) -> ExitCode:
+                 atol: float, slip_credit: float, output: str | None, fmt: str,
+                 budget: float = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.teaching.grade_report import class_csv, class_object, dumps
     from rbdsolve.teaching.grading import grade as grade_class, read_key
 
@@ -159,7 +160,7 @@ def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_f
     if output and Path(output).suffix.lower() not in (".csv", ".json"):
         raise InputError(f"-o {output}: write the grades to a .csv or a .json file")
     refuse_overwriting_inputs(output, [Source(file), Source(answers)])
-    grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit))
+    grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit), budget)
     if output:
         write_text(class_csv(grades) if output.lower().endswith(".csv") else dumps(class_object(grades)), output)
     if fmt == "json":
@@ -191,7 +192,7 @@ def _print_summary(grades) -> None:
     for t in tallies(grades):
         slips = ", ".join(f"{word} {n}" for word, n in t.slips.items()) or "-"
         share = f" ({100 * t.counts[Outcome.RIGHT] / max(sum(t.counts.values()), 1):.0f} %)"
-        table.add_row(escape(t.answer), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
+        table.add_row(escape(printable(t.answer)), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
                       str(t.counts[Outcome.WRONG]), str(t.counts[Outcome.BLANK]), str(t.counts[Outcome.UNGRADED]))
     console = Console(highlight=False, width=100, no_color=True) if not sys.stdout.isatty() \
         else Console(highlight=False)

@@ -37,6 +37,7 @@ from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Un
 
 EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
 MAX_ENTRIES = 500  # a check is a student's sheet; each answer may take seconds to compare
+_LINE_END = re.compile(r"\r\n|\r|\n")  # the lines an editor shows (str.splitlines also splits at \x0c, \x85 …)
 
 
 @dataclass(frozen=True)
@@ -90,7 +91,7 @@ def read_entry(line: str, loc: Location) -> Entry:
 def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
     """An answers file: one 'ADDRESS = EXPRESSION' a line; '#' starts a comment line."""
     entries, errors = [], []
-    for n, line in enumerate(read_file(path).splitlines(), start=1):
+    for n, line in enumerate(_LINE_END.split(read_file(path)), start=1):
         if not line.strip() or line.lstrip().startswith("#"):
             continue
         try:
@@ -106,7 +107,8 @@ def check(problem: Problem, entries: list[Entry], budget: float | None = None, r
     """Each entry's verdict against the exact solution of ``problem``; a number given
     for an answer whose parameters all have values is held to ``rule``."""
     if len(entries) > MAX_ENTRIES:
-        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts")
+        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts "
+                         f"(answer {MAX_ENTRIES + 1} is here)", entries[MAX_ENTRIES].loc)
     model = build_model(problem)
     report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
     kinds = question_labels([s.question for s in report.solutions])
