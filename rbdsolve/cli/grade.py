@@ -9,8 +9,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, debug_option, refuse_overwriting_inputs, run_guarded, \
-    write_text
+from rbdsolve.cli.app import OutputPath, Source, append_help, debug_option, refuse_overwriting_inputs, \
+    run_guarded, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option
 from rbdsolve.errors import ExitCode, InputError, Location
 
@@ -64,7 +64,7 @@ FORMATS = ("text", "json")
               help="Instead: right within one unit of the key's N-th significant figure.")
 @click.option("--slip-credit", type=click.FloatRange(min=0, max=1), default=0.0, show_default=True,
               help="The part of a mark a recognised slip earns (sign, 2π, degrees, root, factor 2).")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False, writable=True),
               help="Write the run to this file as JSON (.json); a class's grades also as CSV (.csv, "
                    "one row per student).")
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,

@@ -7,7 +7,7 @@ import sys
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, parse_sets, refuse_overwriting_inputs, \
+from rbdsolve.cli.app import OutputPath, append_help, debug_option, parse_sets, refuse_overwriting_inputs, \
     run_guarded, sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
@@ -87,7 +87,7 @@ def batch_options(command):
 @click.argument("paths", nargs=-1, required=True, type=click.Path(allow_dash=True))
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="terminal",
               show_default=True, help="Output format.")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False, writable=True),
               help="Write to this file instead of standard output.")
 @click.option("--digits", type=click.IntRange(1, 15), default=6, show_default=True,
               help="Significant digits of the numbers in text (terminal, Markdown, LaTeX), 1 to 15 "
