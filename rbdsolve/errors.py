@@ -40,6 +40,16 @@ def clipped(text: str, width: int = 60) -> str:
     return text if len(text) <= width else f"{text[:width]}… ({len(text):,} characters)"
 
 
+def shown(value: object) -> str:
+    """A value from outside (a key, a name given in Python) for a message: its type and
+    its repr, clipped; never a second error (10**5000 has no repr: Python refuses to
+    write more than 4,300 digits)."""
+    try:
+        return f"{type(value).__name__} {clipped(repr(value))}"
+    except ValueError:
+        return f"{type(value).__name__} (too large to show)"
+
+
 def unprintable(text: str) -> str | None:
     """The first character ``printable`` would escape (tabs and newlines allowed), or None."""
     found = UNPRINTABLE.search(text)

@@ -392,6 +392,9 @@ def _check_printable(text: str, loc: Location) -> None:
     """No control character in a string: the byte check before YAML catches those typed
     in the file, this one those YAML makes from escapes ("\\e]0;title\\a", "\\x85")."""
     found = unprintable(text)
+    if found is not None and "\ud800" <= found <= "\udfff":
+        raise InputError(f"a lone surrogate ({printable(found)}) in a string, from a YAML escape such as "
+                         "\"\\ud800\": half of a character, which no text file can hold; remove it", loc)
     if found is not None:
         raise InputError(f"a control character ({printable(found)}) in a string, from a YAML escape such "
                          "as \"\\e\" or \"\\x1b\"; remove it", loc)
