@@ -16,7 +16,7 @@ from rbdsolve.problem.overrides import checked_values, given_values
 from rbdsolve.problem.schema import Problem
 
 ROUTES = ("auto", "exact", "numeric")
-DEFAULT_BUDGET = 60.0  # seconds per question, as the CLI's --budget
+DEFAULT_BUDGET = 60.0  # processor seconds for the whole solve, as the CLI's --budget
 MIN_BUDGET, MAX_BUDGET = 0.001, 1e6  # as the CLI's --budget: a timer's resolution; eleven days
 SAID = "values[{!r}]"  # a value given in Python, as a message names it
 

@@ -37,8 +37,9 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
 @click.option("--modes/--no-modes", default=True, show_default=True,
               help="With a modes question, also draw its mode shapes (OUTPUT's name + '-modes').")
 @click.option("--budget", type=Budget(), default=DEFAULT_BUDGET, show_default=True,
-              metavar="SECONDS", help="Time budget for the model and for each picture of mode shapes; "
-                                      "past it the picture is not drawn (exit code 1).")
+              metavar="SECONDS", help="Budget of processor seconds for the whole drawing: the model, then each "
+                                      "picture of mode shapes a share of what is left; a picture past its share is "
+                                      "not drawn (exit code 1).")
 @debug_option
 def draw(path, output, at, sets, modes, budget, debug):
     """Draw a planar scene to scale: bodies by shape, points labelled, gravity.
@@ -57,7 +58,7 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     from rbdsolve.errors import RbdError
     from rbdsolve.model.build import build_model
     from rbdsolve.render.files import publish, require_folder, staging
-    from rbdsolve.solvers.shared.budget import OutOfTime, within
+    from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
     from rbdsolve.render.drawing.figures import (
         check_suffix,
         modes_questions,
@@ -69,8 +70,9 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     require_folder(output, "the picture")
     problem = Source(path).load()
     values = check_sets(parse_sets(sets), problem)
+    run = Allowance(budget)  # one budget: the model, then each picture of mode shapes a share of what is left
     try:
-        with within(budget, "the model (T and V)"):
+        with within(run.left(), "the model (T and V)", budget):
             model = build_model(problem)
     except OutOfTime as exc:
         raise UnsolvedError(f"{path}: {exc}") from None
@@ -78,10 +80,11 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     with staging(output) as stage:  # the scene and its mode shapes appear together, or neither
         drawn = [save_scene(model, stage / output.name, configuration(model, at)).path]
         code = ExitCode.OK
-        for n, question in enumerate(modes_questions(model) if modes else [], 1):
+        asked = modes_questions(model) if modes else []
+        for n, question in enumerate(asked, 1):
             name = f"{output.stem}-modes{'' if n == 1 else f'-{n}'}{output.suffix}"
             try:
-                with within(budget, "the mode shapes"):
+                with within(run.share(len(asked) - n + 1), "the mode shapes", budget):
                     drawn.append(save_modes(model, question, stage / name).path)
             except (RbdError, OutOfTime) as exc:  # the scene is drawn; say why the modes are not
                 tell(f"{question.loc}: no mode shapes: {exc}")

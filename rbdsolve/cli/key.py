@@ -56,7 +56,7 @@ def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, job
     refuse_overwriting_inputs(str(output), items)
     outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
     say_failures(outcomes)
-    problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None)
+    problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None, o.spent)
                 for s, o in zip(items, outcomes)]
     notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values),
                       settings.budget)

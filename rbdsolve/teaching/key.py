@@ -42,6 +42,7 @@ class Solved:
     load: Callable[[], Problem]
     report: ProblemReport | None
     failure: str | None = None
+    spent: float = 0.0  # processor seconds its solve spent: its pictures get what is left of the budget
 
 
 def check_output(output: Path, figures: bool = True) -> None:
@@ -173,14 +174,15 @@ def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) ->
 
 def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
               values: Mapping[str, Value], notes: list[str], budget: float | None) -> tuple[Picture, ...]:
-    """The scene and its mode shapes, drawn at the values the solution used, within the
-    budget; none for a scene that is not planar. A picture that fails is noted and left out."""
+    """The scene and its mode shapes, drawn at the values the solution used, within what
+    is left of the file's budget after its solve (one budget for the file); none for a
+    scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model
     from rbdsolve.render.drawing.figures import save_figures
-    from rbdsolve.solvers.shared.budget import OutOfTime, within
+    from rbdsolve.solvers.shared.budget import MIN_SHARE, OutOfTime, within
 
     try:
-        with within(budget, "the pictures"):
+        with within(None if budget is None else max(budget - problem.spent, MIN_SHARE), "the pictures", budget):
             model = build_model(problem.load())
             if values:
                 model = model.with_values(dict(values))
