@@ -209,19 +209,20 @@ def tell(line: str) -> None:
     click.echo(printable(line), err=True)
 
 
-def refuse_overwriting_inputs(output: str | None, items: list[Source]) -> None:
-    """``-o`` naming one of the problem files: refused before anything is solved."""
+def refuse_overwriting_inputs(output: str | None, items: list[Source], what: str = "one of the problem files") -> None:
+    """``-o`` naming one of the input files (``what`` they are): refused before anything
+    is solved."""
     if not output:
         return
     for item in items:
         if item.text is None and _same_file(output, item.name):
-            raise InputError(f"-o {output}: this is one of the problem files; choose another output")
+            raise InputError(f"-o {output}: this is {what}; choose another output")
 
 
 def _same_file(a: str, b: str) -> bool:
     try:
         return os.path.samefile(a, b)
-    except OSError:
+    except (OSError, ValueError):  # not there, or a path no file can have (NUL in it)
         return False
 
 

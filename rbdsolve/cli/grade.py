@@ -109,7 +109,8 @@ def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool,
 
     if output and Path(output).suffix.lower() != ".json":
         raise InputError(f"-o {output}: a check is written as JSON; give a .json file")
-    refuse_overwriting_inputs(output, [Source(file), *([Source(answers)] if answers else [])])
+    refuse_overwriting_inputs(output, [Source(file)], "the problem file")
+    refuse_overwriting_inputs(output, [Source(answers)] if answers else [], "the file of answers")
     if not entries and not answers:
         raise InputError("give the answers to check: --answer 'modes.frequencies[1] = sqrt(2*g/r)', "
                          "or a file of them after the problem")
@@ -159,7 +160,8 @@ def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_f
         raise InputError(f"give the class's answers after {file}: rbdsolve grade {file} answers.csv")
     if output and Path(output).suffix.lower() not in (".csv", ".json"):
         raise InputError(f"-o {output}: write the grades to a .csv or a .json file")
-    refuse_overwriting_inputs(output, [Source(file), Source(answers)])
+    refuse_overwriting_inputs(output, [Source(file)], "the variants table")
+    refuse_overwriting_inputs(output, [Source(answers)], "the class's answers")
     grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit), budget)
     if output:
         write_text(class_csv(grades) if output.lower().endswith(".csv") else dumps(class_object(grades)), output)

@@ -231,3 +231,13 @@ def test_a_path_with_a_nul_character() -> None:
     """(A command line cannot hold NUL; a script calling the library can.)"""
     with pytest.raises(InputError, match=r"^no such file: ans\\x00.csv$"):
         read_file("ans\x00.csv")
+
+
+@pytest.mark.parametrize("which", ["variants", "answers"])
+def test_an_output_that_is_an_input_names_which(tmp_path, which: str) -> None:
+    variants, answers = a_class(tmp_path, "anna,1,2,3,oscillation")
+    target, what = (variants, "the variants table") if which == "variants" else (answers, "the class's answers")
+    before = target.read_bytes()
+    result = grade(variants, answers, "-o", target)  # it said "one of the problem files" of either
+    assert result.stderr == f"-o {target}: this is {what}; choose another output\n"
+    assert result.exit_code == 2 and target.read_bytes() == before
