@@ -136,10 +136,12 @@ def _open_for_a_reader(path: Path, seconds: float) -> int:
 def staging(beside: Path) -> Iterator[Path]:
     """A private folder beside ``beside`` (``.NAME.XXXX.part``, on the same file system
     so that what is made in it can be renamed into place), removed however the block
-    ends. Its name is chosen before it is made, so that a signal arriving just after it
-    is made still finds it in the cleanup."""
+    ends; in the temporary folder when ``beside`` is a device or a FIFO (``-o
+    /dev/stdout``: its bytes are sent, not renamed). Its name is chosen before it is
+    made, so that a signal arriving just after it is made still finds it in the cleanup."""
     beside = Path(beside)
-    folder = beside.parent / f".{beside.name}.{secrets.token_hex(6)}.part"
+    home = beside.parent if _kind(beside) == "file" else Path(tempfile.gettempdir())
+    folder = home / f".{beside.name}.{secrets.token_hex(6)}.part"
     try:
         with _said(beside):
             folder.mkdir(mode=0o700)
@@ -162,9 +164,7 @@ def publish(pairs: Sequence[tuple[Path, Path]]) -> None:
                 write_file(target, Path(staged).read_bytes())
                 continue
             begun.append((Path(staged), target, _aside(target, kept)))
-            with _said(target):
-                os.chmod(staged, _mode(target))
-                os.replace(staged, target)
+            _moved(Path(staged), target)
     except BaseException:
         for staged, target, previous in reversed(begun):
             if staged.exists():  # not renamed: the target is as it was
@@ -177,6 +177,20 @@ def publish(pairs: Sequence[tuple[Path, Path]]) -> None:
     finally:
         for previous in kept:
             previous.unlink(missing_ok=True)
+
+
+def _moved(staged: Path, target: Path) -> None:
+    """``staged`` renamed onto ``target``; from another file system (a staging folder in
+    the temporary folder), written beside it and renamed, and ``staged`` removed."""
+    with _said(target):
+        os.chmod(staged, _mode(target))
+        try:
+            os.replace(staged, target)
+        except OSError as exc:
+            if exc.errno != errno.EXDEV:
+                raise
+            write_file(target, staged.read_bytes())
+            staged.unlink()
 
 
 def _aside(target: Path, kept: list[Path]) -> Path | None:

@@ -121,7 +121,7 @@ def _publish_with_pictures(document: bytes, output: Path, drawn: Path, stage: Pa
     created = target  # named before the rename: a signal just after it still finds the folder to remove
     try:
         os.chmod(drawn, 0o777 & ~_umask())
-        os.rename(drawn, target)
+        shutil.move(drawn, target)  # a rename, but for a key sent to a FIFO (its staging in the temporary folder)
         publish([(staged, output)])
     except BaseException:
         shutil.rmtree(created, ignore_errors=True)
