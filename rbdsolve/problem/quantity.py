@@ -144,15 +144,16 @@ def parse_value(text: str, loc: Location, plain: bool = True, unit: Unit | None 
         raise whole  # a number out of range, a division by zero: not a unit's doing
     unit_error = number_error = None
     for cut in _cuts(source):
+        number = _number(source[:cut], loc, plain, lead)
+        if not isinstance(number, ex.Expr) and number.message.startswith("expected a number"):
+            continue
         try:
             written = parse_unit(source[cut:], _at(loc, plain, lead + cut), plain)
         except InputError as exc:
             unit_error = unit_error or exc
             continue
-        number = _number(source[:cut], loc, plain, lead)
-        if not isinstance(number, ex.Expr):  # '1e999 m': a unit, and a number out of range before it
-            if not number.message.startswith("expected a number"):
-                number_error = number_error or number
+        if not isinstance(number, ex.Expr):  # '1e999 m': a unit, after a number out of range
+            number_error = number_error or number
             continue
         return _value(number.tree, source, loc, written)
     raise number_error or unit_error or whole

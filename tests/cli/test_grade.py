@@ -198,3 +198,18 @@ def test_the_first_of_repeated_questions_may_be_numbered_one(pendulum) -> None:
     first = grade(pendulum, "-a", "modes(1).eigenvalues[1] = 2*g/l")
     plain = grade(pendulum, "-a", "modes.eigenvalues[1] = 2*g/l")
     assert first.exit_code == plain.exit_code != 2 and first.output == plain.output
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "mkfifo"), reason="no FIFOs here")
+def test_a_fifo_of_answers_that_no_one_writes_is_not_waited_for(pendulum, tmp_path, monkeypatch) -> None:
+    """Issue 39: 'grade p.yaml ans.fifo' with no writer blocked forever."""
+    import os
+
+    from rbdsolve.problem import yamlnodes
+
+    monkeypatch.setattr(yamlnodes, "READ_SECONDS", 0.3)
+    fifo = tmp_path / "ans.fifo"
+    os.mkfifo(fifo)
+    result = grade(pendulum, fifo)
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"{fifo}:1:1: no end of file within 0.3 s")
