@@ -189,3 +189,14 @@ def test_the_assumption_of_a_huge_ratio_is_bounded_by_the_budget(tmp_path: Path)
     assert done.returncode == 1, done.stderr
     assert "ran out of its 3 s budget" in done.stderr
     assert spent < 3 + 3, spent  # start-up (~1 s) and the rings; each question had its own 3 s before: 12 s
+
+
+def test_once_stopping_a_ring_raises_the_interrupt_not_out_of_time(monkeypatch) -> None:
+    """Ctrl-C landing as a budget runs out: the ring that comes while the interrupt is on
+    its way out must not replace it with OutOfTime (caught as a budget run out, the run
+    would go on as if never interrupted; seen once on a loaded machine)."""
+    monkeypatch.setattr(budget, "_stopping", [])
+    budget.stop(KeyboardInterrupt)
+    with pytest.raises(KeyboardInterrupt):
+        with within(0.05, "'work'"):
+            spin(float("inf"))
