@@ -27,7 +27,7 @@ from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
-from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
+from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, not_real, numbers, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 
@@ -58,9 +58,10 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
     solution = _with_swing_warnings(question, model, _routed(family, question, model, options))
-    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
-    overflow = not_finite(solution.answers, model.values) if values else None
-    solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
+    found = numbers(solution.answers, model.values) if model.values and solution.answers else None
+    values = found.tree if found is not None else {}
+    said = (not_finite(solution.answers, model.values), not_real(found)) if values else ()
+    solution = replace(solution, warnings=(*solution.warnings, *(x for x in said if x)))
     units = answer_units(solution.answers, model) if values else {}
     return replace(_finite_estimate(solution), values=values or {}, units=units,
                    seconds=time.perf_counter() - start)
