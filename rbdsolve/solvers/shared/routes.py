@@ -23,6 +23,7 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import OutOfTime, within
+from rbdsolve.solvers.shared.checks import CheckFailed, Residuals, verify
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
@@ -34,10 +35,13 @@ Solver = Callable[[Question, Model, Options], Solution]  # a route, or a questio
 
 @dataclass(frozen=True)
 class Family:
-    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+    """A solver family's routes: each a pure function (question, model, options) ->
+    Solution; and what its answers must satisfy, checked before they are printed
+    (``checks.py``): a function (question, model, answers) -> residuals, or None."""
 
     exact: Solver
     numeric: Solver
+    residuals: Residuals | None = None
 
 
 def later(module: str) -> Solver:
@@ -49,6 +53,33 @@ def later(module: str) -> Solver:
         return importlib.import_module(f"rbdsolve.solvers.{module}").solve(question, model, options)
 
     solve.__qualname__ = f"{module}.solve"
+    return solve
+
+
+def later_residuals(module: str) -> Residuals:
+    """A family's ``residuals`` (``rbdsolve.solvers.<family>.check``), imported when first asked."""
+
+    def residuals(question: Question, model: Model, answers: object):
+        return importlib.import_module(f"rbdsolve.solvers.{module}").residuals(question, model, answers)
+
+    residuals.__qualname__ = f"{module}.residuals"
+    return residuals
+
+
+def checked(solver: Solver, residuals: Residuals | None) -> Solver:
+    """The route, its answers checked (checks.verify) on the model it answered on (the
+    model seen from a moving frame, for a question asked in one): CheckFailed where one
+    fails."""
+    if residuals is None:
+        return solver
+
+    def solve(question: Question, model: Model, options: Options) -> Solution:
+        solution = solver(question, model, options)
+        if solution.answers is not None:
+            verify(residuals(question, model, solution.answers), model, (*model.q, *model.qd))
+        return solution
+
+    solve.__qualname__ = getattr(solver, "__qualname__", "solve")
     return solve
 
 
@@ -91,17 +122,28 @@ def _finite_estimate(solution: Solution) -> Solution:
 
 
 def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:
+    """The routes' Solution (``_route_choice``); an answer that fails its check is not
+    printed and no other route is tried: the question is unanswered, its error says
+    what failed (a bug in rbdsolve)."""
+    try:
+        return _route_choice(family, question, model, options)
+    except CheckFailed as exc:
+        return _failed(question, exc.route, str(exc))
+
+
+def _route_choice(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
     parameter lacks a value. Each route gets the whole budget (auto may take twice it).
     The Solution's route is the route that ran last; when both fail, its error gives
     both routes' reasons."""
     filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
+    exact_route, numeric_route = checked(family.exact, family.residuals), checked(family.numeric, family.residuals)
     if options.route is RouteChoice.NUMERIC:
-        return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
-    exact = _attempt(Route.EXACT, family.exact, question, model, options)
+        return _attempt(Route.NUMERIC, numeric_route, question, filled, options)
+    exact = _attempt(Route.EXACT, exact_route, question, model, options)
     if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question, _solved_for(question)):
         return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
+    solution = _attempt(Route.NUMERIC, numeric_route, question, filled, options, " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
@@ -127,6 +169,8 @@ def _attempt(route: Route, solver, question: Question, model: Model, options: Op
     reason it could not answer."""
     try:
         return _run(solver, question, model, options, label)
+    except CheckFailed as exc:
+        raise CheckFailed(str(exc), route) from None
     except (UnsolvedError, OutOfTime) as exc:
         return _failed(question, route, str(exc))
 

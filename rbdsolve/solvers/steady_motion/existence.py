@@ -23,6 +23,7 @@ steady motion at s = 50: it needs s ≥ s_c = 83.02".
 
 from __future__ import annotations
 
+import random
 from typing import Sequence
 
 import sympy as sp
@@ -31,9 +32,9 @@ from sympy.logic.boolalg import BooleanAtom
 from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.solvers.shared.condition_roots import admissible, angle_parameters
 from rbdsolve.solvers.shared.conditions import Critical, CriticalValue, critical_values, exists_when, real_where
 from rbdsolve.solvers.shared.present_conditions import critical_names
-from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
 
 
@@ -59,16 +60,24 @@ def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model
 
 
 def _where_nonnegative(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]]:
-    """Where c ≥ 0: true or false where the assumptions decide it, solved for one
-    parameter where one splits it, else c ≥ 0 as it is."""
-    c = tidy(c)
-    sign = sign_of(c, model.assumed)
-    if isinstance(sign, int):
-        return (sp.true if sign >= 0 else sp.false), ()
+    """Where c ≥ 0: solved for one parameter where one splits it (``exists_when``,
+    which passes over a c whose sign the assumptions decide: then true where c ≥ 0 at an
+    admissible point, false where it is negative there), else c ≥ 0 as it is."""
     found = exists_when((), model, [c])
     if found is None:
-        return sp.GreaterThan(c, 0), ()
+        return sp.GreaterThan(tidy(c), 0), ()
+    if found.condition is sp.true and _negative_somewhere(c, model):
+        return sp.false, ()
     return found.condition, found.criticals
+
+
+def _negative_somewhere(c: sp.Expr, model: Model) -> bool:
+    """c < 0 at an admissible point (c's sign being decided, one point tells)."""
+    point = admissible(model, random.Random(38), (), angle_parameters(c))
+    if point is None:
+        return False
+    z = complex(sp.N(c.xreplace(point), 20))
+    return abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) and z.real < 0
 
 
 def absent_at_values(branches: Sequence[Branch], critical: Sequence[CriticalValue], model: Model,

@@ -211,3 +211,20 @@ def test_no_numeric_printer_shows_a_complex_value_as_a_pair() -> None:
     assert found.tree == {"a": None, "b": [{"solved": {"W": None}, "exists_when": False}]}
     assert not_real(found) == ("no numeric value for a: not a real number at the parameter values (a quantity "
                                "that exists only where it is real); shown as null")
+
+
+def test_a_condition_the_assumptions_decide_is_true_or_false_not_split() -> None:
+    """a > b assumed: a − b ≥ 0 always (true), b − a ≥ 0 never (false: the solution is
+    never real and is not listed); a − 2b by a parameter (a ≥ 2b)."""
+    from rbdsolve.solvers.steady_motion.existence import with_existence
+
+    model = build_model(load_text(CONE.format(values="assumptions: [H > r]"), "top.yaml"))
+    H, r = model.symbols.parameters["H"], model.symbols.parameters["r"]
+    branches, critical = with_existence([{"W": sp.sqrt(H - r)}, {"W": sp.sqrt(r - H)}, {"W": sp.sqrt(H - 2 * r)}],
+                                        [], model)
+    assert [b.exists_when for b in branches[:2]] == [sp.true, sp.false]
+    rng = random.Random(3)
+    for _ in range(20):
+        at = {H: rng.uniform(0.1, 2), r: rng.uniform(0.1, 2)}
+        if at[H] > at[r]:
+            assert bool(branches[2].exists_when.xreplace(at)) == (at[H] >= 2 * at[r])
