@@ -33,7 +33,9 @@ from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.shared.condition_roots import admissible, angle_parameters
-from rbdsolve.solvers.shared.conditions import Critical, CriticalValue, critical_values, exists_when, real_where
+from rbdsolve.solvers.shared.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values, exists_when,
+                                                real_where)
+from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.shared.present_conditions import critical_names
 from rbdsolve.solvers.steady_motion.answers import Branch
 
@@ -60,24 +62,90 @@ def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model
 
 
 def _where_nonnegative(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]]:
-    """Where c ≥ 0: solved for one parameter where one splits it (``exists_when``,
-    which passes over a c whose sign the assumptions decide: then true where c ≥ 0 at an
-    admissible point, false where it is negative there), else c ≥ 0 as it is."""
-    found = exists_when((), model, [c])
-    if found is None:
-        return sp.GreaterThan(tidy(c), 0), ()
-    if found.condition is sp.true and _negative_somewhere(c, model):
+    """Where c ≥ 0: a top's discriminant in its spin (``least_rate``); else solved for
+    one parameter where one splits it (``exists_when``, which passes over a c whose sign
+    the assumptions decide: then true where c ≥ 0, false where it is negative), else
+    c ≥ 0 as it is."""
+    c = tidy(c)
+    found = least_rate(c, model)
+    if found is not None:
+        return found
+    split = exists_when((), model, [c])
+    if split is None:
+        return sp.GreaterThan(c, 0), ()
+    if split.condition is sp.true and _sign(c, model) == -1:
         return sp.false, ()
-    return found.condition, found.criticals
+    return split.condition, split.criticals
 
 
-def _negative_somewhere(c: sp.Expr, model: Model) -> bool:
-    """c < 0 at an admissible point (c's sign being decided, one point tells)."""
-    point = admissible(model, random.Random(38), (), angle_parameters(c))
-    if point is None:
-        return False
-    z = complex(sp.N(c.xreplace(point), 20))
-    return abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) and z.real < 0
+def least_rate(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
+    """c = A p² + C in a rate p ≥ 0 (a spin, a speed: conditions.RATE_WORDS), A > 0: the
+    discriminant of a top's precession rates, I₃² s² − 4 (I₁ − I₃) m g h cos θ. Then
+
+        c ≥ 0  ⟺  p ≥ p_c = √(−C/A)   where C < 0 (the least spin),
+               always                  where C ≥ 0,
+               p² ≥ −C/A               where C's sign is not decided (a disk top with
+                                       h ≷ R/2 open: I₁ − I₃ = m (h² − R²/4)),
+
+    signs decided as ``_sign`` decides them. None where c is not of this form."""
+    for p in _rates(c, model):
+        polynomial = sp.Poly(c, p) if c.is_polynomial(p) else None
+        if polynomial is None or polynomial.degree() != 2 or polynomial.coeff_monomial(p) != 0:
+            continue
+        A, C = polynomial.coeff_monomial(p**2), polynomial.coeff_monomial(1)
+        if _sign(A, model) != 1:
+            continue
+        sign = _sign(C, model)
+        if sign is not None and sign >= 0:
+            return sp.true, ()
+        square = sp.factor(-C / A)
+        if sign is None:
+            return sp.GreaterThan(p**2, square), ()
+        least = _root(square)
+        return sp.GreaterThan(p, least), (Critical(p, least),)
+    return None
+
+
+def _rates(c: sp.Expr, model: Model) -> list[sp.Symbol]:
+    """The positive parameters of c named or described as rates, in the file's order."""
+    out = []
+    for parameter in model.problem.parameters:
+        p = model.symbols.parameters[parameter.name]
+        words = f"{parameter.name} {parameter.description}".lower()
+        if p in c.free_symbols and p.is_positive and any(w in words for w in RATE_WORDS):
+            out.append(p)
+    return out
+
+
+def _root(square: sp.Expr) -> sp.Expr:
+    """√(g h m (…)/J₃²) kept as one root, the form an exam writes (sympy would split the
+    root of a product of positive symbols)."""
+    if square.has(sp.sqrt) or square.is_Pow:
+        return tidy(sp.sqrt(square))
+    return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
+
+
+SAMPLES = 8  # admissible points that decide a sign sympy does not
+
+
+def _sign(x: sp.Expr, model: Model) -> int | None:
+    """1, 0 or −1: by the parameters' signs, the assumptions and the values (exactly),
+    else where every one of SAMPLES admissible points (the given values kept, angles in
+    their ranges) agrees, as conditions.py decides a piece's sign; None otherwise."""
+    sign = sign_of(x, model.decided_by)
+    if isinstance(sign, int):
+        return sign
+    angles = angle_parameters(x)
+    seen = set()
+    for k in range(SAMPLES):
+        point = admissible(model, random.Random(38 + k), (), angles)
+        if point is None:
+            return None
+        z = complex(sp.N(x.xreplace(point), 20))
+        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
+            return None
+        seen.add(1 if z.real > 0 else -1)
+    return seen.pop() if len(seen) == 1 else None
 
 
 def absent_at_values(branches: Sequence[Branch], critical: Sequence[CriticalValue], model: Model,

@@ -228,3 +228,27 @@ def test_a_condition_the_assumptions_decide_is_true_or_false_not_split() -> None
         at = {H: rng.uniform(0.1, 2), r: rng.uniform(0.1, 2)}
         if at[H] > at[r]:
             assert bool(branches[2].exists_when.xreplace(at)) == (at[H] >= 2 * at[r])
+
+
+@pytest.mark.parametrize(("values", "tilt"), [("values: {theta: pi/6}", "theta"), ("", "pi/6")],
+                         ids=["tilt-given-as-a-value", "tilt-written-in"])
+def test_a_disk_top_with_the_tilt_given_states_its_condition_in_the_spin(values, tilt) -> None:
+    """m, R, h, g and s free, θ = π/6: the rates are real iff I₃² s² ≥ 4 (I₁ − I₃) m g h cos θ,
+    I₁ − I₃ = m (h² − R²/4) of either sign, so a condition in the spin (s² ≥ …), not
+    in R; sampled on both sides of it, with h < R/2 (always real) among the samples."""
+    report, _ = _solve(DISK.format(values=values, tilt=tilt))
+    (solution,) = report.solutions
+    s = sp.Symbol("s", positive=True)
+    rng = random.Random(37)
+    seen = set()
+    for _ in range(40):
+        v = {"m": rng.uniform(0.1, 3), "R": rng.uniform(0.05, 1), "h": rng.uniform(0.05, 1), "g": 9.81,
+             "s": rng.uniform(0, 200), "theta": math.pi / 6}
+        I1, I3 = v["m"] * v["R"] ** 2 / 4 + v["m"] * v["h"] ** 2, v["m"] * v["R"] ** 2 / 2
+        real = (I3 * v["s"]) ** 2 >= 4 * (I1 - I3) * v["m"] * v["g"] * v["h"] * math.cos(math.pi / 6)
+        seen.add((real, v["h"] < v["R"] / 2))
+        at = {sp.Symbol(k, positive=True): x for k, x in v.items()}
+        for branch in solution.answers.branches:
+            assert s in branch.exists_when.free_symbols
+            assert bool(branch.exists_when.xreplace(at)) == real
+    assert {(True, True), (True, False), (False, False)} <= seen
