@@ -9,16 +9,18 @@ the spin, s ≥ s_c, the least spin of every such exercise.
 Each condition a solution needs (its radicands ≥ 0, 1 − c² under acos and asin, the
 value of a square asked for ≥ 0: ``real_where``) is
 
+- a discriminant A p² + C in a rate p, A > 0 (``least_rate``): p ≥ p_c = √(−C/A) where
+  C < 0, true where C ≥ 0, p² ≥ −C/A where C's sign is open;
 - dropped where the assumptions make it hold for every value (its sign is ≥ 0);
 - false where they make it fail for every value: the solution is never real, and is
   not listed;
-- else solved for one parameter (``exists_when`` of shared/conditions.py: rates first,
-  so the spin; at the given values of the others, where the problem gives some);
+- else solved for one parameter (``exists_when`` of shared/conditions.py: rates first;
+  at the given values of the others, where the problem gives some);
 - else stated as it is, ``D ≥ 0``: never dropped as if it always held.
 
 At the given values a solution whose condition fails is no motion: its numbers are
 not printed (a complex rate is no rate), and a warning names what it needs, "no
-steady motion at s = 50: it needs s ≥ s_c = 83.02".
+steady motion at s = 50: every solution needs s ≥ s_c = 159.647".
 """
 
 from __future__ import annotations
@@ -35,8 +37,8 @@ from rbdsolve.model.build import Model
 from rbdsolve.solvers.shared.condition_roots import admissible, angle_parameters
 from rbdsolve.solvers.shared.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values, exists_when,
                                                 real_where)
-from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.shared.present_conditions import critical_names
+from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
 
 
@@ -174,8 +176,8 @@ def _at(condition: sp.Basic, values: dict) -> sp.Basic | None:
         decided = condition.xreplace(values)
         if not isinstance(decided, BooleanAtom) and not decided.free_symbols:
             decided = decided.simplify()
-    except TypeError:  # a comparison of a number that is not real
-        return sp.false
+    except TypeError:  # a side that is not real there: sympy will not compare it
+        return None
     return decided if isinstance(decided, BooleanAtom) else None
 
 
