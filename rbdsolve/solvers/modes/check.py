@@ -1,13 +1,12 @@
 """What small oscillations must satisfy, for the check before they are printed
 (shared/checks.py): each eigenvalue λ makes K − λM singular, det(K − λM) = 0, and its
 mode shape a solves (K − λM) a = 0, wherever the equilibrium they are about exists.
-The text names λ₁ … and the equilibrium: "det(K − λ₁ M) about equilibrium 2"."""
+The text names λ₁ … and the equilibrium: "row 1 of (K − λ₁ M) a₁ about equilibrium 2"."""
 
 from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import subscript
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers
@@ -26,8 +25,8 @@ def residuals(question: Question, model: Model, answers: object) -> tuple[Residu
 
 
 def eigenpairs(a: ModesAnswers, about: str = "") -> tuple[Residual, ...]:
-    """det(K − λᵢ M) = 0 and (K − λᵢ M) aᵢ = 0 for each λᵢ, where every radicand of
-    the equilibrium's coordinates is ≥ 0."""
+    """(K − λᵢ M) aᵢ = 0 for each λᵢ (det(K − λᵢ M) = 0 where no shape is given), where
+    every radicand of the equilibrium's coordinates is ≥ 0."""
     where = sp.And(*(sp.GreaterThan(c, 0) for c in real_where(a.about.values())))
-    return tuple(Pencil(f"λ{subscript(k)}{about}", a.K, a.M, lam, a.shapes[k - 1] if k <= len(a.shapes) else None,
-                        where) for k, lam in enumerate(a.eigenvalues, 1))
+    shapes = tuple(a.shapes[k] if k < len(a.shapes) else None for k in range(len(a.eigenvalues)))
+    return (Pencil(about, a.K, a.M, tuple(a.eigenvalues), shapes, where),)
