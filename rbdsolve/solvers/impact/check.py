@@ -32,7 +32,8 @@ def residuals(question: Question, model: Model, answers: object) -> tuple[Residu
     out: list[Residual] = []
     for n, qd in zip(names, model.qd):
         p = sp.diff(now.T, qd)
-        out.append(Vanishes(f"the impulse equation of {n}", p.xreplace(after) - p.xreplace(before) - answers.impulses[n]))
+        change = p.xreplace(after) - p.xreplace(before)
+        out.append(Vanishes(f"the impulse equation of {n}", change - answers.impulses[n]))
     return (*out, *_restitution(opts, model, now, answers, before, after))
 
 

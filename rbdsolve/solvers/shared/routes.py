@@ -28,7 +28,8 @@ from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
-from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, not_real, numbers, with_irrelevant_filled
+from rbdsolve.solvers.shared.values import (missing_for, missing_values, not_finite, not_real, numbers,
+                                           with_irrelevant_filled)
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 

@@ -28,9 +28,11 @@ def residuals(question: Question, model: Model, answers: object) -> tuple[Residu
         name = f" at solution {k}" if len(solutions) > 1 else ""
         for i, relation in enumerate(answers.relations, 1):
             value = relation.xreplace(found)
-            for text, target in asked:
-                if text in solved:
-                    value = value.xreplace({target: solved[text]}) if target.is_Symbol else value.subs(target, solved[text])
+            for text, target in asked:  # a symbol replaced as it is; a square (omega0**2) by subs
+                if text in solved and target.is_Symbol:
+                    value = value.xreplace({target: solved[text]})
+                elif text in solved:
+                    value = value.subs(target, solved[text])
             if not value.free_symbols & unknowns:
                 out.append(Vanishes(f"balance {i}{name}", value, where))
     return tuple(out)

@@ -191,7 +191,8 @@ def _needs(condition: sp.Basic, critical: Sequence[CriticalValue], values: dict)
     parts = condition.args if isinstance(condition, sp.And) else (condition,)
     failing = [p for p in parts if _at(p, values) is sp.false] or [condition]
     texts = [_part_text(p, critical, values) for p in failing]
-    return "; ".join(t for t, _ in texts), ", ".join(dict.fromkeys(a for _, a in texts)) if all(a for _, a in texts) else ""
+    at = ", ".join(dict.fromkeys(a for _, a in texts)) if all(a for _, a in texts) else ""
+    return "; ".join(t for t, _ in texts), at
 
 
 def _part_text(part: sp.Basic, critical: Sequence[CriticalValue], values: dict) -> tuple[str, str]:
