@@ -40,6 +40,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
+from rbdsolve.solvers.shared.conditions import asked
 from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.existence import absent_at_values, with_existence
 from rbdsolve.solvers.steady_motion.balances import (
@@ -71,7 +72,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     names = model.symbols.with_points(model.points)
     held = _reaction_unknowns(opts, model, names)
     found = _solve_for(opts, targets, relations, model, rates, held)
-    real, several, critical = _branches(found, targets, model)
+    real, several, critical = _branches(found, targets, model, asked(model, question))
     solved, along = real[0] if len(real) == 1 else ({}, {})
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
@@ -162,14 +163,14 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
     return out
 
 
-def _branches(found, targets, model: Model):
+def _branches(found, targets, model: Model, first=None):
     """The solutions that are real somewhere, each with where it is (solved for one
     parameter: the least spin for which a top's two precession rates exist, the tilt
     below which a coin's rate is; the value of a square, ω₀², must be ≥ 0:
     existence.py), and the critical values; no branches for one solution that is real
     everywhere."""
     squares = [k for k, t in enumerate(targets) if t.is_Pow and t.exp.is_even and t.base.is_real]
-    branches, critical = with_existence([solved for solved, _ in found], squares, model)
+    branches, critical = with_existence([solved for solved, _ in found], squares, model, first)
     real = [(pair, b) for pair, b in zip(found, branches) if b.exists_when is not sp.false]
     if not real:
         raise UnsolvedError("no steady motion: every solution of the relations is complex for all the values the "

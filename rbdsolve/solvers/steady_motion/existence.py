@@ -42,11 +42,12 @@ from rbdsolve.solvers.shared.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
 
 
-def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model
+def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model, first: sp.Symbol | None = None
                    ) -> tuple[tuple[Branch, ...], tuple[CriticalValue, ...]]:
     """Each solution ({asked quantity: value}) with where it is real (false: nowhere
     the assumptions allow; ``squares``: the positions of the asked quantities that are
-    squares, ω₀², so ≥ 0), and the critical values those conditions use."""
+    squares, ω₀², so ≥ 0), and the critical values those conditions use, solved for
+    ``first`` (the question's ``for:``) where it names a parameter."""
     out, criticals = [], []
     known: dict[sp.Expr, tuple[sp.Basic, tuple[Critical, ...]]] = {}  # ±√D share D: split once
     for solved in found:
@@ -55,7 +56,7 @@ def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model
         condition = sp.true
         for c in needed:
             if c not in known:
-                known[c] = _where_nonnegative(c, model)
+                known[c] = _where_nonnegative(c, model, first)
             part, found_criticals = known[c]
             condition = sp.And(condition, part)
             criticals += found_criticals
@@ -63,16 +64,17 @@ def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model
     return tuple(out), critical_values(criticals)
 
 
-def _where_nonnegative(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]]:
+def _where_nonnegative(c: sp.Expr, model: Model, first: sp.Symbol | None = None
+                       ) -> tuple[sp.Basic, tuple[Critical, ...]]:
     """Where c ≥ 0: a top's discriminant in its spin (``least_rate``); else solved for
     one parameter where one splits it (``exists_when``, which passes over a c whose sign
     the assumptions decide: then true where c ≥ 0, false where it is negative), else
     c ≥ 0 as it is."""
     c = tidy(c)
-    found = least_rate(c, model)
+    found = least_rate(c, model, first)
     if found is not None:
         return found
-    split = exists_when((), model, [c])
+    split = exists_when((), model, [c], first)
     if split is None:
         return sp.GreaterThan(c, 0), ()
     if split.condition is sp.true and _sign(c, model) == -1:
@@ -80,7 +82,8 @@ def _where_nonnegative(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critic
     return split.condition, split.criticals
 
 
-def least_rate(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
+def least_rate(c: sp.Expr, model: Model, first: sp.Symbol | None = None
+               ) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
     """c = A p² + C in a rate p ≥ 0 (a spin, a speed: conditions.RATE_WORDS), A > 0: the
     discriminant of a top's precession rates, I₃² s² − 4 (I₁ − I₃) m g h cos θ. Then
 
@@ -89,8 +92,11 @@ def least_rate(c: sp.Expr, model: Model) -> tuple[sp.Basic, tuple[Critical, ...]
                p² ≥ −C/A               where C's sign is not decided (a disk top with
                                        h ≷ R/2 open: I₁ − I₃ = m (h² − R²/4)),
 
-    signs decided as ``_sign`` decides them. None where c is not of this form."""
+    signs decided as ``_sign`` decides them. None where c is not of this form, or where
+    ``first`` (a question's ``for:``) names another parameter than the rate."""
     for p in _rates(c, model):
+        if first is not None and p != first:
+            continue
         polynomial = sp.Poly(c, p) if c.is_polynomial(p) else None
         if polynomial is None or polynomial.degree() != 2 or polynomial.coeff_monomial(p) != 0:
             continue
