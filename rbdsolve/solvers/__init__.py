@@ -31,12 +31,13 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Solution
 from rbdsolve.solvers.shared import routes
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.routes import Family, later
+from rbdsolve.solvers.shared.routes import Family, later, later_check
 
 FAMILIES = {
     QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric")),
-    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric")),
-    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric")),
+    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"),
+                                    later_check("equilibria.exact")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later_check("modes.exact")),
     QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric")),
     QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric")),
     QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),

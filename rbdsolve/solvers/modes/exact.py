@@ -39,7 +39,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.equilibria.exact import listing
+from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.shared.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped, \
     with_amplitude_check
@@ -72,6 +72,13 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     at, notes = exact_equilibrium(question, model)
     answers, steps = modes_at(at, model)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
+
+
+def partial(question: Question, model: Model) -> str | None:
+    """The route choice's check (shared/routes.py): where the modes are taken about an
+    equilibrium the exact route must find (no ``about`` point, ``about: each``, or
+    ``about: {equilibrium: N}``), why its list would be partial, read from the structure."""
+    return None if question.options.about is not None else incomplete(model)
 
 
 def _at_each(model: Model) -> Solution:

@@ -30,22 +30,40 @@ from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
 
 def zeros(value: sp.Expr, model: Model) -> list[sp.Relational]:
-    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c."""
+    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c.
+
+    |u| vanishes where u does, and |u|/u (a push along a normal that turns, ±1) nowhere:
+    each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
+    numerator that holds q both inside and outside sin and cos has no closed-form zeros:
+    none are listed (sympy's solve would search for minutes). Only real roots count."""
     q = model.q[0]
-    top = sp.fraction(tidy_fraction(value))[0]
+    top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
         return []
     c = sp.Dummy("c", real=True)
     for f in (sp.cos, sp.sin):
         swapped = top.xreplace({f(q): c})
         if not swapped.has(q):
-            roots = [r for r in sp.solve(swapped, c) if _within_one(r, model)]
+            roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
+    if _mixed(top, q):
+        return []
+    return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
+
+
+def _real_roots(expr: sp.Expr, x: sp.Symbol) -> list[sp.Expr]:
+    """sympy's roots of expr in x, those that may be real (no Piecewise, no i, no NaN)."""
     try:
-        roots = sp.solve(top, q)
+        roots = sp.solve(expr, x)
     except NotImplementedError:
         return []
-    return [sp.Eq(model.to_time(q), r) for r in roots if r.is_real is not False]
+    return [r for r in roots if not r.has(sp.Piecewise, sp.I, sp.nan, sp.zoo) and r.is_real is not False]
+
+
+def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q occur both inside a trigonometric function and outside every one?"""
+    trig = expr.atoms(sp.sin, sp.cos, sp.tan)
+    return any(f.has(q) for f in trig) and expr.xreplace({f: sp.Integer(0) for f in trig}).has(q)
 
 
 def _within_one(r: sp.Expr, model: Model) -> bool:
@@ -54,7 +72,8 @@ def _within_one(r: sp.Expr, model: Model) -> bool:
     if value.is_real is False:
         return False
     if value.is_number:
-        return bool(abs(value) <= 1)
+        z = complex(sp.N(value, 30))
+        return abs(z.imag) <= 1e-20 * max(1.0, abs(z.real)) and abs(z.real) <= 1 + 1e-15
     return True
 
 

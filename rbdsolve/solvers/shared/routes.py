@@ -6,7 +6,11 @@ budget, and a whole problem's report.
 
 ``--route auto`` runs the exact route, and the numeric route where the exact one
 cannot answer and every parameter has a value; each route runs within the budget
-(``budget.within``) and is timed.
+(``budget.within``) and is timed. Where a family can tell from the structure of the
+equations, in milliseconds, that the exact route would answer only in part (the
+evident roots of transcendental equilibrium equations), ``auto`` with every value given
+runs the numeric route at once: the route is chosen by what the equations are, never
+by how long the exact route took, so a file takes the same route on any machine.
 """
 
 from __future__ import annotations
@@ -23,21 +27,25 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import OutOfTime, within
-from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
+from rbdsolve.solvers.shared.frames import frame_of, model_in_frame, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
 from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
+Check = Callable[[Question, Model], "str | None"]  # why the exact route's answer would be partial, or None
 
 
 @dataclass(frozen=True)
 class Family:
-    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+    """A solver family's routes: each a pure function (question, model, options) ->
+    Solution; and, where the family has one, the check that reads from the structure of
+    the equations whether the exact route would answer only in part (and why)."""
 
     exact: Solver
     numeric: Solver
+    partial: Check | None = None
 
 
 def later(module: str) -> Solver:
@@ -50,6 +58,17 @@ def later(module: str) -> Solver:
 
     solve.__qualname__ = f"{module}.solve"
     return solve
+
+
+def later_check(module: str) -> Check:
+    """A family's ``partial`` check (``rbdsolve.solvers.<module>.partial``), imported
+    when first asked, like its routes."""
+
+    def partial(question: Question, model: Model) -> str | None:
+        return importlib.import_module(f"rbdsolve.solvers.{module}").partial(question, model)
+
+    partial.__qualname__ = f"{module}.partial"
+    return partial
 
 
 def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
@@ -97,6 +116,9 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
     filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
     if options.route is RouteChoice.NUMERIC:
         return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
+    chosen = _numeric_first(family, question, model, filled, options)
+    if chosen is not None:
+        return chosen
     exact = _attempt(Route.EXACT, family.exact, question, model, options)
     if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question, _solved_for(question)):
         return exact
@@ -105,6 +127,35 @@ def _routed(family: Family, question: Question, model: Model, options: Options) 
         return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _numeric_first(family: Family, question: Question, model: Model, filled: Model, options: Options):
+    """On ``auto`` with every value given, the numeric route's Solution where the
+    structure shows the exact route would answer only in part; None otherwise, or where
+    the numeric route cannot answer (the exact route's part is then better than none)."""
+    if options.route is not RouteChoice.AUTO or family.partial is None:
+        return None
+    if missing_for(model, question, _solved_for(question)):
+        return None
+    why = _partial(family.partial, question, model, options)
+    if why is None:
+        return None
+    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
+    if not solution.solved:
+        return None
+    note = (f"the exact route would answer only in part: {why}; these are the numeric route's answers, the "
+            "route chosen from the structure of the equations")
+    return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _partial(check: Check, question: Question, model: Model, options: Options) -> str | None:
+    """The family's check, on the model as the question sees it (in its frame), within
+    the budget; a check that cannot decide says nothing."""
+    try:
+        with within(options.budget, f"'{question.kind.value}' (its structure)"):
+            return check(question, model if frame_of(question) is None else model_in_frame(question, model))
+    except (UnsolvedError, OutOfTime):
+        return None
 
 
 def _both_failed(exact: str, numeric: str) -> str:

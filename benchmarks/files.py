@@ -1,0 +1,143 @@
+"""Per-file whole-process times: every problem file, as a student runs it.
+
+    python3 -m benchmarks.files [PATH ...] [--repeats 3] [--timeout 300] [--out FILE.json]
+
+PATH: problem files or folders (default: problems/). Each file is solved in its own
+process, ``python3 -m rbdsolve solve FILE --format json``, ``--repeats`` times; the
+wall-clock seconds (median of the repeats), the processor seconds the child spent (user
++ system, from ``resource.getrusage(RUSAGE_CHILDREN)``: what a loaded machine does not
+inflate) and the exit code are recorded. A run past ``--timeout`` is recorded as
+"> T s". Prints a table and the p50, p90 and max over the files (issue 37: p90 ≤ 1.0 s
+and max ≤ 2 s over problems/, each neighbouring problem ≤ 3 s); ``--out`` writes
+every sample as JSON. Run it from the repository root, so the rbdsolve measured is this
+checkout's. Not a test: nothing fails on a slow machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@dataclass(frozen=True)
+class Timing:
+    """One file's runs: wall and processor seconds per repeat, and the exit codes."""
+
+    file: str
+    wall: tuple[float, ...]
+    cpu: tuple[float, ...]
+    codes: tuple[int | None, ...]  # None: past the timeout
+
+    @property
+    def seconds(self) -> float:
+        return statistics.median(self.wall)
+
+    @property
+    def cpu_seconds(self) -> float:
+        return statistics.median(self.cpu)
+
+
+def problem_files(paths: list[str]) -> list[Path]:
+    """The problem files under each path (a folder's *.yaml but its *.expected.yaml)."""
+    found: list[Path] = []
+    for path in map(Path, paths):
+        files = sorted(path.rglob("*.yaml")) if path.is_dir() else [path]
+        found += [f for f in files if not f.name.endswith(".expected.yaml")]
+    return found
+
+
+def run_once(file: Path, timeout: float) -> tuple[float, float, int | None]:
+    """One whole-process solve: (wall seconds, the child's processor seconds, exit code)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    try:
+        code: int | None = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(file), "--format", "json"],
+                                          cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                          timeout=timeout).returncode
+    except subprocess.TimeoutExpired:
+        code = None
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu, code
+
+
+def measure(file: Path, repeats: int, timeout: float) -> Timing:
+    runs = [run_once(file, timeout) for _ in range(repeats if repeats > 0 else 1)]
+    if runs[0][2] is None:  # past the timeout once: once is enough
+        runs = runs[:1]
+    return Timing(_shown(file), tuple(r[0] for r in runs), tuple(r[1] for r in runs), tuple(r[2] for r in runs))
+
+
+def _shown(file: Path) -> str:
+    try:
+        return str(file.resolve().relative_to(ROOT))
+    except ValueError:
+        return str(file)
+
+
+def quantile(values: list[float], q: float) -> float:
+    """The q-quantile by linear interpolation between order statistics (numpy's default)."""
+    ordered = sorted(values)
+    if not ordered:
+        return math.nan
+    k = (len(ordered) - 1) * q
+    low, high = math.floor(k), math.ceil(k)
+    return ordered[low] + (ordered[high] - ordered[low]) * (k - low)
+
+
+def summary(timings: list[Timing]) -> dict[str, float]:
+    wall = [t.seconds for t in timings]
+    cpu = [t.cpu_seconds for t in timings]
+    return {"files": len(timings), "p50": quantile(wall, 0.5), "p90": quantile(wall, 0.9), "max": max(wall),
+            "cpu_p50": quantile(cpu, 0.5), "cpu_p90": quantile(cpu, 0.9), "cpu_max": max(cpu)}
+
+
+def table(timings: list[Timing], timeout: float) -> str:
+    lines = ["| file | whole (s) | processor (s) | exit |", "|---|---:|---:|---:|"]
+    for t in timings:
+        past = t.codes[0] is None
+        wall = f"> {timeout:g}" if past else f"{t.seconds:.2f}"
+        codes = "timeout" if past else ",".join(sorted({str(c) for c in t.codes}))
+        lines.append(f"| {t.file} | {wall} | {t.cpu_seconds:.2f} | {codes} |")
+    s = summary(timings)
+    lines.append("")
+    lines.append(f"{s['files']} files: whole p50 {s['p50']:.2f} s, p90 {s['p90']:.2f} s, max {s['max']:.2f} s; "
+                 f"processor p50 {s['cpu_p50']:.2f} s, p90 {s['cpu_p90']:.2f} s, max {s['cpu_max']:.2f} s")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("paths", nargs="*", default=["problems"])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--timeout", type=float, default=300.0)
+    parser.add_argument("--out", type=Path)
+    args = parser.parse_args(argv)
+    load = os.getloadavg()
+    timings = []
+    for file in problem_files(args.paths):
+        timings.append(measure(file, args.repeats, args.timeout))
+        print(f"{timings[-1].file}: {timings[-1].seconds:.2f} s", file=sys.stderr, flush=True)
+    print(f"load average before the run: {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}; "
+          f"after: {', '.join(f'{x:.2f}' for x in os.getloadavg())}; {os.cpu_count()} cores")
+    print(table(timings, args.timeout))
+    if args.out:
+        args.out.write_text(json.dumps({"load": load, "timings": [asdict(t) for t in timings],
+                                        "summary": summary(timings)}, indent=1))
+
+
+if __name__ == "__main__":
+    main()
