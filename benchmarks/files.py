@@ -2,15 +2,18 @@
 
     python3 -m benchmarks.files [PATH ...] [--repeats 3] [--timeout 300] [--out FILE.json]
 
-PATH: problem files or folders (default: problems/). Each file is solved in its own
-process, ``python3 -m rbdsolve solve FILE --format json``, ``--repeats`` times; the
+PATH: problem files or folders (default: problems/). ``--twins``: each file that asks a
+question ``from_rest: {q: v}`` is also timed as its twin asking ``at: {q: v, dot(q): 0}``,
+the same instant given as a state (issue 37: released from rest never slower by more than
+1 s). Each file is solved in its own process, ``python3 -m rbdsolve solve FILE --format json``, ``--repeats`` times; the
 wall-clock seconds (median of the repeats), the processor seconds the child spent (user
 + system, from ``resource.getrusage(RUSAGE_CHILDREN)``: what a loaded machine does not
 inflate) and the exit code are recorded. A run past ``--timeout`` is recorded as
 "> T s". Prints a table and the p50, p90 and max over the files (issue 37: p90 ≤ 1.0 s
 and max ≤ 2 s over problems/, each neighbouring problem ≤ 3 s); ``--out`` writes
-every sample as JSON. Run it from the repository root, so the rbdsolve measured is this
-checkout's. Not a test: nothing fails on a slow machine.
+every sample as JSON. The rbdsolve measured is this checkout's, or ``--root``'s (another
+checkout, for a "before" column: the same files solved by the code before a change).
+Not a test: nothing fails on a slow machine.
 """
 
 from __future__ import annotations
@@ -19,10 +22,12 @@ import argparse
 import json
 import math
 import os
+import re
 import resource
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -57,14 +62,14 @@ def problem_files(paths: list[str]) -> list[Path]:
     return found
 
 
-def run_once(file: Path, timeout: float) -> tuple[float, float, int | None]:
+def run_once(file: Path, timeout: float, root: Path = ROOT) -> tuple[float, float, int | None]:
     """One whole-process solve: (wall seconds, the child's processor seconds, exit code)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    env = {**os.environ, "PYTHONPATH": str(root)}
     try:
-        code: int | None = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(file), "--format", "json"],
-                                          cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+        code: int | None = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(file.resolve()),
+                                           "--format", "json"], cwd=root, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                           timeout=timeout).returncode
     except subprocess.TimeoutExpired:
         code = None
@@ -74,18 +79,53 @@ def run_once(file: Path, timeout: float) -> tuple[float, float, int | None]:
     return wall, cpu, code
 
 
-def measure(file: Path, repeats: int, timeout: float) -> Timing:
-    runs = [run_once(file, timeout) for _ in range(repeats if repeats > 0 else 1)]
+def measure(file: Path, repeats: int, timeout: float, root: Path = ROOT) -> Timing:
+    runs = [run_once(file, timeout, root) for _ in range(repeats if repeats > 0 else 1)]
     if runs[0][2] is None:  # past the timeout once: once is enough
         runs = runs[:1]
     return Timing(_shown(file), tuple(r[0] for r in runs), tuple(r[1] for r in runs), tuple(r[2] for r in runs))
 
 
 def _shown(file: Path) -> str:
-    try:
-        return str(file.resolve().relative_to(ROOT))
-    except ValueError:
-        return str(file)
+    """problems/… for a file of any checkout's problems/, else the path as given."""
+    parts = file.resolve().parts
+    return str(Path(*parts[len(parts) - 1 - parts[::-1].index("problems"):])) if "problems" in parts else str(file)
+
+
+FROM_REST = re.compile(r"from_rest: \{([^{}]*)\}")
+
+
+def at_rest_twin(text: str) -> str | None:
+    """The text with each ``from_rest: {q: v, …}`` asked as ``at: {q: v, …, dot(q): 0, …}``
+    (None: no question is released from rest)."""
+    if not FROM_REST.search(text):
+        return None
+
+    def state(match: re.Match) -> str:
+        names = re.findall(r"(\w+)\s*:", match.group(1))
+        return "at: {" + match.group(1) + "".join(f", dot({n}): 0" for n in names) + "}"
+
+    return FROM_REST.sub(state, text)
+
+
+def twins(files: list[Path], repeats: int, timeout: float, folder: Path, root: Path = ROOT) -> list[tuple[Timing, Timing]]:
+    """(released from rest, the same instant as a state) for each file with a twin."""
+    pairs = []
+    for file in files:
+        twin = at_rest_twin(file.read_text(encoding="utf-8"))
+        if twin is None:
+            continue
+        path = folder / f"{file.stem}.at-rest.yaml"
+        path.write_text(twin, encoding="utf-8")
+        pairs.append((measure(file, repeats, timeout, root), measure(path, repeats, timeout, root)))
+    return pairs
+
+
+def twins_table(pairs: list[tuple[Timing, Timing]]) -> str:
+    lines = ["| file | from_rest (s) | at the state (s) | difference (s) |", "|---|---:|---:|---:|"]
+    for rest, state in pairs:
+        lines.append(f"| {rest.file} | {rest.seconds:.2f} | {state.seconds:.2f} | {rest.seconds - state.seconds:+.2f} |")
+    return "\n".join(lines)
 
 
 def quantile(values: list[float], q: float) -> float:
@@ -125,18 +165,27 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--timeout", type=float, default=300.0)
     parser.add_argument("--out", type=Path)
+    parser.add_argument("--twins", action="store_true", help="also time each from_rest file asked at the state")
+    parser.add_argument("--root", type=Path, default=ROOT, help="the checkout whose rbdsolve is measured")
     args = parser.parse_args(argv)
     load = os.getloadavg()
     timings = []
     for file in problem_files(args.paths):
-        timings.append(measure(file, args.repeats, args.timeout))
+        timings.append(measure(file, args.repeats, args.timeout, args.root))
         print(f"{timings[-1].file}: {timings[-1].seconds:.2f} s", file=sys.stderr, flush=True)
     print(f"load average before the run: {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}; "
           f"after: {', '.join(f'{x:.2f}' for x in os.getloadavg())}; {os.cpu_count()} cores")
     print(table(timings, args.timeout))
+    pairs = []
+    if args.twins:
+        with tempfile.TemporaryDirectory() as folder:
+            pairs = twins(problem_files(args.paths), args.repeats, args.timeout, Path(folder), args.root)
+        print()
+        print(twins_table(pairs))
     if args.out:
         args.out.write_text(json.dumps({"load": load, "timings": [asdict(t) for t in timings],
-                                        "summary": summary(timings)}, indent=1))
+                                        "summary": summary(timings),
+                                        "twins": [[asdict(a), asdict(b)] for a, b in pairs]}, indent=1))
 
 
 if __name__ == "__main__":

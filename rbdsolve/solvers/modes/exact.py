@@ -75,10 +75,34 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 
 
 def partial(question: Question, model: Model) -> str | None:
-    """The route choice's check (shared/routes.py): where the modes are taken about an
-    equilibrium the exact route must find (no ``about`` point, ``about: each``, or
-    ``about: {equilibrium: N}``), why its list would be partial, read from the structure."""
-    return None if question.options.about is not None else incomplete(model)
+    """The route choice's check (shared/routes.py), read from the structure: where the
+    modes are taken about an equilibrium the exact route must find (no ``about`` point,
+    ``about: each``, or ``about: {equilibrium: N}``), why its list of equilibria would be
+    partial; about a given point, why its eigenvalues would take minutes (``_slow_spectrum``)."""
+    if question.options.about is None:
+        return incomplete(model)
+    return _slow_spectrum({q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, question.options.about)}, model)
+
+
+SYMBOLIC_DEGREE = 3  # det(K − λM) over the parameters from this degree: Cardano's and Ferrari's forms
+
+
+def _slow_spectrum(at: dict, model: Model) -> str | None:
+    """Why det(K − λM) = 0 has no quick exact roots here, or None: M and K are not each
+    a common scale times a rational matrix (``_spectrum``'s fast route, over QQ), so the
+    polynomial's coefficients hold the parameters, and its degree is 3 or more (four
+    rods with springs, symbolic: over three minutes of processor time in the roots,
+    their signs and the mode shapes)."""
+    n = len(model.q)
+    if n < SYMBOLIC_DEGREE:
+        return None
+    symbols = set(model.symbols.parameters.values())
+    M = sp.Matrix(mass_matrix(model, at))
+    K = sp.Matrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    if _rational(M / common_scale(list(M), symbols)) and _rational(K / common_scale(list(K), symbols)):
+        return None
+    return (f"the eigenvalues are the roots of det(K − λM), of degree {n}, whose coefficients hold the parameters "
+            "(M and K have no common scale): their closed forms (Cardano's, Ferrari's) take minutes")
 
 
 def _at_each(model: Model) -> Solution:
