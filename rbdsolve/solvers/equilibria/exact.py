@@ -90,6 +90,9 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
     return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
 
 
+SHOWN_CHARACTERS = 240  # a longer ∂V/∂q = 0 is not repeated in the warning
+
+
 @memoized
 def structure(model: Model) -> Structure:
     """What ∂V/∂q = 0 is (structure.py), read from its form: polynomial, algebraic or
@@ -128,6 +131,8 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
         return [proved[0]], [proved[1]]
     evident = evident_roots(equations, unknowns, model)
     shown = "; ".join(f"{to_unicode(model.readable(e))} = 0" for e in equations)
+    if len(shown) > SHOWN_CHARACTERS:  # written out in the steps already
+        shown = "∂V/∂q = 0, as written above"
     where = search_rule(model, angles)
     if not evident:
         raise UnsolvedError(f"{found.why_partial} ({shown}), and no evident root (0, π or ±π/2 in the angles, 0 in "

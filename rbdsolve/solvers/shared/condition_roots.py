@@ -52,8 +52,11 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     where a root is inside at some samples and not at others, or the order changes."""
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
+    factors = [factor for factor in (numerator, denominator) if factor.has(p)]
+    if any(_under_long_radical(factor, p) for factor in factors):
+        return None  # sympy's solve squares the radicals away: minutes (issue 37), for a root nobody reads
     try:
-        found = {tidy(r) for factor in (numerator, denominator) if factor.has(p) for r in sp.solve(factor, p)}
+        found = {tidy(r) for factor in factors for r in sp.solve(factor, p)}
     except (NotImplementedError, ValueError):
         return None
     points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
@@ -75,6 +78,17 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     if any(sorted(inside, key=lambda r: inside[r][k]) != order for k in range(len(points))):
         return None
     return order
+
+
+RADICAL_OPS = 40  # a longer expression with p under a radical is not given to sympy's solve
+
+
+def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand under a radical (a fractional power) in an expression longer than
+    RADICAL_OPS operations? Two springs of natural length on an inverted rod give
+    √(4a² + d²) beside a² k: solving that for a ran for minutes."""
+    radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
+    return radical and sp.count_ops(expr) > RADICAL_OPS
 
 
 def _turns_into(z: complex, low, high, periodic: bool) -> int | None:
