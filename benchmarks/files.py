@@ -122,9 +122,11 @@ def twins(files: list[Path], repeats: int, timeout: float, folder: Path, root: P
 
 
 def twins_table(pairs: list[tuple[Timing, Timing]]) -> str:
-    lines = ["| file | from_rest (s) | at the state (s) | difference (s) |", "|---|---:|---:|---:|"]
+    lines = ["| file | from_rest (s) | at the state (s) | difference (s) | processor: from_rest, state, difference (s) |",
+             "|---|---:|---:|---:|---:|"]
     for rest, state in pairs:
-        lines.append(f"| {rest.file} | {rest.seconds:.2f} | {state.seconds:.2f} | {rest.seconds - state.seconds:+.2f} |")
+        lines.append(f"| {rest.file} | {rest.seconds:.2f} | {state.seconds:.2f} | {rest.seconds - state.seconds:+.2f} | "
+                     f"{rest.cpu_seconds:.2f}, {state.cpu_seconds:.2f}, {rest.cpu_seconds - state.cpu_seconds:+.2f} |")
     return "\n".join(lines)
 
 

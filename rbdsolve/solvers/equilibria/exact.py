@@ -36,7 +36,7 @@ from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, 
 from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
-from rbdsolve.solvers.shared.polynomial import polynomial_roots
+from rbdsolve.solvers.shared.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
@@ -276,7 +276,7 @@ def proved_monotone(model: Model) -> tuple[dict, str] | None:
     """One equation mixing q with sin and cos of it (θ = k sin θ) whose left side is
     proved strictly monotone (``monotone``): its one simple root, and the proof in words."""
     equations, unknowns, _ = equations_and_unknowns(model)
-    if len(equations) != 1 or len(unknowns) != 1 or not _mixed(equations[0], unknowns[0]):
+    if len(equations) != 1 or len(unknowns) != 1 or not trig_mixed(equations[0], unknowns[0]):
         return None
     from rbdsolve.solvers.shared.monotone import monotone_root  # only for such an equation: ~0.5 ms of start-up
 
@@ -295,13 +295,6 @@ def proved_monotone(model: Model) -> tuple[dict, str] | None:
             f"{to_unicode(model.readable(found.bound))}, which is {'positive' if found.increasing else 'negative'}"
             f"{where} (|sin|, |cos| ≤ 1); so {name} = {to_unicode(found.root)} is its only root")
     return {q: found.root}, text
-
-
-def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
-    """Does q occur both inside a trigonometric function and outside every one?"""
-    inside = any(f.has(q) for f in expr.atoms(sp.sin, sp.cos, sp.tan))
-    outside = expr.xreplace({f: sp.Integer(0) for f in expr.atoms(sp.sin, sp.cos, sp.tan)}).has(q)
-    return inside and outside
 
 
 def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:

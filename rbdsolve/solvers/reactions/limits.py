@@ -26,16 +26,19 @@ from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.shared.conditions import Critical, exists_when
+from rbdsolve.solvers.shared.polynomial import trig_mixed
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
 
-def zeros(value: sp.Expr, model: Model) -> list[sp.Relational]:
-    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c.
+def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
+    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c; None
+    where that has no closed form.
 
     |u| vanishes where u does, and |u|/u (a push along a normal that turns, ±1) nowhere:
     each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
-    numerator that holds q both inside and outside sin and cos has no closed-form zeros:
-    none are listed (sympy's solve would search for minutes). Only real roots count."""
+    numerator that holds q both inside and outside sin and cos (a slab rolling on a
+    drum: θ³ sin θ beside θ² cos θ) has no closed-form zeros: None, not a search by
+    sympy's solve (minutes, issue 37). Only real roots count."""
     q = model.q[0]
     top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
@@ -46,8 +49,8 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational]:
         if not swapped.has(q):
             roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
-    if _mixed(top, q):
-        return []
+    if trig_mixed(top, q):
+        return None
     return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
 
 
@@ -58,12 +61,6 @@ def _real_roots(expr: sp.Expr, x: sp.Symbol) -> list[sp.Expr]:
     except NotImplementedError:
         return []
     return [r for r in roots if not r.has(sp.Piecewise, sp.I, sp.nan, sp.zoo) and r.is_real is not False]
-
-
-def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
-    """Does q occur both inside a trigonometric function and outside every one?"""
-    trig = expr.atoms(sp.sin, sp.cos, sp.tan)
-    return any(f.has(q) for f in trig) and expr.xreplace({f: sp.Integer(0) for f in trig}).has(q)
 
 
 def _within_one(r: sp.Expr, model: Model) -> bool:
@@ -77,10 +74,15 @@ def _within_one(r: sp.Expr, model: Model) -> bool:
     return True
 
 
+SIMPLIFY_OPS = 80  # the least μ is simplified by sympy up to this many operations
+
+
 def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     """μ ≥ |F|/N: the friction a rolling contact needs, over the normal push; |…| kept
     where neither the parameters' signs nor their values decide the sign."""
-    ratio = sp.simplify(clean_fraction(F / N))
+    ratio = clean_fraction(F / N)
+    if sp.count_ops(ratio) <= SIMPLIFY_OPS:  # a longer one (a slab rolling on a drum): minutes of trigsimp
+        ratio = sp.simplify(ratio)
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
         if implies(model.assumptions, sp.Ge(ratio, 0)):  # tan α ≥ 0 under 0 < α < π/2

@@ -31,3 +31,13 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]
+
+
+def trig_mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q occur both inside a trigonometric function and outside every one (θ sin θ,
+    k θ − sin θ)? Then no substitution s = sin q, c = cos q makes expr a polynomial.
+    Each sine or cosine of q stands in for a symbol of its own, so a product such as
+    θ cos θ keeps its θ; sines of constants are left alone."""
+    trig = [f for f in expr.atoms(sp.sin, sp.cos, sp.tan) if f.has(q)]
+    return bool(trig) and expr.xreplace({f: sp.Dummy() for f in trig}).has(q)
+
