@@ -130,6 +130,7 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
                        contact_lost=lost, least_friction=mu,
                        lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
     steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
-    warnings = tuple(f"{k} = 0 along the motion has no closed-form solution ({to_unicode(model.readable(model.q[0]))} "
-                     "both inside and outside sin and cos): where it is reached, if it is, is not given" for k in unsolved)
+    warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
+                     f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
+                     "reached, if it is, is not given" for k in unsolved)
     return answers, steps, criticals, warnings

@@ -26,7 +26,7 @@ from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.shared.conditions import Critical, exists_when
-from rbdsolve.solvers.shared.polynomial import trig_mixed
+from rbdsolve.solvers.shared.polynomial import trig_transcendental
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
 
@@ -37,8 +37,9 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
     |u| vanishes where u does, and |u|/u (a push along a normal that turns, ±1) nowhere:
     each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
     numerator that holds q both inside and outside sin and cos (a slab rolling on a
-    drum: θ³ sin θ beside θ² cos θ) has no closed-form zeros: None, not a search by
-    sympy's solve (minutes, issue 37). Only real roots count."""
+    drum: θ³ sin θ beside θ² cos θ), or sines of incommensurate multiples of q (a
+    half-disk on a drum: sin(r θ/(R + r)) beside cos θ) has no closed-form zeros: None,
+    not a search by sympy's solve (minutes, issue 37). Only real roots count."""
     q = model.q[0]
     top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
@@ -49,7 +50,7 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
         if not swapped.has(q):
             roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
-    if trig_mixed(top, q):
+    if trig_transcendental(top, q):
         return None
     return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
 

@@ -129,8 +129,9 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                                            "and q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
         elif name in unsolved:
-            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (the coordinate both "
-                                 "inside and outside sin and cos): where it is reached, if it is, is not given."))
+            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (it is transcendental in "
+                                 "the coordinate: no substitution makes it a polynomial): where it is reached, if it "
+                                 "is, is not given."))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
     q = model.to_time(model.q[0])

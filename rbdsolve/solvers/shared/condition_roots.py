@@ -17,6 +17,7 @@ import random
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy
+from rbdsolve.solvers.shared.polynomial import trig_transcendental
 
 SAMPLES = 8
 TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -53,8 +54,8 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
-    if any(_under_long_radical(factor, p) for factor in factors):
-        return None  # sympy's solve squares the radicals away: minutes (issue 37), for a root nobody reads
+    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) for factor in factors):
+        return None  # sympy's solve squares the radicals away, or searches a transcendental one: minutes (issue 37)
     try:
         found = {tidy(r) for factor in factors for r in sp.solve(factor, p)}
     except (NotImplementedError, ValueError):
