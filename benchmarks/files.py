@@ -13,7 +13,8 @@ inflate) and the exit code are recorded. A run past ``--timeout`` is recorded as
 and max ≤ 2 s over problems/, each neighbouring problem ≤ 3 s); ``--out`` writes
 every sample as JSON. The rbdsolve measured is this checkout's, or ``--root``'s (another
 checkout, for a "before" column: the same files solved by the code before a change).
-Not a test: nothing fails on a slow machine.
+``--compare BEFORE.json AFTER.json`` prints the two runs side by side (the "before and
+after" of docs/performance.md). Not a test: nothing fails on a slow machine.
 """
 
 from __future__ import annotations
@@ -161,7 +162,36 @@ def table(timings: list[Timing], timeout: float) -> str:
     return "\n".join(lines)
 
 
+def compare(before: dict, after: dict) -> str:
+    """Two ``--out`` files side by side: per file, processor and whole seconds and exit
+    codes before and after, then each run's p50, p90 and max."""
+    old = {t["file"]: t for t in before["timings"]}
+    lines = ["| file | before: processor, whole (s), exit | after: processor, whole (s), exit |", "|---|---|---|"]
+
+    def cell(t: dict | None) -> str:
+        if t is None:
+            return "–"
+        if t["codes"][0] is None:
+            return f"past the timeout ({t['wall'][0]:.0f} s)"
+        return (f"{statistics.median(t['cpu']):.2f}, {statistics.median(t['wall']):.2f}, "
+                f"{','.join(sorted({str(c) for c in t['codes']}))}")
+
+    for t in after["timings"]:
+        lines.append(f"| {t['file']} | {cell(old.get(t['file']))} | {cell(t)} |")
+    for name, run in (("before", before), ("after", after)):
+        s = run["summary"]
+        lines.append(f"\n{name}: {s['files']} files, processor p50 {s['cpu_p50']:.2f} s, p90 {s['cpu_p90']:.2f} s, "
+                     f"max {s['cpu_max']:.2f} s; whole p50 {s['p50']:.2f} s, p90 {s['p90']:.2f} s, max {s['max']:.2f} s")
+    return "\n".join(lines)
+
+
 def main(argv: list[str] | None = None) -> None:
+    if argv is None:
+        argv = sys.argv[1:]
+    if argv[:1] == ["--compare"]:
+        before, after = (json.loads(Path(f).read_text()) for f in argv[1:3])
+        print(compare(before, after))
+        return
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("paths", nargs="*", default=["problems"])
     parser.add_argument("--repeats", type=int, default=3)
