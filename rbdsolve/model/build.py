@@ -261,11 +261,22 @@ def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> 
 
 def _angles(model: Model) -> frozenset:
     """The coordinates that are periodic angles: declared so, or AUTO and entering the
-    scene only through sin and cos of integer multiples (``_periodic_coordinates``)."""
+    scene only through sin and cos of integer multiples (``_periodic_coordinates``). A
+    declared angle that a contact rolls by (``rolled``) is one only where the scene
+    still repeats after its turn: rolling lays off the arc R θ, which a slab on a drum
+    holds outside sin and cos."""
     periodic = _periodic_coordinates(model)
+    rolled = rolled_coordinates(model)
     return frozenset(qi for c, qi in zip(model.problem.coordinates, model.q)
-                     if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
+                     if (c.kind is CoordinateKind.ANGLE and c.periodic is not False
+                         and (qi not in rolled or qi in periodic))
                      or (c.kind is CoordinateKind.AUTO and qi in periodic))
+
+
+def rolled_coordinates(model: Model) -> frozenset:
+    """The coordinates of the contacts: rolling by them places a body, its travel (the
+    arc laid off) entering its position outside sin and cos."""
+    return frozenset(c.coordinate for c in model.contacts if c.coordinate is not None)
 
 
 def _timed(problem: Problem) -> bool:
@@ -343,9 +354,11 @@ def _refuse_winding_angles(model: Model) -> None:
     """A coordinate declared a (periodic) angle must leave V unchanged after a turn, since
     its equilibria are then reported in (−π, π]: one that a spring's stretch or a
     weight's height holds outside sin and cos (a torsion spring counts turns) is refused,
-    with the term that holds it."""
+    with the term that holds it. A contact's coordinate is not: rolling is what holds it
+    there, and it is taken as an angle that does not repeat (``_angles``), with a note."""
+    rolled = rolled_coordinates(model)  # rolling makes them non-periodic: not refused (``_angles``)
     declared = [(c, qi) for c, qi in zip(model.problem.coordinates, model.q)
-                if c.kind is CoordinateKind.ANGLE and c.periodic is not False]
+                if c.kind is CoordinateKind.ANGLE and c.periodic is not False and qi not in rolled]
     if not declared:
         return
     terms = [(f"spring '{s.name}'", s.stretch) for s in model.springs]

@@ -31,13 +31,14 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Solution
 from rbdsolve.solvers.shared import routes
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.routes import Family, later, later_residuals
+from rbdsolve.solvers.shared.routes import Family, later, later_check, later_residuals
 
 FAMILIES = {
     QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric")),
     QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"),
-                                    later_residuals("equilibria.check")),
-    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later_residuals("modes.check")),
+                                    later_residuals("equilibria.check"), later_check("equilibria.exact")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later_residuals("modes.check"),
+                               later_check("modes.exact")),
     QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric")),
     QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric"), later_residuals("impact.check")),
     QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),

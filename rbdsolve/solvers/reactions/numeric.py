@@ -30,7 +30,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if instant is None:
         raise UnsolvedError("the numeric route answers at a state: give 'at:' or 'from_rest:'")
     supports, solved, rows = setup(question, model)
-    point = {**{k: sp.Float(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}
+    # sp.N, not sp.Float: a value may be exact and irrational (30 deg is pi/6)
+    point = {**{k: sp.N(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}
     qdd = {a: sp.N(v.xreplace(point), 17) for a, v in zip(model.qdd, solved)}
     unknowns = [c.symbol for s in supports for c in s.components]
     exprs = [sp.expand((r.lhs - r.rhs).xreplace(point).xreplace(qdd)) for r in rows]

@@ -108,7 +108,8 @@ def no_energy_note(model: Model) -> st.Step:
                    "the forces are given at release only.")
 
 
-def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict) -> list[st.Step]:
+def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict,
+                unsolved: tuple[str, ...] = ()) -> list[st.Step]:
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
@@ -127,6 +128,10 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                     steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
                                            "and q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
+        elif name in unsolved:
+            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (it is transcendental in "
+                                 "the coordinate: no substitution makes it a polynomial): where it is reached, if it "
+                                 "is, is not given."))
         else:
             steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
     q = model.to_time(model.q[0])

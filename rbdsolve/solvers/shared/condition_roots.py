@@ -17,6 +17,7 @@ import random
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy
+from rbdsolve.solvers.shared.polynomial import trig_transcendental
 
 SAMPLES = 8
 TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -54,8 +55,11 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     where a root is inside at some samples and not at others, or the order changes."""
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
+    factors = [factor for factor in (numerator, denominator) if factor.has(p)]
+    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) for factor in factors):
+        return None  # sympy's solve squares the radicals away, or searches a transcendental one: minutes (issue 37)
     try:
-        found = {tidy(r) for factor in (numerator, denominator) if factor.has(p) for r in _roots_in(factor, p)}
+        found = {tidy(r) for factor in factors for r in _roots_in(factor, p)}
     except (NotImplementedError, ValueError):
         return None
     points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
@@ -93,6 +97,17 @@ def _roots_in(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
             if sum(found.values()) == polynomial.degree():
                 return list(found)
     return sp.solve(factor, p)
+
+
+RADICAL_OPS = 40  # a longer expression with p under a radical is not given to sympy's solve
+
+
+def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand under a radical (a fractional power) in an expression longer than
+    RADICAL_OPS operations? Two springs of natural length on an inverted rod give
+    √(4a² + d²) beside a² k: solving that for a ran for minutes."""
+    radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
+    return radical and sp.count_ops(expr) > RADICAL_OPS
 
 
 def _turns_at(root: sp.Expr, low, high, periodic: bool) -> int | None:

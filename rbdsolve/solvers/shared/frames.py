@@ -36,15 +36,25 @@ def frame_of(question: Question) -> str | None:
     return getattr(question.options, "frame", None)
 
 
+def model_in_frame(question: Question, model: Model) -> Model:
+    """The model as seen in the question's frame; refused where the scene still moves
+    there."""
+    return _seen(model, frame_motion(model, model.problem.frame(frame_of(question))))
+
+
+def _seen(model: Model, motion: FrameMotion) -> Model:
+    seen = in_frame(model, motion)
+    if seen.depends_on_time():
+        raise UnsolvedError(f"in frame '{motion.frame.name}' the scene still depends on t (a body, a spring or "
+                            "gravity moves in it): it has no relative equilibria there")
+    return seen
+
+
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
     """Run ``solve`` on the model as seen in the question's frame, its steps after
     the ones that say what the frame adds."""
-    frame = model.problem.frame(frame_of(question))
-    motion = frame_motion(model, frame)
-    seen = in_frame(model, motion)
-    if seen.depends_on_time():
-        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or gravity "
-                            "moves in it): it has no relative equilibria there")
+    motion = frame_motion(model, model.problem.frame(frame_of(question)))
+    seen = _seen(model, motion)
     solution = solve(question, seen, options)
     return replace(solution, steps=(*_frame_steps(seen, motion), *solution.steps))
 

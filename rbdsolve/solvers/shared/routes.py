@@ -12,6 +12,11 @@ the numeric route needs the rest); each question gets what is left divided by th
 questions still to come; and on auto, where the numeric route could answer, the exact
 route gets half of its question's share and the numeric route the rest. Each runs
 within its share (``budget.within``) and is timed.
+Where a family can tell from the structure of the equations, in milliseconds, that the
+exact route would answer only in part (the evident roots of transcendental equilibrium
+equations), ``auto`` with every value given runs the numeric route at once: the route
+is chosen by what the equations are, never by how long the exact route took, so a file
+takes the same route on any machine.
 """
 
 from __future__ import annotations
@@ -29,7 +34,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.shared.checks import CheckFailed, Residuals, verify
-from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
+from rbdsolve.solvers.shared.frames import frame_of, model_in_frame, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings, unused_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
@@ -37,17 +42,21 @@ from rbdsolve.solvers.shared.values import (missing_for, missing_values, not_fin
                                            with_irrelevant_filled)
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
+Check = Callable[[Question, Model], "str | None"]  # why the exact route's answer would be partial, or None
 
 
 @dataclass(frozen=True)
 class Family:
     """A solver family's routes: each a pure function (question, model, options) ->
-    Solution; and what its answers must satisfy, checked before they are printed
-    (``checks.py``): a function (question, model, answers) -> residuals, or None."""
+    Solution; what its answers must satisfy, checked before they are printed
+    (``checks.py``): a function (question, model, answers) -> residuals, or None; and,
+    where the family has one, the check that reads from the structure of the equations
+    whether the exact route would answer only in part (and why)."""
 
     exact: Solver
     numeric: Solver
     residuals: Residuals | None = None
+    partial: Check | None = None
 
 
 def later(module: str) -> Solver:
@@ -87,6 +96,17 @@ def checked(solver: Solver, residuals: Residuals | None) -> Solver:
 
     solve.__qualname__ = getattr(solver, "__qualname__", "solve")
     return solve
+
+
+def later_check(module: str) -> Check:
+    """A family's ``partial`` check (``rbdsolve.solvers.<module>.partial``), imported
+    when first asked, like its routes."""
+
+    def partial(question: Question, model: Model) -> str | None:
+        return importlib.import_module(f"rbdsolve.solvers.{module}").partial(question, model)
+
+    partial.__qualname__ = f"{module}.partial"
+    return partial
 
 
 def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
@@ -150,6 +170,9 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
     exact_route, numeric_route = checked(family.exact, family.residuals), checked(family.numeric, family.residuals)
     if options.route is RouteChoice.NUMERIC:
         return _attempt(Route.NUMERIC, numeric_route, question, filled, options)
+    chosen = _numeric_first(family, numeric_route, question, model, filled, options)
+    if chosen is not None:
+        return chosen
     share = Allowance(options.budget)
     fallback = options.route is RouteChoice.AUTO and not missing_for(model, question, _solved_for(question))
     exact = _attempt(Route.EXACT, exact_route, question, model,
@@ -162,6 +185,36 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
         return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _numeric_first(family: Family, numeric_route: Solver, question: Question, model: Model, filled: Model,
+                   options: Options):
+    """On ``auto`` with every value given, the numeric route's Solution where the
+    structure shows the exact route would answer only in part; None otherwise, or where
+    the numeric route cannot answer (the exact route's part is then better than none)."""
+    if options.route is not RouteChoice.AUTO or family.partial is None:
+        return None
+    if missing_for(model, question, _solved_for(question)):
+        return None
+    why = _partial(family.partial, question, model, options)
+    if why is None:
+        return None
+    solution = _attempt(Route.NUMERIC, numeric_route, question, filled, options, " (numeric route)")
+    if not solution.solved:
+        return None
+    note = (f"the exact route would answer only in part: {why}; these are the numeric route's answers, the "
+            "route chosen from the structure of the equations")
+    return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _partial(check: Check, question: Question, model: Model, options: Options) -> str | None:
+    """The family's check, on the model as the question sees it (in its frame), within
+    the budget; a check that cannot decide says nothing."""
+    try:
+        with within(options.budget, f"'{question.kind.value}' (its structure)"):
+            return check(question, model if frame_of(question) is None else model_in_frame(question, model))
+    except (UnsolvedError, OutOfTime):
+        return None
 
 
 def _both_failed(exact: str, numeric: str) -> str:

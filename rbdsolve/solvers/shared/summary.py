@@ -13,6 +13,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.problem.quantity import ACCELERATION
 from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.model.energy import Energy, kinetic_energy, mass_matrix, potential_energy
@@ -96,8 +97,22 @@ def rolling_steps(model: Model) -> list[st.Step]:
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
                                Relation(c.lhs, c.rhs),
                                Relation(c.dependent, c.integrated, lead="⇒")))
-        out += _implied_notes(c)
+        out += _implied_notes(c) + _rolled_note(model, c)
     return out
+
+
+def _rolled_note(model: Model, c) -> list[st.Step]:
+    """A coordinate declared an angle that the rolling makes non-periodic (model/build.py
+    ``_angles``): said, with what that changes."""
+    declared = {qi: k for k, qi in zip(model.problem.coordinates, model.q)}
+    k = declared.get(c.coordinate)
+    if k is None or k.kind is not CoordinateKind.ANGLE or k.periodic is False or c.coordinate in model.angles:
+        return []
+    name = unicode_name(k.name)
+    where = " and its equilibria are searched where the contact holds" if c.span is not None else ""
+    return [st.note(f"{name} is declared an angle, but body '{c.body}' rolls by it: the arc it lays off enters the "
+                    f"positions outside sin and cos, so the scene does not repeat after a turn of {name}. It is "
+                    f"taken as an angle that does not repeat (periodic: false){where}")]
 
 
 def _implied_notes(c) -> list[st.Step]:

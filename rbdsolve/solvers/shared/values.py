@@ -93,9 +93,10 @@ def numbers(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> Numbers:
 
 def not_real(found: Numbers) -> str | None:
     """A warning naming the answers whose value at the parameter values is a complex
-    number (shown as null), except those of a record whose own ``exists_when`` is
-    false there (a steady motion that does not exist at these values says so itself);
-    None when there are none."""
+    number (shown as null), except those of a record whose own ``exists_when`` or
+    ``when`` is false there (a steady motion that does not exist at these values says
+    so itself; a stability case that does not hold there, such as the growth rate of a
+    sleeping top spun above its least spin); None when there are none."""
     bad = [label(p) for p in found.not_real if not _absent_record(found.tree, p)]
     if not bad:
         return None
@@ -105,9 +106,9 @@ def not_real(found: Numbers) -> str | None:
 
 
 def _absent_record(tree: object, path: Path) -> bool:
-    """Whether a record on the way to ``path`` has ``exists_when`` false."""
+    """Whether a record on the way to ``path`` has ``exists_when`` or ``when`` false."""
     for part in path:
-        if isinstance(tree, dict) and tree.get("exists_when") is False:
+        if isinstance(tree, dict) and (tree.get("exists_when") is False or tree.get("when") is False):
             return True
         try:
             tree = tree[part]
