@@ -112,6 +112,8 @@ class Model:
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:' and implied by contacts
     contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
     plane_contacts: tuple = ()  # model/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
+    loads: tuple = ()  # model/loads.py Load's: applied forces and couples
+    body_points: Mapping[str, sp.Matrix] = field(default_factory=dict)  # each body's origin (by its name), its points
 
     @cached_property  # asked in every sign decision; the model never changes
     def decided_by(self) -> dict:
@@ -129,11 +131,19 @@ class Model:
         """A scene at one instant: some velocities are given, not positions."""
         return bool(self.velocities) or any(not b.placed for b in self.bodies)
 
+    def point(self, name: str) -> sp.Matrix:
+        """The position of a named point: the file's (or a contact's), or a body's own
+        (its origin by the body's name, or a point under its ``points:``)."""
+        return self.points[name] if name in self.points else self.body_points[name]
+
+    def has_point(self, name: str) -> bool:
+        return name in self.points or name in self.body_points
+
     def point_velocity(self, name: str) -> sp.Matrix:
         """v_P: given, or dr_P/dt."""
         if name in self.velocities:
             return self.velocities[name]
-        return self.state.d_dt(self.points[name])
+        return self.state.d_dt(self.point(name))
 
     @property
     def state(self) -> State:
@@ -166,6 +176,7 @@ class Model:
             b.position for b in self.bodies if Deferred.made(b, "position") and b.position is not None]
         parts = [*positions, *(b.rotation for b in self.bodies),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
+        parts += [q for x in self.loads for q in x.generalized]  # a force given as a function of t
         parts += [self.gravity] if self.gravity is not None else []
         return _holds(parts, t)
 
@@ -205,6 +216,9 @@ def build_model(problem: Problem) -> Model:
     problem, contacts = _place_contacts(problem, names)  # rolling places its bodies: at and angle
     masses: dict = {}
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
+    own = body_points(problem, names, bodies)
+    if own:  # a body's origin (its name) and its own points, for springs, loads and questions
+        names = names.with_points(own)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
@@ -215,13 +229,50 @@ def build_model(problem: Problem) -> Model:
     names = names.with_points(points)
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
+    every = stated + tuple(a for c in contacts + planes for a in c.requires)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
-                  velocities, triads=triads,
-                  assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
-                  contacts=contacts, plane_contacts=planes)
+                  velocities, triads=triads, assumptions=every, contacts=contacts, plane_contacts=planes,
+                  loads=_loads(problem, names, bodies, every, values), body_points=own)
     check_assumptions(model.assumptions, values, names)
     _refuse_winding_angles(model)
     return model
+
+
+def body_points(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...]) -> Points:
+    """Each placed body's origin, named by the body, and its own points: r_P = r_at + R c,
+    c the point's offset from the origin in body axes (R the body's turn), each made on
+    first read."""
+    where: dict[str, tuple[Body, RigidBody, Expr | None]] = {}
+    for spec, body in zip(problem.bodies, bodies):
+        if spec.velocity is None and spec.at is not None:
+            where[spec.name] = (spec, body, None)
+            where.update({name: (spec, body, offset) for name, offset in spec.points})
+
+    def place(name: str) -> sp.Matrix:
+        spec, body, offset = where[name]
+        origin = names.vector(spec.at)
+        return origin if offset is None else origin + body.rotation * names.vector(offset)
+
+    return Points(tuple(where), place)
+
+
+def _loads(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], every: tuple, values) -> tuple:
+    """The applied forces and couples (model/loads.py, imported only for a scene with
+    some), each sign they need decided by the values and the assumptions."""
+    if not (problem.forces or problem.couples):
+        return ()
+    from rbdsolve.model.assumptions import implies
+    from rbdsolve.model.loads import build_loads
+
+    table = decided_by(substitutions(every, names) if every else {}, values)
+
+    def decide(expr: sp.Expr) -> int | None:
+        value = sp.factor(expr.xreplace(table))
+        if value.is_positive or value.is_negative:
+            return 1 if value.is_positive else -1
+        return next((sign for sign in (1, -1) if implies(every, sp.StrictGreaterThan(sign * expr, 0))), None)
+
+    return build_loads(problem, names, bodies, decide)
 
 
 def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> None:

@@ -156,6 +156,8 @@ def _check_supported(problem: Problem) -> None:
         raise NotNumeric("the scene has prescribed motion (functions of time): use the symbolic route")
     if problem.frames:
         raise NotNumeric("the scene has moving frames: use the symbolic route")
+    if problem.forces or problem.couples:
+        raise NotNumeric("the scene has applied loads, whose potential is derived with sympy: use the symbolic route")
     for point in problem.points:
         if point.position is None:
             raise NotNumeric(f"point '{point.name}' is given by its velocity at an instant, not a position")

@@ -37,10 +37,11 @@ class BodyReader:
         else:
             at, angle, velocity, omega = self.motion(spec, what)
         orientation = self.orientation(spec)
+        points = self.points(spec.get("points"), name)
         if spec.get("parts") is None:
-            part = self.part(name, spec, what, MOTION_KEYS, simple=True, translating=_is_zero(omega))
-            return Body(name, (part,), at, angle, spec.loc, velocity, omega, orientation)
-        check_keys(spec, ("parts",), ("at", *MOTION_KEYS), what)
+            part = self.part(name, spec, what, (*MOTION_KEYS, "points"), simple=True, translating=_is_zero(omega))
+            return Body(name, (part,), at, angle, spec.loc, velocity, omega, orientation, points)
+        check_keys(spec, ("parts",), ("at", *MOTION_KEYS, "points"), what)
         table = expect_mapping(spec.get("parts"), "parts: name -> part")
         if not table.entries:
             raise InputError(f"{what} has no parts", table.loc)
@@ -48,7 +49,21 @@ class BodyReader:
                                 simple=False) for k, v in table.entries)
         if all(p.hole for p in parts):
             raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
-        return Body(name, parts, at, angle, spec.loc, velocity, omega, orientation)
+        return Body(name, parts, at, angle, spec.loc, velocity, omega, orientation, points)
+
+    def points(self, node: Node | None, body: str) -> tuple[tuple[str, ex.Expr], ...]:
+        """The body's own points, ``points: {B: [l/2, 0]}``: each a constant offset from
+        the body's origin in body axes (it turns with the body); its name is a point of
+        the scene like any other (springs, forces, questions)."""
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ()
+        table = expect_mapping(node, f"the points of body '{body}': name -> position in the body")
+        scope = self.reading.scope.constants(f"a point of body '{body}' is fixed in it: its position from the "
+                                             "body's origin, in body axes, is constant (parameters and numbers)")
+        return tuple((self.reading.declare(key, "point"),
+                      self.reading.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' in body "
+                                        f"'{body}' (a vector in body axes)", scope))
+                     for key, value in table.entries)
 
     def motion(self, spec: Map, what: str) -> tuple[ex.Expr | None, ...]:
         """(at, angle) for a body that moves with the scene, or (velocity,

@@ -64,6 +64,7 @@ class Reading:
         self.triad_vectors: frozenset[str] = frozenset()
         self.triad_names: tuple[str, ...] = ()
         self.point_exprs: dict[str, ex.Expr] = {}
+        self.body_points: dict[str, str] = {}  # a body's name (its origin) and its own points -> the body
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -143,6 +144,16 @@ class Reading:
         C): the questions may take moments about them."""
         self.positions = replace(self.positions, vectors=self.positions.vectors | names)
         self.scope = replace(self.scope, vectors=self.scope.vectors | names)
+
+    def add_body_points(self, bodies) -> None:
+        """Each body's origin, named by the body, and its own points (``points:`` under the
+        body) become points the later sections may name (springs, forces, questions). A
+        body given by its velocities at an instant has none."""
+        for b in bodies:
+            if b.velocity is None:
+                self.body_points[b.name] = b.name
+                self.body_points.update({name: b.name for name, _ in b.points})
+        self.add_positions(frozenset(self.body_points))
 
     def point_names(self, expr: ex.Expr) -> set[str]:
         """Every name an expression uses, through the points it names."""

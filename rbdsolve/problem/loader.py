@@ -6,6 +6,7 @@ Every error names file:line:column, the key path, what was expected and what was
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 from pathlib import Path
 
 from rbdsolve.errors import InputError, did_you_mean
@@ -26,6 +27,7 @@ from rbdsolve.problem.schema import (
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
 from rbdsolve.problem.contacts import ContactReader, contact_bodies
+from rbdsolve.problem.loads import LoadReader
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.orientation import OrientationReader
@@ -38,7 +40,11 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
-            "bodies", "contacts", "springs", "gravity", "values", "assumptions", "questions")  # fmt: skip
+            "bodies", "contacts", "springs", "forces", "couples", "gravity", "values", "assumptions",
+            "questions")  # fmt: skip
+# keys a student may write for a section under another name: said so, not "unknown key"
+SECTION_ALIASES = {"torques": "couples", "torque": "couples", "moments": "couples", "couple": "couples",
+                   "force": "forces", "loads": "forces", "applied_forces": "forces", "applied": "forces"}
 
 
 def load_file(path: str | Path) -> Problem:
@@ -80,6 +86,7 @@ class _Loader:
     # --- sections ----------------------------------------------------------------------
 
     def problem(self, root: Map) -> Problem:
+        _section_aliases(root)
         check_keys(root, ("questions",), TOP_KEYS, "the problem")
         get = root.get
         parameters = self.parameters(get("parameters"))
@@ -105,7 +112,10 @@ class _Loader:
         bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
         contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
         self.reading.add_positions(frozenset(c.name for c in contacts if c.surface.kind is SurfaceKind.PLANE))
+        self.reading.add_body_points(bodies)  # a body's origin (its name) and its own points, from here on
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
+        loads = LoadReader(self.reading, bodies)
+        forces, couples = loads.forces(get("forces")), loads.couples(get("couples"))
         known = _known_dimensions(parameters, bodies, springs, gravity, points)
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
@@ -120,7 +130,8 @@ class _Loader:
             springs=springs,
             gravity=gravity,
             values=values,
-            questions=self.questions(get("questions"), coordinates, bodies, points, frames, contacts),
+            questions=self.questions(get("questions"), coordinates, bodies, points + _body_points(bodies), frames,
+                                     contacts),
             prescribed=prescribed,
             frames=frames,
             unknowns=unknowns,
@@ -129,6 +140,8 @@ class _Loader:
             assumptions=self.assumptions(get("assumptions")),
             contacts=contacts,
             dimensions=_dimensions(known, values, ranges),
+            forces=forces,
+            couples=couples,
         )
 
     def assumptions(self, node: Node | None) -> tuple[Assumption, ...]:
@@ -339,6 +352,28 @@ class _Loader:
         return tuple(reader.question(item) for item in node.items)
 
 
+
+
+def _section_aliases(root: Map) -> None:
+    """A section under a name the format does not use (``torques:``): name the one it uses."""
+    for key, _ in root.entries:
+        if key.text in SECTION_ALIASES:
+            raise InputError(f"unknown key '{key.text}' in the problem: applied loads go under "
+                             f"'{SECTION_ALIASES[key.text]}:' (forces: name -> {{on, at, force}}; couples, torques "
+                             "and motors: name -> {on, by, moment})", key.loc)
+
+
+def _body_points(bodies: tuple[Body, ...]) -> tuple[Point, ...]:
+    """The bodies' origins (by the body's name) and their own points, as named points the
+    questions may ask about. The questions read only the names: each position here is
+    the point's offset in its body (the model places it)."""
+    out = []
+    for b in bodies:
+        if b.velocity is None:
+            out.append(Point(b.name, b.at or ex.Expr(ex.Vec((ex.Num(Fraction(0)),) * 2), ex.Kind.VECTOR, "[0, 0]",
+                                                      b.loc)))
+            out += [Point(name, offset) for name, offset in b.points]
+    return tuple(out)
 
 
 def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...], springs: tuple[Spring, ...],

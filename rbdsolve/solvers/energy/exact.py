@@ -47,7 +47,7 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
 
 def _speed_squared(model: Model, point: str, rate_squared: sp.Expr) -> sp.Expr:
     """v² = |∂r/∂q|² q̇² (one coordinate, no t in the scene)."""
-    dr = model.points[point].diff(model.q[0])
+    dr = model.point(point).diff(model.q[0])
     return clean_fraction(tidy(sp.expand(dr.dot(dr))) * rate_squared)
 
 

@@ -70,7 +70,7 @@ def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balanc
         for a in pulls:
             if a.body == name:
                 force += a.force
-                moment += (a.point - b.position).cross(a.force) + a.moment * _Z
+                moment += (a.point - b.position).cross(a.force) + a.moment
         L_dot = model.state.d_dt(b.inertia_in_scene() * b.angular_velocity(model.state))
         for k in range(dims):
             lhs = _tidied(b.mass * acceleration[k], model)

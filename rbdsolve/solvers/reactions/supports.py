@@ -107,7 +107,7 @@ def _contact(model: Model, support: Support) -> Held:
 
 
 def _point(model: Model, support: Support) -> Held:
-    P = model.points[support.point]
+    P = model.point(support.point)
     on = body(model, support.on)
     v = material_velocity(model, on, P)
     w = on.angular_velocity(model.state)

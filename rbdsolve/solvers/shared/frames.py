@@ -38,6 +38,7 @@ def solve_in_frame(solve, question: Question, model: Model, options) -> Solution
     """Run ``solve`` on the model as seen in the question's frame, its steps after
     the ones that say what the frame adds."""
     frame = model.problem.frame(frame_of(question))
+    refuse_loads_in_frame(model, frame.name)
     motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
     if seen.depends_on_time():
@@ -86,3 +87,18 @@ def require_static(model: Model, what: str) -> None:
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
                             "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
                             "question's 'frame' option)")
+    free = [x for x in model.loads if x.potential is None]
+    if free:
+        raise UnsolvedError(f"{free[0].kind} '{free[0].name}' has no potential (its work depends on the path taken, "
+                            f"as a force that turns with its body does), so {what} of ∂V/∂q = 0 do not apply; "
+                            "the format gives them for loads with a potential: a constant force, a constant "
+                            "couple, a pull of constant size towards a fixed point ('towards:')")
+
+
+def refuse_loads_in_frame(model: Model, frame: str) -> None:
+    """Applied loads are given in the scene's axes; seen from a moving frame their
+    potential would move with it: not supported, said so."""
+    if model.loads:
+        raise UnsolvedError(f"the applied loads ({', '.join(x.name for x in model.loads)}) are given in the scene's "
+                            f"axes, and the format does not carry them into frame '{frame}' yet: ask this question "
+                            "in the scene's axes (without 'frame')")

@@ -236,6 +236,8 @@ def _named_by(question, model) -> list:
             out.append(model.symbols.parameters[name])
         elif name in model.points:
             out.append(model.points[name])
+        elif name in model.body_points and name not in bodies:
+            out.append(model.body_points[name])
         elif name in bodies:
             out += _body_ingredients(bodies[name], whole=True)
         elif any(f.name == name for f in model.problem.frames):
