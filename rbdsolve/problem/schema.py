@@ -271,16 +271,19 @@ class Pulley:
     """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
     centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
     and hangs from there along ``down`` with the contact's body at its end, ``length``
-    below ``over`` at the reference configuration (model/strings.py)."""
+    below ``over`` at the reference configuration (model/strings.py). Without a pulley
+    (``over`` None) it runs straight along ``direction`` from the drum's ``side`` to the
+    body, ``length`` from the rim at the reference."""
 
     drum: str
     edge: str
     radius: Expr | None
-    over: Expr
+    over: Expr | None  # None: no pulley, the body hangs straight from the drum
     direction: Expr
     down: Expr | None  # None: straight down, [0, −1]
-    length: Expr | None  # None: the straight part's length at the reference
+    length: Expr | None  # None: the straight part's length at the reference (0 without a pulley)
     loc: Location
+    side: str | None = None  # without a pulley: left, right, above or below the drum's centre, as drawn
 
 
 @dataclass(frozen=True)

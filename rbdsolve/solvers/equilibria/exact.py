@@ -34,6 +34,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
+from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
@@ -388,7 +389,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     grad = gradient(model)
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
-        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+        return _uniform(model, grad)
     classified = [with_cases(classify_listed(model, x), model, x.at.values()) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
@@ -400,3 +401,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _uniform(model: Model, grad: tuple[sp.Expr, ...]) -> Solution:
+    """No isolated equilibrium: where ∂V/∂q holds no coordinate, every configuration is
+    one under a condition on the parameters (uniform.py); else there is none."""
+    found = uniform_equilibrium(model, grad)
+    if found is None:
+        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+    equilibrium, warning = found
+    answers = EquilibriaAnswers((equilibrium,))
+    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))

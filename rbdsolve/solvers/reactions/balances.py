@@ -14,7 +14,7 @@ too — where they do not, a support on that body is missing from the question.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -23,7 +23,7 @@ from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.applied import applied
 from rbdsolve.solvers.shared.accelerations import clean_fraction
-from rbdsolve.solvers.reactions.supports import Held, body, generic_point
+from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point
 
 
 _Z = sp.Matrix([0, 0, 1])
@@ -38,6 +38,21 @@ class Balance:
     label: str  # x, y, z or "moment about G (z)"
     lhs: sp.Expr
     rhs: sp.Expr
+
+
+def with_strings(model: Model, supports: tuple[Held, ...], loc) -> tuple[Held, ...]:
+    """The supports asked, and every string that pulls a body among them (a drum's or a
+    pulley's tension, the string of a hanging body): a string is inside the system, so
+    its tension is found with the others, from the balance of the body at its other end
+    (that body joins the free body diagrams). Added until no held body has a string left."""
+    out = list(supports)
+    while True:
+        held, named = set(bodies_held(tuple(out))), {s.name for s in out}
+        more = [c for c in model.contacts if c.source.string and c.name not in named
+                and (c.body in held or (c.source.pulley is not None and c.source.pulley.drum in held))]
+        if not more:
+            return tuple(out)
+        out += [replace(contact_support(model, c), loc=loc, added=True) for c in more]
 
 
 def bodies_held(supports: tuple[Held, ...]) -> list[str]:
@@ -67,6 +82,10 @@ def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balanc
                 else:
                     force += sign * c.symbol * c.direction
                     moment += sign * (s.point - b.position).cross(c.symbol * c.direction)
+                for other, point, direction in c.also:  # a string's other end, on its drum
+                    if other == name:
+                        force += c.symbol * direction
+                        moment += (point - b.position).cross(c.symbol * direction)
         for a in pulls:
             if a.body == name:
                 force += a.force

@@ -31,9 +31,12 @@ def _described(s: Held, model: Model) -> str:
             parts.append(f"a moment {c.symbol} about e_z")
         else:
             parts.append(f"{c.symbol} along {_vector(model.readable(c.direction))}")
-    holder = f"body '{s.by}'" if s.by else "the support"
+        parts += [f"and {c.symbol} on body '{other}' at {_vector(model.readable(point))} along "
+                  f"{_vector(model.readable(direction))}" for other, point, direction in c.also]
+    holder = f"body '{s.by}'" if s.by else "the string" if s.how is How.STRING else "the support"
     kind = s.how.value.replace("_", " ") + (" (a joint)" if s.by else "")
-    return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
+    added = "; not asked, but it pulls a body asked about, so its tension is found with the rest" if s.added else ""
+    return f"at {s.name} ({kind}{added}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 
 def _pull(a: Applied, model: Model) -> str:
@@ -134,7 +137,8 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                                            "and q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
         else:
-            steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
+            holds = "the string stays taut" if name in strings else "the contact holds"
+            steps.append(st.note(f"{name} does not reach zero along the motion: {holds} throughout."))
     q = model.to_time(model.q[0])
     for name, value in mu.items():
         where = (f" at each {to_unicode(q)} (for the whole motion, the largest of it over the {to_unicode(q)} "

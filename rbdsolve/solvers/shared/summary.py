@@ -96,9 +96,11 @@ def rolling_steps(model: Model) -> list[st.Step]:
     for c in model.contacts:
         source = c.source
         if source.pulley is not None:
-            out.append(st.equation(f"String at {c.name} ({source.pulley.drum} to {c.body}, over a light pulley): "
+            pulley = source.pulley
+            how = "over a light pulley" if pulley.over is not None else f"straight from its {pulley.side} side"
+            out.append(st.equation(f"String at {c.name} ({pulley.drum} to {c.body}, {how}): "
                                    f"inextensible, so the hanging part lengthens as fast as the string leaves "
-                                   f"{source.pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
+                                   f"{pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
                                    Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
             out += _implied_notes(c)
             continue
