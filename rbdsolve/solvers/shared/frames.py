@@ -24,6 +24,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import potential_energy
 from rbdsolve.model.frames import FrameMotion, frame_lagrangian, frame_motion, in_frame
+from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
@@ -83,6 +84,11 @@ def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
 def require_static(model: Model, what: str) -> None:
     """Equilibria and small oscillations of a scene that moves by itself (t appears in
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
+    driven = [x for x in model.loads if x.potential is None and any(q.has(t) for q in x.generalized)]
+    if driven:
+        raise UnsolvedError(f"{driven[0].kind} '{driven[0].name}' changes with time t, so {what} of ∂V/∂q = 0 "
+                            "do not apply (a load that varies in time keeps the scene moving); they exist with "
+                            "constant loads")
     if model.depends_on_time():
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
                             "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
