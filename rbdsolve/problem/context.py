@@ -65,6 +65,7 @@ class Reading:
         self.triad_names: tuple[str, ...] = ()
         self.point_exprs: dict[str, ex.Expr] = {}
         self.body_points: dict[str, str] = {}  # a body's name (its origin) and its own points -> the body
+        self.later: tuple[tuple[str, str], ...] = ()  # bodies' points, refused before the bodies are placed, and why
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -129,7 +130,7 @@ class Reading:
         self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
         why_velocity = "it is given by its velocity; positions name points given by position"
         self.positions = ex.Scope(self.scope.scalars, positions,
-                                  refused=tuple((n, why_velocity) for n in sorted(velocities)))
+                                  refused=tuple((n, why_velocity) for n in sorted(velocities)) + self.later)
         coordinates = frozenset(self.coordinates)
         why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
                "give the configuration with the question's 'at:'")

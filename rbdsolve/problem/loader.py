@@ -106,6 +106,7 @@ class _Loader:
         triads = OrientationReader(self.reading).triads(get("triads"))
         self.reading.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
         self.reading.triad_names = tuple(tr.name for tr in triads)
+        self.reading.later = _later_points(get("bodies"))
         self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
@@ -361,6 +362,25 @@ def _section_aliases(root: Map) -> None:
             raise InputError(f"unknown key '{key.text}' in the problem: applied loads go under "
                              f"'{SECTION_ALIASES[key.text]}:' (forces: name -> {{on, at, force}}; couples, torques "
                              "and motors: name -> {on, by, moment})", key.loc)
+
+
+def _later_points(node: Node | None) -> tuple[tuple[str, str], ...]:
+    """The bodies' names and their own points, read ahead: the scene's points and the
+    bodies' places are written before the bodies are placed, so they cannot name them
+    (said so, rather than 'unknown symbol')."""
+    if not isinstance(node, Map):
+        return ()
+    out = []
+    for key, spec in node.entries:
+        out.append((key.text, f"it names body '{key.text}', whose origin (its centre) springs, forces and the "
+                              "questions may use; the scene's points and the bodies' 'at' come before the bodies "
+                              "are placed, so they cannot: write the position from the scene's points"))
+        own = spec.get("points") if isinstance(spec, Map) else None
+        if isinstance(own, Map):
+            out += [(k.text, f"it is a point of body '{key.text}' (under its 'points:'), placed with the body: "
+                             "springs, forces and the questions may use it, but the scene's points and the bodies' "
+                             "'at' cannot; write the position from the scene's points") for k, _ in own.entries]
+    return tuple(out)
 
 
 def _body_points(bodies: tuple[Body, ...]) -> tuple[Point, ...]:

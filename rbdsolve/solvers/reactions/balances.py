@@ -141,7 +141,7 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
 def unheld(name: str, what: str) -> str:
     return (f"the forces asked for cannot keep body '{name}' in its motion ({what} is left unsatisfied): a "
             "point listed does not hold it, or a support on it is missing from 'forces' (a pivot, a joint with "
-            "another body, a contact)")
+            "another body, a contact; strings, springs and the applied loads are counted by themselves)")
 
 
 def located(supports: tuple[Held, ...], name: str) -> Location | None:
