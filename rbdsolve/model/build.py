@@ -212,13 +212,15 @@ def build_model(problem: Problem) -> Model:
     given = {p.name: p.position for p in problem.points if p.position is not None}
     points = Points(tuple(given), lambda name: within.vector(given[name]))  # folded on first read
     names = within = symbols.with_points(points)
-    _check_real(given, problem, symbols)
+    specs = {b.name: b for b in problem.bodies}  # the bodies as placed so far (contacts place some)
+    own = body_points(specs, names, triads)
+    if own:  # a body's origin (its name) and its own points: later bodies, springs, loads, questions
+        names = names.with_points(own)
+    _check_real(given, problem, symbols, tuple(own))
     problem, contacts = _place_contacts(problem, names)  # rolling places its bodies: at and angle
+    specs.update({b.name: b for b in problem.bodies})
     masses: dict = {}
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
-    own = body_points(problem, names, bodies)
-    if own:  # a body's origin (its name) and its own points, for springs, loads and questions
-        names = names.with_points(own)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
@@ -238,22 +240,35 @@ def build_model(problem: Problem) -> Model:
     return model
 
 
-def body_points(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...]) -> Points:
+def body_points(specs: dict[str, Body], names: Symbols, triads: Mapping[str, sp.Matrix]) -> Points:
     """Each placed body's origin, named by the body, and its own points: r_P = r_at + R c,
     c the point's offset from the origin in body axes (R the body's turn), each made on
-    first read."""
-    where: dict[str, tuple[Body, RigidBody, Expr | None]] = {}
-    for spec, body in zip(problem.bodies, bodies):
-        if spec.velocity is None and spec.at is not None:
-            where[spec.name] = (spec, body, None)
-            where.update({name: (spec, body, offset) for name, offset in spec.points})
+    first read, from ``specs`` as they are then (a body a contact places has its place
+    once the contacts are placed; a body's ``at`` names only bodies before it)."""
+    where: dict[str, tuple[str, Expr | None]] = {}
+    for spec in specs.values():
+        if spec.velocity is None:
+            where[spec.name] = (spec.name, None)
+            where.update({name: (spec.name, offset) for name, offset in spec.points})
 
     def place(name: str) -> sp.Matrix:
-        spec, body, offset = where[name]
+        body, offset = where[name]
+        spec = specs[body]
+        if spec.at is None:  # read while the contacts are placed, before this body is
+            raise InputError(f"'{name}' is a point of body '{body}', which a contact places: a contact's "
+                             "geometry cannot use it (its place is not known yet)", spec.loc)
         origin = names.vector(spec.at)
-        return origin if offset is None else origin + body.rotation * names.vector(offset)
+        return origin if offset is None else origin + _rotation(spec, names, triads) * names.vector(offset)
 
     return Points(tuple(where), place)
+
+
+def _rotation(spec: Body, names: Symbols, triads: Mapping[str, sp.Matrix]) -> sp.Matrix:
+    """R, body axes to scene axes: the planar angle's turn about z, or the 3D turns."""
+    if spec.orientation:
+        start = triads[spec.orientation[0]] if isinstance(spec.orientation[0], str) else None
+        return _turns([x for x in spec.orientation if not isinstance(x, str)], names, start)
+    return sp.rot_axis3(-names.scalar(spec.angle)) if spec.angle is not None else sp.eye(3)
 
 
 def _loads(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], every: tuple, values) -> tuple:
@@ -275,7 +290,7 @@ def _loads(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], ever
     return build_loads(problem, names, bodies, decide)
 
 
-def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> None:
+def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols, own: tuple[str, ...] = ()) -> None:
     """Each point's and each body origin's own terms are real numbers (``Symbols.vector``),
     with the points it names standing for one real vector (x, y, z): the check a fold
     makes, here at the cost of one term a link of a chain rather than of the whole sum
@@ -285,7 +300,7 @@ def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> 
     asked = [e for e in exprs if not plainly_real(e.tree)]  # most are sums of sin and cos: nothing to ask
     if asked:
         stand_in = sp.Matrix(sp.symbols("x y z", real=True, cls=sp.Dummy))
-        within = names.with_points({name: stand_in for name in given})
+        within = names.with_points({name: stand_in for name in (*given, *own)})
         for expr in asked:
             within.vector(expr)
 

@@ -286,7 +286,11 @@ class _Loader:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
         reader = BodyReader(self.reading, placed)
-        return tuple(reader.body(self.reading.declare(k, "body"), v) for k, v in table.entries)
+        out = []
+        for k, v in table.entries:
+            out.append(reader.body(self.reading.declare(k, "body"), v))
+            self.reading.add_body_points(out[-1:])  # a later body may sit at this one's points
+        return tuple(out)
 
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
@@ -372,14 +376,15 @@ def _later_points(node: Node | None) -> tuple[tuple[str, str], ...]:
         return ()
     out = []
     for key, spec in node.entries:
-        out.append((key.text, f"it names body '{key.text}', whose origin (its centre) springs, forces and the "
-                              "questions may use; the scene's points and the bodies' 'at' come before the bodies "
-                              "are placed, so they cannot: write the position from the scene's points"))
+        out.append((key.text, f"it names body '{key.text}', whose origin (its centre) springs, forces, the "
+                              "questions and the bodies listed after it may use; the scene's points come before "
+                              "the bodies are placed, so they cannot: write the position from the scene's points"))
         own = spec.get("points") if isinstance(spec, Map) else None
         if isinstance(own, Map):
             out += [(k.text, f"it is a point of body '{key.text}' (under its 'points:'), placed with the body: "
-                             "springs, forces and the questions may use it, but the scene's points and the bodies' "
-                             "'at' cannot; write the position from the scene's points") for k, _ in own.entries]
+                             "springs, forces, the questions and the bodies listed after it may use it, but the "
+                             "scene's points cannot; write the position from the scene's points")
+                    for k, _ in own.entries]
     return tuple(out)
 
 

@@ -150,10 +150,14 @@ def located(supports: tuple[Held, ...], name: str) -> Location | None:
 
 
 def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
-    """Rows of A independent at a generic sample, greedily, up to ``wanted``."""
+    """Rows of A independent at a generic sample, greedily, up to ``wanted``; rows whose
+    coefficients hold no coordinate first (a body's force balances before a moment
+    balance), so that the determinant Cramer's rule divides by holds none where it can:
+    one that does (sin θ) would make a force 0/0 at θ = 0 though the force is finite."""
     numeric = A.xreplace(generic_point(model, 5)).evalf(30)
     chosen: list[int] = []
-    for i in range(A.rows):
+    moving = [sum(1 for x in A.row(i) if x.has(*model.q)) for i in range(A.rows)]
+    for i in sorted(range(A.rows), key=lambda i: moving[i]):
         trial = numeric.extract(chosen + [i], list(range(A.cols)))
         if trial.rank(iszerofunc=lambda x: abs(x) < 1e-20) == len(chosen) + 1:
             chosen.append(i)
