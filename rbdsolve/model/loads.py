@@ -192,7 +192,8 @@ def _leaves(f: Force, names: Symbols, centre: sp.Matrix, force: sp.Matrix, decid
     sign = decide(along)
     if sign is None:
         raise InputError(f"force '{f.name}': whether the string leaves the body {w.side} its centre on the "
-                         f"left or on the right of the pull depends on the sign of {to_unicode(along)}; give an "
+                         f"left or on the right of the pull depends on the sign of "
+                         f"{to_unicode(-along if along.could_extract_minus_sign() else along)}; give an "
                          "assumption that decides it (such as 'assumptions: [alpha < pi/2]'), or a value, or the "
                          "point where it leaves with 'at:'", w.loc)
     return centre + rho * sign * left
