@@ -34,7 +34,7 @@ from rbdsolve.problem.schema import Body, Contact
 _Z = sp.Matrix([0, 0, 1])
 
 
-def hang(c: Contact, drum: Body, e: Curved, names: Symbols):
+def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None = None):
     """(the hanging body's origin, the record for the report: the point C, ℓ̇ = v_C·d
     and ℓ as the drum's coordinates give it)."""
     p = c.pulley
@@ -44,7 +44,7 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols):
     d = _unit(names.vector(p.direction))
     state = names.state
     if p.over is None:  # straight from the drum: the string's top, C, moves with the drum's centre
-        C = _side_point(c, centre, e.radius, d)
+        C = _side_point(c, centre, e.radius, d, values or {})
         top = state.d_dt(C)
     else:
         over = _vector3(names.vector(p.over))
@@ -73,16 +73,22 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols):
 _SIDES = {"below": (0, -1, 0), "above": (0, 1, 0), "left": (-1, 0, 0), "right": (1, 0, 0)}
 
 
-def _side_point(c: Contact, centre: sp.Matrix, rho, d: sp.Matrix) -> sp.Matrix:
+def _side_point(c: Contact, centre: sp.Matrix, rho, d: sp.Matrix, values: dict) -> sp.Matrix:
     """C = E ± ρ n (n = e_z × d) on the drum's side the file names, as drawn: the one
-    with n·e > 0 for that side's direction e (left: −e_x)."""
+    with n·e > 0 for that side's direction e (left: −e_x), a sign the values decide
+    where the direction holds parameters."""
     side = c.pulley.side
     across = sp.simplify(_Z.cross(d).dot(sp.Matrix(_SIDES[side])))
-    if across == 0 or not across.is_number:
+    if across == 0:
         raise InputError(f"contact '{c.name}': a string running along {sp.sstr(list(d[:2]))} leaves the drum on "
-                         f"its {'left or right' if side in ('above', 'below') else 'top or bottom'}, not its "
-                         f"{side}: name the side across the string", c.pulley.loc)
-    return centre + sp.sign(across) * rho * _Z.cross(d)
+                         f"its {'left or right' if side in ('above', 'below') else 'top or bottom'}, not "
+                         f"{side} it: name the side across the string", c.pulley.loc)
+    sign = sp.sign(across.xreplace(values)) if across.free_symbols else sp.sign(across)
+    if not sign.is_number or sign == 0:
+        raise InputError(f"contact '{c.name}': which side of the drum is '{side}' for a string along "
+                         f"{sp.sstr(list(d[:2]))} depends on the sign of {sp.sstr(across)}: give the parameters in "
+                         "it values", c.pulley.loc)
+    return centre + sign * rho * _Z.cross(d)
 
 
 def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matrix:

@@ -134,7 +134,8 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
         solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise InputError(unheld(row.body, f"its {row.label} balance"), located(supports, row.body))
+            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports),
+                             located(supports, row.body))
     return solution
 
 
@@ -142,6 +143,17 @@ def unheld(name: str, what: str) -> str:
     return (f"the forces asked for cannot keep body '{name}' in its motion ({what} is left unsatisfied): a "
             "point listed does not hold it, or a support on it is missing from 'forces' (a pivot, a joint with "
             "another body, a contact; strings, springs and the applied loads are counted by themselves)")
+
+
+def _on_strings(name: str, supports: tuple[Held, ...]) -> str:
+    """For a body held only by strings: what the format needs to hold it across them."""
+    mine = [s for s in supports if name in (s.on, s.by)]
+    if not mine or any(s.how.value != "string" for s in mine):
+        return ""
+    strings = ", ".join(s.name for s in mine)
+    return (f". Body '{name}' is held only by string {strings}, which pulls it along the string: what carries it "
+            f"across (a table it slides on, a guide) is a support to list, such as {{at: {name}, on: {name}, "
+            "normal: y} (a smooth surface's push, counted positive upwards)")
 
 
 def located(supports: tuple[Held, ...], name: str) -> Location | None:

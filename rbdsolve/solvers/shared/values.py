@@ -107,7 +107,10 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
     if not isinstance(value, sp.Basic):
         return None  # enums, text: not numbers
     if isinstance(value, CONDITIONS):  # a condition: true or false at the values, if they decide it
-        decided = value.xreplace(subs)
+        try:
+            decided = value.xreplace(subs)
+        except TypeError:  # a side infinite at the values (a string through its own peg): undecided
+            return None
         return bool(decided) if isinstance(decided, BooleanAtom) else None
     number = value.xreplace(subs)
     if roots is not None and number.has(sp.CRootOf):
