@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.bodies import refuse_negative
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.schema import Body, Couple, Force, Wound
@@ -91,6 +92,7 @@ class LoadReader:
         spec = expect_mapping(node, "a wound string: {radius: r, side: below}")
         check_keys(spec, ("radius", "side"), (), "a wound string")
         radius = self.reading.constant(spec.get("radius"), "the radius the string is wound at")
+        refuse_negative(radius, "radius")
         word = expect_scalar(spec.get("side"), " or ".join(SIDES)).text.strip()
         if word not in SIDES:
             raise InputError(f"expected side {', '.join(SIDES)} (where the string leaves the body, as drawn), "
