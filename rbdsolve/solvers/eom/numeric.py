@@ -85,7 +85,7 @@ def _floats(expr: sp.Expr, model: Model, digits: int) -> sp.Expr:
     """The values put in: exactly inside functions (cos(3 t), not cos(3.0 t), so the
     two precisions' terms match), as floats of ``digits`` digits everywhere else."""
     inside = {f: f.xreplace(model.values) for f in expr.atoms(sp.Function)}
-    return sp.expand(expr.xreplace(inside).xreplace({s: sp.Float(v, digits) for s, v in model.values.items()}))
+    return sp.expand(expr.xreplace(inside).xreplace({s: sp.Float(sp.N(v, digits + 5), digits) for s, v in model.values.items()}))
 
 
 def _derive(model: Model, lagrangian, forces=lambda digits: None) -> _Rounded:
