@@ -257,10 +257,12 @@ def body_points(specs: dict[str, Body], names: Symbols, triads: Mapping[str, sp.
         if spec.at is None:  # read while the contacts are placed, before this body is
             raise InputError(f"'{name}' is a point of body '{body}', which a contact places: a contact's "
                              "geometry cannot use it (its place is not known yet)", spec.loc)
-        origin = names.vector(spec.at)
-        return origin if offset is None else origin + _rotation(spec, names, triads) * names.vector(offset)
+        origin = within.vector(spec.at)  # a body may sit at an earlier body's point
+        return origin if offset is None else origin + _rotation(spec, within, triads) * within.vector(offset)
 
-    return Points(tuple(where), place)
+    points = Points(tuple(where), place)
+    within = names.with_points(points)
+    return points
 
 
 def _rotation(spec: Body, names: Symbols, triads: Mapping[str, sp.Matrix]) -> sp.Matrix:

@@ -125,3 +125,12 @@ def test_body_points_move_with_their_body() -> None:
     assert _zero(model.point("B") - sp.Matrix([l * sp.sin(theta), -l * sp.cos(theta), 0]))
     assert _zero(model.point("rod") - sp.Matrix([l * sp.sin(theta) / 2, -l * sp.cos(theta) / 2, 0]))
     assert "B" not in model.points  # the file's points stay the file's
+
+
+def test_a_body_at_another_body_s_point() -> None:
+    """problems/forces/motor-on-pendulum.yaml: the disk sits at the rod's end A, so the
+    disk's origin (its name) is A = l (sin θ, −cos θ), read through A's own fold."""
+    model = build_model(load_file(PROBLEMS / "forces" / "motor-on-pendulum.yaml"))
+    s = _symbols(model)
+    end = sp.Matrix([s["l"] * sp.sin(s["theta"]), -s["l"] * sp.cos(s["theta"]), 0])
+    assert _zero(model.point("disk") - end) and _zero(model.point("A") - end)
