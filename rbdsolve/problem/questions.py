@@ -7,6 +7,8 @@ knows about the scene: coordinates for ``modes``, bodies and points for ``inerti
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
@@ -255,7 +257,7 @@ class QuestionReader:
         if at is not None and not self.coordinates:
             raise InputError("'at' gives values for the coordinates, and this scene has none: its inertia "
                              "does not depend on a configuration", at.loc)
-        return InertiaOptions(body, self.point(about) if about is not None else None,
+        return InertiaOptions(body, self.moment_point(about) if about is not None else None,
                               self.axes(axes) if axes is not None else None,
                               self.reading.coordinate_values(at, "'at'", complete=False) if at is not None else (),
                               self.reading.axis(axis) if axis is not None else None)
@@ -276,6 +278,13 @@ class QuestionReader:
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""
         return self.reading.expr(node, ex.Kind.VECTOR, "a point name or position vector")
+
+    def moment_point(self, node: Node) -> ex.Expr:
+        """The point of an inertia question: as ``point``, or a contact's point C (the
+        moment of inertia of a rocking body about its contact point)."""
+        scope = self.reading.scope
+        scope = replace(scope, vectors=scope.vectors | {c.name for c in self.contacts})
+        return self.reading.expr(node, ex.Kind.VECTOR, "a point name, a contact's name or a position vector", scope)
 
     def axes(self, node: Node) -> tuple[ex.Expr, ex.Expr, ex.Expr]:
         if not isinstance(node, Seq) or len(node.items) != 3:

@@ -257,6 +257,7 @@ class Surface:
     loc: Location
     body: str | None = None  # BODY: the body whose edge it is
     edge: str | None = None  # BODY: which edge
+    part: str | None = None  # BODY: the part of a composite body whose edge it is (None: its only part)
 
 
 class Measure(Enum):
@@ -284,6 +285,7 @@ class Pulley:
     length: Expr | None  # None: the straight part's length at the reference (0 without a pulley)
     loc: Location
     side: str | None = None  # without a pulley: left, right, above or below the drum's centre, as drawn
+    part: str | None = None  # the drum's part the string is wound on (None: its only part)
 
 
 @dataclass(frozen=True)
@@ -291,7 +293,9 @@ class Contact:
     """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
     coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
     and rolling fixes the rest (model/contacts.py). A string wound on a drum is a
-    line the drum rolls on (``string``), at the winding ``radius``."""
+    line the drum rolls on (``string``), at the winding ``radius``. A composite body
+    touches with one of its parts (``part``); a body given by its inertia rolls on the
+    circle of ``radius`` about its centre of mass."""
 
     name: str  # the contact point C
     body: str
@@ -299,10 +303,11 @@ class Contact:
     surface: Surface
     coordinate: str | None  # None: a body hanging from a pulley (its place follows from the drum's)
     measure: Measure | None
-    radius: Expr | None  # a string's winding radius; None: the edge's own
+    radius: Expr | None  # a string's winding radius, or the radius the body rolls at; None: the edge's own
     string: bool
     loc: Location
     pulley: Pulley | None = None  # the body hangs on a string from a drum, over a pulley
+    part: str | None = None  # the part of a composite body that touches (None: its only part)
 
 
 @dataclass(frozen=True)
@@ -515,7 +520,8 @@ class Collision:
     restitution: Expr | None
     particle: Particle | None
     loc: Location
-    sticks: bool = False  # the particle embeds: it moves with the point after, the impulse has every component
+    sticks: bool = False  # the particle embeds (or, without one, the point sticks): it moves with the point after
+    to: str | None = None  # a sticking point of a body sticks to this point of another body (None: a fixed point)
 
 
 @dataclass(frozen=True)

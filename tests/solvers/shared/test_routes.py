@@ -92,6 +92,12 @@ def test_numeric_route_agrees_with_exact(path) -> None:
             assert n.error is not None and "found no solution" in n.error, n.error
             compared += 1
             continue
+        if question.kind is QuestionKind.INERTIA and any(x is None for row in e.values["J"] for x in row):
+            # a tensor that is a formula in the coordinates (no 'at:') has no numbers: the
+            # numeric route asks for the configuration instead of answering
+            assert n.error is not None and "depends on the configuration" in n.error, n.error
+            compared += 1
+            continue
         assert n.error is None, f"{question.kind.value}: numeric route failed: {n.error}"
         assert n.route.value == "numeric"  # no estimate only where a warning says why (a singular Hessian)
         assert n.error_estimate is not None or any(w.startswith("no error estimate") for w in n.warnings)
