@@ -46,6 +46,8 @@ CASES = [
         "forces/spool-pulled-at-angle.yaml",
         "forces/atwood-massive-pulley.yaml",
         "kinematics/double-pendulum-tip.yaml",
+        "spin/sleeping-top.yaml",
+        "frames/rod-on-turning-shaft.yaml",
     ]),
 ]
 

@@ -450,6 +450,7 @@ class EquilibriaOptions:
     scene's axes."""
 
     frame: str | None  # relative equilibria in a moving frame; None: the scene's axes
+    for_parameter: str | None = None  # 'for: k': conditions solved for k first (docs/format.md)
 
 
 @dataclass(frozen=True)
@@ -463,6 +464,8 @@ class ModesOptions:
     equilibrium: int | None = None  # 'about: {equilibrium: N}', as 'equilibria' numbers them; neither: the stable one
     each: bool = False  # 'about: each': the modes at every equilibrium
     loc: Location | None = None  # where 'about' is
+    steady: tuple[tuple[str, Expr], ...] = ()  # 'about: {dot(phi): s}': cyclic coordinates' steady rates
+    for_parameter: str | None = None  # 'for: k': conditions solved for k first (docs/format.md)
 
 
 @dataclass(frozen=True)
@@ -559,6 +562,7 @@ class SteadyMotionOptions:
     reactions: tuple[Reaction, ...]  # contact forces stated with unknowns; then both balances count
     solve_for: tuple[Expr, ...]  # constants to solve the relations for (omega0**2; or N, x_N)
     reactions_loc: Location | None = None  # where 'reactions' is, for errors about them
+    for_parameter: str | None = None  # 'for: s': conditions solved for s first (docs/format.md)
 
 
 @dataclass(frozen=True)

@@ -124,6 +124,13 @@ def _same_modes(e, n) -> None:
     if hasattr(e.answers, "modes"):  # about: each, matched equilibrium by equilibrium
         _same_modes_at_each(e, n)
         return
+    if hasattr(e.answers, "G"):  # gyroscopic: the frequencies within the roots' bounds, the same stability
+        assert n.answers.stability == e.answers.stability
+        bound = max(n.answers.root_errors)
+        assert len(e.values["frequencies"]) == len(n.answers.frequencies)
+        for w, g in zip(e.values["frequencies"], n.answers.frequencies):
+            assert abs(g - float(w)) <= bound, (g, w, bound)
+        return
     want = [float(x) for x in e.values["eigenvalues"]]
     got = list(n.answers.eigenvalues)
     assert len(got) == len(want)
