@@ -401,7 +401,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     grad = gradient(model)
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
-        return _uniform(model, grad)
+        return _uniform(model, grad, asked(model, question))
     first = asked(model, question)
     classified = [with_cases(classify_listed(model, x), model, x.at.values(), first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
@@ -416,10 +416,10 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                     warnings=tuple(warnings))
 
 
-def _uniform(model: Model, grad: tuple[sp.Expr, ...]) -> Solution:
+def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -> Solution:
     """No isolated equilibrium: where ∂V/∂q holds no coordinate, every configuration is
     one under a condition on the parameters (uniform.py); else there is none."""
-    found = uniform_equilibrium(model, grad)
+    found = uniform_equilibrium(model, grad, first)
     if found is None:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
     equilibrium, warning = found

@@ -6,7 +6,10 @@ Such a gradient is the same at every configuration, so there is no equilibrium u
 it vanishes, and then every configuration is one (neutral: V is flat). Which parameter
 values make it vanish is the exam's answer, "the spool does not move when cos α = r/R":
 each nonzero component, less its factors of one sign, is solved for one parameter, an
-angle parameter (one inside sin and cos) through its cosine or sine, any other itself.
+angle parameter (one inside sin and cos) through its cosine or sine, any other itself:
+the one the question's ``for:`` names, else the problem's only parameter without a value,
+else one without a value, an angle first ("the disk on the 30° incline stays where
+F = m g sin(α)/2" with ``for: F``).
 """
 
 from __future__ import annotations
@@ -19,14 +22,15 @@ from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
 
 
-def uniform_equilibrium(model: Model, grad: tuple[sp.Expr, ...]) -> tuple[Equilibrium, str] | None:
+def uniform_equilibrium(model: Model, grad: tuple[sp.Expr, ...],
+                        first: sp.Symbol | None = None) -> tuple[Equilibrium, str] | None:
     """Every configuration (shown at q = 0), neutral, existing where each constant
     component of ∂V/∂q vanishes; with the warning that says so. None where a component
     holds a coordinate, where none is constant, or where the values decide it is not 0."""
     nonzero = [g for g in grad if g != 0]
     if not nonzero or any(g.has(*model.q) for g in nonzero) or any(not g.free_symbols for g in nonzero):
         return None
-    relations = [_vanishes(g, model) for g in nonzero]
+    relations = [_vanishes(g, model, first) for g in nonzero]
     if any(r is None for r in relations):
         return None
     condition = sp.And(*relations)
@@ -46,15 +50,15 @@ def uniform_equilibrium(model: Model, grad: tuple[sp.Expr, ...]) -> tuple[Equili
                        exists_when=condition), warning
 
 
-def _vanishes(g: sp.Expr, model: Model) -> sp.Basic | None:
-    """g = 0 as a relation solved for one parameter (its factors of one sign dropped)."""
+def _vanishes(g: sp.Expr, model: Model, first: sp.Symbol | None) -> sp.Basic | None:
+    """g = 0 as a relation solved for one parameter (its factors of one sign dropped),
+    tried in the order of ``_preference``."""
     factors = [f for f in sp.Mul.make_args(sp.factor(g)) if f.free_symbols and not _signed(f, model)]
     if len(factors) != 1:
         return None
     (f,) = factors
     f = f.base if f.is_Pow and f.exp.is_positive else f
-    order = list(model.symbols.parameters.values())
-    for p in sorted(f.free_symbols & set(order), key=lambda s: (not _angle(f, s), order.index(s))):
+    for p in _preference(f, model, first):
         for trig in (sp.cos(p), sp.sin(p)) if _angle(f, p) else (p,):
             x = sp.Dummy("x")
             stand_in = f.xreplace({trig: x})
@@ -63,6 +67,16 @@ def _vanishes(g: sp.Expr, model: Model) -> sp.Basic | None:
             (value,) = sp.solve(stand_in, x)
             return sp.Eq(trig, tidy(value))
     return None
+
+
+def _preference(f: sp.Expr, model: Model, first: sp.Symbol | None) -> list[sp.Symbol]:
+    """The parameters in f: the one asked for (``for:``), the problem's only one without
+    a value, those without a value, then angles before the others, in the file's order."""
+    order = list(model.symbols.parameters.values())
+    open_ = [p for p in order if p not in model.values]
+    lone = open_[0] if len(open_) == 1 else None
+    return sorted(f.free_symbols & set(order),
+                  key=lambda p: (p != first, p != lone, p in model.values, not _angle(f, p), order.index(p)))
 
 
 def _signed(f: sp.Expr, model: Model) -> bool:

@@ -44,3 +44,28 @@ def test_sampled_on_both_sides_of_cos_alpha_r_over_R(alpha: str, exists: bool) -
     assert result["ok"] is exists, result
     if exists:
         assert result["answers"]["equilibria"][0]["at"] == {"x": "0"}
+
+
+DISK = (PROBLEMS / "forces" / "disk-pulled-up-incline.yaml").read_text(encoding="utf-8")
+
+
+def _disk_condition(option: str) -> sp.Basic:
+    text = DISK.replace("  - eom\n  - reactions: {forces: [C]}\n", "").replace("  - equilibria: {for: F}", option)
+    (result,) = json.loads(json.dumps(report_object(solve_problem(build_model(load_text(text, "d.yaml"))))))["results"]
+    (eq,) = result["answers"]["equilibria"]
+    names = {n: sp.Symbol(n, positive=True) for n in ("F", "g", "m", "alpha")}
+    return sp.sympify(eq["exists_when"], locals=names), names
+
+
+@pytest.mark.parametrize("option, solved_for", [("  - equilibria: {for: F}", "F"), ("  - equilibria: {for: m}", "m"),
+                                                ("  - equilibria", "m")])
+def test_the_condition_is_solved_for_the_parameter_asked(option: str, solved_for: str) -> None:
+    """The disk pulled up the incline by a string from its top rests where 2F = m g sin α
+    (by hand: Newton along the slope and moments about G): written in the parameter
+    'for:' names, else in the first without a value (α has one, 30°)."""
+    condition, s = _disk_condition(option)
+    assert isinstance(condition, sp.Eq) and condition.lhs == s[solved_for]
+    F, g, m, alpha = s["F"], s["g"], s["m"], s["alpha"]
+    assert not condition.rhs.has(condition.lhs)
+    residual = (2 * F - m * g * sp.sin(alpha)).subs(condition.lhs, condition.rhs)
+    assert sp.simplify(residual) == 0
