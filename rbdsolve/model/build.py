@@ -18,7 +18,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
-from rbdsolve.model.spring_length import signed_length
+from rbdsolve.model.spring_length import as_square_root, signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
@@ -104,6 +104,8 @@ class SpringModel:
     def signed(self, expr: sp.Expr) -> sp.Expr:
         """expr with each |u| of the length written as the stretch writes it (±u where
         its sign is known): the direction d/|d| of the pull, as the stretch has it."""
+        if self.lengths:
+            expr = expr.xreplace({r: as_square_root(r) for r in _roots(expr)})
         return expr.xreplace({sp.Abs(x.inside): x.sign * x.inside for x in self.lengths if x.sign is not None})
 
 
@@ -596,11 +598,18 @@ def _signed(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple
     assumed = substitutions(assumptions, names) if assumptions else {}
     out = []
     for s in springs:
+        if s.source.ends is not None and not s.stretch.has(sp.Abs):  # along a slope: √(u²) = |u| once joined
+            s = replace(s, stretch=s.stretch.xreplace({r: as_square_root(r) for r in _roots(s.stretch)}))
         if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
             stretch, lengths = signed_length(s.stretch, reference, assumed)
             s = replace(s, stretch=stretch, lengths=lengths)
         out.append(s)
     return tuple(out)
+
+
+def _roots(expr: sp.Expr) -> set:
+    """The square roots in expr (a linear spring's length √(d·d))."""
+    return {x for x in expr.atoms(sp.Pow) if x.exp == sp.S.Half}
 
 
 def _periodic_coordinates(model: Model) -> frozenset:
