@@ -24,15 +24,17 @@ MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
 class BodyReader:
-    def __init__(self, reading: Reading, placed: dict[str, str] | None = None):
+    def __init__(self, reading: Reading, placed: dict[str, str] | None = None,
+                 hanging: frozenset[str] = frozenset()):
         self.reading = reading
         self.placed = placed or {}  # body -> the contact that places it
+        self.hanging = hanging  # the bodies that hang straight from a drum
 
     def body(self, name: str, node: Node) -> Body:
         spec = expect_mapping(node, f"body '{name}'")
         what = f"body '{name}'"
         if name in self.placed:
-            _refuse_placement(spec, name, self.placed[name])
+            _refuse_placement(spec, name, self.placed[name], name in self.hanging)
             at, angle, velocity, omega = None, None, None, None
         else:
             at, angle, velocity, omega = self.motion(spec, what)
@@ -184,12 +186,21 @@ class BodyReader:
         )
 
 
-def _refuse_placement(spec: Map, name: str, contact: str) -> None:
-    """A body that rolls is placed by its contact: its position and angle follow."""
+def _refuse_placement(spec: Map, name: str, contact: str, hanging: bool) -> None:
+    """A body that rolls is placed by its contact: its position and angle follow. One
+    that hangs from a drum does not turn, which the message says where it is given an
+    angle (a yo-yo hung from a turning drum is not in the format)."""
     for key in ("at", *MOTION_KEYS):
         if spec.get(key) is not None:
+            turning = hanging and key in MOTION_KEYS
             raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
-                             f"angle); remove '{key}'", spec.get(key).loc)
+                             f"angle); remove '{key}'" + (_HANGS_UNTURNED if turning else ""), spec.get(key).loc)
+
+
+_HANGS_UNTURNED = (": a body hanging from a drum ('hangs_from') translates and does not turn. One that turns "
+                   "as its own string unwinds (a yo-yo hung from a drum that turns too) is not in the format "
+                   "yet; the nearest it has is a yo-yo on a string from a fixed point, 'string: {fixed_at: A, "
+                   "direction: [0, -1]}'")
 
 
 def _gyration(spec: Map) -> None:

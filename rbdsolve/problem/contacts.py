@@ -63,6 +63,14 @@ def contact_bodies(node: Node | None) -> dict[str, str]:
     return out
 
 
+def hanging_bodies(node: Node | None) -> frozenset[str]:
+    """The bodies that hang straight from a drum (``hangs_from``): they do not turn."""
+    if not isinstance(node, Map):
+        return frozenset()
+    return frozenset(v.get("body").text for _, v in node.entries
+                     if isinstance(v, Map) and v.get("hangs_from") is not None and isinstance(v.get("body"), Scalar))
+
+
 class ContactReader:
     def __init__(self, reading: Reading):
         self.reading = reading

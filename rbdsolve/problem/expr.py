@@ -184,6 +184,7 @@ class Scope:
     later: tuple[tuple[str, str], ...] = ()  # names declared further on (a body's points), not yet usable, and why
     bare: bool = False  # the file declares no coordinates: an unknown name may be one it forgot
     max_order: int = 2  # 1: rates dot() only (velocities at an instant)
+    no_rates: str = ""  # why rates are refused here, where the format has a reason to give
 
     def all_names(self) -> set[str]:
         return set(self.scalars) | set(self.vectors)
@@ -385,7 +386,8 @@ class _Checker:
             raise self.fail(node, f"{func}() takes the name of a coordinate, as in {func}(x)")
         name = node.args[0].id
         if not self.scope.functions_of_time:
-            raise self.fail(node, f"rates such as {func}({name}) are not allowed here")
+            why = f": {self.scope.no_rates}" if self.scope.no_rates else ""
+            raise self.fail(node, f"rates such as {func}({name}) are not allowed here{why}")
         if name not in self.scope.functions_of_time:
             known = sorted(self.scope.functions_of_time)
             hint = did_you_mean(name, known)

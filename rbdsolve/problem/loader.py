@@ -26,7 +26,7 @@ from rbdsolve.problem.schema import (
     ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
-from rbdsolve.problem.contacts import ContactReader, contact_bodies
+from rbdsolve.problem.contacts import ContactReader, contact_bodies, hanging_bodies
 from rbdsolve.problem.loads import LoadReader
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.coordinates import coordinate, declared_ranges
@@ -110,7 +110,7 @@ class _Loader:
         self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
-        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
+        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")), hanging_bodies(get("contacts")))
         contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
         self.reading.add_positions(frozenset(c.name for c in contacts if c.surface.kind is SurfaceKind.PLANE))
         self.reading.add_body_points(bodies)  # a body's origin (its name) and its own points, from here on
@@ -280,12 +280,14 @@ class _Loader:
                              self.reading.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
         return tuple(out)
 
-    def bodies(self, node: Node | None, placed: dict[str, str]) -> tuple[Body, ...]:
-        """The bodies; those in ``placed`` (body -> contact) are placed by rolling."""
+    def bodies(self, node: Node | None, placed: dict[str, str], hanging: frozenset[str] = frozenset()
+               ) -> tuple[Body, ...]:
+        """The bodies; those in ``placed`` (body -> contact) are placed by rolling, or
+        hang from a drum (``hanging``)."""
         if node is None:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
-        reader = BodyReader(self.reading, placed)
+        reader = BodyReader(self.reading, placed, hanging)
         out = []
         for k, v in table.entries:
             out.append(reader.body(self.reading.declare(k, "body"), v))

@@ -17,6 +17,8 @@ a body: V = −F·r_P) is decided with sympy (model/loads.py).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.bodies import refuse_negative
@@ -58,7 +60,7 @@ class LoadReader:
         kind = ex.Kind.SCALAR if towards is not None else ex.Kind.VECTOR
         expected = ("the force's size (a scalar: it acts along the line to 'towards')" if towards is not None
                     else "a force vector such as [F, 0] (or its size with 'towards: POINT')")
-        force = self.reading.expr(spec.get("force"), kind, expected, self.reading.positions)
+        force = self.reading.expr(spec.get("force"), kind, expected, _without_rates(self.reading.positions))
         target = self.reading.expr(towards, ex.Kind.VECTOR, "the point the force pulls towards",
                                    self.reading.positions) if towards is not None else None
         wound = self.wound(spec.get("wound"), towards)
@@ -75,11 +77,11 @@ class LoadReader:
                              spec.get("by").loc)
         moment = spec.get("moment")
         if isinstance(moment, Scalar):  # a scalar about z, or a vector expression
-            value = ex.parse(expect_scalar(moment, "a moment").text, moment.loc, self.reading.positions,
-                             moment.plain)
+            value = ex.parse(expect_scalar(moment, "a moment").text, moment.loc,
+                             _without_rates(self.reading.positions), moment.plain)
         else:
             value = self.reading.expr(moment, ex.Kind.VECTOR, "a moment: a scalar about z, or a vector",
-                                      self.reading.positions)
+                                      _without_rates(self.reading.positions))
         return Couple(name, on, by, value, spec.loc)
 
     def wound(self, node: Node | None, towards: Node | None):
@@ -121,3 +123,12 @@ class LoadReader:
         if word not in self.bodies:
             raise InputError(f"no body '{word}'{did_you_mean(word, list(self.bodies))}", node.loc)
         return word
+
+
+RATES = ("a load may hold the parameters, the coordinates, the points and t, not the velocities: a damper or "
+         "a drag (c*dot(x)) is not in the format yet")
+
+
+def _without_rates(scope: ex.Scope) -> ex.Scope:
+    """The scope of a load's expression, with the reason rates are refused there."""
+    return replace(scope, no_rates=RATES)

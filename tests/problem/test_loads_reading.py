@@ -74,7 +74,9 @@ def test_the_body_follows_from_the_point_and_a_couple_may_be_a_vector() -> None:
     ("  push: {on: bob, force: F, towards: P, wound: {radius: l, side: below}}",
      "p.yaml:10:48: forces.push.wound: a wound string's force has its own direction"),
     ("  push: {on: bob, force: [F, dot(theta)]}",
-     "p.yaml:10:30: forces.push.force[1]: rates such as dot(theta) are not allowed here"),
+     "p.yaml:10:30: forces.push.force[1]: rates such as dot(theta) are not allowed here: a load may hold the "
+     "parameters, the coordinates, the points and t, not the velocities: a damper or a drag (c*dot(x)) is not in "
+     "the format yet"),
 ])
 def test_a_bad_force_is_refused_where_it_is(line: str, message: str) -> None:
     assert _refused(_with(line)).startswith(message)
@@ -85,6 +87,9 @@ def test_a_bad_force_is_refused_where_it_is(line: str, message: str) -> None:
                                              "bodies: 'by' names 'bob' as 'on' does"),
     ("  push: {on: bob}", "p.yaml:10:9: couples.push: missing required key 'moment' in couple 'push'"),
     ("  push: {on: bob, moment: M0}", "p.yaml:10:27: couples.push.moment: unknown symbol 'M0'"),
+    ("  push: {on: bob, moment: -F*l*dot(theta)}", "p.yaml:10:32: couples.push.moment: rates such as dot(theta) are "
+     "not allowed here: a load may hold the parameters, the coordinates, the points and t, not the velocities: a "
+     "damper or a drag (c*dot(x)) is not in the format yet"),
 ])
 def test_a_bad_couple_is_refused_where_it_is(line: str, message: str) -> None:
     assert _refused(_with(line, "couples:")) == message

@@ -134,7 +134,8 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
         solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports),
+            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports)
+                             + _on_drum(row.body, supports),
                              located(supports, row.body))
     return solution
 
@@ -154,6 +155,18 @@ def _on_strings(name: str, supports: tuple[Held, ...]) -> str:
     return (f". Body '{name}' is held only by string {strings}, which pulls it along the string: what carries it "
             f"across (a table it slides on, a guide) is a support to list, such as {{at: {name}, on: {name}, "
             "normal: y} (a smooth surface's push, counted positive upwards)")
+
+
+def _on_drum(name: str, supports: tuple[Held, ...]) -> str:
+    """For a drum whose strings are all counted and still cannot keep it: the string the
+    format cannot name (one between two bodies with mass), and what does hold."""
+    strings = [s.name for s in supports for c in s.components if any(other == name for other, _, _ in c.also)]
+    if not strings:
+        return ""
+    return (f". The strings on body '{name}' that the scene names ({', '.join(strings)}) are counted on it; a "
+            "string from it to another body with mass (over a second pulley with mass, a belt between two drums) "
+            "is not in the format yet, which names strings from a drum to a hanging body only: the eom and the "
+            "tensions at the hanging bodies hold, the axle forces of such pulleys are not answered")
 
 
 def located(supports: tuple[Held, ...], name: str) -> Location | None:

@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import json
 
+import pytest
 import sympy as sp
 
+from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file, load_text
 from rbdsolve.render.json import report_object
@@ -121,3 +123,33 @@ def test_a_spring_below_a_hanging_block() -> None:
     theta = model.q[0]
     assert sp.simplify(spring.stretch - (s["R"] * theta + s["d"])) == 0 or \
         sp.simplify(spring.stretch - sp.Abs(s["R"] * theta + s["d"])) == 0
+
+
+TWO_PULLEYS = """\
+parameters: {M: pulley mass, R: radius, m1: mass 1, m2: mass 2, d: distance, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points: {A: [0, 0], B: [d, 0]}
+bodies:
+  p1: {shape: disk, mass: M, radius: R, at: A, angle: theta}
+  p2: {shape: disk, mass: M, radius: R, at: B, angle: theta}
+  block1: {shape: particle, mass: m1}
+  block2: {shape: particle, mass: m2}
+contacts:
+  S1: {body: block1, hangs_from: {drum: p1, side: left}}
+  S2: {body: block2, hangs_from: {drum: p2, side: right}}
+questions:
+  - reactions: {forces: [S1, S2, {at: A, on: p1}]}
+"""
+
+
+def test_a_string_between_two_pulleys_with_mass_is_named_as_missing_from_the_format() -> None:
+    """Two pulleys joined by a string the scene cannot name (both turn by θ): p1's moment
+    about A needs that string's tension, so the axle force is refused, and the message
+    says the format lacks the string, not that the user left out a support."""
+    with pytest.raises(InputError) as refused:
+        _results(TWO_PULLEYS)
+    message = str(refused.value)
+    assert "cannot keep body 'p1'" in message
+    assert "The strings on body 'p1' that the scene names (S1) are counted on it" in message
+    assert "is not in the format yet" in message
