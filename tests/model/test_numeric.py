@@ -45,21 +45,32 @@ def sample_values(problem) -> dict[str, Fraction]:
     return {name: given.get(name, SAMPLE_VALUES[i % len(SAMPLE_VALUES)]) for i, name in enumerate(names)}
 
 
-def configurations(problem, count: int = 3, values: dict[str, Fraction] | None = None) -> list[list[Fraction]]:
-    """Random configurations; with ``values``, only those where every spring whose length
-    the model writes ±u (its sign at q = 0, model/spring_length.py) keeps that sign: the
-    spring as drawn, which the numeric route's true length |u| agrees with there only."""
-    rng = random.Random(problem.file)
-    drawn = ([Fraction(rng.randint(-1500, 1500), 1000) for _ in problem.coordinates] for _ in range(50 * count))
-    keeps = _keeps_signs(problem, values) if values is not None else (lambda q: True)
-    return [q for q in drawn if keeps(q)][:count]
+def configurations(problem, count: int = 3, values=None) -> list[list[Fraction]]:
+    """Random configurations in [−1.5, 1.5] per coordinate, kept where the symbolic
+    model's spring lengths hold: a stretch written u for |u| (model/spring_length.py)
+    is the model only while u keeps its sign, and the numeric scene keeps √(u²)."""
+    rng = random.Random(str(problem.file))
+    domain = _spring_domain(problem, values) if values is not None else []
+    found = []
+    for _ in range(50 * count):
+        q = [Fraction(rng.randint(-1500, 1500), 1000) for _ in problem.coordinates]
+        if all(holds(q) for holds in domain):
+            found.append(q)
+        if len(found) == count:
+            break
+    return found
 
 
-def _keeps_signs(problem, values: dict[str, Fraction]):
+def _spring_domain(problem, values) -> list:
     model = build_model(problem)
-    subs = {s: exact_number(values[k]) for k, s in model.symbols.parameters.items()}
-    signed = [(x.inside.xreplace(subs), x.sign) for s in model.springs for x in s.lengths if x.sign is not None]
-    return lambda q: all(sign * u.xreplace(dict(zip(model.q, map(sp.Rational, q)))) > 0 for u, sign in signed)
+    subs = {s: exact_number(values[k]) for k, s in model.symbols.parameters.items() if k in values}
+    tests = []
+    for spring in model.springs:
+        for length in spring.lengths:
+            if length.sign is not None:
+                u = sp.Integer(length.sign) * length.inside.xreplace(subs)
+                tests.append(lambda q, u=u: u.xreplace(dict(zip(model.q, map(sp.Rational, q)))) > 0)
+    return tests
 
 
 _REFERENCES: dict = {}
