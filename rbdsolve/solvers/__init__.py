@@ -31,18 +31,21 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Solution
 from rbdsolve.solvers.shared import routes
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.routes import Family, later
+from rbdsolve.solvers.shared.routes import Family, later, later_residuals
 
 FAMILIES = {
     QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric")),
-    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric")),
-    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric")),
+    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"),
+                                    later_residuals("equilibria.check")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later_residuals("modes.check")),
     QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric")),
-    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric")),
+    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric"), later_residuals("impact.check")),
     QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric")),
-    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric")),
+    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric"),
+                                       later_residuals("steady_motion.check")),
     QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric")),
-    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric")),
+    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric"),
+                                   later_residuals("reactions.check")),
     QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric")),
 }
 

@@ -28,21 +28,26 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
+from rbdsolve.solvers.shared.checks import CheckFailed, Residuals, verify
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings, unused_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
-from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
+from rbdsolve.solvers.shared.values import (missing_for, missing_values, not_finite, not_real, numbers,
+                                           with_irrelevant_filled)
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
 
 
 @dataclass(frozen=True)
 class Family:
-    """A solver family's routes: each a pure function (question, model, options) -> Solution."""
+    """A solver family's routes: each a pure function (question, model, options) ->
+    Solution; and what its answers must satisfy, checked before they are printed
+    (``checks.py``): a function (question, model, answers) -> residuals, or None."""
 
     exact: Solver
     numeric: Solver
+    residuals: Residuals | None = None
 
 
 def later(module: str) -> Solver:
@@ -57,15 +62,43 @@ def later(module: str) -> Solver:
     return solve
 
 
+def later_residuals(module: str) -> Residuals:
+    """A family's ``residuals`` (``rbdsolve.solvers.<family>.check``), imported when first asked."""
+
+    def residuals(question: Question, model: Model, answers: object):
+        return importlib.import_module(f"rbdsolve.solvers.{module}").residuals(question, model, answers)
+
+    residuals.__qualname__ = f"{module}.residuals"
+    return residuals
+
+
+def checked(solver: Solver, residuals: Residuals | None) -> Solver:
+    """The route, its answers checked (checks.verify) on the model it answered on (the
+    model seen from a moving frame, for a question asked in one): CheckFailed where one
+    fails."""
+    if residuals is None:
+        return solver
+
+    def solve(question: Question, model: Model, options: Options) -> Solution:
+        solution = solver(question, model, options)
+        if solution.answers is not None:
+            verify(residuals(question, model, solution.answers), model, (*model.q, *model.qd))
+        return solution
+
+    solve.__qualname__ = getattr(solver, "__qualname__", "solve")
+    return solve
+
+
 def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """Run one question's solver on the route asked for, each route within its own time
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
     solution = _with_scene_warnings(question, model, _routed(family, question, model, options))
-    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
-    overflow = not_finite(solution.answers, model.values) if values else None
-    solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
+    found = numbers(solution.answers, model.values) if model.values and solution.answers else None
+    values = found.tree if found is not None else {}
+    said = (not_finite(solution.answers, model.values), not_real(found)) if values else ()
+    solution = replace(solution, warnings=(*solution.warnings, *(x for x in said if x)))
     units = answer_units(solution.answers, model) if values else {}
     return replace(_finite_estimate(solution), values=values or {}, units=units,
                    seconds=time.perf_counter() - start)
@@ -98,21 +131,32 @@ def _finite_estimate(solution: Solution) -> Solution:
 
 
 def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:
+    """The routes' Solution (``_route_choice``); an answer that fails its check is not
+    printed and no other route is tried: the question is unanswered, its error says
+    what failed (a bug in rbdsolve)."""
+    try:
+        return _route_choice(family, question, model, options)
+    except CheckFailed as exc:
+        return _failed(question, exc.route, str(exc))
+
+
+def _route_choice(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
     parameter lacks a value. The question's share of the budget (``options.budget``) is
     the route's; on auto, where the numeric route could follow, the exact route gets
     half of it and the numeric route what is left. The Solution's route is the route
     that ran last; when both fail, its error gives both routes' reasons."""
     filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
+    exact_route, numeric_route = checked(family.exact, family.residuals), checked(family.numeric, family.residuals)
     if options.route is RouteChoice.NUMERIC:
-        return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
+        return _attempt(Route.NUMERIC, numeric_route, question, filled, options)
     share = Allowance(options.budget)
     fallback = options.route is RouteChoice.AUTO and not missing_for(model, question, _solved_for(question))
-    exact = _attempt(Route.EXACT, family.exact, question, model,
+    exact = _attempt(Route.EXACT, exact_route, question, model,
                      replace(options, budget=share.share(2)) if fallback else options)
     if not fallback or exact.solved:
         return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, replace(options, budget=share.left()),
+    solution = _attempt(Route.NUMERIC, numeric_route, question, filled, replace(options, budget=share.left()),
                         " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
@@ -139,6 +183,8 @@ def _attempt(route: Route, solver, question: Question, model: Model, options: Op
     reason it could not answer."""
     try:
         return _run(solver, question, model, options, label)
+    except CheckFailed as exc:
+        raise CheckFailed(str(exc), route) from None
     except (UnsolvedError, OutOfTime) as exc:
         return _failed(question, route, str(exc))
 
