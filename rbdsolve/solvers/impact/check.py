@@ -40,7 +40,7 @@ def residuals(question: Question, model: Model, answers: object) -> tuple[Residu
 def _restitution(opts: ImpactOptions, model: Model, now: Instant, answers: ImpactAnswers, before: dict,
                  after: dict) -> list[Residual]:
     out: list[Residual] = []
-    for blow in blows(model, opts):
+    for blow in blows(model, opts, now):
         if blow.size is None or blow.point not in answers.contact_impulses:
             continue
         n = blow.normal
