@@ -38,6 +38,7 @@ from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.shared.polynomial import polynomial_roots, trig_mixed
+from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
 from rbdsolve.solvers.shared.conditions import asked, critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
@@ -445,7 +446,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     grad = gradient(model)
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
-        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+        return _uniform(model, grad, asked(model, question))
     first = asked(model, question)
     classified = [with_cases(classify_listed(model, x), model, x.at.values(), first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
@@ -458,3 +459,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -> Solution:
+    """No isolated equilibrium: where ∂V/∂q holds no coordinate, every configuration is
+    one under a condition on the parameters (uniform.py); else there is none."""
+    found = uniform_equilibrium(model, grad, first)
+    if found is None:
+        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+    equilibrium, warning = found
+    answers = EquilibriaAnswers((equilibrium,))
+    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))

@@ -12,7 +12,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions.answers import Reaction, ReactionsAnswers
-from rbdsolve.solvers.reactions.balances import balances
+from rbdsolve.solvers.reactions.balances import balances, with_strings
 from rbdsolve.solvers.reactions.supports import held, planar
 from rbdsolve.solvers.shared.accelerations import state_values
 from rbdsolve.solvers.shared.checks import Residual, Vanishes
@@ -26,7 +26,7 @@ def residuals(question: Question, model: Model, answers: object) -> tuple[Residu
     qdd = {a: answers.accelerations[n].xreplace(plain) for n, a in zip(model.coordinate_names(), model.qdd)}
     out: list[Residual] = [Vanishes(f"Lagrange's equation of {n}", E.xreplace(qdd))
                            for n, E in zip(model.coordinate_names(), lagrange_equations(model))]
-    supports = tuple(held(model, s) for s in question.options.supports)
+    supports = with_strings(model, tuple(held(model, s) for s in question.options.supports), question.options.loc)
     rows = balances(model, supports, 2 if planar(model) else 3)
     symbols = {str(c.symbol): c.symbol for s in supports for c in s.components}
     out += _rows(rows, qdd, _forces(answers.reactions, symbols, plain), {}, "")

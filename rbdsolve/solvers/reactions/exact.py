@@ -17,7 +17,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.balances import balances, solve_forces
+from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
@@ -29,7 +29,7 @@ from rbdsolve.solvers.shared.options import Options
 
 def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
-    supports = tuple(held(model, s) for s in question.options.supports)
+    supports = with_strings(model, tuple(held(model, s) for s in question.options.supports), question.options.loc)
     found = accelerations(lagrange_equations(model), model)
     if found.too_long:
         raise UnsolvedError("the general accelerations are too long to write out, and Newton–Euler needs them")

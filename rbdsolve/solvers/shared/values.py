@@ -165,7 +165,7 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
     if isinstance(value, CONDITIONS):  # a condition: true or false at the values, if they decide it
         try:
             decided = value.xreplace(subs)
-        except TypeError:  # a side that is not real there (sympy will not compare it): undecided
+        except TypeError:  # a side not real, or infinite (a string through its own peg), at the values: undecided
             return None
         return bool(decided) if isinstance(decided, BooleanAtom) else None
     number = value.xreplace(subs)
@@ -296,6 +296,8 @@ def _named_by(question, model) -> list:
             out.append(model.symbols.parameters[name])
         elif name in model.points:
             out.append(model.points[name])
+        elif name in model.body_points and name not in bodies:
+            out.append(model.body_points[name])
         elif name in bodies:
             out += _body_ingredients(bodies[name], whole=True)
         elif any(f.name == name for f in model.problem.frames):

@@ -77,7 +77,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
                                   several, critical, _reactions(opts, k, names, targets, solved, along, held))
-    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w)
+    loaded = any(opts.body in (x.body, x.by) for x in model.loads)
+    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w, loaded)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps),
                     warnings=absent_at_values(several, critical, model))
 
