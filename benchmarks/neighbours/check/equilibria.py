@@ -1,0 +1,78 @@
+"""equilibria: at each parameter point, every equilibrium rbdsolve lists that exists
+there (its ``exists_when``) must zero the oracle's generalized force and have the
+oracle's stability (K = −∂Q/∂q on M); every equilibrium the oracle finds in its box
+must be listed (or be one of the listed ones' ``equivalent`` forms)."""
+
+from __future__ import annotations
+
+import mpmath
+
+from benchmarks.neighbours.check.common import Context, Mismatch, fmt, points_for
+from benchmarks.neighbours.expr import FLOAT
+from benchmarks.neighbours.oracle.search import box, equilibria, regular, same, stability, wrap
+
+
+def listed(ctx: Context, answers: dict, i: int):
+    """rbdsolve's equilibria at point i: (q, stability there or None, its equivalents, entry)."""
+    coords = [c.name for c in ctx.scene.coords]
+    p = ctx.points[i]
+    out = []
+    for e in answers["equilibria"]:
+        exists = ctx.reader.truth(e.get("exists_when", "True"), p)
+        if exists is False:
+            continue
+        q = [ctx.reader.value(e["at"][c], p) for c in coords]
+        if any(isinstance(x, mpmath.mpc) for x in q):
+            if exists:
+                raise Mismatch(f"equilibrium {e['at']} exists (exists_when {e.get('exists_when')}) but is not real "
+                               f"at {_params(ctx, i)}")
+            continue
+        stab = e["stability"]
+        if stab == "depends":
+            stab = None
+            for case in e.get("stability_cases", []):
+                if ctx.reader.truth(case["when"], p):
+                    stab = case["stability"]
+        equivalents = [[ctx.reader.value(alt[c], p) for c in coords] for alt in e.get("equivalent", [])]
+        out.append((q, stab, equivalents, e, exists))
+    return out
+
+
+def _params(ctx: Context, i: int) -> str:
+    return "{" + ", ".join(f"{k}={fmt(v)}" for k, v in ctx.points[i].items()) + "}"
+
+
+def check(ctx: Context, question, result: dict) -> list[str]:
+    notes: list[str] = []
+    answers = result["answers"]
+    warned = any("miss" in w for w in result.get("warnings", []))
+    for i in points_for(ctx, result):
+        ms, fs = ctx.system(i), ctx.system(i, FLOAT)
+        bx = box(ms)
+        rb = listed(ctx, answers, i)
+        floor = ms.force_scale()
+        zero = [ms.zero] * ms.n
+        for q, stab, _, entry, exists in rb:
+            Q, S = ms.residual(q, zero, zero, sizes=True)
+            if any(abs(x) > 1e-7 * (sz + floor) for x, sz in zip(Q, S)):
+                raise Mismatch(f"listed equilibrium {entry['at']} = {fmt(q)} is not one: Q = {fmt(Q)} "
+                               f"at {_params(ctx, i)}")
+            if not regular(ms, q) or stab is None or exists is None:
+                continue
+            kind, lam = stability(ms, q)
+            if stab in ("stable", "unstable") and kind != "singular" and stab != kind:
+                raise Mismatch(f"equilibrium {entry['at']} = {fmt(q)}: rbdsolve {stab}, oracle {kind} "
+                               f"(λ = {fmt(lam)}) at {_params(ctx, i)}")
+            if stab in ("undetermined", "neutral") and kind != "singular":
+                notes.append(f"{stab} where the oracle finds it {kind}")
+        found = equilibria(ms, fs)
+        known = []
+        for q, _, eq, _, _ in rb:
+            known += [x for x in [wrap(q, bx)] + [wrap(e, bx) for e in eq] if x is not None]
+        for r in found:
+            if not any(same(r, k, bx, 1e-6) for k in known):
+                kind, _ = stability(ms, r)
+                raise Mismatch(f"missed the equilibrium {dict(zip([c.name for c in ctx.scene.coords], fmt(r)[1:-1].split(', ')))} "
+                               f"({kind}) at {_params(ctx, i)}" + (" (rbdsolve warned it may miss some)" if warned else ""))
+    return notes
+

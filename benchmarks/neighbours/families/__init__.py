@@ -1,0 +1,32 @@
+"""The scene families: one module per kind of exam problem, each with ``FAMILY`` (its
+name) and ``generate(builder)``, which writes one scene with the builder's random
+choices. A new family is a new module added to FAMILIES with its weight."""
+
+from __future__ import annotations
+
+from benchmarks.neighbours.draw import Draw
+from benchmarks.neighbours.families import pendulum
+from benchmarks.neighbours.families.base import Builder
+from benchmarks.neighbours.scene import Scene
+
+# name -> (module, weight): how often the family is drawn
+FAMILIES = {
+    pendulum.FAMILY: (pendulum, 3.0),
+}
+
+
+def generate(seed: int, index: int, only: tuple[str, ...] = ()) -> Scene:
+    """Scene ``index`` of the run with ``seed``: the same whatever else is generated."""
+    draw = Draw(seed, index)
+    names = [n for n in FAMILIES if not only or n in only]
+    weights = [FAMILIES[n][1] for n in names]
+    total = sum(weights)
+    name = draw.choice(names, p=[w / total for w in weights])
+    module = FAMILIES[name][0]
+    b = Builder(draw, name, "", "")
+    module.generate(b)
+    if not b.title:
+        b.title = f"{name} {b.variant} (neighbour {index} of seed {seed})"
+    scene = b.scene()
+    scene.index, scene.seed = index, seed
+    return scene
