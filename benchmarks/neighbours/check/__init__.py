@@ -12,11 +12,12 @@ import re
 import traceback
 from dataclasses import dataclass, field
 
-from benchmarks.neighbours.check import eom, equilibria, modes
+from benchmarks.neighbours.check import energy, eom, equilibria, inertia, kinematics, modes, reactions
 from benchmarks.neighbours.check.common import Mismatch, context
 from benchmarks.neighbours.scene import Scene
 
-CHECKS = {"eom": eom.check, "equilibria": equilibria.check, "modes": modes.check}
+CHECKS = {"eom": eom.check, "equilibria": equilibria.check, "modes": modes.check, "energy": energy.check,
+          "inertia": inertia.check, "kinematics": kinematics.check, "reactions": reactions.check}
 
 
 @dataclass

@@ -1,0 +1,80 @@
+"""Exam problems next door, judged by an independent oracle (issue 43).
+
+    python3 -m benchmarks.neighbours --count N --seed S [--out DIR] [--jobs J]
+           [--families a,b] [--budget SECONDS] [--chunk K] [--report FILE]
+
+Generates N scenes (scene i depends on the seed and i only), solves them with the
+installed rbdsolve in whole processes (K files per process, J processes at once),
+judges every answer with the oracle, writes the report (--report, default
+DIR/report.md) and saves every mismatch and crash in DIR/failures/. The last line is
+``neighbours: N scenes, M mismatches, C crashes, R refused (…)``."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import tempfile
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+from benchmarks.neighbours.report import markdown, save_failures, summary_line
+from benchmarks.neighbours.work import run_chunk
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python3 -m benchmarks.neighbours", description=__doc__.split("\n\n")[0])
+    ap.add_argument("--count", type=int, default=100)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--start", type=int, default=0, help="the first scene's index")
+    ap.add_argument("--out", type=Path, default=None)
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--chunk", type=int, default=5, help="files per rbdsolve process")
+    ap.add_argument("--budget", type=float, default=20.0, help="rbdsolve's --budget (processor seconds)")
+    ap.add_argument("--families", default="", help="comma-separated family names (default: all)")
+    ap.add_argument("--report", type=Path, default=None)
+    args = ap.parse_args(argv)
+    out = args.out or Path(tempfile.mkdtemp(prefix="neighbours-"))
+    families = tuple(f for f in args.families.split(",") if f)
+    indices = list(range(args.start, args.start + args.count))
+    chunks = [indices[i:i + args.chunk] for i in range(0, len(indices), args.chunk)]
+    start = time.perf_counter()
+    outcomes = []
+    if args.jobs <= 1:
+        for c in chunks:
+            outcomes += run_chunk(args.seed, c, families, args.budget, str(out))
+            _progress(len(outcomes), len(indices))
+    else:
+        with ProcessPoolExecutor(args.jobs) as pool:
+            futures = [pool.submit(run_chunk, args.seed, c, families, args.budget, str(out)) for c in chunks]
+            for f in futures:
+                outcomes += f.result()
+                _progress(len(outcomes), len(indices))
+    seconds = time.perf_counter() - start
+    report = args.report or out / "report.md"
+    report.parent.mkdir(parents=True, exist_ok=True)
+    report.write_text(markdown(outcomes, args.seed, seconds))
+    (out / "outcomes.json").write_text(json.dumps([_plain(o) for o in outcomes], default=str) + "\n")
+    saved = save_failures(outcomes, out / "failures")
+    print(f"report: {report}; {len(saved)} failing scenes saved in {out / 'failures'}", file=sys.stderr)
+    oracle = sum(1 for o in outcomes if o.status == "oracle")
+    if oracle:
+        print(f"neighbours: {oracle} scenes where the oracle itself failed (see the report)")
+    print(summary_line(outcomes))
+    return 0
+
+
+def _plain(o):
+    from dataclasses import asdict
+    return asdict(o)
+
+
+def _progress(done: int, total: int) -> None:
+    print(f"\r{done}/{total} scenes", end="", file=sys.stderr, flush=True)
+    if done == total:
+        print(file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
