@@ -31,7 +31,7 @@ def check(ctx: Context, question, result: dict) -> None:
                 want = s.accelerations(q, qd)
                 for k, c in enumerate(coords):
                     got = ctx.reader.value(acc[c], p, q, qd)
-                    if not close(got, want[k], 1e-12, tol * 10):
+                    if not close(got, want[k], _acc_scale(s, q, k), tol * 10):
                         raise Mismatch(f"acceleration of {c} at q={fmt(q)}, q̇={fmt(qd)}: rbdsolve {fmt(got)}, oracle {fmt(want[k])}")
         at = answers.get("at")
         if at and question.options:
@@ -39,9 +39,14 @@ def check(ctx: Context, question, result: dict) -> None:
             want = s.accelerations(q, qd)
             for k, c in enumerate(coords):
                 got = ctx.reader.value(at[c], p)
-                if not close(got, want[k], 1e-12, tol * 10):
+                if not close(got, want[k], _acc_scale(s, q, k), tol * 10):
                     raise Mismatch(f"acceleration of {c} at the state asked: rbdsolve {fmt(got)}, oracle {fmt(want[k])}")
     _check_values(ctx, question, result)
+
+
+def _acc_scale(s, q, k):
+    """A size of accelerations of coordinate k: the forces' scale over its mass term."""
+    return s.force_scale() / max(abs(s.mass_matrix(q)[k][k]), mpmath.mpf("1e-300"))
 
 
 def _check_values(ctx: Context, question, result: dict) -> None:
@@ -55,5 +60,5 @@ def _check_values(ctx: Context, question, result: dict) -> None:
     want = s.accelerations(q, qd)
     for k, c in enumerate(ctx.scene.coords):
         got = at.get(c.name)
-        if got is not None and not close(mpmath.mpf(got), want[k], 1e-12, 1e-9):
+        if got is not None and not close(mpmath.mpf(got), want[k], _acc_scale(s, q, k), 1e-9):
             raise Mismatch(f"values.at.{c.name}: rbdsolve {got}, oracle {fmt(want[k])}")

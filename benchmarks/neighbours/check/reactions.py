@@ -171,14 +171,40 @@ def _lost(ctx, s, answers, q0, i, scale):
         for q, w2 in reach[::8]:
             forces, _ = support_forces(s, [q], [mpmath.sqrt(w2)])
             values.append((q, list(_components(s, sup, *forces[name][:2], [q]).values())[0]))
-        zeros = [a for (a, fa), (b, fb) in zip(values, values[1:]) if fa * fb < 0]
-        if len(zeros) != len(eqs) and len(reach) > 20:
-            raise Mismatch(f"{key} vanishes along the motion at {fmt(zeros)} (the oracle), rbdsolve lists {eqs}")
-        for z, text in zip(zeros, eqs):
-            e = ctx.reader.parse(text)
-            lhs = ctx.reader.value(str(e.lhs - e.rhs), ctx.points[i], [z])
-            if abs(lhs) > 0.05:
-                raise Mismatch(f"{key}: rbdsolve says it vanishes where {text}, the oracle near {coords_fmt(z)}")
+        zeros = [_bisect(s, sup, name, q0, a, b) for (a, fa), (b, fb) in zip(values, values[1:]) if fa * fb < 0]
+        residual = lambda text, z: abs(ctx.reader.value(_side(ctx, text), ctx.points[i], [z]))  # noqa: E731
+        for z in zeros:
+            if not any(residual(text, z) < 1e-6 for text in eqs):
+                raise Mismatch(f"{key} vanishes along the motion at {ctx.scene.coords[0].name} = {fmt(z)} (the oracle), "
+                               f"which no listed equation {eqs} gives")
+        if len(reach) > 20 and reach[-1][0] != qs[-1]:  # the motion turns back: every zero is in the scan
+            for text in eqs:
+                if not any(residual(text, z) < 1e-6 for z in zeros):
+                    raise Mismatch(f"{key}: rbdsolve says it vanishes where {text}, but the oracle's zeros along the "
+                                   f"motion are {fmt(zeros)}")
+
+
+def _side(ctx, text: str) -> str:
+    e = ctx.reader.parse(text)
+    return str(e.lhs - e.rhs)
+
+
+def _bisect(s, sup, name, q0, a, b):
+    """The zero of the support's push between a and b along the motion from rest at q₀."""
+    zero = [mpmath.mpf(0)]
+    def push(q):
+        w2 = rate_squared(s, (q0, zero), [q])
+        forces, _ = support_forces(s, [q], [mpmath.sqrt(max(w2, 0))])
+        return list(_components(s, sup, *forces[name][:2], [q]).values())[0]
+    fa = push(a)
+    for _ in range(40):
+        c = (a + b) / 2
+        fc = push(c)
+        if fa * fc <= 0:
+            b = c
+        else:
+            a, fa = c, fc
+    return (a + b) / 2
 
 
 def coords_fmt(z):

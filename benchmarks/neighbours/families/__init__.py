@@ -5,13 +5,16 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import pendulum
+from benchmarks.neighbours.families import pendulum, rocking, rolling, strings
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
 # name -> (module, weight): how often the family is drawn
 FAMILIES = {
     pendulum.FAMILY: (pendulum, 3.0),
+    rolling.FAMILY: (rolling, 2.0),
+    rocking.FAMILY: (rocking, 1.5),
+    strings.FAMILY: (strings, 1.5),
 }
 
 

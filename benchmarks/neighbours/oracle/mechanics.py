@@ -339,7 +339,10 @@ class System:
                 q = [self.one * float(x) * s for x, s in zip(rng.uniform(-1, 1, self.n), self.scale)]
                 _, S = self.residual(q, zero, zero, sizes=True)
                 best = max([best] + list(S))
-            self._force_scale = best + self.one * 1e-300
+            weight = sum(mb.mass for mb in self.bodies) * mpmath.sqrt(sum(x * x for x in self.g)) * self.length
+            springs = sum(abs(evaluate(sp.stiffness, self.env(zero, 0))) * (self.length ** 2 if sp.angle is None else 1)
+                          for sp in self.scene.springs)
+            self._force_scale = best + self.one * (weight + springs) + self.one * 1e-300
         return self._force_scale
 
     def generalized_force(self, q, t=0):

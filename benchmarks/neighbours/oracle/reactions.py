@@ -110,7 +110,7 @@ def support_forces(s: System, q, qd, qdd=None, t=0):
             labels.append((sup.name, "moment", None))
     A = mpmath.matrix([[columns[c][r] for c in range(len(columns))] for r in range(len(need))])
     b = mpmath.matrix(need)
-    x = mpmath.qr_solve(A, b)[0] if columns else mpmath.matrix(0, 1)
+    x = mpmath.lu_solve(A.T * A, A.T * b) if columns else mpmath.matrix(0, 1)  # least squares (normal equations)
     res = A * x - b if columns else b
     size = max([abs(v) for v in need] + [mpmath.mpf("1e-300")])
     worst = max([abs(v) for v in res] + [0]) / size
