@@ -5,7 +5,7 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import pendulum, rocking, rolling, strings
+from benchmarks.neighbours.families import chains, pendulum, rocking, rolling, strings
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -15,6 +15,7 @@ FAMILIES = {
     rolling.FAMILY: (rolling, 2.0),
     rocking.FAMILY: (rocking, 1.5),
     strings.FAMILY: (strings, 1.5),
+    chains.FAMILY: (chains, 2.0),
 }
 
 

@@ -99,7 +99,7 @@ def _plank(b: Builder) -> None:
     b.body({"shape": "plate", "mass": M, "width": L, "height": h, "at": "P"},
            Body("plank", M, "plate", {"width": L, "height": h}, origin="P"))
     entry, body = round_body(b, "cylinder", m, r)
-    b.coordinate("x", "length", periodic=False, low="-2", high="2")
+    b.coordinate("x", "length", periodic=False, low=f"-9*{L}/10", high="2")
     b.coordinate("s", "length", periodic=False, low="-2", high="2")
     b.hide("_C", f"[x + s, {h}]")
     b.hide("_G", f"[x + s, {h} + {r}]")
