@@ -28,7 +28,7 @@ class Reader:
     def parse(self, text: str) -> sp.Expr:
         return _parse(text, tuple(sorted(self.names)), tuple(self.coords))
 
-    def value(self, answer, params: dict, q=None, qd=None, qdd=None, extra: dict | None = None):
+    def value(self, answer, params: dict, q=None, qd=None, qdd=None, extra: dict | None = None, t=None):
         """The number an answer (a string, or a number on the numeric route) is at these values."""
         if answer is None:
             return None
@@ -42,6 +42,8 @@ class Reader:
             for table, vals in ((self.qdd, qdd), (self.qd, qd), (self.q, q)):
                 if vals is not None:
                     subs[table[name]] = sp.Float(mpmath.nstr(vals[i], 35), 35)
+        if t is not None:
+            subs[_T] = sp.Float(mpmath.nstr(t, 35), 35)
         v = e.xreplace(subs).evalf(30)
         if v.free_symbols:
             raise ValueError(f"answer {answer!r} still holds {sorted(map(str, v.free_symbols))}")

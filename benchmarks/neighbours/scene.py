@@ -86,6 +86,7 @@ class Support:
     by: str | None = None
     normal: str | None = None
     moment: bool = False
+    two_sided: bool = False  # a bead on its wire: the push may take either sign
 
 
 @dataclass

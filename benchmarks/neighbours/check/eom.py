@@ -19,22 +19,24 @@ def check(ctx: Context, question, result: dict) -> None:
         p = ctx.points[i]
         for _ in range(2):
             q, qd, qdd = random_state(ctx, i)
-            E, S = s.residual(q, qd, qdd, sizes=True)
+            t = mpmath.mpf(0) if s.static else mpmath.mpf(float(ctx.rng.uniform(0, 2)))
+            E, S = s.residual(q, qd, qdd, t, sizes=True)
             floor = s.force_scale()
             for k, text in enumerate(answers["equations"]):
-                got = ctx.reader.value(text, p, q, qd, qdd)
+                got = ctx.reader.value(text, p, q, qd, qdd, t=t)
                 if not close(got, E[k], S[k] + floor * 1e-3, tol):
                     raise Mismatch(f"equation {k + 1} at q={fmt(q)}, q̇={fmt(qd)}, q̈={fmt(qdd)}: "
                                    f"rbdsolve {fmt(got)}, oracle {fmt(E[k])}")
             acc = answers.get("accelerations") or {}
             if acc:
-                want = s.accelerations(q, qd)
+                want = s.accelerations(q, qd, t)
                 for k, c in enumerate(coords):
-                    got = ctx.reader.value(acc[c], p, q, qd)
+                    got = ctx.reader.value(acc[c], p, q, qd, t=t)
                     if not close(got, want[k], _acc_scale(s, q, k), tol * 10):
                         raise Mismatch(f"acceleration of {c} at q={fmt(q)}, q̇={fmt(qd)}: rbdsolve {fmt(got)}, oracle {fmt(want[k])}")
+        _frames(ctx, answers, s, p, tol)
         at = answers.get("at")
-        if at and question.options:
+        if at and question.options and s.static:
             q, qd, _ = ctx.state(question.options, i)
             want = s.accelerations(q, qd)
             for k, c in enumerate(coords):
@@ -42,6 +44,19 @@ def check(ctx: Context, question, result: dict) -> None:
                 if not close(got, want[k], _acc_scale(s, q, k), tol * 10):
                     raise Mismatch(f"acceleration of {c} at the state asked: rbdsolve {fmt(got)}, oracle {fmt(want[k])}")
     _check_values(ctx, question, result)
+
+
+def _frames(ctx, answers, s, p, tol):
+    """The equations in each frame asked for: the same coordinates, so the same E_k."""
+    for frame in answers.get("frames") or []:
+        q, qd, qdd = random_state(ctx, 0)
+        E, S = s.residual(q, qd, qdd, mpmath.mpf(0), sizes=True)
+        for k, text in enumerate(frame.get("equations") or []):
+            got = ctx.reader.value(text, p, q, qd, qdd, t=mpmath.mpf(0))
+            if not close(got, E[k], S[k] + s.force_scale() * 1e-3, tol):
+                raise Mismatch(f"equation {k + 1} in frame {frame.get('frame')}: rbdsolve {fmt(got)}, oracle {fmt(E[k])}")
+        if frame.get("equivalent") is False:
+            raise Mismatch(f"frame {frame.get('frame')}: rbdsolve says its equations are not equivalent")
 
 
 def _acc_scale(s, q, k):

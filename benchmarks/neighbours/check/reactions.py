@@ -120,7 +120,10 @@ def _holds(ctx, s, holds: dict, forces, q, i, notes):
     """Each holds_when at the values: a push N ≥ 0 (a tension T ≥ 0) and, rolling, μ ≥ |F|/N."""
     for name, cond in holds.items():
         sup = next(x for x in ctx.scene.supports if x.name == name)
-        if sup.kind == "pivot":
+        if sup.kind == "pivot" or sup.two_sided:
+            got = ctx.reader.truth(cond, ctx.points[i])
+            if got is False:
+                raise Mismatch(f"holds_when at {name} ({cond}) is False for a support held both ways")
             continue
         comps = _components(s, sup, *forces[name][:2], q)
         push = list(comps.values())[0]
@@ -159,7 +162,12 @@ def _lost(ctx, s, answers, q0, i, scale):
             break
         reach.append((q, w2))
     exists = answers.get("lost_exists_when") or {}
+    two_sided = {x.name for x in ctx.scene.supports if x.two_sided}
     for key, eqs in lost.items():
+        if key.split("_", 1)[1] in two_sided:
+            if eqs:
+                raise Mismatch(f"{key}: a support held both ways is never lost, rbdsolve lists {eqs}")
+            continue
         conds = exists.get(key) or ["True"] * len(eqs)
         truth = [ctx.reader.truth(c, ctx.points[i]) for c in conds]
         if None in truth:

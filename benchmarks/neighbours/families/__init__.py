@@ -5,7 +5,7 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import chains, pendulum, rocking, rolling, strings
+from benchmarks.neighbours.families import chains, frames, pendulum, rocking, rolling, springs, strings
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -16,6 +16,8 @@ FAMILIES = {
     rocking.FAMILY: (rocking, 1.5),
     strings.FAMILY: (strings, 1.5),
     chains.FAMILY: (chains, 2.0),
+    springs.FAMILY: (springs, 1.5),
+    frames.FAMILY: (frames, 1.5),
 }
 
 

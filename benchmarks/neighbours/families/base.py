@@ -26,6 +26,8 @@ class Builder:
         self.gravity: str | None = None
         self.gravity_yaml: str | None = None
         self.points: dict[str, str] = {}
+        self.yaml_points: dict[str, str] = {}   # the file's form of a point where it differs (prescribed names)
+        self.prescribed: dict[str, str] = {}
         self.hidden: dict[str, str] = {}
         self.bodies_yaml: dict[str, dict] = {}
         self.bodies: list[Body] = []
@@ -104,10 +106,11 @@ class Builder:
             "parameters": params,
             "values": values or None,
             "assumptions": ("[" + ", ".join(self.file_assumptions) + "]") if self.file_assumptions else None,
+            "prescribed": self.prescribed or None,
             "coordinates": coords,
             "gravity": self.gravity_yaml or self.gravity,
             "frames": self.frames_yaml or None,
-            "points": self.points or None,
+            "points": {**self.points, **self.yaml_points} or None,
             "bodies": self.bodies_yaml or None,
             "contacts": self.contacts_yaml or None,
             "springs": self.springs_yaml or None,
