@@ -5,7 +5,7 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import chains, frames, pendulum, rocking, rolling, springs, strings
+from benchmarks.neighbours.families import chains, frames, impact, pendulum, rocking, rolling, springs, strings
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -18,6 +18,7 @@ FAMILIES = {
     chains.FAMILY: (chains, 2.0),
     springs.FAMILY: (springs, 1.5),
     frames.FAMILY: (frames, 1.5),
+    impact.FAMILY: (impact, 1.5),
 }
 
 
