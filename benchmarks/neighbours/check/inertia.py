@@ -66,7 +66,8 @@ def check(ctx: Context, question, result: dict) -> None:
             if abs(np.linalg.norm(e) - 1) > 1e-8 or np.linalg.norm(JPp @ e - float(rd(lam_s)) * e) > max(tol, 1e-9) * scale:
                 raise Mismatch(f"principal axis {fmt(list(e))} is not a unit eigenvector of J for {lam_s}")
         if answers.get("J_axis") is not None:
-            n = np.array([float(ctx.const(x, i)) for x in opts["axis"]] + [0.0] * (3 - len(opts["axis"])))
+            axis = list(ctx.const(opts["axis"], i)) if isinstance(opts["axis"], str) else opts["axis"]
+            n = np.array([float(ctx.const(x, i)) for x in axis] + [0.0] * (3 - len(axis)))
             e = n / np.linalg.norm(n)
             want = e @ JP @ e
             got = float(rd(answers["J_axis"]))

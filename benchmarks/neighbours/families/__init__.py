@@ -5,7 +5,8 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import chains, frames, impact, pendulum, rocking, rolling, springs, strings
+from benchmarks.neighbours.families import (chains, frames, impact, inertia, pendulum, rocking, rolling, spin, springs,
+                                             strings)
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -19,6 +20,8 @@ FAMILIES = {
     springs.FAMILY: (springs, 1.5),
     frames.FAMILY: (frames, 1.5),
     impact.FAMILY: (impact, 1.5),
+    inertia.FAMILY: (inertia, 1.0),
+    spin.FAMILY: (spin, 0.7),
 }
 
 
