@@ -5,8 +5,8 @@ choices. A new family is a new module added to FAMILIES with its weight."""
 from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
-from benchmarks.neighbours.families import (chains, frames, impact, inertia, pendulum, rocking, rolling, spin, springs,
-                                             strings)
+from benchmarks.neighbours.families import (chains, frames, future, impact, inertia, pendulum, rocking, rolling, spin,
+                                             springs, strings)
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -22,6 +22,7 @@ FAMILIES = {
     impact.FAMILY: (impact, 1.5),
     inertia.FAMILY: (inertia, 1.0),
     spin.FAMILY: (spin, 0.7),
+    future.FAMILY: (future, 0.7),
 }
 
 

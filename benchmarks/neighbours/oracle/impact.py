@@ -166,9 +166,12 @@ def solve(s: System, q, qd_before, collisions: list[Collision], impulses: dict[s
             Jp = _point_jacobian(s, i, s.vector(obj.point, q), q)
             for a in range(3):
                 row[3 * i + a] += Jp[d][a]
-            row[unknowns + j] += 1 / obj.mass
+            if obj.mass is not None:
+                row[unknowns + j] += 1 / obj.mass
+                rhs.append(obj.velocity[d])
+            else:  # a body's point that sticks to a fixed point: at rest after
+                rhs.append(s.zero)
             rows.append(row)
-            rhs.append(obj.velocity[d])
     x = mpmath.lu_solve(mpmath.matrix(rows), mpmath.matrix(rhs))
     V1 = [x[r] for r in range(unknowns)]
     lam = [x[unknowns + j] for j in range(len(cols))]
