@@ -16,11 +16,10 @@ import json
 import sys
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from benchmarks.neighbours.report import markdown, save_failures, summary_line
-from benchmarks.neighbours.work import run_chunk
+from benchmarks.neighbours.work import run
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -37,20 +36,9 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     out = args.out or Path(tempfile.mkdtemp(prefix="neighbours-"))
     families = tuple(f for f in args.families.split(",") if f)
-    indices = list(range(args.start, args.start + args.count))
-    chunks = [indices[i:i + args.chunk] for i in range(0, len(indices), args.chunk)]
     start = time.perf_counter()
-    outcomes = []
-    if args.jobs <= 1:
-        for c in chunks:
-            outcomes += run_chunk(args.seed, c, families, args.budget, str(out))
-            _progress(len(outcomes), len(indices))
-    else:
-        with ProcessPoolExecutor(args.jobs) as pool:
-            futures = [pool.submit(run_chunk, args.seed, c, families, args.budget, str(out)) for c in chunks]
-            for f in futures:
-                outcomes += f.result()
-                _progress(len(outcomes), len(indices))
+    outcomes = run(args.seed, range(args.start, args.start + args.count), families, args.budget, args.jobs,
+                   args.chunk, progress=_progress)
     seconds = time.perf_counter() - start
     report = args.report or out / "report.md"
     report.parent.mkdir(parents=True, exist_ok=True)

@@ -6,6 +6,7 @@ so the crash is pinned on its question, and one that the process left without ou
 from __future__ import annotations
 
 import tempfile
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from benchmarks.neighbours.check import QuestionOutcome, SceneOutcome, judge
@@ -15,7 +16,7 @@ from benchmarks.neighbours.run import solve
 TIMEOUT_PER_FILE = 600.0
 
 
-def run_chunk(seed: int, indices: list[int], families: tuple[str, ...], budget: float, out: str) -> list[SceneOutcome]:
+def run_chunk(seed: int, indices: list[int], families: tuple[str, ...], budget: float) -> list[SceneOutcome]:
     scenes = [generate(seed, i, families) for i in indices]
     with tempfile.TemporaryDirectory(prefix="neighbours-") as tmp:
         paths = []
@@ -52,3 +53,25 @@ def _one_by_one(scene, tmp: Path, budget: float, obj: dict) -> list[QuestionOutc
         got = judge(copy, single).questions
         out.append(got[0] if got else QuestionOutcome(q.kind, "crashed", "no output"))
     return out
+
+
+def run(seed: int, indices, families: tuple[str, ...] = (), budget: float = 20.0, jobs: int = 1, chunk: int = 5,
+        progress=None) -> list[SceneOutcome]:
+    """The outcomes of scenes ``indices`` of ``seed``, in order: ``chunk`` files per rbdsolve
+    process, ``jobs`` chunks at once (each generated, solved and judged in its worker)."""
+    indices = list(indices)
+    chunks = [indices[i:i + chunk] for i in range(0, len(indices), chunk)]
+    outcomes: list = []
+    if jobs <= 1:
+        for c in chunks:
+            outcomes += run_chunk(seed, c, families, budget)
+            if progress:
+                progress(len(outcomes), len(indices))
+        return outcomes
+    with ProcessPoolExecutor(jobs) as pool:
+        futures = [pool.submit(run_chunk, seed, c, families, budget) for c in chunks]
+        for f in futures:
+            outcomes += f.result()
+            if progress:
+                progress(len(outcomes), len(indices))
+    return outcomes

@@ -22,7 +22,7 @@ def check(ctx: Context, question, result: dict) -> None:
             t = mpmath.mpf(0) if s.static else mpmath.mpf(float(ctx.rng.uniform(0, 2)))
             E, S = s.residual(q, qd, qdd, t, sizes=True)
             floor = s.force_scale()
-            for k, text in enumerate(answers["equations"]):
+            for k, text in enumerate(answers.get("equations") or []):
                 got = ctx.reader.value(text, p, q, qd, qdd, t=t)
                 if not close(got, E[k], S[k] + floor * 1e-3, tol):
                     raise Mismatch(f"equation {k + 1} at q={fmt(q)}, q̇={fmt(qd)}, q̈={fmt(qdd)}: "

@@ -18,6 +18,7 @@ def check(ctx: Context, question, result: dict) -> list[str]:
     answers = result["answers"]
     entries = answers["modes"] if "modes" in answers and isinstance(answers["modes"], list) else [answers]
     notes: list[str] = []
+    ctx._modes_about = question.options.get("about") if isinstance(question.options.get("about"), dict) else None
     for i in points_for(ctx, result):
         for entry in entries:
             _one(ctx, entry, result, i, notes)
@@ -31,7 +32,11 @@ def _value(ctx, x, i):
 def _one(ctx: Context, entry: dict, result: dict, i: int, notes: list[str]) -> None:
     coords = [c.name for c in ctx.scene.coords]
     tol = rtol(result)
-    q0 = [_value(ctx, entry["about"][c], i) for c in coords]
+    about = entry.get("about") or _about(ctx, question_about(ctx, entry), i)
+    if about is None:
+        return
+    entry = {**entry, "about": about}
+    q0 = [_value(ctx, about[c], i) for c in coords]
     if any(isinstance(x, mpmath.mpc) for x in q0):
         return  # this equilibrium does not exist at these values
     s = ctx.system(i)
@@ -73,6 +78,23 @@ def _one(ctx: Context, entry: dict, result: dict, i: int, notes: list[str]) -> N
         if np.linalg.norm(res) > 1e-7 * (kn + abs(float(got[j])) * mn) * np.linalg.norm(a):
             raise Mismatch(f"modes about {entry['about']}: shape {j + 1} = {fmt(list(a))} is not a mode of λ = "
                            f"{fmt(got[j])} (residual {np.linalg.norm(res):.3g}) at {_params(ctx, i)}")
+
+
+def question_about(ctx, entry):
+    return getattr(ctx, "_modes_about", None)
+
+
+def _about(ctx, given, i):
+    """The equilibrium the question names, or (none named) the only stable one the oracle finds."""
+    if isinstance(given, dict):
+        return {c: str(v) for c, v in given.items()}
+    from benchmarks.neighbours.expr import FLOAT
+    from benchmarks.neighbours.oracle.search import equilibria, stability
+    ms = ctx.system(i)
+    stable = [r for r in equilibria(ms, ctx.system(i, FLOAT)) if stability(ms, r)[0] == "stable"]
+    if len(stable) != 1:
+        return None
+    return {c.name: mpmath.nstr(x, 35) for c, x in zip(ctx.scene.coords, stable[0])}
 
 
 def _kinds(ctx: Context, entry: dict, lam: list, top: float, i: int) -> None:

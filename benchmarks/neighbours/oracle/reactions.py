@@ -112,7 +112,7 @@ def support_forces(s: System, q, qd, qdd=None, t=0):
     b = mpmath.matrix(need)
     x = mpmath.lu_solve(A.T * A, A.T * b) if columns else mpmath.matrix(0, 1)  # least squares (normal equations)
     res = A * x - b if columns else b
-    size = max([abs(v) for v in need] + [mpmath.mpf("1e-300")])
+    size = max([abs(v) for v in need] + [s.force_scale() / s.length])
     worst = max([abs(v) for v in res] + [0]) / size
     out = {}
     for (name, what, d), value in zip(labels, x):

@@ -42,7 +42,7 @@ def equilibria(ms: System, fs: System, starts: int | None = None) -> list[list]:
     cands: list[np.ndarray] = []
     if n == 1:
         lo, hi, per = b[0]
-        xs = np.linspace(lo, hi, 1441)
+        xs = np.linspace(lo, hi, 721)
         fv = np.array([_force(fs, [x])[0] for x in xs])
         scale = np.max(np.abs(fv)) + 1e-300
         for i in range(len(xs) - 1):
@@ -55,15 +55,20 @@ def equilibria(ms: System, fs: System, starts: int | None = None) -> list[list]:
                 cands.append(np.array([xs[i]]))
         cands.append(np.array([hi])) if per else None
     else:
-        per_axis = starts or {2: 16, 3: 7}.get(n, 4)
+        per_axis = starts or {2: 10, 3: 5}.get(n, 3)
         grids = [np.linspace(lo, hi, per_axis + (0 if per else 1), endpoint=not per) for lo, hi, per in b]
         for start in itertools.product(*grids):
             sol = optimize.root(lambda q: _force(fs, q), np.array(start), method="hybr", options={"xtol": 1e-12})
             if sol.success:
                 cands.append(sol.x)
+    unique: list[np.ndarray] = []
+    for c in cands:  # one polish per root: starts that converged alike are one candidate
+        w = wrap([mpmath.mpf(float(x)) for x in c], b)
+        if w is not None and not any(same(w, u, b, 1e-5) for u in unique):
+            unique.append(w)
     roots: list[list] = []
-    for c in cands:
-        r = polish(ms, [mpmath.mpf(float(x)) for x in c])
+    for c in unique:
+        r = polish(ms, [mpmath.mpf(x) for x in c])
         if r is None:
             continue
         r = wrap(r, b)
