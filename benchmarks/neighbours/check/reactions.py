@@ -154,7 +154,7 @@ def _lost(ctx, s, answers, q0, i, scale):
         return
     zero = [mpmath.mpf(0)]
     side = -1 if float(s.generalized_force(q0)[0]) < 0 else 1
-    qs = [q0[0] + side * k * mpmath.pi / 720 for k in range(1, 1441)]
+    qs = [q0[0] + side * k * mpmath.pi / 720 for k in range(0, 1441)]
     reach = []
     for q in qs:
         w2 = rate_squared(s, (q0, zero), [q])
@@ -180,6 +180,8 @@ def _lost(ctx, s, answers, q0, i, scale):
             forces, _ = support_forces(s, [q], [mpmath.sqrt(w2)])
             values.append((q, list(_components(s, sup, *forces[name][:2], [q]).values())[0]))
         zeros = [_bisect(s, sup, name, q0, a, b) for (a, fa), (b, fb) in zip(values, values[1:]) if fa * fb < 0]
+        if values and abs(values[0][1]) < 1e-12 * scale:
+            zeros.insert(0, q0[0])  # lost at the very start
         residual = lambda text, z: abs(ctx.reader.value(_side(ctx, text), ctx.points[i], [z]))  # noqa: E731
         for z in zeros:
             if not any(residual(text, z) < 1e-6 for text in eqs):

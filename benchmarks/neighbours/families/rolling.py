@@ -7,6 +7,7 @@ circle: α = −(R − ρ)θ/ρ; outside: α = (R + ρ)θ/ρ)."""
 
 from __future__ import annotations
 
+from benchmarks.neighbours.draw import LARGE, SMALL
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Body, Support
 
@@ -37,7 +38,7 @@ def generate(b: Builder) -> None:
     draw = b.draw
     surface = draw.choice(["floor", "incline", "inside", "outside"], p=[0.15, 0.3, 0.3, 0.25])
     m = b.param("m", "mass", "mass of the rolling body").name
-    r = b.param("r", "length", "radius of the rolling body", low=0.2, high=0.8).name
+    r = b.param("r", "length", "radius of the rolling body", low=0.2, high=0.8, table=SMALL).name
     entry, body = round_body(b, "wheel", m, r)
     g = b.param("g", "accel", "acceleration of gravity").name
     b.gravity = f"[0, -{g}]"
@@ -61,7 +62,7 @@ def generate(b: Builder) -> None:
         b.supports.append(Support("C", "wheel", "_C", "rolling", normal=n))
         start = {q: "0"}
     else:
-        R = b.param("R", "length", "radius of the fixed circle", low=1.0, high=3.0).name
+        R = b.param("R", "length", "radius of the fixed circle", low=1.0, high=3.0, table=LARGE).name
         b.assumptions.append(f"{R} > {r}" if surface == "inside" else f"{R} > 0")
         if surface == "inside" and draw.chance(0.5):
             b.file_assumptions.append(f"{R} > {r}")
@@ -96,7 +97,7 @@ def _questions(b: Builder, surface: str, start: dict) -> None:
     chosen = [x for x in pool if draw.chance(0.45)] or [draw.choice(pool)]
     if surface in ("inside", "outside"):
         release = draw.choice(["pi/2", "pi/3", "theta0", "pi/6"])
-        if release == "theta0" and any(x in chosen for x in ("reactions", "energy")):
+        if release == "theta0" and any(x in chosen for x in ("reactions", "energy", "eom")):
             b.param("theta0", "angle", "angle of release", low=0.1, high=1.4)
         rest, to = {q: release}, {q: "0" if surface == "inside" else f"2*{release}" if release != "pi/2" else "pi"}
     else:

@@ -97,9 +97,7 @@ def _two_springs(b: Builder) -> None:
     k = b.param("k", "stiffness", "stiffness of each spring", low=50.0, high=200.0).name
     a = b.param("a", "length", "half the distance between the anchors").name
     natural = b.draw.chance(0.6)
-    L = b.param("L", "length", "natural length of each spring", low=0.2, high=0.9).name if natural else "0"
-    if natural:
-        b.assumptions.append(f"{L} < a")
+    L = b.draw.choice([f"{a}/2", f"{a}/3", f"2*{a}/3"]) if natural else "0"  # shorter than the anchors' half distance
     _g(b)
     b.coordinate("x", "length", periodic=False, low=f"-{a}/2", high=f"{a}/2")
     b.coordinate("y", "length", periodic=False, low=f"-3*{a}", high=f"-{a}/100")
