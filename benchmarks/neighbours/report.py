@@ -96,7 +96,7 @@ def save_failures(outcomes: list[SceneOutcome], folder: Path) -> list[Path]:
                   "exit_code": s.exit_code, "parameter_points": s.points,
                   "questions": [{"kind": q.kind, "status": q.status, "route": q.route, "message": q.reason,
                                  "notes": q.notes} for q in s.questions],
-                  "oracle": getattr(s, "oracle_values", None)}
+                  "oracle": s.oracle_values}
         (folder / f"{s.name}.oracle.json").write_text(json.dumps(record, indent=1, default=str) + "\n")
         saved.append(path)
     return saved

@@ -33,8 +33,20 @@ def run_chunk(seed: int, indices: list[int], families: tuple[str, ...], budget: 
             o = judge(s, obj)
             if obj.get("exit_code") == 3 or not obj:
                 o.questions = _one_by_one(s, Path(tmp), budget, obj)
+                o.oracle_values = _values(s, obj)
             outcomes.append(o)
     return outcomes
+
+
+def _values(scene, obj) -> list:
+    """The oracle's numbers for a scene rbdsolve crashed on (no results to judge)."""
+    from benchmarks.neighbours.check import _expected
+    from benchmarks.neighbours.check.common import context
+    try:
+        ctx = context(scene, {"symbols": [p.name for p in scene.params]})
+        return [_expected(ctx, q) for q in scene.questions]
+    except Exception as exc:  # noqa: BLE001 - a record, not a verdict
+        return [{"error": repr(exc)}]
 
 
 def _one_by_one(scene, tmp: Path, budget: float, obj: dict) -> list[QuestionOutcome]:

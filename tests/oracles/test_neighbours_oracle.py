@@ -153,3 +153,14 @@ def test_free_rod_struck_at_its_end():
     zero = [mpmath.mpf(0)] * 3
     out = solve(s, zero, zero, [], {"A": [mpmath.mpf(0), mpmath.mpf("1.5")]})
     assert [float(x) for x in out["qd"]] == pytest.approx([0, 1.5 / 2, 6 * 1.5 / (2 * 3)], abs=1e-14)
+
+
+def test_simulation_at_small_amplitude_confirms_the_linearization():
+    """The oracle's two roads to a frequency agree: the rod pendulum's √(3g/2l) by
+    integrating its nonlinear equations released at a thousandth of a radian."""
+    from benchmarks.neighbours.oracle.search import simulated_frequency
+    _, sc = _system(P, ["theta"], [Body("rod", "m", "rod", {"length": "l"}, (0, 1, 0),
+                                        origin="l/2*[sin(theta), -cos(theta)]", angle="theta")])
+    fs = System(sc, {k: mpmath.mpf(v) for k, v in P.items()}, FLOAT)
+    w = simulated_frequency(fs, [0.0], [1.0], omega_guess=3.0)
+    assert w == pytest.approx(np.sqrt(3 * 9.81 / (2 * 1.5)), rel=1e-5)

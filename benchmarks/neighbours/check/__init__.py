@@ -43,6 +43,7 @@ class SceneOutcome:
     text: str
     points: list[dict] = field(default_factory=list)
     future: str | None = None
+    oracle_values: list = field(default_factory=list)  # what the oracle expects, for a failing scene
 
     @property
     def status(self) -> str:
@@ -112,7 +113,17 @@ def judge(scene: Scene, obj: dict) -> SceneOutcome:
         return outcome
     for question, result in zip(scene.questions, obj["results"]):
         outcome.questions.append(_question(ctx, question, result))
+    if outcome.status in ("mismatch", "crashed"):
+        outcome.oracle_values = [_expected(ctx, q) for q in scene.questions]
     return outcome
+
+
+def _expected(ctx, question) -> dict:
+    from benchmarks.neighbours.check.expected import expected
+    try:
+        return {"question": question.kind, **expected(ctx, question)}
+    except Exception as exc:  # noqa: BLE001 - a record, not a verdict
+        return {"question": question.kind, "error": f"{type(exc).__name__}: {exc}"}
 
 
 def _question(ctx, question, result: dict) -> QuestionOutcome:

@@ -38,6 +38,30 @@ def listed(ctx: Context, answers: dict, i: int):
     return out
 
 
+def _hessian(ctx, ms, q, entry, i):
+    """The Hessian printed with an equilibrium against the oracle's K = ∂E/∂q at rest."""
+    hessian = entry.get("hessian")
+    curvatures = entry.get("curvatures")
+    if not hessian and not curvatures:
+        return
+    K, _ = ms.stiffness(q, gyroscopic=False)
+    if curvatures:
+        import numpy as np
+        Kf = np.array(K, float)
+        mine = np.linalg.eigvalsh((Kf + Kf.T) / 2)
+        scale = np.abs(mine).max() + float(ms.force_scale()) * 1e-6
+        if len(mine) != len(curvatures) or np.abs(np.sort(curvatures) - mine).max() > 1e-6 * scale:
+            raise Mismatch(f"curvatures at {entry['at']}: rbdsolve {fmt(curvatures)}, oracle {fmt(list(mine))}")
+        return
+    top = max(abs(x) for row in K for x in row) + ms.force_scale() * mpmath.mpf("1e-6")
+    for a, row in enumerate(hessian):
+        for b, text in enumerate(row):
+            got = ctx.reader.value(text, ctx.points[i], q)
+            if got is not None and abs(got - K[a][b]) > 1e-7 * top:
+                raise Mismatch(f"Hessian at {entry['at']}: entry [{a + 1}][{b + 1}] rbdsolve {fmt(got)}, "
+                               f"oracle {fmt(K[a][b])} at {_params(ctx, i)}")
+
+
 def _along_continuum(ms, r, k, bx) -> bool:
     """r and a listed k differ only along directions where every point is an equilibrium
     too (K singular there: a coordinate V does not depend on, listed once)."""
@@ -75,6 +99,7 @@ def check(ctx: Context, question, result: dict) -> list[str]:
             if any(abs(x) > 1e-7 * (sz + floor) for x, sz in zip(Q, S)):
                 raise Mismatch(f"listed equilibrium {entry['at']} = {fmt(q)} is not one: Q = {fmt(Q)} "
                                f"at {_params(ctx, i)}")
+            _hessian(ctx, ms, q, entry, i)
             if not regular(ms, q) or stab is None or exists is None:
                 continue
             kind, lam = stability(ms, q)

@@ -70,6 +70,7 @@ def _one(ctx: Context, entry: dict, result: dict, i: int, notes: list[str]) -> N
         raise Mismatch(f"modes about {entry['about']}: eigenvalues rbdsolve {fmt(sorted(got))}, oracle {fmt(list(lam))} "
                        f"at {_params(ctx, i)}")
     _kinds(ctx, entry, got, top, i)
+    _simulated(ctx, q0, lam, entry, i)
     for j, shape in enumerate(entry.get("shapes") or []):
         if shape is None or j >= len(got):
             continue
@@ -78,6 +79,18 @@ def _one(ctx: Context, entry: dict, result: dict, i: int, notes: list[str]) -> N
         if np.linalg.norm(res) > 1e-7 * (kn + abs(float(got[j])) * mn) * np.linalg.norm(a):
             raise Mismatch(f"modes about {entry['about']}: shape {j + 1} = {fmt(list(a))} is not a mode of λ = "
                            f"{fmt(got[j])} (residual {np.linalg.norm(res):.3g}) at {_params(ctx, i)}")
+
+
+def _simulated(ctx, q0, lam, entry, i):
+    """One scene in ten (by its index) with one coordinate: the oracle's nonlinear motion at a
+    small amplitude oscillates at √λ (a check of the linearization by simulation)."""
+    if ctx.scene.index % 10 or len(q0) != 1 or lam[0] <= 0 or i:
+        return
+    from benchmarks.neighbours.expr import FLOAT
+    from benchmarks.neighbours.oracle.search import simulated_frequency
+    w = simulated_frequency(ctx.system(i, FLOAT), [float(x) for x in q0], [1.0], omega_guess=float(np.sqrt(lam[0])))
+    if w is None or abs(w / np.sqrt(lam[0]) - 1) > 1e-4:
+        raise AssertionError(f"the oracle's simulation oscillates at {w}, its linearization at {np.sqrt(lam[0])}")
 
 
 def question_about(ctx, entry):

@@ -80,7 +80,7 @@ def _elastic(b: Builder) -> None:
     k = b.param("k", "stiffness", "stiffness of the spring", low=50.0, high=200.0).name
     L = b.param("L", "length", "natural length of the spring").name
     _g(b)
-    b.coordinate("r", "length", periodic=False, low=f"{L}/10", high=f"10*{L}")
+    b.coordinate("r", "length", periodic=False, low=f"{L}/100", high=f"10*{L}")
     b.coordinate("theta", "angle")
     b.point("O", "[0, 0]")
     b.point("P", "r*[sin(theta), -cos(theta)]")

@@ -149,3 +149,33 @@ def stability(ms: System, q) -> tuple[str, list[float]]:
     if lam.min() < -1e-9 * top:
         return "unstable", list(lam)
     return "singular", list(lam)
+
+
+def simulated_frequency(fs: System, q0: list[float], shape: list[float], periods: float = 3.0,
+                        omega_guess: float = 1.0) -> float | None:
+    """ω of the motion released at rest from q₀ + A a (A a thousandth of the coordinates'
+    scale, a the mode's shape), from the zero crossings of the modal coordinate of the
+    oracle's own nonlinear equations (floats, RK45 at rtol 1e-10); None where it does not
+    oscillate about q₀."""
+    from scipy.integrate import solve_ivp
+    n = fs.n
+    a = np.array(shape, float)
+    a = a / np.abs(a).max()
+    amp = 1e-3 * np.array(fs.scale)
+    y0 = np.concatenate([np.array(q0, float) + amp * a, np.zeros(n)])
+
+    def rhs(_, y):
+        qdd = fs.accelerations(list(y[:n]), list(y[n:]))
+        return np.concatenate([y[n:], np.array(qdd, float)])
+
+    T = 2 * np.pi / omega_guess
+    sol = solve_ivp(rhs, (0, periods * T), y0, rtol=1e-10, atol=1e-14 * max(amp), dense_output=True)
+    if not sol.success:
+        return None
+    t = np.linspace(0, periods * T, int(200 * periods))
+    u = (sol.sol(t)[:n].T - np.array(q0, float)) @ (a * amp) / (amp @ amp)
+    crossings = [t[k] - u[k] * (t[k + 1] - t[k]) / (u[k + 1] - u[k]) for k in range(len(t) - 1) if u[k] * u[k + 1] < 0]
+    if len(crossings) < 3:
+        return None
+    half = np.diff(crossings).mean()
+    return float(np.pi / half)
