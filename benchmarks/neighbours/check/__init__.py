@@ -136,6 +136,7 @@ def _question(ctx, question, result: dict) -> QuestionOutcome:
     if check is None:
         out.status = "unchecked"
         return out
+    kept = len(ctx.points)
     try:
         notes = check(ctx, question, result)
         out.notes = list(notes or [])
@@ -144,4 +145,8 @@ def _question(ctx, question, result: dict) -> QuestionOutcome:
     except Exception as exc:  # noqa: BLE001 - the oracle's own failure, counted apart
         out.status, out.reason = "oracle", f"{type(exc).__name__}: {exc}"
         out.detail = traceback.format_exc(limit=6)
+    finally:  # the points a check added on both sides of a critical value are its own
+        del ctx.points[kept:]
+        for key in [k for k in ctx._systems if k[0] >= kept]:
+            del ctx._systems[key]
     return out

@@ -96,6 +96,38 @@ def points_for(ctx: Context, result: dict) -> list[int]:
     return list(range(len(ctx.points)))
 
 
+def boundary_points(ctx: Context, result: dict) -> list[int]:
+    """Each printed critical value, crossed: at the first point, its parameter set to 0.9 and
+    1.1 times the critical value there (the other parameters kept, the assumptions too), so
+    that every condition is judged on both sides of its boundary. The new points are
+    added to ctx.points; their indices are returned."""
+    from benchmarks.neighbours.oracle.mechanics import _holds
+    if result.get("route") == "numeric" or not ctx.points:
+        return []
+    answers = result.get("answers") or {}
+    crit = list(answers.get("critical") or [])
+    for entry in answers.get("modes") or [] if isinstance(answers.get("modes"), list) else []:
+        crit += entry.get("critical") or []
+    out = []
+    fixed = {p.name for p in ctx.scene.params if p.si is not None}
+    for c in crit:
+        name = c.get("parameter")
+        if name not in ctx.points[0] or name in fixed:
+            continue
+        try:
+            value = ctx.reader.value(c["value"], ctx.points[0])
+        except (ValueError, TypeError):
+            continue
+        if isinstance(value, mpmath.mpc) or value <= 0:
+            continue
+        for f in ("0.9", "1.1"):
+            point = {**ctx.points[0], name: value * mpmath.mpf(f)}
+            if all(_holds(a, point) for a in ctx.scene.assumptions):
+                ctx.points.append(point)
+                out.append(len(ctx.points) - 1)
+    return out
+
+
 def random_state(ctx: Context, i: int):
     s = ctx.system(i)
     n = s.n

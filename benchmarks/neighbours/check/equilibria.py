@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import mpmath
 
-from benchmarks.neighbours.check.common import Context, Mismatch, fmt, points_for
+from benchmarks.neighbours.check.common import Context, Mismatch, boundary_points, fmt, points_for
 from benchmarks.neighbours.expr import FLOAT
 from benchmarks.neighbours.oracle.search import box, equilibria, regular, same, stability, wrap
 
@@ -88,7 +88,7 @@ def check(ctx: Context, question, result: dict) -> list[str]:
     notes: list[str] = []
     answers = result["answers"]
     warned = any("miss" in w for w in result.get("warnings", []))
-    for i in points_for(ctx, result):
+    for i in points_for(ctx, result) + boundary_points(ctx, result):
         ms, fs = ctx.system(i), ctx.system(i, FLOAT)
         bx = box(ms)
         rb = listed(ctx, answers, i)

@@ -10,7 +10,7 @@ import mpmath
 import numpy as np
 from scipy.linalg import eigh
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, rtol
+from benchmarks.neighbours.check.common import Context, Mismatch, boundary_points, close, fmt, points_for, rtol
 from benchmarks.neighbours.check.equilibria import _params
 
 
@@ -19,7 +19,7 @@ def check(ctx: Context, question, result: dict) -> list[str]:
     entries = answers["modes"] if "modes" in answers and isinstance(answers["modes"], list) else [answers]
     notes: list[str] = []
     ctx._modes_about = question.options.get("about") if isinstance(question.options.get("about"), dict) else None
-    for i in points_for(ctx, result):
+    for i in points_for(ctx, result) + boundary_points(ctx, result):
         for entry in entries:
             _one(ctx, entry, result, i, notes)
     return notes
