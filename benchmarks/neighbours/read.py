@@ -13,6 +13,10 @@ import sympy as sp
 _T = sp.Symbol("t")
 
 
+class NotANumber(ValueError):
+    """An answer that divides by zero (or overflows) at the values asked."""
+
+
 class Reader:
     """Answers of one file: its parameter names (``symbols``) and coordinates."""
 
@@ -47,6 +51,8 @@ class Reader:
         v = e.xreplace(subs).evalf(30)
         if v.free_symbols:
             raise ValueError(f"answer {answer!r} still holds {sorted(map(str, v.free_symbols))}")
+        if v.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise NotANumber(f"answer {answer!r} is not a finite number at these values")
         c = complex(v)
         if abs(c.imag) > 1e-12 * max(1.0, abs(c.real)):
             return mpmath.mpc(c.real, c.imag)

@@ -12,13 +12,14 @@ import re
 import traceback
 from dataclasses import dataclass, field
 
-from benchmarks.neighbours.check import energy, eom, equilibria, impact, inertia, kinematics, modes, reactions, spin
+from benchmarks.neighbours.check import (energy, eom, equilibria, impact, inertia, kinematics, modes, reactions, spin,
+                                         steady)
 from benchmarks.neighbours.check.common import Mismatch, context
 from benchmarks.neighbours.scene import Scene
 
 CHECKS = {"eom": eom.check, "equilibria": equilibria.check, "modes": modes.check, "energy": energy.check,
           "inertia": inertia.check, "kinematics": kinematics.check, "reactions": reactions.check,
-          "impact": impact.check, "steady_spin": spin.check}
+          "impact": impact.check, "steady_spin": spin.check, "steady_motion": steady.check}
 
 
 @dataclass

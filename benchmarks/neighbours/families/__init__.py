@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from benchmarks.neighbours.draw import Draw
 from benchmarks.neighbours.families import (chains, frames, future, impact, inertia, pendulum, rocking, rolling, spin,
-                                             springs, strings)
+                                             springs, steady, strings)
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Scene
 
@@ -23,6 +23,7 @@ FAMILIES = {
     inertia.FAMILY: (inertia, 1.0),
     spin.FAMILY: (spin, 0.7),
     future.FAMILY: (future, 0.7),
+    steady.FAMILY: (steady, 0.7),
 }
 
 

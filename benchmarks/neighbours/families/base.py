@@ -106,6 +106,8 @@ class Builder:
             "parameters": params,
             "values": values or None,
             "assumptions": ("[" + ", ".join(self.file_assumptions) + "]") if self.file_assumptions else None,
+            "unknowns": self.extra.get("unknowns"),
+            "triads": self.extra.get("triads"),
             "prescribed": self.prescribed or None,
             "coordinates": coords,
             "gravity": self.gravity_yaml or self.gravity,
@@ -118,7 +120,8 @@ class Builder:
             "questions": [q.kind if not q.options else {q.kind: q.options} for q in self.questions],
         }
         for k, v in self.extra.items():
-            doc[k] = v
+            if k not in ("unknowns", "triads"):
+                doc[k] = v
         return document(doc)
 
     def scene(self) -> Scene:
