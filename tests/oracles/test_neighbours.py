@@ -61,7 +61,10 @@ def test_every_scene_is_judged_by_the_oracle(outcomes):
 def solved(tmp_path_factory):
     """A few generated scenes and rbdsolve's JSON for each (one process)."""
     folder = tmp_path_factory.mktemp("neighbours")
-    scenes = [generate(SEED, i, (family,)) for i, family in enumerate(["pendulum", "rolling", "impact", "chains"])]
+    # scenes of several families; pendulum 12 and chains 17 have every value given, so their
+    # equilibria have a decided stability to flip
+    scenes = [generate(SEED, i, (family,)) for i, family in ((0, "pendulum"), (1, "rolling"), (2, "impact"), (3, "chains"),
+                                                             (12, "pendulum"), (17, "chains"))]
     paths = []
     for s in scenes:
         path = folder / f"{s.name}.yaml"
@@ -76,6 +79,8 @@ def _scaled(answer):
     if isinstance(answer, str):
         condition = answer in ("True", "False") or answer.startswith("Eq(") or any(c in answer for c in "<>&|")
         return answer if condition else f"({answer})*101/100"
+    if isinstance(answer, float):  # a numeric route's number
+        return answer * 1.01
     if isinstance(answer, list):
         return [_scaled(x) for x in answer]
     if isinstance(answer, dict):
@@ -86,26 +91,35 @@ def _scaled(answer):
 
 def test_the_oracle_catches_answers_one_percent_off(solved):
     """Tests that can fail: every answered question, its answers scaled by 1.01, is a mismatch."""
+    tried = 0
     for scene, obj in solved:
-        assert judge(scene, obj).status == "answered", scene.name
+        assert judge(scene, obj).status in ("answered", "refused"), scene.name
         for k, result in enumerate(obj["results"]):
             if not result["ok"]:
                 continue
+            tried += 1
             wrong = copy.deepcopy(obj)
             wrong["results"][k]["answers"] = _scaled(result["answers"])
             verdict = judge(scene, wrong).questions[k]
             assert verdict.status == "mismatch", (scene.name, result["question"], verdict.status)
+    assert tried >= 5
 
 
 def test_the_oracle_catches_a_wrong_stability(solved):
+    flip = {"stable": "unstable", "unstable": "stable"}
+    tried = 0
     for scene, obj in solved:
         for k, result in enumerate(obj["results"]):
             if result["question"] != "equilibria" or not result["ok"]:
                 continue
             wrong = copy.deepcopy(obj)
-            for e in wrong["results"][k]["answers"]["equilibria"]:
-                e["stability"] = {"stable": "unstable", "unstable": "stable"}.get(e["stability"], e["stability"])
-            assert judge(scene, wrong).questions[k].status == "mismatch"
+            decided = [e for e in wrong["results"][k]["answers"]["equilibria"] if e["stability"] in flip]
+            for e in decided:
+                e["stability"] = flip[e["stability"]]
+            if decided:
+                assert judge(scene, wrong).questions[k].status == "mismatch", scene.name
+                tried += 1
+    assert tried
 
 
 def test_the_found_failures_are_ready_to_run():

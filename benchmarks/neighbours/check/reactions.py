@@ -12,6 +12,7 @@ import numpy as np
 
 from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, random_state, rtol
 from benchmarks.neighbours.check.energy import rate_squared
+from benchmarks.neighbours.expr import FLOAT
 from benchmarks.neighbours.oracle.reactions import directions, support_forces
 
 
@@ -155,9 +156,11 @@ def _lost(ctx, s, answers, q0, i, scale):
     zero = [mpmath.mpf(0)]
     side = -1 if float(s.generalized_force(q0)[0]) < 0 else 1
     qs = [q0[0] + side * k * mpmath.pi / 720 for k in range(0, 1441)]
+    fs = ctx.system(i, FLOAT)  # the scan in floats, the zeros in 40 digits
+    start = (list(map(float, q0)), [0.0])
     reach = []
     for q in qs:
-        w2 = rate_squared(s, (q0, zero), [q])
+        w2 = rate_squared(fs, start, [float(q)])
         if w2 < 0:
             break
         reach.append((q, w2))
@@ -177,7 +180,7 @@ def _lost(ctx, s, answers, q0, i, scale):
         sup = next(x for x in ctx.scene.supports if x.name == name)
         values = []
         for q, w2 in reach[::8]:
-            forces, _ = support_forces(s, [q], [mpmath.sqrt(w2)])
+            forces, _ = support_forces(s, [q], [mpmath.sqrt(rate_squared(s, (q0, zero), [q]))])
             values.append((q, list(_components(s, sup, *forces[name][:2], [q]).values())[0]))
         zeros = [_bisect(s, sup, name, q0, a, b) for (a, fa), (b, fb) in zip(values, values[1:]) if fa * fb < 0]
         if values and abs(values[0][1]) < 1e-12 * scale:
