@@ -41,7 +41,7 @@ def run_chunk(seed: int, indices: list[int], families: tuple[str, ...], budget: 
 def _values(scene, obj) -> list:
     """The oracle's numbers for a scene rbdsolve crashed on (no results to judge)."""
     from benchmarks.neighbours.check import _expected
-    from benchmarks.neighbours.check.common import context
+    from benchmarks.neighbours.check.context import context
     try:
         ctx = context(scene, {"symbols": [p.name for p in scene.params]})
         return [_expected(ctx, q) for q in scene.questions]

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from benchmarks.neighbours.check import (energy, eom, equilibria, impact, inertia, kinematics, modes, reactions, spin,
                                          steady)
-from benchmarks.neighbours.check.common import Mismatch, context
+from benchmarks.neighbours.check.context import Mismatch, context
 from benchmarks.neighbours.scene import Scene
 
 CHECKS = {"eom": eom.check, "equilibria": equilibria.check, "modes": modes.check, "energy": energy.check,

@@ -8,7 +8,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, random_state, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, close, fmt, points_for, random_state, rtol
 
 
 def rate_squared(s, start, q):

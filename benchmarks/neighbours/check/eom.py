@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import mpmath
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, random_state, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, close, fmt, points_for, random_state, rtol
 
 
 def check(ctx: Context, question, result: dict) -> None:

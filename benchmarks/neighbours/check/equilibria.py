@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import mpmath
 
-from benchmarks.neighbours.check.common import Context, Mismatch, boundary_points, fmt, points_for
+from benchmarks.neighbours.check.context import Context, Mismatch, boundary_points, fmt, points_for
 from benchmarks.neighbours.expr import FLOAT
 from benchmarks.neighbours.oracle.search import box, equilibria, regular, same, stability, wrap
 

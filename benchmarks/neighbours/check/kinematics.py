@@ -7,7 +7,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, close, fmt, points_for, rtol
 
 
 def _path(s, text, q, qd, qdd):

@@ -10,7 +10,7 @@ import mpmath
 import numpy as np
 from scipy.linalg import eigh
 
-from benchmarks.neighbours.check.common import Context, Mismatch, boundary_points, close, fmt, points_for, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, boundary_points, close, fmt, points_for, rtol
 from benchmarks.neighbours.check.equilibria import _params
 
 

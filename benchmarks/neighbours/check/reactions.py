@@ -10,7 +10,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, random_state, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, close, fmt, points_for, random_state, rtol
 from benchmarks.neighbours.check.energy import rate_squared
 from benchmarks.neighbours.expr import FLOAT
 from benchmarks.neighbours.oracle.reactions import directions, support_forces

@@ -11,7 +11,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.check.common import Context, Mismatch, close, fmt, points_for, rtol
+from benchmarks.neighbours.check.context import Context, Mismatch, close, fmt, points_for, rtol
 
 FREE = {"Omega": 1.3, "w1": 0.7, "w2": -0.4, "w3": 0.9}
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.check.common import Context, Mismatch, fmt
+from benchmarks.neighbours.check.context import Context, Mismatch, fmt
 from benchmarks.neighbours.oracle.mechanics import System, _cross
 from benchmarks.neighbours.read import NotANumber
 
