@@ -106,7 +106,8 @@ def solve(s: System, q, qd_before, collisions: list[Collision], impulses: dict[s
             P = [c.mass * (c.velocity[k] - c.after[k]) for k in range(2)]
             w = wrench(c.point, P)
             known = [a + b for a, b in zip(known, w)]
-    # momentum: M (V⁺ − V⁻) − Σ columns = known
+    # momentum: M (V⁺ − V⁻) − Σ columns = known; a support's column is the jump its unit
+    # impulse along d gives, which is also the map of its velocity condition (J_Pᵀ d)
     colw = []
     for kind, obj, d in cols:
         if kind == "support":
@@ -135,15 +136,8 @@ def solve(s: System, q, qd_before, collisions: list[Collision], impulses: dict[s
     # velocity conditions after
     for j, (kind, obj, d) in enumerate(cols):
         row = [s.zero] * N
-        if kind == "support":
-            point = s.vector(obj.at, q)
-            for body, sign in ((obj.body, 1), (obj.by, -1)):
-                if body is None:
-                    continue
-                i = names.index(body)
-                Jp = _point_jacobian(s, i, point, q)
-                for a in range(3):
-                    row[3 * i + a] += sign * (Jp[0][a] * d[0] + Jp[1][a] * d[1])
+        if kind == "support":  # d·(v_P − v_P of its holder) = 0: the same map as its impulse's
+            row[:unknowns] = colw[j]
             rows.append(row)
             rhs.append(s.zero)
         elif kind == "collision":
