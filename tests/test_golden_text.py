@@ -44,6 +44,8 @@ CASES = [
         "spin/box-three-sides.yaml",
         "forces/particle-on-sphere.yaml",
         "kinematics/double-pendulum-tip.yaml",
+        "spin/sleeping-top.yaml",
+        "frames/rod-on-turning-shaft.yaml",
     ]),
 ]
 

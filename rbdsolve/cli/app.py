@@ -298,11 +298,13 @@ def run_guarded(debug: bool, run: Callable[[], ExitCode]) -> None:
     stderr = sys.stderr
     sys.stderr = Unfailing(stderr)
     previous = _on_sigterm(_terminate)
+    previous_int = _on_sigint(_interrupt)
     try:
         code = guard(debug, run)
         code = max(code, _flushed())
     finally:
         _on_sigterm(previous)
+        _on_sigint(previous_int)
         sys.stderr = stderr
     sys.exit(int(code))
 
@@ -313,18 +315,44 @@ class Terminated(BaseException):
 
 
 def _terminate(signum, frame) -> None:
+    _stopping(Terminated)
     raise Terminated()
+
+
+def _interrupt(signum, frame) -> None:
+    """Ctrl-C: KeyboardInterrupt, as Python's own handler raises."""
+    _stopping(KeyboardInterrupt)
+    raise KeyboardInterrupt()
+
+
+def _stopping(kind: type[BaseException]) -> None:
+    """Tell the budget that the process is stopping (budget.stop), so that no budget's
+    ring can take the place of the interrupt on its way out. Not imported here: a
+    process that has not imported the budget has no ring to fear (and a signal handler
+    is no place for an import)."""
+    budget = sys.modules.get("rbdsolve.solvers.shared.budget")
+    if budget is not None:
+        budget.stop(kind)
 
 
 def _on_sigterm(handler):
     """Install ``handler`` for SIGTERM and return the previous one (None where signal
     handlers cannot be set: not the main thread)."""
+    return _on_signal("SIGTERM", handler)
+
+
+def _on_sigint(handler):
+    """Install ``handler`` for SIGINT (Ctrl-C) and return the previous one, as _on_sigterm."""
+    return _on_signal("SIGINT", handler)
+
+
+def _on_signal(name: str, handler):
     import signal
     import threading
 
     if handler is None or threading.current_thread() is not threading.main_thread():
         return None
-    return signal.signal(signal.SIGTERM, handler)
+    return signal.signal(getattr(signal, name), handler)
 
 
 def _flushed() -> ExitCode:

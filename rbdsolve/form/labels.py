@@ -27,6 +27,7 @@ from rbdsolve.form.printers import split_name, unicode_name
 REGISTRY: dict[str, tuple[str, ...]] = {
     "mass_matrix": ("M", "M_q"),
     "stiffness_matrix": ("K", "K_q"),
+    "gyroscopic_matrix": ("G", "G_q"),
     "displacement": ("u", "eta", "xi"),
     "eigenvalue": ("lamda", "Lambda"),
     "scaled_eigenvalue": ("mu", "kappa", "nu"),

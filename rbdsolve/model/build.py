@@ -18,11 +18,13 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
+from rbdsolve.model.spring_length import signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
-from rbdsolve.model.rotation import angular_velocity, sequence_rotation
+from rbdsolve.model.rotation import Turns, angular_velocity, sequence_rotation, turns_angular_velocity, \
+    turns_conjugate, unit_turns
 from rbdsolve.model.symbols import Symbols, exact_number, plainly_real
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
@@ -49,6 +51,7 @@ class RigidBody:
     given_velocity: sp.Matrix | None = None  # v_G at the instant, linear in q̇
     given_angular_velocity: sp.Matrix | None = None
     turns_3d: bool = False  # oriented by a sequence of turns: ω from Ṙ Rᵀ
+    turns: Turns = ()  # those turns, a triad's first (model/rotation.py): ω and R J Rᵀ turn by turn
 
     @property
     def placed(self) -> bool:
@@ -66,6 +69,8 @@ class RigidBody:
         """ω in scene axes: given, or, for a planar body turning by angle α(q, t), α̇ e_z."""
         if self.given_angular_velocity is not None:
             return self.given_angular_velocity
+        if self.turns:
+            return turns_angular_velocity(self.turns, state)
         if self.turns_3d:
             return angular_velocity(self.rotation, state)
         if self.angle is None:
@@ -73,11 +78,15 @@ class RigidBody:
         return sp.Matrix([0, 0, state.d_dt(self.angle)])
 
     def inertia_in_scene(self) -> sp.Matrix:
-        """J_G in scene axes: R J Rᵀ (a fresh matrix: a caller may change it in place)."""
+        """J_G in scene axes: R J Rᵀ (a fresh matrix: a caller may change it in place);
+        turn by turn where the body is turned by a sequence (a spin about an axis of
+        symmetry then leaves no trace of its angle)."""
         return sp.Matrix(self._inertia_in_scene)
 
     @cached_property  # once per body: T, the Jacobians, M at each configuration and the balances ask for it
     def _inertia_in_scene(self) -> sp.ImmutableMatrix:
+        if self.turns:
+            return sp.ImmutableMatrix(turns_conjugate(self.turns, self.inertia))
         return sp.ImmutableMatrix(self.rotation * self.inertia * self.rotation.T)
 
 
@@ -90,6 +99,12 @@ class SpringModel:
     stiffness: sp.Expr
     stretch: sp.Expr  # |r_a − r_b| − l₀ for a linear spring, α − α₀ for a torsional one
     source: Spring
+    lengths: tuple = ()  # model/spring_length.py Length's: each |u| of the length, written ±u where its sign is known
+
+    def signed(self, expr: sp.Expr) -> sp.Expr:
+        """expr with each |u| of the length written as the stretch writes it (±u where
+        its sign is known): the direction d/|d| of the pull, as the stretch has it."""
+        return expr.xreplace({sp.Abs(x.inside): x.sign * x.inside for x in self.lengths if x.sign is not None})
 
 
 @dataclass(frozen=True, eq=False)  # identity equality: energies are memoized per model
@@ -109,6 +124,7 @@ class Model:
     velocities: Mapping[str, sp.Matrix] = field(default_factory=dict)  # points given by velocity
     triads: Mapping[str, sp.Matrix] = field(default_factory=dict)  # rotation: triad axes -> scene axes
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
+    gyroscopic: tuple = ()  # EnergyTerm's: L's terms linear in q̇ that T does not hold (a frame's Coriolis terms)
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:' and implied by contacts
     contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
     plane_contacts: tuple = ()  # model/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
@@ -164,10 +180,10 @@ class Model:
         of them names t or a prescribed motion (``_timed``): it is then not made here."""
         positions = self._positions() if _timed(self.problem) else [
             b.position for b in self.bodies if Deferred.made(b, "position") and b.position is not None]
-        parts = [*positions, *(b.rotation for b in self.bodies),
+        parts = [*positions, *(b.rotation for b in self.bodies if not b.turns),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
         parts += [self.gravity] if self.gravity is not None else []
-        return _holds(parts, t)
+        return _holds(parts, t) or any(turning_holds_time(b, self.state) for b in self.bodies if b.turns)
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]
@@ -190,6 +206,7 @@ def build_model(problem: Problem) -> Model:
     """Turn a validated Problem into sympy objects."""
     names = Symbols.of(problem)
     triads = {tr.name: _turns(tr.turns, names) for tr in problem.triads}
+    triad_turns = {tr.name: tuple(tr.turns) for tr in problem.triads}
     unit_vectors = {v: triads[tr.name][:, k] for tr in problem.triads for k, v in enumerate(tr.vectors)}
     names = names.with_points(unit_vectors)
     velocities: dict[str, sp.Matrix] = {}
@@ -204,7 +221,8 @@ def build_model(problem: Problem) -> Model:
     _check_real(given, problem, symbols)
     problem, contacts = _place_contacts(problem, names)  # rolling places its bodies: at and angle
     masses: dict = {}
-    bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses) for b in problem.bodies)
+    bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses, triad_turns)
+                   for b in problem.bodies)
     springs = tuple(_spring(s, names) for s in problem.springs)
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
@@ -215,10 +233,10 @@ def build_model(problem: Problem) -> Model:
     names = names.with_points(points)
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
+    assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
+    springs = _signed(springs, names, assumptions)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
-                  velocities, triads=triads,
-                  assumptions=stated + tuple(a for c in contacts + planes for a in c.requires),
-                  contacts=contacts, plane_contacts=planes)
+                  velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes)
     check_assumptions(model.assumptions, values, names)
     _refuse_winding_angles(model)
     return model
@@ -255,6 +273,18 @@ def _timed(problem: Problem) -> bool:
     exprs = [p.position for p in problem.points if p.position is not None]
     exprs += [b.at for b in problem.bodies if b.at is not None]
     return any(not timed.isdisjoint(e.names()) for e in exprs)
+
+
+def turning_holds_time(body: RigidBody, state: State) -> bool:
+    """Does a body turned by a sequence bring t into T? Its rotational energy
+    ω·J_scene ω, not its rotation: a top spun at a constant rate about its axis of
+    symmetry (a last turn [z, s t]) turns with t, yet its T holds none (model/rotation.py).
+    Where tidying leaves t, ∂/∂t of it is simplified to tell."""
+    if body.inertia == sp.zeros(3, 3):
+        return False
+    omega = body.angular_velocity(state)
+    energy = tidy((omega.T * body.inertia_in_scene() * omega)[0, 0])
+    return energy.has(t) and sp.simplify(sp.diff(energy, t)) != 0
 
 
 def _holds(parts: list, symbol: sp.Symbol) -> bool:
@@ -376,7 +406,8 @@ def _turns(turns, names: Symbols, start: sp.Matrix | None = None) -> sp.Matrix:
     return R if start is None else (start * R).applyfunc(tidy)
 
 
-def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Matrix], masses: dict) -> RigidBody:
+def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Matrix], masses: dict,
+          triad_turns: Mapping[str, tuple]) -> RigidBody:
     """A body's mass properties combined from its parts (once per distinct description,
     ``masses`` keeps them by ``parts_key``); its centre of mass is its origin plus the
     parts' combined centre, turned with the body: r_G = r_at + R c.
@@ -393,9 +424,13 @@ def _body(body: Body, names: Symbols, rates: Symbols, triads: Mapping[str, sp.Ma
         return RigidBody(body.name, props.mass, None, sp.eye(3), None, props.inertia, body, velocity, omega)
     if body.orientation:
         start = triads[body.orientation[0]] if isinstance(body.orientation[0], str) else None
-        rotation = _turns([x for x in body.orientation if not isinstance(x, str)], names, start)
+        own = [x for x in body.orientation if not isinstance(x, str)]
+        rotation = _turns(own, names, start)
         position = names.vector(body.at) + rotation * props.centre
-        return RigidBody(body.name, props.mass, position, rotation, None, props.inertia, body, turns_3d=True)
+        every = [*(triad_turns[body.orientation[0]] if start is not None else ()), *own]
+        turns = unit_turns([(names.axis(x.axis), names.scalar(x.angle)) for x in every])
+        return RigidBody(body.name, props.mass, position, rotation, None, props.inertia, body, turns_3d=True,
+                         turns=turns)
     angle = names.scalar(body.angle) if body.angle is not None else None
     rotation = sp.rot_axis3(-angle) if angle is not None else sp.eye(3)
     return RigidBody(body.name, props.mass, Later(lambda: _placed(names.vector(body.at), rotation, props.centre)),
@@ -483,6 +518,20 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
         rest = names.scalar(spring.rest) if spring.rest else sp.Integer(0)
         stretch = names.scalar(spring.angle) - rest
     return SpringModel(spring.name, k, stretch, spring)
+
+
+def _signed(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
+    """Each linear spring's length with |u| written ±u where u's sign at the reference
+    configuration (q = 0) is known (model/spring_length.py)."""
+    reference = {q: sp.Integer(0) for q in names.state.q}
+    assumed = substitutions(assumptions, names) if assumptions else {}
+    out = []
+    for s in springs:
+        if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
+            stretch, lengths = signed_length(s.stretch, reference, assumed)
+            s = replace(s, stretch=stretch, lengths=lengths)
+        out.append(s)
+    return tuple(out)
 
 
 def _periodic_coordinates(model: Model) -> frozenset:

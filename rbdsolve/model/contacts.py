@@ -37,7 +37,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import Assumed
-from rbdsolve.model.edges import Curved, Flat, NotInPlane, edge
+from rbdsolve.model.edges import Curved, Flat, NotInPlane, body_part, part_edge
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
@@ -159,17 +159,16 @@ def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame 
 
 def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling]:
     """A body on a string from a drum over a pulley (model/strings.py)."""
-    e = _geometry(c, drum, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
+    e = _geometry(c, drum, c.pulley.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
     return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,
                            requires=_wound(c, drum, names))
 
 
-def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=None):
-    part = body.parts[0]
-    dims = {k: names.scalar(v) for k, v in part.dimensions}
+def _geometry(c: Contact, body: Body, part: str | None, names: Symbols, edge_name: str, radius=None):
+    """The edge of ``body``'s ``part`` that touches, in body axes from its origin."""
     try:
-        return edge(part.shape, edge_name, dims, names.axis(part.axis) if part.axis is not None else None, radius)
+        return part_edge(body_part(body, part), edge_name, names, radius)
     except NotInPlane as exc:
         raise InputError(f"contact '{c.name}': {exc}; a planar contact rolls in the xy-plane of the scene (rolling "
                          "in 3D is not integrable: roll on a plane, 'rolls_on: {plane: {normal: z}}', with the body "
@@ -179,7 +178,7 @@ def _geometry(c: Contact, body: Body, names: Symbols, edge_name: str, radius=Non
 
 def _contact(c: Contact, body: Body, names: Symbols, values: dict, frame: _Frame | None, under: Body | None):
     """(origin, angle, Rolling) of the body placed by contact ``c``."""
-    geometry = _geometry(c, body, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
+    geometry = _geometry(c, body, c.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     sigma = sp.Dummy("sigma", real=True)
     surface = _surface(c, names, sigma, under)
     q = names.coordinates[c.coordinate]
@@ -226,7 +225,7 @@ def _body_edge(c: Contact, body: Body, names: Symbols, sigma) -> _Surface:
     """Another body's edge in its own axes: a rim is a circle, a flat edge a line along
     −e_z × n (so that the body rolling on it is on its outer side)."""
     s = c.surface
-    e = _geometry(c, body, names, s.edge)
+    e = _geometry(c, body, s.part, names, s.edge, names.scalar(s.radius) if s.radius is not None else None)
     if isinstance(e, Flat):
         return _line(e.point, -_turn(e.outward), False, sigma, True)
     if e.arc is not None:
@@ -420,23 +419,25 @@ def _fits(c: Contact, rho: sp.Expr, s: _Surface, names: Symbols) -> tuple[Assume
 
 def _wound(c: Contact, drum: Body, names: Symbols) -> tuple[Assumed, ...]:
     """A string wound at its own radius b on a drum of rim radius R lies on the drum:
-    R ≥ b. Refused when the numbers break it; assumed when the signs do not decide it."""
+    R ≥ b (so does the axle a body rolls on at its ``radius``). Refused when the numbers
+    break it; assumed when the signs do not decide it."""
     if c.radius is None:
         return ()
-    dims = {k: names.scalar(v) for k, v in drum.parts[0].dimensions}
+    dims = {k: names.scalar(v) for k, v in body_part(drum, c.pulley.part if c.pulley else c.part).dimensions}
     rim = dims.get("outer_radius", dims.get("radius"))
     if rim is None:
         return ()
     b = names.scalar(c.radius)
     room = sp.expand(rim - b)
+    wound = "the string is wound" if c.string else f"{c.body} rolls"
     if room.is_negative or (room.is_number and room < 0):
-        raise InputError(f"contact '{c.name}': the string is wound at the radius {to_unicode(b)}, outside the rim of "
-                         f"'{drum.name}' (radius {to_unicode(rim)}): a string winds on the body, at most at its rim",
-                         c.radius.loc)
+        raise InputError(f"contact '{c.name}': {wound} at the radius {to_unicode(b)}, outside the rim of "
+                         f"'{drum.name}' (radius {to_unicode(rim)}): a string winds on the body, and a body rolls "
+                         "on its axle, at most at its rim", c.radius.loc)
     if not room.free_symbols or room.is_nonnegative:
         return ()
-    return (implied(c, rim, b, names, f"contact '{c.name}': the string is wound on {drum.name}, inside its rim",
-                    strict=False),)
+    where = "the string is wound on" if c.string else f"{c.body} rolls at a radius of"
+    return (implied(c, rim, b, names, f"contact '{c.name}': {where} {drum.name}, inside its rim", strict=False),)
 
 
 def implied(c: Contact, larger: sp.Expr, smaller: sp.Expr, names: Symbols, why: str, strict: bool = True) -> Assumed:

@@ -16,12 +16,13 @@ The part's ``axis:`` turns them with the shape (Q, :func:`~rbdsolve.model.inerti
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
 from rbdsolve.model.inertia import OWN_AXIS, rotation_to
-from rbdsolve.problem.schema import Shape
+from rbdsolve.model.symbols import Symbols
+from rbdsolve.problem.schema import Body, Part, Shape
 
 _X, _Y, _Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
 _ROUND_IN_PLANE = (Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE,
@@ -79,6 +80,36 @@ def edge(shape: Shape, name: str, dims: dict[str, sp.Expr], axis: sp.Matrix | No
     half = dims["height"] / 2 if shape is Shape.PLATE else sp.Integer(0)
     extent = dims["width"] / 2 if shape is Shape.PLATE else dims["length"] / 2
     return Flat(Q * (sign * half * _Y), Q * (sign * _Y), extent)
+
+
+def body_part(body: Body, name: str | None) -> Part:
+    """The body's part named ``name`` (None: its only part)."""
+    return body.parts[0] if name is None else next(p for p in body.parts if p.name == name)
+
+
+def part_edge(part: Part, name: str, names: Symbols, radius: sp.Expr | None = None,
+              planar: bool = True) -> Curved | Flat:
+    """Edge ``name`` of a body's ``part``, in body axes from the body's origin: the
+    shape's edge (:func:`edge`) moved by the part's ``at``; a part given by its inertia
+    has only the circle of ``radius`` about its centre of mass (its ``at``), in the
+    scene's plane. In a planar contact only the offset's component in the plane counts:
+    the surface (a floor, a drum) runs through every depth, so a spool's rim at
+    z = −w/2 touches the floor as one at z = 0 would."""
+    if part.shape is None:
+        found: Curved | Flat = Curved(sp.zeros(3, 1), radius, None, _Z)
+    else:
+        dims = {k: names.scalar(v) for k, v in part.dimensions}
+        found = edge(part.shape, name, dims, names.axis(part.axis) if part.axis is not None else None, radius,
+                     planar)
+    if part.at is None:
+        return found
+    offset = names.vector(part.at)
+    offset = offset if offset.rows == 3 else offset.col_join(sp.zeros(3 - offset.rows, 1))
+    if planar:
+        offset[2] = 0
+    if isinstance(found, Curved):
+        return replace(found, centre=found.centre + offset)
+    return replace(found, point=found.point + offset)
 
 
 def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Curved | Flat:

@@ -145,34 +145,97 @@ def _spin(body: RigidBody, state) -> sp.Expr:
 
 def in_frame(model: Model, motion: FrameMotion) -> Model:
     """The model as seen in F, for relative equilibria and small oscillations:
-    positions r', bodies turned by their angle relative to F (α − Ω t for a frame
-    turning about z), spring stretches from the relative positions, gravity in F's
-    axes, and the inertial potentials (centrifugal, translation) added to V.
+    positions r', bodies turned relative to F, spring stretches from the relative
+    positions, gravity in F's axes, the inertial potentials added to V, and L's terms
+    linear in the relative rates kept as the model's gyroscopic terms.
 
-    A body's relative spin energy ½ J (α̇ − Ω)² differs from its true one by J Ω α̇ and
-    a constant, a total time derivative: it changes no equation. A frame turning about
-    an axis other than z cannot carry a body that turns with an ``angle`` about z."""
+    With ω' a body's angular velocity relative to F and J' its inertia in F's axes, its
+    true rotational energy is ½ (ω' + ω_F)ᵀ J' (ω' + ω_F) = ½ ω'ᵀ J' ω' + ω_Fᵀ J' ω'
+    + ½ ω_Fᵀ J' ω_F: the relative energy (the seen model's T), a gyroscopic term, and
+    the centrifugal potential of the body's turning, −½ ω_Fᵀ J' ω_F, which holds the
+    inertia tensor, not just the centre: a rod hinged to a turning shaft at θ from it has
+    −½ Ω² (m l²/3) sin²θ in all, a third more than its centre alone would give (kept
+    where it depends on q). Likewise ½ m |v' + ω_F × r'|² adds m v'·(ω_F × r') (Coriolis).
+    The part of the gyroscopic terms without rates (a body spun relative to F about an
+    axis ω_F does not hold: ω_Fᵀ J' ω'_t) is a potential too.
+
+    A planar body turns with its angle α less Ω t in a frame turning about z (J_zz about
+    z is constant: its turning changes no equation). In a frame turning about another
+    axis a body that turns with a planar ``angle`` is refused: its orientation is given
+    as turns, the frame's turn first."""
     n = motion.omega
     turning = [b.name for b in model.bodies if b.angle is not None and b.inertia != sp.zeros(3, 3)]
     if (n[0] != 0 or n[1] != 0) and turning:
-        raise UnsolvedError(f"frame '{motion.frame.name}' turns about an axis other than z, and body "
-                            f"'{turning[0]}' turns with an 'angle' about z: its orientation cannot follow the frame")
+        raise UnsolvedError(f"frame '{motion.frame.name}' turns about {motion.frame.axis.text}, and body "
+                            f"'{turning[0]}' turns with a planar 'angle' (about z), which cannot follow it: give its "
+                            f"orientation as turns, the frame's turn first, such as orientation: "
+                            f"[[{motion.frame.axis.text}, {motion.frame.rate.text}*t], [z, theta]] "
+                            "(docs/format.md, frames)")
     bodies = tuple(_relative_body(b, motion) for b in model.bodies)
     springs = tuple(_relative_spring(s, model, motion) for s in model.springs)
     gravity = motion.in_axes(model.gravity) if model.gravity is not None else None
     extra = [x for b, moved in zip(model.bodies, bodies)
              for x in inertial_potentials(b.name, b.mass, moved.position, motion)]
+    coriolis = [_coriolis(moved, model, motion) for moved in bodies]
+    extra += [x for moved, (_, still) in zip(bodies, coriolis)
+              for x in (_turning_potential(moved, motion, model), still)]
     points = {name: motion.relative(r) for name, r in model.points.items()}
     return replace(model, points=points, bodies=bodies, springs=springs, gravity=gravity,
-                   inertial=tuple(x for x in extra if x.value != 0))
+                   inertial=tuple(x for x in extra if x.value != 0),
+                   gyroscopic=tuple(x for x, _ in coriolis if x.value != 0))
 
 
 def _relative_body(body: RigidBody, motion: FrameMotion) -> RigidBody:
     position = motion.relative(body.position)
+    if body.turns:
+        return replace(body, position=position, rotation=motion.in_axes(body.rotation),
+                       turns=_relative_turns(body.turns, motion))
     if body.angle is None:
         return replace(body, position=position)
     angle = tidy(body.angle - motion.omega[2] * t)
     return replace(body, position=position, angle=angle, rotation=sp.rot_axis3(-angle))
+
+
+def _relative_turns(turns, motion: FrameMotion):
+    """R_Fᵀ R as turns: the frame's turn back, by −Ω t about n, first, joined to the
+    body's first turn where that is about n too ([[z, Ω t], [y, θ]] in a frame turning
+    at Ω about z is [[z, 0], [y, θ]])."""
+    if motion.omega == sp.zeros(3, 1):
+        return turns
+    rate = sp.sqrt(tidy(motion.omega.dot(motion.omega)))
+    n = (motion.omega / rate).applyfunc(tidy)
+    (axis, angle), rest = turns[0], turns[1:]
+    if (axis - n).applyfunc(tidy) == sp.zeros(3, 1):
+        return ((axis, tidy(angle - rate * t)), *rest)
+    return ((n, -rate * t), *turns)
+
+
+def _relative_rotational_energy(body: RigidBody, motion: FrameMotion, model: Model) -> tuple[sp.Expr, sp.Expr]:
+    """(ω_Fᵀ J' ω', ½ ω_Fᵀ J' ω_F) of a body seen in F, J' its inertia in F's axes."""
+    if body.inertia == sp.zeros(3, 3) or motion.omega == sp.zeros(3, 1):
+        return sp.Integer(0), sp.Integer(0)
+    J, w = body.inertia_in_scene(), motion.omega
+    return tidy((w.T * J * body.angular_velocity(model.state))[0, 0]), tidy((w.T * J * w)[0, 0] / 2)
+
+
+def _turning_potential(body: RigidBody, motion: FrameMotion, model: Model) -> EnergyTerm:
+    """−½ ω_Fᵀ J' ω_F where it depends on the coordinates (a constant changes nothing)."""
+    _, energy = _relative_rotational_energy(body, motion, model)
+    held = energy if energy.free_symbols & set(model.q) else sp.Integer(0)
+    return EnergyTerm(f"centrifugal on {body.name}, turning", tidy(-held))
+
+
+def _coriolis(body: RigidBody, model: Model, motion: FrameMotion) -> tuple[EnergyTerm, EnergyTerm]:
+    """L's terms linear in the relative rates, m v'·(ω_F × r') + ω_Fᵀ J' ω', as the
+    model's gyroscopic term, and their part without rates as a potential (negated)."""
+    r, omega = body.position, motion.omega
+    v = model.state.d_dt(r)
+    turning, _ = _relative_rotational_energy(body, motion, model)
+    linear = tidy(body.mass * v.dot(omega.cross(r)) + turning)
+    still = tidy(linear.xreplace({x: 0 for x in model.qd}))
+    held = still if still.free_symbols & set(model.q) else sp.Integer(0)
+    return (EnergyTerm(f"{body.name}, gyroscopic", tidy(linear - still)),
+            EnergyTerm(f"gyroscopic potential on {body.name}", tidy(-held)))
 
 
 def _relative_spring(spring: SpringModel, model: Model, motion: FrameMotion) -> SpringModel:

@@ -34,7 +34,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.contacts import implied
-from rbdsolve.model.edges import edge
+from rbdsolve.model.edges import body_part, part_edge
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Contact, Problem, SurfaceKind
@@ -62,9 +62,7 @@ def plane_contacts(problem: Problem, names: Symbols, rotations: Mapping[str, sp.
 
 
 def _contact(c: Contact, body, names: Symbols, R: sp.Matrix, values) -> PlaneRolling:
-    part = body.parts[0]
-    dims = {k: names.scalar(v) for k, v in part.dimensions}
-    rim = edge(part.shape, c.edge, dims, names.axis(part.axis) if part.axis is not None else None, planar=False)
+    rim = part_edge(body_part(body, c.part), c.edge, names, planar=False)
     origin = names.vector(body.at)
     origin = origin if origin.rows == 3 else origin.col_join(sp.zeros(1, 1))
     centre = origin + R * rim.centre

@@ -9,7 +9,16 @@ A sequence of body-fixed (intrinsic) turns, first about a scene axis, then about
 axis of the turned frame, and so on (z-x-z Euler angles: [[z, ψ], [x, θ], [z, φ]]),
 composes by right multiplication, R = R₁(α₁) R₂(α₂) R₃(α₃); the columns of R are the
 turned frame's unit vectors in scene axes. Its angular velocity ω follows from
-Ṙ Rᵀ = [ω]× (e.g. Goldstein, ch. 4.8).
+Ṙ Rᵀ = [ω]× (e.g. Goldstein, ch. 4.8), or, turn by turn, as the sum of each turn's rate
+about its axis as the turns before it have placed it,
+
+    ω = Σ_k α̇_k R₁ … R_(k−1) a_k                              (scene axes),
+
+and a body's inertia in scene axes, J_scene = R J Rᵀ, is taken the same way from the
+innermost turn out, J ← R_k J R_kᵀ for k = n … 1. A last turn about an axis of symmetry
+of J (a top's spin, a wheel's roll) leaves J unchanged at its step, and appears in ω
+only through its rate α̇_n: neither holds its angle, so T = ½ ωᵀ J_scene ω holds no t
+for a body spun at a constant rate s about its axis (α_n = s t).
 """
 
 from __future__ import annotations
@@ -36,6 +45,35 @@ def sequence_rotation(turns: list[tuple[sp.Matrix, sp.Expr]]) -> sp.Matrix:
     for axis, angle in turns:
         R = R * axis_rotation(axis / sp.sqrt(axis.dot(axis)), angle)
     return R.applyfunc(tidy)
+
+
+Turns = tuple[tuple[sp.Matrix, sp.Expr], ...]  # (unit axis in the frame turned so far, angle), outermost first
+
+
+def unit_turns(turns: list[tuple[sp.Matrix, sp.Expr]]) -> Turns:
+    """Each turn's axis as a unit vector (the angle unchanged)."""
+    return tuple(((axis / sp.sqrt(axis.dot(axis))).applyfunc(tidy), angle) for axis, angle in turns)
+
+
+def turns_angular_velocity(turns: Turns, state: State) -> sp.Matrix:
+    """ω = Σ_k α̇_k R₁ … R_(k−1) a_k, in scene axes, each component tidied."""
+    omega, placed = sp.zeros(3, 1), sp.eye(3)
+    for axis, angle in turns:
+        rate = state.d_dt(angle)
+        if rate != 0:
+            omega += rate * (placed * axis)
+        placed = placed * axis_rotation(axis, angle)
+    return omega.applyfunc(tidy)
+
+
+def turns_conjugate(turns: Turns, J: sp.Matrix) -> sp.Matrix:
+    """R J Rᵀ for R = R₁ … R_n, innermost turn first, each step tidied: a turn about an
+    axis of symmetry of what it turns leaves it as it is, so its angle never shows."""
+    out = sp.Matrix(J)
+    for axis, angle in reversed(turns):
+        R = axis_rotation(axis, angle)
+        out = (R * out * R.T).applyfunc(tidy)
+    return out
 
 
 def vee(W: sp.Matrix) -> sp.Matrix:

@@ -99,6 +99,7 @@ class BodyReader:
 
     def part(self, name: str, spec: Map, what: str, extra: tuple[str, ...], simple: bool,
              translating: bool = False) -> Part:
+        _gyration(spec)
         shape = self.shape(spec, what, translating)
         dims = shape.dimensions if shape else ()
         _check_dimensions(spec, shape, what)
@@ -174,9 +175,14 @@ def _refuse_placement(spec: Map, name: str, contact: str) -> None:
         if spec.get(key) is not None:
             raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
                              f"angle); remove '{key}'", spec.get(key).loc)
-    if spec.get("parts") is not None:
-        raise InputError(f"body '{name}' rolls (contact '{contact}'): give it one shape, not parts",
-                         spec.get("parts").loc)
+
+
+def _gyration(spec: Map) -> None:
+    """A radius of gyration is said through the inertia it gives: J = m k²."""
+    for key, _ in spec.entries:
+        if key.text.replace("_", "") in ("radiusofgyration", "gyrationradius", "gyration"):
+            raise InputError(f"'{key.text}': a body given by its radius of gyration k has J = m k²; write "
+                             "'inertia: m*k**2' (its mass times k squared, about its centre of mass)", key.loc)
 
 
 def _is_zero(expr: ex.Expr | None) -> bool:

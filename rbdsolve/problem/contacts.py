@@ -27,7 +27,8 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Body, Contact, Measure, Pulley, Surface, SurfaceKind
+from rbdsolve.problem.bodies import refuse_negative
+from rbdsolve.problem.schema import Body, Contact, Measure, Part, Pulley, Surface, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
@@ -77,7 +78,8 @@ class ContactReader:
     def contact(self, name: str, node: Node, bodies: dict[str, Body]) -> Contact:
         what = f"contact '{name}'"
         spec = expect_mapping(node, what)
-        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "hangs_from", "along", "angle"), what)
+        check_keys(spec, ("body",), ("edge", "rolls_on", "string", "hangs_from", "along", "angle", "part", "radius"),
+                   what)
         if sum(spec.get(k) is not None for k in ("rolls_on", "string", "hangs_from")) != 1:
             raise InputError(f"{what} needs one of 'rolls_on' (a floor, a line, a circle or a body's edge), "
                              "'string' (a string wound on the body) or 'hangs_from' (the body hangs on a string "
@@ -85,22 +87,36 @@ class ContactReader:
         if spec.get("hangs_from") is not None:
             return self.hanging(name, spec, bodies, what)
         body = _body(spec.get("body"), bodies)
+        part = touching_part(spec, body)
         if _on_plane(spec):
-            return self.on_plane(name, spec, body, what)
+            return self.on_plane(name, spec, body, part, what)
         coordinate, measure = self.coordinate(spec, what)
         if spec.get("string") is not None:
+            _string_radius_inside(spec)
             surface, radius = self.string(spec.get("string"))
-            edge = _edge(spec, body, string=radius is not None)
-            return Contact(name, body.name, edge, surface, coordinate, measure, radius, True, spec.loc)
+            edge = _edge(spec, part, string=radius is not None)
+            return Contact(name, body.name, edge, surface, coordinate, measure, radius, True, spec.loc, part=part.name)
+        radius = self.rolling_radius(spec)
         surface = self.surface(spec.get("rolls_on"), bodies)
         if surface.body == body.name:
             raise InputError(f"{what}: body '{body.name}' cannot roll on itself", spec.get("rolls_on").loc)
-        return Contact(name, body.name, _edge(spec, body, string=False), surface, coordinate, measure, None,
-                       False, spec.loc)
+        return Contact(name, body.name, _edge(spec, part, string=radius is not None), surface, coordinate, measure,
+                       radius, False, spec.loc, part=part.name)
+
+    def rolling_radius(self, spec: Map) -> ex.Expr | None:
+        """``radius: R``: the body rolls on the circle of radius R about its centre (a body
+        given by its inertia, a spool's rim); not with an ``edge``, which has its own."""
+        radius = self.reading.optional_constant(spec.get("radius"), "the radius the body rolls at")
+        if radius is not None:
+            refuse_negative(radius, "radius")
+            if spec.get("edge") is not None:
+                raise InputError("give the edge that touches ('edge') or the radius the body rolls at "
+                                 "('radius'), not both: an edge has its own radius", spec.get("radius").loc)
+        return radius
 
     def hanging(self, name: str, spec: Map, bodies: dict[str, Body], what: str) -> Contact:
         """``hangs_from: {drum: D, direction: [dx, dy], over: P, radius, edge, down, length}``."""
-        for key in ("along", "angle", "edge"):
+        for key in ("along", "angle", "edge", "part", "radius"):
             if spec.get(key) is not None:
                 raise InputError(f"{what}: a hanging body has no '{key}': the string places it from the drum's "
                                  "motion (the drum's own contact or coordinates)", spec.get(key).loc)
@@ -108,20 +124,22 @@ class ContactReader:
         if word.text not in bodies:
             raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
         hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, direction, over}")
-        check_keys(hang, ("drum", "direction", "over"), ("radius", "edge", "down", "length"), "a hanging string")
+        check_keys(hang, ("drum", "direction", "over"), ("radius", "edge", "down", "length", "part"),
+                   "a hanging string")
         drum = _body(hang.get("drum"), bodies)
         if drum.name == word.text:
             raise InputError(f"{what}: body '{drum.name}' cannot hang from itself", hang.get("drum").loc)
         radius = self.reading.optional_constant(hang.get("radius"), "the radius the string is wound at")
-        edge = _edge(hang, drum, string=radius is not None)
+        part = touching_part(hang, drum)
+        edge = _edge(hang, part, string=radius is not None)
         down = self.reading.axis(hang.get("down")) if hang.get("down") is not None else None
         length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
         pulley = Pulley(drum.name, edge, radius, self.place(hang.get("over"), hang.loc), self.direction(hang),
-                        down, length, hang.loc)
+                        down, length, hang.loc, part=part.name)
         line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
         return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
-    def on_plane(self, name: str, spec: Map, body: Body, what: str) -> Contact:
+    def on_plane(self, name: str, spec: Map, body: Body, part: Part, what: str) -> Contact:
         """``rolls_on: {plane: {normal: z, through: P}}``: a round body rolling on a fixed
         plane in 3D, placed by its own ``at`` and ``orientation``; no coordinate (the
         condition does not integrate), the contact point C is derived in the model."""
@@ -136,13 +154,17 @@ class ContactReader:
         check_keys(node, (), ("normal", "through"), "a plane")
         normal = self.reading.axis(node.get("normal")) if node.get("normal") is not None else _unit_z(node)
         through = self.place(node.get("through"), node.loc) if node.get("through") is not None else None
-        edge = _edge(spec, body, string=False)
+        if spec.get("radius") is not None or part.shape is None:
+            raise InputError(f"{what}: a body rolls on a plane on the rim of a round shape of its own (a disk, ring, "
+                             "cylinder or sphere); a radius about a given inertia is for a contact in the plane of "
+                             "the scene", spec.get("radius").loc if spec.get("radius") else spec.loc)
+        edge = _edge(spec, part, string=False)
         if edge != "rim":
             raise InputError(f"{what}: a body rolls on a plane on a whole round edge ('rim' of a disk, ring, "
                              f"cylinder or sphere), not '{edge}'", spec.get("edge").loc if spec.get("edge") else
                              spec.loc)
         plane = Surface(SurfaceKind.PLANE, through, normal, None, False, node.loc)
-        return Contact(name, body.name, edge, plane, None, None, None, False, spec.loc)
+        return Contact(name, body.name, edge, plane, None, None, None, False, spec.loc, part=part.name)
 
     def coordinate(self, spec: Map, what: str) -> tuple[str, Measure]:
         """The one coordinate the contact is measured by: 'along: x' or 'angle: theta'."""
@@ -165,7 +187,7 @@ class ContactReader:
             return Surface(SurfaceKind.LINE, origin, _unit_x(node), None, False, node.loc)
         spec = expect_mapping(node, "a surface: floor, {line: {...}}, {circle: {...}} or {body: B, edge: E}")
         if spec.get("body") is not None:
-            return _body_surface(spec, bodies)
+            return _body_surface(spec, bodies, self.rolling_radius(spec))
         if len(spec.entries) == 1 and spec.entries[0][0].text == "sphere":
             raise InputError(NOT_PLANAR.format(what=f"rolling on a {spec.entries[0][0].text}"), spec.entries[0][0].loc)
         if len(spec.entries) != 1 or spec.entries[0][0].text not in ("line", "circle"):
@@ -259,43 +281,88 @@ def _body(node: Node, bodies: dict[str, Body]) -> Body:
     word = expect_scalar(node, "a body name")
     if word.text not in bodies:
         raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
-    body = bodies[word.text]
-    if len(body.parts) != 1 or body.parts[0].shape is None:
-        raise InputError(f"body '{body.name}' must be one shape of the library to roll (its edge gives the "
-                         "contact's geometry); a composite body or an explicit inertia cannot roll here yet", word.loc)
-    return body
+    return bodies[word.text]
 
 
-def _body_surface(spec: Map, bodies: dict[str, Body]) -> Surface:
+def touching_part(spec: Map, body: Body, solid: bool = True) -> Part:
+    """The part of ``body`` that touches: ``part: NAME``, else the body's only part, else
+    its only solid part with an edge (a half ring with a particle fixed on it). A hole
+    has no material to roll (``solid``); it may be rolled in."""
+    node = spec.get("part")
+    if node is None:
+        if len(body.parts) == 1:
+            return body.parts[0]
+        edged = [p for p in body.parts if not p.hole and p.shape is not None and p.shape.edges]
+        if len(edged) == 1:
+            return edged[0]
+        solid_parts = ", ".join(p.name for p in body.parts if not p.hole)
+        raise InputError(f"body '{body.name}' is made of parts: name the one that touches, 'part: NAME' "
+                         f"(its parts: {solid_parts})", spec.loc)
+    word = expect_scalar(node, "a part's name").text.strip()
+    if len(body.parts) == 1 and body.parts[0].name == body.name:
+        raise InputError(f"body '{body.name}' is one shape, with no parts to name: remove 'part'", node.loc)
+    parts = {p.name: p for p in body.parts}
+    if word not in parts:
+        raise InputError(f"body '{body.name}' has no part '{word}'"
+                         f"{did_you_mean(word, list(parts)) or ' (its parts: ' + ', '.join(parts) + ')'}", node.loc)
+    if solid and parts[word].hole:
+        raise InputError(f"part '{word}' of body '{body.name}' is a hole: it has no material to roll on; name a "
+                         "solid part", node.loc)
+    return parts[word]
+
+
+def _where(spec: Map, *keys: str):
+    """The location of the first of ``keys`` the mapping has, else its own."""
+    return next((spec.get(k).loc for k in keys if spec.get(k) is not None), spec.loc)
+
+
+def _string_radius_inside(spec: Map) -> None:
+    """A string's winding radius is the string's: 'string: {…, radius: r}'."""
+    if spec.get("radius") is not None:
+        raise InputError("the radius a string is wound at goes in the string, 'string: {fixed_at, direction, "
+                         "radius}'", spec.get("radius").loc)
+
+
+def _body_surface(spec: Map, bodies: dict[str, Body], radius: ex.Expr | None) -> Surface:
     """Another body's edge: ``{body: B, edge: E, side: outside}`` (a rim: outside by
-    default; a flat edge: the body on its outer side)."""
-    check_keys(spec, ("body",), ("edge", "side"), "a body's edge to roll on")
+    default; a flat edge: the body on its outer side), of its ``part``; or the circle of
+    ``radius`` about the part's centre (a body given by its inertia)."""
+    check_keys(spec, ("body",), ("edge", "side", "part", "radius"), "a body's edge to roll on")
     body = _body(spec.get("body"), bodies)
-    edge = _edge(spec, body, string=False)
+    part = touching_part(spec, body, solid=False)
+    edge = _edge(spec, part, string=radius is not None)
     side = spec.get("side")
     word = "outside" if side is None else expect_scalar(side, "inside or outside").text.strip()
     if word not in SIDES["circle"]:
         raise InputError(f"expected side inside or outside, found {describe(side)}"
                          f"{did_you_mean(word, list(SIDES['circle']))}", side.loc)
-    return Surface(SurfaceKind.BODY, None, None, None, word == "inside", spec.loc, body.name, edge)
+    return Surface(SurfaceKind.BODY, None, None, radius, word == "inside", spec.loc, body.name, edge, part=part.name)
 
 
-def _edge(spec: Map, body: Body, string: bool) -> str:
-    """The edge named, or the shape's default; a string may wind at its own radius."""
-    shape = body.parts[0].shape
-    edges = shape.edges
+def _edge(spec: Map, part: Part, string: bool) -> str:
+    """The edge named, or the part's default; a string (or a rolling ``radius``) may wind
+    at its own radius about the part's centre: the edge ``axle``. A part given by its
+    inertia has no edge of its own, only such a radius."""
+    shape = part.shape
+    edges = shape.edges if shape is not None else ()
     node = spec.get("edge")
     if node is None:
         if string:
             return "axle"  # the string's own radius, about the shape's centre
+        if shape is None:
+            raise InputError(f"'{part.name}' is given by its inertia, with no edge of its own: give the radius it "
+                             "touches at, 'radius: R' (about its centre of mass)", spec.loc)
         if not edges:
             raise InputError(f"a {shape.value} has no edge to roll on (shapes with edges: disk, ring, cylinder, "
-                             "sphere, half_disk, hemisphere, plate, rod, …)", spec.get("body").loc)
+                             "sphere, half_disk, hemisphere, plate, rod, …)", _where(spec, "body", "drum"))
         if edges[0] not in ("rim", "curved"):
             raise InputError(f"name the edge of the {shape.value} that touches ('edge: {edges[0]}'; its edges: "
                              f"{', '.join(edges)})", spec.loc)
         return edges[0]
     word = expect_scalar(node, "an edge name")
+    if shape is None:
+        raise InputError(f"'{part.name}' is given by its inertia, with no edges: give the radius it touches at, "
+                         "'radius: R', instead of 'edge'", word.loc)
     if word.text not in edges:
         raise InputError(f"a {shape.value} has no edge '{word.text}' (its edges: {', '.join(edges) or 'none'})"
                          f"{did_you_mean(word.text, list(edges))}", word.loc)

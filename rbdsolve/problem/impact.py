@@ -9,6 +9,8 @@
           B: {normal: x, restitution: e, particle: {mass: m, velocity: [v0, 0]}}
           C: {particle: {mass: m, velocity: [v0, 0], after: [0, 0]}}   # e follows
           D: {particle: {mass: m, velocity: [v0, -v1]}, sticks: true}  # it embeds at D
+          E: {sticks: true}          # the body's point E sticks to a fixed point (a ledge): a pivot after
+          F: {sticks: true, to: H}   # the body's point F sticks to point H of another body
         points: [A, B]              # velocities after (default: the struck points)
         centre_of_percussion: d     # the value of d for which the supports feel no impulse
 """
@@ -70,10 +72,12 @@ class ImpactReader:
 
     def collision(self, point: str, spec: Map) -> Collision:
         what = f"collision at '{point}'"
-        check_keys(spec, (), ("normal", "restitution", "particle", "sticks"), what)
+        check_keys(spec, (), ("normal", "restitution", "particle", "sticks", "to"), what)
         particle = self.particle(spec.get("particle")) if spec.get("particle") is not None else None
         if spec.get("sticks") is not None and read_bool(spec.get("sticks"), "true or false"):
             return self.sticking(point, spec, particle)
+        if spec.get("to") is not None:
+            raise InputError(f"'to' names what the point '{point}' sticks to: add 'sticks: true'", spec.get("to").loc)
         restitution = spec.get("restitution")
         known_after = particle is not None and particle.after is not None
         if restitution is not None and known_after:
@@ -90,19 +94,29 @@ class ImpactReader:
         return Collision(point, normal, e, particle, spec.loc)
 
     def sticking(self, point: str, spec: Map, particle: Particle | None) -> Collision:
-        """A particle that embeds at the point: no normal, no restitution, no velocity after
-        (it moves with the point); the impulse is unknown in every component."""
-        if particle is None:
-            raise InputError(f"'sticks' is for a particle that embeds at '{point}': add 'particle: {{mass, "
-                             "velocity}'", spec.get("sticks").loc)
-        for key, why in (("restitution", "the particle moves with the point after (e = 0 in every direction)"),
+        """A particle that embeds at the point, or (no particle) the body's point that
+        sticks to a fixed point, or to point ``to`` of another body: no normal, no
+        restitution, no velocity after (it moves with what it sticks to); the impulse is
+        unknown in every component the point can move in."""
+        what = "a sticking particle" if particle is not None else "a sticking point"
+        for key, why in (("restitution", "it moves with what it sticks to after (e = 0 in every direction)"),
                          ("normal", "the impulse has every component, not only a normal one")):
             if spec.get(key) is not None:
-                raise InputError(f"a sticking particle takes no '{key}': {why}", spec.get(key).loc)
-        if particle.after is not None:
+                raise InputError(f"{what} takes no '{key}': {why}", spec.get(key).loc)
+        if particle is not None and particle.after is not None:
             raise InputError("a sticking particle takes no 'after': it moves with the point after the impact",
                              particle.after.loc)
-        return Collision(point, None, None, particle, spec.loc, sticks=True)
+        to = spec.get("to")
+        if to is None:
+            return Collision(point, None, None, particle, spec.loc, sticks=True)
+        if particle is not None:
+            raise InputError(f"a particle sticks at '{point}', where it hits; 'to' is for a point of a body that "
+                             "sticks to a point of another body", to.loc)
+        partner = self.point(to)
+        if partner == point:
+            raise InputError(f"point '{point}' cannot stick to itself: 'to' names the point of the other body it "
+                             "sticks to", to.loc)
+        return Collision(point, None, None, None, spec.loc, sticks=True, to=partner)
 
     def normal(self, node: Node) -> ex.Expr:
         value = self.reading.axis(node) if _is_axis_name(node) else self.constant_vector(node, "a normal (a vector)")

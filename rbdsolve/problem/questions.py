@@ -7,6 +7,8 @@ knows about the scene: coordinates for ``modes``, bodies and points for ``inerti
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
@@ -37,11 +39,11 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 OPTIONS = {
     QuestionKind.EOM: ("frames", "at", "from_rest"),
-    QuestionKind.EQUILIBRIA: ("frame",),
-    QuestionKind.MODES: ("about", "frame", "check_amplitudes"),
+    QuestionKind.EQUILIBRIA: ("frame", "for"),
+    QuestionKind.MODES: ("about", "frame", "check_amplitudes", "for"),
     QuestionKind.INERTIA: ("body", "about", "axes", "at", "axis"),
     QuestionKind.STEADY_SPIN: ("body", "precession"),
-    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for"),
+    QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for", "for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
     QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
@@ -98,7 +100,7 @@ class QuestionReader:
             frames = self.frame_list(get("frames")) if get("frames") is not None else ()
             return Question(kind, EomOptions(frames, instant(self.reading, opts)), key.loc)
         if kind is QuestionKind.EQUILIBRIA:
-            return Question(kind, EquilibriaOptions(self.frame(get("frame"))), key.loc)
+            return Question(kind, EquilibriaOptions(self.frame(get("frame")), self.parameter(get("for"))), key.loc)
         if kind is QuestionKind.MODES:
             about = get("about")
             each = isinstance(about, Scalar) and about.text.strip() == "each"
@@ -106,10 +108,15 @@ class QuestionReader:
                 raise InputError("'check_amplitudes' takes one equilibrium; with 'about: each' ask it in a "
                                  "question of its own", get("check_amplitudes").loc)
             number = self.equilibrium_number(about) if about and not each else None
-            point = self.equilibrium(about) if about and number is None and not each else None
+            point, steady = self.steady_state(about) if about and number is None and not each else (None, ())
+            if steady and get("check_amplitudes") is not None:
+                raise InputError("'check_amplitudes' simulates the scene's own equations about an equilibrium; it is "
+                                 "not available about a steady spin (a rate dot(q) in 'about')",
+                                 get("check_amplitudes").loc)
             return Question(kind, ModesOptions(point, self.frame(get("frame")),
                                                amplitudes(get("check_amplitudes"), get("frame")), equilibrium=number,
-                                               each=each, loc=about.loc if about else None), key.loc)
+                                               each=each, loc=about.loc if about else None, steady=steady,
+                                               for_parameter=self.parameter(get("for"))), key.loc)
         if kind is QuestionKind.INERTIA:
             return Question(kind, self.inertia(opts, key), key.loc)
         if kind is QuestionKind.STEADY_MOTION:
@@ -138,6 +145,19 @@ class QuestionReader:
             raise InputError(f"no frame '{name}'{did_you_mean(name, list(self.frames)) or known}", node.loc)
         return name
 
+    def parameter(self, node: Node | None) -> str | None:
+        """'for: k': the parameter whose critical values the conditions are written in."""
+        if node is None:
+            return None
+        name = expect_scalar(node, "a parameter name").text.strip()
+        declared = [n for n, what in self.reading.taken.items() if what == "parameter"]
+        if name not in declared:
+            what = self.reading.taken.get(name)
+            hint = (f" ('{name}' is a {what}; conditions are written in a parameter)" if what
+                    else did_you_mean(name, declared) or f" (parameters: {', '.join(declared) or 'none'})")
+            raise InputError(f"no parameter '{name}'{hint}", node.loc)
+        return name
+
     def frame_list(self, node: Node) -> tuple[str, ...]:
         if not isinstance(node, Seq):
             raise InputError(f"expected a list of frame names, found {describe(node)}", node.loc)
@@ -164,6 +184,24 @@ class QuestionReader:
 
     def equilibrium(self, node: Node) -> tuple[tuple[str, ex.Expr], ...]:
         return self.reading.coordinate_values(node, "an equilibrium", complete=True)
+
+    def steady_state(self, node: Node) -> tuple[tuple[tuple[str, ex.Expr], ...], tuple[tuple[str, ex.Expr], ...]]:
+        """'about': a value for every coordinate, except a cyclic one (a spin angle) that
+        may be given by its steady rate instead, dot(phi): s: (values, rates). Without a
+        rate, read as an equilibrium (every coordinate, its messages unchanged)."""
+        if not isinstance(node, Map) or not any(k.text.strip().startswith("dot") for k, _ in node.entries):
+            return self.equilibrium(node), ()
+        given = self.reading.state(node, "an equilibrium or a steady spin", (0, 1))
+        values = tuple((v.coordinate, v.value) for v in given if v.order == 0)
+        rates = tuple((v.coordinate, v.value) for v in given if v.order == 1)
+        held = {name for name, _ in (*values, *rates)}
+        missing = [name for name in self.reading.coordinates if name not in held]
+        if missing:
+            raise InputError(f"give a value for every coordinate; missing {', '.join(missing)} (a cyclic "
+                             "coordinate, such as a top's spin angle, may be given by its steady rate instead, "
+                             f"dot({missing[0]}): RATE)", node.loc)
+        kept = {name for name, _ in rates}
+        return tuple((n, e) for n, e in values if n not in kept), rates
 
     def body(self, opts: Map | None, key: Scalar, kind: QuestionKind) -> str:
         """The body a question is about: 'body: NAME', or the scene's only body."""
@@ -205,7 +243,8 @@ class QuestionReader:
             raise InputError(f"'steady_motion' needs the position of body '{body}' ('at'); it is given by its "
                              "velocity at one instant", key.loc)
         where = get("reactions").loc if get("reactions") is not None else None
-        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where)
+        return SteadyMotionOptions(body, triad, self.point(get("about")), contacts, reactions, targets, where,
+                                   self.parameter(get("for")))
 
     def refuse_plane_rolling(self, kind: QuestionKind, key: Scalar) -> None:
         """eom, equilibria, modes and reactions need independent coordinates: a contact
@@ -255,7 +294,7 @@ class QuestionReader:
         if at is not None and not self.coordinates:
             raise InputError("'at' gives values for the coordinates, and this scene has none: its inertia "
                              "does not depend on a configuration", at.loc)
-        return InertiaOptions(body, self.point(about) if about is not None else None,
+        return InertiaOptions(body, self.moment_point(about) if about is not None else None,
                               self.axes(axes) if axes is not None else None,
                               self.reading.coordinate_values(at, "'at'", complete=False) if at is not None else (),
                               self.reading.axis(axis) if axis is not None else None)
@@ -276,6 +315,13 @@ class QuestionReader:
     def point(self, node: Node) -> ex.Expr:
         """A point to take moments about: a point name or a constant position vector."""
         return self.reading.expr(node, ex.Kind.VECTOR, "a point name or position vector")
+
+    def moment_point(self, node: Node) -> ex.Expr:
+        """The point of an inertia question: as ``point``, or a contact's point C (the
+        moment of inertia of a rocking body about its contact point)."""
+        scope = self.reading.scope
+        scope = replace(scope, vectors=scope.vectors | {c.name for c in self.contacts})
+        return self.reading.expr(node, ex.Kind.VECTOR, "a point name, a contact's name or a position vector", scope)
 
     def axes(self, node: Node) -> tuple[ex.Expr, ex.Expr, ex.Expr]:
         if not isinstance(node, Seq) or len(node.items) != 3:

@@ -256,6 +256,7 @@ class Surface:
     loc: Location
     body: str | None = None  # BODY: the body whose edge it is
     edge: str | None = None  # BODY: which edge
+    part: str | None = None  # BODY: the part of a composite body whose edge it is (None: its only part)
 
 
 class Measure(Enum):
@@ -280,6 +281,7 @@ class Pulley:
     down: Expr | None  # None: straight down, [0, −1]
     length: Expr | None  # None: the straight part's length at the reference
     loc: Location
+    part: str | None = None  # the drum's part the string is wound on (None: its only part)
 
 
 @dataclass(frozen=True)
@@ -287,7 +289,9 @@ class Contact:
     """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
     coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
     and rolling fixes the rest (model/contacts.py). A string wound on a drum is a
-    line the drum rolls on (``string``), at the winding ``radius``."""
+    line the drum rolls on (``string``), at the winding ``radius``. A composite body
+    touches with one of its parts (``part``); a body given by its inertia rolls on the
+    circle of ``radius`` about its centre of mass."""
 
     name: str  # the contact point C
     body: str
@@ -295,10 +299,11 @@ class Contact:
     surface: Surface
     coordinate: str | None  # None: a body hanging from a pulley (its place follows from the drum's)
     measure: Measure | None
-    radius: Expr | None  # a string's winding radius; None: the edge's own
+    radius: Expr | None  # a string's winding radius, or the radius the body rolls at; None: the edge's own
     string: bool
     loc: Location
     pulley: Pulley | None = None  # the body hangs on a string from a drum, over a pulley
+    part: str | None = None  # the part of a composite body that touches (None: its only part)
 
 
 @dataclass(frozen=True)
@@ -402,6 +407,7 @@ class EquilibriaOptions:
     scene's axes."""
 
     frame: str | None  # relative equilibria in a moving frame; None: the scene's axes
+    for_parameter: str | None = None  # 'for: k': conditions solved for k first (docs/format.md)
 
 
 @dataclass(frozen=True)
@@ -415,6 +421,8 @@ class ModesOptions:
     equilibrium: int | None = None  # 'about: {equilibrium: N}', as 'equilibria' numbers them; neither: the stable one
     each: bool = False  # 'about: each': the modes at every equilibrium
     loc: Location | None = None  # where 'about' is
+    steady: tuple[tuple[str, Expr], ...] = ()  # 'about: {dot(phi): s}': cyclic coordinates' steady rates
+    for_parameter: str | None = None  # 'for: k': conditions solved for k first (docs/format.md)
 
 
 @dataclass(frozen=True)
@@ -472,7 +480,8 @@ class Collision:
     restitution: Expr | None
     particle: Particle | None
     loc: Location
-    sticks: bool = False  # the particle embeds: it moves with the point after, the impulse has every component
+    sticks: bool = False  # the particle embeds (or, without one, the point sticks): it moves with the point after
+    to: str | None = None  # a sticking point of a body sticks to this point of another body (None: a fixed point)
 
 
 @dataclass(frozen=True)
@@ -510,6 +519,7 @@ class SteadyMotionOptions:
     reactions: tuple[Reaction, ...]  # contact forces stated with unknowns; then both balances count
     solve_for: tuple[Expr, ...]  # constants to solve the relations for (omega0**2; or N, x_N)
     reactions_loc: Location | None = None  # where 'reactions' is, for errors about them
+    for_parameter: str | None = None  # 'for: s': conditions solved for s first (docs/format.md)
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,7 @@ h2 { margin-top: 2.5em; border-bottom: 1px solid #bbb; }
 PARTS_STYLE = """
 .source { color: #666; font-style: italic; }
 .statement { background: #f6f6f0; border-left: 4px solid #c8c2a0; padding: .6em 1em; }
-.math { margin: .4em 0 .4em 2em; overflow-x: auto; }
+.math { margin: .4em 0 .4em 2em; padding: .15em 0; overflow-x: auto; overflow-y: hidden; }
 math { font-family: 'STIX Two Math', 'Cambria Math', 'Latin Modern Math', math; font-size: 1.1em; }
 .result { border: 1.5px solid #2a6f2a; padding: .2em .6em; display: inline-block;
           margin-left: 2em; }

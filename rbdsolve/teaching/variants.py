@@ -26,6 +26,7 @@ one note naming them.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from typing import Callable
 
@@ -119,6 +120,7 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     warnings += _reorder(found, cells)
     warnings += _not_real(found, cells, report)
     warnings += _unvalued(problem)
+    warnings += _repeats(problem.ranges, count)
     table = _table(problem, report, seed, draws, found, cells, warnings, left_out)
     found_kinds = kinds(report.solutions, dict(model.values))
     table = replace(table, kind_columns=tuple(label((labels[k.question], *k.path)) for k in found_kinds),
@@ -131,12 +133,58 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     return replace(table, verified=tuple(k + 1 for k in checked))
 
 
+WHOLE_GRID = 100_000  # a grid of at most this many sets of values is shuffled whole
+
+
 def draw(ranges: tuple[ValueRange, ...], count: int, seed: int) -> list[tuple[Value, ...]]:
-    """Each variant's values, drawn uniformly from each range's grid (or choices) in file
-    order: the same seed gives the same variants."""
+    """Each variant's values from the grid of all sets of values (the product of the
+    ranges' grids or choices, in file order), each set at most once while the grid has
+    sets left, then round again (``repeated`` counts those). Variant i depends on the
+    seed and i only, never on ``count``: a teacher who adds students keeps the first ones.
+
+    A small grid is shuffled whole (numpy's ``default_rng(seed).permutation``) and
+    variant i is its i-th set; a large one is walked by draws of one set per variant,
+    in variant order, a set already given drawn again."""
+    sizes = [r.size for r in ranges]
+    total = math.prod(sizes)
     rng = np.random.default_rng(seed)
-    picks = [rng.integers(0, r.size, size=count) for r in ranges]
-    return [tuple(r.value(int(p[k])) for r, p in zip(ranges, picks)) for k in range(count)]
+    if total <= WHOLE_GRID:
+        order = rng.permutation(total)
+        indices = [int(order[k % total]) for k in range(count)]
+    else:
+        indices, given = [], set()
+        while len(indices) < count:
+            index = int(sum(int(rng.integers(0, n)) * math.prod(sizes[j + 1:]) for j, n in enumerate(sizes)))
+            if index not in given:
+                given.add(index)
+                indices.append(index)
+            if len(given) == total:  # every set given (more students than sets): a new round
+                given.clear()
+    return [_values(ranges, sizes, index) for index in indices]
+
+
+def repeated(ranges: tuple[ValueRange, ...], count: int) -> int:
+    """How many variants must share their values with an earlier one: the grid has fewer
+    sets than students."""
+    return max(0, count - math.prod(r.size for r in ranges))
+
+
+def _values(ranges: tuple[ValueRange, ...], sizes: list[int], index: int) -> tuple[Value, ...]:
+    """The set of values at ``index`` of the grid (mixed radix, the last range fastest)."""
+    picks = []
+    for n in reversed(sizes):
+        index, pick = divmod(index, n)
+        picks.append(pick)
+    return tuple(r.value(k) for r, k in zip(ranges, reversed(picks)))
+
+
+def _repeats(ranges: tuple[ValueRange, ...], count: int) -> list[str]:
+    extra = repeated(ranges, count)
+    if not extra:
+        return []
+    sets = count - extra
+    return [f"the ranges give {sets} different set{'s' if sets != 1 else ''} of values for {count} students: "
+            f"{extra} share{'s' if extra == 1 else ''} the values of an earlier student (widen a range or add choices)"]
 
 
 def question_labels(kinds: list[str]) -> list[str]:

@@ -102,6 +102,15 @@ def test_a_velocity_must_be_linear_in_the_rates() -> None:
 STUCK = "{particle: {mass: m, velocity: [-v0, 0]}, sticks: true}"
 
 
+def test_a_sticking_point_is_read() -> None:
+    """Without a particle, the body's point sticks: to a fixed point, or to another point."""
+    for collision, to in (("{sticks: true}", None), ("{sticks: true, to: G}", "G")):
+        problem = load_text(GOOD.replace("{normal: x, restitution: 1/2, particle: {mass: m, velocity: [-v0, 0]}}",
+                                         collision), "p.yaml")
+        (c,) = problem.questions[0].options.collisions
+        assert c.sticks and c.particle is None and c.normal is None and c.to == to
+
+
 def test_a_sticking_particle_is_read() -> None:
     problem = load_text(GOOD.replace("{normal: x, restitution: 1/2, particle: {mass: m, velocity: [-v0, 0]}}", STUCK),
                         "p.yaml")
@@ -110,7 +119,14 @@ def test_a_sticking_particle_is_read() -> None:
 
 
 @pytest.mark.parametrize("collision, words", [
-    ("{sticks: true, normal: x}", "p.yaml:13:21: questions[0].impact.collisions.B.sticks: 'sticks' is for a particle"),
+    ("{sticks: true, normal: x}", "p.yaml:13:35: questions[0].impact.collisions.B.normal: a sticking point takes "
+                                  "no 'normal'"),
+    ("{sticks: true, restitution: 0}", "collisions.B.restitution: a sticking point takes no 'restitution'"),
+    ("{sticks: true, to: B}", "collisions.B.to: point 'B' cannot stick to itself"),
+    ("{sticks: true, to: Q}", "collisions.B.to: unknown point 'Q'"),
+    ("{to: G}", "collisions.B.to: 'to' names what the point 'B' sticks to: add 'sticks: true'"),
+    ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: true, to: G}",
+     "collisions.B.to: a particle sticks at 'B', where it hits; 'to' is for a point of a body"),
     ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: true, restitution: 0}",
      "collisions.B.restitution: a sticking particle takes no 'restitution'"),
     ("{particle: {mass: m, velocity: [-v0, 0]}, sticks: true, normal: x}",

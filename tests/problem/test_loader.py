@@ -93,6 +93,12 @@ CASES = [
     ("  - modes: {about: {theta: 0}}", "  - eom: {about: {theta: 0}}", 10, 11, "questions[0].eom.about", "unknown key 'about' in question 'eom' (expected one of: frames, at, from_rest)"),
     ("questions:\n  - modes: {about: {theta: 0}}", "questions: []", 9, 12, "questions", "found an empty list"),
     ("shape: particle, ", "shape: rod, length: l, radius: l, ", 8, 32, "bodies.bob.radius", "a rod takes length, not 'radius'"),
+    # 'for:' names the parameter the conditions are written in (issue 38)
+    ("{about: {theta: 0}}", "{about: {theta: 0}, for: L}", 10, 37, "questions[0].modes.for", "no parameter 'L' (did you mean 'l'?)"),
+    ("{about: {theta: 0}}", "{about: {theta: 0}, for: theta}", 10, 37, "questions[0].modes.for", "'theta' is a coordinate; conditions are written in a parameter"),
+    ("{about: {theta: 0}}", "{about: {theta: 0}, for: [l]}", 10, 37, "questions[0].modes.for", "expected a parameter name, found a list"),
+    ("  - modes: {about: {theta: 0}}", "  - equilibria: {for: q}", 10, 23, "questions[0].equilibria.for", "no parameter 'q' (parameters: m, l, g)"),
+    ("  - modes: {about: {theta: 0}}", "  - eom: {for: l}", 10, 11, "questions[0].eom.for", "unknown key 'for' in question 'eom'"),
 ]
 
 

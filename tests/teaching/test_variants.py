@@ -217,3 +217,37 @@ def test_parameters_without_value_or_range_are_named() -> None:
                                "pendulum.yaml"), 3, 0, verify=1)
     assert any(w.startswith("l, g have neither a value nor a range") for w in table.warnings)
     assert not any("eigenvalues" in c for c in table.columns)  # λ = 3g/(2l) holds l and g: no number
+
+
+def test_a_students_values_do_not_move_when_the_count_changes() -> None:
+    """Issue 41: with one seed, student i gets the same values for --count 4 and 30 (a
+    teacher adding students keeps the first ones), on a small grid (shuffled whole) and
+    a large one (drawn set by set)."""
+    from rbdsolve.teaching.variants import WHOLE_GRID, draw
+
+    small = _ranges({"r": (1, 9, 1), "m": (1, 9, 1)})
+    large = _ranges({"a": (1, 1000, 1), "b": (1, 1000, 1)})
+    assert math.prod(r.size for r in large) > WHOLE_GRID >= math.prod(r.size for r in small)
+    for ranges in (small, large):
+        four, thirty = draw(ranges, 4, seed=1), draw(ranges, 30, seed=1)
+        assert thirty[:4] == four
+        assert draw(ranges, 30, seed=2) != thirty  # the seed does matter
+
+
+def test_no_two_students_share_values_while_the_grid_allows_and_a_warning_when_it_cannot() -> None:
+    from rbdsolve.teaching.variants import draw, repeated
+
+    ranges = _ranges({"r": (1, 9, 1), "m": (1, 9, 1)})  # 81 sets of values
+    thirty = draw(ranges, 30, seed=1)
+    assert len(set(thirty)) == 30 and repeated(ranges, 30) == 0
+    every = draw(ranges, 81, seed=1)
+    assert len(set(every)) == 81  # the whole grid, each set once
+    assert repeated(ranges, 100) == 19 and len(set(draw(ranges, 100, seed=1))) == 81
+
+
+def _ranges(grid: dict[str, tuple[int, int, int]]):
+    """Ranged parameters as a file declares them: {name: (low, high, step)}."""
+    lines = "\n".join(f"  {n}: {{range: [{lo}, {hi}], step: {st}}}" for n, (lo, hi, st) in grid.items())
+    text = (f"parameters: [{', '.join(grid)}]\nvalues:\n{lines}\n"
+            f"bodies: {{ball: {{shape: particle, mass: {next(iter(grid))}, at: [0, 0]}}}}\nquestions: [inertia]\n")
+    return load_text(text, "ranges.yaml").ranges

@@ -16,6 +16,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.render.drawing.sketch import Sketch, ones_note, require_planar, sketch, unvalued
 from rbdsolve.problem.schema import Question
@@ -66,6 +67,11 @@ def mode_shapes(model: Model, question: Question) -> ModeShapes:
     require_planar(model)
     filled = model.with_values({name: Fraction(1) for name in unvalued(model)})
     seen = _in_frame(filled, question)
+    from rbdsolve.solvers.modes import gyroscopic
+
+    if gyroscopic.applies(question, seen):
+        raise UnsolvedError("the modes cannot be drawn: the scene has gyroscopic terms (a turning frame's Coriolis "
+                          "terms, a spin), so its small motions are whirls, not normal modes with one shape each")
     about, notes = equilibrium_for_modes(question, seen)
     M, K, _ = linearized(seen, about)
     lam, vectors, bounds = generalized_eigh(K, M)

@@ -28,13 +28,14 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
 
 
-def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, tuple[Critical, ...]]:
+def with_cases(found: Equilibrium, model: Model, values,
+               first: sp.Symbol | None = None) -> tuple[Equilibrium, tuple[Critical, ...]]:
     """The equilibrium with ``exists_when`` and ``stability_cases`` where they depend on
     the parameters (``values``: its coordinates, real only where ``real_where`` holds),
-    and the critical values used. Found from the symbols, whatever values are given:
-    with values the stability itself is decided by them, and the cases say where that
-    holds."""
-    existence = exists_when(values, model)
+    and the critical values used, in ``first`` where it can (a question's ``for:``).
+    Found from the symbols, whatever values are given: with values the stability itself
+    is decided by them, and the cases say where that holds."""
+    existence = exists_when(values, model, first=first)
     if existence is None:
         return found, ()
     found = replace(found, exists_when=existence.condition)
@@ -42,7 +43,7 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
     inertia = matrix_inertia(found.hessian, model.assumed)
     if not isinstance(inertia, Undecided):
         return found, criticals
-    pieces = _stability_pieces(found.hessian, existence.condition, model)
+    pieces = _stability_pieces(found.hessian, existence.condition, model, first)
     if pieces is None:
         return found, criticals
     cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
@@ -63,11 +64,12 @@ def with_cases(found: Equilibrium, model: Model, values) -> tuple[Equilibrium, t
                     reason=f"{what} as {p} passes {at}"), (*criticals, *changed))
 
 
-def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model) -> list[tuple[Piece, Stability]] | None:
+def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model,
+                      first: sp.Symbol | None) -> list[tuple[Piece, Stability]] | None:
     """The stability on each piece of the range where det K keeps its sign, those where
     the equilibrium does not exist left out, neighbours of one stability joined; None
     where det K cannot be split, or a piece lies partly where it exists."""
-    found = partition(_boundary(H), model)
+    found = partition(_boundary(H), model, first)
     kept = existing(found.pieces, exists, model) if found else None
     if kept is None:
         return None

@@ -30,18 +30,19 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import hessian, memoized, potential_energy
+from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
-from rbdsolve.solvers.shared.conditions import critical_values, real_where, what_decides
+from rbdsolve.solvers.shared.conditions import asked, critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
-from rbdsolve.solvers.shared.frames import require_static
+from rbdsolve.solvers.shared.frames import require_static, spin_warnings
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia, sign_of, symbolic_sign
+from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of, symbolic_sign
 from rbdsolve.solvers.shared.values import sample
 
 
@@ -260,10 +261,10 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
 
 def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
-    H = sp.ImmutableMatrix(hessian(V, model.q).xreplace(at).applyfunc(tidy))
+    H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
-    inertia = matrix_inertia(H, model.decided_by)
+    inertia = decided_inertia(H, model)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            f"the sign of {to_unicode(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
@@ -277,6 +278,17 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            "the Hessian of V is singular: higher-order terms decide")
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")
+
+
+def decided_inertia(H: sp.Matrix, model: Model) -> Inertia | Undecided:
+    """H's inertia decided by the values and the assumptions' substitutions, else by the
+    assumptions alone: a value given for R drops the substitution R = r + δ (R is a
+    number there), which still decides that g m (R − r) > 0 under R > r."""
+    found = matrix_inertia(H, model.decided_by)
+    if isinstance(found, Undecided) and model.assumed:
+        alone = matrix_inertia(H, model.assumed)
+        return found if isinstance(alone, Undecided) else alone
+    return found
 
 
 def _coinciding(solutions: list[dict], model: Model) -> list[str]:
@@ -365,7 +377,7 @@ def _classify_singular(model: Model, at: dict) -> Equilibrium:
         return found
     B = sp.Matrix.hstack(*sp.Matrix.hstack(*kernel).T.nullspace())
     reduced = (B.T * found.hessian * B).applyfunc(tidy)
-    inertia = matrix_inertia(sp.ImmutableMatrix(reduced), model.decided_by)
+    inertia = decided_inertia(sp.ImmutableMatrix(reduced), model)
     how = "at a singular point of the coordinates, the Hessian across the directions that move the scene"
     if isinstance(inertia, Undecided):
         return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} has a sign that depends on the "
@@ -389,10 +401,11 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
         raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
-    classified = [with_cases(classify_listed(model, x), model, x.at.values()) for x in listed.equilibria]
+    first = asked(model, question)
+    classified = [with_cases(classify_listed(model, x), model, x.at.values(), first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
-    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model)]
+    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model)]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)

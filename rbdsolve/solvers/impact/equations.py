@@ -54,6 +54,13 @@ class Blow:
     normal: sp.Matrix | None  # the normal as given, or the impulse's direction (collisions)
     collision: Collision | None
     components: tuple[sp.Symbol, ...] = ()  # a sticking particle's unknown impulse (P_x, P_y, P_z)
+    partner: str | None = None  # a sticking point's partner: the other body's point (it feels −P)
+    directions: tuple[sp.Matrix, ...] = ()  # a sticking point's: the directions its impulse has components in
+
+    @property
+    def sticking_point(self) -> bool:
+        """A body's point that sticks (to a fixed point, or to its partner)."""
+        return self.collision is not None and self.collision.sticks and self.collision.particle is None
 
 
 @dataclass(frozen=True)
@@ -76,6 +83,13 @@ class Instant:
     def body_velocity(self, body: RigidBody) -> sp.Matrix:
         return body.velocity(self.model.state).xreplace(self.at)
 
+    def struck_velocity(self, blow: "Blow") -> sp.Matrix:
+        """The velocity the blow's impulse works on: its point's, or, for a point that
+        sticks to another body's point, the one relative to that point (P on one, −P on
+        the other)."""
+        v = self.velocity(blow.point)
+        return v - self.velocity(blow.partner) if blow.partner is not None else v
+
 
 def instant(model: Model, opts: ImpactOptions) -> Instant:
     """Substitute the configuration into every velocity; what is left must be known."""
@@ -97,7 +111,7 @@ def require_known(expr: sp.Expr, model: Model, opts: ImpactOptions) -> None:
                             "given time is not supported yet")
 
 
-def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
+def blows(model: Model, opts: ImpactOptions, now: Instant) -> list[Blow]:
     """Known impulses, impulses of particles with a given velocity after, and unknown
     collision impulses λ n (n as given)."""
     names = model.symbols
@@ -106,7 +120,9 @@ def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
         normal = _nonzero(names.vector(c.normal), c) if c.normal is not None else None
         if c.particle is not None:
             _positive(names.scalar(c.particle.mass), c.particle.mass, model)
-        if c.sticks:  # the particle embeds: an unknown impulse, every component
+        if c.sticks and c.particle is None:  # a body's point sticks: a pivot just after
+            out.append(_sticking_point(c, model, opts, now))
+        elif c.sticks:  # the particle embeds: an unknown impulse, every component
             components = tuple(sp.Dummy(f"P{axis}_{c.point}") for axis in "xyz")
             out.append(Blow(c.point, sp.Matrix(components), None, None, c, components))
         elif c.restitution is None:  # a particle with a known velocity after: a known impulse
@@ -119,6 +135,46 @@ def blows(model: Model, opts: ImpactOptions) -> list[Blow]:
             size = sp.Dummy(f"lamda_{c.point}")
             out.append(Blow(c.point, size * normal, size, normal, c))
     return out + [_rolling(c) for c in model.plane_contacts]
+
+
+def _sticking_point(c: Collision, model: Model, opts: ImpactOptions, now: Instant) -> Blow:
+    """A body's point P that sticks to a fixed point (a ledge), or to point Q of another
+    body, becomes a pivot at the instant: it moves with what it sticks to just after. The
+    impulse there, P on P's body (and −P on Q's), is unknown in every direction P can move
+    relative to what it sticks to — the span of the partial velocities ∂(v_P − v_Q)/∂q̇;
+    along the others the supports the coordinates already hold take it."""
+    blow = Blow(c.point, sp.zeros(3, 1), None, None, c, partner=c.to)
+    velocity = now.struck_velocity(blow)
+    require_known(velocity, model, opts)
+    directions = _directions(velocity, model.qd)
+    if not directions:
+        raise UnsolvedError(f"the point {c.point} cannot move{' relative to ' + c.to if c.to else ''} at the instant "
+                            "(its partial velocities are all zero): it is held already, so sticking changes nothing; "
+                            "a sticking point is a point of a moving body (the end of a falling rod)")
+    named = all(sum(abs(x) for x in w) == 1 for w in directions)  # the scene's axes: P_x, P_y
+    components = tuple(sp.Dummy(f"P{_axis_name(w) if named else k + 1}_{c.point}") for k, w in enumerate(directions))
+    impulse = sum((x * w for x, w in zip(components, directions)), sp.zeros(3, 1))
+    return Blow(c.point, impulse, None, None, c, components, c.to, directions)
+
+
+def _directions(velocity: sp.Matrix, rates) -> tuple[sp.Matrix, ...]:
+    """A basis of the span of the partial velocities ∂v/∂q̇ₐ (the directions the point
+    can move in at the instant): first the scene's axes that lie in it, then partial
+    velocities themselves."""
+    J = sp.Matrix.hstack(*[velocity.diff(x).applyfunc(tidy) for x in rates])
+    rank = J.rank(simplify=True)
+    chosen: list[sp.Matrix] = []
+    for w in [*(sp.eye(3)[:, k] for k in range(3)), *(J[:, k] for k in range(J.cols))]:
+        if len(chosen) == rank:
+            break
+        if (sp.Matrix.hstack(J, w).rank(simplify=True) == rank
+                and sp.Matrix.hstack(*chosen, w).rank(simplify=True) == len(chosen) + 1):
+            chosen.append(w)
+    return tuple(chosen)
+
+
+def _axis_name(w: sp.Matrix) -> str:
+    return "xyz"[next(k for k in range(3) if w[k] != 0)]
 
 
 def _rolling(contact) -> Blow:
@@ -164,7 +220,7 @@ class ImpactEquations:
         self.final = tuple(sp.Dummy(f"{n}_f") for n in model.coordinate_names())
         self.after = dict(zip(model.qd, self.final))
         self.sizes = [b.size for b in hits if b.size is not None] + [x for b in hits for x in b.components]
-        self.I = [tidy(sum((b.impulse.dot(sp.diff(now.velocity(b.point), qd)) for b in hits), sp.Integer(0)))
+        self.I = [tidy(sum((b.impulse.dot(sp.diff(now.struck_velocity(b), qd)) for b in hits), sp.Integer(0)))
                   for qd in model.qd]
         self.momenta = [sp.diff(now.T, qd) for qd in model.qd]  # ∂T/∂q̇_a
         self.solution = self._solve()
@@ -215,10 +271,15 @@ class ImpactEquations:
 
     def sticking_equations(self) -> list[sp.Expr]:
         """v_P|f − u|f = 0 component by component, u_f = u_i − P/μ: a sticking particle
-        moves with the point just after (the particle's own momentum balance is in u_f)."""
+        moves with the point just after (the particle's own momentum balance is in u_f);
+        a body's point that sticks is at rest relative to what it sticks to just after,
+        w·(v_P − v_Q)|f = 0 along each direction w of its impulse."""
         out = []
         for blow in self.hits:
-            if blow.components and blow.collision is None:  # rolling on a plane: at rest along it
+            if blow.sticking_point:
+                v = self.now.struck_velocity(blow).xreplace(self.after)
+                out += [v.dot(w) for w in blow.directions]
+            elif blow.components and blow.collision is None:  # rolling on a plane: at rest along it
                 _on_the_plane(blow, self.now.velocity(blow.point))
                 v = self.now.velocity(blow.point).xreplace(self.after)
                 out += [v.dot(t) for t in tangents(blow.normal)]
@@ -333,7 +394,8 @@ class ImpactEquations:
         for body in self.model.bodies:
             v = self.now.body_velocity(body)
             dp += body.mass * (v.xreplace(final) - v.xreplace(self.before))
-        applied = sum((b.impulse.xreplace(self.solution) for b in self.hits), sp.zeros(3, 1))
+        applied = sum((b.impulse.xreplace(self.solution) for b in self.hits if b.partner is None),  # P − P inside
+                      sp.zeros(3, 1))
         return tuple(tidy_fraction(x) for x in dp - applied)
 
     def centre_of_percussion(self, support: tuple[sp.Expr, ...]) -> tuple[sp.Expr | None, str | None]:

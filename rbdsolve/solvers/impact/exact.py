@@ -14,9 +14,9 @@ from rbdsolve.solvers.shared.options import Options
 def solve(question: Question, model: Model, options: Options) -> Solution:
     opts: ImpactOptions = question.options
     now = instant(model, opts)
-    hits = blows(model, opts)
+    hits = blows(model, opts, now)
     # in order, not a set's (the hash seed's): the first point not known names what it misses
-    for point in dict.fromkeys([*(b.point for b in hits), *opts.points]):
+    for point in dict.fromkeys([*(p for b in hits for p in (b.point, b.partner) if p), *opts.points]):
         require_known(now.velocity(point), model, opts)
     work = ImpactEquations(model, opts, now, hits)
     answers, warnings = work.results()

@@ -57,7 +57,8 @@ class NumericImpactEquations(ImpactEquations):
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     opts: ImpactOptions = question.options
-    work = NumericImpactEquations(model, opts, instant(model, opts), blows(model, opts))
+    now = instant(model, opts)
+    work = NumericImpactEquations(model, opts, now, blows(model, opts, now))
     answers, warnings = work.results()
     estimate = len(work.solution) * EPS * work.condition
     return Solution("impact", Route.NUMERIC, with_floats(answers, model.values), numeric_steps(work, work.condition),

@@ -80,17 +80,23 @@ def equation_steps(work: ImpactEquations) -> list[Step]:
 
 
 def _sticking(work: ImpactEquations, show: _Show) -> list[Step]:
-    """v_P|f = u|f = u|i − P/μ for each particle that embeds; v_C|f·t = 0 along the
-    plane for each body that rolls on one."""
-    rows = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)),
-                     show.vector(work.other_velocity(b, final=True)))
-            for b in work.hits if b.components and b.collision is not None]
-    rolling = [Relation(show.vector(work.now.velocity(b.point).xreplace(work.after)), sp.Integer(0))
-               for b in work.hits if b.components and b.collision is None]
+    """v_P|f = u|f = u|i − P/μ for each particle that embeds; v_P|f = 0 (or v_Q|f) for a
+    body's point that sticks; v_C|f·t = 0 along the plane for each body that rolls on one."""
+    after = lambda point: show.vector(work.now.velocity(point).xreplace(work.after))  # noqa: E731
+    rows = [Relation(after(b.point), show.vector(work.other_velocity(b, final=True)))
+            for b in work.hits if b.components and b.collision is not None and not b.sticking_point]
+    points = [Relation(after(b.point), after(b.partner) if b.partner else sp.Integer(0))
+              for b in work.hits if b.sticking_point]
+    rolling = [Relation(after(b.point), sp.Integer(0)) for b in work.hits if b.components and b.collision is None]
     mu = labels_for(work.model, "particle_mass").text("particle_mass")
     out = [st.equation(f"A particle that sticks moves with the point just after: v_P|f = u|f = u|i − P/{mu} "
                        f"(P: its impulse on the system, every component unknown; {mu}: the particle's mass):",
                        *rows)] if rows else []
+    if points:
+        out.append(st.equation("A point that sticks becomes a pivot: just after, it moves with what it sticks to "
+                               "(at rest on a fixed point), v_P|f = 0 or v_Q|f, Q the other body's point there "
+                               "(P: the impulse on the body there, unknown in every direction the point can move; "
+                               "the other body feels −P):", *points))
     if rolling:
         out.append(st.equation("Rolling without slipping on the plane goes on: the body's point at the contact "
                                "is at rest just after, v_C|f = 0 (the plane's impulse along it, F₁ t₁ + F₂ t₂, "
@@ -126,7 +132,7 @@ def _velocities(work: ImpactEquations, show: _Show) -> Step:
         omega = body.angular_velocity(model.state).xreplace(at)
         if omega != sp.zeros(3, 1) or body.given_angular_velocity is not None:
             rows.append(Relation(sp.Symbol(f"omega_{body.name}"), show.angular(omega)))
-    for point in dict.fromkeys(b.point for b in work.hits if b.point not in shown):  # each point once
+    for point in dict.fromkeys(p for b in work.hits for p in (b.point, b.partner) if p and p not in shown):
         rows.append(Relation(sp.Symbol(f"v_{point}"), show.vector(work.now.velocity(point))))
     return st.definition("Velocities at the instant (of each body's centre of mass, and of the struck "
                          "points), linear in the generalized velocities:", *rows)
@@ -151,12 +157,13 @@ def _partial_velocities(work: ImpactEquations, show: _Show) -> Step:
     model = work.model
     rows = [Relation(sp.Derivative(sp.Symbol(f"v_{p}"), model.to_time(qd)),
                      show.vector(sp.diff(work.now.velocity(p), qd)))
-            for p in dict.fromkeys(b.point for b in work.hits) for qd in model.qd]
+            for p in dict.fromkeys(p for b in work.hits for p in (b.point, b.partner) if p) for qd in model.qd]
     return st.definition("Partial velocities ∂v/∂q̇ of the struck points:", *rows)
 
 
 def _impulses(work: ImpactEquations, show: _Show) -> Step:
     rows = [Relation(sp.Symbol(f"P_{b.point}"), show.vector(b.impulse)) for b in work.hits]
+    rows += [Relation(sp.Symbol(f"P_{b.partner}"), show.vector(-b.impulse)) for b in work.hits if b.partner]
     rows += [Relation(sp.Symbol(f"I_{n}"), show.scalar(I)) for n, I in zip(work.model.coordinate_names(), work.I)]
     unknown = "; λ n is a collision's unknown impulse, n its normal as given" if any(b.size for b in work.hits) else ""
     a = _index(work)
@@ -198,10 +205,11 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
         out.append(st.result(f"Velocities just after the impact{particles}:", *rows))
     out.append(_energy_step(work, show, answers))
     if answers.sticking_impulses:
-        kinds = {b.collision is None for b in work.hits if b.components}
-        whose = " and ".join(text for rolls, text in ((False, "of each sticking particle on the system"),
-                                                      (True, "of the plane, along it, at each rolling contact"))
-                             if rolls in kinds)
+        kinds = {_kind(b) for b in work.hits if b.components}
+        whose = " and ".join(text for kind, text in (("particle", "of each sticking particle on the system"),
+                                                     ("point", "on the body at each point that sticks"),
+                                                     ("rolling", "of the plane, along it, at each rolling contact"))
+                             if kind in kinds)
         out.append(st.result(f"The impulse {whose}:",
                              *[Relation(sp.Symbol(f"P_{p}"), show.vector(sp.Matrix(v)))
                                for p, v in answers.sticking_impulses.items()]))
@@ -216,6 +224,12 @@ def _after(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> list[S
         out.append(st.result("The supports feel no impulse (the centre of percussion) when",
                              Relation(p, answers.centre_of_percussion)))
     return out
+
+
+def _kind(blow) -> str:
+    """What an impulse with unknown components is: a sticking particle's, a sticking
+    point's, or a plane's at a rolling contact."""
+    return "point" if blow.sticking_point else "rolling" if blow.collision is None else "particle"
 
 
 def _energy_step(work: ImpactEquations, show: _Show, answers: ImpactAnswers) -> Step:

@@ -33,3 +33,11 @@ def at_configuration(model: Model, at: dict[sp.Symbol, sp.Expr]) -> Model:
     bodies = tuple(replace(b, position=put(b.position), rotation=put(b.rotation),
                            angle=b.angle.xreplace(at) if b.angle is not None else None) for b in model.bodies)
     return replace(model, points={k: put(v) for k, v in model.points.items()}, bodies=bodies)
+
+
+def about_point(opts: InertiaOptions, model: Model, at: dict[sp.Symbol, sp.Expr]) -> sp.Matrix:
+    """The point asked about, at the configuration: a point, a position, or a contact's
+    point C (where a rolling body touches: model/contacts.py)."""
+    contacts = {c.name: c.point for c in model.contacts}
+    names = model.symbols.with_points({**model.points, **contacts})
+    return names.vector(opts.about).xreplace(at)

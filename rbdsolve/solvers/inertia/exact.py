@@ -34,7 +34,7 @@ from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import InertiaAnswers, Principal
-from rbdsolve.solvers.inertia.configuration import at_configuration, substitution
+from rbdsolve.solvers.inertia.configuration import about_point, at_configuration, substitution
 from rbdsolve.solvers.inertia.steps import (
     CONVENTION,
     _centre_steps,
@@ -42,6 +42,7 @@ from rbdsolve.solvers.inertia.steps import (
     configuration_step,
     characteristic_step, diagonal_step,
     frame_step,
+    normal_step,
     numeric_principal_steps,
     principal_steps,
     scene_axes_step,
@@ -67,13 +68,16 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     view = body.rotation  # body axes -> the axes J is written in
     J, about, label = J_G, None, "G"
     if opts.about is not None:
-        about = model.symbols.with_points(model.points).vector(opts.about).xreplace(at)
+        about = about_point(opts, model, at)
         label = opts.about.text if opts.about.text.isidentifier() else "P"
         J, shift_steps = _shift(body, J_G, about, label, symbols)
         steps += shift_steps
     e, J_axis = axis_moment(opts, model, J)
     if e is not None:
         steps += axis_steps(label, e, J_axis)
+    elif about is not None and in_plane(opts, model, body, about):
+        e, J_axis = sp.Matrix([0, 0, 1]), tidy(J[2, 2])
+        steps.append(normal_step(label, body, J_G, about, J_axis))
     if opts.axes is not None:
         A = frame_matrix(opts, model)
         J_G, J = (A * J_G * A.T).applyfunc(tidy), (A * J * A.T).applyfunc(tidy)
@@ -100,6 +104,17 @@ def axis_moment(opts: InertiaOptions, model: Model, J: sp.Matrix) -> tuple[sp.Ma
     n = model.symbols.with_points(model.points).vector(opts.axis).applyfunc(tidy)
     length = sp.sqrt(tidy(sp.expand(n.dot(n))))
     return n, tidy(sp.expand((n.T * J * n)[0, 0] / length**2))
+
+
+def in_plane(opts: InertiaOptions, model: Model, body: RigidBody, about: sp.Matrix) -> bool:
+    """Is the question planar, so that "the moment of inertia about C" means the one about
+    the axis through C normal to the plane (z)? A scene with coordinates, no 'axis' asked,
+    the body moving in the xy-plane (turning about z only) and the point in a plane
+    z = constant (a contact point, a fixed centre)."""
+    if opts.axis is not None or not model.q or body.turns_3d or body.given_angular_velocity is not None:
+        return False
+    q = set(model.q)
+    return not (sp.sympify(body.position[2]).free_symbols | sp.sympify(about[2]).free_symbols) & q
 
 
 def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
@@ -148,8 +163,16 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
     poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
     steps = [diagonal_step() if J_hat.is_diagonal() else characteristic_step(scale, poly)]
+    turning = _turning_plane(J_hat, scale, model)
+    if turning is not None:
+        return replace(turning, steps=(*steps, *turning.steps))
     found = _closed_form(J_hat, poly)
     if found is None:
+        moving = [n for n, q in zip(model.state.names, model.q) if J_hat.has(q)]
+        if moving:
+            raise UnsolvedError("the principal moments have no compact closed form at every configuration; ask at "
+                                f"one, 'at: {{{', '.join(f'{n}: …' for n in moving)}}}' (the tensor itself, and the "
+                                "moment about an 'axis', are exact at every configuration)")
         if J_hat.free_symbols:
             raise UnsolvedError("the principal moments have no compact closed form here; give "
                                 "parameter values for numeric ones")
@@ -163,6 +186,46 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
             repeated.append(tidy(scale * root))
     steps += principal_steps(moments, axes, repeated)
     return Principal(tuple(moments), tuple(_unit(d) for d in axes), tuple(repeated), tuple(steps), ())
+
+
+def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal | None:
+    """The principal moments and axes of a tensor that moves with the coordinates and has
+    an axis e_k no product couples (a body moving in the plane, about a point of it, that
+    does not turn with the body: its contact point). e_k is an axis, with J_kk; the other
+    two lie in the plane of the block [[a, c], [c, b]],
+
+        λ± = (a + b)/2 ± √(((a − b)/2)² + c²),   e± at the angle α (and α + π/2) from
+        the plane's first axis, α = ½ atan2(2c, a − b),
+
+    forms that stay short where the null space of J − λ1 with the root's square root does
+    not. None: J does not move, no axis decouples, or the root is no square root of the
+    coordinates (a disk circling O: its axes along OG and across it, from the null space)."""
+    if not J_hat.free_symbols & set(model.q):
+        return None
+    k = next((k for k in range(3) if all(tidy(J_hat[k, i]) == 0 for i in range(3) if i != k)), None)
+    if k is None:
+        return None
+    i, j = (x for x in range(3) if x != k)
+    a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
+    root = sp.sqrt(tidy((a - b) ** 2 / 4 + c**2))
+    if not any(p.exp == sp.S.Half and p.base.free_symbols & set(model.q) for p in root.atoms(sp.Pow)):
+        return None  # rational in the coordinates' sines: the null space gives short axes (OG and across)
+    alpha = sp.atan2(tidy(2 * c), tidy(a - b)) / 2
+    plus, minus = sp.zeros(3, 1), sp.zeros(3, 1)
+    plus[i], plus[j], minus[i], minus[j] = sp.cos(alpha), sp.sin(alpha), -sp.sin(alpha), sp.cos(alpha)
+    pairs = [(J_hat[k, k], sp.eye(3)[:, k]), (tidy((a + b) / 2 + root), plus), (tidy((a + b) / 2 - root), minus)]
+    pairs.sort(key=lambda p: _size(scale * p[0], model))
+    moments = [tidy(scale * m) for m, _ in pairs]
+    axes = [axis for _, axis in pairs]
+    x, y, z = ("xyz"[n] for n in (i, j, k))
+    shown = sp.Symbol("alpha")
+    note = st.equation(f"No product of inertia couples the {z} axis (J_{x}{z} = J_{y}{z} = 0): it is a "
+                       f"principal axis, with J_{z}{z}; the other two lie in the {x}{y}-plane, at the angle α "
+                       f"from the {x} axis, λ = (a + b)/2 ± √(((a − b)/2)² + c²) and α = ½ atan2(2c, a − b) "
+                       f"for its block [[a, c], [c, b]] = [[J_{x}{x}, J_{x}{y}], [J_{x}{y}, J_{y}{y}]]:",
+                       Relation(shown, alpha))
+    steps = (note, *principal_steps(moments, [v.xreplace({alpha: shown}) for v in axes], []))
+    return Principal(tuple(moments), tuple(tuple(x) for x in axes), (), steps, ())
 
 
 def _principal_turned(J: sp.Matrix, Q: sp.Matrix, symbols: set, model: Model) -> Principal | None:
@@ -199,12 +262,30 @@ def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
         for i in range(3):
             found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
         return found
-    found = sp.roots(poly, LAMBDA, trig=True)
+    found = _decoupled(J_hat) or sp.roots(poly, LAMBDA, trig=True)
     if sum(found.values()) != 3:
         return None
     if any(r.has(sp.I) or sp.count_ops(r) > MAX_ROOT_OPS for r in found):
         return None
     return found
+
+
+def _decoupled(J_hat: sp.Matrix) -> dict[sp.Expr, int] | None:
+    """The roots of a tensor with an axis that no product of inertia couples (a body
+    moving in the xy-plane, about a point of that plane: J_xz = J_yz = 0): J_kk is one,
+    and the other two are the 2×2 block's, λ = (a + b)/2 ± √(((a − b)/2)² + c²), where
+    the cubic as a whole may have no compact form (a half disk about its contact point)."""
+    for k in range(3):
+        rest = [i for i in range(3) if i != k]
+        if all(tidy(J_hat[k, i]) == 0 for i in rest):
+            block = J_hat.extract(rest, rest)
+            quadratic = sp.Poly((LAMBDA * sp.eye(2) - block).det(), LAMBDA)
+            found: dict[sp.Expr, int] = {}
+            for root, multiplicity in [(J_hat[k, k], 1), *sp.roots(quadratic, LAMBDA).items()]:
+                same = next((r for r in found if tidy(r - root) == 0), root)
+                found[same] = found.get(same, 0) + multiplicity
+            return found
+    return None
 
 
 def _numeric_principal(J_hat: sp.Matrix, scale: sp.Expr, steps: list[st.Step]) -> Principal:

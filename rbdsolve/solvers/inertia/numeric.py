@@ -23,8 +23,8 @@ from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.problem.schema import InertiaOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import NumericInertiaAnswers
-from rbdsolve.solvers.inertia.configuration import at_configuration, substitution
-from rbdsolve.solvers.inertia.exact import axis_moment, frame_matrix
+from rbdsolve.solvers.inertia.configuration import about_point, at_configuration, substitution
+from rbdsolve.solvers.inertia.exact import axis_moment, frame_matrix, in_plane
 from rbdsolve.solvers.inertia.steps import numeric_steps
 from rbdsolve.solvers.shared.numeric_model import to_floats
 from rbdsolve.solvers.shared.options import Options
@@ -33,13 +33,12 @@ from rbdsolve.solvers.shared.values import require_values
 EPS = float(np.finfo(float).eps)
 
 
-def tensor(opts: InertiaOptions, model: Model) -> tuple[sp.Expr, sp.Matrix]:
+def tensor(opts: InertiaOptions, model: Model, at: dict) -> tuple[sp.Expr, sp.Matrix]:
     """The body's mass and its exact J about the asked point, in the asked axes."""
     body = next(b for b in model.bodies if b.name == opts.body)
     J = body.inertia_in_scene()
     if opts.about is not None:
-        P = model.symbols.with_points(model.points).vector(opts.about)
-        J = J + parallel_axis(body.mass, body.position - P)
+        J = J + parallel_axis(body.mass, body.position - about_point(opts, model, at))
     if opts.axes is not None:
         A = frame_matrix(opts, model)
         J = A * J * A.T
@@ -75,15 +74,19 @@ def _require_configuration(J: sp.Matrix, model: Model) -> None:
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     opts: InertiaOptions = question.options
-    model = at_configuration(model, substitution(opts, model))
-    mass, J = tensor(opts, model)
+    at = substitution(opts, model)
+    model = at_configuration(model, at)
+    mass, J = tensor(opts, model, at)
     _require_configuration(J, model)
     Jf = to_floats(J, model.values)
     J_axis = None
+    scene = tensor(replace(opts, axes=None), model, at)[1]
+    body = next(b for b in model.bodies if b.name == opts.body)
     if opts.axis is not None:
-        scene = tensor(replace(opts, axes=None), model)[1]
         _, moment = axis_moment(opts, model, scene)
         J_axis = float(to_floats(sp.Matrix([[moment]]), model.values)[0, 0])
+    elif opts.about is not None and in_plane(opts, model, body, about_point(opts, model, at)):
+        J_axis = float(to_floats(scene[2:, 2:], model.values)[0, 0])  # about the normal to the plane
     moments, axes, absolute = principal_floats(Jf)
     answers = NumericInertiaAnswers(float(sp.N(mass.xreplace(dict(model.values)))),
                                     tuple(tuple(float(x) for x in row) for row in Jf),

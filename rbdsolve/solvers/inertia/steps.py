@@ -146,6 +146,19 @@ def axis_steps(label: str, e: sp.Matrix, J_axis: sp.Expr) -> list[st.Step]:
                       Relation(sp.Symbol("e"), _unit_display(e)), Relation(sp.Symbol("J_e"), J_axis))]
 
 
+def normal_step(label: str, body: RigidBody, J_G: sp.Matrix, about: sp.Matrix, J_axis: sp.Expr) -> st.Step:
+    """The moment about the axis through the point normal to the plane of the motion,
+    J = J_G,zz + m |G{label}|² (Steiner, in the plane): the exam's "moment of inertia about
+    the contact point", a function of the coordinates."""
+    d = (body.position - about).applyfunc(tidy)
+    distance = tidy(d[0] ** 2 + d[1] ** 2)
+    return st.result(f"The moment of inertia about the axis through {label} normal to the plane of the motion (z), "
+                     f"J_{label} = J_G + m |G{label}|² (the parallel axis theorem in the plane):",
+                     Relation(Label(f"|G{label}|²", rf"|G{label}|^2"), factored(distance)),
+                     Relation(Label(f"J_{label},z", f"J_{{{label},z}}"),
+                              Terms((tidy(J_G[2, 2]), tidy(body.mass * distance))), more=(factored(J_axis),)))
+
+
 def configuration_step(at: dict, model: Model) -> st.Step:
     """The configuration asked about, put in before anything else."""
     return st.given("At the configuration asked about (put in first):",

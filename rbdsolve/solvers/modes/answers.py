@@ -8,6 +8,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.shared.conditions import CriticalValue
 
 
@@ -108,3 +109,54 @@ def with_amplitude_check(question, model, solution):
     from rbdsolve.solvers.modes.amplitude import with_check
 
     return with_check(question, model, solution)
+
+
+@dataclass(frozen=True)
+class GyroscopicCase:
+    """A stability of M ü + G u̇ + K u = 0 that holds when a condition on the parameters
+    does, with the growth rate of the motion where it is unstable and one is known."""
+
+    when: sp.Basic
+    stability: Stability
+    growth_rate: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class GyroscopicModesAnswers:
+    """Small motions with gyroscopic terms (a spinning top, a rotor in gimbals, a body in a
+    turning frame), exact: the steady state (the coordinates kept and the cyclic ones'
+    steady rates and momenta), M, G and K, det(K − ω²M + iωG), the frequencies ω, and
+    where the motion is stable: the conditions, case by case, and the critical values."""
+
+    about: Mapping[str, sp.Expr]  # coordinates kept -> value
+    steady: Mapping[str, sp.Expr]  # cyclic coordinate -> its steady rate (Routh's reduction)
+    momenta: Mapping[str, sp.Expr]  # cyclic coordinate -> its constant momentum ∂L/∂q̇
+    M: sp.ImmutableMatrix
+    G: sp.ImmutableMatrix  # skew: Gᵢⱼ = ∂cᵢ/∂qⱼ − ∂cⱼ/∂qᵢ
+    K: sp.ImmutableMatrix
+    characteristic: sp.Expr  # det(K − ω²M + iωG), even in ω
+    frequencies: tuple[sp.Expr, ...]  # ω > 0, ascending; real where the motion is stable
+    stability: Stability  # stable, unstable, depends (see cases), undetermined, neutral
+    stable_if: tuple[sp.Expr, ...]  # each > 0 where stable (the signs the parameters decide left out)
+    stability_cases: tuple[GyroscopicCase, ...] = ()  # with stability DEPENDS, or where the values decide it
+    critical: tuple[CriticalValue, ...] = ()
+    neutral: int = 0  # directions with ω = 0
+
+
+@dataclass(frozen=True)
+class NumericGyroscopicModesAnswers:
+    """Small motions with gyroscopic terms in numbers: the steady state, M, G and K, the
+    frequencies ω of the roots s = iω on the imaginary axis, the growth rates Re s > 0
+    of the others, every root s with its error bound, and the stability."""
+
+    about: Mapping[str, float]
+    steady: Mapping[str, float]
+    M: tuple[tuple[float, ...], ...]
+    G: tuple[tuple[float, ...], ...]
+    K: tuple[tuple[float, ...], ...]
+    frequencies: tuple[float, ...]  # ω > 0 of the roots on the axis, ascending
+    stability: Stability  # stable (every root on the axis within its bound) or unstable
+    growth_rates: tuple[float, ...]  # Re s > 0 of the roots off the axis, ascending
+    roots: tuple[tuple[float, float], ...]  # every s of (s² M + s G + K) X = 0, as (re, im)
+    root_errors: tuple[float, ...]  # the bound on |ŝ − s| of each root
+    neutral: int = 0  # directions with s = 0

@@ -22,34 +22,36 @@ each vector scaled so its first nonzero entry is 1.
 
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
 from typing import Mapping
 
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
-from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import common_scale, configuration
 from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
+from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.modes import gyroscopic
 from rbdsolve.solvers.modes.about import exact_equilibrium
+from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import listing
 from rbdsolve.solvers.shared.present_conditions import condition_relations
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, MotionCase, Skipped, \
-    with_amplitude_check
+from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
-from rbdsolve.solvers.shared.conditions import changes, critical_values, exists_when, existing, partition, what_decides
+from rbdsolve.solvers.shared.conditions import asked, critical_values
 from rbdsolve.solvers.shared.frames import require_static
 from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
 from rbdsolve.solvers.shared.singular import exact_reason
 from rbdsolve.solvers.shared.values import sample
 
@@ -67,28 +69,38 @@ def _det(labels) -> sp.Expr:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
+    if gyroscopic.applies(question, model):
+        return gyroscopic.solve(question, model)
+    first = asked(model, question)
     if question.options.each:
-        return _at_each(model)
+        return _at_each(model, first)
     at, notes = exact_equilibrium(question, model)
-    answers, steps = modes_at(at, model)
+    notes += gyroscopic.spin_notes(question, model)
+    where = existence(at, model, first)
+    missing = absent(at, where, model)
+    if missing:
+        raise UnsolvedError(missing)
+    answers, steps = modes_at(at, model, where, first)
+    if where is not sp.true:  # a case outside it is left out: say so
+        steps = (st.note("The equilibrium exists only where the following holds; its small motions are "
+                         "answered there:", *condition_relations(where)), *steps)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
 
 
-def _at_each(model: Model) -> Solution:
+def _at_each(model: Model, first: sp.Symbol | None) -> Solution:
     """The modes at every listed equilibrium, each under its own heading; one that
     cannot be answered (a singular M, a sign rbdsolve cannot split) says why."""
     names = model.coordinate_names()
     found, skipped, steps = [], [], []
     for k, listed in enumerate(listing(model).equilibria, 1):
         about = {n: listed.at[q] for n, q in zip(names, model.q)}
-        found_real = exists_when(listed.at.values(), model)
-        where = found_real.condition if found_real else sp.true
+        where = existence(listed.at, model, first)
         bounds = [] if where is sp.true else condition_relations(where)
         steps.append(st.result(f"About equilibrium {k}" + (" (it exists only where the following holds)"
                                                             if bounds else "") + ":",
                                configuration(model.state.functions(), list(about.values())), *bounds))
         try:
-            answers, more = modes_at(listed.at, model, where)
+            answers, more = modes_at(listed.at, model, where, first)
         except UnsolvedError as exc:
             skipped.append(Skipped(about, str(exc)))
             steps.append(st.note(f"Not answered here: {exc}."))
@@ -101,18 +113,23 @@ def _at_each(model: Model) -> Solution:
     return Solution("modes", Route.EXACT, EachModesAnswers(tuple(found), tuple(skipped)), tuple(steps))
 
 
-def modes_at(at: dict, model: Model, where: sp.Basic = sp.true) -> tuple[ModesAnswers, tuple]:
+def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
+             first: sp.Symbol | None = None) -> tuple[ModesAnswers, tuple]:
     """The small oscillations about the equilibrium ``at`` ({q: value}) and their steps;
-    ``where``: where it exists (a case outside it is dropped)."""
+    ``where``: where it exists (a case outside it is dropped); ``first``: the parameter
+    the cases are written in where they can be (a question's ``for:``)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
-    K = sp.ImmutableMatrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    K = sp.ImmutableMatrix(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)))
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
     if singular:
         raise UnsolvedError(singular)
+    if K.has(sp.DiracDelta):
+        raise UnsolvedError("K = ∂²V/∂q∂q does not exist at this configuration: a spring's length |…| is zero "
+                            "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [pair.lam for pair in spectrum.pairs]
-    motions, cases, criticals = _motions(eigenvalues, K, model, where)
+    motions, cases, criticals = kinds(eigenvalues, K, model, where, first)
     frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for pair, mo in zip(spectrum.pairs, motions))
     shapes = _shapes(spectrum, model.values)
@@ -272,11 +289,13 @@ def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
 
 
 def _ascending(pairs: list[tuple], model: Model) -> list:
-    """Sorted by λ: at the given parameter values, or with every parameter 1."""
+    """Sorted by λ: at the given parameter values, the others 1, or, where that point
+    breaks an assumption (r = 1 > R = 1/2 under R > r), at a point that keeps them."""
+    at = _ordering_point(model)
 
     def key(pair):
         lam = pair.lam
-        number = sample(lam, model.values)
+        number = sample(lam, at)
         if number.imag != 0:
             return (1, 0.0, sp.default_sort_key(lam))
         return (0, number.real, sp.default_sort_key(lam))
@@ -284,57 +303,15 @@ def _ascending(pairs: list[tuple], model: Model) -> list:
     return sorted(pairs, key=key)
 
 
-def _motions(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true):
-    """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
-    parameters decide (its critical values: ``shared/conditions.py``), those outside
-    ``where`` the equilibrium exists left out (a λ left with one case is of that kind:
-    an off-axis equilibrium that exists only above Ω_c oscillates there). When a λ's
-    sign is not decided by itself, Sylvester's law of inertia decides it: with M
-    positive definite, K a = λ M a has as many positive, zero and negative λ as K has
-    eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
-    every λ positive."""
-    counts = matrix_inertia(K, model.decided_by)
-    motions, cases, criticals = [], [], []
-    for lam in eigenvalues:
-        sign = sign_of(lam, model.decided_by)
-        if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
-                and counts.positive + counts.zero + counts.negative == len(eigenvalues):
-            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
-        if isinstance(sign, Undecided):
-            found = _cases(lam, model, where)
-            if found is None:
-                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
-                                    f"way rbdsolve cannot split into cases; {what_decides(lam)}")
-            if len(found[0]) == 1:
-                motions.append(found[0][0].kind)
-                cases.append(())
-                continue
-            motions.append(Motion.DEPENDS)
-            cases.append(found[0])
-            criticals += found[1]
-            continue
-        motions.append(KIND[sign])
-        # decided by the values: the cases still say where that holds, as for equilibria
-        found = _cases(lam, model, where) if model.values and isinstance(sign_of(lam, model.assumed), Undecided) \
-            else None
-        kept = found if found and len(found[0]) > 1 else None
-        cases.append(kept[0] if kept else ())
-        criticals += kept[1] if kept else []
-    return tuple(motions), tuple(cases), criticals
-
-
-KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
-
-
-def _cases(lam: sp.Expr, model: Model, where: sp.Basic):
-    """(cases, critical values) for a λ whose sign changes at critical values, the
-    pieces where the equilibrium does not exist left out; None where it cannot be
-    split (or a piece lies partly where it exists)."""
-    found = partition(lam, model)
-    kept = existing(found.pieces, where, model) if found else None
-    if not kept:
-        return None
-    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))
+def _ordering_point(model: Model) -> dict:
+    """The given values, with admissible values for the others where every other
+    parameter at 1 would break an assumption (``model.assumptions.admissible_sample``)."""
+    ones = {**{p: sp.Integer(1) for p in model.symbols.parameters.values()}, **model.values}
+    if all(a.difference.xreplace(ones) > 0 or (not a.strict and a.difference.xreplace(ones) == 0)
+           for a in model.assumptions if not a.difference.xreplace(ones).free_symbols):
+        return dict(model.values)
+    point = admissible_sample(model.assumptions, model.symbols, random.Random(38), fixed=model.values)
+    return point or dict(model.values)
 
 
 def _shapes(spectrum: _Spectrum, values: Mapping[sp.Symbol, sp.Expr]) -> tuple:

@@ -50,7 +50,10 @@ def applied(model: Model, held: list[str]) -> list[Applied]:
 def _linear(model: Model, s: SpringModel, held: list[str]) -> list[Applied]:
     a, b = (model.symbols.vector(e) for e in s.source.ends)
     d = a - b
-    pull = -s.stiffness * s.stretch * d / sp.sqrt(d.dot(d))
+    unit = d / s.signed(sp.sqrt(d.dot(d)))
+    if s.lengths:  # along one axis: ±(d + x)/(d + x), cancelled to ±1
+        unit = unit.applyfunc(sp.cancel)
+    pull = -s.stiffness * s.stretch * unit
     out = []
     for end, force in ((a, pull), (b, -pull)):
         carrier = _carrier(model, s, end, held)

@@ -60,16 +60,34 @@ def _within_one(r: sp.Expr, model: Model) -> bool:
 
 def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     """μ ≥ |F|/N: the friction a rolling contact needs, over the normal push; |…| kept
-    where neither the parameters' signs nor their values decide the sign."""
+    where neither the parameters' signs nor their values decide the sign, nor the
+    assumptions, nor where the contact holds at all (N ≥ 0: a cylinder on an incline
+    pushes only for α ≤ π/2, where tan α ≥ 0, so μ ≥ tan(α)/3)."""
     ratio = sp.simplify(clean_fraction(F / N))
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
-        if implies(model.assumptions, sp.Ge(ratio, 0)):  # tan α ≥ 0 under 0 < α < π/2
+        pushes = _nonnegative(N, model).condition if not N.has(*model.q) else sp.true
+        if implies(model.assumptions, sp.Ge(ratio, 0)) or _on(pushes, sp.Ge(ratio, 0)):  # tan α ≥ 0 under 0 < α < π/2
             return ratio
-        if implies(model.assumptions, sp.Le(ratio, 0)):
+        if implies(model.assumptions, sp.Le(ratio, 0)) or _on(pushes, sp.Le(ratio, 0)):
             return -ratio
         return sp.Abs(ratio)
     return ratio if sign >= 0 else -ratio
+
+
+def _on(where: sp.Basic, relation: sp.Basic) -> bool:
+    """Whether ``relation`` holds inside the set ``where`` allows, both in one parameter
+    p (its boundary left out, where the ratio may not be defined: tan α at α = π/2)."""
+    free = relation.free_symbols
+    if len(free) != 1 or where in (sp.true, sp.false) or where.free_symbols != free:
+        return False
+    (p,) = free
+    try:
+        allowed = sp.Intersection(where.as_set(), sp.Interval.open(0, sp.oo) if p.is_positive else sp.S.Reals)
+        inside = allowed.interior
+        return not inside.is_empty and inside.is_subset(sp.solveset(relation, p, inside)) is True
+    except (NotImplementedError, TypeError, ValueError):
+        return False
 
 
 @dataclass(frozen=True)

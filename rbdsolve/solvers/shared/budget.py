@@ -30,6 +30,17 @@ REPEAT = 0.05  # seconds between rings once the budget is spent
 TIMER, SIGNAL = getattr(signal, "ITIMER_PROF", None), getattr(signal, "SIGPROF", None)
 
 
+_stopping: list[type[BaseException]] = []  # set once the process is told to stop (stop())
+
+
+def stop(kind: type[BaseException]) -> None:
+    """The process is being stopped (Ctrl-C, SIGTERM: ``kind`` is what the caller's signal
+    handler raises). From now on a ring raises ``kind`` too, not OutOfTime: a ring that
+    comes while the interrupt is on its way out would otherwise replace it, be caught as
+    a budget run out, and the run would go on as if never interrupted."""
+    _stopping[:] = [kind]
+
+
 class OutOfTime(BaseException):
     """The budget of ``what`` ran out. Private to the solving layer: callers turn it
     into an unanswered question or a one-line message."""
@@ -53,6 +64,8 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
         return
 
     def ring(signum, frame):
+        if _stopping:
+            raise _stopping[0]()
         raise OutOfTime(seconds, what)
 
     def unraisable(info) -> None:

@@ -2,9 +2,12 @@
 the sign between them — the "stable iff Ω < √(g/R)" of an exam answer.
 
 For a quantity f whose sign the parameters' own signs do not decide, one parameter p
-is chosen (``partition``): a rate first (a parameter named or described as a rate, a
-speed or a spin: exams ask "above which rate"), then a stiffness, otherwise the first
-in the file's order. The roots of f's numerator and denominator in p, solved exactly,
+is chosen (``partition``), the one the question is about (``candidates``): the one a
+question's ``for:`` names; else the problem's only parameter without a value (every
+value given but k: "how stiff must the springs be"); else a rate or a spin (exams ask
+"above which rate"), then a stiffness, then a length, then a mass, then the others,
+each group in the file's order. The first of these that f holds and whose roots split
+its range is taken. The roots of f's numerator and denominator in p, solved exactly,
 that lie inside p's range at every sample (``parameter_roots``) cut the range into
 pieces; f's sign on each piece is decided exactly by putting in a point of it,
 
@@ -27,18 +30,22 @@ are turned into it by whole turns (θ < π/2 for a coin's tilt).
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from fractions import Fraction
 from typing import Iterable
 
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.problem.dimensions import STIFFNESS, TORQUE
+from rbdsolve.problem.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.shared.signs import sign_of, symbolic_sign
 
 RATE_WORDS = ("omega", "spin", "rate", "speed", "angular")  # exams ask "above which rate"
 STIFFNESS_WORDS = ("stiff", "spring", "torsion")  # then "how stiff a spring"
+RATE = Dimension(time=Fraction(-1))
 
 
 @dataclass(frozen=True)
@@ -119,12 +126,12 @@ class Partition:
         return changes(self.pieces)
 
 
-def partition(f: sp.Expr, model) -> Partition | None:
-    """f's sign piece by piece in the first parameter (rates first) whose roots cut its
-    range into pieces of known sign, at least one change of sign among them; None
-    where no parameter does."""
+def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | None:
+    """f's sign piece by piece in the first parameter (``candidates``: ``first``, the one
+    a question names, before all) whose roots cut its range into pieces of known sign,
+    at least one change of sign among them; None where no parameter does."""
     angles = angle_parameters(f)
-    for p in _candidates(f, model, angles):
+    for p in candidates(f, model, angles, first):
         roots = parameter_roots(f, p, angles, model)
         if not roots:
             continue
@@ -134,15 +141,22 @@ def partition(f: sp.Expr, model) -> Partition | None:
         signs = [_sign_on(f, piece, model, angles) for piece in pieces]
         if None in signs:
             continue
-        merged = [Piece(p, pieces[0].low, pieces[0].high, signs[0], span)]
+        merged = [replace(pieces[0], sign=signs[0])]
         for piece, sign in zip(pieces[1:], signs[1:]):
             if sign == merged[-1].sign:
                 merged[-1] = merged[-1].joined(piece)
             else:
-                merged.append(Piece(p, piece.low, piece.high, sign, span))
+                merged.append(replace(piece, sign=sign))
         if len(merged) > 1:
             return Partition(p, tuple(merged))
     return None
+
+
+def allowed(piece: Piece, model) -> bool:
+    """Whether the assumptions that hold the piece's parameter hold somewhere on it:
+    False only where they fail at every sampled point of it (R < r under R > r)."""
+    mine = [a.relation for a in model.assumptions if piece.parameter in a.difference.free_symbols]
+    return not mine or within(piece, sp.And(*mine), model) is not False
 
 
 def at_samples(piece: Piece, expr, model, seed: int, angles: dict) -> list | None:
@@ -175,14 +189,15 @@ def within(piece: Piece, condition: sp.Basic, model) -> bool | None:
 
 
 def existing(pieces, where: sp.Basic, model) -> list[Piece] | None:
-    """The pieces on which ``where`` (an equilibrium's existence) holds; None where one
-    lies partly inside it (the pieces do not line up with it)."""
+    """The pieces on which ``where`` (an equilibrium's existence) holds and the
+    assumptions allow (``allowed``: R < r is no case under R > r); None where one lies
+    partly inside ``where`` (the pieces do not line up with it)."""
     kept = []
     for piece in pieces:
         inside = within(piece, where, model)
         if inside is None:
             return None
-        if inside:
+        if inside and allowed(piece, model):
             kept.append(piece)
     return kept
 
@@ -220,7 +235,8 @@ class Existence:
     criticals: tuple[Critical, ...]
 
 
-def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr] = ()) -> Existence | None:
+def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr] = (),
+                first: sp.Symbol | None = None) -> Existence | None:
     """Where ``values`` are real (``real_where``) and ``nonnegative`` ones are ≥ 0 (the
     value of a square, ω₀²): each condition the assumptions do not decide, piece by
     piece, holds on its positive pieces, a boundary included where the condition is
@@ -231,7 +247,7 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
-        found = partition(condition, model)
+        found = partition(condition, model, first)
         if found is None:
             return None
         closed = {c.value: _finite_at(condition, c) for c in found.criticals}
@@ -249,14 +265,37 @@ def _finite_at(f: sp.Expr, critical: Critical) -> bool:
     return sp.simplify(denominator.xreplace({critical.parameter: critical.value})) != 0
 
 
-def _candidates(f: sp.Expr, model, angles: dict) -> list[sp.Symbol]:
-    """The positive parameters and the angles in f, rates first, then in the file's order."""
+def asked(model, question) -> sp.Symbol | None:
+    """The parameter a question's ``for:`` names, as a symbol (None: none named, or no
+    question)."""
+    name = getattr(getattr(question, "options", None), "for_parameter", None)
+    return model.symbols.parameters[name] if name is not None else None
+
+
+def candidates(f: sp.Expr, model, angles: dict, first: sp.Symbol | None = None) -> list[sp.Symbol]:
+    """The positive parameters and the angles in f, the one the question is about
+    first: ``first`` (a question's ``for:``), then the problem's only parameter without
+    a value, then by kind (``_kind``), each kind in the file's order."""
     order = [model.symbols.parameters[p.name] for p in model.problem.parameters]
     held = [p for p in order if p in f.free_symbols and (p.is_positive or p in angles)]
-    described = {model.symbols.parameters[p.name]: f"{p.name} {p.description}".lower()
-                 for p in model.problem.parameters}
-    return sorted(held, key=lambda p: (not any(w in described[p] for w in RATE_WORDS),
-                                       not any(w in described[p] for w in STIFFNESS_WORDS)))
+    open_ = [p for p in order if p not in model.values]
+    lone = open_[0] if len(open_) == 1 else None
+    kinds = {model.symbols.parameters[p.name]: _kind(p, model.problem.dimension_map())
+             for p in model.problem.parameters}
+    return sorted(held, key=lambda p: (p != first, p != lone, kinds[p]))
+
+
+def _kind(parameter, dimensions: dict) -> int:
+    """0 a rate or a spin, 1 a stiffness, 2 a length, 3 a mass, 4 any other (an
+    acceleration, an angle): by its dimension where the file makes it known, else by
+    its name and description (docs/format.md, "Conditions")."""
+    dimension = dimensions.get(parameter.name)
+    words = f"{parameter.name} {parameter.description}".lower()
+    if dimension == RATE or any(w in words for w in RATE_WORDS):
+        return 0
+    if dimension in (STIFFNESS, TORQUE) or any(w in words for w in STIFFNESS_WORDS):
+        return 1
+    return {LENGTH: 2, MASS: 3}.get(dimension, 4)
 
 
 def _sign_on(f: sp.Expr, piece: Piece, model, angles: dict) -> int | None:

@@ -3,11 +3,14 @@
 In a frame F where the scene is still (a hoop turning at Ω, seen from the hoop), the
 Lagrangian L' = T' + L₁ − V' (see :mod:`rbdsolve.model.frames`) has no explicit time,
 and its q̇-free part gives the effective potential V' = V_gravity + V_springs + the
-centrifugal and translation potentials. Relative equilibria solve ∂V'/∂q = 0, and
+centrifugal potentials (of each centre, −½ m |ω × r'|², and of each body's turning,
+−½ ω·J' ω) and the translation potential. Relative equilibria solve ∂V'/∂q = 0, and
 small oscillations about them follow M ü + G u̇ + K u = 0 with the gyroscopic matrix
-G_ij = ∂c_i/∂q_j − ∂c_j/∂q_i from the part linear in q̇, L₁ = Σ c_i q̇_i. The modes
-solver handles G = 0 (always so with one coordinate); otherwise the question is
-refused rather than answered without G.
+G_ij = ∂c_i/∂q_j − ∂c_j/∂q_i from the part linear in q̇, L₁ = Σ c_i q̇_i, kept in the
+seen model (``Model.gyroscopic``): the modes solver answers with G where it couples
+the coordinates (solvers/modes/gyroscopic.py). "Still" is decided on the scene as F
+sees it, after the frame's turn is taken out of every position and orientation: T'
+and V' hold no t (a body's orientation composes the frame's turn with its own).
 """
 
 from __future__ import annotations
@@ -16,15 +19,14 @@ from dataclasses import replace
 
 import sympy as sp
 
-from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.form.tidy import tidy
-from rbdsolve.model.build import Model
+from rbdsolve.model.build import Model, turning_holds_time
+from rbdsolve.model.state import t
 from rbdsolve.model.energy import potential_energy
-from rbdsolve.model.frames import FrameMotion, frame_lagrangian, frame_motion, in_frame
-from rbdsolve.problem.schema import Question, QuestionKind
+from rbdsolve.model.frames import FrameMotion, frame_motion, in_frame
+from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
 from rbdsolve.solvers.shared.present import present
@@ -43,21 +45,8 @@ def solve_in_frame(solve, question: Question, model: Model, options) -> Solution
     if seen.depends_on_time():
         raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or gravity "
                             "moves in it): it has no relative equilibria there")
-    if question.kind is QuestionKind.MODES:
-        _require_no_gyroscopic_coupling(model, motion)
     solution = solve(question, seen, options)
     return replace(solution, steps=(*_frame_steps(seen, motion), *solution.steps))
-
-
-def _require_no_gyroscopic_coupling(model: Model, motion: FrameMotion) -> None:
-    L = frame_lagrangian(model, motion).L
-    c = [sp.diff(L, qd).xreplace({x: 0 for x in model.qd}) for qd in model.qd]
-    n = len(c)
-    G = sp.Matrix(n, n, lambda i, j: tidy(sp.diff(c[i], model.q[j]) - sp.diff(c[j], model.q[i])))
-    if G != sp.zeros(n, n):
-        raise UnsolvedError(f"in frame '{motion.frame.name}' the motion has gyroscopic (Coriolis) coupling, "
-                            f"G = {to_unicode(sp.ImmutableMatrix(model.readable(G)))}: small oscillations with G are not "
-                            "supported yet")
 
 
 def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
@@ -73,16 +62,47 @@ def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
     return [
         st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
                  "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
-                 "(centrifugal) and m a_O' · r' (the origin's acceleration)."),
+                 "(centrifugal) and m a_O' · r' (the origin's acceleration)"
+                 + ("; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen)
+                    else ".")),
         st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows,
                       Relation(sp.Symbol("V'"), present(V.total, seen))),
     ]
+
+
+def _turning(seen: Model) -> bool:
+    return any(x.name.endswith(", turning") for x in seen.inertial)
+
+
+def spin_warnings(model: Model) -> tuple[str, ...]:
+    """What equilibria from V alone leave out where L has terms linear in the rates that
+    couple the coordinates (a spin, a turning frame's Coriolis terms): said, never
+    dropped. Only scenes that can have them are asked (bodies turned by a sequence of
+    turns, a frame's terms): T is not built otherwise."""
+    if not (model.gyroscopic or any(b.turns for b in model.bodies)) or len(model.q) < 2:
+        return ()
+    from rbdsolve.model.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
+
+    if not has_gyroscopic_terms(model) or gyroscopic_matrix(model) == sp.zeros(len(model.q)):
+        return ()
+    return ("the scene has gyroscopic terms (L holds terms linear in the rates: a spin, or a turning frame's "
+            "Coriolis terms), and the stability here is that of the potential alone: one stable here stays stable "
+            "with them, and one with an odd number of directions of negative curvature stays unstable "
+            "(Kelvin–Tait–Chetaev), but one with an even number may be held by the spin: 'modes' about it answers "
+            "with them (M ü + G u̇ + K u = 0)",)
 
 
 def require_static(model: Model, what: str) -> None:
     """Equilibria and small oscillations of a scene that moves by itself (t appears in
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
     if model.depends_on_time():
+        spun = [b.name for b in model.bodies if b.turns and any(angle.has(t) for _, angle in b.turns)
+                and turning_holds_time(b, model.state)]
+        if spun:
+            raise UnsolvedError(f"body '{spun[0]}' turns at a rate (an angle with t) about an axis that is not one of "
+                                "symmetry of its inertia, so its T changes with t and the scene has no steady state: "
+                                "a steady spin is one about an axis of symmetry (a disk's or a top's axis; "
+                                "docs/format.md, spinning bodies)")
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
                             "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
                             "question's 'frame' option)")

@@ -37,6 +37,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import memoized, potential_energy
+from rbdsolve.model.state import t
 from rbdsolve.solvers.shared.placement_screen import clearly_different, clearly_full_rank
 from rbdsolve.solvers.shared.values import parameter_sample
 
@@ -67,13 +68,15 @@ class Singularity:
 @memoized
 def placement(model: Model) -> sp.Matrix:
     """φ(q): r_G of every body, R of every body with rotational inertia that turns, the
-    stretch of every spring, stacked in one column."""
+    stretch of every spring, stacked in one column. A body spun at a constant rate about
+    an axis of symmetry (a last turn [z, s t], in a scene whose T holds no t) is placed
+    as at t = 0: the spin moves nothing T or V sees."""
     parts: list[sp.Expr] = []
     for body in model.bodies:
         if body.position is not None:
             parts += list(body.position)
         if body.inertia != sp.zeros(3, 3) and (body.angle is not None or body.turns_3d):
-            parts += list(body.rotation)
+            parts += list(body.rotation.xreplace({t: 0}) if body.turns else body.rotation)
     parts += [s.stretch for s in model.springs]
     return sp.Matrix(parts)
 

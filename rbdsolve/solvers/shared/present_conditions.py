@@ -10,6 +10,7 @@ from typing import Sequence
 import sympy as sp
 
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.report import steps as st
 
 
@@ -76,3 +77,9 @@ def _named_side(condition, critical: Sequence) -> sp.Expr:
         if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
             return name
     return rhs
+
+
+def condition_text(condition: sp.Basic) -> str:
+    """A condition in a sentence: Ω ≥ √(g/R), its parts joined by "and"."""
+    parts = condition.args if isinstance(condition, sp.And) else (condition,)
+    return " and ".join(f"{to_unicode(c.lhs)} {OPS.get(type(c), '?')} {to_unicode(c.rhs)}" for c in parts)

@@ -25,7 +25,7 @@ from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings
+from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings, unused_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
 from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
 
@@ -57,7 +57,7 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
-    solution = _with_swing_warnings(question, model, _routed(family, question, model, options))
+    solution = _with_scene_warnings(question, model, _routed(family, question, model, options))
     values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
     overflow = not_finite(solution.answers, model.values) if values else None
     solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
@@ -66,15 +66,18 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
                    seconds=time.perf_counter() - start)
 
 
-USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT})
+USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, QuestionKind.ENERGY,
+                    QuestionKind.REACTIONS})
 
 
-def _with_swing_warnings(question: Question, model: Model, solution: Solution) -> Solution:
-    """A question whose answer rests on T warns of bodies that swing without turning
-    (``summary.unturned``): their T lacks the rotational part. The answer is unchanged."""
-    if question.kind not in USES_T or model.instant:
-        return solution
-    return replace(solution, warnings=(*solution.warnings, *swing_warnings(model)))
+def _with_scene_warnings(question: Question, model: Model, solution: Solution) -> Solution:
+    """What the scene itself makes doubtful, on the questions it bears on: a question
+    whose answer rests on T warns of bodies that swing without turning
+    (``summary.unturned``: their T lacks the rotational part), and every question of a
+    parameter declared and used nowhere (``summary.unused_warnings``: a line left out,
+    such as ``gravity:``). The answers are unchanged."""
+    swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
+    return replace(solution, warnings=(*solution.warnings, *swing, *unused_warnings(model)))
 
 
 def _finite_estimate(solution: Solution) -> Solution:

@@ -57,7 +57,7 @@ def answer_units(answers: object, model: Model) -> object:
         if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
             return None
         if _coordinate_value(named, coordinates):
-            return _coordinate_unit(named[-1], coordinates, angles)
+            return _coordinate_unit(named[-1], coordinates, angles, named[-2] == "steady")
         if _kinematic(named):  # what it is fixes it: a state's bare rate 2 is 2 rad/s, not a pure number
             return _RATES[named[-1]].unit if named[-1] in _RATES else (LENGTH / TIME).unit
         if leaf == 0:
@@ -81,10 +81,11 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
     "moments": INERTIA, "position": LENGTH, "velocity": LENGTH / TIME, "acceleration": LENGTH / TIME ** 2,
     "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
     "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
+    "roots": TIME ** -1, "root_errors": TIME ** -1,  # a gyroscopic system's s = iω and their bounds
 }
 _RATE_UNITS = {k: d.unit for k, d in _RATES.items()}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
-_PER_COORDINATES = {"M": ENERGY * TIME ** 2, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
+_PER_COORDINATES = {"M": ENERGY * TIME ** 2, "G": ENERGY * TIME, "K": ENERGY, "hessian": ENERGY, "curvatures": ENERGY}
 
 
 def _kinematic(named: list[str]) -> bool:
@@ -97,14 +98,16 @@ def _kinematic(named: list[str]) -> bool:
 def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
     """Is the leaf a coordinate's value, rate or acceleration (an equilibrium's, the one
     modes are about, a state's)?"""
-    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent"):
+    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent", "steady"):
         return False
     rate = _RATE_OF.fullmatch(named[-1])
     return (rate.group(2) if rate else named[-1]) in coordinates
 
 
-def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], angles) -> str | None:
-    rate = _RATE_OF.fullmatch(name)
+def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], angles, steady: bool = False) \
+        -> str | None:
+    """A coordinate's unit, or its rate's (``steady``: a cyclic coordinate's steady rate)."""
+    rate = _RATE_OF.fullmatch(f"dot({name})" if steady else name)
     if rate is None:
         return "rad" if name in angles else None if coordinates[name] is None else coordinates[name].unit
     if rate.group(2) in angles:
@@ -117,7 +120,7 @@ def _numeric_unit(named: list[str], indices: list[int], coordinates: Mapping[str
                   angles) -> str | None:
     """The unit of a numeric route's float, from what its key means (module docstring)."""
     if _coordinate_value(named, coordinates):
-        return _coordinate_unit(named[-1], coordinates, angles)
+        return _coordinate_unit(named[-1], coordinates, angles, named[-2] == "steady")
     key = named[-1] if named else None
     if key in _RATES:
         return _RATE_UNITS[key]

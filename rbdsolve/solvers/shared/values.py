@@ -203,7 +203,8 @@ def relevant_parameters(model, question) -> frozenset[sp.Symbol]:
     parameter, a point's position, a body in full, a frame's motion).
     """
     parts: list = [*(s.stiffness for s in model.springs), *(s.stretch for s in model.springs),
-                   *(x.value for x in model.inertial), *model.velocities.values()]
+                   *(x.value for x in model.inertial), *(x.value for x in model.gyroscopic),
+                   *model.velocities.values()]
     parts += [model.gravity] if model.gravity is not None else []
     for body in model.bodies:
         parts += _body_ingredients(body)

@@ -40,7 +40,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
-from rbdsolve.solvers.shared.conditions import critical_values, exists_when
+from rbdsolve.solvers.shared.conditions import asked, critical_values, exists_when
 from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.balances import (
     angle_of,
@@ -72,7 +72,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     held = _reaction_unknowns(opts, model, names)
     branches = _solve_for(opts, targets, relations, model, rates, held)
     solved, along = branches[0] if len(branches) == 1 else ({}, {})
-    several, critical = _branches(branches, targets, model)
+    several, critical = _branches(branches, targets, model, asked(model, question))
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
                                   several, critical, _reactions(opts, k, names, targets, solved, along, held))
@@ -160,7 +160,7 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
     return out
 
 
-def _branches(branches, targets, model: Model):
+def _branches(branches, targets, model: Model, first=None):
     """Every solution with where it is real (solved for one parameter: the least spin for
     which a top's two precession rates exist, the tilt below which a coin's rate is;
     the value of a square, ω₀², must be ≥ 0), and the critical values; none for one
@@ -169,7 +169,7 @@ def _branches(branches, targets, model: Model):
     squares = [k for k, t in enumerate(targets) if t.is_Pow and t.exp.is_even and t.base.is_real]
     for solved, _ in branches:
         values = list(solved.values())
-        found = exists_when(values, model, [values[k] for k in squares])
+        found = exists_when(values, model, [values[k] for k in squares], first)
         out.append(Branch(solved, found.condition if found else sp.true))
         criticals += found.criticals if found else ()
     if len(out) == 1 and out[0].exists_when is sp.true:

@@ -149,3 +149,34 @@ def test_stability_between_two_critical_rates_is_sampled() -> None:
         (case,) = [c for c in eq.stability_cases
                    if bool(sp.parse_expr(str(c.when), local_dict=names).subs(at))]
         assert case.stability.value == ("stable" if stable else "unstable")
+
+
+# A bead on a circle of radius R − r, with the assumption R² > r² (not linear in any
+# parameter, so it decides no sign by substitution, only the samples): V = −m g (R − r)
+# cos θ, K = m g (R − r) at θ = 0 and −m g (R − r) at π (by hand). Under the assumption
+# R > r: stable at 0, unstable at π, with no case R < r (issue 38).
+SQUARED = """\
+parameters: {m: mass, R: outer radius, r: inner radius, g: gravity}
+assumptions: [R**2 > r**2]
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: (R - r)*[sin(theta), -cos(theta)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+questions:
+  - equilibria
+"""
+
+
+def test_a_case_the_assumptions_rule_out_is_no_case() -> None:
+    (solution,) = solve_problem(build_model(load_text(SQUARED, "bead.yaml"))).solutions
+    found = {str(eq.at["theta"]): eq for eq in solution.answers.equilibria}
+    assert found["0"].stability.value == "stable" and found["0"].stability_cases == ()
+    assert found["pi"].stability.value == "unstable" and found["pi"].stability_cases == ()
+    assert solution.answers.critical == ()
+    rng = random.Random(38)
+    for _ in range(20):  # the hand K at 0 is positive wherever the assumption holds
+        R, r, m, g = (rng.uniform(0.1, 5) for _ in range(4))
+        if R**2 > r**2:
+            assert m * g * (R - r) > 0

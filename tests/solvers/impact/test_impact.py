@@ -142,7 +142,7 @@ def test_impulse_equations_matrix_is_the_mass_matrix() -> None:
     model = build_model(load_text(text, "scene.yaml"))
     opts = model.problem.questions[0].options
     now = instant(model, opts)
-    work = ImpactEquations(model, opts, now, blows(model, opts))
+    work = ImpactEquations(model, opts, now, blows(model, opts, now))
     A, _ = sp.linear_eq_to_matrix([sp.expand(x) for x in work.lagrange()], list(work.final))
     M, m, l = (model.symbols.parameters[n] for n in ("M", "m", "l"))
     by_hand = sp.Matrix([[M + m, m * l / 2 * sp.cos(sp.pi / 3)], [m * l / 2 * sp.cos(sp.pi / 3), m * l**2 / 3]])

@@ -106,3 +106,86 @@ def test_about_each_on_the_numeric_route() -> None:
         assert modes.about["theta"] == pytest.approx(theta, abs=1e-9)
         (lam,) = modes.eigenvalues
         assert lam == pytest.approx(0.3 * (1 - float(k) * math.cos(theta)) / (4 / 3), rel=1e-9)
+
+
+# --- cases only where the answer exists (issue 38) ---------------------------------------
+
+
+def test_modes_about_an_equilibrium_that_exists_only_above_the_critical_rate() -> None:
+    """θ = acos(g/(R Ω²)) exists only where Ω ≥ Ω_c = √(g/R); there λ = Ω² − g²/(R² Ω²) > 0
+    (by hand: K = m (Ω² R² − g²/Ω²), M = m R²), so one kind, an oscillation: no "growth
+    when Ω < Ω_c", no critical value; the solution says where it exists."""
+    report = solve_problem(build_model(load_text(
+        (PROBLEMS / "conditions" / "bead-on-hoop-off-axis.yaml").read_text(), "hoop.yaml")))
+    (solution,) = report.solutions
+    assert solution.solved, solution.error
+    answers = solution.answers
+    assert [m.value for m in answers.motions] == ["oscillation"] and answers.cases == () and answers.critical == ()
+    R, g, Om = (sp.Symbol(n, positive=True) for n in ("R", "g", "Omega"))
+    (lam,) = answers.eigenvalues
+    lam = sp.parse_expr(str(lam), local_dict={"R": R, "g": g, "Omega": Om})
+    assert sp.simplify(lam - (Om**2 - g**2 / (R**2 * Om**2))) == 0
+    rng = random.Random(38)
+    for _ in range(40):  # wherever it exists (above Ω_c) λ > 0; below Ω_c acos is not real
+        at = {R: rng.uniform(0.1, 5), g: rng.uniform(1, 20)}
+        rate = math.sqrt(at[g] / at[R])
+        above, below = rate * rng.uniform(1.02, 5), rate * rng.uniform(0.2, 0.98)
+        assert float(lam.subs({**at, Om: above})) > 0
+        assert abs(at[g] / (at[R] * below**2)) > 1  # no equilibrium: acos(g/(R Ω²)) is not real
+    (note,) = [step for step in solution.steps if "exists only where" in step.text]
+    (bound,) = note.math
+    assert sp.simplify(sp.parse_expr(str(bound.rhs), local_dict={"R": R, "g": g}) - sp.sqrt(g / R)) == 0
+
+
+def test_a_case_outside_the_assumptions_is_no_case() -> None:
+    """A disk (m, r) rolling inside a ring (M, R) on an axle, R given, r not: the contact
+    implies R > r, so λ = g (2M + m)/((3M + m)(R − r)) (by hand, docs in the golden file)
+    is positive: an oscillation, with no case "growth when r > R" and no critical value.
+    Sampled with r < R: the hand λ is positive at each."""
+    text = (PROBLEMS / "conditions" / "disk-in-turning-ring.yaml").read_text()
+    answers = _modes(text)
+    assert [m.value for m in answers.motions] == ["neutral", "oscillation"]
+    assert answers.cases == () and answers.critical == ()
+    M, R, m, g, r = (sp.Symbol(n, positive=True) for n in ("M", "R", "m", "g", "r"))
+    lam = sp.parse_expr(str(answers.eigenvalues[1]), local_dict={"M": M, "R": R, "m": m, "g": g, "r": r})
+    assert sp.simplify(lam - g * (2 * M + m) / ((3 * M + m) * (R - r))) == 0
+    rng = random.Random(38)
+    for _ in range(20):  # inside the assumption (r < R = 2, the file's values) λ > 0
+        at = {M: 2, R: 2, m: 1, g: sp.Rational(981, 100), r: sp.Rational(rng.randint(1, 1999), 1000)}
+        assert lam.subs(at) > 0
+
+
+def test_the_equilibrium_is_stable_under_the_assumption_when_a_value_is_given() -> None:
+    """A cylinder (m, r) rolling inside a hollow cylinder R with R given and r not: the
+    contact implies R > r, which decides K = g m (R − r) > 0 at θ = 0 (stable) and < 0 at
+    θ = π (unstable) though the value of R drops the substitution R = r + δ."""
+    text = (PROBLEMS / "conditions" / "cylinder-in-cylinder.yaml").read_text().replace(
+        "assumptions: [R > r]", "values: {R: 1}")
+    report = solve_problem(build_model(load_text(text, "cylinder.yaml")))
+    equilibria, modes = report.solutions
+    stabilities = {str(e.at["theta"]): e.stability.value for e in equilibria.answers.equilibria}
+    assert stabilities == {"0": "stable", "pi": "unstable"}
+    assert [k.value for k in modes.answers.motions] == ["oscillation"] and modes.answers.cases == ()
+
+
+def test_kinds_and_cases_agree() -> None:
+    """Wherever a λ has cases they are two or more, and its kind is `depends`, or, where
+    the values decide it, the kind of the case the values fall in."""
+    texts = [_without_values(PROBLEMS / "frames" / "rotating-hoop-slow.yaml")]
+    texts += [(PROBLEMS / "frames" / name).read_text() for name in ("rotating-hoop-slow.yaml", "rotating-hoop-fast.yaml")]
+    for text in texts:
+        report = solve_problem(build_model(load_text(text, "hoop.yaml")))
+        for solution in report.solutions:
+            if solution.question != "modes":
+                continue
+            a = solution.answers
+            values = {sp.Symbol(n, positive=True): v for n, v in report.values.items()}
+            for motion, cases in zip(a.motions, a.cases or [()] * len(a.motions)):
+                if not cases:
+                    assert motion.value != "depends"
+                    continue
+                assert len(cases) >= 2
+                if motion.value != "depends":
+                    (held,) = [c for c in cases if bool(sp.parse_expr(str(c.when), local_dict={
+                        str(s): s for s in values}).subs(values))]
+                    assert held.kind is motion

@@ -82,8 +82,8 @@ def test_the_half_disk_upside_down_is_not_listed_and_the_reason_is_given() -> No
     model = _model(*SCENES["half disk on the floor"][:2])
     listed = listing(model)
     assert [x.at[model.q[0]] for x in listed.equilibria] == [0]
-    assert any("q = pi is a solution of ∂V/∂q = 0 but not an equilibrium" in w
-               and "-pi/2 <= q <= pi/2" in w for w in listed.warnings)
+    assert any("q = π is a solution of ∂V/∂q = 0 but not an equilibrium" in w
+               and "−π/2 ≤ q ≤ π/2" in w for w in listed.warnings)
 
 
 def test_modes_about_a_point_off_the_edge_are_refused_on_both_routes() -> None:
@@ -112,4 +112,28 @@ def test_where_the_parameters_leave_the_span_open_the_equilibrium_is_kept_with_i
     model = build_model(load_text(text))
     listed = listing(model)
     assert sorted(x.at[model.q[0]] for x in listed.equilibria) == [0, sp.pi]
-    assert any("q = pi is an equilibrium only while" in w and "-alpha <= q <= alpha" in w for w in listed.warnings)
+    assert any("q = π is an equilibrium only while" in w and "−α ≤ q ≤ α" in w for w in listed.warnings)
+
+
+def test_the_ranges_of_inverse_functions_decide_a_side_where_sampling_agrees() -> None:
+    """π − atan(u) − π/2 > 0 and −atan(u) + π/2 > 0 for every u > 0 (the half ring with a
+    particle: its second root of ∂V/∂θ = 0 is off the arc); asin and acos by their
+    ranges; an expression whose range meets 0 stays undecided. Each decided sign is
+    checked at random positive values of the parameters."""
+    import random
+
+    from rbdsolve.solvers.shared.contact_span import _bounded_sign
+
+    m, M = sp.symbols("m M", positive=True)
+    u = sp.pi * m / (2 * M)
+    cases = {sp.pi - sp.atan(u) - sp.pi / 2: 1, sp.pi / 2 - sp.atan(u): 1, -sp.atan(u) - sp.pi / 2: -1,
+             sp.acos(u / (1 + u)) - sp.pi / 2: -1, sp.asin(-u / (1 + u)) + sp.pi: 1,
+             sp.atan(u) - sp.pi / 4: None, sp.atan(m - M): None}
+    rng = random.Random(40)
+    for expr, sign in cases.items():
+        assert _bounded_sign(expr) == sign, expr
+        if sign is None:
+            continue
+        for _ in range(20):
+            at = {m: rng.uniform(1e-3, 1e3), M: rng.uniform(1e-3, 1e3)}
+            assert sign * float(expr.xreplace(at)) > 0, (expr, at)

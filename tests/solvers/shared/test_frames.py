@@ -76,13 +76,23 @@ def test_a_spring_anchored_off_the_axis_is_not_still_in_the_frame() -> None:
     assert modes.error is not None and "still depends on t" in modes.error
 
 
-def test_gyroscopic_coupling_is_refused_for_modes() -> None:
+def test_gyroscopic_coupling_is_answered_with_g() -> None:
+    """A bead held to the axis of a turntable by a spring, free in the plane (x, y in
+    the table's frame). By hand: L' = ½ m (ẋ² + ẏ²) + m Ω (x ẏ − y ẋ) − ½ (k − m Ω²)(x² + y²),
+    so c = m Ω (−y, x), G = 2 m Ω [[0, −1], [1, 0]] (Gᵢⱼ = ∂cᵢ/∂qⱼ − ∂cⱼ/∂qᵢ), and
+    det(K − ω²M + iωG) = (k − m Ω² − m ω²)² − 4 m² Ω² ω² = 0: ω = √(k/m) ± Ω, stable for
+    every Ω (k = 10, m = 1, Ω = 1: ω = √10 ∓ 1)."""
     text = SLOT.replace("coordinates: [r]", "coordinates: [x, y]").replace(
         "P: r*[cos(Omega*t), sin(Omega*t)]",
         "P: [x*cos(Omega*t) - y*sin(Omega*t), x*sin(Omega*t) + y*cos(Omega*t)]").replace(
         "about: {r: 0}", "about: {x: 0, y: 0}")
     (modes,) = solve(text)
-    assert modes.error is not None and "gyroscopic (Coriolis) coupling" in modes.error
+    assert modes.error is None, modes.error
+    a = modes.answers
+    assert sp.simplify(a.G - sp.Matrix([[0, -2 * m * Omega], [2 * m * Omega, 0]])) == sp.zeros(2)
+    assert a.stability.value == "stable"
+    assert sorted(float(x.subs({m: 1, k: 10, Omega: 1})) for x in a.frequencies) == \
+        pytest.approx([10**0.5 - 1, 10**0.5 + 1], rel=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -97,3 +107,77 @@ def test_bad_frames_are_located(old, new, words) -> None:
     with pytest.raises(InputError, match=words) as info:
         solve(SLOT.replace(old, new))
     assert info.value.location.key_path().startswith("frames.table")
+
+
+# A disk hinged at a point O of its rim to a vertical shaft turning at Ω, the pin
+# horizontal, tangent to the rim and turning with the shaft (the disk's plane holds the
+# pin and OG). By hand, with θ the angle of OG from the downward vertical: about O the
+# disk's moments are m r²/4 along OG, 5 m r²/4 about the pin and 3 m r²/2 about its
+# normal; the vertical lies in the plane of OG and the normal, so ½ Ω² n·J_O n =
+# ½ Ω² m r² (1/4 + 5/4 sin²θ) and V' = −m g r cos θ − (5/8) Ω² m r² sin²θ + const:
+# cos θ₀ = 4 g/(5 Ω² r), Ω_c = √(4g/(5r)) (a particle at G would give √(g/r)), and with
+# M = 5 m r²/4, λ = 4g/(5r) − Ω² about θ = 0.
+DISK_ON_SHAFT = """
+parameters: {m: mass, r: radius, g: gravity, Omega: rate}
+coordinates: [theta]
+gravity: [0, 0, -g]
+frames:
+  shaft: {axis: z, rate: Omega}
+points:
+  G: r*[sin(theta)*cos(Omega*t), sin(theta)*sin(Omega*t), -cos(theta)]
+bodies:
+  disk: {shape: disk, mass: m, radius: r, at: G, axis: x, orientation: [[z, Omega*t], [y, -theta]]}
+questions:
+  - equilibria: {frame: shaft}
+  - modes: {frame: shaft, about: {theta: 0}}
+"""
+
+
+def test_a_disk_hinged_to_a_turning_shaft_uses_its_inertia_tensor() -> None:
+    gr, r = sp.symbols("g r", positive=True)
+    equilibria, modes = solve(DISK_ON_SHAFT)
+    assert equilibria.error is None, equilibria.error
+    (critical,) = equilibria.answers.critical
+    assert sp.simplify(critical.value - sp.sqrt(4 * gr / (5 * r))) == 0
+    found = {e.at["theta"] for e in equilibria.answers.equilibria}
+    assert sp.acos(4 * gr / (5 * Omega**2 * r)) in found
+    assert sp.simplify(modes.answers.M[0, 0] - 5 * m * r**2 / 4) == 0
+    assert sp.simplify(modes.answers.eigenvalues[0] - (4 * gr / (5 * r) - Omega**2)) == 0
+
+
+def test_a_rod_pinned_at_its_centre_turns_across_the_shaft() -> None:
+    """No gravity moment: V' = −½ Ω² (m l²/12) sin²θ alone, the centre giving nothing;
+    θ = ±π/2 stable with λ = Ω² (by hand), θ = 0, π unstable."""
+    text = DISK_ON_SHAFT.replace("r: radius", "l: length").replace(
+        "  G: r*[sin(theta)*cos(Omega*t), sin(theta)*sin(Omega*t), -cos(theta)]\n", "  G: [0, 0, 0]\n").replace(
+        "disk: {shape: disk, mass: m, radius: r, at: G, axis: x,",
+        "rod: {shape: rod, mass: m, length: l, at: G, axis: z,")
+    text = text.replace("about: {theta: 0}", "about: {theta: pi/2}")
+    equilibria, modes = solve(text)
+    found = {e.at["theta"]: e.stability.value for e in equilibria.answers.equilibria}
+    assert found == {0: "unstable", sp.pi: "unstable", sp.pi / 2: "stable", -sp.pi / 2: "stable"}
+    assert sp.simplify(modes.answers.eigenvalues[0] - Omega**2) == 0
+
+
+def test_a_planar_angle_in_a_frame_turning_about_another_axis_names_the_orientation() -> None:
+    text = """
+parameters: {m: mass, l: length, g: gravity, Omega: rate}
+coordinates: [theta]
+gravity: [0, -g, 0]
+frames:
+  shaft: {axis: y, rate: Omega}
+points:
+  G: l/2*[sin(theta)*cos(Omega*t), -cos(theta), -sin(theta)*sin(Omega*t)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+questions:
+  - equilibria: {frame: shaft}
+"""
+    (equilibria,) = solve(text)
+    assert "planar 'angle'" in equilibria.error and "orientation: [[y, Omega*t], [z, theta]]" in equilibria.error
+    fixed = text.replace("angle: theta, axis: y}", "axis: -y, orientation: [[y, Omega*t], [z, theta]]}")
+    (equilibria,) = solve(fixed)
+    assert equilibria.error is None, equilibria.error
+    l = sp.Symbol("l", positive=True)
+    assert {e.at["theta"] for e in equilibria.answers.equilibria} >= {0, sp.acos(3 * sp.Symbol("g", positive=True)
+                                                                           / (2 * l * Omega**2))}

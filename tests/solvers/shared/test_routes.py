@@ -92,6 +92,12 @@ def test_numeric_route_agrees_with_exact(path) -> None:
             assert n.error is not None and "found no solution" in n.error, n.error
             compared += 1
             continue
+        if question.kind is QuestionKind.INERTIA and any(x is None for row in e.values["J"] for x in row):
+            # a tensor that is a formula in the coordinates (no 'at:') has no numbers: the
+            # numeric route asks for the configuration instead of answering
+            assert n.error is not None and "depends on the configuration" in n.error, n.error
+            compared += 1
+            continue
         assert n.error is None, f"{question.kind.value}: numeric route failed: {n.error}"
         assert n.route.value == "numeric"  # no estimate only where a warning says why (a singular Hessian)
         assert n.error_estimate is not None or any(w.startswith("no error estimate") for w in n.warnings)
@@ -117,6 +123,13 @@ def test_numeric_route_agrees_with_exact(path) -> None:
 def _same_modes(e, n) -> None:
     if hasattr(e.answers, "modes"):  # about: each, matched equilibrium by equilibrium
         _same_modes_at_each(e, n)
+        return
+    if hasattr(e.answers, "G"):  # gyroscopic: the frequencies within the roots' bounds, the same stability
+        assert n.answers.stability == e.answers.stability
+        bound = max(n.answers.root_errors)
+        assert len(e.values["frequencies"]) == len(n.answers.frequencies)
+        for w, g in zip(e.values["frequencies"], n.answers.frequencies):
+            assert abs(g - float(w)) <= bound, (g, w, bound)
         return
     want = [float(x) for x in e.values["eigenvalues"]]
     got = list(n.answers.eigenvalues)

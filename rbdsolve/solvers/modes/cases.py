@@ -1,0 +1,109 @@
+"""The kind of each small oscillation, and where it exists: oscillation, growth or
+neutral by the sign of λ; where the parameters decide that sign, the cases an exam
+writes ("oscillation when Ω < Ω_c, growth when Ω > Ω_c", ``shared/conditions.py``),
+only where the equilibrium exists and the assumptions allow: a λ left with one case is
+of that kind (an off-axis equilibrium that exists only above Ω_c oscillates there), and
+a mode's cases are two or more (docs/json.md). What ``equilibria/cases.py`` is to equilibria.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.equilibria.exact import decided_inertia
+from rbdsolve.solvers.modes.answers import Motion, MotionCase
+from rbdsolve.solvers.shared.conditions import changes, exists_when, existing, partition, what_decides
+from rbdsolve.solvers.shared.present_conditions import condition_text
+from rbdsolve.solvers.shared.signs import Inertia, Undecided, sign_of
+
+
+def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
+    """Where the equilibrium ``at`` is real (θ = acos(g/(R Ω²)) only where Ω ≥ √(g/R)),
+    solved for ``first`` where it can; true where it always is, or cannot be split."""
+    found = exists_when(at.values(), model, first=first)
+    return found.condition if found else sp.true
+
+
+def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
+    """Why the equilibrium ``at`` does not exist at the given values (a coordinate that is
+    not a real number there: acos(g/(R Ω²)) below Ω_c), or None: no modes of it."""
+    names = dict(zip(model.q, model.coordinate_names()))
+    for q, value in at.items():
+        number = value.xreplace(dict(model.values))
+        if not model.values or number.free_symbols:
+            continue
+        z = complex(sp.N(number, 20))
+        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+            needs = "" if where is sp.true else f": it exists only where {condition_text(where)}"
+            return (f"the equilibrium {unicode_name(names[q])} = {to_unicode(value)} does not exist at the parameter "
+                    f"values ({unicode_name(names[q])} is not a real number there){needs}")
+    return None
+
+
+def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
+          first: sp.Symbol | None = None):
+    """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
+    parameters decide (its critical values: ``shared/conditions.py``), those outside
+    ``where`` the equilibrium exists or outside the assumptions left out (a λ left with
+    one case is of that kind: an off-axis equilibrium that exists only above Ω_c
+    oscillates there). A λ has cases only where it has two or more; then its kind is
+    ``depends``, or, where the values decide its sign, the kind of the case they fall
+    in. When a λ's sign is not decided by itself, Sylvester's law of inertia decides it: with M
+    positive definite, K a = λ M a has as many positive, zero and negative λ as K has
+    eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
+    every λ positive."""
+    counts = decided_inertia(K, model)
+    motions, cases, criticals = [], [], []
+    for lam in eigenvalues:
+        sign = _decided_sign(lam, model)
+        if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
+                and counts.positive + counts.zero + counts.negative == len(eigenvalues):
+            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
+        if isinstance(sign, Undecided):
+            found = _cases(lam, model, where, first)
+            if found is None:
+                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
+                                    f"way rbdsolve cannot split into cases; {what_decides(lam)}")
+            if len(found[0]) == 1:
+                motions.append(found[0][0].kind)
+                cases.append(())
+                continue
+            motions.append(Motion.DEPENDS)
+            cases.append(found[0])
+            criticals += found[1]
+            continue
+        motions.append(KIND[sign])
+        # decided by the values: the cases still say where that holds, as for equilibria
+        open_ = model.values and isinstance(sign_of(lam, model.assumed), Undecided)
+        found = _cases(lam, model, where, first) if open_ else None
+        kept = found if found and len(found[0]) > 1 else None
+        cases.append(kept[0] if kept else ())
+        criticals += kept[1] if kept else []
+    return tuple(motions), tuple(cases), criticals
+
+
+KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
+
+
+def _decided_sign(lam: sp.Expr, model: Model) -> int | Undecided:
+    """λ's sign by the values and the assumptions' substitutions, else by the assumptions
+    alone (as ``decided_inertia``: R given drops R = r + δ)."""
+    sign = sign_of(lam, model.decided_by)
+    if isinstance(sign, Undecided) and model.assumed:
+        alone = sign_of(lam, model.assumed)
+        return sign if isinstance(alone, Undecided) else alone
+    return sign
+
+
+def _cases(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None = None):
+    """(cases, critical values) for a λ whose sign changes at critical values, the
+    pieces where the equilibrium does not exist (or the assumptions rule out) left out;
+    None where it cannot be split (or a piece lies partly where it exists)."""
+    found = partition(lam, model, first)
+    kept = existing(found.pieces, where, model) if found else None
+    if not kept:
+        return None
+    return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))

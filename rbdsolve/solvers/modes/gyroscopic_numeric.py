@@ -1,0 +1,111 @@
+"""Small oscillations with gyroscopic terms, in floating point.
+
+M ü + G u̇ + K u = 0 at the parameter values, M, G and K from the exact linearization
+(solvers/modes/routh.py) rounded once. With u = X e^(st) the quadratic eigenproblem
+(s² M + s G + K) X = 0 is solved as the generalized eigenproblem of its first-order
+form (Tisseur & Meerbergen, The quadratic eigenvalue problem, SIAM Review 2001, §3.4),
+
+    [[0, 1], [−K, −G]] z = s [[1, 0], [0, M]] z,   z = (X, s X),
+
+by the QZ algorithm (scipy.linalg.eig). s = iω: a real ω is an oscillation, Re s > 0
+a growth. The same eigenvalues at 50 digits (mpmath, from M⁻¹) measure the error: the
+absolute error bound of each s is its distance to the nearest 50-digit eigenvalue,
+times 10 (M, G and K are exact values rounded once, so the 50-digit ones see what
+rounding does to them). A root within its bound of the imaginary axis is taken as on
+it: the motion is stable to first order when every root is (the roots of a
+gyroscopic system come as ±s, ±s̄, so none can be left of the axis alone).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.equilibria.answers import Stability
+from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
+from rbdsolve.solvers.modes.gyroscopic import refuse_options
+from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
+from rbdsolve.solvers.modes.routh import linearize
+from rbdsolve.solvers.shared.numeric_model import to_floats
+
+DIGITS = 50
+SAFETY = 10.0  # the bound is this many times the distance to the 50-digit eigenvalue
+
+
+def solve(question: Question, model: Model) -> Solution:
+    """The floating-point route's answer about the steady state the question names."""
+    refuse_options(question)
+    at, notes = _steady_state(question, model)
+    linear = linearize(question, model, at)
+    M, G, K = (to_floats(x, model.values) for x in (linear.M, linear.G, linear.K))
+    s, bounds = quadratic_eigenvalues(M, G, K, [x.xreplace(dict(model.values)) for x in (linear.M, linear.G, linear.K)])
+    growth = max(float(np.max(s.real - bounds)), 0.0)
+    stability = Stability.UNSTABLE if growth > 0 else Stability.STABLE
+    on_axis = np.abs(s.real) <= bounds
+    frequencies = sorted({round(abs(float(x.imag)), 12): abs(float(x.imag)) for x in s[on_axis] if x.imag > 0}.values())
+    neutral = int(np.sum(on_axis & (np.abs(s) <= bounds)) // 2)
+    numbers = {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in linear.about.items()}
+    answers = NumericGyroscopicModesAnswers(
+        numbers, {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in linear.steady.items()},
+        _rows(M), _rows(G), _rows(K), tuple(frequencies), stability,
+        tuple(sorted({round(float(x), 12): float(x) for x in s.real[s.real - bounds > 0]}.values())),
+        tuple((float(x.real), float(x.imag)) for x in s), tuple(float(b) for b in bounds), neutral)
+    estimate = max((float(b / abs(x)) for x, b in zip(s, bounds) if abs(x) > b), default=None)
+    return Solution("modes", Route.NUMERIC, answers, numeric_gyroscopic_steps(answers, linear, model),
+                    warnings=notes, error_estimate=estimate)
+
+
+def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
+    """As the exact route, the numeric equilibria where 'about' names none."""
+    if question.options.about is not None:
+        values = dict(question.options.about)
+        return {q: model.symbols.scalar(values[n]) for q, n in zip(model.q, model.coordinate_names())
+                if n in values}, ()
+    from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
+
+    found, notes = equilibrium_for_modes(question, model)
+    return {q: found[n] for q, n in zip(model.q, model.coordinate_names())}, notes
+
+
+def quadratic_eigenvalues(M: np.ndarray, G: np.ndarray, K: np.ndarray, exact) -> tuple[np.ndarray, np.ndarray]:
+    """s of (s² M + s G + K) X = 0 (QZ on the first-order form) and each one's absolute
+    error bound against the same at 50 digits (the module docstring)."""
+    from scipy.linalg import eig
+
+    n = len(M)
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -G]])
+    B = np.block([[np.eye(n), np.zeros((n, n))], [np.zeros((n, n)), M]])
+    s = eig(A, B, right=False)
+    if not np.all(np.isfinite(s)):
+        raise UnsolvedError("the mass matrix is singular at this configuration: a coordinate carries no inertia")
+    reference = _reference(*exact)
+    bounds = np.array([SAFETY * min(abs(complex(x) - r) for r in reference) for x in s])
+    scale = max(float(np.max(np.abs(s))), 1.0)
+    return s, np.maximum(bounds, 4 * n * np.finfo(float).eps * scale)
+
+
+def _reference(M: sp.Matrix, G: sp.Matrix, K: sp.Matrix) -> list[complex]:
+    """The eigenvalues of [[0, 1], [−M⁻¹K, −M⁻¹G]] at 50 digits (mpmath)."""
+    import mpmath
+
+    with mpmath.workdps(DIGITS + 10):
+        Mm, Gm, Km = (mpmath.matrix([[mpmath.mpf(sp.N(x, DIGITS + 10)) for x in row] for row in X.tolist()])
+                      for X in (M, G, K))
+        n = Mm.rows
+        inverse = mpmath.inverse(Mm)
+        A = mpmath.zeros(2 * n, 2 * n)
+        top, bottom = -inverse * Km, -inverse * Gm
+        for i in range(n):
+            A[i, n + i] = 1
+            for j in range(n):
+                A[n + i, j], A[n + i, n + j] = top[i, j], bottom[i, j]
+        values = mpmath.eig(A, left=False, right=False)
+        return [complex(v) for v in values]
+
+
+def _rows(A: np.ndarray) -> tuple[tuple[float, ...], ...]:
+    return tuple(tuple(float(x) for x in row) for row in A)
