@@ -32,6 +32,10 @@ KNOWN_FAILURES: dict[int, str] = {
     14: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided-pendulum)",
     32: "energy: there.reached is true where q̇² at 'to' depends on the parameters (as 14)",
     35: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided)",
+    34: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (as 84; a cylinder segment rocking)",
+    52: "equilibria: a bead on a sprung turning rod, x = m Ω² a/(k − m Ω²) listed without where a + x > 0 "
+        "(turning-rod-spring-equilibrium-unconditioned)",
+    53: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (as 84)",
     84: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (rocking-reactions-relational)",
 }
 
@@ -42,19 +46,18 @@ def outcomes():
 
 
 def test_neighbours_of_the_fixed_seed_agree_with_the_oracle(outcomes):
+    """Every scene judged (a question the oracle has no check for would pass unseen:
+    there is none), no new mismatch or crash, and every known one still there. One test
+    on the whole run, so that pytest-xdist never runs the hundred scenes twice."""
+    assert len(outcomes) == COUNT
+    unchecked = [(o.name, q.kind) for o in outcomes for q in o.questions if q.status == "unchecked"]
+    assert not unchecked
     failing = {i: o for i, o in enumerate(outcomes) if o.status in ("mismatch", "crashed", "oracle")}
     new = {i: [(q.kind, q.status, q.reason[:300]) for q in o.questions if q.status in ("mismatch", "crashed", "oracle")]
            for i, o in failing.items() if i not in KNOWN_FAILURES}
     fixed = sorted(set(KNOWN_FAILURES) - set(failing))
     assert not new, f"{summary_line(outcomes)}\nnew failures: {json.dumps(new, indent=1, ensure_ascii=False)}"
     assert not fixed, f"known failures that now pass (remove them from KNOWN_FAILURES): {fixed}"
-
-
-def test_every_scene_is_judged_by_the_oracle(outcomes):
-    """A question the oracle has no check for would pass unseen: there is none."""
-    assert len(outcomes) == COUNT
-    unchecked = [(o.name, q.kind) for o in outcomes for q in o.questions if q.status == "unchecked"]
-    assert not unchecked
 
 
 @pytest.fixture(scope="module")

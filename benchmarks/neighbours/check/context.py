@@ -129,9 +129,14 @@ def boundary_points(ctx: Context, result: dict) -> list[int]:
 
 
 def random_state(ctx: Context, i: int):
+    """q, q̇, q̈ drawn in the coordinates' scales, q on the side of every spring along one
+    axis that the reference configuration is on (``System.spring_crossed``)."""
     s = ctx.system(i)
     n = s.n
-    q = [mpmath.mpf(float(x) * sc) for x, sc in zip(ctx.rng.uniform(-1, 1, n), s.scale)]
+    for _ in range(50):
+        q = [mpmath.mpf(float(x) * sc) for x, sc in zip(ctx.rng.uniform(-1, 1, n), s.scale)]
+        if not s.spring_crossed(q):
+            break
     qd = [mpmath.mpf(float(x)) for x in ctx.rng.uniform(-2, 2, n)]
     qdd = [mpmath.mpf(float(x)) for x in ctx.rng.uniform(-2, 2, n)]
     return q, qd, qdd

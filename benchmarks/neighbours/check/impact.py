@@ -78,7 +78,7 @@ def check(ctx: Context, question, result: dict) -> None:
             elif kind == "stick":
                 sticking.setdefault(obj.point, [s.zero, s.zero])[d] = out["impulses"][j]
         for c in cols:
-            if c.sticks:
+            if c.sticks and c.velocity is not None:  # a particle that sticks (a body's point has no velocity of its own)
                 P = sticking[c.point]
                 part_after[c.point] = [c.velocity[k] - P[k] / c.mass for k in range(2)]
             elif c.after is not None:

@@ -68,7 +68,8 @@ def check(ctx: Context, question, result: dict) -> None:
             if abs(np.linalg.norm(e) - 1) > 1e-8 or np.linalg.norm(JPp @ e - float(rd(lam_s)) * e) > max(tol, 1e-9) * scale:
                 raise Mismatch(f"principal axis {fmt(list(e))} is not a unit eigenvector of J for {lam_s}")
         if answers.get("J_axis") is not None:
-            axis = list(ctx.const(opts["axis"], i)) if isinstance(opts["axis"], str) else opts["axis"]
+            given = opts.get("axis", answers.get("axis"))  # without 'axis': the plane's normal, answered
+            axis = list(ctx.const(given, i)) if isinstance(given, str) else given
             n = np.array([float(ctx.const(x, i)) for x in axis] + [0.0] * (3 - len(axis)))
             e = n / np.linalg.norm(n)
             want = e @ JP @ e

@@ -180,7 +180,8 @@ def _lost(ctx, s, answers, q0, i, scale):
         sup = next(x for x in ctx.scene.supports if x.name == name)
         values = []
         for q, w2 in reach[::8]:
-            forces, _ = support_forces(s, [q], [mpmath.sqrt(rate_squared(s, (q0, zero), [q]))])
+            # at the scan's last point the float q̇² ≥ 0 may be a rounding below 0 in 40 digits
+            forces, _ = support_forces(s, [q], [mpmath.sqrt(max(rate_squared(s, (q0, zero), [q]), 0))])
             values.append((q, list(_components(s, sup, *forces[name][:2], [q]).values())[0]))
         zeros = [_bisect(s, sup, name, q0, a, b) for (a, fa), (b, fb) in zip(values, values[1:]) if fa * fb < 0]
         if values and abs(values[0][1]) < 1e-12 * scale:

@@ -218,6 +218,25 @@ class System:
             V = V + k * x * x / 2
         return V
 
+    def spring_crossed(self, q, t=0) -> bool:
+        """Has a spring that lies along one axis passed through zero length between the
+        reference configuration (every coordinate 0) and q? rbdsolve writes such a
+        spring's length √(u²) as u or −u by its sign there (issue 38, item 8), true on
+        that side only; an exam's spring never passes through zero length, so states
+        beyond are not asked about."""
+        here, ref = self.env(q, t), self.env([self.zero] * self.n, t)
+        for s in self.scene.springs:
+            if s.angle is not None:
+                continue
+            d0 = [float(x) for x in evaluate(s.ends[1], ref) - evaluate(s.ends[0], ref)]
+            d = [float(x) for x in evaluate(s.ends[1], here) - evaluate(s.ends[0], here)]
+            size = max(abs(x) for x in d0 + d) or 1.0
+            axes0 = [k for k, x in enumerate(d0) if abs(x) > 1e-12 * size]
+            axes = [k for k, x in enumerate(d) if abs(x) > 1e-12 * size]
+            if len(axes0) == 1 and axes == axes0 and d0[axes0[0]] * d[axes0[0]] < 0:
+                return True
+        return False
+
     def potential(self, q, t=0):
         """V = −Σ m g·r_G + ½ Σ k s² (the oracle's own, for energy questions)."""
         P = self.pose(q, t)
