@@ -1,7 +1,8 @@
 """Exam problems next door, judged by an independent oracle (issue 43).
 
     python3 -m benchmarks.neighbours --count N --seed S [--out DIR] [--jobs J]
-           [--families a,b] [--budget SECONDS] [--chunk K] [--report FILE]
+           [--families a,b] [--budget SECONDS] [--chunk K] [--report FILE] [--start I]
+    python3 -m benchmarks.neighbours --merge DIR DIR … --seed S --report FILE
 
 Generates N scenes (scene i depends on the seed and i only), solves them with the
 installed rbdsolve in whole processes (K files per process, J processes at once),
@@ -33,7 +34,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--budget", type=float, default=20.0, help="rbdsolve's --budget (processor seconds)")
     ap.add_argument("--families", default="", help="comma-separated family names (default: all)")
     ap.add_argument("--report", type=Path, default=None)
+    ap.add_argument("--merge", type=Path, nargs="+", default=None,
+                    help="no run: the report of earlier runs' --out folders together (a large run in pieces, by --start)")
     args = ap.parse_args(argv)
+    if args.merge:
+        return merge(args.merge, args.seed, args.report or Path("report.md"))
     out = args.out or Path(tempfile.mkdtemp(prefix="neighbours-"))
     families = tuple(f for f in args.families.split(",") if f)
     start = time.perf_counter()
@@ -51,6 +56,21 @@ def main(argv: list[str] | None = None) -> int:
         print(f"neighbours: {oracle} scenes where the oracle itself failed (see the report)")
     print(summary_line(outcomes))
     return 0
+
+
+def merge(folders: list[Path], seed: int, report: Path) -> int:
+    """The report and last line of several runs' outcomes.json (their scenes in order)."""
+    outcomes = [_outcome(d) for folder in folders for d in json.loads((folder / "outcomes.json").read_text())]
+    report.write_text(markdown(outcomes, seed, 0.0).replace("Wall time 0 s. ", f"Merged from {len(folders)} runs. "))
+    print(f"report: {report}", file=sys.stderr)
+    print(summary_line(outcomes))
+    return 0
+
+
+def _outcome(d: dict):
+    from benchmarks.neighbours.check import QuestionOutcome, SceneOutcome
+    questions = [QuestionOutcome(**q) for q in d.pop("questions")]
+    return SceneOutcome(**{**d, "features": tuple(d["features"]), "questions": questions})
 
 
 def _plain(o):
