@@ -19,8 +19,10 @@ from enum import IntEnum
 # C0 controls but tab and newline, DEL, C1 (NEL U+0085 included), the bidirectional
 # overrides and isolates (text that reads backwards), and the line and paragraph
 # separators U+2028/U+2029: what can move a terminal's cursor, set its title, clear
-# it, or make a line look other than it is.
-_UNPRINTABLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200e\u200f\u202a-\u202e\u2028\u2029\u2066-\u2069]")
+# it, or make a line look other than it is; and lone surrogates (a YAML or JSON escape
+# such as "\ud800" makes one), which no UTF-8 file or terminal can hold.
+UNPRINTABLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200e\u200f\u202a-\u202e\u2028\u2029\u2066-\u2069"
+                         "\ud800-\udfff]")
 _ALSO_IN_ONE_LINE = re.compile("[\t\n]")
 
 
@@ -28,13 +30,29 @@ def printable(text: str, lines: bool = False) -> str:
     """Text from a file or the command line, safe to show: each control character as
     its escape (ESC as \\x1b, U+202E as \\u202e). A message is one line, so tabs and
     newlines are escaped too unless ``lines`` (a statement keeps its lines)."""
-    text = _UNPRINTABLE.sub(_escaped, text)
+    text = UNPRINTABLE.sub(_escaped, text)
     return text if lines else _ALSO_IN_ONE_LINE.sub(_escaped, text)
+
+
+def clipped(text: str, width: int = 60) -> str:
+    """The start of a long text (an expression, a cell), for a message that stays one
+    readable line: 5,000 digits are said as their first 60 and how many there are."""
+    return text if len(text) <= width else f"{text[:width]}… ({len(text):,} characters)"
+
+
+def shown(value: object) -> str:
+    """A value from outside (a key, a name given in Python) for a message: its type and
+    its repr, clipped; never a second error (10**5000 has no repr: Python refuses to
+    write more than 4,300 digits)."""
+    try:
+        return f"{type(value).__name__} {clipped(repr(value))}"
+    except ValueError:
+        return f"{type(value).__name__} (too large to show)"
 
 
 def unprintable(text: str) -> str | None:
     """The first character ``printable`` would escape (tabs and newlines allowed), or None."""
-    found = _UNPRINTABLE.search(text)
+    found = UNPRINTABLE.search(text)
     return found.group() if found else None
 
 

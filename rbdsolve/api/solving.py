@@ -12,11 +12,11 @@ from rbdsolve.api.result import Result
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import load_file
 from rbdsolve.problem.data import load_data, load_string
-from rbdsolve.problem.overrides import checked_values, read_value, value_text
+from rbdsolve.problem.overrides import checked_values, given_values
 from rbdsolve.problem.schema import Problem
 
 ROUTES = ("auto", "exact", "numeric")
-DEFAULT_BUDGET = 60.0  # seconds per question, as the CLI's --budget
+DEFAULT_BUDGET = 60.0  # processor seconds for the whole solve, as the CLI's --budget
 MIN_BUDGET, MAX_BUDGET = 0.001, 1e6  # as the CLI's --budget: a timer's resolution; eleven days
 SAID = "values[{!r}]"  # a value given in Python, as a message names it
 
@@ -53,9 +53,7 @@ def solve(problem: Problem | str | os.PathLike | Mapping, *, route: str = "auto"
     from rbdsolve.solvers import Options, RouteChoice, solve_file
 
     problem = _as_problem(problem)
-    given = {name: read_value(str(name), value_text(str(name), value, SAID), SAID)
-             for name, value in (values or {}).items()}
-    options = Options(values=checked_values(given, problem, SAID), budget=_budget(budget),
+    options = Options(values=checked_values(given_values(values, SAID), problem, SAID), budget=_budget(budget),
                       route=RouteChoice(_route(route)))
     return Result(problem, solve_file(problem, options))
 

@@ -193,19 +193,36 @@ def _silence_stdout() -> None:
         pass
 
 
-def refuse_overwriting_inputs(output: str | None, items: list[Source]) -> None:
-    """``-o`` naming one of the problem files: refused before anything is solved."""
+class OutputPath(click.Path):
+    """``-o PATH``: the file to write. An empty path names none: refused, where it
+    would otherwise read as 'no -o' and the output go to standard output."""
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, str) and not value.strip():
+            self.fail("an empty path names no file", param, ctx)
+        return super().convert(value, param, ctx)
+
+
+def tell(line: str) -> None:
+    """One line on standard error, escaped (errors.printable): the paths and names in it
+    are text from outside (``-o $'x\\e]0;PWN\\a.csv'``), never a terminal's control."""
+    click.echo(printable(line), err=True)
+
+
+def refuse_overwriting_inputs(output: str | None, items: list[Source], what: str = "one of the problem files") -> None:
+    """``-o`` naming one of the input files (``what`` they are): refused before anything
+    is solved."""
     if not output:
         return
     for item in items:
         if item.text is None and _same_file(output, item.name):
-            raise InputError(f"-o {output}: this is one of the problem files; choose another output")
+            raise InputError(f"-o {output}: this is {what}; choose another output")
 
 
 def _same_file(a: str, b: str) -> bool:
     try:
         return os.path.samefile(a, b)
-    except OSError:
+    except (OSError, ValueError):  # not there, or a path no file can have (NUL in it)
         return False
 
 

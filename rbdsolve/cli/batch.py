@@ -43,12 +43,13 @@ class Failure:
 @dataclass(frozen=True)
 class Outcome:
     """One file's result: its report, or the failure that stopped it (with its exit
-    code), and the seconds it took."""
+    code), the seconds it took, and the processor seconds of its budget it spent."""
 
     source: str
     report: ProblemReport | None  # None with a failure
     failure: Failure | None
     seconds: float
+    spent: float = 0.0  # processor seconds (what --budget counts), for what the run does next (a key's pictures)
 
     @property
     def code(self) -> ExitCode:
@@ -62,7 +63,7 @@ def solve_source(source: Source, settings: Settings, on_stage: Callable[[str], N
     is told each stage as it starts (cli/progress.py)."""
     from rbdsolve.solvers import Options, RouteChoice, solve_file
 
-    start = time.perf_counter()
+    start, processor = time.perf_counter(), time.process_time()
     try:
         problem = source.load()
         values = check_sets(dict(settings.values), problem)
@@ -77,7 +78,7 @@ def solve_source(source: Source, settings: Settings, on_stage: Callable[[str], N
 
             traceback.print_exc()
         return crashed(source.name, exc, time.perf_counter() - start)
-    return Outcome(source.name, report, None, time.perf_counter() - start)
+    return Outcome(source.name, report, None, time.perf_counter() - start, time.process_time() - processor)
 
 
 def crashed(name: str, exc: BaseException, seconds: float) -> Outcome:

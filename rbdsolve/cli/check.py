@@ -5,7 +5,7 @@ from __future__ import annotations
 import click
 
 from rbdsolve.cli.app import debug_option, run_guarded, sources
-from rbdsolve.errors import ExitCode, InputError
+from rbdsolve.errors import ExitCode, InputError, printable
 
 
 @click.command()
@@ -36,5 +36,5 @@ def _check(paths, quiet: bool = False) -> ExitCode:
             continue
         if not quiet:
             questions = ", ".join(q.kind.value for q in problem.questions)
-            click.echo(f"{source.name}: ok ({questions})")
+            click.echo(printable(f"{source.name}: ok ({questions})"))
     return worst

@@ -6,9 +6,10 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, check_sets, debug_option, parse_sets, run_guarded
+from rbdsolve.cli.app import OutputPath, Source, append_help, check_sets, debug_option, parse_sets, run_guarded, \
+    tell
 from rbdsolve.cli.solve import DEFAULT_BUDGET, Budget, sets_option
-from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, did_you_mean
+from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, did_you_mean, printable
 
 DRAW_EXAMPLES = """
 \b
@@ -26,7 +27,7 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
 
 @click.command()
 @click.argument("path", type=click.Path(dir_okay=False))
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+@click.option("-o", "--output", required=True, type=OutputPath(dir_okay=False),
               help="The picture to write: a .png or .svg file.")
 @click.option("--at", "at", multiple=True, metavar="COORDINATE=VALUE",
               help="Draw at this value of a coordinate (repeatable; a number or an expression "
@@ -36,8 +37,9 @@ shapes could not be computed, 2 bad input (also: a scene that is not planar).
 @click.option("--modes/--no-modes", default=True, show_default=True,
               help="With a modes question, also draw its mode shapes (OUTPUT's name + '-modes').")
 @click.option("--budget", type=Budget(), default=DEFAULT_BUDGET, show_default=True,
-              metavar="SECONDS", help="Time budget for the model and for each picture of mode shapes; "
-                                      "past it the picture is not drawn (exit code 1).")
+              metavar="SECONDS", help="Budget of processor seconds for the whole drawing: the model, then each "
+                                      "picture of mode shapes a share of what is left; a picture past its share is "
+                                      "not drawn (exit code 1).")
 @debug_option
 def draw(path, output, at, sets, modes, budget, debug):
     """Draw a planar scene to scale: bodies by shape, points labelled, gravity.
@@ -55,7 +57,8 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
           budget: float = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.errors import RbdError
     from rbdsolve.model.build import build_model
-    from rbdsolve.solvers.shared.budget import OutOfTime, within
+    from rbdsolve.render.files import publish, require_folder, staging
+    from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
     from rbdsolve.render.drawing.figures import (
         check_suffix,
         modes_questions,
@@ -64,24 +67,31 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     )
 
     check_suffix(output)
+    require_folder(output, "the picture")
     problem = Source(path).load()
     values = check_sets(parse_sets(sets), problem)
+    run = Allowance(budget)  # one budget: the model, then each picture of mode shapes a share of what is left
     try:
-        with within(budget, "the model (T and V)"):
+        with within(run.left(), "the model (T and V)", budget):
             model = build_model(problem)
     except OutOfTime as exc:
         raise UnsolvedError(f"{path}: {exc}") from None
     model = model.with_values(values) if values else model
-    click.echo(save_scene(model, output, configuration(model, at)).path)
-    code = ExitCode.OK
-    for n, question in enumerate(modes_questions(model) if modes else [], 1):
-        name = f"{output.stem}-modes{'' if n == 1 else f'-{n}'}{output.suffix}"
-        try:
-            with within(budget, "the mode shapes"):
-                click.echo(save_modes(model, question, output.with_name(name)).path)
-        except (RbdError, OutOfTime) as exc:  # the scene is drawn; say why the modes are not
-            click.echo(f"{question.loc}: no mode shapes: {exc}", err=True)
-            code = max(code, getattr(exc, "exit_code", ExitCode.UNSOLVED))
+    with staging(output) as stage:  # the scene and its mode shapes appear together, or neither
+        drawn = [save_scene(model, stage / output.name, configuration(model, at)).path]
+        code = ExitCode.OK
+        asked = modes_questions(model) if modes else []
+        for n, question in enumerate(asked, 1):
+            name = f"{output.stem}-modes{'' if n == 1 else f'-{n}'}{output.suffix}"
+            try:
+                with within(run.share(len(asked) - n + 1), "the mode shapes", budget):
+                    drawn.append(save_modes(model, question, stage / name).path)
+            except (RbdError, OutOfTime) as exc:  # the scene is drawn; say why the modes are not
+                tell(f"{question.loc}: no mode shapes: {exc}")
+                code = max(code, getattr(exc, "exit_code", ExitCode.UNSOLVED))
+        publish([(picture, output.with_name(picture.name)) for picture in drawn])
+    for picture in drawn:
+        click.echo(printable(str(output.with_name(picture.name))))
     return code
 
 

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import Source, append_help, debug_option, refuse_overwriting_inputs, run_guarded, \
-    write_text
+from rbdsolve.cli.app import OutputPath, Source, append_help, debug_option, refuse_overwriting_inputs, \
+    run_guarded, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option
 from rbdsolve.errors import ExitCode, InputError, Location
 
@@ -64,7 +64,7 @@ FORMATS = ("text", "json")
               help="Instead: right within one unit of the key's N-th significant figure.")
 @click.option("--slip-credit", type=click.FloatRange(min=0, max=1), default=0.0, show_default=True,
               help="The part of a mark a recognised slip earns (sign, 2π, degrees, root, factor 2).")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False, writable=True),
               help="Write the run to this file as JSON (.json); a class's grades also as CSV (.csv, "
                    "one row per student).")
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
@@ -83,7 +83,7 @@ def grade(file, answers, entries, show, rtol, atol, sig_figs, slip_credit, outpu
     """
     if file.lower().endswith(".json"):
         run_guarded(debug, lambda: _grade_class(file, answers, entries, sig_figs, rtol, atol, slip_credit,
-                                                output, fmt))
+                                                output, fmt, budget))
     else:
         run_guarded(debug, lambda: _check(file, answers, entries, show, output, fmt, _rule(rtol, atol, sig_figs,
                                                                                            slip_credit), budget))
@@ -109,7 +109,8 @@ def _check(file: str, answers: str | None, entries: tuple[str, ...], show: bool,
 
     if output and Path(output).suffix.lower() != ".json":
         raise InputError(f"-o {output}: a check is written as JSON; give a .json file")
-    refuse_overwriting_inputs(output, [Source(file), *([Source(answers)] if answers else [])])
+    refuse_overwriting_inputs(output, [Source(file)], "the problem file")
+    refuse_overwriting_inputs(output, [Source(answers)] if answers else [], "the file of answers")
     if not entries and not answers:
         raise InputError("give the answers to check: --answer 'modes.frequencies[1] = sqrt(2*g/r)', "
                          "or a file of them after the problem")
@@ -147,7 +148,8 @@ def _check_line(checked, show: bool) -> str:
 
 
 def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_figs: int | None, rtol: float,
-                 atol: float, slip_credit: float, output: str | None, fmt: str) -> ExitCode:
+                 atol: float, slip_credit: float, output: str | None, fmt: str,
+                 budget: float = DEFAULT_BUDGET) -> ExitCode:
     from rbdsolve.teaching.grade_report import class_csv, class_object, dumps
     from rbdsolve.teaching.grading import grade as grade_class, read_key
 
@@ -158,8 +160,9 @@ def _grade_class(file: str, answers: str | None, entries: tuple[str, ...], sig_f
         raise InputError(f"give the class's answers after {file}: rbdsolve grade {file} answers.csv")
     if output and Path(output).suffix.lower() not in (".csv", ".json"):
         raise InputError(f"-o {output}: write the grades to a .csv or a .json file")
-    refuse_overwriting_inputs(output, [Source(file), Source(answers)])
-    grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit))
+    refuse_overwriting_inputs(output, [Source(file)], "the variants table")
+    refuse_overwriting_inputs(output, [Source(answers)], "the class's answers")
+    grades = grade_class(read_key(file), answers, _rule(rtol, atol, sig_figs, slip_credit), budget)
     if output:
         write_text(class_csv(grades) if output.lower().endswith(".csv") else dumps(class_object(grades)), output)
     if fmt == "json":
@@ -191,7 +194,7 @@ def _print_summary(grades) -> None:
     for t in tallies(grades):
         slips = ", ".join(f"{word} {n}" for word, n in t.slips.items()) or "-"
         share = f" ({100 * t.counts[Outcome.RIGHT] / max(sum(t.counts.values()), 1):.0f} %)"
-        table.add_row(escape(t.answer), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
+        table.add_row(escape(printable(t.answer)), f"[green]{t.counts[Outcome.RIGHT]}{share}[/green]", slips,
                       str(t.counts[Outcome.WRONG]), str(t.counts[Outcome.BLANK]), str(t.counts[Outcome.UNGRADED]))
     console = Console(highlight=False, width=100, no_color=True) if not sys.stdout.isatty() \
         else Console(highlight=False)

@@ -8,7 +8,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import parse_sets, refuse_overwriting_inputs, run_guarded, sources, stderr_is_terminal
+from rbdsolve.cli.app import OutputPath, parse_sets, refuse_overwriting_inputs, run_guarded, sources, \
+    stderr_is_terminal, tell
 from rbdsolve.cli.batch import Settings, solve_all, worst
 from rbdsolve.cli.solve import batch_options, print_summary, say_failures
 from rbdsolve.errors import ExitCode
@@ -16,7 +17,7 @@ from rbdsolve.errors import ExitCode
 
 @click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path())
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", required=True, type=OutputPath(dir_okay=False, writable=True),
               help="The key: key.pdf, key.tex, key.md or key.html (the suffix picks the format).")
 @click.option("--title", help="The key's title (default: the problems' common source, or the folder's name).")
 @click.option("--figures/--no-figures", default=True, show_default=True,
@@ -50,19 +51,19 @@ def _key(paths, output: Path, title: str | None, figures: bool, quiet: bool, job
         require_engine()
     from rbdsolve.teaching.key import Solved, check_output, key_title, write_key
 
-    check_output(output)
+    check_output(output, figures)
     items = sources(paths)
     refuse_overwriting_inputs(str(output), items)
     outcomes = solve_all(items, settings, jobs, progress=not quiet and stderr_is_terminal())
     say_failures(outcomes)
-    problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None)
+    problems = [Solved(s.name, s.load, o.report, o.failure.line if o.failure else None, o.spent)
                 for s, o in zip(items, outcomes)]
     notes = write_key(output, title or key_title(paths, problems), problems, figures, dict(settings.values),
                       settings.budget)
     for note in notes:
-        click.echo(note, err=True)
+        tell(note)
     if not quiet:
         if len(outcomes) > 1:
             print_summary(outcomes)
-        click.echo(f"wrote {output}", err=True)
+        tell(f"wrote {output}")
     return worst(outcomes)

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, run_guarded, write_text
+from rbdsolve.cli.app import OutputPath, append_help, debug_option, run_guarded, tell, write_text
 from rbdsolve.errors import ExitCode, InputError
 
 # Spelled out (as solve's ROUTES are) so that the command line starts without loading the
@@ -45,7 +45,7 @@ Examples:
 
 @click.command()
 @click.argument("kind", required=False, type=click.Choice([*KINDS, *SCENES]), metavar="KIND")
-@click.option("-o", "--output", type=click.Path(dir_okay=False),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False),
               help="Write to this file instead of standard output.")
 @click.option("--force", is_flag=True, help="Overwrite the output file if it exists.")
 @click.option("--list", "list_kinds", is_flag=True, help="List the kinds, one line each, and exit.")
@@ -81,8 +81,7 @@ def _new(kind: str, output: str | None, force: bool) -> ExitCode:
         raise InputError(f"{output} already exists; use --force to overwrite it")
     write_text(template_text(kind), output)
     if output:  # on standard error, so that standard output stays the template alone
-        click.echo(f"wrote {output} (the '{kind}' template); solve it with: rbdsolve solve {output}",
-                   err=True)
+        tell(f"wrote {output} (the '{kind}' template); solve it with: rbdsolve solve {output}")
     return ExitCode.OK
 
 

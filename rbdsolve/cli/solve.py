@@ -7,14 +7,14 @@ import sys
 
 import click
 
-from rbdsolve.cli.app import append_help, debug_option, parse_sets, refuse_overwriting_inputs, \
+from rbdsolve.cli.app import OutputPath, append_help, debug_option, parse_sets, refuse_overwriting_inputs, \
     run_guarded, sources, stderr_is_terminal, write_text
 from rbdsolve.cli.batch import Outcome, Settings, solve_all, worst
 from rbdsolve.errors import ExitCode
 
 FORMATS = ("terminal", "markdown", "latex", "json")
 ROUTES = ("auto", "exact", "numeric")  # spelled out here: importing the solvers would load sympy
-DEFAULT_BUDGET = 60.0  # seconds per question: an exam question that takes longer is stuck
+DEFAULT_BUDGET = 60.0  # processor seconds per file: an exam problem that takes longer is stuck
 
 SOLVE_EXAMPLES = """
 \b
@@ -60,11 +60,12 @@ class Budget(click.ParamType):
 budget_option = click.option(
     "--budget", type=Budget(), default=DEFAULT_BUDGET,
     show_default=True, metavar="SECONDS",
-    help="Budget of processor seconds (the same on a quiet or a busy machine) for building each file's model and for each route of each question; "
-         "a question past it is left unanswered (exit code 1), or, with --route auto and "
-         "every value given, answered by the numeric route, which gets the same budget "
-         "again (so a question may take twice the budget; a model whose T and V run out "
-         "shows the coordinates only).")
+    help="Budget of processor seconds (the same on a quiet or a busy machine) for each file's whole run. "
+         "Each stage gets a share of what is left: the model all of it (half with --route auto and every "
+         "value given), each question what is left divided by the questions still to come; a question past "
+         "its share is left unanswered (exit code 1). With --route auto and every value given, the exact "
+         "route gets half of its question's share and the numeric route the rest (a model whose T and V "
+         "run out shows the coordinates only).")
 sets_option = click.option(
     "--set", "sets", multiple=True, metavar="NAME=VALUE",
     help="Give a parameter a numeric value (repeatable); overrides the file's values.")
@@ -87,7 +88,7 @@ def batch_options(command):
 @click.argument("paths", nargs=-1, required=True, type=click.Path(allow_dash=True))
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS), default="terminal",
               show_default=True, help="Output format.")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False, writable=True),
               help="Write to this file instead of standard output.")
 @click.option("--digits", type=click.IntRange(1, 15), default=6, show_default=True,
               help="Significant digits of the numbers in text (terminal, Markdown, LaTeX), 1 to 15 "

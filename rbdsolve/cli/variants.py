@@ -7,8 +7,8 @@ from pathlib import Path
 
 import click
 
-from rbdsolve.cli.app import STDIN_NAME, Source, append_help, debug_option, read_stdin, \
-    refuse_overwriting_inputs, run_guarded, stderr_is_terminal, write_text
+from rbdsolve.cli.app import OutputPath, STDIN_NAME, Source, append_help, debug_option, read_stdin, \
+    refuse_overwriting_inputs, run_guarded, stderr_is_terminal, tell, write_text
 from rbdsolve.cli.solve import DEFAULT_BUDGET, budget_option, route_option
 from rbdsolve.errors import ExitCode, InputError
 
@@ -41,7 +41,7 @@ check by a full solve disagrees (no table is written), 2 bad input or usage,
               help="How many variants (students).")
 @click.option("-s", "--seed", type=click.IntRange(min=0), default=0, show_default=True,
               help="Seed of the random draw: the same seed gives the same variants.")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+@click.option("-o", "--output", type=OutputPath(dir_okay=False, writable=True),
               help="Write to this file (format from its suffix: .csv, .json, .tex).")
 @click.option("-f", "--format", "fmt", type=click.Choice(FORMATS),
               help="Output format (default: from --output's suffix, else csv).")
@@ -93,10 +93,10 @@ def _variants(path: str, count: int, seed: int, output: str | None, fmt: str | N
         stage("writing the table", 0, 1)
         text = RENDERERS[kind](table)
     for line in (*table.notes, *(f"warning: {w}" for w in table.warnings)):
-        click.echo(f"{table.file}: {line}", err=True)
+        tell(f"{table.file}: {line}")
     write_text(text, output)
     if output:
-        click.echo(f"{table.file}: wrote {count} variant{'s' if count > 1 else ''} to {output} ({kind})", err=True)
+        tell(f"{table.file}: wrote {count} variant{'s' if count > 1 else ''} to {output} ({kind})")
     return ExitCode.OK
 
 

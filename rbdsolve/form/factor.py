@@ -22,6 +22,11 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.stand_ins import stand_ins
 
 MAX_OPS = 120  # larger expressions are shown as they are: factoring them costs more than it reads
+# ... and so are polynomials of a higher degree: count_ops sees sin⁹⁷θ as one operation, and
+# factoring sin⁹⁷θ + cos⁹⁹θ's derivatives (degree ~200 in sin θ, cos θ) over the rationals
+# took sympy's Zassenhaus minutes (issue 39: a model of 0.76 s took 7 s and more). An
+# exam's coefficients have degree < 10.
+MAX_DEGREE = 24
 
 
 @lru_cache(maxsize=4096)  # one quantity is shown in several steps (T, then the equations)
@@ -32,7 +37,7 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     printed in brackets where it stands (a coefficient before q̈), so they count."""
     if not isinstance(expr, sp.Expr) or expr.is_Atom or not _sum_outside_functions(expr):
         return expr  # a product of powers of symbols and functions: nothing to factor
-    if sp.count_ops(expr) > MAX_OPS or expr.has(sp.Float):
+    if sp.count_ops(expr) > MAX_OPS or expr.has(sp.Float) or _high_powers(expr):
         return expr
     atoms = expr.atoms(sp.Function, sp.Derivative)
     candidates = [_factored_over(expr, atoms)]
@@ -47,6 +52,11 @@ def factored(expr: sp.Expr, bracketed: bool = False) -> sp.Expr:
     negative = all(x.could_extract_minus_sign() for x in expr.args) if expr.is_Add else False
     allowance = 2 if expr.is_Add and ((bracketed and not best.is_Add) or negative) else 0
     return best if len(to_unicode(best)) <= len(to_unicode(expr)) + allowance else expr
+
+
+def _high_powers(expr: sp.Expr) -> bool:
+    """Is any power in ``expr`` past MAX_DEGREE (sin⁹⁷θ)?"""
+    return any(p.exp.is_Integer and abs(p.exp) > MAX_DEGREE for p in expr.atoms(sp.Pow))
 
 
 def _sum_outside_functions(expr: sp.Expr) -> bool:
@@ -124,7 +134,8 @@ def _with_content(total: sp.Add, content: sp.Expr, alone: bool) -> sp.Expr:
     inner = expanded(total / content)
     symbols = sorted(inner.free_symbols, key=sp.default_sort_key)
     if symbols and inner.is_polynomial(*symbols):
-        if _splits(sp.Poly(inner, *symbols)):
+        poly = sp.Poly(inner, *symbols)
+        if poly.total_degree() <= MAX_DEGREE and _splits(poly):
             inner = squares_joined(sp.factor(inner))
         elif alone and content.is_Number and content not in (1, -1) and any(isinstance(x, sp.Dummy) for x in symbols):
             return total  # a number alone out of a sum with sin θ, 1/8 (4cθ² − 4πcθ + …), only clutters

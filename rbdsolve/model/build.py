@@ -21,6 +21,7 @@ from rbdsolve.model.assumptions import assumed, decided_by, substitutions
 from rbdsolve.model.spring_length import signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
+from rbdsolve.model.lengths import body_dimensions
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import Turns, angular_velocity, sequence_rotation, turns_angular_velocity, \
@@ -227,6 +228,7 @@ def build_model(problem: Problem) -> Model:
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
+    body_dimensions(problem, names)  # under the assumptions too (model/lengths.py)
     planes = _plane_contacts(problem, names, bodies, values)
     if planes:  # C, named in questions (steady_motion's about, rolling_at)
         points = ChainMap({c.name: c.point for c in planes}, points)
@@ -362,7 +364,7 @@ def _refuse_winding_angles(model: Model) -> None:
 
 
 def check_values(problem: Problem, names: Symbols, values: Mapping[sp.Symbol, sp.Expr]) -> None:
-    """Masses, stiffnesses and natural lengths keep their signs at the parameter values,
+    """Masses, dimensions, stiffnesses and natural lengths keep their signs at the values,
     as they must for any values: a parameter declared ``positive: false`` may make a
     mass 0 there (a singular mass matrix, every route).
     The same checks as with symbols (``_require``), with the numbers put in; located
@@ -373,6 +375,9 @@ def check_values(problem: Problem, names: Symbols, values: Mapping[sp.Symbol, sp
     try:
         for part in (p for body in problem.bodies for p in body.parts):
             _require(numbers.scalar(part.mass), part.mass, "a mass")
+            for key, dimension in part.dimensions if part.inertia is None else ():
+                if key not in POSITIONS:
+                    _require(numbers.scalar(dimension), dimension, _article(key))
         for spring in problem.springs:
             _require(numbers.scalar(spring.stiffness), spring.stiffness, "a stiffness", zero_ok=True)
             if spring.natural_length:

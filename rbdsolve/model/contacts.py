@@ -38,6 +38,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.edges import Curved, Flat, NotInPlane, body_part, part_edge
+from rbdsolve.model.lengths import contact_lengths
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
@@ -116,18 +117,19 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     for contact in problem.contacts:
         if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/plane_rolling.py
             continue
+        lengths = tuple(implied(contact, v, sp.Integer(0), names, why) for v, why in contact_lengths(contact, problem, names))
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
             origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
             placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
-            rollings.append(rolling)
+            rollings.append(replace(rolling, requires=lengths + rolling.requires))
             continue
         under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
         frame = _frame(contact, under, names)
         origin, angle, rolling = _contact(contact, body, names, values, frame, under)
         placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact),
                                     angle=as_expr(angle, reverse, names, contact))
-        rollings.append(rolling)
+        rollings.append(replace(rolling, requires=lengths + rolling.requires))
     return replace(problem, bodies=tuple(placed.get(b.name, b) for b in problem.bodies)), tuple(rollings)
 
 

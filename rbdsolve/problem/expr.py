@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from enum import Enum
 from fractions import Fraction
 
-from rbdsolve.errors import InputError, Location, did_you_mean
+from rbdsolve.errors import InputError, Location, clipped, did_you_mean
 
 MAX_TEXT = 2000
 MAX_NODES = 400
@@ -222,9 +222,7 @@ def parse(text: str, loc: Location, scope: Scope, plain: bool = True) -> Expr:
     return Expr(tree, kind, source, loc)
 
 
-def _clip(source: str, width: int = 60) -> str:
-    """The start of a long expression, for a message that stays one readable line."""
-    return source if len(source) <= width else source[:width] + "…"
+_clip = clipped  # the start of a long expression, for a message that stays one readable line
 
 
 def _at(loc: Location, plain: bool, offset: int) -> Location:

@@ -11,12 +11,13 @@ import math
 from fractions import Fraction
 from typing import Mapping
 
-from rbdsolve.errors import InputError, Location, did_you_mean
+from rbdsolve.errors import InputError, Location, did_you_mean, shown
 from rbdsolve.problem.quantity import Value, parse_value
 from rbdsolve.problem.ranges import parameter_value
 from rbdsolve.problem.schema import Problem
 
 OPTION = "--set {}"  # how a value given on the command line is named in a message
+LIMIT = 10**300  # as a file's numbers (problem/quantity.py): 10**5000 is refused before it is written out
 
 
 def read_value(name: str, text: str, said: str = OPTION) -> Value:
@@ -35,14 +36,35 @@ def value_text(name: str, value: object, said: str) -> str:
         raise InputError(f"{said.format(name)}: expected a number, found {value!r}")
     if isinstance(value, float) and not math.isfinite(value):
         raise InputError(f"{said.format(name)}: expected a finite number, found {value!r}")
+    if isinstance(value, (int, Fraction)) and max(abs(Fraction(value).numerator), Fraction(value).denominator) > LIMIT:
+        raise InputError(f"{said.format(name)}: the number is too large (the limit is 1e300)")
     if isinstance(value, (str, int, Fraction)):
         return str(value)
     if isinstance(value, float):
         return repr(value)
     if hasattr(value, "is_number") and getattr(value, "is_number"):  # a sympy number: pi/6, sqrt(2)
-        return str(value)
+        try:
+            return str(value)
+        except ValueError:  # an Integer of more than 4,300 digits: Python will not write it
+            raise InputError(f"{said.format(name)}: the number is too large (the limit is 1e300)") from None
     raise InputError(f"{said.format(name)}: expected a number or its text (9.81, 'pi/6', '30 cm'), "
                      f"found {type(value).__name__}")
+
+
+def given_values(values: object, said: str) -> dict[str, Value]:
+    """Values given in Python (the API's ``values={'m': 2, 'l': '30 cm'}``), each read as
+    ``--set`` reads its text: a mapping of parameter names (text) to numbers or text."""
+    if values is None:
+        return {}
+    if not isinstance(values, Mapping):
+        raise InputError(f"values: expected a mapping of parameter names to values (values={{'m': 2}}), "
+                         f"found {shown(values)}")
+    out = {}
+    for name, value in values.items():
+        if not isinstance(name, str):
+            raise InputError(f"values: a parameter's name is text, found {shown(name)}")
+        out[name] = read_value(name, value_text(name, value, said), said)
+    return out
 
 
 def checked_values(values: Mapping[str, Value], problem: Problem, said: str = OPTION) -> dict[str, Value]:

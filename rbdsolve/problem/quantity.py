@@ -142,18 +142,21 @@ def parse_value(text: str, loc: Location, plain: bool = True, unit: Unit | None 
         return _value(whole.tree, source, loc, unit)
     if not whole.message.startswith("expected a number"):
         raise whole  # a number out of range, a division by zero: not a unit's doing
-    unit_error = None
+    unit_error = number_error = None
     for cut in _cuts(source):
         number = _number(source[:cut], loc, plain, lead)
-        if not isinstance(number, ex.Expr):
+        if not isinstance(number, ex.Expr) and number.message.startswith("expected a number"):
             continue
         try:
             written = parse_unit(source[cut:], _at(loc, plain, lead + cut), plain)
         except InputError as exc:
             unit_error = unit_error or exc
             continue
+        if not isinstance(number, ex.Expr):  # '1e999 m': a unit, after a number out of range
+            number_error = number_error or number
+            continue
         return _value(number.tree, source, loc, written)
-    raise unit_error or whole
+    raise number_error or unit_error or whole
 
 
 def _number(text: str, loc: Location, plain: bool, lead: int) -> ex.Expr | InputError:
@@ -185,11 +188,23 @@ def _value(tree: ex.Tree, text: str, loc: Location, unit: Unit | None) -> Value:
     if unit is not None:
         tree = tree if unit.factor == ex.Num(Fraction(1)) else ex.BinOp("*", tree, unit.factor)
     approx = approximate(tree)
+    if (approx is None and _overflows(tree)) or (approx is not None and math.isinf(approx)) or \
+            (approx is not None and abs(approx) > 1e300):
+        raise InputError(f"the number {ex._clip(text)} is too large (the limit is 1e300)", loc)
     if approx is None or not math.isfinite(approx):
         raise InputError(f"'{ex._clip(text)}' is not a real number", loc)
-    if abs(approx) > 1e300:
-        raise InputError(f"the number {ex._clip(text)} is too large (the limit is 1e300)", loc)
     return Value(tree, text, approx, unit.dimension if unit is not None else None)
+
+
+def _overflows(tree: ex.Tree) -> bool:
+    """Does the tree's floating-point value overflow (10**400 in SI, 1e300 light years)?"""
+    try:
+        _approx(tree)
+    except OverflowError:
+        return True
+    except (ValueError, ZeroDivisionError, TypeError):
+        return False
+    return False
 
 
 _FUNCTIONS = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "cot": lambda x: 1 / math.tan(x),
@@ -265,9 +280,12 @@ def parse_unit(text: str, loc: Location, plain: bool = True) -> Unit:
 
 def _exponent(source: str, pos: int, loc: Location, plain: bool) -> tuple[int, int]:
     """An optional ``^n`` or ``**n`` after a unit name: (n, where reading goes on)."""
-    match = re.compile(r"\s*(\^|\*\*)\s*([+-]?\d+)").match(source, pos)
+    match = re.compile(r"\s*(\^|\*\*)\s*([+-]?\d+(?:\.\d*)?|[+-]?\.\d+)").match(source, pos)
     if match is None:
         return 1, pos
+    if "." in match.group(2) or len(match.group(2)) > 3:
+        raise InputError(f"the power {match.group(2)} of a unit is refused: a unit's power is a whole number "
+                         "from -4 to 4, not 0", _at(loc, plain, match.start(2)))
     n = int(match.group(2))
     if not 0 < abs(n) <= 4:
         raise InputError(f"the power {n} of a unit is refused (from -4 to 4, not 0)", _at(loc, plain, match.start(2)))

@@ -72,38 +72,41 @@ class Map:
 Node = Scalar | Seq | Map
 
 
-def read_bytes(path: str) -> bytes:
-    """A file's bytes, reading no more than one byte past the size limit, so a huge
+def read_bytes(path: str, limit: int = MAX_FILE_BYTES) -> bytes:
+    """A file's bytes, reading no more than one byte past the size ``limit``, so a huge
     file (or /dev/zero) is refused without being read into memory. A FIFO is opened
-    without waiting for its writer and read under the deadline of a pipe."""
+    without waiting for its writer and read under the deadline of a pipe. A path with
+    a NUL character in it names no file (FileNotFoundError, not Python's ValueError)."""
+    if "\0" in path:
+        raise FileNotFoundError(f"no such file: {path}")
     fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     with open(fd, "rb", buffering=0) as handle:
         info = os.fstat(fd)
         if stat.S_ISFIFO(info.st_mode) or stat.S_ISSOCK(info.st_mode):
-            return read_stream(handle, path)
+            return read_stream(handle, path, limit=limit)
         os.set_blocking(fd, True)
-        if info.st_size > MAX_FILE_BYTES:
-            raise InputError(f"file is {info.st_size} bytes; the limit is {MAX_FILE_BYTES} bytes", Location(path, 1, 1))
-        return handle.read(MAX_FILE_BYTES + 1)
+        if info.st_size > limit:
+            raise InputError(f"file is {info.st_size} bytes; the limit is {limit} bytes", Location(path, 1, 1))
+        return handle.read(limit + 1)
 
 
-def read_stream(stream, name: str, seconds: float | None = None) -> bytes:
-    """At most one byte past the size limit from a pipe, a FIFO or standard input, for
+def read_stream(stream, name: str, seconds: float | None = None, limit: int = MAX_FILE_BYTES) -> bytes:
+    """At most one byte past the size ``limit`` from a pipe, a FIFO or standard input, for
     no longer than ``seconds`` (READ_SECONDS): a writer that never finishes is refused,
     not waited for. A terminal has no deadline (its user ends it with Ctrl-D or Ctrl-C);
     a stream without a file descriptor (a test's) is read up to the limit."""
     try:
         fd = stream.fileno()
     except (OSError, ValueError, AttributeError):
-        return stream.read(MAX_FILE_BYTES + 1)
+        return stream.read(limit + 1)
     seconds = READ_SECONDS if seconds is None else seconds
     deadline = None if os.isatty(fd) else time.monotonic() + seconds
     chunks: list[bytes] = []
     size = 0
-    while size <= MAX_FILE_BYTES:
+    while size <= limit:
         if deadline is not None and not select.select([fd], [], [], max(deadline - time.monotonic(), 0))[0]:
-            raise InputError(f"no end of file within {seconds:g} s: a problem file is read whole, and this "
-                             "stream is still open", Location(name, 1, 1))
+            raise InputError(f"no end of file within {seconds:g} s: the file is read whole, and this "
+                             "stream is still open (or no one writes to it)", Location(name, 1, 1))
         try:
             chunk = os.read(fd, 64 * 1024)
         except BlockingIOError:  # a FIFO whose writer has not come yet
@@ -389,6 +392,9 @@ def _check_printable(text: str, loc: Location) -> None:
     """No control character in a string: the byte check before YAML catches those typed
     in the file, this one those YAML makes from escapes ("\\e]0;title\\a", "\\x85")."""
     found = unprintable(text)
+    if found is not None and "\ud800" <= found <= "\udfff":
+        raise InputError(f"a lone surrogate ({printable(found)}) in a string, from a YAML escape such as "
+                         "\"\\ud800\": half of a character, which no text file can hold; remove it", loc)
     if found is not None:
         raise InputError(f"a control character ({printable(found)}) in a string, from a YAML escape such "
                          "as \"\\e\" or \"\\x1b\"; remove it", loc)

@@ -13,13 +13,13 @@ and say what null means in docs/json.md), so it is an InternalError here, not a
 
 from __future__ import annotations
 
-import json
 from enum import Enum
 from functools import lru_cache
 
 import sympy as sp
 
 from rbdsolve.errors import InputError, InternalError, UnsolvedError
+from rbdsolve.render.json_text import strict_json
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.display import Math, plain
 from rbdsolve.report.tree import map_leaves
@@ -124,6 +124,7 @@ def render_error(file: str, error: InputError | InternalError | UnsolvedError) -
 def _dumps(body: dict, file: str) -> str:
     """One line of strict JSON (no NaN or Infinity)."""
     try:
-        return json.dumps(body, ensure_ascii=False, allow_nan=False) + "\n"
+        return strict_json(body)
     except ValueError as exc:
         raise InternalError(f"{file}: a number that is not finite reached the JSON output ({exc})") from None
+

@@ -4,10 +4,8 @@ CSV and null in JSON (the warnings say why)."""
 
 from __future__ import annotations
 
-import csv
-import io
-import json
-
+from rbdsolve.render import spreadsheet
+from rbdsolve.render.json_text import strict_json
 from rbdsolve.render.latex import PREAMBLE, text
 from rbdsolve.report.variants import VariantTable
 from rbdsolve.problem.quantity import Value
@@ -41,12 +39,11 @@ def _kinds(table: VariantTable) -> tuple[tuple[str | None, ...], ...]:
 
 def render_csv(table: VariantTable) -> str:
     """Header: variant, seed, the ranged parameters, the answer labels; one row per variant."""
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["variant", "seed", *table.parameters, *table.columns, *table.kind_columns])
-    for n, (draw, answers, kinds) in enumerate(zip(table.draws, table.answers, _kinds(table)), start=1):
-        writer.writerow([n, table.seed, *map(_parameter, draw), *map(_number, answers), *(k or "" for k in kinds)])
-    return out.getvalue()
+    header = ["variant", "seed", *table.parameters, *table.columns, *table.kind_columns]
+    return spreadsheet.table([header, *([n, table.seed, *map(_parameter, draw), *map(_number, answers),
+                                         *(k or "" for k in kinds)]
+                                        for n, (draw, answers, kinds) in enumerate(zip(table.draws, table.answers,
+                                                                                       _kinds(table)), start=1))])
 
 
 def render_json(table: VariantTable) -> str:
@@ -66,7 +63,7 @@ def render_json(table: VariantTable) -> str:
         "notes": list(table.notes),
         "warnings": list(table.warnings),
     }
-    return json.dumps(body, ensure_ascii=False, allow_nan=False, indent=1) + "\n"
+    return strict_json(body, indent=1)
 
 
 def render_latex(table: VariantTable) -> str:

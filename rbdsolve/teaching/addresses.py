@@ -27,10 +27,11 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from rbdsolve.errors import InputError, Location, did_you_mean
+from rbdsolve.errors import InputError, Location, clipped, did_you_mean
 
 _SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _INDEX = re.compile(r"\[(\d+)\]")
+MAX_INDEX_DIGITS = 6  # a million entries: far past any answer; int() of 5,000 digits is refused by Python
 _FIRST = re.compile(r"^([A-Za-z_]+)\(1\)(?=\.|$)")
 
 # (pattern of the alias, the question kind it belongs to, the path it stands for)
@@ -55,9 +56,13 @@ def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
     address = normal(text)
     if not address:
         raise InputError("expected the name of an answer before '=', found nothing", loc)
-    if any(int(i) == 0 for i in _INDEX.findall(address)):
-        raise InputError(f"'{address}': indices count from 1, as in the printed solution "
+    indices = _INDEX.findall(address)
+    if any(not i.strip("0") for i in indices):
+        raise InputError(f"'{clipped(address)}': indices count from 1, as in the printed solution "
                          "(modes.frequencies[1] is ω₁)", loc)
+    if any(len(i) > MAX_INDEX_DIGITS for i in indices):
+        raise InputError(f"'{clipped(address)}': an index of more than {MAX_INDEX_DIGITS} digits; no answer has "
+                         "so many entries", loc)
     address = _FIRST.sub(r"\1", address)  # reactions(1).… is the first reactions question: reactions.…
     known = set(labels)
     if address in known:
@@ -66,11 +71,12 @@ def resolve(text: str, labels: Sequence[str], loc: Location) -> str:
     if len(found) == 1:
         return found[0]
     if len(found) > 1:
-        raise InputError(f"'{address}' could be any of {', '.join(found)}: give the whole path", loc)
+        raise InputError(f"'{clipped(address)}' could be any of {', '.join(found)}: give the whole path", loc)
     inside = [label for label in labels if label.startswith((address + "[", address + "."))]
     if inside:
-        raise InputError(f"'{address}' holds several answers: check them one by one, e.g. {inside[0]}", loc)
-    raise InputError(f"no answer is called '{address}'{_hint(address, labels)}", loc)
+        raise InputError(f"'{clipped(address)}' holds several answers: check them one by one, e.g. {inside[0]}",
+                         loc)
+    raise InputError(f"no answer is called '{clipped(address)}'{_hint(address, labels)}", loc)
 
 
 def question_kind(label: str) -> str:

@@ -20,7 +20,7 @@ from enum import Enum
 
 import sympy as sp
 
-from rbdsolve.errors import InputError, Location
+from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model, build_model
@@ -28,6 +28,7 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
 from rbdsolve.report.tree import label, leaves
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
+from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
 from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.compare import Sampler, compare, value_at
 from rbdsolve.teaching.files import read_file
@@ -37,6 +38,7 @@ from rbdsolve.teaching.verdicts import Different, Equivalent, Proof, Slipped, Un
 
 EXAMPLE = "modes.frequencies[1] = sqrt(24*g/(25*r))"
 MAX_ENTRIES = 500  # a check is a student's sheet; each answer may take seconds to compare
+_LINE_END = re.compile(r"\r\n|\r|\n")  # the lines an editor shows (str.splitlines also splits at \x0c, \x85 …)
 
 
 @dataclass(frozen=True)
@@ -90,7 +92,7 @@ def read_entry(line: str, loc: Location) -> Entry:
 def read_entries(path: str) -> tuple[list[Entry], list[InputError]]:
     """An answers file: one 'ADDRESS = EXPRESSION' a line; '#' starts a comment line."""
     entries, errors = [], []
-    for n, line in enumerate(read_file(path).splitlines(), start=1):
+    for n, line in enumerate(_LINE_END.split(read_file(path)), start=1):
         if not line.strip() or line.lstrip().startswith("#"):
             continue
         try:
@@ -106,9 +108,15 @@ def check(problem: Problem, entries: list[Entry], budget: float | None = None, r
     """Each entry's verdict against the exact solution of ``problem``; a number given
     for an answer whose parameters all have values is held to ``rule``."""
     if len(entries) > MAX_ENTRIES:
-        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts")
-    model = build_model(problem)
-    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=budget))
+        raise InputError(f"{len(entries)} answers to check; the limit is {MAX_ENTRIES}: check them in parts "
+                         f"(answer {MAX_ENTRIES + 1} is here)", entries[MAX_ENTRIES].loc)
+    run = Allowance(budget)  # one budget for the check: the model, the solve, every comparison
+    try:
+        with within(run.left(), "the model (T and V)", budget):
+            model = build_model(problem)
+    except OutOfTime as exc:
+        raise UnsolvedError(f"{problem.file}: {exc}") from None
+    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=run.left(), budget_total=budget))
     kinds = question_labels([s.question for s in report.solutions])
     answers = {label((q, *path)): leaf for q, s in zip(kinds, report.solutions) if s.answers is not None
                for path, leaf in leaves(s.answers)}
@@ -117,13 +125,14 @@ def check(problem: Problem, entries: list[Entry], budget: float | None = None, r
     checked, errors = [], []
     for entry in entries:
         try:
-            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule))
+            checked.append(_check_one(entry, model, answers, unsolved, sampler, rule, run))
         except InputError as exc:
             errors.append(exc)
     return CheckRun(problem.file, tuple(checked), tuple(errors))
 
 
-def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule) -> Checked:
+def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sampler: Sampler, rule: Rule,
+               run: Allowance = Allowance(None)) -> Checked:
     head = "".join(entry.address.split()).split(".", 1)[0]
     if head in unsolved:
         return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
@@ -140,7 +149,7 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
     if _a_number_for_values(given, right, model):
         verdict = _at_values(given, right, model, rule)
     else:
-        verdict = compare(given, right, sampler, _is_angle(address, model))
+        verdict = compare(given, right, sampler, _is_angle(address, model), run)
     return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
 
 

@@ -29,7 +29,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.solvers.shared.budget import OutOfTime, within
+from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
 from rbdsolve.teaching.verdicts import (FACTOR_SLIPS, Different, EqualFor, Equivalent, Factor, Proof, Root,
                                         SignDiffers, Slip, Undecided, Verdict)
 
@@ -61,24 +61,34 @@ class Sampler:
     parameters: tuple[sp.Symbol, ...]
 
 
-def compare(given: sp.Expr, right: sp.Expr, sampler: Sampler, angle: bool = False) -> Verdict:
-    """The verdict on ``given`` against ``right`` (see the module docstring)."""
+def compare(given: sp.Expr, right: sp.Expr, sampler: Sampler, angle: bool = False,
+            run: Allowance = Allowance(None)) -> Verdict:
+    """The verdict on ``given`` against ``right`` (see the module docstring), each step
+    within its own time and within what is left of the ``run``'s budget (a check's)."""
     given, right, names = _plain(given, right, sampler.names)
-    if _timed(SIMPLIFY_SECONDS, "simplifying", lambda: _simplifies_to_zero(given - right), False):
+    if _timed(_step(SIMPLIFY_SECONDS, run), "simplifying", lambda: _simplifies_to_zero(given - right), False):
         return Equivalent(Proof.SIMPLIFIED)
     symbols = sorted(given.free_symbols | right.free_symbols, key=str)
-    values = _timed(EVALUATE_SECONDS, "evaluating", lambda: _values(given, right, symbols, sampler), None)
+    seconds = _step(EVALUATE_SECONDS, run)
+    values = _timed(seconds, "evaluating", lambda: _values(given, right, symbols, sampler), None)
     if values is None:
-        return Undecided(f"evaluating the answers took more than {EVALUATE_SECONDS} s")
+        return Undecided(f"evaluating the answers took more than {seconds:.3g} s"
+                         + ("" if seconds == EVALUATE_SECONDS else ", what was left of the budget"))
     if not values:
         return Undecided("no admissible parameter values where both have a finite value")
     if all(_close(a, b) for _, a, b in values):
         return Equivalent(Proof.SAMPLED)
-    return _how_different(given, right, values, sampler, names, angle)
+    return _how_different(given, right, values, sampler, names, angle, run)
+
+
+def _step(seconds: float, run: Allowance) -> float:
+    """A step's time: its own, or less where the run has less left."""
+    left = run.left()
+    return seconds if left is None else min(seconds, left)
 
 
 def _how_different(given: sp.Expr, right: sp.Expr, values: list, sampler: Sampler,
-                   names: Mapping[sp.Symbol, str], angle: bool) -> Verdict:
+                   names: Mapping[sp.Symbol, str], angle: bool, run: Allowance) -> Verdict:
     if angle and _whole_turns([a - b for _, a, b in values]):
         return Equivalent(Proof.ANGLE)
     factor = _constant_ratio(values)
@@ -91,7 +101,7 @@ def _how_different(given: sp.Expr, right: sp.Expr, values: list, sampler: Sample
         return Root(missing=True)
     if all(_close(a * a, b) for _, a, b in values):
         return Root(missing=False)
-    condition = _timed(SOLVE_SECONDS, "solving", lambda: _equal_where(given, right, sampler), None)
+    condition = _timed(_step(SOLVE_SECONDS, run), "solving", lambda: _equal_where(given, right, sampler), None)
     if condition is not None:
         return EqualFor(condition)
     point, a, b = next((p, a, b) for p, a, b in values if not _close(a, b))

@@ -3,10 +3,8 @@ CSV, one row per student. The terminal's tables are cli/grade.py's (rich lives t
 
 from __future__ import annotations
 
-import csv
-import io
-import json
-
+from rbdsolve.render import spreadsheet
+from rbdsolve.render.json_text import strict_json
 from rbdsolve.teaching.check import CheckRun, Checked
 from rbdsolve.teaching.grading import ClassGrades, Outcome, score_counts, tallies
 from rbdsolve.teaching.verdicts import Different, EqualFor, Equivalent, Factor, Undecided, describe, slips_of
@@ -73,17 +71,16 @@ def class_object(grades: ClassGrades) -> dict:
 
 
 def dumps(body: dict) -> str:
-    return json.dumps(body, ensure_ascii=False, allow_nan=False) + "\n"
+    return strict_json(body)
 
 
 def class_csv(grades: ClassGrades) -> str:
     """student, variant, score, out_of, then per answer its outcome: right, wrong,
-    blank, ungraded, or the slips (sign, two_pi, sign+two_pi, …)."""
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["student", "variant", "score", "out_of", *grades.answers])
+    blank, ungraded, or the slips (sign, two_pi, sign+two_pi, …); every cell as a
+    spreadsheet shows text (render/spreadsheet.py: no formula, no control character)."""
+    rows = [["student", "variant", "score", "out_of", *grades.answers]]
     for s in grades.students:
         words = {m.answer: m.word for m in s.marks}
-        writer.writerow([s.student, s.variant, f"{grades.score(s):g}", len(grades.answers),
-                         *(words.get(a, Outcome.UNGRADED.value) for a in grades.answers)])
-    return out.getvalue()
+        rows.append([s.student, s.variant, f"{grades.score(s):g}", len(grades.answers),
+                     *(words.get(a, Outcome.UNGRADED.value) for a in grades.answers)])
+    return spreadsheet.table(rows)

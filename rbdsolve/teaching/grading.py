@@ -13,38 +13,30 @@ key after the slip (−k, 2k, k/2π, 180k/π, k², √k, with or without the sig
 column (a stability) is right when it is the same word.
 
 Malformed input (an unknown column, a row with the wrong number of cells, a variant the
-table does not have, a cell that is not a number) is one message each; the rest is
-still graded.
+table does not have, a cell that is not a number or past the csv module's 131,072
+characters) is one located message each; the rest is still graded. Lines may end with
+LF, CRLF or CR. A class past MAX_STUDENTS rows, MAX_COLUMNS columns or MAX_MARKS answers
+is refused where it passes the limit, and grading runs within the run's budget
+(docs/grading.md, Limits).
 """
 
 from __future__ import annotations
 
 import csv
 import io
-import json
 import math
+import re
 from collections import Counter
 from dataclasses import dataclass
 from enum import Enum
 
-from rbdsolve.errors import InputError, Location
+from rbdsolve.errors import InputError, Location, UnsolvedError, clipped
 from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.files import read_file
+from rbdsolve.teaching.variants_key import Key, read_key  # noqa: F401 - read_key: grade(read_key(…), …)
 from rbdsolve.teaching.verdicts import FACTOR_SLIPS, Slip
 
 STUDENT, VARIANT = "student", "variant"
-
-
-@dataclass(frozen=True)
-class Key:
-    """The variants table as read back: per variant number, its numbers and kinds."""
-
-    file: str
-    problem: str
-    columns: tuple[str, ...]
-    kind_columns: tuple[str, ...]
-    numbers: dict[int, tuple[float | None, ...]]
-    kinds: dict[int, tuple[str | None, ...]]
 
 
 @dataclass(frozen=True)
@@ -64,7 +56,9 @@ class Rule:
         return max(self.rtol * abs(key), self.atol)
 
     def agrees(self, given: float, key: float) -> bool:
-        return abs(given - key) <= self.tolerance(key)
+        """Within the tolerance of ``key``; never for a key past a float's range (a slip
+        of 10³⁰⁰ turned into degrees is infinite, and so would be its tolerance)."""
+        return math.isfinite(key) and abs(given - key) <= self.tolerance(key)
 
 
 class Outcome(Enum):
@@ -115,80 +109,86 @@ class ClassGrades:
         return all(m.outcome is Outcome.RIGHT for s in self.students for m in s.marks)
 
 
-# --- the key -------------------------------------------------------------------------
-
-
-def read_key(path: str) -> Key:
-    """The JSON table of ``rbdsolve variants``; an InputError for anything else."""
-    text = read_file(path)
-    try:
-        body = json.loads(text, parse_constant=_refuse_constant)
-    except json.JSONDecodeError as exc:
-        raise InputError(f"not JSON: {exc.msg}", Location(path, exc.lineno, exc.colno)) from None
-    except ValueError as exc:  # NaN or Infinity, refused by _refuse_constant
-        raise InputError(f"not strict JSON: {exc}", Location(path, 1, 1)) from None
-    except RecursionError:
-        raise InputError("the JSON is nested too deeply", Location(path, 1, 1)) from None
-    if not isinstance(body, dict) or not isinstance(body.get("rows"), list) or "columns" not in body:
-        raise InputError("not a variants table (write one with: rbdsolve variants PROBLEM -o variants.json)",
-                         Location(path, 1, 1))
-    columns = _strings(body, "columns", path)
-    kind_columns = _strings(body, "kind_columns", path)
-    numbers, kinds = {}, {}
-    for i, row in enumerate(body["rows"]):
-        variant, values, words = _row(row, i, len(columns), len(kind_columns), path)
-        numbers[variant], kinds[variant] = values, words
-    return Key(path, str(body.get("file", "")), columns, kind_columns, numbers, kinds)
-
-
-def _refuse_constant(name: str) -> float:
-    raise ValueError(f"{name} is not a number in strict JSON")
-
-
-def _strings(body: dict, key: str, path: str) -> tuple[str, ...]:
-    value = body.get(key, [])
-    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-        raise InputError(f"'{key}' must be a list of names", Location(path, 1, 1, (key,)))
-    return tuple(value)
-
-
-def _row(row: object, i: int, width: int, kind_width: int, path: str):
-    where = Location(path, 1, 1, ("rows", i))
-    if not isinstance(row, dict) or not isinstance(row.get("variant"), int) or isinstance(row.get("variant"), bool):
-        raise InputError("expected {\"variant\": N, \"answers\": [...]}", where)
-    values, words = row.get("answers"), row.get("kinds", [None] * kind_width)
-    if not isinstance(values, list) or len(values) != width or not all(
-            v is None or (isinstance(v, (int, float)) and not isinstance(v, bool)) for v in values):
-        raise InputError(f"'answers' must be {width} numbers (or null), one per column", where)
-    if not isinstance(words, list) or len(words) != kind_width or not all(w is None or isinstance(w, str) for w in words):
-        raise InputError(f"'kinds' must be {kind_width} words (or null), one per kind column", where)
-    return row["variant"], tuple(None if v is None else float(v) for v in values), tuple(words)
-
-
 # --- the class's answers -------------------------------------------------------------
 
+MAX_STUDENTS = 100_000  # as rbdsolve variants' --count: a class is hundreds
+MAX_COLUMNS = 1_000  # cells in the header: the largest exam's table has a few hundred answers
+MAX_MARKS = 1_000_000  # answers graded in one run (students × answer columns): ~0.2 GB of marks
+_LINE_END = re.compile(r"\r\n|\r|\n")  # a spreadsheet may end lines with CR alone (old Macs)
+_VARIANT = re.compile(r"[0-9]{1,9}")  # ASCII digits only: '²' and '①' are digits to str.isdigit
 
-def grade(key: Key, answers_file: str, rule: Rule = Rule()) -> ClassGrades:
-    """Every student's row graded against their variant (see the module docstring)."""
+
+def grade(key: Key, answers_file: str, rule: Rule = Rule(), budget: float | None = None) -> ClassGrades:
+    """Every student's row graded against their variant (see the module docstring),
+    within ``budget`` seconds of processor time (None: no limit; past it an
+    UnsolvedError). More than MAX_STUDENTS rows, MAX_COLUMNS columns or MAX_MARKS
+    answers is refused (an InputError) as soon as it is seen."""
+    from rbdsolve.solvers.shared.budget import OutOfTime, within
+
     text = read_file(answers_file)
-    first = text.split("\n", 1)[0]
+    try:
+        with within(budget, "grading the class"):
+            return _graded(key, answers_file, text, rule)
+    except OutOfTime as exc:
+        raise UnsolvedError(f"{answers_file}: {exc}") from None
+
+
+def _graded(key: Key, answers_file: str, text: str, rule: Rule) -> ClassGrades:
+    first = _LINE_END.split(text, 1)[0]
     semicolons = ";" in first and "," not in first  # a spreadsheet's CSV where the decimal mark is a comma
-    rows = list(csv.reader(io.StringIO(text), delimiter=";" if semicolons else ","))
-    if not rows:
+    errors: list[InputError] = []
+    records = _records(text, ";" if semicolons else ",", answers_file, errors)
+    line, cells = next(records, (1, None))
+    if errors:  # the header itself could not be read
+        raise errors[0]
+    if cells is None:
         raise InputError("the answers file is empty: expected a header 'student,variant,ANSWER,…'",
                          Location(answers_file, 1, 1))
-    errors: list[InputError] = []
-    header = _header(rows[0], key, answers_file, errors)
+    header = _header(cells, key, answers_file, errors)
+    answers = tuple(a for a in header.columns if a is not None)
     students = []
-    for line, row in enumerate(rows[1:], start=2):
+    for line, row in records:
         if not any(cell.strip() for cell in row):
             continue
+        _within_limits(len(students) + 1, len(answers), Location(answers_file, line, 1))
         try:
             students.append(_student(row, line, header, key, rule, answers_file, errors, semicolons))
         except InputError as exc:
             errors.append(exc)
-    answers = tuple(a for a in header.columns if a is not None)
     return ClassGrades(key, answers_file, rule, answers, tuple(students), tuple(errors))
+
+
+def _records(text: str, delimiter: str, file: str, errors: list[InputError]):
+    """(the line a record starts on, its cells) for each record of the CSV, lines ended
+    by LF, CRLF or CR alike; a record the csv module cannot read (a cell past its
+    131,072-character limit) is one located error, and reading goes on after it."""
+    reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter)
+    start = 1
+    while True:
+        try:
+            cells = next(reader)
+        except StopIteration:
+            return
+        except csv.Error as exc:
+            errors.append(InputError(_unreadable(exc), Location(file, start, 1)))
+        else:
+            yield start, cells
+        start = reader.line_num + 1
+
+
+def _unreadable(exc: csv.Error) -> str:
+    if "field limit" in str(exc):
+        return f"a cell is longer than {csv.field_size_limit():,} characters; the row is not graded"
+    return f"this row cannot be read as CSV ({exc}); the row is not graded"
+
+
+def _within_limits(students: int, columns: int, where: Location) -> None:
+    if students > MAX_STUDENTS:
+        raise InputError(f"more than {MAX_STUDENTS:,} students; the limit is {MAX_STUDENTS:,}: grade the class "
+                         "in parts", where)
+    if students * columns > MAX_MARKS:
+        raise InputError(f"more than {MAX_MARKS:,} answers to grade ({columns:,} columns, {students:,} students "
+                         "so far); grade the class in parts", where)
 
 
 @dataclass(frozen=True)
@@ -199,6 +199,8 @@ class _Header:
 
 
 def _header(cells: list[str], key: Key, file: str, errors: list[InputError]) -> _Header:
+    if len(cells) > MAX_COLUMNS:
+        raise InputError(f"the header has {len(cells):,} columns; the limit is {MAX_COLUMNS:,}", Location(file, 1, 1))
     names = [c.strip() for c in cells]
     lower = [n.lower() for n in names]
     for needed in (STUDENT, VARIANT):
@@ -214,7 +216,7 @@ def _header(cells: list[str], key: Key, file: str, errors: list[InputError]) -> 
         try:
             column = resolve(name, known, Location(file, 1, _column(cells, i)))
             if column in columns:
-                raise InputError(f"'{name}' is the same answer as an earlier column ({column})",
+                raise InputError(f"'{clipped(name)}' is the same answer as an earlier column ({column})",
                                  Location(file, 1, _column(cells, i)))
             columns.append(column)
         except InputError as exc:
@@ -235,10 +237,10 @@ def _student(row: list[str], line: int, header: _Header, key: Key, rule: Rule, f
         raise InputError(f"this row has {len(row)} cells, the header {len(header.columns)}; the row is not graded",
                          where)
     text = row[header.variant].strip()
-    if not text.isdigit() or int(text) not in key.numbers:
+    if not _VARIANT.fullmatch(text) or int(text) not in key.numbers:
         span = f"{min(key.numbers)} to {max(key.numbers)}" if key.numbers else "none"
-        raise InputError(f"variant '{text}' is not in {key.file} (its variants: {span}); the row is not graded",
-                         Location(file, line, _column(row, header.variant)))
+        raise InputError(f"variant '{clipped(text)}' is not in {key.file} (its variants: {span}); the row is not "
+                         "graded", Location(file, line, _column(row, header.variant)))
     variant = int(text)
     marks = []
     for i, column in enumerate(header.columns):
@@ -274,7 +276,7 @@ def _number(text: str, column: str, loc: Location) -> float:
     except ValueError:
         value = math.nan
     if not math.isfinite(value) or text.lower().lstrip("+-") in ("inf", "infinity", "nan"):
-        raise InputError(f"{column}: '{text}' is not a number", loc)
+        raise InputError(f"{column}: '{clipped(text)}' is not a number", loc)
     return value
 
 
@@ -286,14 +288,17 @@ def _word(given: str, column: str, right: str | None, loc: Location) -> Mark:
     return Mark(column, given, right, Outcome.RIGHT if given.lower() == right else Outcome.WRONG)
 
 
-# Each slip as the number it turns the key into (FACTOR_SLIPS: given = factor · key).
+# Each slip as the number it turns the key into (FACTOR_SLIPS: given = factor · key), the
+# factors as floats once: float() of a sympy 2π is an evalf, ~0.1 ms, 11 of them per
+# wrong answer made a class of 100,000 take minutes.
+_FACTORS = tuple((float(factor), slips) for factor, slips in FACTOR_SLIPS)
 _ROOTS = ((Slip.MISSING_ROOT, lambda k: k * k), (Slip.EXTRA_ROOT, lambda k: math.sqrt(k) if k >= 0 else math.nan))
 
 
 def slip_of(given: float, right: float, rule: Rule) -> tuple[Slip, ...]:
     """The slips that turn ``right`` into ``given`` within the rule's tolerance, or ()."""
-    for factor, slips in FACTOR_SLIPS:
-        if rule.agrees(given, float(factor) * right):
+    for factor, slips in _FACTORS:
+        if rule.agrees(given, factor * right):
             return slips
     for slip, turn in _ROOTS:
         for sign, signs in ((1.0, ()), (-1.0, (Slip.SIGN,))):

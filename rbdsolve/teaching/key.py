@@ -13,6 +13,7 @@ solution.
 
 from __future__ import annotations
 
+import os
 import re
 import secrets
 import shutil
@@ -27,7 +28,7 @@ from rbdsolve.problem.schema import Problem
 from rbdsolve.problem.quantity import Value
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
-from rbdsolve.render.files import require_folder, write_file
+from rbdsolve.render.files import publish, require_folder, staging, write_file
 
 KINDS = (".pdf", ".tex", ".md", ".html")
 
@@ -41,13 +42,37 @@ class Solved:
     load: Callable[[], Problem]
     report: ProblemReport | None
     failure: str | None = None
+    spent: float = 0.0  # processor seconds its solve spent: its pictures get what is left of the budget
 
 
-def check_output(output: Path) -> None:
-    """Before any solving: a key's format and a folder to write it in."""
+def check_output(output: Path, figures: bool = True) -> None:
+    """Before any solving: a key's format, a folder to write it in, and, for a key whose
+    pictures go beside it, a pictures folder that is a folder (not a link to elsewhere)."""
     if output.suffix not in KINDS:
         raise InputError(f"-o {output}: the key is written as {', '.join(KINDS)}; found '{output.suffix or output.name}'")
     require_folder(output, "the key")
+    if figures and output.suffix not in SINGLE_FILE:
+        _check_figures_folder(figures_folder(output))
+
+
+SINGLE_FILE = (".pdf", ".html")  # the pictures inside the key, not in a folder beside it
+
+
+def figures_folder(output: Path) -> Path:
+    """Where a .tex or .md key's pictures go: ``key-figures/`` beside ``key.md``."""
+    return output.parent / f"{safe_name(output.stem)}-figures"
+
+
+def _check_figures_folder(folder: Path) -> None:
+    """A pictures folder that is there already must be a folder of its own: a symbolic
+    link (``key-figures -> ../outside``, planted or forgotten) would send the pictures
+    wherever it points, and is refused, as is a file of that name."""
+    if folder.is_symlink():
+        raise InputError(f"{folder}: the key's pictures folder is a symbolic link (to {os.readlink(folder)}); "
+                         "rbdsolve does not write through one: remove it, or choose another -o")
+    if folder.exists() and not folder.is_dir():
+        raise InputError(f"{folder}: the key's pictures go in a folder of this name, and this is a file: "
+                         "remove it, or choose another -o")
 
 
 def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:
@@ -58,13 +83,15 @@ def key_title(paths: Sequence[str], problems: Sequence[Solved]) -> str:
 def write_key(output: Path, title: str, problems: Sequence[Solved], figures: bool,
               values: Mapping[str, Value], budget: float | None = None) -> tuple[str, ...]:
     """Write the key to ``output`` (its suffix picks the format); return notes about
-    pictures left out."""
-    check_output(output)
+    pictures left out. A .tex or .md key and its pictures appear together or not at all:
+    the pictures are drawn in a staging folder beside the key (render/files.py) and
+    published with it, so an interrupt leaves no pictures folder it made."""
+    check_output(output, figures)
     notes: list[str] = []
-    with _scratch_folder() as scratch:
-        single_file = output.suffix in (".pdf", ".html")
-        home = Path(scratch) if single_file else output.parent
-        folder = home / f"{safe_name(output.stem)}-figures"
+    single_file = output.suffix in SINGLE_FILE
+    with _scratch_folder() as scratch, staging(output) as stage:
+        home = Path(scratch) if single_file else stage
+        folder = home / figures_folder(output).name
         suffix = ".svg" if output.suffix == ".html" else ".png"
         entries = []
         for n, problem in enumerate(problems, start=1):
@@ -72,8 +99,39 @@ def write_key(output: Path, title: str, problems: Sequence[Solved], figures: boo
             pictures = (_pictures(problem, folder, home, stem, suffix, values, notes, budget)
                         if figures and problem.report is not None else ())
             entries.append(KeyEntry(problem.name, problem.report, problem.failure, pictures))
-        _document(AnswerKey(title, tuple(entries)), output, home, Path(scratch))
+        document = _document(AnswerKey(title, tuple(entries)), output, home, Path(scratch))
+        if single_file or not folder.is_dir():
+            write_file(output, document)
+        else:
+            _publish_with_pictures(document, output, folder, stage)
     return tuple(notes)
+
+
+def _publish_with_pictures(document: bytes, output: Path, drawn: Path, stage: Path) -> None:
+    """The key and its pictures folder, together: a new folder is the staged one renamed
+    into place (and removed again should the key then fail or be interrupted); in a
+    folder there already, the pictures are published file by file with the key."""
+    target = figures_folder(output)
+    _check_figures_folder(target)
+    staged = stage / output.name
+    staged.write_bytes(document)
+    if target.exists():
+        publish([*((p, target / p.name) for p in sorted(drawn.iterdir())), (staged, output)])
+        return
+    created = target  # named before the rename: a signal just after it still finds the folder to remove
+    try:
+        os.chmod(drawn, 0o777 & ~_umask())
+        shutil.move(drawn, target)  # a rename, but for a key sent to a FIFO (its staging in the temporary folder)
+        publish([(staged, output)])
+    except BaseException:
+        shutil.rmtree(created, ignore_errors=True)
+        raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 @contextmanager
@@ -94,41 +152,37 @@ def safe_name(name: str) -> str:
     return re.sub(r"[^A-Za-z0-9._-]+", "-", name).strip("-") or "key"
 
 
-def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) -> None:
+def _document(answer_key: AnswerKey, output: Path, home: Path, scratch: Path) -> bytes:
+    """The key as the bytes of its file (output's suffix picks the format)."""
     if output.suffix == ".md":
         from rbdsolve.render.markdown import render_key
 
-        _write_text(render_key(answer_key), output)
-    elif output.suffix == ".html":
+        return render_key(answer_key).encode("utf-8")
+    if output.suffix == ".html":
         from rbdsolve.render.html import render_key
 
-        _write_text(render_key(answer_key, home), output)
-    else:
-        from rbdsolve.render.latex import render_key
+        return render_key(answer_key, home).encode("utf-8")
+    from rbdsolve.render.latex import render_key
 
-        tex = render_key(answer_key)
-        if output.suffix == ".tex":
-            _write_text(tex, output)
-            return
-        from rbdsolve.render.pdf import compile_pdf
+    tex = render_key(answer_key)
+    if output.suffix == ".tex":
+        return tex.encode("utf-8")
+    from rbdsolve.render.pdf import compile_pdf
 
-        write_file(output, compile_pdf(tex, scratch).read_bytes())
-
-
-def _write_text(text: str, output: Path) -> None:
-    write_file(output, text)
+    return compile_pdf(tex, scratch).read_bytes()
 
 
 def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
               values: Mapping[str, Value], notes: list[str], budget: float | None) -> tuple[Picture, ...]:
-    """The scene and its mode shapes, drawn at the values the solution used, within the
-    budget; none for a scene that is not planar. A picture that fails is noted and left out."""
+    """The scene and its mode shapes, drawn at the values the solution used, within what
+    is left of the file's budget after its solve (one budget for the file); none for a
+    scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model
     from rbdsolve.render.drawing.figures import save_figures
-    from rbdsolve.solvers.shared.budget import OutOfTime, within
+    from rbdsolve.solvers.shared.budget import MIN_SHARE, OutOfTime, within
 
     try:
-        with within(budget, "the pictures"):
+        with within(None if budget is None else max(budget - problem.spent, MIN_SHARE), "the pictures", budget):
             model = build_model(problem.load())
             if values:
                 model = model.with_values(dict(values))

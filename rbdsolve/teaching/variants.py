@@ -43,6 +43,7 @@ from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
 from rbdsolve.report.tree import Path, label, leaves
 from rbdsolve.solvers import solve_problem
+from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.values import numeric
 
@@ -106,8 +107,14 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     progress("drawing the values", 0, count)
     draws = draw(problem.ranges, count, seed)
     progress("solving the problem exactly", 0, 1)
-    model = build_model(problem)
-    report = _exact(model, options)
+    checked = _spread(count, verify)
+    run = Allowance(options.budget)  # one budget: the model and the exact solve, then each check's solve
+    try:
+        with within(run.left(), "the model (T and V)", options.budget):
+            model = build_model(problem)
+    except OutOfTime as exc:
+        raise UnsolvedError(f"{problem.file}: {exc}") from None
+    report = _exact(model, replace(options, budget=run.share(1 + len(checked)), budget_total=options.budget))
     progress("evaluating the answers", 0, count)
     symbols = [model.symbols.parameters[r.name] for r in problem.ranges]
     found, conditions, left_out = _answers(report, model, set(symbols))
@@ -126,10 +133,10 @@ def variants(problem: Problem, count: int, seed: int, options: Options = Options
     table = replace(table, kind_columns=tuple(label((labels[k.question], *k.path)) for k in found_kinds),
                     kinds=per_variant(found_kinds, symbols, draws,
                                       lambda n: progress("each variant's stability and motions", n, count)))
-    checked = _spread(count, verify)
     for n, k in enumerate(checked):
         progress("checking variants by a full solve", n, len(checked))
-        _verify(model, options, table, found, found_kinds, k)
+        _verify(model, replace(options, budget=run.share(len(checked) - n), budget_total=options.budget), table, found,
+                found_kinds, k)
     return replace(table, verified=tuple(k + 1 for k in checked))
 
 
@@ -201,7 +208,8 @@ def question_labels(kinds: list[str]) -> list[str]:
 
 def _exact(model: Model, options: Options) -> ProblemReport:
     """The one exact solve, ranged parameters symbolic; every question must answer."""
-    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=options.budget))
+    report = solve_problem(model, Options(route=RouteChoice.EXACT, budget=options.budget,
+                                          budget_total=options.budget_total))
     for s in report.solutions:
         if not s.solved:
             raise UnsolvedError(f"{model.problem.file}: question '{s.question}' has no exact answer with "
@@ -446,7 +454,8 @@ def _verify(model: Model, options: Options, table: VariantTable, found: list[_Le
     and compare every number of its row; UnsolvedError on any disagreement."""
     values = dict(zip(table.parameters, table.draws[k]))
     given = model.with_values(values)
-    report = solve_problem(given, Options(route=options.route, budget=options.budget))
+    report = solve_problem(given, Options(route=options.route, budget=options.budget,
+                                          budget_total=options.budget_total))
     where = f"variant {k + 1} ({', '.join(f'{n} = {float(v):g}' for n, v in values.items())})"
     theirs: dict[tuple, object] = {}
     for q, s in enumerate(report.solutions):

@@ -79,6 +79,9 @@ def test_an_answers_file_with_a_malformed_line(pendulum, tmp_path) -> None:
     ("omega1 = sqrt(g/x)", "unknown symbol 'x' (this problem's symbols are g, l, m, theta, and t)"),
     ("omega1 = __import__('os')", "is not allowed"),
     ("modes.motions[1] = wobbly", "'wobbly' is not one of: oscillation, growth, neutral"),
+    (f"modes.frequencies[{'9' * 5000}] = 1", "an index of more than 6 digits; no answer has so many entries"),
+    (f"omega{'9' * 5000} = 1", f"no answer is called 'omega{'9' * 55}… (5,005 characters)'"),
+    (f"modes.frequencies[{'0' * 9}] = 1", "indices count from 1"),
 ])
 def test_a_malformed_answer(pendulum, answer: str, message: str) -> None:
     result = grade(pendulum, "-a", answer)
@@ -94,6 +97,15 @@ def test_a_malformed_answer(pendulum, answer: str, message: str) -> None:
 def test_usage(pendulum, args, message: str) -> None:
     result = grade(pendulum, *args)
     assert result.exit_code == 2 and message in result.stderr
+
+
+def test_more_answers_than_the_limit_is_refused_where_the_first_past_it_is(pendulum, tmp_path) -> None:
+    answers = tmp_path / "many.txt"
+    answers.write_text("# six hundred\n\n" + "omega1 = 1\n" * 600, encoding="utf-8")
+    result = grade(pendulum, answers)
+    assert result.exit_code == 2
+    assert result.stderr == f"{answers}:503:9: 600 answers to check; the limit is 500: check them in parts " \
+                            "(answer 501 is here)\n"
 
 
 def test_a_variants_table_takes_a_csv_not_expressions(tmp_path) -> None:
@@ -186,3 +198,18 @@ def test_the_first_of_repeated_questions_may_be_numbered_one(pendulum) -> None:
     first = grade(pendulum, "-a", "modes(1).eigenvalues[1] = 2*g/l")
     plain = grade(pendulum, "-a", "modes.eigenvalues[1] = 2*g/l")
     assert first.exit_code == plain.exit_code != 2 and first.output == plain.output
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "mkfifo"), reason="no FIFOs here")
+def test_a_fifo_of_answers_that_no_one_writes_is_not_waited_for(pendulum, tmp_path, monkeypatch) -> None:
+    """Issue 39: 'grade p.yaml ans.fifo' with no writer blocked forever."""
+    import os
+
+    from rbdsolve.problem import yamlnodes
+
+    monkeypatch.setattr(yamlnodes, "READ_SECONDS", 0.3)
+    fifo = tmp_path / "ans.fifo"
+    os.mkfifo(fifo)
+    result = grade(pendulum, fifo)
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"{fifo}:1:1: no end of file within 0.3 s")

@@ -51,6 +51,10 @@ def test_set_takes_exact_values_and_units(rod) -> None:
     ("m=2 m", "--set m: 'm' is a mass (in "),
     ("l=30 cmm", "--set l: unknown unit 'cmm'"),
     ("m=-1 kg", "--set m: the parameter is positive, found -1 kg"),
+    # issue 39: an overflow, not "not a real number"; a number out of range, not "unknown unit 'e999'"
+    ("l=1e300 ly", "--set l: the number 1e300 ly is too large (the limit is 1e300)"),
+    ("l=1e999 m", "--set l: the number 1e999 is out of range (the limit is 1e±300)"),
+    ("l=1 m**0.5", "--set l: the power 0.5 of a unit is refused: a unit's power is a whole number"),
 ])
 def test_set_refuses_a_unit_that_does_not_fit(rod, setting, message) -> None:
     result = CliRunner().invoke(main, ["solve", str(rod), "--set", setting])

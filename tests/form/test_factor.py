@@ -95,3 +95,22 @@ def test_whether_a_polynomial_splits(expr, splits):
     symbols = sorted(expr.free_symbols, key=sp.default_sort_key)
     assert _splits(sp.Poly(expr, *symbols)) is splits
 
+
+
+def test_a_polynomial_of_high_degree_is_not_factored(monkeypatch) -> None:
+    """Issue 39: sin⁹⁷θ + cos⁹⁹θ is two operations to count_ops, but its derivatives are
+    polynomials of degree ~200 in sin θ and cos θ, which sympy's factoring took minutes
+    over (7 s and more for a model that took 0.76 s). Past MAX_DEGREE nothing is factored:
+    neither factor_list nor factor is called, and the expression is shown as it is."""
+    from rbdsolve.form import factor as module
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("factored a polynomial of high degree")
+
+    monkeypatch.setattr(module, "_splits", refuse)
+    monkeypatch.setattr(module.sp, "factor", refuse)
+    s, c, m, g = sp.Symbol("s"), sp.Symbol("c"), sp.Symbol("m", positive=True), sp.Symbol("g", positive=True)
+    theta = sp.Function("theta")(sp.Symbol("t"))
+    high = m * g * (97 * sp.sin(theta) ** 96 * sp.cos(theta) - 99 * sp.cos(theta) ** 98 * sp.sin(theta))
+    assert module.factored(high) == high
+    assert module.factored_sum(sp.expand(3 * s**30 * c**2 + 6 * s * c**29)) == 3 * s * c**2 * (s**29 + 2 * c**27)

@@ -51,11 +51,12 @@ bodies:
   drum: {shape: disk, mass: M, radius: R, at: [0, 0], angle: phi}
   block: {shape: particle, mass: m}
 contacts:
-  S: {body: block, hangs_from: {drum: drum, direction: [0, -1], over: P, length: 0}}
+  S: {body: block, hangs_from: {drum: drum, direction: [0, -1], over: P, length: R}}
 questions: [eom]
 """
     model = build_model(load_text(text))
     block = next(b for b in model.bodies if b.name == "block")
     (phi,) = model.q
     R = model.symbols.parameters["R"]
-    assert sp.simplify(block.position - sp.Matrix([R, -2 * R + R * phi, 0])) == sp.zeros(3, 1)
+    # R below P at the reference (a length of 0 is refused: issue 39), then up by R φ
+    assert sp.simplify(block.position - sp.Matrix([R, -3 * R + R * phi, 0])) == sp.zeros(3, 1)

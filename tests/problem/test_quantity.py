@@ -54,6 +54,12 @@ def test_values_are_exact_and_in_si(text, exact, dimension) -> None:
     ("sqrt(-1)", "'sqrt(-1)' is not a real number", 13),
     ("2 m^9", "the power 9 of a unit is refused", 17),
     ("__import__('os')", "", 13),
+    # issue 39: the number's own trouble, not an unknown unit 'e999' or a power 0
+    ("1e999 m", "the number 1e999 is out of range (the limit is 1e±300)", 13),
+    ("1 m**0.5", "the power 0.5 of a unit is refused: a unit's power is a whole number from -4 to 4", 18),
+    ("1 m^-.5", "the power -.5 of a unit is refused", 17),
+    ("1e300 ly", "the number 1e300 ly is too large (the limit is 1e300)", 13),  # 9.5e315 m: an overflow
+    ("1e200 * 1e200", "the number 1e200 * 1e200 is too large (the limit is 1e300)", 13),
 ])
 def test_bad_values_are_located(text, message, column) -> None:
     with pytest.raises(InputError) as err:

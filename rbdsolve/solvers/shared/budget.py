@@ -14,6 +14,12 @@ because sympy catches ``Exception`` in many places and would swallow it; should 
 ``except:`` swallow it anyway, the alarm rings again every REPEAT seconds until it
 gets through. On leaving, the alarm is disarmed and the previous handler restored.
 
+One budget for a whole run (``Allowance``): ``--budget`` caps a file's run, and each
+stage — the model, each question, each route of a question — gets a share of what is
+left when it starts, what is left divided by the stages still to come (itself
+included). A stage that needs little leaves the rest to the ones after it; the run
+never takes more than its budget.
+
 Where there is no SIGPROF (Windows) or when not on the main thread (signal handlers
 belong to it), ``within`` does nothing: the work runs to its end. Windows do not nest.
 """
@@ -23,10 +29,13 @@ from __future__ import annotations
 import signal
 import sys
 import threading
+import time
 from contextlib import contextmanager
+from dataclasses import dataclass, field
 from typing import Iterator
 
 REPEAT = 0.05  # seconds between rings once the budget is spent
+MIN_SHARE = 0.001  # a timer's resolution: a share of nothing still rings at once (0 would disarm the timer)
 TIMER, SIGNAL = getattr(signal, "ITIMER_PROF", None), getattr(signal, "SIGPROF", None)
 
 
@@ -42,13 +51,41 @@ def stop(kind: type[BaseException]) -> None:
 
 
 class OutOfTime(BaseException):
-    """The budget of ``what`` ran out. Private to the solving layer: callers turn it
-    into an unanswered question or a one-line message."""
+    """The budget of ``what`` ran out (its share ``seconds`` of a run's ``total``).
+    Private to the solving layer: callers turn it into an unanswered question or a
+    one-line message."""
 
-    def __init__(self, seconds: float, what: str):
+    def __init__(self, seconds: float, what: str, total: float | None = None):
         self.seconds = seconds
         self.what = what
-        super().__init__(f"{what} ran out of its {seconds:g} s budget (--budget to change it)")
+        if total is None:
+            said = f"its {seconds:g} s budget"
+        elif seconds >= 0.99 * total:  # all of the run's budget (less what the stages before spent in a blink)
+            said = f"its {total:g} s budget"
+        else:
+            said = f"its share ({seconds:.2g} s) of the {total:g} s budget"
+        super().__init__(f"{what} ran out of {said} (--budget to change it)")
+
+
+@dataclass(frozen=True)
+class Allowance:
+    """A run's budget: ``seconds`` of processor time (None: no limit) from ``start``,
+    the process's processor time (time.process_time, the clock ITIMER_PROF counts) when
+    the run began."""
+
+    seconds: float | None
+    start: float = field(default_factory=time.process_time)
+
+    def left(self) -> float | None:
+        """The processor seconds not spent yet (at least MIN_SHARE), None without a limit."""
+        if self.seconds is None:
+            return None
+        return max(self.seconds - (time.process_time() - self.start), MIN_SHARE)
+
+    def share(self, stages: int) -> float | None:
+        """What is left divided among ``stages`` stages still to run, this one included."""
+        left = self.left()
+        return None if left is None else max(left / max(stages, 1), MIN_SHARE)
 
 
 def available() -> bool:
@@ -57,8 +94,9 @@ def available() -> bool:
 
 
 @contextmanager
-def within(seconds: float | None, what: str) -> Iterator[None]:
-    """Run the body with at most ``seconds`` of processor time (None: no limit)."""
+def within(seconds: float | None, what: str, total: float | None = None) -> Iterator[None]:
+    """Run the body with at most ``seconds`` of processor time (None: no limit): a
+    stage's share of a run's ``total`` budget, said so when it runs out."""
     if seconds is None or not available():
         yield
         return
@@ -66,7 +104,7 @@ def within(seconds: float | None, what: str) -> Iterator[None]:
     def ring(signum, frame):
         if _stopping:
             raise _stopping[0]()
-        raise OutOfTime(seconds, what)
+        raise OutOfTime(seconds, what, total)
 
     def unraisable(info) -> None:
         # A ring inside a __del__ or a gc callback cannot propagate; Python would print it

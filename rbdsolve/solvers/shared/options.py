@@ -21,12 +21,14 @@ class RouteChoice(Enum):
 @dataclass(frozen=True)
 class Options:
     """How to solve: parameter values from the command line (they override the file's),
-    the route, and the time budget in seconds for the model and for each question
-    (None: none)."""
+    the route, and the time budget in processor seconds for the whole run (None: none);
+    each stage of it is given its share as ``budget``, with the run's whole budget as
+    ``budget_total`` (solvers/shared/budget.py)."""
 
     values: Mapping[str, Fraction] = field(default_factory=dict)
     route: RouteChoice = RouteChoice.AUTO
     budget: float | None = None
+    budget_total: float | None = None  # the run's budget of which ``budget`` is a share (None: budget is the whole)
     # Told each stage as it starts ('the model (T and V)', 'question 2 of 3: modes'), for
     # a progress display: solvers never print, the CLI shows it (cli/progress.py).
     on_stage: Callable[[str], None] | None = field(default=None, compare=False, repr=False)

@@ -5,8 +5,13 @@ budget, and a whole problem's report.
     report(problem, build, answer, options) -> ProblemReport
 
 ``--route auto`` runs the exact route, and the numeric route where the exact one
-cannot answer and every parameter has a value; each route runs within the budget
-(``budget.within``) and is timed.
+cannot answer and every parameter has a value. One budget caps the run
+(``budget.Allowance``): the model may take all of it (nothing is answered without
+one), or half on auto with every value given (its T and V can then be left out, and
+the numeric route needs the rest); each question gets what is left divided by the
+questions still to come; and on auto, where the numeric route could answer, the exact
+route gets half of its question's share and the numeric route the rest. Each runs
+within its share (``budget.within``) and is timed.
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
-from rbdsolve.solvers.shared.budget import OutOfTime, within
+from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings, unused_warnings
@@ -94,16 +99,21 @@ def _finite_estimate(solution: Solution) -> Solution:
 
 def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
-    parameter lacks a value. Each route gets the whole budget (auto may take twice it).
-    The Solution's route is the route that ran last; when both fail, its error gives
-    both routes' reasons."""
+    parameter lacks a value. The question's share of the budget (``options.budget``) is
+    the route's; on auto, where the numeric route could follow, the exact route gets
+    half of it and the numeric route what is left. The Solution's route is the route
+    that ran last; when both fail, its error gives both routes' reasons."""
     filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
     if options.route is RouteChoice.NUMERIC:
         return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
-    exact = _attempt(Route.EXACT, family.exact, question, model, options)
-    if options.route is RouteChoice.EXACT or exact.solved or missing_for(model, question, _solved_for(question)):
+    share = Allowance(options.budget)
+    fallback = options.route is RouteChoice.AUTO and not missing_for(model, question, _solved_for(question))
+    exact = _attempt(Route.EXACT, family.exact, question, model,
+                     replace(options, budget=share.share(2)) if fallback else options)
+    if not fallback or exact.solved:
         return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, options, " (numeric route)")
+    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, replace(options, budget=share.left()),
+                        " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
@@ -138,22 +148,27 @@ def _failed(question: Question, route: Route, error: str) -> Solution:
 
 
 def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:
-    with within(options.budget, f"'{question.kind.value}'{route}"):
+    with within(options.budget, f"'{question.kind.value}'{route}", options.budget_total):
         if frame_of(question) is None:
             return solver(question, model, options)
         return solve_in_frame(solver, question, model, options)
 
 
 def report(problem: Problem, build: Callable[[], Model], answer: Solver, options: Options) -> ProblemReport:
-    """The model section (T, V, the parameter values) within one budget, then each
-    question within its own. A model past its budget is an UnsolvedError for the whole
-    file (exit code 1), said in one line, except on auto with every value given when
-    only the expansion of T and V ran out: the section then shows the coordinates only,
-    as on the numeric route, and says why."""
+    """The model section (T, V, the parameter values), then each question, all within
+    the run's one budget, each stage within its share of what is left (module
+    docstring). A model past its share is an UnsolvedError for the whole file (exit
+    code 1), said in one line, except on auto with every value given when only the
+    expansion of T and V ran out: the section then shows the coordinates only, as on
+    the numeric route, and says why."""
+    run = Allowance(options.budget)
+    total = options.budget if options.budget_total is None else options.budget_total
+    questions = problem.questions
     model = None  # set once built, with its values: only the summary is left then
     _stage(options, "the model (T and V)")
     try:
-        with within(options.budget, "the model (T and V)"):
+        with within(run.share(2) if _numeric_may_follow(problem, options) else run.left(), "the model (T and V)",
+                    total):
             built = build()
             model = built.with_values(options.values) if options.values else built
             summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
@@ -161,13 +176,22 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
         if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
             raise UnsolvedError(f"{problem.file}: {exc}") from None
         summary = _coordinates_instead(model, exc)
-    solutions = tuple(_staged(answer, q, model, options, f"question {i} of {len(problem.questions)}: {q.kind.value}")
-                      for i, q in enumerate(problem.questions, start=1))
+    solutions = tuple(_staged(answer, q, model, replace(options, budget=run.share(len(questions) - i + 1),
+                                                        budget_total=total),
+                              f"question {i} of {len(questions)}: {q.kind.value}")
+                      for i, q in enumerate(questions, start=1))
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     units = {k: u for k, u in parameter_units(model).items() if k in values}
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols, units)
+
+
+def _numeric_may_follow(problem: Problem, options: Options) -> bool:
+    """On auto, does every parameter have a value (the file's or given), so that the
+    numeric route may answer where the exact one cannot?"""
+    given = {name for name, _ in problem.values} | set(options.values)
+    return options.route is RouteChoice.AUTO and all(p.name in given for p in problem.parameters)
 
 
 def _stage(options: Options, what: str) -> None:
