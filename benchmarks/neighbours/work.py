@@ -82,8 +82,9 @@ def run(seed: int, indices, families: tuple[str, ...] = (), budget: float = 20.0
         return outcomes
     with ProcessPoolExecutor(jobs) as pool:
         futures = [pool.submit(run_chunk, seed, c, families, budget) for c in chunks]
-        for f in futures:
-            outcomes += f.result()
+        for f, c in zip(futures, chunks):
+            # a hang guard: a chunk's rbdsolve process is itself killed after TIMEOUT_PER_FILE per file
+            outcomes += f.result(timeout=4 * TIMEOUT_PER_FILE * len(c) + 600)
             if progress:
                 progress(len(outcomes), len(indices))
     return outcomes
