@@ -77,9 +77,46 @@ def test_auto_gives_every_equilibrium_numerically() -> None:
     (solution,) = solve_problem(build_model(load_text(text, "double.yaml"))).solutions
     assert solution.solved and solution.route.value == "numeric", solution.error
     found = solution.answers.equilibria
-    assert len(found) > 4
+    want = _every_root(2.0)
+    assert len(want) == 12  # the premise: 4 on the axis, 8 off it
+    assert len(found) == len(want)
     for eq in found:
-        assert max(abs(v) for v in _gradient([eq.at["theta1"], eq.at["theta2"]], 2.0)) < 1e-9
+        x = [eq.at["theta1"], eq.at["theta2"]]
+        assert max(abs(v) for v in _gradient(x, 2.0)) < 1e-9
+        (match,) = [r for r in want if max(abs(_wrap(a - b)) for a, b in zip(x, r)) < 1e-7]
+        assert eq.stability.value == _stability(match, 2.0), (x, eq.stability)
+
+
+def _wrap(x: float) -> float:
+    return (x + math.pi) % (2 * math.pi) - math.pi
+
+
+def _every_root(W: float) -> list[list[float]]:
+    """Every zero of the gradient in one turn of each angle: fsolve from a 25 × 25 grid
+    (finer than needed: the basins are wide), each root polished, kept once mod 2π."""
+    roots: list[list[float]] = []
+    for a in range(25):
+        for b in range(25):
+            start = [-math.pi + 2 * math.pi * a / 25, -math.pi + 2 * math.pi * b / 25]
+            r, _, ier, _ = so.fsolve(_gradient, start, args=(W,), xtol=1e-13, full_output=True)
+            if ier != 1 or max(abs(v) for v in _gradient(r, W)) > 1e-10:
+                continue
+            r = [_wrap(r[0]), _wrap(r[1])]
+            if not any(max(abs(_wrap(x - y)) for x, y in zip(r, s)) < 1e-7 for s in roots):
+                roots.append(r)
+    return roots
+
+
+def _stability(x: list[float], W: float, h: float = 1e-6) -> str:
+    """From the Hessian of V'/(m l) by central differences of the gradient by hand."""
+    import numpy as np
+
+    H = np.array([[(_gradient([x[0] + h * (j == 0), x[1] + h * (j == 1)], W)[i]
+                    - _gradient([x[0] - h * (j == 0), x[1] - h * (j == 1)], W)[i]) / (2 * h) for j in range(2)]
+                  for i in range(2)])
+    eig = np.linalg.eigvalsh((H + H.T) / 2)
+    assert min(abs(eig)) > 1e-4  # no root of this scene is degenerate
+    return "stable" if min(eig) > 0 else "unstable"
 
 
 def test_the_modes_name_both_critical_rates_in_order() -> None:
