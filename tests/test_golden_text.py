@@ -43,6 +43,8 @@ CASES = [
         "inertia/cube-corner.yaml",
         "spin/box-three-sides.yaml",
         "forces/particle-on-sphere.yaml",
+        "forces/spool-pulled-at-angle.yaml",
+        "forces/atwood-massive-pulley.yaml",
         "kinematics/double-pendulum-tip.yaml",
         "spin/sleeping-top.yaml",
         "frames/rod-on-turning-shaft.yaml",

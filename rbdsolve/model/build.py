@@ -18,7 +18,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
-from rbdsolve.model.spring_length import signed_length
+from rbdsolve.model.spring_length import as_square_root, signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.lengths import body_dimensions
@@ -105,6 +105,8 @@ class SpringModel:
     def signed(self, expr: sp.Expr) -> sp.Expr:
         """expr with each |u| of the length written as the stretch writes it (±u where
         its sign is known): the direction d/|d| of the pull, as the stretch has it."""
+        if self.lengths:
+            expr = expr.xreplace({r: as_square_root(r) for r in _roots(expr)})
         return expr.xreplace({sp.Abs(x.inside): x.sign * x.inside for x in self.lengths if x.sign is not None})
 
 
@@ -129,6 +131,8 @@ class Model:
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:' and implied by contacts
     contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
     plane_contacts: tuple = ()  # model/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
+    loads: tuple = ()  # model/loads.py Load's: applied forces and couples
+    body_points: Mapping[str, sp.Matrix] = field(default_factory=dict)  # each body's origin (by its name), its points
 
     @cached_property  # asked in every sign decision; the model never changes
     def decided_by(self) -> dict:
@@ -146,11 +150,19 @@ class Model:
         """A scene at one instant: some velocities are given, not positions."""
         return bool(self.velocities) or any(not b.placed for b in self.bodies)
 
+    def point(self, name: str) -> sp.Matrix:
+        """The position of a named point: the file's (or a contact's), or a body's own
+        (its origin by the body's name, or a point under its ``points:``)."""
+        return self.points[name] if name in self.points else self.body_points[name]
+
+    def has_point(self, name: str) -> bool:
+        return name in self.points or name in self.body_points
+
     def point_velocity(self, name: str) -> sp.Matrix:
         """v_P: given, or dr_P/dt."""
         if name in self.velocities:
             return self.velocities[name]
-        return self.state.d_dt(self.points[name])
+        return self.state.d_dt(self.point(name))
 
     @property
     def state(self) -> State:
@@ -183,6 +195,7 @@ class Model:
             b.position for b in self.bodies if Deferred.made(b, "position") and b.position is not None]
         parts = [*positions, *(b.rotation for b in self.bodies if not b.turns),
                  *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
+        parts += [q for x in self.loads for q in x.generalized]  # a force given as a function of t
         parts += [self.gravity] if self.gravity is not None else []
         return _holds(parts, t) or any(turning_holds_time(b, self.state) for b in self.bodies if b.turns)
 
@@ -219,8 +232,13 @@ def build_model(problem: Problem) -> Model:
     given = {p.name: p.position for p in problem.points if p.position is not None}
     points = Points(tuple(given), lambda name: within.vector(given[name]))  # folded on first read
     names = within = symbols.with_points(points)
-    _check_real(given, problem, symbols)
+    specs = {b.name: b for b in problem.bodies}  # the bodies as placed so far (contacts place some)
+    own = body_points(specs, names, triads)
+    if own:  # a body's origin (its name) and its own points: later bodies, springs, loads, questions
+        names = names.with_points(own)
+    _check_real(given, problem, symbols, tuple(own))
     problem, contacts = _place_contacts(problem, names)  # rolling places its bodies: at and angle
+    specs.update({b.name: b for b in problem.bodies})
     masses: dict = {}
     bodies = tuple(_body(b, names, symbols.with_points(velocities), triads, masses, triad_turns)
                    for b in problem.bodies)
@@ -238,13 +256,66 @@ def build_model(problem: Problem) -> Model:
     assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
     springs = _signed(springs, names, assumptions)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
-                  velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes)
+                  velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes,
+                  loads=_loads(problem, names, bodies, assumptions, values), body_points=own)
     check_assumptions(model.assumptions, values, names)
     _refuse_winding_angles(model)
     return model
 
 
-def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> None:
+def body_points(specs: dict[str, Body], names: Symbols, triads: Mapping[str, sp.Matrix]) -> Points:
+    """Each placed body's origin, named by the body, and its own points: r_P = r_at + R c,
+    c the point's offset from the origin in body axes (R the body's turn), each made on
+    first read, from ``specs`` as they are then (a body a contact places has its place
+    once the contacts are placed; a body's ``at`` names only bodies before it)."""
+    where: dict[str, tuple[str, Expr | None]] = {}
+    for spec in specs.values():
+        if spec.velocity is None:
+            where[spec.name] = (spec.name, None)
+            where.update({name: (spec.name, offset) for name, offset in spec.points})
+
+    def place(name: str) -> sp.Matrix:
+        body, offset = where[name]
+        spec = specs[body]
+        if spec.at is None:  # read while the contacts are placed, before this body is
+            raise InputError(f"'{name}' is a point of body '{body}', which a contact places: a contact's "
+                             "geometry cannot use it (its place is not known yet)", spec.loc)
+        origin = within.vector(spec.at)  # a body may sit at an earlier body's point
+        return origin if offset is None else origin + _rotation(spec, within, triads) * within.vector(offset)
+
+    points = Points(tuple(where), place)
+    within = names.with_points(points)
+    return points
+
+
+def _rotation(spec: Body, names: Symbols, triads: Mapping[str, sp.Matrix]) -> sp.Matrix:
+    """R, body axes to scene axes: the planar angle's turn about z, or the 3D turns."""
+    if spec.orientation:
+        start = triads[spec.orientation[0]] if isinstance(spec.orientation[0], str) else None
+        return _turns([x for x in spec.orientation if not isinstance(x, str)], names, start)
+    return sp.rot_axis3(-names.scalar(spec.angle)) if spec.angle is not None else sp.eye(3)
+
+
+def _loads(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], every: tuple, values) -> tuple:
+    """The applied forces and couples (model/loads.py, imported only for a scene with
+    some), each sign they need decided by the values and the assumptions."""
+    if not (problem.forces or problem.couples):
+        return ()
+    from rbdsolve.model.assumptions import implies
+    from rbdsolve.model.loads import build_loads
+
+    table = decided_by(substitutions(every, names) if every else {}, values)
+
+    def decide(expr: sp.Expr) -> int | None:
+        value = sp.factor(expr.xreplace(table))
+        if value.is_positive or value.is_negative:
+            return 1 if value.is_positive else -1
+        return next((sign for sign in (1, -1) if implies(every, sp.StrictGreaterThan(sign * expr, 0))), None)
+
+    return build_loads(problem, names, bodies, decide)
+
+
+def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols, own: tuple[str, ...] = ()) -> None:
     """Each point's and each body origin's own terms are real numbers (``Symbols.vector``),
     with the points it names standing for one real vector (x, y, z): the check a fold
     makes, here at the cost of one term a link of a chain rather than of the whole sum
@@ -254,18 +325,29 @@ def _check_real(given: Mapping[str, Expr], problem: Problem, names: Symbols) -> 
     asked = [e for e in exprs if not plainly_real(e.tree)]  # most are sums of sin and cos: nothing to ask
     if asked:
         stand_in = sp.Matrix(sp.symbols("x y z", real=True, cls=sp.Dummy))
-        within = names.with_points({name: stand_in for name in given})
+        within = names.with_points({name: stand_in for name in (*given, *own)})
         for expr in asked:
             within.vector(expr)
 
 
 def _angles(model: Model) -> frozenset:
     """The coordinates that are periodic angles: declared so, or AUTO and entering the
-    scene only through sin and cos of integer multiples (``_periodic_coordinates``)."""
+    scene only through sin and cos of integer multiples (``_periodic_coordinates``). A
+    declared angle that a contact rolls by (``rolled``) is one only where the scene
+    still repeats after its turn: rolling lays off the arc R θ, which a slab on a drum
+    holds outside sin and cos."""
     periodic = _periodic_coordinates(model)
+    rolled = rolled_coordinates(model)
     return frozenset(qi for c, qi in zip(model.problem.coordinates, model.q)
-                     if (c.kind is CoordinateKind.ANGLE and c.periodic is not False)
+                     if (c.kind is CoordinateKind.ANGLE and c.periodic is not False
+                         and (qi not in rolled or qi in periodic))
                      or (c.kind is CoordinateKind.AUTO and qi in periodic))
+
+
+def rolled_coordinates(model: Model) -> frozenset:
+    """The coordinates of the contacts: rolling by them places a body, its travel (the
+    arc laid off) entering its position outside sin and cos."""
+    return frozenset(c.coordinate for c in model.contacts if c.coordinate is not None)
 
 
 def _timed(problem: Problem) -> bool:
@@ -343,9 +425,11 @@ def _refuse_winding_angles(model: Model) -> None:
     """A coordinate declared a (periodic) angle must leave V unchanged after a turn, since
     its equilibria are then reported in (−π, π]: one that a spring's stretch or a
     weight's height holds outside sin and cos (a torsion spring counts turns) is refused,
-    with the term that holds it."""
+    with the term that holds it. A contact's coordinate is not: rolling is what holds it
+    there, and it is taken as an angle that does not repeat (``_angles``), with a note."""
+    rolled = rolled_coordinates(model)  # rolling makes them non-periodic: not refused (``_angles``)
     declared = [(c, qi) for c, qi in zip(model.problem.coordinates, model.q)
-                if c.kind is CoordinateKind.ANGLE and c.periodic is not False]
+                if c.kind is CoordinateKind.ANGLE and c.periodic is not False and qi not in rolled]
     if not declared:
         return
     terms = [(f"spring '{s.name}'", s.stretch) for s in model.springs]
@@ -532,11 +616,18 @@ def _signed(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple
     assumed = substitutions(assumptions, names) if assumptions else {}
     out = []
     for s in springs:
+        if s.source.ends is not None and not s.stretch.has(sp.Abs):  # along a slope: √(u²) = |u| once joined
+            s = replace(s, stretch=s.stretch.xreplace({r: as_square_root(r) for r in _roots(s.stretch)}))
         if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
             stretch, lengths = signed_length(s.stretch, reference, assumed)
             s = replace(s, stretch=stretch, lengths=lengths)
         out.append(s)
     return tuple(out)
+
+
+def _roots(expr: sp.Expr) -> set:
+    """The square roots in expr (a linear spring's length √(d·d))."""
+    return {x for x in expr.atoms(sp.Pow) if x.exp == sp.S.Half}
 
 
 def _periodic_coordinates(model: Model) -> frozenset:

@@ -120,7 +120,8 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
         lengths = tuple(implied(contact, v, sp.Integer(0), names, why) for v, why in contact_lengths(contact, problem, names))
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
-            origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names)
+            origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names,
+                                       values)
             placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
             rollings.append(replace(rolling, requires=lengths + rolling.requires))
             continue
@@ -159,10 +160,10 @@ def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame 
                          "give the contact a coordinate of its own", c.loc)
 
 
-def _hanging(c: Contact, drum: Body, names: Symbols) -> tuple[sp.Matrix, Rolling]:
-    """A body on a string from a drum over a pulley (model/strings.py)."""
+def _hanging(c: Contact, drum: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, Rolling]:
+    """A body on a string from a drum over a pulley, or straight from it (model/strings.py)."""
     e = _geometry(c, drum, c.pulley.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
-    origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names)
+    origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names, values)
     return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,
                            requires=_wound(c, drum, names))
 

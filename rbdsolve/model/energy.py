@@ -2,8 +2,9 @@
 
 T = Σ_bodies (T_translation + T_rotation),
     T_translation = ½ m v_G · v_G,   T_rotation = ½ ω · J_G ω     (König's theorem)
-V = V_gravity + V_springs,
-    V_gravity = −Σ m g·r_G,   V_spring = ½ k s²  (s: the spring's stretch)
+V = V_gravity + V_springs + V_loads,
+    V_gravity = −Σ m g·r_G,   V_spring = ½ k s²  (s: the spring's stretch),
+    V_load = −F·r_P for a constant force, … where an applied load has a potential (model/loads.py)
 
 The mass matrix comes from the velocity Jacobians, never from differentiating T twice:
 with v_G = J_v q̇ + v_t and ω = J_ω q̇ + ω_t (J_v = ∂r_G/∂q when r_G is known),
@@ -91,6 +92,7 @@ def potential_terms(model: Model) -> list[tuple[str, sp.Expr]]:
                 terms.append((f"gravity on {body.name}", V_gravity))
     for spring in model.springs:
         terms.append((f"spring {spring.name}", spring.stiffness * spring.stretch**2 / 2))
+    terms += [(f"{x.kind} {x.name}", x.potential) for x in model.loads if x.potential is not None and x.potential != 0]
     return terms
 
 

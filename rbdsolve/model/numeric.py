@@ -156,6 +156,14 @@ def _check_supported(problem: Problem) -> None:
         raise NotNumeric("the scene has prescribed motion (functions of time): use the symbolic route")
     if problem.frames:
         raise NotNumeric("the scene has moving frames: use the symbolic route")
+    if problem.forces or problem.couples:
+        raise NotNumeric("the scene has applied loads, whose potential is derived with sympy: use the symbolic route")
+    own = {b.name for b in problem.bodies} | {n for b in problem.bodies for n, _ in b.points}
+    named = [b.at for b in problem.bodies if b.at is not None]
+    named += [e for s in problem.springs for e in (s.ends or ())]
+    for expr in named:
+        if not own.isdisjoint(expr.names()):
+            raise NotNumeric(f"'{expr.text}' names a body's point (placed with the body): use the symbolic route")
     for point in problem.points:
         if point.position is None:
             raise NotNumeric(f"point '{point.name}' is given by its velocity at an instant, not a position")

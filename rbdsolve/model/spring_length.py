@@ -38,6 +38,21 @@ def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
     return length.xreplace(signed), lengths
 
 
+def as_square_root(length: sp.Expr) -> sp.Expr:
+    """√(d·d) written √(u²) = |u| where d·d is a square once its sin² + cos² are
+    joined: a spring along a slope, d = (D − x)(cos α, sin α), has d·d = (D − x)²
+    (cos² α + sin² α), which sympy leaves as √(D² − 2 D x + x²); |D − x| is then the
+    form ``signed_length`` writes D − x. Small radicands only (trigsimp is slow), and
+    the length unchanged unless it became an |u|."""
+    if not (length.is_Pow and length.exp == sp.S.Half) or sp.count_ops(length.base) > _SMALL:
+        return length
+    joined = sp.sqrt(sp.factor(sp.trigsimp(length.base)))
+    return joined if joined.has(sp.Abs) else length
+
+
+_SMALL = 80  # operations in a radicand worth joining (two springs on a slope have ~30)
+
+
 def _sign_at(u: sp.Expr, reference: Mapping, assumed: Mapping) -> int | None:
     """u's sign at the reference configuration, where the parameters' signs (or the
     assumptions) decide it, and it is not 0; else None."""

@@ -24,23 +24,26 @@ MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
 class BodyReader:
-    def __init__(self, reading: Reading, placed: dict[str, str] | None = None):
+    def __init__(self, reading: Reading, placed: dict[str, str] | None = None,
+                 hanging: frozenset[str] = frozenset()):
         self.reading = reading
         self.placed = placed or {}  # body -> the contact that places it
+        self.hanging = hanging  # the bodies that hang straight from a drum
 
     def body(self, name: str, node: Node) -> Body:
         spec = expect_mapping(node, f"body '{name}'")
         what = f"body '{name}'"
         if name in self.placed:
-            _refuse_placement(spec, name, self.placed[name])
+            _refuse_placement(spec, name, self.placed[name], name in self.hanging)
             at, angle, velocity, omega = None, None, None, None
         else:
             at, angle, velocity, omega = self.motion(spec, what)
         orientation = self.orientation(spec)
+        points = self.points(spec.get("points"), name)
         if spec.get("parts") is None:
-            part = self.part(name, spec, what, MOTION_KEYS, simple=True, translating=_is_zero(omega))
-            return Body(name, (part,), at, angle, spec.loc, velocity, omega, orientation)
-        check_keys(spec, ("parts",), ("at", *MOTION_KEYS), what)
+            part = self.part(name, spec, what, (*MOTION_KEYS, "points"), simple=True, translating=_is_zero(omega))
+            return Body(name, (part,), at, angle, spec.loc, velocity, omega, orientation, points)
+        check_keys(spec, ("parts",), ("at", *MOTION_KEYS, "points"), what)
         table = expect_mapping(spec.get("parts"), "parts: name -> part")
         if not table.entries:
             raise InputError(f"{what} has no parts", table.loc)
@@ -48,7 +51,21 @@ class BodyReader:
                                 simple=False) for k, v in table.entries)
         if all(p.hole for p in parts):
             raise InputError(f"{what} is all holes: give at least one solid part", table.loc)
-        return Body(name, parts, at, angle, spec.loc, velocity, omega, orientation)
+        return Body(name, parts, at, angle, spec.loc, velocity, omega, orientation, points)
+
+    def points(self, node: Node | None, body: str) -> tuple[tuple[str, ex.Expr], ...]:
+        """The body's own points, ``points: {B: [l/2, 0]}``: each a constant offset from
+        the body's origin in body axes (it turns with the body); its name is a point of
+        the scene like any other (springs, forces, questions)."""
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return ()
+        table = expect_mapping(node, f"the points of body '{body}': name -> position in the body")
+        scope = self.reading.scope.constants(f"a point of body '{body}' is fixed in it: its position from the "
+                                             "body's origin, in body axes, is constant (parameters and numbers)")
+        return tuple((self.reading.declare(key, "point"),
+                      self.reading.expr(value, ex.Kind.VECTOR, f"the position of point '{key.text}' in body "
+                                        f"'{body}' (a vector in body axes)", scope))
+                     for key, value in table.entries)
 
     def motion(self, spec: Map, what: str) -> tuple[ex.Expr | None, ...]:
         """(at, angle) for a body that moves with the scene, or (velocity,
@@ -169,12 +186,21 @@ class BodyReader:
         )
 
 
-def _refuse_placement(spec: Map, name: str, contact: str) -> None:
-    """A body that rolls is placed by its contact: its position and angle follow."""
+def _refuse_placement(spec: Map, name: str, contact: str, hanging: bool) -> None:
+    """A body that rolls is placed by its contact: its position and angle follow. One
+    that hangs from a drum does not turn, which the message says where it is given an
+    angle (a yo-yo hung from a turning drum is not in the format)."""
     for key in ("at", *MOTION_KEYS):
         if spec.get(key) is not None:
+            turning = hanging and key in MOTION_KEYS
             raise InputError(f"body '{name}' is placed by contact '{contact}' (the contact gives its position and "
-                             f"angle); remove '{key}'", spec.get(key).loc)
+                             f"angle); remove '{key}'" + (_HANGS_UNTURNED if turning else ""), spec.get(key).loc)
+
+
+_HANGS_UNTURNED = (": a body hanging from a drum ('hangs_from') translates and does not turn. One that turns "
+                   "as its own string unwinds (a yo-yo hung from a drum that turns too) is not in the format "
+                   "yet; the nearest it has is a yo-yo on a string from a fixed point, 'string: {fixed_at: A, "
+                   "direction: [0, -1]}'")
 
 
 def _gyration(spec: Map) -> None:

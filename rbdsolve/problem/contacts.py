@@ -6,6 +6,7 @@
       E: {body: half, edge: curved, rolls_on: floor, angle: theta}
       S: {body: yoyo, string: {fixed_at: A, direction: [0, -1], radius: r}, along: y}
       H: {body: block, hangs_from: {drum: cylinder, direction: [1, 0], over: P}}
+      K: {body: weight, hangs_from: {drum: pulley, side: left}}    # straight down from the rim
       P: {body: coin, rolls_on: {plane: {normal: z}}}     # in 3D: the coin has 'at' and 'orientation'
 
 A body hanging on a string (``hangs_from``) from a drum, over a light pulley, names no
@@ -31,7 +32,8 @@ from rbdsolve.problem.bodies import refuse_negative
 from rbdsolve.problem.schema import Body, Contact, Measure, Part, Pulley, Surface, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 
-SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right")}
+SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right"),
+         "hanging": ("left", "right", "above", "below")}
 
 
 # a planar contact's rolling condition integrates; in 3D it does not
@@ -59,6 +61,14 @@ def contact_bodies(node: Node | None) -> dict[str, str]:
                                  "that over-constrains it (one rolling contact or string per body)", body.loc)
             out[body.text] = key.text
     return out
+
+
+def hanging_bodies(node: Node | None) -> frozenset[str]:
+    """The bodies that hang straight from a drum (``hangs_from``): they do not turn."""
+    if not isinstance(node, Map):
+        return frozenset()
+    return frozenset(v.get("body").text for _, v in node.entries
+                     if isinstance(v, Map) and v.get("hangs_from") is not None and isinstance(v.get("body"), Scalar))
 
 
 class ContactReader:
@@ -123,8 +133,8 @@ class ContactReader:
         word = expect_scalar(spec.get("body"), "a body name")
         if word.text not in bodies:
             raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
-        hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, direction, over}")
-        check_keys(hang, ("drum", "direction", "over"), ("radius", "edge", "down", "length", "part"),
+        hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, side} or {drum, direction, over}")
+        check_keys(hang, ("drum",), ("over", "direction", "side", "radius", "edge", "down", "length", "part"),
                    "a hanging string")
         drum = _body(hang.get("drum"), bodies)
         if drum.name == word.text:
@@ -132,10 +142,11 @@ class ContactReader:
         radius = self.reading.optional_constant(hang.get("radius"), "the radius the string is wound at")
         part = touching_part(hang, drum)
         edge = _edge(hang, part, string=radius is not None)
-        down = self.reading.axis(hang.get("down")) if hang.get("down") is not None else None
         length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
-        pulley = Pulley(drum.name, edge, radius, self.place(hang.get("over"), hang.loc), self.direction(hang),
-                        down, length, hang.loc, part=part.name)
+        over, side, down = _hanging_keys(hang)
+        direction = self.direction(hang) if over is not None or hang.get("direction") is not None else _down(hang)
+        pulley = Pulley(drum.name, edge, radius, self.place(over, hang.loc) if over is not None else None, direction,
+                        self.reading.axis(down) if down is not None else None, length, hang.loc, side, part.name)
         line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
         return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
@@ -245,6 +256,36 @@ class ContactReader:
             raise InputError(f"expected side {' or '.join(choices)}, found {describe(node)}"
                              f"{did_you_mean(word, list(choices))}", node.loc)
         return word
+
+
+def _hanging_keys(hang: Map) -> tuple[Node | None, str | None, Node | None]:
+    """(over, side, down) of a hanging string: over a light pulley at 'over' (the side
+    follows from where the pulley is), or straight from the drum's rim on its 'side'."""
+    over, side, down = hang.get("over"), hang.get("side"), hang.get("down")
+    if over is not None:
+        if side is not None:
+            raise InputError("the string runs over the pulley at 'over', which fixes the side it leaves the drum on: "
+                             "remove 'side'", side.loc)
+        if hang.get("direction") is None:
+            raise InputError("a string over a pulley needs 'direction', the way it leaves the drum towards the "
+                             "pulley ([1, 0]: to the right)", hang.loc)
+        return over, None, down
+    if side is None:
+        raise InputError("a body hanging from the drum says on which side of it the string comes down: "
+                         "'side: left' or 'side: right' (or, over a light pulley, 'over: P' and 'direction')",
+                         hang.loc)
+    word = expect_scalar(side, "left, right, above or below").text.strip()
+    if word not in SIDES["hanging"]:
+        raise InputError(f"expected side {', '.join(SIDES['hanging'])} (where the string leaves the drum, as "
+                         f"drawn), found {describe(side)}{did_you_mean(word, list(SIDES['hanging']))}", side.loc)
+    if down is not None:
+        raise InputError("'down' is the way the string runs after a pulley; straight from the drum it runs along "
+                         "'direction' (default [0, -1])", down.loc)
+    return None, word, None
+
+
+def _down(where: Map) -> ex.Expr:
+    return ex.Expr(ex.Vec((ex.Num(Fraction(0)), ex.Num(Fraction(-1)))), ex.Kind.VECTOR, "[0, -1]", where.loc)
 
 
 def _check_order(contacts: tuple[Contact, ...]) -> None:

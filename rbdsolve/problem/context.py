@@ -47,7 +47,7 @@ def identifier(key: Scalar, what: str) -> str:
 def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
     """A bare unknown name where a vector is expected is most likely a misspelt point."""
     name = node.text.strip()
-    known = scope.all_names() | {n for n, _ in scope.refused} | ex.CONSTANTS
+    known = scope.all_names() | {n for n, _ in (*scope.refused, *scope.later)} | ex.CONSTANTS
     if name.isidentifier() and name not in known:
         raise InputError(f"unknown point '{name}'{did_you_mean(name, sorted(scope.vectors))}", node.loc)
 
@@ -64,6 +64,8 @@ class Reading:
         self.triad_vectors: frozenset[str] = frozenset()
         self.triad_names: tuple[str, ...] = ()
         self.point_exprs: dict[str, ex.Expr] = {}
+        self.body_points: dict[str, str] = {}  # a body's name (its origin) and its own points -> the body
+        self.later: tuple[tuple[str, str], ...] = ()  # bodies' points, refused before the bodies are placed, and why
         self.taken: dict[str, str] = {}  # name -> what declared it
 
     # --- expressions -------------------------------------------------------------------
@@ -125,10 +127,12 @@ class Reading:
         and the rates dot(q), never the coordinates themselves (the configuration of an
         instant is given by the question, with 'at:')."""
         positions = positions | self.triad_vectors
-        self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time)
+        bare = not self.scope.functions_of_time  # no coordinate (nor prescribed motion): a name may be one forgotten
+        self.scope = ex.Scope(self.scope.scalars, positions, self.scope.functions_of_time, bare=bare)
         why_velocity = "it is given by its velocity; positions name points given by position"
         self.positions = ex.Scope(self.scope.scalars, positions,
-                                  refused=tuple((n, why_velocity) for n in sorted(velocities)))
+                                  refused=tuple((n, why_velocity) for n in sorted(velocities)), later=self.later,
+                                  bare=bare)
         coordinates = frozenset(self.coordinates)
         why = ("a velocity at the instant uses parameters, numbers and rates dot(q); "
                "give the configuration with the question's 'at:'")
@@ -136,13 +140,23 @@ class Reading:
         refused = [(n, why) for n in sorted(self.scope.functions_of_time | {"t"})]
         refused += [(n, why_position) for n in sorted(positions)]
         self.rates = ex.Scope(self.scope.scalars - self.scope.functions_of_time - {"t"}, velocities, coordinates,
-                              tuple(refused), max_order=1)
+                              tuple(refused), max_order=1, bare=bare)
 
     def add_positions(self, names: frozenset[str]) -> None:
         """Points the model derives, named after their declaration (a contact on a plane,
         C): the questions may take moments about them."""
         self.positions = replace(self.positions, vectors=self.positions.vectors | names)
         self.scope = replace(self.scope, vectors=self.scope.vectors | names)
+
+    def add_body_points(self, bodies) -> None:
+        """Each body's origin, named by the body, and its own points (``points:`` under the
+        body) become points the later sections may name (springs, forces, questions). A
+        body given by its velocities at an instant has none."""
+        for b in bodies:
+            if b.velocity is None:
+                self.body_points[b.name] = b.name
+                self.body_points.update({name: b.name for name, _ in b.points})
+        self.add_positions(frozenset(self.body_points))
 
     def point_names(self, expr: ex.Expr) -> set[str]:
         """Every name an expression uses, through the points it names."""

@@ -8,7 +8,8 @@ dimensions (``solvers/shared/units.py``). A parameter's dimension is known from
 - the place it stands alone (times numbers) in the scene: a body's ``mass: 3*m`` (a
   mass), a shape's dimension ``length: sqrt(3)*r`` or a spring's natural length (a
   length), ``gravity: [0, -g]`` (an acceleration), a linear spring's ``stiffness: k``
-  (N/m), a term ``l*sin(theta)`` of a point's position (a length);
+  (N/m), a term ``l*sin(theta)`` of a point's position (a length), a term
+  ``F*cos(alpha)`` of an applied force (N) and a couple's moment (N·m);
 - otherwise, the unit of its value (``values: {c: 2 N*m/rad}``).
 
 A parameter found with two different dimensions in the scene (``mass: l``, with l a
@@ -22,14 +23,16 @@ from fractions import Fraction
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantity import ACCELERATION, LENGTH, MASS, Dimension
-from rbdsolve.problem.schema import Body, Spring
+from rbdsolve.problem.schema import Body, Couple, Force, Spring
 
+FORCE = Dimension(Fraction(1), Fraction(1), Fraction(-2))  # N = kg m/s²
 STIFFNESS = Dimension(Fraction(1), Fraction(0), Fraction(-2))  # N/m = kg/s²
 TORQUE = Dimension(Fraction(1), Fraction(2), Fraction(-2))  # a torsional stiffness, N·m per radian
 
 
 def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
-                     gravity: ex.Expr | None, positions: tuple[ex.Expr, ...]) -> dict[str, tuple[Dimension, str]]:
+                     gravity: ex.Expr | None, positions: tuple[ex.Expr, ...], forces: tuple[Force, ...] = (),
+                     couples: tuple[Couple, ...] = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter whose dimension the scene fixes: (dimension, where it was seen)."""
     found: dict[str, set[tuple[Dimension, str]]] = {}
 
@@ -54,6 +57,15 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
     for position in positions:
         for term in _vector_terms(position.tree):
             see(term, LENGTH, "points", calls=True)
+    for f in forces:
+        terms = _vector_terms(f.force.tree) if f.towards is None else [f.force.tree]
+        for term in terms:
+            see(term, FORCE, f"forces.{f.name}.force", calls=True)
+        if f.wound is not None:
+            see(f.wound.radius.tree, LENGTH, f"forces.{f.name}.wound.radius")
+    for c in couples:
+        for term in (_vector_terms(c.moment.tree) if c.moment.kind is ex.Kind.VECTOR else [c.moment.tree]):
+            see(term, TORQUE, f"couples.{c.name}.moment", calls=True)
     return {name: min(seen, key=lambda s: s[1]) for name, seen in found.items()
             if len({d for d, _ in seen}) == 1}
 

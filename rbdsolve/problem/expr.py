@@ -181,7 +181,10 @@ class Scope:
     vectors: frozenset[str] = frozenset()
     functions_of_time: frozenset[str] = frozenset()  # names dot()/ddot() accept
     refused: tuple[tuple[str, str], ...] = ()  # declared names not allowed here, and why
+    later: tuple[tuple[str, str], ...] = ()  # names declared further on (a body's points), not yet usable, and why
+    bare: bool = False  # the file declares no coordinates: an unknown name may be one it forgot
     max_order: int = 2  # 1: rates dot() only (velocities at an instant)
+    no_rates: str = ""  # why rates are refused here, where the format has a reason to give
 
     def all_names(self) -> set[str]:
         return set(self.scalars) | set(self.vectors)
@@ -191,7 +194,7 @@ class Scope:
         stiffnesses, values. Coordinates, t and points are refused with ``why``."""
         varying = (self.scalars & self.functions_of_time) | {"t"} | self.vectors
         return Scope(self.scalars - varying, frozenset(), frozenset(),
-                     tuple((n, why) for n in sorted(varying & (self.all_names() | {"t"}))))
+                     tuple((n, why) for n in sorted(varying & (self.all_names() | {"t"}))), bare=self.bare)
 
 
 def parse(text: str, loc: Location, scope: Scope, plain: bool = True) -> Expr:
@@ -279,7 +282,7 @@ class _Checker:
             return Name(name), Kind.SCALAR
         if name in self.scope.vectors:
             return Name(name), Kind.VECTOR
-        for refused, why in self.scope.refused:
+        for refused, why in (*self.scope.refused, *self.scope.later):
             if name == refused:
                 raise self.fail(node, f"'{name}' cannot appear here: {why}")
         if name.startswith("__"):
@@ -287,7 +290,7 @@ class _Checker:
         if name in SCALAR_FUNCTIONS or name in DERIVATIVE_FUNCTIONS or name in VECTOR_FUNCTIONS:
             raise self.fail(node, f"'{name}' is a function: call it, as in {name}(...)")
         hint = did_you_mean(name, sorted(self.scope.all_names() | CONSTANTS))
-        if not hint and not self.scope.functions_of_time and not self.scope.refused:
+        if not hint and self.scope.bare:
             hint = " (the file declares no coordinates: list them as 'coordinates: [...]')"
         raise self.fail(node, f"unknown symbol '{name}'{hint}")
 
@@ -381,7 +384,8 @@ class _Checker:
             raise self.fail(node, f"{func}() takes the name of a coordinate, as in {func}(x)")
         name = node.args[0].id
         if not self.scope.functions_of_time:
-            raise self.fail(node, f"rates such as {func}({name}) are not allowed here")
+            why = f": {self.scope.no_rates}" if self.scope.no_rates else ""
+            raise self.fail(node, f"rates such as {func}({name}) are not allowed here{why}")
         if name not in self.scope.functions_of_time:
             known = sorted(self.scope.functions_of_time)
             hint = did_you_mean(name, known)

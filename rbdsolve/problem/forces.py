@@ -146,7 +146,7 @@ class _Supports:
         return _contact(contact, node.loc)
 
     def _point(self, name: str, node: Node) -> None:
-        known = list(self.reading.point_exprs)
+        known = list(self.reading.point_exprs) + list(self.reading.body_points)
         if name not in known:
             offered = known + list(self.contacts)
             raise InputError(f"no point or contact '{name}'{did_you_mean(name, offered)}", node.loc)

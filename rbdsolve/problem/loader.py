@@ -6,6 +6,7 @@ Every error names file:line:column, the key path, what was expected and what was
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 from pathlib import Path
 
 from rbdsolve.errors import InputError, did_you_mean
@@ -25,7 +26,8 @@ from rbdsolve.problem.schema import (
     ValueRange,
 )
 from rbdsolve.problem.bodies import BodyReader, refuse_negative
-from rbdsolve.problem.contacts import ContactReader, contact_bodies
+from rbdsolve.problem.contacts import ContactReader, contact_bodies, hanging_bodies
+from rbdsolve.problem.loads import LoadReader
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.orientation import OrientationReader
@@ -38,7 +40,11 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
-            "bodies", "contacts", "springs", "gravity", "values", "assumptions", "questions")  # fmt: skip
+            "bodies", "contacts", "springs", "forces", "couples", "gravity", "values", "assumptions",
+            "questions")  # fmt: skip
+# keys a student may write for a section under another name: said so, not "unknown key"
+SECTION_ALIASES = {"torques": "couples", "torque": "couples", "moments": "couples", "couple": "couples",
+                   "force": "forces", "loads": "forces", "applied_forces": "forces", "applied": "forces"}
 
 
 def load_file(path: str | Path) -> Problem:
@@ -80,6 +86,7 @@ class _Loader:
     # --- sections ----------------------------------------------------------------------
 
     def problem(self, root: Map) -> Problem:
+        _section_aliases(root)
         check_keys(root, ("questions",), TOP_KEYS, "the problem")
         get = root.get
         parameters = self.parameters(get("parameters"))
@@ -99,14 +106,18 @@ class _Loader:
         triads = OrientationReader(self.reading).triads(get("triads"))
         self.reading.triad_vectors = frozenset(v for tr in triads for v in tr.vectors)
         self.reading.triad_names = tuple(tr.name for tr in triads)
+        self.reading.later = _later_points(get("bodies"))
         self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
-        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")))
+        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")), hanging_bodies(get("contacts")))
         contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
         self.reading.add_positions(frozenset(c.name for c in contacts if c.surface.kind is SurfaceKind.PLANE))
+        self.reading.add_body_points(bodies)  # a body's origin (its name) and its own points, from here on
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
-        known = _known_dimensions(parameters, bodies, springs, gravity, points)
+        loads = LoadReader(self.reading, bodies)
+        forces, couples = loads.forces(get("forces")), loads.couples(get("couples"))
+        known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples)
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
             file=self.reading.file,
@@ -120,7 +131,8 @@ class _Loader:
             springs=springs,
             gravity=gravity,
             values=values,
-            questions=self.questions(get("questions"), coordinates, bodies, points, frames, contacts),
+            questions=self.questions(get("questions"), coordinates, bodies, points + _body_points(bodies), frames,
+                                     contacts),
             prescribed=prescribed,
             frames=frames,
             unknowns=unknowns,
@@ -129,6 +141,8 @@ class _Loader:
             assumptions=self.assumptions(get("assumptions")),
             contacts=contacts,
             dimensions=_dimensions(known, values, ranges),
+            forces=forces,
+            couples=couples,
         )
 
     def assumptions(self, node: Node | None) -> tuple[Assumption, ...]:
@@ -266,13 +280,19 @@ class _Loader:
                              self.reading.constant(rate, "a rate of turning") if rate is not None else None, spec.loc))
         return tuple(out)
 
-    def bodies(self, node: Node | None, placed: dict[str, str]) -> tuple[Body, ...]:
-        """The bodies; those in ``placed`` (body -> contact) are placed by rolling."""
+    def bodies(self, node: Node | None, placed: dict[str, str], hanging: frozenset[str] = frozenset()
+               ) -> tuple[Body, ...]:
+        """The bodies; those in ``placed`` (body -> contact) are placed by rolling, or
+        hang from a drum (``hanging``)."""
         if node is None:
             return ()
         table = expect_mapping(node, "bodies: name -> body")
-        reader = BodyReader(self.reading, placed)
-        return tuple(reader.body(self.reading.declare(k, "body"), v) for k, v in table.entries)
+        reader = BodyReader(self.reading, placed, hanging)
+        out = []
+        for k, v in table.entries:
+            out.append(reader.body(self.reading.declare(k, "body"), v))
+            self.reading.add_body_points(out[-1:])  # a later body may sit at this one's points
+        return tuple(out)
 
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
@@ -341,13 +361,57 @@ class _Loader:
 
 
 
+def _section_aliases(root: Map) -> None:
+    """A section under a name the format does not use (``torques:``): name the one it uses."""
+    for key, _ in root.entries:
+        if key.text in SECTION_ALIASES:
+            raise InputError(f"unknown key '{key.text}' in the problem: applied loads go under "
+                             f"'{SECTION_ALIASES[key.text]}:' (forces: name -> {{on, at, force}}; couples, torques "
+                             "and motors: name -> {on, by, moment})", key.loc)
+
+
+def _later_points(node: Node | None) -> tuple[tuple[str, str], ...]:
+    """The bodies' names and their own points, read ahead: the scene's points and the
+    bodies' places are written before the bodies are placed, so they cannot name them
+    (said so, rather than 'unknown symbol')."""
+    if not isinstance(node, Map):
+        return ()
+    out = []
+    for key, spec in node.entries:
+        out.append((key.text, f"it names body '{key.text}', whose origin (its centre) springs, forces, the "
+                              "questions and the bodies listed after it may use; the scene's points come before "
+                              "the bodies are placed, so they cannot: write the position from the scene's points"))
+        own = spec.get("points") if isinstance(spec, Map) else None
+        if isinstance(own, Map):
+            out += [(k.text, f"it is a point of body '{key.text}' (under its 'points:'), placed with the body: "
+                             "springs, forces, the questions and the bodies listed after it may use it, but the "
+                             "scene's points cannot; write the position from the scene's points")
+                    for k, _ in own.entries]
+    return tuple(out)
+
+
+def _body_points(bodies: tuple[Body, ...]) -> tuple[Point, ...]:
+    """The bodies' origins (by the body's name) and their own points, as named points the
+    questions may ask about. The questions read only the names: each position here is
+    the point's offset in its body (the model places it)."""
+    out = []
+    for b in bodies:
+        if b.velocity is None:
+            out.append(Point(b.name, b.at or ex.Expr(ex.Vec((ex.Num(Fraction(0)),) * 2), ex.Kind.VECTOR, "[0, 0]",
+                                                      b.loc)))
+            out += [Point(name, offset) for name, offset in b.points]
+    return tuple(out)
+
+
 def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
-                      gravity: ex.Expr | None, points: tuple[Point, ...]) -> dict[str, tuple[Dimension, str]]:
+                      gravity: ex.Expr | None, points: tuple[Point, ...], forces: tuple = (),
+                      couples: tuple = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter's dimension where the file fixes it: its declared unit first, then
     the scene (problem/dimensions.py)."""
     positions = tuple(p.position for p in points if p.position is not None)
     positions += tuple(b.at for b in bodies if b.at is not None)
-    known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions)
+    known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions, forces,
+                             couples)
     for p in parameters:
         if p.unit is not None:
             known[p.name] = (p.unit.dimension, f"its unit {p.unit.text}")

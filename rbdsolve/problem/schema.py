@@ -229,6 +229,7 @@ class Body:
     velocity: Expr | None = None
     angular_velocity: Expr | None = None  # a scalar (planar, about z) or a vector
     orientation: tuple[str | Turn, ...] = ()  # 3D: a triad's name first, if any, then turns
+    points: tuple[tuple[str, Expr], ...] = ()  # its own points: name -> offset from its origin, in body axes
 
 
 class SurfaceKind(Enum):
@@ -271,16 +272,19 @@ class Pulley:
     """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
     centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
     and hangs from there along ``down`` with the contact's body at its end, ``length``
-    below ``over`` at the reference configuration (model/strings.py)."""
+    below ``over`` at the reference configuration (model/strings.py). Without a pulley
+    (``over`` None) it runs straight along ``direction`` from the drum's ``side`` to the
+    body, ``length`` from the rim at the reference."""
 
     drum: str
     edge: str
     radius: Expr | None
-    over: Expr
+    over: Expr | None  # None: no pulley, the body hangs straight from the drum
     direction: Expr
     down: Expr | None  # None: straight down, [0, −1]
-    length: Expr | None  # None: the straight part's length at the reference
+    length: Expr | None  # None: the straight part's length at the reference (0 without a pulley)
     loc: Location
+    side: str | None = None  # without a pulley: left, right, above or below the drum's centre, as drawn
     part: str | None = None  # the drum's part the string is wound on (None: its only part)
 
 
@@ -319,6 +323,45 @@ class Spring:
     natural_length: Expr | None
     angle: Expr | None
     rest: Expr | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Wound:
+    """A string wound at ``radius`` about a force's point, leaving it tangentially on
+    ``side`` (below, above, left or right of the point, as drawn) along the force."""
+
+    radius: Expr
+    side: str
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Force:
+    """A force applied to body ``on``, taken by its material point at ``at`` (None: the
+    body's origin): ``force`` a vector (constant, or a function of t and the
+    coordinates), or, with ``towards``, a size along the line from that point to
+    ``towards`` (a string pulled over a peg there); ``wound``: a string wound on the body
+    about ``at``, so the force acts where the string leaves it (model/loads.py)."""
+
+    name: str
+    on: str
+    at: Expr | None
+    force: Expr
+    towards: Expr | None
+    wound: Wound | None
+    loc: Location
+
+
+@dataclass(frozen=True)
+class Couple:
+    """A couple (a torque) ``moment`` on body ``on`` (a scalar about z, or a vector), and
+    −moment on body ``by`` where it acts at a joint between the two (a motor)."""
+
+    name: str
+    on: str
+    by: str | None
+    moment: Expr
     loc: Location
 
 
@@ -616,6 +659,8 @@ class Problem:
     assumptions: tuple[Assumption, ...] = ()  # inequalities between parameters (R > r)
     contacts: tuple[Contact, ...] = ()  # rolling contacts and strings (problem/contacts.py)
     dimensions: tuple[tuple[str, Dimension], ...] = ()  # parameters whose dimension is known
+    forces: tuple[Force, ...] = ()  # applied forces (problem/loads.py)
+    couples: tuple[Couple, ...] = ()  # applied couples and motor torques
 
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)

@@ -31,19 +31,29 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Solution
 from rbdsolve.solvers.shared import routes
 from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.routes import Family, later
+from rbdsolve.solvers.shared.routes import Family, later, later_check, later_residuals
 
 FAMILIES = {
-    QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric"), later("eom.named", "named")),
-    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"), later("equilibria.named", "named")),
-    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later("modes.named", "named")),
-    QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric"), later("inertia.named", "named")),
-    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric"), later("impact.named", "named")),
-    QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric"), later("steady_spin.named", "named")),
-    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric"), later("steady_motion.named", "named")),
-    QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric"), later("kinematics.named", "named")),
-    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric"), later("reactions.named", "named")),
-    QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric"), later("energy.named", "named")),
+    QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric"), named=later("eom.named", "named")),
+    QuestionKind.EQUILIBRIA: Family(later("equilibria.exact"), later("equilibria.numeric"),
+                                    later_residuals("equilibria.check"), later_check("equilibria.exact"),
+                                    named=later("equilibria.named", "named")),
+    QuestionKind.MODES: Family(later("modes.exact"), later("modes.numeric"), later_residuals("modes.check"),
+                               later_check("modes.exact"), named=later("modes.named", "named")),
+    QuestionKind.INERTIA: Family(later("inertia.exact"), later("inertia.numeric"),
+                                 named=later("inertia.named", "named")),
+    QuestionKind.IMPACT: Family(later("impact.exact"), later("impact.numeric"), later_residuals("impact.check"),
+                                named=later("impact.named", "named")),
+    QuestionKind.STEADY_SPIN: Family(later("steady_spin.exact"), later("steady_spin.numeric"),
+                                     named=later("steady_spin.named", "named")),
+    QuestionKind.STEADY_MOTION: Family(later("steady_motion.exact"), later("steady_motion.numeric"),
+                                       later_residuals("steady_motion.check"),
+                                       named=later("steady_motion.named", "named")),
+    QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric"),
+                                    named=later("kinematics.named", "named")),
+    QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric"),
+                                   later_residuals("reactions.check"), named=later("reactions.named", "named")),
+    QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric"), named=later("energy.named", "named")),
 }
 
 

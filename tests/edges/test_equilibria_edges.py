@@ -15,7 +15,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -100,14 +100,18 @@ def test_theta_equals_k_sin_theta_every_root_numerically(k) -> None:
     assert "sign-change scan" in solution.warnings[0] and "every equilibrium in it is found provided" in solution.warnings[0]
 
 
-def test_the_exact_route_refuses_theta_equals_k_sin_theta_and_auto_falls_back() -> None:
+def test_the_exact_route_gives_the_evident_root_of_theta_equals_k_sin_theta_and_auto_goes_numeric() -> None:
+    """θ = 2 sin θ: the exact route lists θ = 0 only (it makes every term vanish) and says
+    others may exist; auto, with every value given, takes the numeric route at once,
+    chosen from the equations' structure, and finds all three."""
     model = _model(INVERTED.format(c="1/2"))
-    with pytest.raises(UnsolvedError, match="transcendental .* the exact route cannot solve them"):
-        equilibria.solve(None, model, Options())
+    exact = equilibria.solve(None, model, Options())
+    assert [e.at["theta"] for e in exact.answers.equilibria] == [0]
+    assert any("evident roots" in w and "other equilibria may exist" in w.lower() for w in exact.warnings)
     (solution,) = solve_problem(model, Options(route=RouteChoice.AUTO)).solutions
     assert solution.route.value == "numeric" and solution.error is None
-    assert solution.warnings[0].startswith("the exact route could not answer (the equilibrium equations are "
-                                           "transcendental")
+    assert solution.warnings[0].startswith("the exact route would answer only in part: the equilibrium equations "
+                                           "are transcendental")
     assert [round(eq.at["theta"], 9) for eq in solution.answers.equilibria] == pytest.approx(
         [float(r) for r in _oracle_roots(lambda t: t - 2 * mp.sin(t), -20, 20)], abs=TOL)
 

@@ -19,9 +19,11 @@ from conftest import PROBLEMS
 CASES = sorted((PROBLEMS / "contacts").glob("*.yaml"))
 CASES = [p for p in CASES if not p.name.endswith(".expected.yaml")]
 # the velocity of the surface's material point at C, by hand: a fixed surface is at rest,
-# the plank translates with ẋ, the turning disk (centre at the origin) turns at ψ̇: ψ̇ e_z × C
+# the plank translates with ẋ, the turning disk and the ring on its axle (centres at the
+# origin) turn at ψ̇: ψ̇ e_z × C
+TURNING = lambda rate, C: rate["psi"] * sp.Matrix([-C[1], C[0], 0])  # noqa: E731
 SURFACE_VELOCITY = {"cylinder-on-plank": lambda rate, C: sp.Matrix([rate["x"], 0, 0]),
-                    "disk-on-turning-disk": lambda rate, C: rate["psi"] * sp.Matrix([-C[1], C[0], 0])}
+                    "disk-on-turning-disk": TURNING, "ring-and-disk-inside": TURNING}
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])

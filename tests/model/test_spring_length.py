@@ -124,3 +124,31 @@ def test_a_spring_pull_in_a_free_body_diagram_has_no_bars() -> None:
     assert not any(sp.sympify(m.rhs).has(*SIGNS) if isinstance(m.rhs, sp.Basic) else False for m in pulls)
     (said,) = [step.text for step in solution.steps if "spring 'left' pulls" in step.text]
     assert "(−k (d − l₀ + x), 0)" in said and "(k (d − l₀ − x), 0)" in said and "|" not in said
+
+
+# A block at x along a slope at α, a spring from it up the slope to the point d along it:
+# d·d = (d − x)² (cos² α + sin² α), a square once sin² + cos² are joined.
+SLOPE = """\
+parameters: {m: mass, k: stiffness, d: anchor distance, l0: natural length, alpha: slope}
+coordinates: [x]
+points:
+  A: "d*[cos(alpha), sin(alpha)]"
+  P: "x*[cos(alpha), sin(alpha)]"
+bodies:
+  block: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [A, P], natural_length: l0}
+questions:
+  - eom
+"""
+
+
+def test_a_spring_along_a_slope_is_written_d_minus_x() -> None:
+    """By hand: |A − P| = |d − x|, d − x > 0 at x = 0 (d > 0), so V = ½ k (d − x − l₀)²,
+    ∂V/∂x = −k (d − x − l₀), with no root or |…| left."""
+    model = _model(SLOPE)
+    V = potential_energy(model).total
+    (x,) = model.q
+    k, d, l0 = (model.symbols.parameters[n] for n in ("k", "d", "l0"))
+    assert not V.has(*SIGNS) and not any(p.exp == sp.S.Half for p in V.atoms(sp.Pow))
+    assert sp.simplify(sp.diff(V, x) + k * (d - x - l0)) == 0

@@ -247,6 +247,8 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
         shapes += drawn
         anchors += held
     points = tuple(PointLabel(n, _xy(values.vector(p))) for n, p in model.points.items())
+    bodies = {b.name for b in model.bodies}  # a body's own points are labelled; its origin is the body
+    points += tuple(PointLabel(n, _xy(values.vector(p))) for n, p in model.body_points.items() if n not in bodies)
     points += tuple(PointLabel(c.name, _xy(values.vector(c.point))) for c in model.contacts)
     gravity = _unit(values.vector(model.gravity)) if model.gravity is not None else None
     reach = max((math.dist(a, b) for a in anchors for b in anchors), default=1.0) or 1.0
@@ -254,7 +256,8 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
                   tuple(configuration.items()), (*anchors, *(p.at for p in points)),
                   ones_note(unvalued(model)) + _time_note(model), tuple(b.name for b in model.bodies),
                   tuple(_links(model, {p.name: p.at for p in points})),
-                  tuple(_ground(c, model, values, reach) for c in model.contacts if not c.moving_surface)
+                  tuple(_ground(c, model, values, reach) for c in model.contacts
+                        if not c.moving_surface and not _straight(c))
                   + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None),
                   _pivots(model, values, shapes))
 
@@ -499,11 +502,19 @@ def _ground(contact, model: Model, values: _Values, reach: float) -> Ground:
     return Ground((at[0] - half * d[0], at[1] - half * d[1]), (at[0] + half * d[0], at[1] + half * d[1]), normal)
 
 
+def _straight(contact) -> bool:
+    """A body hanging straight from its drum (no pulley): its string is its hanging part."""
+    return contact.source.pulley is not None and contact.source.pulley.over is None
+
+
 def _hanging_part(contact, model: Model, values: _Values) -> Ground:
-    """A string over a pulley: its hanging part, from the pulley's point to the body."""
+    """A string over a pulley: its hanging part, from the pulley's point to the body; a
+    string straight from its drum, from the point C where it leaves the drum."""
     body = next(b for b in model.bodies if b.name == contact.body)
-    over = _xy(values.vector(model.symbols.vector(contact.source.pulley.over)))
-    return Ground(over, _xy(values.vector(body.position)), (0.0, 0.0), string=True)
+    over = contact.source.pulley.over
+    top = _xy(values.vector(model.symbols.vector(over) if over is not None else contact.point))
+    end = values.vector(model.symbols.vector(body.source.at))
+    return Ground(top, _xy(end), (0.0, 0.0), string=True)
 
 
 def _springs(model: Model, values: _Values) -> Iterator[Zigzag]:

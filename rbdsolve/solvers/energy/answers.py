@@ -16,6 +16,7 @@ class EnergyAnswers:
     speed_squared: dict[str, sp.Expr] | None  # point -> v²(q) along the motion (one coordinate)
     to: dict[str, sp.Expr] | None  # the configuration asked ('to'): coordinate -> value, or None
     there: There | None  # the rates and speeds there, or None
+    work: dict[str, sp.Expr] | None = None  # applied load -> its work from the start, V_F(q₀) − V_F(q)
 
 
 @dataclass(frozen=True)
@@ -27,6 +28,7 @@ class There:
     rate: dict[str, sp.Expr | None]
     speed: dict[str, sp.Expr | None]
     reached: bool
+    work: dict[str, sp.Expr] | None = None  # each applied load's work from the start to here
 
 
 @dataclass(frozen=True)

@@ -6,6 +6,8 @@ where the rate is |q̇| = √(q̇²) and a point's speed |v| = √(v²), unless 
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
@@ -39,15 +41,26 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
     speeds = {p: _speed_squared(model, p, e.rate_squared) for p in opts.points} if one else None
     to = {n: model.symbols.scalar(v) for n, v in opts.to} if opts.to else None
     there = _there(model, to, e.rate_squared, speeds) if to else None
+    work = _work(model, state_values(model, opts.start))
+    if there is not None and work:
+        there = replace(there, work={k: at_state(w, {model.q[0]: to[name]}) for k, w in work.items()})
     answers = EnergyAnswers("T + V" if e.plain else "T2 - T0 + V", model.to_time(e.h), model.to_time(e.start),
                             {name: model.to_time(e.rate_squared)} if one else None,
-                            {p: model.to_time(v) for p, v in speeds.items()} if speeds else None, to, there)
+                            {p: model.to_time(v) for p, v in speeds.items()} if speeds else None, to, there,
+                            {k: model.to_time(w) for k, w in work.items()} or None)
     return answers, e
+
+
+def _work(model: Model, start: dict) -> dict[str, sp.Expr]:
+    """Each applied load's work from the start state, W = −ΔV_F = V_F(q₀) − V_F(q) (a
+    load in the energy integral has a potential: model/loads.py)."""
+    return {x.name: tidy(sp.expand(x.potential.xreplace(start) - x.potential)) for x in model.loads
+            if x.potential is not None}
 
 
 def _speed_squared(model: Model, point: str, rate_squared: sp.Expr) -> sp.Expr:
     """v² = |∂r/∂q|² q̇² (one coordinate, no t in the scene)."""
-    dr = model.points[point].diff(model.q[0])
+    dr = model.point(point).diff(model.q[0])
     return clean_fraction(tidy(sp.expand(dr.dot(dr))) * rate_squared)
 
 

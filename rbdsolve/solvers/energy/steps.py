@@ -20,6 +20,9 @@ def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, 
     if e.rate_squared is None:
         steps.append(st.note("With several coordinates the integral is one equation for several rates: it fixes "
                              "no one rate by itself."))
+    if answers.work:
+        steps.append(st.result("The work of the applied loads from the start, W = −ΔV_F (it is in T + V through "
+                               "V_F):", *[Relation(sp.Symbol(f"W_{k}"), v) for k, v in answers.work.items()]))
     if answers.speed_squared:
         steps.append(st.result("Each point's speed along the motion, v² = |∂r/∂q|² q̇²:",
                                *[Relation(sp.Symbol(f"v_{p}") ** 2, v) for p, v in answers.speed_squared.items()]))
@@ -34,7 +37,8 @@ def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, 
         steps.append(st.result("There (the rate taken positive):", *[Relation(model.to_time(model.qd[0]) ** 2, v)
                                            for v in there.rate_squared.values()],
                                *[Relation(model.to_time(model.qd[0]), v) for v in there.rate.values()],
-                               *[Relation(sp.Symbol(f"v_{p}"), v) for p, v in there.speed.items()]))
+                               *[Relation(sp.Symbol(f"v_{p}"), v) for p, v in there.speed.items()],
+                               *[Relation(sp.Symbol(f"W_{k}"), v) for k, v in (there.work or {}).items()]))
     return tuple(steps)
 
 

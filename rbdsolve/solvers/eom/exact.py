@@ -20,25 +20,29 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import kinetic_energy, potential_energy
 from rbdsolve.model.frames import frame_lagrangian, frame_motion
+from rbdsolve.model.loads import free_forces
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
 from rbdsolve.solvers.eom.steps import frame_steps, instant_steps, lagrange_step, singular_step, solved_step
 from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.shared.frames import refuse_loads_in_frame
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.singular import eom_warnings
 
 
 def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr, ...]:
-    """E_i = d/dt(∂L/∂q̇_i) − ∂L/∂q_i for each coordinate, in the model's plain symbols;
-    L = T − V unless given."""
+    """E_i = d/dt(∂L/∂q̇_i) − ∂L/∂q_i − Q_i for each coordinate, in the model's plain
+    symbols; L = T − V unless given, Q_i the generalized forces of the applied loads that
+    have no potential (model/loads.py; the others are in V)."""
     if L is None:
         L = kinetic_energy(model).total - potential_energy(model).total
+    Q = free_forces(model) or (0,) * len(model.q)
     generators = [*model.qdd, *model.qd]
     out = []
-    for q, qd in zip(model.q, model.qd):
-        E = model.state.d_dt(derivative(L, qd)) - derivative(L, q)
+    for q, qd, Qi in zip(model.q, model.qd, Q):
+        E = model.state.d_dt(derivative(L, qd)) - derivative(L, q) - Qi
         out.append(sp.Add(*[c * m for m, c in collect_in(E, generators).items()]))
     return tuple(out)
 
@@ -86,6 +90,7 @@ def _accelerations(question: Question, model: Model, equations):
 def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[FrameAnswers, list[st.Step]]:
     """L' in the frame, its equations, and the two checks: the same equations, and
     L − L' = dF/dt."""
+    refuse_loads_in_frame(model, frame.name)
     seen = frame_lagrangian(model, frame_motion(model, frame))
     primed = lagrange_equations(model, seen.L)
     agree = all(_vanishes(a - b) for a, b in zip(primed, equations))

@@ -29,11 +29,13 @@ from rbdsolve.form.tidy import collect_in
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import body_kinetic_energy, potential_terms
 from rbdsolve.model.frames import frame_lagrangian, frame_motion
+from rbdsolve.model.loads import free_forces
 from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import NumericEomAnswers, NumericFrameAnswers
 from rbdsolve.solvers.eom.steps import numeric_steps
+from rbdsolve.solvers.shared.frames import refuse_loads_in_frame
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.singular import eom_warnings
 from rbdsolve.solvers.shared.values import require_values
@@ -55,7 +57,7 @@ class _Rounded:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
-    scene = _derive(model, lambda digits: _scene_lagrangian(model, digits))
+    scene = _derive(model, lambda digits: _scene_lagrangian(model, digits), lambda digits: _free_forces(model, digits))
     names = question.options.frames if question.options else ()
     frames = [_in_frame(model, model.problem.frame(name), scene) for name in names]
     errors = scene.errors + tuple(e for _, r in frames for e in r.errors)
@@ -73,27 +75,36 @@ def _scene_lagrangian(model: Model, digits: int) -> sp.Expr:
     return _floats(T - V, model, digits)
 
 
+def _free_forces(model: Model, digits: int) -> tuple[sp.Expr, ...] | None:
+    """Q_i of the loads without a potential (model/loads.py), values as floats."""
+    Q = free_forces(model)
+    return None if Q is None else tuple(_floats(x, model, digits) for x in Q)
+
+
 def _floats(expr: sp.Expr, model: Model, digits: int) -> sp.Expr:
     """The values put in: exactly inside functions (cos(3 t), not cos(3.0 t), so the
     two precisions' terms match), as floats of ``digits`` digits everywhere else."""
     inside = {f: f.xreplace(model.values) for f in expr.atoms(sp.Function)}
-    return sp.expand(expr.xreplace(inside).xreplace({s: sp.Float(v, digits) for s, v in model.values.items()}))
+    return sp.expand(expr.xreplace(inside).xreplace({s: sp.Float(sp.N(v, digits + 5), digits) for s, v in model.values.items()}))
 
 
-def _derive(model: Model, lagrangian) -> _Rounded:
-    """E_i in floats and in 50 digits, compared term by term."""
-    pairs = [_compare(a, b) for a, b in zip(_lagrange(model, lagrangian(FLOAT_DIGITS)),
-                                          _lagrange(model, lagrangian(REFERENCE_DIGITS)))]
+def _derive(model: Model, lagrangian, forces=lambda digits: None) -> _Rounded:
+    """E_i (less Q_i, the generalized forces ``forces`` gives) in floats and in 50
+    digits, compared term by term."""
+    pairs = [_compare(a, b) for a, b in zip(_lagrange(model, lagrangian(FLOAT_DIGITS), forces(FLOAT_DIGITS)),
+                                          _lagrange(model, lagrangian(REFERENCE_DIGITS), forces(REFERENCE_DIGITS)))]
     return _Rounded(tuple(t for t, _ in pairs), tuple(e for _, e in pairs))
 
 
-def _lagrange(model: Model, L: sp.Expr) -> list[sp.Expr]:
-    """E_i from L's parts by their degree in q̇ (``_quadratic``), or by differentiating
-    L whole where L is not a polynomial of degree ≤ 2 in q̇."""
+def _lagrange(model: Model, L: sp.Expr, Q: tuple[sp.Expr, ...] | None = None) -> list[sp.Expr]:
+    """E_i − Q_i, E_i from L's parts by their degree in q̇ (``_quadratic``), or by
+    differentiating L whole where L is not a polynomial of degree ≤ 2 in q̇."""
+    Q = Q or (0,) * len(model.q)
     parts = _quadratic(L, model.qd)
     if parts is None:
-        return [sp.expand(model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q)) for q, qd in zip(model.q, model.qd)]
-    return [sp.expand(E) for E in _from_parts(model, *parts)]
+        return [sp.expand(model.state.d_dt(sp.diff(L, qd)) - sp.diff(L, q) - Qi)
+                for q, qd, Qi in zip(model.q, model.qd, Q)]
+    return [sp.expand(E - Qi) for E, Qi in zip(_from_parts(model, *parts), Q)]
 
 
 def _quadratic(L: sp.Expr, qd: tuple) -> tuple[list[list[sp.Expr]], list[sp.Expr], sp.Expr] | None:
@@ -180,6 +191,7 @@ def _tidied(terms: dict[sp.Expr, sp.Expr], error: float, model: Model, scale: fl
 
 def _in_frame(model: Model, frame, scene: _Rounded) -> tuple[NumericFrameAnswers, _Rounded]:
     """Lagrange's equations from the frame's L', and whether they are the scene's."""
+    refuse_loads_in_frame(model, frame.name)
     seen = frame_lagrangian(model, frame_motion(model, frame))
     primed = _derive(model, lambda digits: _floats(seen.L, model, digits))
     same = all(_agree(a, b, max(ea, eb), model)

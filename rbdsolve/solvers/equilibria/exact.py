@@ -35,13 +35,17 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
-from rbdsolve.solvers.shared.polynomial import polynomial_roots
+from rbdsolve.solvers.equilibria.evident import evident_roots
+from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
+from rbdsolve.solvers.shared.polynomial import polynomial_roots, trig_mixed
+from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
 from rbdsolve.solvers.shared.conditions import asked, critical_values, real_where, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.frames import require_static, spin_warnings
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
+from rbdsolve.solvers.shared.search_box import search_rule
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of, symbolic_sign
 from rbdsolve.solvers.shared.values import sample
 
@@ -52,31 +56,33 @@ def gradient(model: Model) -> tuple[sp.Expr, ...]:
     return tuple(tidy(derivative(V, q)) for q in model.q)
 
 
-def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:
-    """Every solution of ∂V/∂q = 0, angles in (−π, π]; and warnings, if any."""
+def equations_and_unknowns(model: Model) -> tuple[list, list, frozenset]:
+    """The equations ∂V/∂q = 0 that are not 0 = 0, the coordinates they hold (the
+    others are free: every value is an equilibrium), and the coordinates solved as
+    angles over (−π, π]."""
     equations = [e for e in gradient(model) if e != 0]
+    unknowns = [q for q in model.q if any(e.has(q) for e in equations)]
+    return equations, unknowns, periodic_angles(model) | repeating(model)
+
+
+def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[str]]:
+    """Every solution of ∂V/∂q = 0, angles in (−π, π], where the equations' structure
+    lets the exact route list them all (``structure``); else the evident roots, with a
+    warning that others may exist. And warnings, if any."""
+    equations, unknowns, angles = equations_and_unknowns(model)
     if any(not e.has(*model.q) for e in equations):  # e.g. ∂V/∂x = m g sin α ≠ 0
         return [], []
-    free = [q for q in model.q if not any(e.has(q) for e in equations)]
+    free = [q for q in model.q if q not in unknowns]
     if free:
         warnings = [f"V does not depend on {', '.join(unicode_name(q.name) for q in free)}: "
                     "every value is an equilibrium; it is shown as 0"]
     else:
         warnings = []
-    unknowns = [q for q in model.q if q not in free]
-    angles = periodic_angles(model) | repeating(model)
     warnings += [f"V is not 2π-periodic in {unicode_name(q.name)} (it enters V outside sin and cos, e.g. in a torsional "
                  "spring): its equilibria are not reduced to (−π, π]" for q in model.q if q in model.angles - angles]
     warnings += [_repeats(model, q) for q in unknowns if q in repeating(model)]
-    solutions = _solve_trig_polynomial(equations, unknowns, angles)
-    proved = _monotone(equations, unknowns, model) if solutions is None else None
-    if proved is not None:
-        solutions = [proved[0]]
-        warnings.append(proved[1])
-    elif solutions is None:
-        solutions = _solve_general(equations, unknowns, model)
-        warnings.append("the equilibrium equations are not polynomial in sin, cos and the "
-                        "coordinates; sympy's solve was used and may miss solutions")
+    solutions, notes = _roots(model, equations, unknowns, angles)
+    warnings += notes
     out = []
     for sol in solutions:
         full = {q: _turn(sol.get(q, sp.Integer(0))) if q in angles else sol.get(q, sp.Integer(0))
@@ -84,6 +90,69 @@ def find_equilibria(model: Model) -> tuple[list[dict[sp.Expr, sp.Expr]], list[st
         if full not in out and existence(full, model) is not None:
             out.append(full)
     return sorted(out, key=lambda sol: [_order(v) for v in sol.values()]), warnings
+
+
+SHOWN_CHARACTERS = 240  # a longer ∂V/∂q = 0 is not repeated in the warning
+
+
+@memoized
+def structure(model: Model) -> Structure:
+    """What ∂V/∂q = 0 is (structure.py), read from its form: polynomial, algebraic or
+    transcendental, and whether the exact route can list every root."""
+    equations, unknowns, angles = equations_and_unknowns(model)
+    shape, system = shape_of(equations, unknowns, angles)
+    return decide(shape, system, equations, unknowns, shape is Shape.TRANSCENDENTAL and proved_monotone(model) is not None)
+
+
+def incomplete(model: Model) -> str | None:
+    """Why the exact route's list of equilibria would be partial (only its evident
+    roots), or None: decided from the structure, before any solving."""
+    return structure(model).why_partial
+
+
+def partial(question: Question, model: Model) -> str | None:
+    """The route choice's check (shared/routes.py): ``incomplete``."""
+    return incomplete(model)
+
+
+def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[str]]:
+    """The roots by the route the structure allows: a Gröbner basis (polynomial),
+    sympy's solve (small algebraic), a monotone bound (one transcendental equation), or
+    the evident roots with the reason the list is partial."""
+    found = structure(model)
+    if found.shape is Shape.NONE:
+        return [{}], []
+    if found.why_partial is None:
+        if found.shape is Shape.POLYNOMIAL:
+            return _solve_polynomial(found.system), []
+        if found.shape is Shape.ALGEBRAIC:
+            return _solve_general(equations, unknowns), [
+                "the equilibrium equations are not polynomial in sin, cos and the coordinates; sympy's solve "
+                "was used and may miss solutions"]
+        proved = proved_monotone(model)
+        return [proved[0]], [proved[1]]
+    evident = evident_roots(equations, unknowns, model)
+    shown = "; ".join(f"{to_unicode(model.readable(e))} = 0" for e in equations)
+    if len(shown) > SHOWN_CHARACTERS:  # written out in the steps already
+        shown = "∂V/∂q = 0, as written above"
+    where = search_rule(model, angles)
+    if not evident:
+        raise UnsolvedError(f"{found.why_partial} ({shown}), and no evident root (0, π or ±π/2 in the angles, 0 in "
+                            f"the lengths) solves them: the exact route cannot solve them; with a value for every "
+                            f"parameter the numeric route searches {where}; for modes, give the equilibrium with "
+                            "'modes: {about: {...}}'")
+    return evident, [f"{found.why_partial}: {shown}. The exact route lists only the evident roots, where every "
+                     f"term vanishes: {_shown_roots(model, unknowns, evident)}. Other equilibria may exist; the "
+                     f"numeric route (a value for every parameter, or --route numeric) searches for them {where}"]
+
+
+def _shown_roots(model: Model, unknowns, roots: list[dict]) -> str:
+    """θ = 0, π; or (ψ, θ) = (0, 0), (π, π)."""
+    names = dict(zip(model.q, model.coordinate_names()))
+    values = [", ".join(to_unicode(r[q]) for q in unknowns) for r in roots]
+    if len(unknowns) == 1:
+        return f"{unicode_name(names[unknowns[0]])} = {', '.join(values)}"
+    return f"({', '.join(unicode_name(names[q]) for q in unknowns)}) = " + ", ".join(f"({v})" for v in values)
 
 
 @memoized
@@ -139,33 +208,20 @@ def _order(value: sp.Expr) -> tuple:
     return (number.real if number.imag == 0 else 0.0, sp.default_sort_key(value))
 
 
-def _solve_trig_polynomial(equations, unknowns, angles) -> list[dict] | None:
-    s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in unknowns if q in angles}
-    c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in unknowns if q in angles}
-    plain = [q for q in unknowns if q not in angles]
-    system = []
-    for e in equations:
-        poly = sp.expand_trig(sp.expand(e))
-        poly = poly.xreplace({sp.sin(q): s[q] for q in s} | {sp.cos(q): c[q] for q in c})
-        if any(poly.has(q) for q in s):
-            return None
-        numerator = sp.numer(sp.together(poly))
-        if not numerator.is_polynomial(*s.values(), *c.values(), *plain):
-            return None
-        system.append(numerator)
-    system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
-    symbols = [*s.values(), *c.values(), *plain]
+def _solve_polynomial(system: PolySystem) -> list[dict]:
+    """Every root of the polynomial form, angles recovered as atan2(s, c)."""
+    symbols = system.symbols
     if not symbols:
         return [{}]
-    roots = polynomial_roots(system, symbols, "the equilibrium equations")
+    roots = polynomial_roots(list(system.polynomials), symbols, "the equilibrium equations")
     out = []
     for root in roots:
         if any(sp.sympify(v).is_real is False for v in root.values()):
             continue
         if len(root) < len(symbols):  # a family of solutions: not isolated points
             raise _continuum()
-        sol = {q: _angle(root[s[q]], root[c[q]]) for q in s}
-        sol |= {q: tidy(root[q]) for q in plain}
+        sol = {q: _angle(root[system.sines[q]], root[system.cosines[q]]) for q in system.sines}
+        sol |= {q: tidy(root[q]) for q in system.plain}
         out.append(sol)
     return out
 
@@ -200,18 +256,13 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
     return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
 
 
-def _solve_general(equations, unknowns, model: Model) -> list[dict]:
-    shown = "; ".join(f"{to_unicode(model.readable(e))} = 0" for e in equations)
-    refusal = UnsolvedError(
-        f"the equilibrium equations are transcendental ({shown}) and the exact route "
-        "cannot solve them; for modes, give the equilibrium with 'modes: {about: {...}}'"
-    )
-    if any(_mixed(e, q) for e in equations for q in unknowns):
-        raise refusal  # q both inside and outside sin/cos, as in θ = k sin θ: no closed form
+def _solve_general(equations, unknowns) -> list[dict]:
+    """sympy's solve, for a small system with radicals of the coordinates (structure.py)."""
     try:
         roots = sp.solve(equations, unknowns, dict=True)
     except NotImplementedError:
-        raise refusal from None
+        raise UnsolvedError("the equilibrium equations hold radicals of the coordinates and sympy's solve cannot "
+                            "solve them") from None
     if any(len(r) < len(unknowns) or any(sp.sympify(v).has(*unknowns) for v in r.values()) for r in roots):
         raise _continuum()  # x = √(L² − y²) for every y: a spring's natural length all round
     return [r for r in roots if all(sp.sympify(v).is_real is not False for v in r.values())]
@@ -222,10 +273,12 @@ def _continuum() -> UnsolvedError:
                          "rbdsolve reports isolated equilibria only")
 
 
-def _monotone(equations, unknowns, model: Model) -> tuple[dict, str] | None:
+@memoized
+def proved_monotone(model: Model) -> tuple[dict, str] | None:
     """One equation mixing q with sin and cos of it (θ = k sin θ) whose left side is
     proved strictly monotone (``monotone``): its one simple root, and the proof in words."""
-    if len(equations) != 1 or len(unknowns) != 1 or not _mixed(equations[0], unknowns[0]):
+    equations, unknowns, _ = equations_and_unknowns(model)
+    if len(equations) != 1 or len(unknowns) != 1 or not trig_mixed(equations[0], unknowns[0]):
         return None
     from rbdsolve.solvers.shared.monotone import monotone_root  # only for such an equation: ~0.5 ms of start-up
 
@@ -244,13 +297,6 @@ def _monotone(equations, unknowns, model: Model) -> tuple[dict, str] | None:
             f"{to_unicode(model.readable(found.bound))}, which is {'positive' if found.increasing else 'negative'}"
             f"{where} (|sin|, |cos| ≤ 1); so {name} = {to_unicode(found.root)} is its only root")
     return {q: found.root}, text
-
-
-def _mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
-    """Does q occur both inside a trigonometric function and outside every one?"""
-    inside = any(f.has(q) for f in expr.atoms(sp.sin, sp.cos, sp.tan))
-    outside = expr.xreplace({f: sp.Integer(0) for f in expr.atoms(sp.sin, sp.cos, sp.tan)}).has(q)
-    return inside and outside
 
 
 def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
@@ -400,7 +446,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     grad = gradient(model)
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
-        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+        return _uniform(model, grad, asked(model, question))
     first = asked(model, question)
     classified = [with_cases(classify_listed(model, x), model, x.at.values(), first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
@@ -413,3 +459,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -> Solution:
+    """No isolated equilibrium: where ∂V/∂q holds no coordinate, every configuration is
+    one under a condition on the parameters (uniform.py); else there is none."""
+    found = uniform_equilibrium(model, grad, first)
+    if found is None:
+        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+    equilibrium, warning = found
+    answers = EquilibriaAnswers((equilibrium,))
+    return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))

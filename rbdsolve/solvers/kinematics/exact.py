@@ -49,9 +49,9 @@ def state_values(opts: KinematicsOptions, model: Model) -> dict[sp.Symbol, sp.Ex
 
 def motion(name: str, model: Model) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
     """r, v, a of a point in general (functions of q, q̇, q̈ and t)."""
-    if name not in model.points:
+    if not model.has_point(name):
         raise UnsolvedError(f"point '{name}' has no position (it is given by its velocity at one instant)")
-    r = model.points[name]
+    r = model.point(name)
     v = model.state.d_dt(r)
     return r, v, model.state.d_dt(v)
 

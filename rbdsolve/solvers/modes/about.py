@@ -21,7 +21,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.equilibria.answers import Stability
-from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, listing
+from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, incomplete, listing
 from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.chosen import REFINE_TOL, several_stable
 from rbdsolve.solvers.shared.values import missing_for
@@ -67,6 +67,11 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
         raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{unicode_name(name)} = {_number(r, model):.6g} there), "
                             f"and the exact route cannot list the equilibria to find the one near it ({exc})") from None
     near = _nearest_listed(model, at)
+    if near is None and incomplete(model) is not None:  # only the evident roots are listed
+        (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
+        raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{unicode_name(name)} = {_number(r, model):.6g} "
+                            f"there), and the exact route cannot list the equilibria to find the one near it "
+                            f"({incomplete(model)})")
     if near is not None:
         note = (f"about: the point given is {near[1]:.2g} from equilibrium {near[0]} as 'equilibria' lists it; "
                 f"taken there, {_shown(model, listing(model).equilibria[near[0] - 1].at)}")

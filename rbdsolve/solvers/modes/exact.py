@@ -43,7 +43,7 @@ from rbdsolve.solvers.modes import gyroscopic
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.equilibria.exact import listing
+from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.shared.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
@@ -85,6 +85,44 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         steps = (st.note("The equilibrium exists only where the following holds; its small motions are "
                          "answered there:", *condition_relations(where)), *steps)
     return with_amplitude_check(question, model, Solution("modes", Route.EXACT, answers, steps, warnings=notes))
+
+
+def partial(question: Question, model: Model) -> str | None:
+    """The route choice's check (shared/routes.py), read from the structure: where the
+    modes are taken about an equilibrium the exact route must find (no ``about`` point,
+    ``about: each``, or ``about: {equilibrium: N}``), why its list of equilibria would be
+    partial; about a given point, why its eigenvalues would take minutes (``_slow_spectrum``).
+    A scene with gyroscopic terms has its own exact route and no such check."""
+    if gyroscopic.applies(question, model):
+        return None  # its own exact route (Routh, det(K − ω²M + iωG)), not this one's spectrum
+    if question.options.about is None:
+        return incomplete(model)
+    given = dict(question.options.about)
+    names = model.coordinate_names()
+    if set(given) != set(names):
+        return None
+    return _slow_spectrum({q: model.symbols.scalar(given[n]) for n, q in zip(names, model.q)}, model)
+
+
+SYMBOLIC_DEGREE = 3  # det(K − λM) over the parameters from this degree: Cardano's and Ferrari's forms
+
+
+def _slow_spectrum(at: dict, model: Model) -> str | None:
+    """Why det(K − λM) = 0 has no quick exact roots here, or None: M and K are not each
+    a common scale times a rational matrix (``_spectrum``'s fast route, over QQ), so the
+    polynomial's coefficients hold the parameters, and its degree is 3 or more (four
+    rods with springs, symbolic: over three minutes of processor time in the roots,
+    their signs and the mode shapes)."""
+    n = len(model.q)
+    if n < SYMBOLIC_DEGREE:
+        return None
+    symbols = set(model.symbols.parameters.values())
+    M = sp.Matrix(mass_matrix(model, at))
+    K = sp.Matrix(stiffness_matrix(potential_energy(model).total, model.q, at))
+    if _rational(M / common_scale(list(M), symbols)) and _rational(K / common_scale(list(K), symbols)):
+        return None
+    return (f"the eigenvalues are the roots of det(K − λM), of degree {n}, whose coefficients hold the parameters "
+            "(M and K have no common scale): their closed forms (Cardano's, Ferrari's) take minutes")
 
 
 def _at_each(model: Model, first: sp.Symbol | None) -> Solution:

@@ -1,5 +1,6 @@
-"""The forces springs apply to the bodies they join: a spring is an applied force, not a
-support, so it enters each body's free body diagram with a known value.
+"""The known forces on the bodies: springs and the applied loads (``forces:``,
+``couples:``). Neither is a support: each enters the free body diagram of the body it
+acts on with a known value.
 
 A linear spring between ends a and b, stretch s = |a − b| − l₀, V = ½ k s², pulls the
 body that carries end a with
@@ -10,6 +11,9 @@ An end whose position is constant is fixed to the ground; a moving end is carrie
 the body whose material point it is (its velocity is v_G + ω × (end − r_G) at every
 state). A torsional spring on an angle α = Σ c_B α_B + const (α_B body B's turning
 angle about e_z) turns body B by M_B = −k s c_B e_z; what is left acts on the ground.
+
+An applied force F acts on its body at its point P; a couple M turns its body, and a
+motor's couple at a joint turns the other body by −M (model/loads.py).
 """
 
 from __future__ import annotations
@@ -22,28 +26,35 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, SpringModel
 from rbdsolve.model.state import t
-from rbdsolve.solvers.reactions.supports import generic_point, material_velocity, planar
+from rbdsolve.solvers.reactions.supports import body, generic_point, material_velocity, planar
 
 _Z = sp.Matrix([0, 0, 1])
 
 
 @dataclass(frozen=True)
 class Applied:
-    """A spring's force (and moment about e_z) on one body, at a point of it."""
+    """A spring's or a load's force (and moment) on one body, at a point of it."""
 
-    spring: str
+    name: str
     body: str
-    point: sp.Matrix  # where the force acts (a torsional spring: the body's G, no force)
+    point: sp.Matrix  # where the force acts (a torsional spring, a couple: the body's G, no force)
     force: sp.Matrix  # scene axes
-    moment: sp.Expr  # about e_z
+    moment: sp.Matrix  # scene axes (a planar one along e_z)
+    kind: str = "spring"  # spring, force or couple
 
 
 def applied(model: Model, held: list[str]) -> list[Applied]:
-    """Every spring's pull on the held bodies (those in a free body diagram)."""
+    """Every spring's pull and every applied load on the held bodies (those in a free
+    body diagram)."""
     out: list[Applied] = []
     for s in model.springs:
         found = _linear(model, s, held) if s.source.ends is not None else _torsional(model, s)
         out += [a for a in found if a.body in held]
+    for x in model.loads:
+        if x.body in held:
+            out.append(Applied(x.name, x.body, x.point, x.force, x.moment, x.kind))
+        if x.by is not None and x.by in held:  # a motor at a joint: the other body feels −M
+            out.append(Applied(x.name, x.by, body(model, x.by).position, sp.zeros(3, 1), -x.moment, x.kind))
     return out
 
 
@@ -58,7 +69,7 @@ def _linear(model: Model, s: SpringModel, held: list[str]) -> list[Applied]:
     for end, force in ((a, pull), (b, -pull)):
         carrier = _carrier(model, s, end, held)
         if carrier is not None:
-            out.append(Applied(s.name, carrier, end, force, sp.Integer(0)))
+            out.append(Applied(s.name, carrier, end, force, sp.zeros(3, 1)))
     return out
 
 
@@ -93,7 +104,7 @@ def _torsional(model: Model, s: SpringModel) -> list[Applied]:
     if not planar(model) or len(solved) != 1 or any(ci not in solved[0] for ci in c):
         raise UnsolvedError(f"spring '{s.name}': its angle is not read as a sum of the bodies' turning angles, "
                             "so which bodies it turns is not known")
-    return [Applied(s.name, b.name, b.position, sp.zeros(3, 1), -s.stiffness * s.stretch * solved[0][ci])
+    return [Applied(s.name, b.name, b.position, sp.zeros(3, 1), -s.stiffness * s.stretch * solved[0][ci] * _Z)
             for ci, b in zip(c, turning) if solved[0][ci] != 0]
 
 

@@ -14,7 +14,7 @@ too — where they do not, a support on that body is missing from the question.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -23,7 +23,7 @@ from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.applied import applied
 from rbdsolve.solvers.shared.accelerations import clean_fraction
-from rbdsolve.solvers.reactions.supports import Held, body, generic_point
+from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point
 
 
 _Z = sp.Matrix([0, 0, 1])
@@ -38,6 +38,21 @@ class Balance:
     label: str  # x, y, z or "moment about G (z)"
     lhs: sp.Expr
     rhs: sp.Expr
+
+
+def with_strings(model: Model, supports: tuple[Held, ...], loc) -> tuple[Held, ...]:
+    """The supports asked, and every string that pulls a body among them (a drum's or a
+    pulley's tension, the string of a hanging body): a string is inside the system, so
+    its tension is found with the others, from the balance of the body at its other end
+    (that body joins the free body diagrams). Added until no held body has a string left."""
+    out = list(supports)
+    while True:
+        held, named = set(bodies_held(tuple(out))), {s.name for s in out}
+        more = [c for c in model.contacts if c.source.string and c.name not in named
+                and (c.body in held or (c.source.pulley is not None and c.source.pulley.drum in held))]
+        if not more:
+            return tuple(out)
+        out += [replace(contact_support(model, c), loc=loc, added=True) for c in more]
 
 
 def bodies_held(supports: tuple[Held, ...]) -> list[str]:
@@ -67,10 +82,14 @@ def balances(model: Model, supports: tuple[Held, ...], dims: int) -> list[Balanc
                 else:
                     force += sign * c.symbol * c.direction
                     moment += sign * (s.point - b.position).cross(c.symbol * c.direction)
+                for other, point, direction in c.also:  # a string's other end, on its drum
+                    if other == name:
+                        force += c.symbol * direction
+                        moment += (point - b.position).cross(c.symbol * direction)
         for a in pulls:
             if a.body == name:
                 force += a.force
-                moment += (a.point - b.position).cross(a.force) + a.moment * _Z
+                moment += (a.point - b.position).cross(a.force) + a.moment
         L_dot = model.state.d_dt(b.inertia_in_scene() * b.angular_velocity(model.state))
         for k in range(dims):
             lhs = _tidied(b.mass * acceleration[k], model)
@@ -115,14 +134,39 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
         solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
     for i, row in enumerate(rows):
         if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise InputError(unheld(row.body, f"its {row.label} balance"), located(supports, row.body))
+            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports)
+                             + _on_drum(row.body, supports),
+                             located(supports, row.body))
     return solution
 
 
 def unheld(name: str, what: str) -> str:
     return (f"the forces asked for cannot keep body '{name}' in its motion ({what} is left unsatisfied): a "
             "point listed does not hold it, or a support on it is missing from 'forces' (a pivot, a joint with "
-            "another body, a contact)")
+            "another body, a contact; strings, springs and the applied loads are counted by themselves)")
+
+
+def _on_strings(name: str, supports: tuple[Held, ...]) -> str:
+    """For a body held only by strings: what the format needs to hold it across them."""
+    mine = [s for s in supports if name in (s.on, s.by)]
+    if not mine or any(s.how.value != "string" for s in mine):
+        return ""
+    strings = ", ".join(s.name for s in mine)
+    return (f". Body '{name}' is held only by string {strings}, which pulls it along the string: what carries it "
+            f"across (a table it slides on, a guide) is a support to list, such as {{at: {name}, on: {name}, "
+            "normal: y} (a smooth surface's push, counted positive upwards)")
+
+
+def _on_drum(name: str, supports: tuple[Held, ...]) -> str:
+    """For a drum whose strings are all counted and still cannot keep it: the string the
+    format cannot name (one between two bodies with mass), and what does hold."""
+    strings = [s.name for s in supports for c in s.components if any(other == name for other, _, _ in c.also)]
+    if not strings:
+        return ""
+    return (f". The strings on body '{name}' that the scene names ({', '.join(strings)}) are counted on it; a "
+            "string from it to another body with mass (over a second pulley with mass, a belt between two drums) "
+            "is not in the format yet, which names strings from a drum to a hanging body only: the eom and the "
+            "tensions at the hanging bodies hold, the axle forces of such pulleys are not answered")
 
 
 def located(supports: tuple[Held, ...], name: str) -> Location | None:
@@ -131,10 +175,14 @@ def located(supports: tuple[Held, ...], name: str) -> Location | None:
 
 
 def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
-    """Rows of A independent at a generic sample, greedily, up to ``wanted``."""
+    """Rows of A independent at a generic sample, greedily, up to ``wanted``; rows whose
+    coefficients hold no coordinate first (a body's force balances before a moment
+    balance), so that the determinant Cramer's rule divides by holds none where it can:
+    one that does (sin θ) would make a force 0/0 at θ = 0 though the force is finite."""
     numeric = A.xreplace(generic_point(model, 5)).evalf(30)
     chosen: list[int] = []
-    for i in range(A.rows):
+    moving = [sum(1 for x in A.row(i) if x.has(*model.q)) for i in range(A.rows)]
+    for i in sorted(range(A.rows), key=lambda i: moving[i]):
         trial = numeric.extract(chosen + [i], list(range(A.cols)))
         if trial.rank(iszerofunc=lambda x: abs(x) < 1e-20) == len(chosen) + 1:
             chosen.append(i)

@@ -10,13 +10,14 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.balances import balances, solve_forces
+from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
@@ -28,7 +29,7 @@ from rbdsolve.solvers.shared.options import Options
 
 def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
-    supports = tuple(held(model, s) for s in question.options.supports)
+    supports = with_strings(model, tuple(held(model, s) for s in question.options.supports), question.options.loc)
     found = accelerations(lagrange_equations(model), model)
     if found.too_long:
         raise UnsolvedError("the general accelerations are too long to write out, and Newton–Euler needs them")
@@ -48,17 +49,19 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
              rs.solved_step(model, supports, forces)]
     answers = ReactionsAnswers(reactions, {n: model.to_time(a) for n, a in zip(model.coordinate_names(), solved)})
     criticals: list = []
+    warnings: tuple[str, ...] = ()
     if question.options.instant is not None:
-        answers, more, criticals = _at_the_state(model, question.options.instant, supports, forces, answers)
+        answers, more, criticals, warnings = _at_the_state(model, question.options.instant, supports, forces, answers)
         steps += more
     answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()},
                        critical=critical_values(criticals))
-    return Solution("reactions", Route.EXACT, answers, tuple(steps))
+    return Solution("reactions", Route.EXACT, answers, tuple(steps), warnings=warnings)
 
 
 def _at_the_state(model: Model, instant, supports, forces, answers):
     """The forces at the state, when each support holds there; released from rest, along
-    the motion too. Returns the answers, the steps and the critical values used."""
+    the motion too. Returns the answers, the steps, the critical values used and the
+    warnings."""
     table = state_values(model, instant)
     at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
     limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
@@ -66,10 +69,11 @@ def _at_the_state(model: Model, instant, supports, forces, answers):
                        holds_when={k: model.to_time(h.condition) for k, h in limits.items()})
     criticals = [c for h in limits.values() for c in h.criticals]
     steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
+    warnings: tuple[str, ...] = ()
     if instant.from_rest:
-        answers, more, found = _along_the_motion(model, supports, forces, table, answers)
+        answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers)
         steps, criticals = steps + more, criticals + found
-    return answers, steps, criticals
+    return answers, steps, criticals, warnings
 
 
 def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:
@@ -100,17 +104,20 @@ def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
 
 
 def _along_the_motion(model: Model, supports, forces, table, answers):
-    """q̇²(q) by energy, the forces along the motion, their zeros and the least μ."""
+    """q̇²(q) by energy, the forces along the motion, their zeros and the least μ; and a
+    warning for each push or tension whose zeros have no closed form (not listed, and not
+    said to hold throughout)."""
     e = energy(model, table)
     if e is None:
-        return answers, [rs.no_energy_note(model)], []
+        return answers, [rs.no_energy_note(model)], [], ()
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
-        return answers, [energy_step(model, e, True)], []
+        return answers, [energy_step(model, e, True)], [], ()
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
-    lost = {str(c.symbol): tuple(zeros(values[c.symbol], model)) for s in supports for c in s.components
-            if c.one_sided}
+    found = {str(c.symbol): zeros(values[c.symbol], model) for s in supports for c in s.components if c.one_sided}
+    unsolved = tuple(k for k, where in found.items() if where is None)
+    lost = {k: tuple(where or ()) for k, where in found.items()}
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
@@ -122,5 +129,8 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu,
                        lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
-    steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached)]
-    return answers, steps, criticals
+    steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
+    warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
+                     f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
+                     "reached, if it is, is not given" for k in unsolved)
+    return answers, steps, criticals, warnings

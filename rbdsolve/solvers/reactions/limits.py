@@ -26,26 +26,42 @@ from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.shared.conditions import Critical, exists_when
+from rbdsolve.solvers.shared.polynomial import trig_transcendental
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
 
-def zeros(value: sp.Expr, model: Model) -> list[sp.Relational]:
-    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c."""
+def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
+    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c; None
+    where that has no closed form.
+
+    |u| vanishes where u does, and |u|/u (a push along a normal that turns, ±1) nowhere:
+    each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
+    numerator that holds q both inside and outside sin and cos (a slab rolling on a
+    drum: θ³ sin θ beside θ² cos θ), or sines of incommensurate multiples of q (a
+    half-disk on a drum: sin(r θ/(R + r)) beside cos θ) has no closed-form zeros: None,
+    not a search by sympy's solve (minutes, issue 37). Only real roots count."""
     q = model.q[0]
-    top = sp.fraction(tidy_fraction(value))[0]
+    top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
         return []
     c = sp.Dummy("c", real=True)
     for f in (sp.cos, sp.sin):
         swapped = top.xreplace({f(q): c})
         if not swapped.has(q):
-            roots = [r for r in sp.solve(swapped, c) if _within_one(r, model)]
+            roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
+    if trig_transcendental(top, q):
+        return None
+    return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
+
+
+def _real_roots(expr: sp.Expr, x: sp.Symbol) -> list[sp.Expr]:
+    """sympy's roots of expr in x, those that may be real (no Piecewise, no i, no NaN)."""
     try:
-        roots = sp.solve(top, q)
+        roots = sp.solve(expr, x)
     except NotImplementedError:
         return []
-    return [sp.Eq(model.to_time(q), r) for r in roots if r.is_real is not False]
+    return [r for r in roots if not r.has(sp.Piecewise, sp.I, sp.nan, sp.zoo) and r.is_real is not False]
 
 
 def _within_one(r: sp.Expr, model: Model) -> bool:
@@ -54,8 +70,12 @@ def _within_one(r: sp.Expr, model: Model) -> bool:
     if value.is_real is False:
         return False
     if value.is_number:
-        return bool(abs(value) <= 1)
+        z = complex(sp.N(value, 30))
+        return abs(z.imag) <= 1e-20 * max(1.0, abs(z.real)) and abs(z.real) <= 1 + 1e-15
     return True
+
+
+SIMPLIFY_OPS = 80  # the least μ is simplified by sympy up to this many operations
 
 
 def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
@@ -63,7 +83,9 @@ def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     where neither the parameters' signs nor their values decide the sign, nor the
     assumptions, nor where the contact holds at all (N ≥ 0: a cylinder on an incline
     pushes only for α ≤ π/2, where tan α ≥ 0, so μ ≥ tan(α)/3)."""
-    ratio = sp.simplify(clean_fraction(F / N))
+    ratio = clean_fraction(F / N)
+    if sp.count_ops(ratio) <= SIMPLIFY_OPS:  # a longer one (a slab rolling on a drum): minutes of trigsimp
+        ratio = sp.simplify(ratio)
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
         pushes = _nonnegative(N, model).condition if not N.has(*model.q) else sp.true

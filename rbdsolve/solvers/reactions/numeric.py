@@ -30,10 +30,16 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if instant is None:
         raise UnsolvedError("the numeric route answers at a state: give 'at:' or 'from_rest:'")
     supports, solved, rows = setup(question, model)
-    point = {**{k: sp.Float(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}
+    # sp.N, not sp.Float: a value may be exact and irrational (30 deg is pi/6)
+    point = {**{k: sp.N(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}
     qdd = {a: sp.N(v.xreplace(point), 17) for a, v in zip(model.qdd, solved)}
     unknowns = [c.symbol for s in supports for c in s.components]
     exprs = [sp.expand((r.lhs - r.rhs).xreplace(point).xreplace(qdd)) for r in rows]
+    left = sorted({str(s) for e in exprs for s in e.free_symbols} - {str(x) for x in unknowns})
+    if left:  # t, where a load or a support is driven: a state alone does not give numbers
+        raise UnsolvedError(f"the forces at the state still depend on {', '.join(left)} (the scene changes with "
+                            "time: a driven support, a force given as a function of t), which a state does not "
+                            "fix; the exact route gives them as functions of it")
     A = np.array([[float(e.coeff(x)) for x in unknowns] for e in exprs])
     b = np.array([-float(e.xreplace({x: 0 for x in unknowns})) for e in exprs])
     x, *_ = np.linalg.lstsq(A, b, rcond=None)

@@ -31,16 +31,21 @@ def _described(s: Held, model: Model) -> str:
             parts.append(f"a moment {c.symbol} about e_z")
         else:
             parts.append(f"{c.symbol} along {_vector(model.readable(c.direction))}")
-    holder = f"body '{s.by}'" if s.by else "the support"
+        parts += [f"and {c.symbol} on body '{other}' at {_vector(model.readable(point))} along "
+                  f"{_vector(model.readable(direction))}" for other, point, direction in c.also]
+    holder = f"body '{s.by}'" if s.by else "the string" if s.how is How.STRING else "the support"
     kind = s.how.value.replace("_", " ") + (" (a joint)" if s.by else "")
-    return f"at {s.name} ({kind}), {holder} on body '{s.on}': " + ", ".join(parts)
+    added = "; not asked, but it pulls a body asked about, so its tension is found with the rest" if s.added else ""
+    return f"at {s.name} ({kind}{added}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 
 def _pull(a: Applied, model: Model) -> str:
-    if a.moment != 0:
-        return f"spring '{a.spring}' turns body '{a.body}' by {to_unicode(model.readable(a.moment))} about e_z"
-    return (f"spring '{a.spring}' pulls body '{a.body}' at {_vector(model.readable(a.point))} with "
-            f"{_vector(model.readable(a.force))}")
+    if a.force == sp.zeros(3, 1):
+        about = (f"{to_unicode(model.readable(a.moment[2]))} about e_z" if a.moment[:2] == [0, 0]
+                 else _vector(model.readable(a.moment)))
+        return f"{a.kind} '{a.name}' turns body '{a.body}' by {about}"
+    return (f"{a.kind} '{a.name}' {'pulls' if a.kind == 'spring' else 'acts on'} body '{a.body}' at "
+            f"{_vector(model.readable(a.point))} with {_vector(model.readable(a.force))}")
 
 
 def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance]) -> list[st.Step]:
@@ -49,10 +54,14 @@ def free_body_steps(model: Model, supports: tuple[Held, ...], rows: list[Balance
                            "vector (scene axes): " + "; ".join(_described(s, model) for s in supports) + ".")]
     names = list(dict.fromkeys(r.body for r in rows))
     pulls = applied(model, names)
-    if pulls:
+    springs = [a for a in pulls if a.kind == "spring"]
+    if springs:
         steps.append(st.definition("The springs are applied forces, known: F = −k s ê on each end (ê the unit "
                                    "vector from the other end, s the stretch), a torsional spring's moment −k s: "
-                                   + "; ".join(_pull(a, model) for a in pulls) + "."))
+                                   + "; ".join(_pull(a, model) for a in springs) + "."))
+    loads = [a for a in pulls if a.kind != "spring"]
+    if loads:
+        steps.append(st.definition("The applied loads, known: " + "; ".join(_pull(a, model) for a in loads) + "."))
     sprung = {a.body for a in pulls}
     for name in names:
         mine = [r for r in rows if r.body == name]
@@ -108,7 +117,8 @@ def no_energy_note(model: Model) -> st.Step:
                    "the forces are given at release only.")
 
 
-def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict) -> list[st.Step]:
+def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict,
+                unsolved: tuple[str, ...] = ()) -> list[st.Step]:
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
@@ -127,8 +137,13 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                     steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
                                            "and q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
+        elif name in unsolved:
+            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (it is transcendental in "
+                                 "the coordinate: no substitution makes it a polynomial): where it is reached, if it "
+                                 "is, is not given."))
         else:
-            steps.append(st.note(f"{name} does not reach zero along the motion: the contact holds throughout."))
+            holds = "the string stays taut" if name in strings else "the contact holds"
+            steps.append(st.note(f"{name} does not reach zero along the motion: {holds} throughout."))
     q = model.to_time(model.q[0])
     for name, value in mu.items():
         where = (f" at each {to_unicode(q)} (for the whole motion, the largest of it over the {to_unicode(q)} "

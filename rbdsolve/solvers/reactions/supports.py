@@ -55,6 +55,8 @@ class Component:
     moment: bool = False
     one_sided: bool = False  # a push or a pull: it cannot change sign and hold (N, T)
     friction: bool = False
+    # the same unknown on other bodies: (body, point, direction), a string's other end (its drum)
+    also: tuple[tuple[str, sp.Matrix, sp.Matrix], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,7 @@ class Held:
     components: tuple[Component, ...]
     how: How
     loc: Location | None = None  # where the question asks for it (bad input points there)
+    added: bool = False  # not asked: a string that pulls a body asked about, found with the others
 
 
 def body(model: Model, name: str) -> RigidBody:
@@ -92,8 +95,16 @@ def held(model: Model, support: Support) -> Held:
 
 
 def _contact(model: Model, support: Support) -> Held:
-    rolling = next(c for c in model.contacts if c.name == support.point)
+    return contact_support(model, next(c for c in model.contacts if c.name == support.point))
+
+
+def contact_support(model: Model, rolling) -> Held:
+    """A contact as a support: a rolling contact's push and friction, a string's tension
+    (on its drum, and for a hanging body on both: on the body up the string, on the drum
+    at C along the string)."""
     name = rolling.name
+    if rolling.source.pulley is not None:
+        return _hanging(model, rolling)
     if rolling.source.string:
         d = model.symbols.vector(rolling.source.surface.direction)
         u = -(d / sp.sqrt(d.dot(d))).applyfunc(sp.simplify)  # from the drum back to the fixed point
@@ -106,8 +117,26 @@ def _contact(model: Model, support: Support) -> Held:
                  Component(sp.Symbol(f"F_{name}"), tangent, friction=True)), How.ROLLING)
 
 
+def _hanging(model: Model, rolling) -> Held:
+    """A body on a string from a drum: the tension T pulls the body up the string (along
+    −h, h the way the hanging part runs) at the body's origin, where the string is tied,
+    and the drum along d, the way the string leaves it, at the tangent point C."""
+    p = rolling.source.pulley
+    names = model.symbols
+    hanging = body(model, rolling.body)
+    d = _unit(names.vector(p.direction))
+    h = _unit(names.vector(p.down)) if p.over is not None and p.down is not None else (
+        sp.Matrix([0, -1, 0]) if p.over is not None else d)
+    tension = Component(sp.Symbol(f"T_{rolling.name}"), -h, one_sided=True, also=((p.drum, rolling.point, d),))
+    return Held(rolling.name, names.vector(hanging.source.at), hanging.name, None, (tension,), How.STRING)
+
+
+def _unit(v: sp.Matrix) -> sp.Matrix:
+    return (v / sp.sqrt(v.dot(v))).applyfunc(sp.simplify)
+
+
 def _point(model: Model, support: Support) -> Held:
-    P = model.points[support.point]
+    P = model.point(support.point)
     on = body(model, support.on)
     v = material_velocity(model, on, P)
     w = on.angular_velocity(model.state)

@@ -17,6 +17,7 @@ import random
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy
+from rbdsolve.solvers.shared.polynomial import trig_transcendental
 
 SAMPLES = 8
 TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -38,12 +39,14 @@ def angle_parameters(f: sp.Basic) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:
 def admissible(model, rng: random.Random, leave: tuple = (), angles: dict = {}) -> dict | None:
     """Random parameter values that satisfy the problem's assumptions (the parameters in
     ``leave`` left out: a piece sets them), angles in their ranges, or None if none is
-    found."""
+    found. A parameter the problem gives a value keeps it: a condition is split at the
+    problem's own values (a top's least spin at its given tilt and sizes)."""
     from rbdsolve.model.assumptions import admissible_sample
 
     symbols = [s for s in model.symbols.parameters.values() if s not in leave]
     kept = [a for a in model.assumptions if not a.difference.free_symbols & set(leave)]
-    return admissible_sample(kept, model.symbols, rng, symbols=symbols, tries=200, ranges=angles)
+    given = {s: v for s, v in model.values.items() if s not in leave}
+    return admissible_sample(kept, model.symbols, rng, fixed=given, symbols=symbols, tries=200, ranges=angles)
 
 
 def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Expr] | None:
@@ -52,8 +55,11 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     where a root is inside at some samples and not at others, or the order changes."""
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
+    factors = [factor for factor in (numerator, denominator) if factor.has(p)]
+    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) for factor in factors):
+        return None  # sympy's solve squares the radicals away, or searches a transcendental one: minutes (issue 37)
     try:
-        found = {tidy(r) for factor in (numerator, denominator) if factor.has(p) for r in sp.solve(factor, p)}
+        found = {tidy(r) for factor in factors for r in _roots_in(factor, p)}
     except (NotImplementedError, ValueError):
         return None
     points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
@@ -77,6 +83,31 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     if any(sorted(inside, key=lambda r: inside[r][k]) != order for k in range(len(points))):
         return None
     return order
+
+
+def _roots_in(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
+    """The roots of ``factor`` in p: a polynomial of degree ≤ 2 in p by sympy's roots
+    (the formula: a discriminant's I₃² s² − 4 (I₁ − I₃) m g h cos θ has ±s_c),
+    without solve's checks of each root, which cost a third of a second there and
+    which the samples below make again; anything else by sympy's solve."""
+    if factor.is_polynomial(p):
+        polynomial = sp.Poly(factor, p)
+        if polynomial.degree() <= 2:
+            found = sp.roots(polynomial)
+            if sum(found.values()) == polynomial.degree():
+                return list(found)
+    return sp.solve(factor, p)
+
+
+RADICAL_OPS = 40  # a longer expression with p under a radical is not given to sympy's solve
+
+
+def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand under a radical (a fractional power) in an expression longer than
+    RADICAL_OPS operations? Two springs of natural length on an inverted rod give
+    √(4a² + d²) beside a² k: solving that for a ran for minutes."""
+    radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
+    return radical and sp.count_ops(expr) > RADICAL_OPS
 
 
 def _turns_at(root: sp.Expr, low, high, periodic: bool) -> int | None:

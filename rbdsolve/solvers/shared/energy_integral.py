@@ -44,6 +44,11 @@ def not_conserved(model: Model) -> str | None:
     """Why no energy integral holds, or None."""
     if model.instant:
         return "the scene is given at one instant (velocities, not positions): there is no motion to follow"
+    free = [x for x in model.loads if x.potential is None]
+    if free:
+        what = ", ".join(f"{x.kind} '{x.name}'" for x in free)
+        return (f"{what} has no potential (it changes with t, or its work depends on the path), so the work it "
+                "does is not a difference of V along every motion, and T + V is not constant")
     L = kinetic_energy(model).total - potential_energy(model).total
     if L.has(t):
         return ("the Lagrangian depends on time explicitly (a prescribed motion or a moving support does work), "
@@ -72,7 +77,8 @@ def energy_integral(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyInte
 def energy_step(model: Model, e: EnergyIntegral, from_rest: bool):
     """The integral as the exam says it: "T + V is constant: T + V = V(q₀)", then q̇²."""
     if e.plain:
-        said = ("Energy is conserved (the forces that do work have a potential: gravity, springs; the "
+        which = "gravity, springs, the applied loads (V_F)" if model.loads else "gravity, springs"
+        said = (f"Energy is conserved (the forces that do work have a potential: {which}; the "
                 "supports do none): T + V is constant, " + ("T + V = V(q₀) at release from rest" if from_rest
                                           else "T + V = its value at the state given"))
     else:

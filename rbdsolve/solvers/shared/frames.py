@@ -36,15 +36,27 @@ def frame_of(question: Question) -> str | None:
     return getattr(question.options, "frame", None)
 
 
+def model_in_frame(question: Question, model: Model) -> Model:
+    """The model as seen in the question's frame; refused where the scene still moves
+    there."""
+    return _seen(model, frame_motion(model, model.problem.frame(frame_of(question))))
+
+
+def _seen(model: Model, motion: FrameMotion) -> Model:
+    seen = in_frame(model, motion)
+    if seen.depends_on_time():
+        raise UnsolvedError(f"in frame '{motion.frame.name}' the scene still depends on t (a body, a spring or "
+                            "gravity moves in it): it has no relative equilibria there")
+    return seen
+
+
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
     """Run ``solve`` on the model as seen in the question's frame, its steps after
     the ones that say what the frame adds."""
     frame = model.problem.frame(frame_of(question))
+    refuse_loads_in_frame(model, frame.name)
     motion = frame_motion(model, frame)
-    seen = in_frame(model, motion)
-    if seen.depends_on_time():
-        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or gravity "
-                            "moves in it): it has no relative equilibria there")
+    seen = _seen(model, motion)
     solution = solve(question, seen, options)
     return replace(solution, steps=(*_frame_steps(seen, motion), *solution.steps))
 
@@ -95,6 +107,11 @@ def spin_warnings(model: Model) -> tuple[str, ...]:
 def require_static(model: Model, what: str) -> None:
     """Equilibria and small oscillations of a scene that moves by itself (t appears in
     it explicitly) are not those of ∂V/∂q = 0: refuse rather than answer wrongly."""
+    driven = [x for x in model.loads if x.potential is None and any(q.has(t) for q in x.generalized)]
+    if driven:
+        raise UnsolvedError(f"{driven[0].kind} '{driven[0].name}' changes with time t, so {what} of ∂V/∂q = 0 "
+                            "do not apply (a load that varies in time keeps the scene moving); they exist with "
+                            "constant loads")
     if model.depends_on_time():
         spun = [b.name for b in model.bodies if b.turns and any(angle.has(t) for _, angle in b.turns)
                 and turning_holds_time(b, model.state)]
@@ -106,3 +123,18 @@ def require_static(model: Model, what: str) -> None:
         raise UnsolvedError(f"the scene depends explicitly on time t, so {what} of ∂V/∂q = 0 "
                             "do not apply; in a frame where the scene is still they do (see 'frames:' and the "
                             "question's 'frame' option)")
+    free = [x for x in model.loads if x.potential is None]
+    if free:
+        raise UnsolvedError(f"{free[0].kind} '{free[0].name}' has no potential (its work depends on the path taken, "
+                            f"as a force that turns with its body does), so {what} of ∂V/∂q = 0 do not apply; "
+                            "the format gives them for loads with a potential: a constant force, a constant "
+                            "couple, a pull of constant size towards a fixed point ('towards:')")
+
+
+def refuse_loads_in_frame(model: Model, frame: str) -> None:
+    """Applied loads are given in the scene's axes; seen from a moving frame their
+    potential would move with it: not supported, said so."""
+    if model.loads:
+        raise UnsolvedError(f"the applied loads ({', '.join(x.name for x in model.loads)}) are given in the scene's "
+                            f"axes, and the format does not carry them into frame '{frame}' yet: ask this question "
+                            "in the scene's axes (without 'frame')")

@@ -31,3 +31,25 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]
+
+
+def trig_mixed(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q occur both inside a trigonometric function and outside every one (θ sin θ,
+    k θ − sin θ)? Then no substitution s = sin q, c = cos q makes expr a polynomial.
+    Each sine or cosine of q stands in for a symbol of its own, so a product such as
+    θ cos θ keeps its θ; sines of constants are left alone."""
+    trig = [f for f in expr.atoms(sp.sin, sp.cos, sp.tan) if f.has(q)]
+    return bool(trig) and expr.xreplace({f: sp.Dummy() for f in trig}).has(q)
+
+
+def trig_transcendental(expr: sp.Expr, x: sp.Symbol) -> bool:
+    """Has expr = 0 no closed-form roots in x that sympy's solve could find: x inside
+    sines or cosines of arguments that are not rational multiples of one another
+    (sin(r θ/(R + r)) beside cos θ, a half-disk rolling on a drum), or both inside one
+    and outside every one (``trig_mixed``)? solve then searched for minutes (issue 37)
+    and found nothing. Sines of one argument u(x) and its multiples stay: a polynomial
+    in sin u, cos u, then u = c."""
+    arguments = [f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc) if f.has(x)]
+    incommensurate = any(not sp.cancel(a / arguments[0]).is_Rational for a in arguments[1:])
+    return incommensurate or trig_mixed(expr, x)
+

@@ -47,8 +47,8 @@ def critical_steps(critical, where: str = "where an equilibrium appears or its s
                       *[Relation(name, c.value) for c, name in names])]
 
 
-OPS = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥"}
-TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤"}
+OPS = {sp.StrictLessThan: "<", sp.LessThan: "≤", sp.StrictGreaterThan: ">", sp.GreaterThan: "≥", sp.Equality: "="}
+TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤", "=": "="}
 
 
 def condition_relations(condition: sp.Basic, critical: Sequence = ()) -> list[Relation]:

@@ -12,6 +12,11 @@ the numeric route needs the rest); each question gets what is left divided by th
 questions still to come; and on auto, where the numeric route could answer, the exact
 route gets half of its question's share and the numeric route the rest. Each runs
 within its share (``budget.within``) and is timed.
+Where a family can tell from the structure of the equations, in milliseconds, that the
+exact route would answer only in part (the evident roots of transcendental equilibrium
+equations), ``auto`` with every value given runs the numeric route at once: the route
+is chosen by what the equations are, never by how long the exact route took, so a file
+takes the same route on any machine.
 """
 
 from __future__ import annotations
@@ -28,14 +33,17 @@ from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
-from rbdsolve.solvers.shared.frames import frame_of, solve_in_frame
-from rbdsolve.solvers.shared.numbers import numbers
+from rbdsolve.solvers.shared.checks import CheckFailed, Residuals, verify
+from rbdsolve.solvers.shared.frames import frame_of, model_in_frame, solve_in_frame
+from rbdsolve.solvers.shared.numbers import numbers as numeric_lines
 from rbdsolve.solvers.shared.options import Options, RouteChoice
 from rbdsolve.solvers.shared.summary import coordinates_only, summarize_model, swing_warnings, unused_warnings
 from rbdsolve.solvers.shared.units import answer_units, parameter_units
-from rbdsolve.solvers.shared.values import missing_for, missing_values, not_finite, numeric, with_irrelevant_filled
+from rbdsolve.solvers.shared.values import (missing_for, missing_values, not_finite, not_real, numbers,
+                                           with_irrelevant_filled)
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
+Check = Callable[[Question, Model], "str | None"]  # why the exact route's answer would be partial, or None
 
 
 Names = Callable[[Question, object, Model], tuple]  # (question, answers, model) -> tuple[Named, ...]
@@ -43,12 +51,18 @@ Names = Callable[[Question, object, Model], tuple]  # (question, answers, model)
 
 @dataclass(frozen=True)
 class Family:
-    """A solver family's routes, each a pure function (question, model, options) ->
-    Solution, and ``named``: which answers the worked solution prints under which name
-    (report/numbers.py), for the numeric block and for grading."""
+    """A solver family's routes: each a pure function (question, model, options) ->
+    Solution; what its answers must satisfy, checked before they are printed
+    (``checks.py``): a function (question, model, answers) -> residuals, or None;
+    where the family has one, the check that reads from the structure of the equations
+    whether the exact route would answer only in part (and why); and ``named``: which
+    answers the worked solution prints under which name (report/numbers.py), for the
+    numeric block and for grading."""
 
     exact: Solver
     numeric: Solver
+    residuals: Residuals | None = None
+    partial: Check | None = None
     named: Names | None = None
 
 
@@ -64,15 +78,54 @@ def later(module: str, function: str = "solve"):
     return solve
 
 
+def later_residuals(module: str) -> Residuals:
+    """A family's ``residuals`` (``rbdsolve.solvers.<family>.check``), imported when first asked."""
+
+    def residuals(question: Question, model: Model, answers: object):
+        return importlib.import_module(f"rbdsolve.solvers.{module}").residuals(question, model, answers)
+
+    residuals.__qualname__ = f"{module}.residuals"
+    return residuals
+
+
+def checked(solver: Solver, residuals: Residuals | None) -> Solver:
+    """The route, its answers checked (checks.verify) on the model it answered on (the
+    model seen from a moving frame, for a question asked in one): CheckFailed where one
+    fails."""
+    if residuals is None:
+        return solver
+
+    def solve(question: Question, model: Model, options: Options) -> Solution:
+        solution = solver(question, model, options)
+        if solution.answers is not None:
+            verify(residuals(question, model, solution.answers), model, (*model.q, *model.qd))
+        return solution
+
+    solve.__qualname__ = getattr(solver, "__qualname__", "solve")
+    return solve
+
+
+def later_check(module: str) -> Check:
+    """A family's ``partial`` check (``rbdsolve.solvers.<module>.partial``), imported
+    when first asked, like its routes."""
+
+    def partial(question: Question, model: Model) -> str | None:
+        return importlib.import_module(f"rbdsolve.solvers.{module}").partial(question, model)
+
+    partial.__qualname__ = f"{module}.partial"
+    return partial
+
+
 def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """Run one question's solver on the route asked for, each route within its own time
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
     solution = _with_scene_warnings(question, model, _routed(family, question, model, options))
-    values = numeric(solution.answers, model.values) if model.values and solution.answers else {}
-    overflow = not_finite(solution.answers, model.values) if values else None
-    solution = replace(solution, warnings=(*solution.warnings, overflow)) if overflow else solution
+    found = numbers(solution.answers, model.values) if model.values and solution.answers else None
+    values = found.tree if found is not None else {}
+    said = (not_finite(solution.answers, model.values), not_real(found)) if values else ()
+    solution = replace(solution, warnings=(*solution.warnings, *(x for x in said if x)))
     units = answer_units(solution.answers, model, question.kind.value) if values else {}
     lines = _numbers(family, question, solution, model, values, units) if values else ()
     return replace(_finite_estimate(solution), values=values or {}, units=units, numbers=lines,
@@ -83,7 +136,7 @@ def _numbers(family: Family, question: Question, solution: Solution, model: Mode
     """The numeric block: the values under the names the solution prints."""
     if family.named is None:
         return ()
-    return numbers(family.named(question, solution.answers, model), solution.answers, values, units)
+    return numeric_lines(family.named(question, solution.answers, model), solution.answers, values, units)
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, QuestionKind.ENERGY,
@@ -113,26 +166,70 @@ def _finite_estimate(solution: Solution) -> Solution:
 
 
 def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:
+    """The routes' Solution (``_route_choice``); an answer that fails its check is not
+    printed and no other route is tried: the question is unanswered, its error says
+    what failed (a bug in rbdsolve)."""
+    try:
+        return _route_choice(family, question, model, options)
+    except CheckFailed as exc:
+        return _failed(question, exc.route, str(exc))
+
+
+def _route_choice(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """exact, numeric, or auto: exact, and numeric where exact cannot answer and no
     parameter lacks a value. The question's share of the budget (``options.budget``) is
     the route's; on auto, where the numeric route could follow, the exact route gets
     half of it and the numeric route what is left. The Solution's route is the route
     that ran last; when both fail, its error gives both routes' reasons."""
     filled = with_irrelevant_filled(model, question) if options.route is not RouteChoice.EXACT else model
+    exact_route, numeric_route = checked(family.exact, family.residuals), checked(family.numeric, family.residuals)
     if options.route is RouteChoice.NUMERIC:
-        return _attempt(Route.NUMERIC, family.numeric, question, filled, options)
+        return _attempt(Route.NUMERIC, numeric_route, question, filled, options)
+    chosen = _numeric_first(family, numeric_route, question, model, filled, options)
+    if chosen is not None:
+        return chosen
     share = Allowance(options.budget)
     fallback = options.route is RouteChoice.AUTO and not missing_for(model, question, _solved_for(question))
-    exact = _attempt(Route.EXACT, family.exact, question, model,
+    exact = _attempt(Route.EXACT, exact_route, question, model,
                      replace(options, budget=share.share(2)) if fallback else options)
     if not fallback or exact.solved:
         return exact
-    solution = _attempt(Route.NUMERIC, family.numeric, question, filled, replace(options, budget=share.left()),
+    solution = _attempt(Route.NUMERIC, numeric_route, question, filled, replace(options, budget=share.left()),
                         " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
     note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _numeric_first(family: Family, numeric_route: Solver, question: Question, model: Model, filled: Model,
+                   options: Options):
+    """On ``auto`` with every value given, the numeric route's Solution where the
+    structure shows the exact route would answer only in part; None otherwise, or where
+    the numeric route cannot answer (the exact route's part is then better than none)."""
+    if options.route is not RouteChoice.AUTO or family.partial is None:
+        return None
+    if missing_for(model, question, _solved_for(question)):
+        return None
+    why = _partial(family.partial, question, model, options)
+    if why is None:
+        return None
+    solution = _attempt(Route.NUMERIC, numeric_route, question, filled, options, " (numeric route)")
+    if not solution.solved:
+        return None
+    note = (f"the exact route would answer only in part: {why}; these are the numeric route's answers, the "
+            "route chosen from the structure of the equations")
+    return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _partial(check: Check, question: Question, model: Model, options: Options) -> str | None:
+    """The family's check, on the model as the question sees it (in its frame), within
+    the budget; a check that cannot decide says nothing."""
+    try:
+        with within(options.budget, f"'{question.kind.value}' (its structure)"):
+            return check(question, model if frame_of(question) is None else model_in_frame(question, model))
+    except (UnsolvedError, OutOfTime):
+        return None
 
 
 def _both_failed(exact: str, numeric: str) -> str:
@@ -154,6 +251,8 @@ def _attempt(route: Route, solver, question: Question, model: Model, options: Op
     reason it could not answer."""
     try:
         return _run(solver, question, model, options, label)
+    except CheckFailed as exc:
+        raise CheckFailed(str(exc), route) from None
     except (UnsolvedError, OutOfTime) as exc:
         return _failed(question, route, str(exc))
 

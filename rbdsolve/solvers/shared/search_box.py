@@ -3,6 +3,9 @@ with the reason it is what it is (the report prints them):
 
 * a declared ``range`` (``coordinates: {x: {kind: length, range: [0, 2*l]}}``), at the
   parameter values;
+* the coordinate of a contact on an edge of limited extent: the span where the contact
+  holds (a slab on a drum, |θ| ≤ b/(2R)): elsewhere no solution is an equilibrium of
+  the scene (``contact_span``);
 * a periodic angle: one turn, (−π, π] (the scan adds a cell each side);
 * an angle that is not periodic (declared ``periodic: false``, or in the angle of a
   torsional spring), without a range: ±SEARCH_SCALE π (five turns each way);
@@ -49,6 +52,9 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
             raise UnsolvedError(f"{c.range[0].loc}: the range of '{c.name}' is empty at the parameter values "
                                 f"({low:g} to {high:g})")
         return Interval(low, high, "declared")
+    span = _contact_span(model, q)
+    if span is not None:
+        return span
     if periodic:
         return Interval(-math.pi, math.pi, "one turn")
     if c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model):
@@ -59,6 +65,41 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
         return Interval(-SEARCH_SCALE, SEARCH_SCALE, f"±{SEARCH_SCALE:g}: no length of the scene has a value")
     reach = SEARCH_SCALE * length
     return Interval(-reach, reach, f"±{SEARCH_SCALE:g} × {name} = ±{length:g}, the scene's largest length")
+
+
+def _contact_span(model: Model, q: sp.Symbol) -> Interval | None:
+    """The span of the contact measured by q itself, at the parameter values (None: no
+    such contact, or its ends need values the model lacks)."""
+    for c in model.contacts:
+        if c.span is None or c.measured != q:
+            continue
+        ends = [end.xreplace(dict(model.values)) for end in c.span]
+        if any(end.free_symbols for end in ends):
+            return None
+        low, high = sorted(float(end) for end in ends)
+        if low < high:
+            return Interval(low, high, f"the span where contact '{c.name}' holds")
+    return None
+
+
+def search_rule(model: Model, angles: frozenset) -> str:
+    """Where the numeric search looks, in words, before any value is known: 'over θ in
+    (−π, π]', 'over θ in the span where contact 'C' holds'…"""
+    parts = []
+    for c, q, name in zip(model.problem.coordinates, model.q, model.coordinate_names()):
+        shown = unicode_name(name)
+        spans = [k for k in model.contacts if k.span is not None and k.measured == q]
+        if c.range is not None:
+            parts.append(f"{shown} in its declared range")
+        elif spans:
+            parts.append(f"{shown} in the span where contact '{spans[0].name}' holds")
+        elif q in angles:
+            parts.append(f"{shown} in (−π, π]")
+        elif c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model):
+            parts.append(f"{shown} in ±{SEARCH_SCALE:g}π")
+        else:
+            parts.append(f"{shown} in ±{SEARCH_SCALE:g} × the scene's largest length")
+    return "over " + ", ".join(parts) + " (a coordinate's 'range' sets it)"
 
 
 def _torsion_angles(model: Model) -> set:

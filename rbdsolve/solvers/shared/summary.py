@@ -13,6 +13,7 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.problem.quantity import ACCELERATION
 from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.model.energy import Energy, kinetic_energy, mass_matrix, potential_energy
@@ -37,6 +38,8 @@ def coordinates_only(model: Model) -> ModelSummary:
 
 KINETIC = "Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of mass)"
 POTENTIAL = "Potential energy, −m g·r per body in gravity and ½ k s² per spring of stretch s"
+LOADED = ("Potential energy, −m g·r per body in gravity, ½ k s² per spring of stretch s, and the applied loads' "
+          "(−F·r_P for a constant force at P, −M α for a constant couple turning a body by α)")
 
 
 def summarize_model(model: Model) -> ModelSummary:
@@ -50,6 +53,7 @@ def summarize_model(model: Model) -> ModelSummary:
         return ModelSummary(model.state.functions(), model.to_time(T), None, tuple(steps))
     V = potential_energy(model)
     steps += _potential_steps(V, model)
+    steps += _free_force_steps(model)
     steps += _two_sided(model)
     steps += _unturned(model)
     return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
@@ -69,9 +73,25 @@ def _kinetic(model: Model) -> tuple[sp.Expr, list[st.Step]]:
 def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
     """V term by term, or, past SCAN_TERMS terms in all (or twice that in its parts
     together: a chain's bodies each repeat the links above them), as ½ qᵀ K q or one sum."""
+    text = LOADED if any(x.potential is not None for x in model.loads) else POTENTIAL
     if V.terms and (terms(V.total) > SCAN_TERMS or sum(terms(t.value) for t in V.terms) > 2 * SCAN_TERMS):
-        return potential_steps(POTENTIAL, V, model, present(V.total, model))
-    return _energy_steps(POTENTIAL, "V", V, model)
+        return potential_steps(text, V, model, present(V.total, model))
+    return _energy_steps(text, "V", V, model)
+
+
+def _free_force_steps(model: Model) -> list[st.Step]:
+    """The generalized forces of the loads without a potential (a force given as a
+    function of t), Q_i = Σ F·∂v_P/∂q̇_i + M·∂ω/∂q̇_i: Lagrange's equations keep them."""
+    free = [x for x in model.loads if x.potential is None]
+    if not free:
+        return []
+    from rbdsolve.model.loads import free_forces
+
+    names = ", ".join(f"{x.kind} '{x.name}'" for x in free)
+    return [st.definition(f"Generalized forces of the loads without a potential ({names}), from their virtual "
+                          "work, Q_i = Σ F·∂v_P/∂q̇_i + M·∂ω/∂q̇_i (v_P the velocity of the body's point where F "
+                          "acts):", *[Relation(sp.Symbol(f"Q_{n}"), model.to_time(Q))
+                                      for n, Q in zip(model.coordinate_names(), free_forces(model))])]
 
 
 def rolling_steps(model: Model) -> list[st.Step]:
@@ -82,9 +102,11 @@ def rolling_steps(model: Model) -> list[st.Step]:
     for c in model.contacts:
         source = c.source
         if source.pulley is not None:
-            out.append(st.equation(f"String at {c.name} ({source.pulley.drum} to {c.body}, over a light pulley): "
+            pulley = source.pulley
+            how = "over a light pulley" if pulley.over is not None else f"straight from its {pulley.side} side"
+            out.append(st.equation(f"String at {c.name} ({pulley.drum} to {c.body}, {how}): "
                                    f"inextensible, so the hanging part lengthens as fast as the string leaves "
-                                   f"{source.pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
+                                   f"{pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
                                    Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
             out += _implied_notes(c)
             continue
@@ -96,8 +118,22 @@ def rolling_steps(model: Model) -> list[st.Step]:
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
                                Relation(c.lhs, c.rhs),
                                Relation(c.dependent, c.integrated, lead="⇒")))
-        out += _implied_notes(c)
+        out += _implied_notes(c) + _rolled_note(model, c)
     return out
+
+
+def _rolled_note(model: Model, c) -> list[st.Step]:
+    """A coordinate declared an angle that the rolling makes non-periodic (model/build.py
+    ``_angles``): said, with what that changes."""
+    declared = {qi: k for k, qi in zip(model.problem.coordinates, model.q)}
+    k = declared.get(c.coordinate)
+    if k is None or k.kind is not CoordinateKind.ANGLE or k.periodic is False or c.coordinate in model.angles:
+        return []
+    name = unicode_name(k.name)
+    where = " and its equilibria are searched where the contact holds" if c.span is not None else ""
+    return [st.note(f"{name} is declared an angle, but body '{c.body}' rolls by it: the arc it lays off enters the "
+                    f"positions outside sin and cos, so the scene does not repeat after a turn of {name}. It is "
+                    f"taken as an angle that does not repeat (periodic: false){where}")]
 
 
 def _implied_notes(c) -> list[st.Step]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from dataclasses import dataclass
 from enum import Enum
 from typing import Mapping
 
@@ -16,7 +17,7 @@ from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.problem.expr import Expr
-from rbdsolve.report.tree import label, leaves, map_paths
+from rbdsolve.report.tree import Path, label, leaves, map_paths
 
 
 SAMPLE_POINTS = (1, sp.Rational(13, 10), sp.Rational(17, 7))  # each symbol without a value, in turn
@@ -53,14 +54,67 @@ def parameter_sample(model, rng) -> dict[sp.Symbol, sp.Expr]:
 def numeric(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> object:
     """Numeric values of an answers tree where every symbol has a value.
 
-    Expressions become floats (or [re, im] when complex), matrices nested lists;
-    anything that still holds a free symbol or a function of time becomes None. Leaves
-    that are not expressions stay as the answers give them (an enum as its value, a
-    count, a text), so the tree reads like the answers.
+    Expressions become floats, matrices nested lists; anything that still holds a free
+    symbol or a function of time becomes None, and so does a value that is not a real
+    number (every quantity rbdsolve answers is real: a complex value is no value, never
+    a pair of reals; ``not_real`` names them). Leaves that are not expressions stay as
+    the answers give them (an enum as its value, a count, a text), so the tree reads
+    like the answers.
     """
+    return numbers(value, subs).tree
+
+
+@dataclass(frozen=True)
+class Numbers:
+    """An answers tree's numeric values, and the paths of its leaves whose value is a
+    number but not a real one (shown as None)."""
+
+    tree: object
+    not_real: tuple[Path, ...]
+
+
+def numbers(value: object, subs: Mapping[sp.Symbol, sp.Expr]) -> Numbers:
+    """``numeric``'s tree, with the paths of the values that are not real."""
     roots: dict[sp.Expr, sp.Expr] = {}
-    return map_paths(value, lambda _, leaf: _number(leaf, subs, roots) if isinstance(leaf, sp.Basic) else _plain(leaf),
-                     row=lambda _, floats: list(floats))  # a numeric route's floats are their own values
+    complex_at: list[Path] = []
+
+    def leaf(path: Path, x: object) -> object:
+        if not isinstance(x, sp.Basic):
+            return _plain(x)
+        number = _number(x, subs, roots)
+        if isinstance(number, complex):
+            complex_at.append(path)
+            return None
+        return number
+
+    tree = map_paths(value, leaf, row=lambda _, floats: list(floats))  # a numeric route's floats are their own values
+    return Numbers(tree, tuple(complex_at))
+
+
+def not_real(found: Numbers) -> str | None:
+    """A warning naming the answers whose value at the parameter values is a complex
+    number (shown as null), except those of a record whose own ``exists_when`` or
+    ``when`` is false there (a steady motion that does not exist at these values says
+    so itself; a stability case that does not hold there, such as the growth rate of a
+    sleeping top spun above its least spin); None when there are none."""
+    bad = [label(p) for p in found.not_real if not _absent_record(found.tree, p)]
+    if not bad:
+        return None
+    shown = ", ".join(bad[:6]) + (f" and {len(bad) - 6} more" if len(bad) > 6 else "")
+    return (f"no numeric value for {shown}: not a real number at the parameter values (a quantity that "
+            "exists only where it is real); shown as null")
+
+
+def _absent_record(tree: object, path: Path) -> bool:
+    """Whether a record on the way to ``path`` has ``exists_when`` or ``when`` false."""
+    for part in path:
+        if isinstance(tree, dict) and (tree.get("exists_when") is False or tree.get("when") is False):
+            return True
+        try:
+            tree = tree[part]
+        except (KeyError, IndexError, TypeError):
+            return False
+    return False
 
 
 CONDITIONS = (Relational, BooleanAtom, BooleanFunction)  # exists_when, a case's when
@@ -101,13 +155,18 @@ def _plain(leaf: object) -> object:
 
 
 def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
-            roots: dict[sp.Expr, sp.Expr] | None = None) -> float | list | None:
+            roots: dict[sp.Expr, sp.Expr] | None = None) -> float | complex | bool | None:
+    """A leaf's value: a float, a complex where it is not real (the callers refuse it:
+    ``numbers``), true or false for a condition, None where it has none."""
     if isinstance(value, float):
         return value  # a numeric route's answer
     if not isinstance(value, sp.Basic):
         return None  # enums, text: not numbers
     if isinstance(value, CONDITIONS):  # a condition: true or false at the values, if they decide it
-        decided = value.xreplace(subs)
+        try:
+            decided = value.xreplace(subs)
+        except TypeError:  # a side not real, or infinite (a string through its own peg), at the values: undecided
+            return None
         return bool(decided) if isinstance(decided, BooleanAtom) else None
     number = value.xreplace(subs)
     if roots is not None and number.has(sp.CRootOf):
@@ -122,7 +181,7 @@ def _number(value: object, subs: Mapping[sp.Symbol, sp.Expr],
         return None
     if not (math.isfinite(z.real) and math.isfinite(z.imag)):
         return None
-    return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else [z.real, z.imag]
+    return z.real if abs(z.imag) <= 1e-14 * max(1.0, abs(z.real)) else z
 
 
 MAX_CONSTANT_OPS = 400  # larger leaves are not worth the reduction (they are rarely constant)
@@ -237,6 +296,8 @@ def _named_by(question, model) -> list:
             out.append(model.symbols.parameters[name])
         elif name in model.points:
             out.append(model.points[name])
+        elif name in model.body_points and name not in bodies:
+            out.append(model.body_points[name])
         elif name in bodies:
             out += _body_ingredients(bodies[name], whole=True)
         elif any(f.name == name for f in model.problem.frames):

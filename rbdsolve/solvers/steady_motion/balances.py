@@ -68,7 +68,7 @@ def balances(opts: SteadyMotionOptions, model: Model, k: Kinematics, rates: dict
         raise UnsolvedError("not a steady motion: the angular momentum's components in the triad change")
     dL, v_P = fix(k.Omega.cross(L)), fix(k.velocity(P))
     forces = _forces(model, k, body, opts, names)
-    M = fix(sum(((r - k.components(P)).cross(F) for r, F in forces), sp.zeros(3, 1)))
+    M = fix(sum(((r - k.components(P)).cross(F) for r, F in forces), _couples(model, k, body)))
     found, a_G = [dL + v_P.cross(body.mass * v_G) - M], None
     if opts.reactions:  # the reactions' unknowns need Newton's law for G as well
         a_G = fix(k.rate_in_triad(v_G) + k.Omega.cross(v_G))
@@ -125,11 +125,24 @@ def _is_zero(v: sp.Matrix) -> bool:
 
 
 def _forces(model: Model, k: Kinematics, body: RigidBody, opts: SteadyMotionOptions, names):
-    """(point of application, force) in triad components: gravity at G, then the reactions."""
+    """(point of application, force) in triad components: gravity at G, the applied
+    forces on the body (``forces:``), then the reactions."""
     g = k.components(model.gravity) if model.gravity is not None else sp.zeros(3, 1)
     gravity = (k.components(body.position), body.mass * g)
-    return [gravity] + [(k.components(names.vector(r.at)), k.components(names.vector(r.force)))
-                        for r in opts.reactions]
+    applied = [(k.components(x.point), k.components(x.force)) for x in model.loads
+               if x.body == body.name and x.kind == "force"]
+    return [gravity, *applied] + [(k.components(names.vector(r.at)), k.components(names.vector(r.force)))
+                                  for r in opts.reactions]
+
+
+def _couples(model: Model, k: Kinematics, body: RigidBody) -> sp.Matrix:
+    """The applied couples on the body (``couples:``; −M where it is the 'by' of a motor),
+    in triad components: a couple has the same moment about every point."""
+    total = sp.zeros(3, 1)
+    for x in model.loads:
+        if x.kind == "couple" and body.name in (x.body, x.by):
+            total += (1 if x.body == body.name else -1) * k.components(x.moment)
+    return total
 
 
 class Kinematics:

@@ -40,8 +40,9 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
-from rbdsolve.solvers.shared.conditions import asked, critical_values, exists_when
-from rbdsolve.solvers.steady_motion.answers import Branch, SteadyMotionAnswers, SupportForce
+from rbdsolve.solvers.shared.conditions import asked
+from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers, SupportForce
+from rbdsolve.solvers.steady_motion.existence import absent_at_values, with_existence
 from rbdsolve.solvers.steady_motion.balances import (
     angle_of,
     angle_unknown,
@@ -70,14 +71,16 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     relations = tuple(relation(x, target) for x in b.components if tidy_fraction(x) != 0)
     names = model.symbols.with_points(model.points)
     held = _reaction_unknowns(opts, model, names)
-    branches = _solve_for(opts, targets, relations, model, rates, held)
-    solved, along = branches[0] if len(branches) == 1 else ({}, {})
-    several, critical = _branches(branches, targets, model, asked(model, question))
+    found = _solve_for(opts, targets, relations, model, rates, held)
+    real, several, critical = _branches(found, targets, model, asked(model, question))
+    solved, along = real[0] if len(real) == 1 else ({}, {})
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
                                   several, critical, _reactions(opts, k, names, targets, solved, along, held))
-    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w)
-    return Solution("steady_motion", Route.EXACT, answers, tuple(steps))
+    loaded = any(opts.body in (x.body, x.by) for x in model.loads)
+    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w, loaded)
+    return Solution("steady_motion", Route.EXACT, answers, tuple(steps),
+                    warnings=absent_at_values(several, critical, model))
 
 
 def _reactions(opts: SteadyMotionOptions, k, names, targets, solved: dict, along: dict,
@@ -149,32 +152,33 @@ def _solve_for(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], relation
                             "polynomial in the unknowns and the sines and cosines of the angles, solved completely)"
                             if proved else f"the relations could not be solved exactly for {asked}")
     back = dict(zip(X, targets))
+    unsolved = [r for r, x in zip(relations, replaced) if x not in holding]  # the solved ones hold by construction
     out = []
     for f in found:
         values = {x: tidy_fraction(sin_cos(f[d].xreplace(back))) for x, d in zip(targets, X)}
         _require_known(values, unknown_symbols(model) | held)
         found_along = {u: tidy_fraction(sin_cos(f[u])) for u in along
                        if u in f and not f[u].has(*X, *unknown_symbols(model))}
-        _require_rest(relations, {**values, **found_along}, model, targets, held, bool(opts.reactions))
+        _require_rest(unsolved, {**values, **found_along}, model, targets, held, bool(opts.reactions))
         out.append(({x.text: values[y] for x, y in zip(opts.solve_for, targets)}, found_along))
     return out
 
 
-def _branches(branches, targets, model: Model, first=None):
-    """Every solution with where it is real (solved for one parameter: the least spin for
-    which a top's two precession rates exist, the tilt below which a coin's rate is;
-    the value of a square, ω₀², must be ≥ 0), and the critical values; none for one
-    solution that is real everywhere."""
-    out, criticals = [], []
+def _branches(found, targets, model: Model, first=None):
+    """The solutions that are real somewhere, each with where it is (solved for one
+    parameter: the least spin for which a top's two precession rates exist, the tilt
+    below which a coin's rate is; the value of a square, ω₀², must be ≥ 0:
+    existence.py), and the critical values; no branches for one solution that is real
+    everywhere."""
     squares = [k for k, t in enumerate(targets) if t.is_Pow and t.exp.is_even and t.base.is_real]
-    for solved, _ in branches:
-        values = list(solved.values())
-        found = exists_when(values, model, [values[k] for k in squares], first)
-        out.append(Branch(solved, found.condition if found else sp.true))
-        criticals += found.criticals if found else ()
-    if len(out) == 1 and out[0].exists_when is sp.true:
-        return (), ()
-    return tuple(out), critical_values(criticals)
+    branches, critical = with_existence([solved for solved, _ in found], squares, model, first)
+    real = [(pair, b) for pair, b in zip(found, branches) if b.exists_when is not sp.false]
+    if not real:
+        raise UnsolvedError("no steady motion: every solution of the relations is complex for all the values the "
+                            "assumptions allow")
+    if len(real) == 1 and real[0][1].exists_when is sp.true:
+        return [real[0][0]], (), ()
+    return [pair for pair, _ in real], tuple(b for _, b in real), critical
 
 
 def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[dict], bool]:
@@ -195,10 +199,40 @@ def _solved(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> tuple[list[d
             # a family (some symbols left free) keeps only the unknowns it determines
             out.append({u: back[u](root) for u in unknowns if determined[u] <= set(root)})
         return out, True
+    quadratic = _one_quadratic(relations, unknowns)
+    if quadratic is not None:
+        return quadratic, True
     try:
         return sp.solve(relations, unknowns, dict=True), False
     except NotImplementedError:
         return [], False
+
+
+def _one_quadratic(relations: list[sp.Expr], unknowns: list[sp.Symbol]) -> list[dict] | None:
+    """One relation, a polynomial of degree 1 or 2 in the one unknown X (a top's
+    precession rate: (I₁ − I₃) cos θ Ω² − I₃ s Ω + m g h = 0), solved by formula:
+    X = −c/b, or X = (−b ± √(b² − 4ac))/(2a) once the factors common to a, b, c
+    (sin θ) are divided out; complete, and without sympy's solve and its checks (a
+    third of a second for a heavy top). None for anything else."""
+    if len(relations) != 1 or len(unknowns) != 1:
+        return None
+    (X,) = unknowns
+    numerator, denominator = sp.fraction(sp.together(relations[0]))
+    if denominator.has(X) or not numerator.is_polynomial(X):
+        return None
+    coefficients = sp.Poly(numerator, X).all_coeffs()
+    if len(coefficients) not in (2, 3) or any(c.has(X) for c in coefficients):
+        return None
+    common = sp.gcd_list(coefficients)
+    coefficients = [sp.cancel(c / common) for c in coefficients]
+    if coefficients[0].could_extract_minus_sign():
+        coefficients = [-c for c in coefficients]
+    if len(coefficients) == 2:
+        b, c = coefficients
+        return [{X: -c / b}]
+    a, b, c = coefficients
+    root = sp.sqrt(b**2 - 4 * a * c)
+    return [{X: (-b - root) / (2 * a)}, {X: (-b + root) / (2 * a)}]
 
 
 MAX_DEGREE = 2  # in one sine after eliminating its cosine: beyond, closed forms swell (a quartic)
@@ -266,7 +300,8 @@ def _require_known(values: dict, unknown: set) -> None:
 
 
 def _require_rest(relations, values: dict, model: Model, targets, held: set, reactions: bool) -> None:
-    """Every relation free of the unknowns not found must hold with the values found."""
+    """Every other relation free of the unknowns not found must hold with the values
+    found (those they were solved from hold by construction)."""
     others = unknown_symbols(model) - set(targets) - held - set(values)
     rest = [r for r in relations if not r.has(*others) and tidy_fraction(sin_cos(r.subs(values))) != 0]
     if rest:

@@ -30,11 +30,13 @@ def omega_label(model: Model) -> sp.Symbol:
 
 
 def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptions, targets=(),
-                   a_G: sp.Matrix | None = None, w: sp.Symbol = OMEGA) -> list[st.Step]:
+                   a_G: sp.Matrix | None = None, w: sp.Symbol = OMEGA, loaded: bool = False) -> list[st.Step]:
     e = answers.triad
     about = opts.about.text if opts.about.text.isidentifier() else "P"
     target = targets[0] if len(targets) == 1 else None
-    forces = "gravity and the reactions" if opts.reactions else "gravity"
+    forces = {(False, False): "gravity", (True, False): "gravity and the applied loads",
+              (False, True): "gravity and the reactions", (True, True): "gravity, the applied loads and the reactions"
+              }[(loaded, bool(opts.reactions))]
     newton = ([st.equation("The acceleration of G (constant components, so a_G = Ω_T × v_G):",
                            Relation(sp.Symbol("a_G"), show(a_G, e)))] if a_G is not None else [])
     balances = ("Newton's law for G, m a_G = m g + Σ R, and the angular momentum balance "

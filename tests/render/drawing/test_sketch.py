@@ -192,3 +192,19 @@ def test_a_pivot_is_marked_whether_or_not_a_point_is_named_there() -> None:
     assert pinned.pivots == ((0.0, 0.0),) and all(p.at != (0.0, 0.0) for p in pinned.points)
     assert sketch(model_of(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml")).pivots == ()
     assert sketch(model_of(EXAM / "p5-accelerated-pendulum.yaml")).pivots == ()
+
+
+def test_a_body_s_own_points_and_strings_straight_from_a_pulley() -> None:
+    # problems/forces/atwood-massive-pulley.yaml at θ = 0 (R = 0.1, l = 1): each block
+    # hangs l below the rim, its string drawn from the rim straight down to it.
+    drawing = sketch(model_of(PROBLEMS / "forces" / "atwood-massive-pulley.yaml"), {"theta": 0.0})
+    strings = sorted((g.start, g.end) for g in drawing.grounds if g.string)
+    assert len(strings) == 2
+    assert close(strings[0][0], (-0.1, 0)) and close(strings[0][1], (-0.1, -1))
+    assert close(strings[1][0], (0.1, 0)) and close(strings[1][1], (0.1, -1))
+    # a rod's own point B (l/2 below its centre along the rod) is labelled where it is
+    rod = load_text("parameters: {m: mass, l: length}\ncoordinates: [theta]\nbodies:\n  rod: {shape: rod, "
+                    "mass: m, length: l, at: [0, 0], angle: theta, axis: y, points: {B: [0, -l/2]}}\n"
+                    "questions: [eom]\n", "r.yaml")
+    points = {p.name: p.at for p in sketch(build_model(rod), {"theta": math.pi / 2}).points}
+    assert close(points["B"], (0.5, 0.0)) and "rod" not in points

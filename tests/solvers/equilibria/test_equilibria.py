@@ -18,11 +18,26 @@ def solve(text: str):
     return solve_problem(build_model(load_text(text, "scene.yaml")))
 
 
-def test_transcendental_equilibria_are_refused_with_the_reason() -> None:
+def test_transcendental_equilibria_give_their_evident_roots_with_the_reason() -> None:
+    """A hanging rod with a torsion spring: ∂V/∂θ = c θ + ½ m g l sin θ (by hand) has no
+    closed form for every root, but θ = 0 makes each term vanish; V''(0) = c + ½ m g l > 0,
+    so it is stable. θ = π is no root (c π ≠ 0). The list is said to be partial."""
     scene = ROD + "springs:\n  s: {stiffness: c, angle: theta}\nquestions: [equilibria]\n"
     result = solve(scene).solutions[0]
+    assert result.solved and result.route.value == "exact", result.error
+    assert [(e.at["theta"], e.stability.value) for e in result.answers.equilibria] == [(0, "stable")]
+    (note,) = [w for w in result.warnings if "evident roots" in w]
+    assert "transcendental" in note and "c θ" in note  # the equation, printed as the answers are
+    assert "other equilibria may exist" in note.lower() and "θ in ±10π" in note  # where the numeric route looks
+
+
+def test_transcendental_equilibria_without_an_evident_root_are_refused_with_the_reason() -> None:
+    """The same rod whose spring rests at θ = 1: ∂V/∂θ = c (θ − 1) + ½ m g l sin θ vanishes
+    at none of 0, ±π/2, π (c (−1), c (π/2 − 1) + ½ m g l, …: not zero for every value)."""
+    scene = ROD + "springs:\n  s: {stiffness: c, angle: theta, rest: 1}\nquestions: [equilibria]\n"
+    result = solve(scene).solutions[0]
     assert not result.solved
-    assert "transcendental" in result.error and "c θ" in result.error  # the equation, printed as the answers are
+    assert "transcendental" in result.error and "no evident root" in result.error
 
 
 def test_a_coordinate_that_v_ignores_is_neutral() -> None:

@@ -74,11 +74,21 @@ def test_the_cases_read_as_an_exam_writes_them() -> None:
     assert "Ω ≥ Ω_c" in out and "Ω_c = √(g/R)" in out
 
 
-@pytest.mark.parametrize("values", ["values: {m: 1, R: 1, g: 9.81, Omega: 2}", "values: {m: 1, R: 1, g: 9.81, Omega: 5}"])
-def test_with_values_the_case_is_decided(values) -> None:
+# By hand (R = 1, g = 9.81): Ω = 2 is below Ω_c = √9.81 ≈ 3.13 (θ = 0 stable, no off-axis
+# equilibrium), Ω = 5 above it (θ = 0 unstable, ±acos(g/(R Ω²)) stable); θ = π is unstable.
+@pytest.mark.parametrize("values, want", [
+    ("values: {m: 1, R: 1, g: 9.81, Omega: 2}", {"0": "stable", "pi": "unstable"}),
+    ("values: {m: 1, R: 1, g: 9.81, Omega: 5}", {"0": "unstable", "pi": "unstable", "acos(g/(Omega**2*R))": "stable",
+                                                 "-acos(g/(Omega**2*R))": "stable"}),
+])
+def test_with_values_the_case_is_decided(values, want) -> None:
     report = solve_problem(build_model(load_text(HOOP + "\n" + values + "\n", "hoop.yaml")))
     (solution,) = [s for s in report.solutions if s.question == "equilibria"]
-    assert all(eq.stability.value != "depends" for eq in solution.answers.equilibria)
+    at = {n: sp.Symbol(n, positive=True) for n in ("R", "g", "m", "Omega")}
+    numbers = {at["R"]: 1, at["g"]: sp.Rational(981, 100), at["m"]: 1, at["Omega"]: 2 if "Omega: 2" in values else 5}
+    existing = {str(eq.at["theta"]): eq.stability.value for eq in solution.answers.equilibria
+                if bool(sp.sympify(_names(eq.exists_when)).subs(numbers))}
+    assert existing == want
 
 
 # A cylinder (m, r) rolling inside a fixed hollow cylinder (R): G on a circle of radius

@@ -236,3 +236,20 @@ def test_centre_of_percussion_needs_every_component_to_vanish() -> None:
     solution = solve(text.replace("impulses: {Q: [P, 0]}", "impulses: {Q: [P, P]}"))
     assert solution.answers.centre_of_percussion is None
     assert any("no single value of d" in w for w in solution.warnings)
+
+
+@pytest.mark.parametrize("e", ["0", "1/3", "1/2", "1"])
+def test_a_head_on_hit_gives_the_velocities_by_hand_for_each_restitution(e) -> None:
+    """A particle of mass μ at v0 hits a hanging bob m head on (A at θ = 0, normal x).
+    By hand, momentum μ v0 = m l θ̇ + μ u and Newton's law l θ̇ − u = e v0 give
+    l θ̇ = μ (1 + e) v0/(m + μ), u = (μ − e m) v0/(m + μ), and the energy lost
+    ½ m μ/(m + μ) (1 − e²) v0². A flipped sign in the law (−e) gives the same energy for
+    e = 1 and the same result for e = 0: the values in between tell."""
+    text = PENDULUM.replace("restitution: e", f"restitution: {e}").replace("mass: m, velocity", "mass: mu, velocity")
+    text = text.replace("parameters: {m: mass,", "parameters: {mu: mass, m: mass,")
+    answers = solve(text).answers
+    m, mu, l, v0 = (sp.Symbol(n, positive=True) for n in ("m", "mu", "l", "v0"))
+    ee = sp.Rational(e)
+    assert sp.simplify(answers.velocities["theta"] - mu * (1 + ee) * v0 / ((m + mu) * l)) == 0
+    assert sp.simplify(answers.particles["A"][0] - (mu - ee * m) * v0 / (m + mu)) == 0
+    assert sp.simplify(answers.energy_lost - m * mu * (1 - ee**2) * v0**2 / (2 * (m + mu))) == 0

@@ -39,7 +39,7 @@ def test_cart_pendulum_bob_against_sympy() -> None:
 
 
 @pytest.mark.parametrize("option, message", [
-    ("{points: [Q]}", "no point 'Q' (points: C, P)"),
+    ("{points: [Q]}", "no point 'Q' (points: C, P, cart, bob)"),  # a body's name is its origin's
     ("{points: [P], at: {psi: 0}}", "'psi' is not a coordinate, nor dot() or ddot() of one"),
     ("{points: [P], at: {theta: x}}", "'x' cannot appear here"),
     ("{distance: [P, P]}", "a distance needs two different points, found 'P' twice"),

@@ -189,3 +189,42 @@ def test_kinds_and_cases_agree() -> None:
                     (held,) = [c for c in cases if bool(sp.parse_expr(str(c.when), local_dict={
                         str(s): s for s in values}).subs(values))]
                     assert held.kind is motion
+
+
+# Two particles m1 (x) and m2 (y) on a line, a spring k from the wall to the first and one
+# k between them: M = diag(m1, m2), K = [[2k, −k], [−k, k]]. By hand,
+# det(K − λM) = m1 m2 λ² − k (m1 + 2 m2) λ + k² = 0, λ = k (m1 + 2 m2 ∓ √(m1² + 4 m2²))/(2 m1 m2):
+# both positive (their sum and product are), though the smaller one's sign is not read
+# off its form by sympy: K positive definite decides it (Sylvester's law of inertia).
+TWO_MASSES = """
+parameters: {m1: mass, m2: mass, k: stiffness}
+coordinates: [x, y]
+points:
+  O: [0, 0]
+  A: [x, 0]
+  B: [y, 0]
+bodies:
+  a: {shape: particle, mass: m1, at: A}
+  b: {shape: particle, mass: m2, at: B}
+springs:
+  s1: {stiffness: k, between: [O, A]}
+  s2: {stiffness: k, between: [A, B]}
+questions:
+  - modes: {about: {x: 0, y: 0}}
+"""
+
+
+def test_two_masses_oscillate_in_both_modes_by_hand() -> None:
+    (solution,) = solve_problem(build_model(load_text(TWO_MASSES, "two.yaml"))).solutions
+    assert solution.solved, solution.error
+    a = solution.answers
+    assert [m.value for m in a.motions] == ["oscillation", "oscillation"]
+    m1, m2, k = sp.symbols("m1 m2 k", positive=True)
+    want = [k * (m1 + 2 * m2 - sp.sqrt(m1**2 + 4 * m2**2)) / (2 * m1 * m2),
+            k * (m1 + 2 * m2 + sp.sqrt(m1**2 + 4 * m2**2)) / (2 * m1 * m2)]
+    rng = random.Random(43)
+    for _ in range(5):
+        at = {m1: rng.uniform(0.1, 5), m2: rng.uniform(0.1, 5), k: rng.uniform(0.1, 50)}
+        got = sorted(float(sp.sympify(str(w), locals={"m1": m1, "m2": m2, "k": k}).subs(at)) ** 2
+                     for w in a.frequencies)
+        assert got == pytest.approx(sorted(float(x.subs(at)) for x in want), rel=1e-10)

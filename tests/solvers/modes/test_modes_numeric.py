@@ -160,3 +160,39 @@ def test_nan_is_never_classified() -> None:
         classify(0.0, float("inf"))
     assert classify(-1e-20, 1e-15) is Motion.NEUTRAL
     assert classify(-1.0, 1e-15) is Motion.GROWTH
+
+
+# Two particles (m, on light rods l) upright above pivots 3 apart, each held by a torsion
+# spring (c1 on θ, c2 on φ): V = ½ c1 θ² + ½ c2 φ² + m g l (cos θ + cos φ), so about
+# θ = φ = 0, M = m l² 1 and K = diag(c1 − m g l, c2 − m g l). With m = l = 1, g = 9.81,
+# c1 = 5, c2 = 20: λ = −4.81 (growth at √4.81, along θ) and 10.19 (oscillation at √10.19,
+# along φ).
+UPRIGHT = """
+parameters: {m: mass, l: length, g: gravity, c1: stiffness, c2: stiffness}
+values: {m: 1, l: 1, g: 981/100, c1: 5, c2: 20}
+coordinates:
+  theta: {kind: angle, periodic: false}
+  phi: {kind: angle, periodic: false}
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), cos(theta)]
+  Q: [3 + l*sin(phi), l*cos(phi)]
+bodies:
+  a: {shape: particle, mass: m, at: P}
+  b: {shape: particle, mass: m, at: Q}
+springs:
+  s1: {stiffness: c1, angle: theta}
+  s2: {stiffness: c2, angle: phi}
+questions:
+  - modes: {about: {theta: 0, phi: 0}}
+"""
+
+
+def test_the_numeric_route_names_a_growth_and_an_oscillation_by_hand() -> None:
+    a = _solve(UPRIGHT).solutions[0].answers
+    assert a.eigenvalues == pytest.approx((-4.81, 10.19), abs=1e-12)
+    assert a.motions == (Motion.GROWTH, Motion.OSCILLATION)
+    assert a.growth_rates[0] == pytest.approx(math.sqrt(4.81), rel=1e-14) and a.growth_rates[1] is None
+    assert a.frequencies[1] == pytest.approx(math.sqrt(10.19), rel=1e-14) and a.frequencies[0] is None
+    assert [abs(x) for x in a.shapes[0]] == pytest.approx([1.0, 0.0], abs=1e-12)
+    assert [abs(x) for x in a.shapes[1]] == pytest.approx([0.0, 1.0], abs=1e-12)

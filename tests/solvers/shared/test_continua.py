@@ -127,7 +127,7 @@ def test_the_starts_are_described_as_they_were_placed(n, starts, text) -> None:
     class Fake(SimpleNamespace):  # weak references and hashing by identity, as a Model's (memoized)
         __hash__ = object.__hash__
 
-    model = Fake(q=q, angles=set(), values={}, springs=(),
+    model = Fake(q=q, angles=set(), values={}, springs=(), contacts=(),
                             problem=SimpleNamespace(coordinates=coordinates, dimensions=()))
     points, how = _starts(model, 24)
     assert len(points) == starts and how.startswith(text)

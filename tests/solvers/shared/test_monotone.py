@@ -82,7 +82,8 @@ questions: [equilibria]
 def test_an_assumption_proves_the_bound(tmp_path) -> None:
     """problems/edges/eccentric-wheel-spring.yaml: ∂V/∂θ = k r² θ − m g e sin θ, no values;
     k r² > m g e (assumed) makes it increasing, so θ = 0 is the only root. Without the
-    assumption the sign of k r² − m g e is open and the exact route refuses."""
+    assumption the sign of k r² − m g e is open: the exact route gives θ = 0, where every
+    term vanishes, and says that other equilibria may exist, not that it is the only one."""
     path = PROBLEMS / "edges" / "eccentric-wheel-spring.yaml"
     solution = equilibria_exact.solve(None, build_model(load_file(path)), Options())
     assert [(eq.at, eq.stability.value) for eq in solution.answers.equilibria] == [({"theta": 0}, "stable")]
@@ -90,4 +91,6 @@ def test_an_assumption_proves_the_bound(tmp_path) -> None:
     open_bound = tmp_path / "w.yaml"
     open_bound.write_text(path.read_text(encoding="utf-8").replace("assumptions: [k*r**2 > m*g*e]\n", ""))
     unproved = solve_problem(build_model(load_file(open_bound)), Options(route=RouteChoice.EXACT)).solutions[0]
-    assert not unproved.solved
+    assert [eq.at for eq in unproved.answers.equilibria] == [{"theta": 0}]
+    assert not any("is its only root" in w for w in unproved.warnings)
+    assert any("other equilibria may exist" in w.lower() for w in unproved.warnings)

@@ -84,10 +84,17 @@ def test_a_tilt_with_no_compact_closed_form_falls_back_to_the_numeric_route() ->
     (solution,) = solve_file(load_text(text, "coin.yaml"), Options(budget=30)).solutions
     assert solution.solved and solution.route.value == "numeric", solution.error
     assert any("degree 4 in the sine" in w for w in solution.warnings)
-    for found in solution.answers.solutions:
-        th = found.unknowns["theta"]
-        residual = -6 * 0.4 * 9 * math.cos(th) + 4 * 9.81 * math.sin(th) - 9 * 0.02 * math.sin(th) * math.cos(th)
-        assert abs(residual) < 1e-9
+    def residual(th: float) -> float:
+        return -6 * 0.4 * 9 * math.cos(th) + 4 * 9.81 * math.sin(th) - 9 * 0.02 * math.sin(th) * math.cos(th)
+
+    # every root in one turn, by hand: sign changes of the residual on a fine grid, bisected
+    from scipy.optimize import brentq
+    grid = [-math.pi + 2 * math.pi * k / 2000 for k in range(2001)]
+    roots = [brentq(residual, a, b, xtol=1e-14) for a, b in zip(grid, grid[1:]) if residual(a) * residual(b) < 0]
+    assert len(roots) == 2  # the premise: tan θ ≈ 0.55 and the same line the other way
+    got = sorted((found.unknowns["theta"] + math.pi) % (2 * math.pi) - math.pi for found in solution.answers.solutions)
+    assert got == pytest.approx(sorted(roots), abs=1e-9)
+    assert all(abs(residual(th)) < 1e-9 for th in got)
 
 
 @pytest.mark.parametrize("asked", ["omega0**2", "omega0"])

@@ -92,3 +92,20 @@ def test_a_case_is_said_in_the_printer_of_the_answers() -> None:
     J1, J2, J3 = sp.symbols("J1 J2 J3", positive=True)
     assert describe(Condition(((J1, J2),), ((J1, J3),))) == "J₁ = J₂, J₁ ≠ J₃"
     assert describe(Condition((), ())) == "in every case"
+
+
+def test_the_numeric_route_names_the_intermediate_axis_unstable_by_hand() -> None:
+    """The box of sides 1, 2, 3 (m = 1) on the numeric route: J = (2² + 3², 1 + 3², 1 + 2²)/12
+    = (13, 10, 5)/12. Spin about e_k: (J_k − J_i)(J_k − J_j) > 0 stable, turning at
+    √((J_k − J_i)(J_k − J_j)/(J_i J_j)) per unit spin, < 0 unstable, growing at the same root
+    of its size: 5/12: 40 > 0, √(40/130); 10/12: −15 < 0, √(15/65); 13/12: 24 > 0, √(24/50)."""
+    from rbdsolve.solvers import Options, RouteChoice
+
+    text = BOX.read_text() + "values: {m: 1, a: 1}\n"
+    (solution,) = solve_problem(build_model(load_text(text, "box.yaml")), Options(route=RouteChoice.NUMERIC)).solutions
+    assert solution.solved and solution.route.value == "numeric", solution.error
+    spins = sorted(solution.answers.spins, key=lambda s: s.moment)
+    assert [s.moment for s in spins] == pytest.approx([5 / 12, 10 / 12, 13 / 12], rel=1e-12)
+    assert [s.stability.value for s in spins] == ["stable", "unstable", "stable"]
+    assert [s.rate for s in spins] == pytest.approx([math.sqrt(40 / 130), math.sqrt(15 / 65), math.sqrt(24 / 50)],
+                                                    rel=1e-12)

@@ -1,0 +1,169 @@
+"""The oracle's description of a problem file from problems/ (to show that the oracle
+agrees with every expected answer there that it can model): parameters, values (SI),
+coordinates, gravity, points, bodies placed by `at`/`angle` (or 3D turns), springs,
+read from the YAML; a body placed by a contact gets the placement of the generator's
+geometry (PLACED below, written by hand, as for the generated scenes); questions as
+written. Scenes the oracle does not model (steady motion, velocities at one instant,
+a prescribed unknown function, rolling on a plane) are refused with the reason."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import yaml
+
+from benchmarks.neighbours.scene import Body, Coord, Param, Part, Question, Scene, Spring, Support
+
+UNITS = {"kg": "1", "g": "1/1000", "m": "1", "cm": "1/100", "mm": "1/1000", "s": "1", "deg": "pi/180",
+         "°": "pi/180", "rad": "1", "rev": "2*pi", "min": "60", "rpm": "2*pi/60", "N": "1", "Hz": "2*pi"}
+
+
+class Unmodelled(Exception):
+    """The oracle has no model of this problem (the reason)."""
+
+
+def si(text) -> str:
+    """A value as written (``'30 cm'``, ``'120 rev/min'``, ``'9.81 m/s^2'``) in SI."""
+    s = str(text).strip()
+    m = re.match(r"^([-+*/().\w\s]*?\d[\w./*()+-]*|pi/\d+|\w+)\s*([A-Za-z°][\w*/^°]*)?$", s)
+    num, unit = (m.group(1), m.group(2)) if m else (s, None)
+    if unit is None or unit in ("pi",):
+        return s
+    factor = "1"
+    for i, part in enumerate(re.split(r"(/|\*)", unit)):
+        if part in ("*", "/", ""):
+            continue
+        sign = "/" if "/" + part in unit and unit.split(part)[0].endswith("/") else "*"
+        name, _, power = part.partition("^")
+        if name not in UNITS:
+            raise Unmodelled(f"unit {name!r}")
+        term = f"({UNITS[name]})" + (f"**{power}" if power else "")
+        factor = f"{factor}{sign}{term}"
+    return f"({num})*{factor}"
+
+
+def _vec(v) -> str:
+    return "[" + ", ".join(str(x) for x in v) + "]" if isinstance(v, list) else str(v)
+
+
+AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1), "-x": (-1, 0, 0), "-y": (0, -1, 0), "-z": (0, 0, -1)}
+
+# Bodies placed by a contact: the generator's own geometry (docs/format.md's conventions).
+PLACED = {
+    "ball-in-bowl": {"ball": ("(R - r)*[sin(theta), -cos(theta)]", "-(R - r)*theta/r")},
+    "cylinder-in-cylinder": {"cylinder": ("(R - r)*[sin(theta), -cos(theta)]", "-(R - r)*theta/r")},
+    "ring-on-drum": {"ring": ("(R + r)*[-sin(theta), cos(theta)]", "(R + r)*theta/r")},
+    "wheel-on-incline": {"wheel": ("x*[cos(alpha), -sin(alpha)] + r*[sin(alpha), cos(alpha)]", "-x/r")},
+    "yo-yo": {"yoyo": ("[r, -y]", "-y/r")},
+    "half-disk-rocking": {"half": ("[-R*theta, R]", "theta")},
+    "hemisphere-rocking": {"dome": ("[-R*theta, R]", "theta")},
+    "slab-on-drum": {"slab": ("(R + a/2)*[-sin(theta), cos(theta)] + R*theta*[cos(theta), sin(theta)]", "theta")},
+    "cylinder-on-plank": {"cylinder": ("[x + s, h + r]", "-s/r")},
+    "disk-on-turning-disk": {"disk": ("(R + r)*[-sin(theta), cos(theta)]", "psi + (R + r)*(theta - psi)/r")},
+    "cylinder-pulley-block": {"cylinder": ("[x, r]", "-x/r"), "block": ("[d, 2*r - d - 2*x]", None)},
+}
+SUPPORTS = {  # the contacts' supports, for reactions
+    "wheel-on-incline": [Support("C", "wheel", "x*[cos(alpha), -sin(alpha)]", "rolling", normal="[sin(alpha), cos(alpha)]")],
+    "yo-yo": [Support("S", "yoyo", "[0, -y]", "string", normal="[0, 1]")],
+    "particle-on-sphere": [Support("P", "particle", "P", "guide", normal="P/norm(P)")],
+    "rod-pivot-released": [Support("O", "rod", "O", "pivot")],
+}
+SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
+                 for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
+ASSUMED = {"ball-in-bowl": ("R > r",), "cylinder-in-cylinder": ("R > r",)}  # implied by rolling inside
+DOMAINS = {"half-disk-rocking": ("-pi/2", "pi/2"), "hemisphere-rocking": ("-pi/2", "pi/2"),
+           "slab-on-drum": ("-b/(2*R)", "b/(2*R)")}
+
+
+def scene(path: Path) -> Scene:
+    doc = yaml.safe_load(path.read_text())
+    name = path.stem
+    for key in ("triads", "unknowns"):
+        if key in doc:
+            raise Unmodelled(f"'{key}' (3D steady motion)")
+    if any(isinstance(v, dict) and "velocity" in v for v in (doc.get("points") or {}).values()):
+        raise Unmodelled("a scene at one instant (velocities)")
+    if any(v == "unknown" for v in (doc.get("prescribed") or {}).values()):
+        raise Unmodelled("a prescribed unknown function of time")
+    contacts = doc.get("contacts") or {}
+    if any("plane" in str(c.get("rolls_on", "")) for c in contacts.values()):
+        raise Unmodelled("rolling on a plane in 3D")
+    params = []
+    raw = doc.get("parameters") or {}
+    values = doc.get("values") or {}
+    for p in (raw if isinstance(raw, dict) else {n: "" for n in raw}):
+        v = values.get(p)
+        if isinstance(v, dict):
+            v = None  # a range for variants: symbolic
+        params.append(Param(p, "length", None if v is None else str(v), None if v is None else si(v), 0.5, 2.0,
+                            not (isinstance(raw, dict) and isinstance(raw[p], dict) and raw[p].get("positive") is False)))
+    coords = _coords(doc.get("coordinates") or [], name)
+    points = {k: _vec(v) for k, v in (doc.get("points") or {}).items()}
+    for k, v in (doc.get("prescribed") or {}).items():
+        points = {p: re.sub(rf"\b{k}\b", f"({v})", e) for p, e in points.items()}
+    bodies = [_body(n, b, PLACED.get(name, {})) for n, b in (doc.get("bodies") or {}).items()]
+    springs = [_spring(n, s) for n, s in (doc.get("springs") or {}).items()]
+    questions = [Question(*(next(iter(q.items())) if isinstance(q, dict) else (q, {}))) for q in doc["questions"]]
+    planar = all(len(str(_vec(v)).split(",")) < 3 for v in (doc.get("points") or {}).values()) and "gravity" not in doc \
+        or len(str(doc.get("gravity", "[0, -g]")).split(",")) < 3
+    assumptions = tuple(doc.get("assumptions") or ()) + ASSUMED.get(name, ())
+    return Scene("problems", name, (), path.read_text(), params, coords, questions, _vec(doc["gravity"]) if "gravity" in doc else None,
+                 points, bodies, springs, SUPPORTS.get(name, []), [], assumptions, planar=planar)
+
+
+def _coords(c, name) -> list[Coord]:
+    out = []
+    items = c.items() if isinstance(c, dict) else [(n, None) for n in c]
+    for n, spec in items:
+        kind = spec if isinstance(spec, str) else (spec or {}).get("kind", "angle") if isinstance(spec, dict) else "angle"
+        periodic = not isinstance(spec, dict) or spec.get("periodic", True)
+        rng = spec.get("range") if isinstance(spec, dict) else None
+        if kind == "length" or (kind == "auto" and n in ("x", "y", "s", "r")):
+            out.append(Coord(n, "length", False, *(map(str, rng) if rng else ("-10", "10"))))
+        elif not periodic:
+            out.append(Coord(n, "angle", False, *(map(str, rng) if rng else ("-10*pi", "10*pi"))))
+        elif name in DOMAINS:
+            out.append(Coord(n, "angle", False, *DOMAINS[name]))
+        else:
+            out.append(Coord(n, "length" if n in ("x", "y", "s") else "angle", n not in ("x", "y", "s"),
+                             *(("-10", "10") if n in ("x", "y", "s") else (None, None))))
+    return out
+
+
+def _dims(b: dict) -> dict:
+    skip = {"shape", "mass", "at", "angle", "axis", "inertia", "parts", "orientation", "hole", "velocity",
+            "angular_velocity"}
+    return {k: str(v) for k, v in b.items() if k not in skip}
+
+
+def _axis(v):
+    if v is None:
+        return None
+    if isinstance(v, str) and v in AXES:
+        return AXES[v]
+    return tuple(float(x) for x in v)
+
+
+def _body(name: str, b: dict, placed: dict) -> Body:
+    origin, angle = placed.get(name, (None, None))
+    turns = None
+    if "orientation" in b:
+        turns = tuple((str(ax), str(a)) for ax, a in b["orientation"])
+    body = Body(name, str(b.get("mass", "0")), b.get("shape"), _dims(b), _axis(b.get("axis")),
+                origin=origin or _vec(b.get("at", "[0, 0]")), angle=angle if origin else (str(b["angle"]) if "angle" in b else None),
+                turns=turns)
+    if "inertia" in b:
+        inertia = b["inertia"]
+        body.inertia = str(inertia) if not isinstance(inertia, list) else tuple(str(x) for x in inertia)
+    if "parts" in b:
+        body.parts = tuple(Part(p.get("shape"), str(p["mass"]), _dims(p), tuple(str(x) for x in p.get("at", [0, 0, 0])),
+                                _axis(p.get("axis")), p.get("inertia"), bool(p.get("hole"))) for p in b["parts"].values())
+    return body
+
+
+def _spring(name: str, s: dict) -> Spring:
+    if "angle" in s:
+        return Spring(name, str(s["stiffness"]), angle=str(s["angle"]), rest=str(s.get("rest", 0)))
+    a, b = s["between"]
+    return Spring(name, str(s["stiffness"]), ends=(_vec(a), _vec(b)), natural_length=str(s.get("natural_length", 0)))

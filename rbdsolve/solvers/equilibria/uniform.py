@@ -1,0 +1,91 @@
+"""Equilibria where ∂V/∂q holds no coordinate: a body pushed by loads that do not change
+as it moves (a spool pulled at the angle α by a string from its axle, ∂V/∂x =
+F (r − R cos α)/R).
+
+Such a gradient is the same at every configuration, so there is no equilibrium unless
+it vanishes, and then every configuration is one (neutral: V is flat). Which parameter
+values make it vanish is the exam's answer, "the spool does not move when cos α = r/R":
+each nonzero component, less its factors of one sign, is solved for one parameter, an
+angle parameter (one inside sin and cos) through its cosine or sine, any other itself:
+the one the question's ``for:`` names, else the problem's only parameter without a value,
+else one without a value, an angle first ("the disk on the 30° incline stays where
+F = m g sin(α)/2" with ``for: F``).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
+
+
+def uniform_equilibrium(model: Model, grad: tuple[sp.Expr, ...],
+                        first: sp.Symbol | None = None) -> tuple[Equilibrium, str] | None:
+    """Every configuration (shown at q = 0), neutral, existing where each constant
+    component of ∂V/∂q vanishes; with the warning that says so. None where a component
+    holds a coordinate, where none is constant, or where the values decide it is not 0."""
+    nonzero = [g for g in grad if g != 0]
+    if not nonzero or any(g.has(*model.q) for g in nonzero) or any(not g.free_symbols for g in nonzero):
+        return None
+    relations = [_vanishes(g, model, first) for g in nonzero]
+    if any(r is None for r in relations):
+        return None
+    condition = sp.And(*relations)
+    if model.values and condition.xreplace(dict(model.values)) in (sp.false, False):
+        return None
+    names = model.coordinate_names()
+    at = {n: sp.Integer(0) for n in names}
+    n = len(model.q)
+    shown = "; ".join(f"∂V/∂{unicode_name(names[i])} = {to_unicode(model.readable(g))}"
+                      for i, g in enumerate(grad) if g != 0)
+    every = ", ".join(unicode_name(x) for x in names)
+    reason = f"V is flat where it holds (∂V/∂q = 0 at every {every}): every configuration is an equilibrium"
+    warning = (f"{shown}: the same at every {every}, so there is no equilibrium unless it is 0, and then every "
+               f"{every} is one (shown as 0): the loads balance at every place, and the scene rests or moves "
+               "on at a constant rate")
+    return Equilibrium(at, Stability.NEUTRAL, sp.ImmutableMatrix(sp.zeros(n, n)), reason,
+                       exists_when=condition), warning
+
+
+def _vanishes(g: sp.Expr, model: Model, first: sp.Symbol | None) -> sp.Basic | None:
+    """g = 0 as a relation solved for one parameter (its factors of one sign dropped),
+    tried in the order of ``_preference``."""
+    factors = [f for f in sp.Mul.make_args(sp.factor(g)) if f.free_symbols and not _signed(f, model)]
+    if len(factors) != 1:
+        return None
+    (f,) = factors
+    f = f.base if f.is_Pow and f.exp.is_positive else f
+    for p in _preference(f, model, first):
+        for trig in (sp.cos(p), sp.sin(p)) if _angle(f, p) else (p,):
+            x = sp.Dummy("x")
+            stand_in = f.xreplace({trig: x})
+            if stand_in.has(p) or sp.degree(stand_in, x) != 1:
+                continue
+            (value,) = sp.solve(stand_in, x)
+            return sp.Eq(trig, tidy(value))
+    return None
+
+
+def _preference(f: sp.Expr, model: Model, first: sp.Symbol | None) -> list[sp.Symbol]:
+    """The parameters in f: the one asked for (``for:``), the problem's only one without
+    a value, those without a value, then angles before the others, in the file's order."""
+    order = list(model.symbols.parameters.values())
+    open_ = [p for p in order if p not in model.values]
+    lone = open_[0] if len(open_) == 1 else None
+    return sorted(f.free_symbols & set(order),
+                  key=lambda p: (p != first, p != lone, p in model.values, not _angle(f, p), order.index(p)))
+
+
+def _signed(f: sp.Expr, model: Model) -> bool:
+    """A factor of one sign for every value allowed (F, R, a power of them)."""
+    value = f.xreplace(model.assumed) if model.assumed else f
+    return bool(value.is_positive or value.is_negative)
+
+
+def _angle(f: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p enter f only through sin and cos of it?"""
+    trig = f.atoms(sp.sin, sp.cos)
+    return bool(trig) and not f.xreplace({x: sp.Dummy() for x in trig if x.args[0] == p}).has(p)

@@ -1,0 +1,32 @@
+"""What small oscillations must satisfy, for the check before they are printed
+(shared/checks.py): each eigenvalue λ makes K − λM singular, det(K − λM) = 0, and its
+mode shape a solves (K − λM) a = 0, wherever the equilibrium they are about exists.
+The text names λ₁ … and the equilibrium: "row 1 of (K − λ₁ M) a₁ about equilibrium 2"."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import Question
+from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers
+from rbdsolve.solvers.shared.checks import Pencil, Residual
+from rbdsolve.solvers.shared.conditions import real_where
+
+
+def residuals(question: Question, model: Model, answers: object) -> tuple[Residual, ...]:
+    """The exact route's eigenvalues and shapes, about one equilibrium or each."""
+    if isinstance(answers, EachModesAnswers):
+        return tuple(r for k, a in enumerate(answers.modes, 1) if isinstance(a, ModesAnswers)
+                     for r in eigenpairs(a, f" about equilibrium {k}"))
+    if isinstance(answers, ModesAnswers):
+        return eigenpairs(answers)
+    return ()
+
+
+def eigenpairs(a: ModesAnswers, about: str = "") -> tuple[Residual, ...]:
+    """(K − λᵢ M) aᵢ = 0 for each λᵢ (det(K − λᵢ M) = 0 where no shape is given), where
+    every radicand of the equilibrium's coordinates is ≥ 0."""
+    where = sp.And(*(sp.GreaterThan(c, 0) for c in real_where(a.about.values())))
+    shapes = tuple(a.shapes[k] if k < len(a.shapes) else None for k in range(len(a.eigenvalues)))
+    return (Pencil(about, a.K, a.M, tuple(a.eigenvalues), shapes, where),)
