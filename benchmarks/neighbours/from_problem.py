@@ -89,6 +89,13 @@ def scene(path: Path) -> Scene:
     contacts = doc.get("contacts") or {}
     if any("plane" in str(c.get("rolls_on", "")) for c in contacts.values()):
         raise Unmodelled("rolling on a plane in 3D")
+    if "forces" in doc or "couples" in doc:
+        raise Unmodelled("applied forces and couples (the converter reads no loads)")
+    if any(isinstance(b, dict) and "points" in b for b in (doc.get("bodies") or {}).values()):
+        raise Unmodelled("a body's own points (the converter reads the scene's points only)")
+    placed = {c.get("body") for c in contacts.values() if isinstance(c, dict) and c.get("body")}
+    if placed - set(PLACED.get(name, {})):
+        raise Unmodelled("a body placed by a contact with no placement written by hand in PLACED")
     params = []
     raw = doc.get("parameters") or {}
     values = doc.get("values") or {}

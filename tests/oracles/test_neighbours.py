@@ -32,11 +32,8 @@ KNOWN_FAILURES: dict[int, str] = {
     14: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided-pendulum)",
     32: "energy: there.reached is true where q̇² at 'to' depends on the parameters (as 14)",
     35: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided)",
-    34: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (as 84; a cylinder segment rocking)",
-    52: "equilibria: a bead on a sprung turning rod, x = m Ω² a/(k − m Ω²) listed without where a + x > 0 "
-        "(turning-rod-spring-equilibrium-unconditioned)",
-    53: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (as 84)",
-    84: "reactions: exit 3, a cubic's root compared with 1 in reactions/limits.py (rocking-reactions-relational)",
+    82: "modes about a bead's equilibrium on a sprung turning rod that does not exist at these values (k < m Ω²: "
+        "the spring past its anchor), listed without a condition (as 52)",
 }
 
 

@@ -22,9 +22,34 @@ from benchmarks.neighbours.scene import Body, Coord, Param, Scene, Support
 
 ROOT = Path(__file__).resolve().parents[2] / "problems"
 PROBLEMS = sorted(p for p in ROOT.glob("*/*.yaml") if not p.name.endswith(".expected.yaml"))
-# What the oracle does not model, by file (each refused by from_problem with its reason).
+# What the oracle does not model, by file (each refused by from_problem with its reason):
+# 3D steady motions, scenes at one instant, a prescribed unknown, rolling on a plane,
+# and, since the files of issue 40, applied loads, bodies' own points and bodies placed
+# by a contact whose placement has not been written by hand in from_problem.PLACED.
 UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-euler-angles", "p2-rod-impact",
-              "p3-rolling-ring", "p5-accelerated-pendulum", "heavy-top", "rolling-coin", "rolling-cone"}
+              "p3-rolling-ring", "p5-accelerated-pendulum", "heavy-top", "rolling-coin", "rolling-cone",
+              "rod-on-turning-shaft", "gyroscope-gimbal", "sleeping-top",
+              # applied loads
+              "cylinder-pulled", "disk-pulled-up-incline", "motor-on-pendulum", "rod-follower-force",
+              "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled",
+              "wheel-driven-by-couple",
+              # bodies placed by a contact, no placement by hand yet
+              "disk-in-turning-ring", "half-disk-on-drum", "half-ring-with-particle", "maxwell-wheel",
+              "ring-and-disk-inside", "slab-on-drum-angle", "spool-radius-of-gyration", "atwood-massive-pulley",
+              "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
+              "incline-30-deg", "incline-block-massive-pulley", "slab-released", "spool-released", "stepped-pulley",
+              "table-block-massive-pulley", "half-disk-about-contact",
+              # a body's own points
+              "inverted-rod-spring-at-point"}
+
+
+# Files the oracle models but cannot judge yet: its own gaps, not rbdsolve's (each an
+# expected failure, strict, so the entry goes the day the oracle learns it).
+ORACLE_GAPS = {
+    "ladder-released": "the guides' supports are not written for the oracle's reactions (SUPPORTS)",
+    "cylinder-precession": "the oracle's steady-spin check reads no 'steady_spins' answer of this form",
+    "ball-sticks-to-turntable": "the oracle's impact matrix is singular for a particle sticking to a turning body",
+}
 
 
 def _as_results(path: Path) -> dict:
@@ -51,6 +76,9 @@ def test_the_oracle_agrees_with_the_expected_answers(path):
     assert path.stem not in UNMODELLED
     out = judge(sc, _as_results(path))
     bad = [(q.kind, q.status, q.reason) for q in out.questions if q.status != "answered"]
+    if path.stem in ORACLE_GAPS:
+        assert bad, f"{path.stem}: the oracle judges it now: take it out of ORACLE_GAPS"
+        pytest.xfail(ORACLE_GAPS[path.stem])
     assert not bad, bad
 
 

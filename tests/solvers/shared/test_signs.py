@@ -15,6 +15,7 @@ import sympy as sp
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
+from rbdsolve.solvers.equilibria.answers import NumericEquilibrium
 from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of
 
 k, a = sp.symbols("k a", positive=True)
@@ -102,6 +103,11 @@ def test_a_singular_non_diagonal_hessian_is_undetermined_not_unstable(values) ->
     (solution,) = solve_problem(build_model(load_text(TWO + values, "two.yaml"))).solutions
     assert solution.solved, solution.error
     (eq,) = solution.answers.equilibria
-    assert eq.at == {"x": 0, "y": 0}
+    # x = y = 0 by hand: ∂V/∂x ± ∂V/∂y give k (x − y) = 0 and (x + y)³ = 0; exactly on
+    # the exact route, to 1e-9 on the numeric one (chosen by structure with every value)
+    assert set(eq.at) == {"x", "y"} and all(abs(float(eq.at[name])) < 1e-9 for name in "xy"), eq.at
     assert eq.stability.value == "undetermined"
-    assert "singular" in eq.reason
+    if isinstance(eq, NumericEquilibrium):  # the Hessian k [[1, −1], [−1, 1]] by hand: eigenvalues 0 and 2k = 6
+        assert eq.curvatures == pytest.approx((0, 6), abs=1e-9)
+    else:
+        assert "singular" in eq.reason
