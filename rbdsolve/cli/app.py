@@ -55,7 +55,7 @@ COMMANDS = {
     "draw": "Draw a planar scene to scale: bodies by shape, points labelled, gravity.",
     "grade": "Check answers: a student's expressions against a problem's exact solution (FILE a problem, "
              "answers by --answer or an ANSWERS file), or a class's numbers against a variants table (FILE "
-             "the JSON of 'rbdsolve variants', ANSWERS a CSV).",
+             "the JSON or the CSV of 'rbdsolve variants', ANSWERS a CSV).",
     "key": "Write an answer key for an exam: a folder (or files) of problems in, one document out.",
     "new": "Write a commented template problem for one question KIND.",
     "solve": "Solve problem files and print their step-by-step solutions.",

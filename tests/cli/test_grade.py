@@ -74,7 +74,7 @@ def test_an_answers_file_with_a_malformed_line(pendulum, tmp_path) -> None:
 @pytest.mark.parametrize(("answer", "message"), [
     ("modes.frequencies[0] = 1", "indices count from 1, as in the printed solution"),
     ("omega = 1", "no answer is called 'omega'"),
-    ("modes.shapes[1] = [1, 0]", "'modes.shapes[1]' holds several answers: check them one by one"),
+    ("modes.shapes[1] = [1, 0]", "give one number or expression, not a vector: check a vector's entries one by one"),
     ("modes.growth_rates[1] = 0", "'modes.growth_rates[1]' has no value here"),
     ("omega1 = sqrt(g/x)", "unknown symbol 'x' (this problem's symbols are g, l, m, theta, and t)"),
     ("omega1 = __import__('os')", "is not allowed"),

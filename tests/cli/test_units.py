@@ -31,13 +31,13 @@ def test_answers_carry_their_si_units(rod) -> None:
     # By hand: M = m l²/3, K = m g l/2, λ = 3g/(2l) = 3·9.81/0.6 = 49.05 1/s², ω = √λ.
     assert modes["values"]["eigenvalues"] == pytest.approx([49.05], rel=1e-12)
     assert modes["units"]["eigenvalues"] == ["1/s²"] and modes["units"]["frequencies"] == ["rad/s"]
-    assert modes["units"]["M"] == [["kg·m²"]] and modes["units"]["K"] == [["J"]]
+    assert modes["units"]["M"] == [["kg·m²"]] and modes["units"]["K"] == [["N·m/rad"]]
     # J about the pivot = m l²/3 = 0.2·0.09/3 = 0.006 kg·m², about z.
     assert inertia["values"]["J"][2][2] == pytest.approx(0.006, rel=1e-12)
     assert inertia["units"]["J"][2][2] == "kg·m²" and inertia["units"]["mass"] == "kg"
     assert report["parameter_units"] == {"m": "kg", "l": "m", "g": "m/s²"}
     text = CliRunner().invoke(main, ["solve", str(rod)]).output
-    assert f"frequencies = [{math.sqrt(49.05):.6g}] rad/s" in text and "m = 0.2 kg" in text
+    assert f"ω₁ = {math.sqrt(49.05):.6g} rad/s" in text and "m = 0.2 kg" in text
 
 
 def test_set_takes_exact_values_and_units(rod) -> None:
@@ -84,7 +84,7 @@ def test_the_numeric_route_carries_units_too(tmp_path) -> None:
     assert modes["route"] == "numeric" and modes["values"]["eigenvalues"] == pytest.approx([49.05], rel=1e-10)
     assert modes["units"]["about"] == {"theta": "rad"}
     assert modes["units"]["eigenvalues"] == ["1/s²"] and modes["units"]["frequencies"] == ["rad/s"]
-    assert modes["units"]["M"] == [["kg·m²"]] and modes["units"]["K"] == [["J"]]
+    assert modes["units"]["M"] == [["kg·m²"]] and modes["units"]["K"] == [["N·m/rad"]]
 
 
 def test_a_coordinate_at_zero_keeps_its_unit(tmp_path) -> None:
@@ -108,11 +108,12 @@ def test_an_answer_key_prints_si_units(tmp_path) -> None:
     assert result.exit_code == 0, result.output
     text = key.read_text(encoding="utf-8")
     M, l, m, v0, v1, g, R, W = 4, 1.2, 0.02, 300, 40, 9.81, 0.5, 2 * math.pi
-    assert f"velocities.theta = {3 * m * v0 / ((M + 3 * m) * l):.6g} rad/s" in text
-    assert f"support_impulse = [{m * M * v0 / (2 * (M + 3 * m)):.6g}, {m * v1:.6g}, 0] N·s" in text
-    assert f"energy_before = {m * (v0**2 + v1**2) / 2:.6g} J" in text
-    assert f"frequencies = [{math.sqrt((W**4 * R**2 - g**2) / (W**2 * R**2)):.6g}] rad/s" in text
-    assert "equilibria[1].at.theta = 0 rad" in text
+    assert f"$\\dot{{\\theta}}_{{f}} = {3 * m * v0 / ((M + 3 * m) * l):.6g}$ rad/s" in text
+    assert (f"$P_{{\\mathrm{{supports}}}} = \\begin{{pmatrix}} {m * M * v0 / (2 * (M + 3 * m)):.6g} \\\\ "
+            f"{m * v1:.6g} \\\\ 0 \\end{{pmatrix}}$ N·s") in text
+    assert f"$T_{{i}} = {m * (v0**2 + v1**2) / 2:.6g}$ J" in text
+    assert f"$\\omega_{{1}} = {math.sqrt((W**4 * R**2 - g**2) / (W**2 * R**2)):.6g}$ rad/s" in text
+    assert "  - $\\theta = 0$ rad" in text
 
 
 @pytest.mark.parametrize("route", ["exact", "numeric"])

@@ -1,6 +1,7 @@
 """The names the reactions' worked solution prints its answers by (report/numbers.py):
 each q̈, q̇² from the energy integral, each reaction's components at the state asked
-(R_Ox, N_C, F_C, T_S, M_O), the least friction coefficients μ_C and the critical values."""
+(R_Ox, N_C, F_C, T_S, M_O), or as functions of the state where those hold no
+coordinate (an Atwood machine's tensions), the least friction coefficients μ_C and the critical values."""
 
 from __future__ import annotations
 
@@ -18,6 +19,11 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
         components = r.components if hasattr(r, "components") else r  # the numeric route: component -> value
         path = ("at", name, "components") if hasattr(r, "components") else ("at", name)
         out += [Named((*path, c), sp.Symbol(c), "At the state asked") for c in components]
+    at = answers.at or {}
+    for name, r in (getattr(answers, "reactions", None) or {}).items():
+        if name in at or not hasattr(r, "components"):
+            continue  # the state asked names it already; a line is written only where its numbers are known
+        out += [Named(("reactions", name, "components", c), sp.Symbol(c), "Forces") for c in r.components]
     out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
     if hasattr(answers, "residual"):
         out.append(Named(("residual",), sp.Symbol("residual"), accuracy=True))
