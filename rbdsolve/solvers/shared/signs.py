@@ -83,9 +83,15 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
     return Undecided(value)
 
 
+FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes
+
+
 def symbolic_sign(value: sp.Expr) -> int | None:
-    """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored)."""
-    for form in (value, sp.factor(value)):
+    """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored where it
+    is short enough: the friction ratio of a slab rolling on a drum, F/N with θ and
+    sin θ mixed, ran sympy's factor for minutes)."""
+    forms = (value,) if sp.count_ops(value) > FACTOR_OPS else (value, sp.factor(value))
+    for form in forms:
         if form.is_zero:
             return 0
         if form.is_positive:
