@@ -19,7 +19,15 @@ from rbdsolve.solvers import solve_problem
 
 from conftest import PROBLEMS
 
-mp.mp.dps = 30
+
+
+@pytest.fixture(autouse=True)
+def thirty_digits():
+    """30 digits for the expected values, set for these tests only: a global setting
+    would change the precision of every later test in the same worker (the oracle's
+    40-digit sums among them)."""
+    with mp.workdps(30):
+        yield
 
 
 def _answers(path):
