@@ -50,7 +50,7 @@ from rbdsolve.solvers.modes.answers import GyroscopicCase, GyroscopicModesAnswer
 from rbdsolve.solvers.modes.gyroscopic_steps import cyclic_note, gyroscopic_steps
 from rbdsolve.solvers.modes.routh import Linear, linearize
 from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters
-from rbdsolve.solvers.shared.conditions import Piece, at_samples, changes, critical_values, partition
+from rbdsolve.solvers.shared.conditions import Piece, changes, critical_values, partition, sign_on
 from rbdsolve.solvers.shared.signs import Undecided, sign_of, symbolic_sign
 from rbdsolve.solvers.shared.values import sample
 
@@ -388,21 +388,6 @@ def squares_out(value: sp.Expr) -> sp.Expr:
                   *[sp.Pow(x, -1) for x in sp.Mul.make_args(bottom) if x != 1], evaluate=False)
 
 
-def _sign_on(f: sp.Expr, piece: Piece, model: Model, angles: dict) -> int | None:
-    """f's sign on a piece: exactly at a point of it (δ > 0), else by agreeing samples."""
-    value, _ = piece.inside(f)
-    sign = symbolic_sign(tidy(value))
-    if sign:
-        return sign
-    signs = set()
-    for v in at_samples(piece, f, model, 31, angles) or [sp.nan]:
-        z = complex(sp.N(v, 30))
-        if z != z or abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
-            return None
-        signs.add(1 if z.real > 0 else -1)
-    return signs.pop() if len(signs) == 1 else None
-
-
 def _growth(piece: Piece, quadratics: list[sp.Expr], model: Model, angles: dict) -> sp.Expr | None:
     """Where a frequency factor a ω² + b ω + c has complex roots on the whole piece,
     the growth rate γ = √(4ac − b²)/(2|a|) of its motion; None otherwise."""
@@ -410,6 +395,6 @@ def _growth(piece: Piece, quadratics: list[sp.Expr], model: Model, angles: dict)
     for f in quadratics:
         a, b, c = sp.Poly(f, OMEGA).all_coeffs()
         inside = tidy(4 * a * c - b**2)
-        if _sign_on(inside, piece, model, angles) == 1:
+        if sign_on(inside, piece, model, angles, seed=31) == 1:
             rates.append(tidy(sp.sqrt(inside) / (2 * abs(a))))
     return rates[0] if len(rates) == 1 else None

@@ -138,7 +138,7 @@ def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | 
         span = angles.get(p, (sp.Integer(0), sp.oo))
         ends = [None, *roots, None]
         pieces = [Piece(p, a, b, 0, span) for a, b in zip(ends, ends[1:])]
-        signs = [_sign_on(f, piece, model, angles) for piece in pieces]
+        signs = [sign_on(f, piece, model, angles) for piece in pieces]
         if None in signs:
             continue
         merged = [replace(pieces[0], sign=signs[0])]
@@ -298,14 +298,15 @@ def _kind(parameter, dimensions: dict) -> int:
     return {LENGTH: 2, MASS: 3}.get(dimension, 4)
 
 
-def _sign_on(f: sp.Expr, piece: Piece, model, angles: dict) -> int | None:
-    """f's sign on a piece: exactly (δ positive), else by agreeing samples."""
+def sign_on(f: sp.Expr, piece: Piece, model, angles: dict, seed: int = 20) -> int | None:
+    """f's sign on a piece: exactly (δ positive), else by agreeing samples (drawn from
+    ``seed``)."""
     value, _ = piece.inside(f)
     sign = symbolic_sign(tidy(value))
     if sign:
         return sign
     signs = set()
-    for v in at_samples(piece, f, model, 20, angles) or [sp.nan]:
+    for v in at_samples(piece, f, model, seed, angles) or [sp.nan]:
         z = complex(sp.N(v, 30))
         if z != z or abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
             return None
