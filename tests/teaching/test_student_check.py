@@ -21,7 +21,7 @@ from click.testing import CliRunner
 
 from rbdsolve.cli import main
 
-from conftest import SEED
+from conftest import PROBLEMS, SEED
 
 P1 = [
     # equivalent forms of the exam's answers
@@ -235,3 +235,14 @@ def test_test_points_lie_inside_a_parameters_range(tmp_path) -> None:
         assert 2 <= float(wrong["point"]["l"]) <= 5
     else:
         assert outcome(wrong) == "equal_for"
+
+
+def test_abs_and_its_argument_agree_where_the_assumptions_fix_the_sign() -> None:
+    """A cylinder rolling inside a cylinder of radius R > r (its assumption): λ = 2g/(3(R − r))
+    by hand (T = ¾ m (R − r)² θ̇², V = −m g (R − r) cos θ); |R − r| and |r − R| are R − r
+    there, and r − R is the sign slip."""
+    args = ["grade", str(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"), "--format", "json"]
+    for line in ["lambda1 = 2*g/(3*abs(R - r))", "lambda1 = 2*g/(3*abs(r - R))", "lambda1 = 2*g/(3*(r - R))"]:
+        args += ["--answer", line]
+    body = json.loads(CliRunner().invoke(main, args).stdout)
+    assert [outcome(a) for a in body["answers"]] == ["right", "right", "sign"]
