@@ -20,6 +20,7 @@ from rbdsolve.cli.writing import Look, rendered_text
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.render.json import report_object
+from rbdsolve.render.numbers import number_text
 from rbdsolve.solvers import solve_problem
 
 from conftest import PROBLEMS, same
@@ -45,6 +46,8 @@ def test_golden(expected_file: Path) -> None:
         compare(result["answers"], want["answers"], result["question"])
         compare_numbers(result["values"], want.get("values", {}), result["question"])
     assert_reads_clean(rendered_text(report, Look(width=80)))
+    for solution in report.solutions:
+        assert_units_right([(number_text(n).split(" = ")[0], n.unit) for n in solution.numbers if not n.accuracy])
 
 
 def compare(got, want, where: str) -> None:
@@ -105,6 +108,44 @@ def test_the_scan_finds_what_it_looks_for() -> None:
         with pytest.raises(AssertionError):
             assert_reads_clean(bad)
     assert_reads_clean("(exact, relative error ≤ 3.8e-16)\nθ ∈ (−π, π]\n    λ = 2 g/(3 (R − r))")
+
+
+# A number of the numeric block that is a pure number by what it is: a mode's amplitude
+# (a₁, X₁), a friction coefficient (μ_C), a restitution (e), a unit vector (e₁), a ratio.
+PURE = re.compile(r"^(a[₀-₉]+|X[₀-₉]+|μ\S*|e[₀-₉]*)$|/")
+ENERGIES = re.compile(r"^(T|V|h|E|W)")  # T, V, Tᵢ, T_f, Tᵢ − T_f, h = T + V, the work W
+DOUBLE_DOT, DOT = "\u0308", "\u0307"
+
+
+def assert_units_right(lines: list[tuple[str, str]]) -> None:
+    """The units of a numeric block (issue 41, item 5), read from each line's printed name,
+    not from how rbdsolve works them out: every number has a unit unless it is a pure
+    number by what it is; J only for an energy (a torque is N·m, a torsional stiffness
+    N·m/rad: a radian is no dimension, so only the name tells them apart); a name with
+    two dots (θ̈, ẍ) is per s², with one dot (θ̇, ẋ_f, not squared) per s; an eigenvalue λ
+    in 1/s², a frequency ω₁ in rad/s; an angle in rad is never a rate."""
+    for name, unit in lines:
+        where = f"{name} in {unit or 'no unit'}"
+        assert unit or PURE.search(name), f"{where}: no unit"
+        assert unit != "J" or ENERGIES.match(name), f"{where}: J is for an energy"
+        if DOUBLE_DOT in name:
+            assert unit.endswith("/s²"), f"{where}: an acceleration is per s²"
+        elif DOT in name and "²" not in name and not name.startswith("("):
+            assert unit.endswith("/s"), f"{where}: a rate is per s"
+        if re.fullmatch(r"λ[₀-₉]+", name):
+            assert unit == "1/s²", f"{where}: λ = ω² is in 1/s²"
+        if re.fullmatch(r"ω[₀-₉]+", name):
+            assert unit == "rad/s", f"{where}: a frequency is in rad/s"
+
+
+def test_the_unit_scan_finds_what_it_looks_for() -> None:
+    """The wrong units the issue listed, each caught (so the scan can fail)."""
+    for bad in [("M_C", "J"), ("K", "J"), ("θ̈", "rad"), ("λ₁", ""), ("R_Ox", ""), ("θ̇_f", "rad"), ("ω₁", "1/s"),
+                ("ẋ_f", "")]:
+        with pytest.raises(AssertionError):
+            assert_units_right([bad])
+    assert_units_right([("Tᵢ − T_f", "J"), ("(Tᵢ − T_f)/Tᵢ", ""), ("a₁", ""), ("μ_C", ""), ("θ̈", "rad/s²"),
+                        ("ẋ²", "m²/s²"), ("K", "N·m/rad"), ("ω₁", "rad/s"), ("θ", "rad")])
 
 
 def compare_numbers(got, want, where: str) -> None:

@@ -19,7 +19,7 @@ import sympy as sp
 from sympy.printing.mathml import MathMLPresentationPrinter
 
 from rbdsolve.form.display import Along, Label, Math, Product, Relation, Scaled, Terms
-from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, \
+from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, float_text, \
     signs_placed, split_name
 from rbdsolve.form.term_order import exam_order, readable_cosine
 
@@ -173,9 +173,15 @@ class MathMLPrinter(MathMLPresentationPrinter):
     _print_Integer = _print_Number
 
     def _print_Float(self, e):
+        """A float to the significant digits asked (``--digits``, as in every other
+        format): 3.14159, 2.5·10⁻⁷ (sympy's own printer writes all 15)."""
         if e.is_negative:
             return self._raw(_tag("mrow", _mo("−"), self.doprint_inner(-e)))
-        return super()._print_Float(e)
+        mantissa, _, exponent = float_text(float(e)).partition("e")
+        if not exponent:
+            return self._raw(_token("mn", mantissa))
+        power = _tag("msup", _token("mn", "10"), _token("mn", exponent.replace("-", "−")))
+        return self._raw(_tag("mrow", _token("mn", mantissa), _mo("·"), power))
 
     def doprint_inner(self, expr) -> str:
         """One sympy object's markup (no <math> around it); a minus sign is U+2212, as

@@ -9,7 +9,9 @@ dimensions (``solvers/shared/units.py``). A parameter's dimension is known from
   mass), a shape's dimension ``length: sqrt(3)*r`` or a spring's natural length (a
   length), ``gravity: [0, -g]`` (an acceleration), a linear spring's ``stiffness: k``
   (N/m), a term ``l*sin(theta)`` of a point's position (a length), a term
-  ``F*cos(alpha)`` of an applied force (N) and a couple's moment (N·m);
+  ``F*cos(alpha)`` of an applied force (N) and a couple's moment (N·m), a contact's
+  circle ``radius: R``, the radius it rolls or a string winds at, a string's length,
+  the terms of a surface's point (lengths);
 - otherwise, the unit of its value (``values: {c: 2 N*m/rad}``).
 
 A parameter found with two different dimensions in the scene (``mass: l``, with l a
@@ -23,7 +25,7 @@ from fractions import Fraction
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantity import ACCELERATION, LENGTH, MASS, Dimension
-from rbdsolve.problem.schema import Body, Couple, Force, Spring
+from rbdsolve.problem.schema import Body, Contact, Couple, Force, Spring
 
 FORCE = Dimension(Fraction(1), Fraction(1), Fraction(-2))  # N = kg m/s²
 STIFFNESS = Dimension(Fraction(1), Fraction(0), Fraction(-2))  # N/m = kg/s²
@@ -32,7 +34,8 @@ TORQUE = Dimension(Fraction(1), Fraction(2), Fraction(-2))  # a torsional stiffn
 
 def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
                      gravity: ex.Expr | None, positions: tuple[ex.Expr, ...], forces: tuple[Force, ...] = (),
-                     couples: tuple[Couple, ...] = ()) -> dict[str, tuple[Dimension, str]]:
+                     couples: tuple[Couple, ...] = (), contacts: tuple[Contact, ...] = ()
+                     ) -> dict[str, tuple[Dimension, str]]:
     """Each parameter whose dimension the scene fixes: (dimension, where it was seen)."""
     found: dict[str, set[tuple[Dimension, str]]] = {}
 
@@ -66,6 +69,16 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
     for c in couples:
         for term in (_vector_terms(c.moment.tree) if c.moment.kind is ex.Kind.VECTOR else [c.moment.tree]):
             see(term, TORQUE, f"couples.{c.name}.moment", calls=True)
+    for c in contacts:
+        lengths = [(c.surface.radius, "rolls_on.radius"), (c.radius, "radius")]
+        if c.pulley is not None:
+            lengths += [(c.pulley.radius, "radius"), (c.pulley.length, "length")]
+        for value, key in lengths:
+            if value is not None:
+                see(value.tree, LENGTH, f"contacts.{c.name}.{key}")
+        if c.surface.point is not None and c.surface.point.kind is ex.Kind.VECTOR:
+            for term in _vector_terms(c.surface.point.tree):
+                see(term, LENGTH, f"contacts.{c.name}.rolls_on", calls=True)
     return {name: min(seen, key=lambda s: s[1]) for name, seen in found.items()
             if len({d for d, _ in seen}) == 1}
 

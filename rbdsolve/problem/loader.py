@@ -117,7 +117,7 @@ class _Loader:
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
         loads = LoadReader(self.reading, bodies)
         forces, couples = loads.forces(get("forces")), loads.couples(get("couples"))
-        known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples)
+        known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples, contacts)
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
             file=self.reading.file,
@@ -405,13 +405,13 @@ def _body_points(bodies: tuple[Body, ...]) -> tuple[Point, ...]:
 
 def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
                       gravity: ex.Expr | None, points: tuple[Point, ...], forces: tuple = (),
-                      couples: tuple = ()) -> dict[str, tuple[Dimension, str]]:
+                      couples: tuple = (), contacts: tuple = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter's dimension where the file fixes it: its declared unit first, then
     the scene (problem/dimensions.py)."""
     positions = tuple(p.position for p in points if p.position is not None)
     positions += tuple(b.at for b in bodies if b.at is not None)
     known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions, forces,
-                             couples)
+                             couples, contacts)
     for p in parameters:
         if p.unit is not None:
             known[p.name] = (p.unit.dimension, f"its unit {p.unit.text}")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text
-from rbdsolve.report.numbers import Number
+from rbdsolve.report.numbers import Beside, Note, Number
 from rbdsolve.report.tree import Path, label
 
 
@@ -45,7 +45,25 @@ def number_text(n: Number) -> str:
 
 def tail_text(n: Number) -> str:
     """' rad/s (period 1.44778 s)': what follows a number's math, its unit and note."""
-    return unit_text(n.unit) + (f" ({n.note})" if n.note else "")
+    note = note_text(n.note)
+    return unit_text(n.unit) + (f" ({note})" if note else "")
+
+
+def note_text(note: Note | None) -> str:
+    """'period 1.44778 s', '60°', '(0°, 180°)', '20 %', 'an energy gained': a note beside
+    a number, its numbers to the significant digits asked (form.printers.digits), as the
+    number itself is printed."""
+    if note is None:
+        return ""
+    shown = [float_text(x) for x in note.values]
+    if note.kind is Beside.PERIOD:
+        return f"period {shown[0]} s"
+    if note.kind is Beside.PERCENT:
+        return f"{shown[0]} %"
+    if note.kind is Beside.GAINED:
+        return "an energy gained"
+    degrees = [f"{x}°" for x in shown]
+    return degrees[0] if len(degrees) == 1 else "(" + ", ".join(degrees) + ")"
 
 
 def numeric_lines(values: object, units: object = None, path: Path = (), skip: frozenset[str] = frozenset(),

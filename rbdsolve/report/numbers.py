@@ -43,15 +43,33 @@ class Named:
     accuracy: bool = False  # says how accurate an answer is (a bound, a residual): shown apart
 
 
+class Beside(Enum):
+    """What a note beside a number says."""
+
+    PERIOD = "period"  # a frequency's period 2π/ω, in s
+    DEGREES = "degrees"  # angles in rad, also in degrees
+    PERCENT = "percent"  # a fraction as a percentage
+    GAINED = "gained"  # an energy lost that is negative, printed as the energy gained
+
+
+@dataclass(frozen=True)
+class Note:
+    """A note beside a number, as data: its numbers are printed by the renderer, to the
+    digits the reader asked for (``--digits``), like the number itself."""
+
+    kind: Beside
+    values: tuple[float, ...] = ()
+
+
 @dataclass(frozen=True)
 class Number:
     """One line of the numeric block: ``relation`` (name = value, floats), the SI unit of
-    its value ('' for none or a pure number), and a note beside it ('period 1.45 s',
-    '60°')."""
+    its value ('' for none or a pure number), and a note beside it (a period, the angle
+    in degrees: render/numbers.note_text prints it as 'period 1.45 s', '60°')."""
 
     relation: Relation
     unit: str = ""
-    note: str = ""
+    note: Note | None = None
     group: str = ""
     accuracy: bool = False
     path: Path = ()

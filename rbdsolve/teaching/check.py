@@ -159,8 +159,21 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
     if _a_number_for_values(given, right, model):
         verdict = _at_values(given, right, model, rule)
     else:
-        verdict = compare(given, right, sampler, _is_angle(address, model), run)
+        verdict = compare(given, right, sampler.within(existence(address, answers)), _is_angle(address, model), run)
     return Checked(address, entry.text.strip(), verdict, to_unicode(right), entry.loc)
+
+
+def existence(address: str, answers: dict) -> list[sp.Basic]:
+    """The conditions under which the answer at ``address`` exists: the ``exists_when``
+    of each record that holds it (an equilibrium, a steady motion's branch), not the
+    answer's own (a condition asked for is compared on both sides of it)."""
+    parts = address.split(".")
+    found = [answers.get(".".join([*parts[:k], "exists_when"])) for k in range(1, len(parts))]
+    if "solved" in parts[:-1]:  # a steady motion's one solution is its one branch too (json.md: 'solved' holds it)
+        head = ".".join(parts[: parts.index("solved")])
+        if f"{head}.branches[2].exists_when" not in answers:
+            found.append(answers.get(f"{head}.branches[1].exists_when"))
+    return [c for c in found if isinstance(c, sp.Basic) and c is not sp.true]
 
 
 def _by_place(address: str, answers: dict, model: Model, loc: Location) -> str:
@@ -319,17 +332,38 @@ def _sampler(model: Model) -> Sampler:
     # (−π, π], where the solution lists it: "different at θ = −7" named a point no reader
     # would look at.
     angles = {f"{n}(t)" for n, q in model.symbols.coordinates.items() if q in model.angles}
+    # A parameter the file gives a range (values: {r: [0.2, 0.8]}, drawn per variant) is
+    # drawn inside it: a point outside says nothing of the exam's answer.
+    ranged = {model.symbols.parameters[r.name]: (_exact(r.low), _exact(r.high)) for r in model.problem.ranges
+              if r.name in model.symbols.parameters}
 
     def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
         wanted = list(dict.fromkeys([*symbols, *assumed]))
         turning = {s: (-sp.pi, sp.pi) for s in wanted if getattr(s, "name", "") in angles}
+        spans = turning | {s: ranged[s] for s in wanted if s in ranged}
         if not nice:
-            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200, ranges=turning)
+            return admissible_sample(model.assumptions, model.symbols, rng, symbols=wanted, tries=200, ranges=spans)
         for _ in range(50):
-            point = {s: sp.Integer(rng.randint(1, 3 if s in turning else 9))
-                     * (1 if s.is_positive or rng.random() < 0.5 else -1) for s in wanted}
+            point = {s: _nice(s, rng, spans.get(s), s in turning) for s in wanted}
             if admissible_sample(model.assumptions, model.symbols, rng, fixed=point, symbols=[], tries=1):
                 return point
         return None
 
     return Sampler(draw, names, parameters)
+
+
+def _nice(s: sp.Symbol, rng: random.Random, span: tuple | None, turning: bool) -> sp.Expr:
+    """A value a student evaluates by hand: a small whole number (±1..3 for an angle,
+    1..9 else, positive where declared so), inside the parameter's range where it has
+    one (its middle where no whole number is)."""
+    if span is not None and not turning:
+        low, high = span
+        whole = list(range(int(sp.ceiling(low)), int(sp.floor(high)) + 1))
+        return sp.Integer(rng.choice(whole)) if whole else (low + high) / 2
+    size = sp.Integer(rng.randint(1, 3 if turning else 9))
+    return size if s.is_positive or rng.random() < 0.5 else -size
+
+
+def _exact(value) -> sp.Expr:
+    """A range's end as an exact number: its fraction (3/10 for 30 cm), else its value."""
+    return sp.Rational(value.rational) if value.rational is not None else sp.Float(value.approx, 30)

@@ -60,6 +60,49 @@ class Sampler:
     names: Mapping[sp.Symbol, str]
     parameters: tuple[sp.Symbol, ...]
 
+    def within(self, conditions: Sequence[sp.Basic]) -> Sampler:
+        """The same points, kept only where every condition holds: where the answer
+        exists (an equilibrium that exists for Ω² R > g is compared at such Ω only; the
+        two forms of a wrong answer may agree, or a right one be complex, past it)."""
+        conditions = [c for c in conditions if c is not sp.true]
+        if not conditions:
+            return self
+        extra = sorted(set().union(*(c.free_symbols for c in conditions)), key=str)
+
+        def draw(symbols: Sequence[sp.Symbol], rng: random.Random, nice: bool) -> dict | None:
+            wanted = list(dict.fromkeys([*symbols, *extra]))
+            for _ in range(WITHIN_TRIES):
+                point = self.draw(wanted, rng, nice)
+                if point is None:
+                    return None
+                if all(holds_at(c, point) for c in conditions):
+                    return point
+            return None
+
+        return Sampler(draw, self.names, self.parameters)
+
+
+WITHIN_TRIES = 40  # draws per point that must also satisfy an answer's existence conditions
+
+
+def holds_at(condition: sp.Basic, point: Point) -> bool:
+    """Whether a condition (a relation, And, Or of them) holds at ``point``, its sides
+    evaluated to DIGITS digits; False where a side has no real value there."""
+    if condition in (sp.true, sp.false):
+        return condition is sp.true
+    if isinstance(condition, sp.And):
+        return all(holds_at(c, point) for c in condition.args)
+    if isinstance(condition, sp.Or):
+        return any(holds_at(c, point) for c in condition.args)
+    if isinstance(condition, sp.Not):
+        return not holds_at(condition.args[0], point)
+    difference = value_at(condition.lhs - condition.rhs, point) if hasattr(condition, "rel_op") else None
+    if difference is None or abs(difference.imag) > CLOSE * max(1.0, abs(difference.real)):
+        return False
+    x = difference.real
+    return {"<": x < 0, "<=": x <= 0, ">": x > 0, ">=": x >= 0, "==": abs(x) <= CLOSE, "!=": abs(x) > CLOSE}[
+        condition.rel_op]
+
 
 def compare(given: sp.Expr, right: sp.Expr, sampler: Sampler, angle: bool = False,
             run: Allowance = Allowance(None)) -> Verdict:

@@ -65,3 +65,11 @@ def test_every_number_in_the_steps_holds_the_digits_asked(scene) -> None:
     """Numbers are kept to 15 digits in the steps, so 12 digits asked are 12 true ones:
     λ = g/l = 14.0142857142857…"""
     assert f"λ₁ = {LAMBDA:.12g}" in solve(scene, "--digits", "12")
+
+
+@pytest.mark.parametrize("digits", [3, 10])
+def test_the_period_beside_a_frequency_holds_the_digits_asked(scene, digits: int) -> None:
+    """The period 2π/ω, ω = √(g/l), is printed as the frequency is (it kept 6 digits)."""
+    omega = math.sqrt(LAMBDA)
+    assert f"ω₁ = {omega:.{digits}g} rad/s (period {2 * math.pi / omega:.{digits}g} s)" in solve(
+        scene, "--digits", str(digits))

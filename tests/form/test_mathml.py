@@ -90,3 +90,16 @@ def test_a_subscripted_power_and_a_word_in_a_product() -> None:
     assert power.tag == "msubsup" and texts(power) == ["ω", "0", "2"]
     product = tree(relation_mathml(Relation(sp.Symbol("x"), sp.Symbol("r") * sp.Symbol("spin"))))
     assert product.find(".//mspace") is not None
+
+
+def test_a_float_holds_the_digits_asked_as_in_the_other_formats() -> None:
+    """The HTML key's numeric block printed θ = 3.14159265358979 and θ = 0.0 (sympy's
+    own printer, all 15 digits); a float is now to --digits, a small one as 2.5·10⁻⁷."""
+    from rbdsolve.form.printers import significant_digits
+
+    assert texts(tree(to_mathml(sp.Float(3.14159265358979)))) == ["3.14159"]
+    assert texts(tree(to_mathml(sp.Float(0.0)))) == ["0"]
+    with significant_digits(3):
+        assert texts(tree(to_mathml(sp.Float(-2.71828)))) == ["−", "2.72"]
+    small = tree(to_mathml(sp.Float(2.5e-7)))
+    assert texts(small) == ["2.5", "·", "10", "−7"] and small.find("msup") is not None

@@ -21,7 +21,7 @@ from click.testing import CliRunner
 
 from rbdsolve.cli import main
 
-from conftest import SEED
+from conftest import PROBLEMS, SEED
 
 P1 = [
     # equivalent forms of the exam's answers
@@ -190,3 +190,59 @@ def test_p1_equilibria_named_by_where_they_are(p1) -> None:
     _, body = p1
     found = [a for a in body["answers"] if a["given"] in ("stable", "unstable")][-len(PLACES):]
     assert [outcome(a) for a in found] == ["right", "right", "right", "right", "different"]
+
+
+def test_p3_compared_only_where_the_steady_motion_exists() -> None:
+    """ω₀² = 2 g sin θ/((4R + r sin θ) cos θ) exists for θ < π/2 (cos θ > 0 there): an
+    answer with |cos θ| is the same answer where the motion exists, and was 'different
+    at θ = 2', a tilt past the horizontal; one with cos² θ differs inside it too."""
+    result = run_check("p3-rolling-ring.yaml", [
+        "steady_motion.solved.omega0**2 = 2*g*sin(theta)/((4*R + r*sin(theta))*abs(cos(theta)))",
+        "steady_motion.branches[1].solved.omega0**2 = 2*g*sin(theta)/((4*R + r*sin(theta))*abs(cos(theta)))",
+        "steady_motion.solved.omega0**2 = 2*g*sin(theta)/((4*R + r*sin(theta))*cos(theta)**2)"])
+    body = json.loads(result.stdout)
+    assert [outcome(a) for a in body["answers"]] == ["right", "right", "different"]
+    assert 0 < float(body["answers"][2]["point"]["θ"]) < math.pi / 2
+
+
+RANGED = """\
+title: A pendulum of a length drawn per student
+parameters: {m: mass, l: length, g: acceleration}
+values: {l: {range: [2, 5], step: 1}}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l*[sin(theta), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - modes: {about: {theta: 0}}
+"""
+
+
+def test_test_points_lie_inside_a_parameters_range(tmp_path) -> None:
+    """l is drawn in [2, 5]: there |l − 6| − 6 + 2l = l, so g/(|l − 6| − 6 + 2l) is λ = g/l
+    for every l the exam draws (it was 'different' at an l past 6); a wrong g/l² is shown
+    at an l inside the range, or named by where it agrees."""
+    path = tmp_path / "ranged.yaml"
+    path.write_text(RANGED, encoding="utf-8")
+    args = ["grade", str(path), "--format", "json", "--answer", "lambda1 = g/l**2",
+            "--answer", "lambda1 = g/(abs(l - 6) - 6 + 2*l)"]
+    body = json.loads(CliRunner().invoke(main, args).stdout)
+    wrong, inside = body["answers"]
+    assert outcome(inside) == "right"  # |l − 6| = 6 − l for every l the exam draws
+    if "point" in wrong:
+        assert 2 <= float(wrong["point"]["l"]) <= 5
+    else:
+        assert outcome(wrong) == "equal_for"
+
+
+def test_abs_and_its_argument_agree_where_the_assumptions_fix_the_sign() -> None:
+    """A cylinder rolling inside a cylinder of radius R > r (its assumption): λ = 2g/(3(R − r))
+    by hand (T = ¾ m (R − r)² θ̇², V = −m g (R − r) cos θ); |R − r| and |r − R| are R − r
+    there, and r − R is the sign slip."""
+    args = ["grade", str(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"), "--format", "json"]
+    for line in ["lambda1 = 2*g/(3*abs(R - r))", "lambda1 = 2*g/(3*abs(r - R))", "lambda1 = 2*g/(3*(r - R))"]:
+        args += ["--answer", line]
+    body = json.loads(CliRunner().invoke(main, args).stdout)
+    assert [outcome(a) for a in body["answers"]] == ["right", "right", "sign"]

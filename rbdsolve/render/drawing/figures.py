@@ -179,9 +179,25 @@ def draw_sketch(ax, drawing: Sketch, labels: bool, faint: bool = False) -> None:
         ax.plot(xs, ys, color="0.35", lw=1.2, alpha=alpha, zorder=2)
     for pivot in drawing.pivots:  # the support on the side away from the scene's middle (a ceiling above a pendulum)
         _draw_pivot(ax, pivot, 0.04 * drawing.size(), alpha, 1.0 if pivot[1] >= _centre(drawing)[1] else -1.0)
+    for strike in drawing.strikes:
+        _draw_strike(ax, strike, alpha)
     if labels:
         _points(ax, drawing)
         ax.plot(0, 0, "+", color="0.55", ms=9, mew=1, zorder=1)  # the scene's origin
+
+
+def _draw_strike(ax, strike, alpha: float) -> None:
+    """An impact's particle as a small dark ball at the point it strikes, its velocity
+    just before as an arrow pointing at it, labelled with its speed."""
+    from matplotlib import patches
+
+    ax.add_patch(patches.Circle(strike.ball, strike.radius, facecolor="0.25", edgecolor="0.1", lw=0.8,
+                                alpha=alpha, zorder=6))
+    ax.annotate("", strike.head, xytext=strike.tail, zorder=6,
+                arrowprops={"arrowstyle": "-|>", "color": "#d62728", "lw": 1.8, "alpha": alpha})
+    middle = ((strike.tail[0] + strike.head[0]) / 2, (strike.tail[1] + strike.head[1]) / 2)
+    ax.annotate(strike.label, middle, xytext=(0, 7), textcoords="offset points", ha="center", va="bottom",
+                fontsize=12, style="italic", color="#d62728", alpha=alpha, zorder=7)
 
 
 def _draw_pivot(ax, at: tuple[float, float], size: float, alpha: float, side: float) -> None:
@@ -315,7 +331,7 @@ class View:
         ax.set_ylim(self.y0, self.y1)
         ax.set_aspect("equal", adjustable="box")
         ax.grid(True, color="0.92", lw=0.6)
-        ax.tick_params(labelsize=8, colors="0.45")
+        ax.tick_params(labelsize=9, colors="0.4")
         for side in ax.spines.values():
             side.set_color("0.8")
         if self.gravity is not None:
@@ -356,7 +372,7 @@ def _legend(ax, drawing: Sketch) -> None:
     handles = [Line2D([], [], color=_colour(drawing, b), label=b.replace("_", " "),
                       **({"marker": "o", "ls": "none", "ms": 9} if b in dots else {"lw": 5}))
                for b in drawing.bodies]
-    ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85)
+    ax.legend(handles=handles, fontsize=9, loc="best", framealpha=0.85)
 
 
 def _suptitle(fig, text: str) -> None:
@@ -366,4 +382,4 @@ def _suptitle(fig, text: str) -> None:
 
 def _notes(fig, notes: tuple[str, ...]) -> None:
     if notes:
-        fig.supxlabel("; ".join(notes), fontsize=8, style="italic", color="0.35")  # constrained layout makes room
+        fig.supxlabel("; ".join(notes), fontsize=9, style="italic", color="0.3")  # constrained layout makes room

@@ -119,6 +119,21 @@ class Ground:
     string: bool = False
 
 
+@dataclass(frozen=True)
+class Strike:
+    """A particle about to hit point ``point`` in an impact, drawn where it is at the
+    instant: a small ball of ``radius`` at ``ball``, touching the point, and its velocity
+    just before as an arrow from ``tail`` to ``head`` (behind the ball, pointing at it),
+    labelled ``label`` (its speed as the file writes it: v₀)."""
+
+    point: str
+    ball: Vec2
+    radius: float
+    tail: Vec2
+    head: Vec2
+    label: str
+
+
 Primitive = Segment | Circle | Polygon | Dot
 
 
@@ -137,6 +152,7 @@ class Sketch:
     links: tuple[Link, ...] = ()
     grounds: tuple[Ground, ...] = ()  # the floors, inclines, tracks, drums and strings of the contacts
     pivots: tuple[Vec2, ...] = ()  # fixed points bodies turn about, marked as supports whether named or not
+    strikes: tuple[Strike, ...] = ()  # the particles of an impact drawn at its instant, with their velocities
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x_min, y_min, x_max, y_max) of everything drawn."""
@@ -163,6 +179,8 @@ class Sketch:
                 yield s.at
         for z in self.springs:
             yield from z.vertices
+        for k in self.strikes:
+            yield from (k.tail, (k.ball[0] - k.radius, k.ball[1] - k.radius), (k.ball[0] + k.radius, k.ball[1] + k.radius))
         for g in self.grounds:
             if g.centre is None:
                 yield from (g.start, g.end)
@@ -259,7 +277,45 @@ def sketch(model: Model, at: Mapping[str, float] | None = None) -> Sketch:
                   tuple(_ground(c, model, values, reach) for c in model.contacts
                         if not c.moving_surface and not _straight(c))
                   + tuple(_hanging_part(c, model, values) for c in model.contacts if c.source.pulley is not None),
-                  _pivots(model, values, shapes))
+                  _pivots(model, values, shapes), _strikes(model, values, configuration, reach))
+
+
+BALL, SHAFT = 0.035, 0.22  # a striking particle's radius and its velocity arrow's length, of the scene's reach
+
+
+def _strikes(model: Model, values: _Values, configuration: Mapping[str, float], reach: float) -> tuple[Strike, ...]:
+    """The particles of each impact drawn at its instant (only where the scene is drawn
+    at the impact's configuration: elsewhere the particle is not there), each touching the
+    point it strikes from the side it comes from, its velocity before behind it."""
+    out = []
+    for question in model.problem.questions:
+        if question.kind is not QuestionKind.IMPACT:
+            continue
+        at = {name: number(model, model.symbols.scalar(e)) for name, e in question.options.at}
+        if any(abs(configuration.get(name, 0.0) - x) > 1e-9 for name, x in at.items()):
+            continue
+        names = model.symbols.with_points(model.points)
+        for c in question.options.collisions:
+            if c.particle is None:
+                continue
+            v = values.vector(names.vector(c.particle.velocity))[:2]
+            direction = _unit(np.append(v, 0.0))
+            if direction is None:
+                continue
+            point = np.array(_xy(values.vector(model.point(c.point))))
+            d, r = np.array(direction), BALL * reach
+            ball = point - d * r
+            out.append(Strike(c.point, _xy(ball), r, _xy(ball - d * (r * 1.6 + SHAFT * reach)),
+                              _xy(ball - d * r * 1.6), _speed_label(names.vector(c.particle.velocity))))
+    return tuple(out)
+
+
+def _speed_label(velocity) -> str:
+    """v₀ for [v0, 0] or [0, −v0]: the one component's size; else |v|."""
+    parts = [x for x in velocity if x != 0]
+    if len(parts) != 1:
+        return "|v|"
+    return to_unicode(-parts[0] if parts[0].could_extract_minus_sign() else parts[0])
 
 
 def _pivots(model: Model, values: _Values, shapes: list[Primitive]) -> tuple[Vec2, ...]:

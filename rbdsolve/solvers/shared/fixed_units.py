@@ -12,7 +12,10 @@ coordinates are angles (``units.known_dimensions``). With q_i an angle in radian
 - a generalized impulse I_θ = Δ(∂T/∂θ̇) is an angular impulse, N·m·s (I_x: N·s);
 - q̇ and q̈ of an angle are rad/s and rad/s², q̇² rad²/s² (of a length m/s, m/s², m²/s²);
 - a moment (of gravity, of a support: M_C, M_O) is a torque, N·m;
-- a growth rate γ = √(−λ) is in 1/s (e^(γt) grows; nothing turns);
+- a growth rate γ = √(−λ) is in 1/s (e^(γt) grows; nothing turns), an eigenvalue λ = ω²
+  of small oscillations in 1/s² (λ = 0 too, which has no dimension to read);
+- the function F a frame's Lagrangian differs by, L' = L + dF/dt, is an action, J·s
+  (F = 0 too); the point an inertia is taken about is a place, in m (the origin too);
 - a parameter that is a torsional spring's stiffness is in N·m/rad, and so is each
   critical value of it.
 """
@@ -76,6 +79,12 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return _pair(key, indices, list(coordinates.values()))
     if key == "growth_rates":  # γ = √(−λ): a rate of growth, e^(γt), not of turning
         return "1/s"
+    if kind == "modes" and key == "eigenvalues":
+        return "1/s²"
+    if kind == "eom" and key == "total_derivative":
+        return "J·s"
+    if kind == "inertia" and named == ["about"]:
+        return "m"
     if kind in ("steady_motion", "reactions") and (key == "moment" or named[-2:-1] == ["components"]
                                                    and key.startswith("M_")):
         return "N·m"  # (steady_spin's 'moment' is a principal moment of inertia)
@@ -88,7 +97,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
             return rate_unit(coordinates[key], 1)
     if kind == "energy" and len(named) >= 2 and key in coordinates and named[-2] in ("rate", "rate_squared"):
         return rate_unit(coordinates[key], 1, 2 if named[-2] == "rate_squared" else 1)
-    if kind == "steady_motion" and named[0] in ("rates", "angular_velocity"):
+    if kind == "steady_motion" and (named[0] in ("rates", "angular_velocity")
+                                    or named[0] == "at_solutions" and "values" not in named):
         return "rad/s"
     if kind == "steady_spin" and named[-2:-1] == ["precession"] and key in ("alpha", "nu", "gamma"):
         return "rad"  # the angles between ω, the axis and L

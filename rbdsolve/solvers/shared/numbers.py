@@ -23,8 +23,7 @@ from typing import Iterable
 import sympy as sp
 
 from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import float_text
-from rbdsolve.report.numbers import Meaning, Named, Number
+from rbdsolve.report.numbers import Beside, Meaning, Named, Note, Number
 from rbdsolve.report.tree import Path
 
 
@@ -102,30 +101,29 @@ def _shared(units: list) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
-def _line(n: Named, name: sp.Basic, value: sp.Basic, unit: str, note: str = "") -> Number:
+def _line(n: Named, name: sp.Basic, value: sp.Basic, unit: str, note: Note | None = None) -> Number:
     return Number(Relation(name, value), unit, note, n.group, n.accuracy, n.path)
 
 
 def _scalar(n: Named, name: sp.Basic, x: float, unit: object) -> Number:
     unit = _text(unit)
     if n.meaning is Meaning.ENERGY_LOST and x < 0:  # read as the energy gained: T_f − Tᵢ
-        return _line(n, -name, sp.Float(-x), unit, "an energy gained")
-    note = ""
+        return _line(n, -name, sp.Float(-x), unit, Note(Beside.GAINED))
+    note = None
     if n.meaning is Meaning.FREQUENCY and x > 0:
-        note = f"period {float_text(2 * math.pi / x)} s"
+        note = Note(Beside.PERIOD, (2 * math.pi / x,))
     elif n.meaning is Meaning.FRACTION:
-        note = f"{float_text(100 * x)} %"
+        note = Note(Beside.PERCENT, (100 * x,))
     elif unit == "rad":
         note = _degrees([x])
     return _line(n, name, sp.Float(x), unit, note)
 
 
-def _degrees(xs: list[float]) -> str:
-    """'60°', '(0°, 180°)': angles in degrees, where any is not 0."""
+def _degrees(xs: list[float]) -> Note | None:
+    """Angles in degrees (60°, (0°, 180°)), where any is not 0."""
     if all(x == 0 for x in xs):
-        return ""
-    shown = [f"{float_text(math.degrees(x))}°" for x in xs]
-    return shown[0] if len(shown) == 1 else "(" + ", ".join(shown) + ")"
+        return None
+    return Note(Beside.DEGREES, tuple(math.degrees(x) for x in xs))
 
 
 def _state(n: Named, xs: list, units: list) -> list[Number]:
@@ -137,7 +135,7 @@ def _state(n: Named, xs: list, units: list) -> list[Number]:
     unit = _shared(units)
     if len(xs) == 1 or unit is None:
         return [_scalar(n, name, float(x), u) for name, x, u in zip(names, xs, units)]
-    note = _degrees([float(x) for x in xs]) if unit == "rad" else ""
+    note = _degrees([float(x) for x in xs]) if unit == "rad" else None
     return [_line(n, sp.Tuple(*names), sp.Tuple(*[sp.Float(float(x)) for x in xs]), unit, note)]
 
 
@@ -145,7 +143,7 @@ def _vector(n: Named, xs: list[float], units: list) -> list[Number]:
     unit = _shared(units)
     if unit is None:  # entries of different units: each on its own line, the name indexed
         return [_scalar(n, _entry(n.name, str(i + 1)), x, u) for i, (x, u) in enumerate(zip(xs, units))]
-    note = _degrees(xs) if unit == "rad" else ""
+    note = _degrees(xs) if unit == "rad" else None
     return [_line(n, n.name, sp.ImmutableMatrix([[sp.Float(x) for x in xs]]), unit, note)]
 
 

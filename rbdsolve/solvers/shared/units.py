@@ -180,8 +180,8 @@ _ZERO = object()  # an entry that is exactly 0: of the unit of its row or matrix
 def _zeros_filled(tree: object) -> object:
     """A 0 takes the one unit its list (a vector, a matrix) has, else None: a zero
     product of inertia is in kg·m² too."""
-    if isinstance(tree, dict):
-        return {k: _zeros_filled(v) for k, v in tree.items()}
+    if isinstance(tree, dict):  # a force's components (R_Ox, R_Oy) are one quantity, as a list's entries are
+        return {k: _components_filled(v) if k == "components" else _zeros_filled(v) for k, v in tree.items()}
     if isinstance(tree, list):
         units = {u for u in _flat(tree) if u is not None and u is not _ZERO}
         shared = units.pop() if len(units) == 1 else None
@@ -195,6 +195,14 @@ def _flat(tree: list):
             yield from _flat(item)
         elif not isinstance(item, dict):
             yield item
+
+
+def _components_filled(tree: object) -> object:
+    """A zero component (R_Ox = 0) takes the one unit of the force's other components."""
+    if not isinstance(tree, dict):
+        return _zeros_filled(tree)
+    filled = _zeros_filled(list(tree.values()))
+    return dict(zip(tree, filled))
 
 
 def _filled(tree: list, shared: str | None) -> list:
@@ -227,8 +235,24 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
                  else None)
         if found is not None:
             out[q] = out[c.name] = found
+    for c, q in zip(model.problem.coordinates, model.q):
+        if q not in out and _travels_in_points(q, model, out):
+            out[q] = out[c.name] = LENGTH
     out[t] = TIME
     return out
+
+
+def _travels_in_points(q: sp.Symbol, model: Model, dims: Mapping[object, Dimension]) -> bool:
+    """Is q a length because a point's position (a length) moves by a pure number times
+    it (P = [x, y], a centre x·[cos α, sin α] along a slope): ∂r/∂q free of the
+    coordinates and of no dimension, in some component."""
+    coordinates = set(model.q)
+    for point in [*model.points.values(), *(c.point for c in model.contacts)]:
+        for component in sp.Matrix(point):
+            rate = sp.diff(component, q)
+            if rate != 0 and not rate.free_symbols & coordinates and dimension_of(rate, dims) == NUMBER:
+                return True
+    return False
 
 
 def _number_times(expr: sp.Expr, q: sp.Symbol) -> bool:
@@ -242,8 +266,11 @@ def _turned_by_bodies(model: Model) -> set:
     spring winds them up), because a body turns by a number times q: an angle is a pure
     number (in radians). Each body's angle is asked about its own coordinates only."""
     q = set(model.q)
-    return {x for b in model.bodies if b.angle is not None for x in b.angle.free_symbols & q
-            if _number_times(b.angle, x)}
+    planar = {x for b in model.bodies if b.angle is not None for x in b.angle.free_symbols & q
+              if _number_times(b.angle, x)}
+    turned = {x for b in model.bodies if b.turns_3d for f in b.rotation.atoms(sp.sin, sp.cos)
+              for x in f.free_symbols & q if _number_times(f.args[0], x)}  # a gimbal's ψ, θ
+    return planar | turned
 
 
 def _turned_in_point_trees(model: Model) -> set:
@@ -276,8 +303,10 @@ def _trig_arguments(tree: ex.Tree):
 
 def _turns_in_points(q: sp.Symbol, model: Model) -> bool:
     """Is q an angle because a point's position takes sin or cos of a number times it
-    (an argument of sin and cos is a pure number)?"""
-    return any(_number_times(f.args[0], q) for point in model.points.values()
+    (an argument of sin and cos is a pure number)? The points named in the file, and
+    each rolling contact's point C (a body rolling on a circle: C = R (sin θ, −cos θ))."""
+    points = [*model.points.values(), *(c.point for c in model.contacts)]
+    return any(_number_times(f.args[0], q) for point in points
                for f in sp.Matrix(point).atoms(sp.sin, sp.cos) if f.has(q))
 
 

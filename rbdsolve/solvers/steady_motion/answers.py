@@ -18,6 +18,18 @@ class Branch:
 
 
 @dataclass(frozen=True)
+class AtSolution:
+    """What the other answers hold of a solution, put back in (exact route): the value
+    of each quantity the solution fixes that is not asked as itself (ω₀ from ω₀² where
+    ω₀ is positive), each rate the rolling condition wrote in terms of them, and ω with
+    those values in."""
+
+    values: dict[str, sp.Expr]
+    rates: dict[str, sp.Expr] = field(default_factory=dict)
+    angular_velocity: tuple[sp.Expr, ...] = ()  # () where ω holds none of them
+
+
+@dataclass(frozen=True)
 class SupportForce:
     """A reaction's force on the body, in the triad's components."""
 
@@ -42,6 +54,9 @@ class SteadyMotionAnswers:
     # each reaction's force with its unknowns found, by its point ('at' as written), as the
     # reactions question names a reaction; {} where an unknown is left open
     reactions: dict[str, SupportForce] = field(default_factory=dict)
+    # one per solution (in the order of ``branches``, or the one of ``solved``), where a
+    # solved quantity stands in ω or the rates; () where none does
+    at_solutions: tuple[AtSolution, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -41,7 +41,7 @@ from rbdsolve.solvers.shared.options import Options
 from rbdsolve.solvers.shared.polynomial import polynomial_roots
 from rbdsolve.solvers.shared.values import parameter_sample
 from rbdsolve.solvers.shared.conditions import asked
-from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers, SupportForce
+from rbdsolve.solvers.steady_motion.answers import AtSolution, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.existence import absent_at_values, with_existence
 from rbdsolve.solvers.steady_motion.balances import (
     angle_of,
@@ -76,7 +76,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     solved, along = real[0] if len(real) == 1 else ({}, {})
     answers = SteadyMotionAnswers(vectors, {str(a): b for a, b in rates.items()}, tuple(b.omega), tuple(b.L),
                                   tuple(b.M), relations, solved, {str(u): v for u, v in along.items()},
-                                  several, critical, _reactions(opts, k, names, targets, solved, along, held))
+                                  several, critical, _reactions(opts, k, names, targets, solved, along, held),
+                                  _at_solutions(opts, targets, real, rates, tuple(b.omega)))
     loaded = any(opts.body in (x.body, x.by) for x in model.loads)
     steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w, loaded)
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps),
@@ -98,6 +99,35 @@ def _reactions(opts: SteadyMotionOptions, k, names, targets, solved: dict, along
     if unknowns and any(f.has(*unknowns) for f in out.values()):
         return {}
     return {at: SupportForce(tuple(tidy(x) for x in f)) for at, f in out.items()}
+
+
+def _at_solutions(opts: SteadyMotionOptions, targets: tuple[sp.Expr, ...], solutions: list[tuple[dict, dict]],
+                  rates: dict, omega: tuple[sp.Expr, ...]) -> tuple[AtSolution, ...]:
+    """Each solution's values put back where the other answers use them: ω₀ = √(ω₀²)
+    for a positive ω₀ asked as ω₀² (a square of a quantity of open sign has two roots:
+    left out), a quantity asked for itself (the spin), the reactions' unknowns found
+    along; then each rate the rolling condition gave in terms of them, and ω. Nothing
+    where no solution fixes a quantity that ω or a rate holds."""
+    out = []
+    for solved, along in solutions:
+        fixed = {**{q: v for x, t in zip(opts.solve_for, targets) if x.text in solved
+                    for q, v in _fixes(t, solved[x.text]).items()}, **along}
+        shown = {str(q): v for q, v in fixed.items() if q not in targets and q not in along}
+        moved = {str(a): tidy(r.xreplace(fixed)) for a, r in rates.items() if r.has(*fixed)}
+        held = fixed and any(w.has(*fixed) for w in omega)
+        out.append(AtSolution(shown, moved, tuple(tidy(w.xreplace(fixed)) for w in omega) if held else ()))
+    return tuple(out) if any(a.values or a.rates or a.angular_velocity for a in out) else ()
+
+
+def _fixes(target: sp.Expr, value: sp.Expr) -> dict[sp.Symbol, sp.Expr]:
+    """The symbol a solved target fixes: itself, or the positive base of a power (ω₀
+    from ω₀² = v: ω₀ = √v); {} for anything else."""
+    if isinstance(target, sp.Symbol):
+        return {target: value}
+    if (target.is_Pow and isinstance(target.base, sp.Symbol) and target.base.is_positive
+            and target.exp.is_Integer and target.exp > 0):
+        return {target.base: tidy(value ** (sp.Integer(1) / target.exp))}
+    return {}
 
 
 def _rolling(opts: SteadyMotionOptions, model: Model, k, v_C: list[sp.Matrix], omega, vectors):

@@ -22,9 +22,14 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
     out += [Named(("angular_velocity",), omega_label(model))]
     out += _solved(("solved",), answers.solved, targets)
     out += [Named(("found_along", u), sp.Symbol(u)) for u in answers.found_along]
-    for k, b in enumerate(answers.branches):
-        group = "" if len(answers.branches) == 1 else f"Solution {k + 1}"
-        out += _solved(("branches", k, "solved"), b.solved, targets, group)
+    several = len(answers.branches) > 1
+    for k, b in enumerate(answers.branches if several else ()):  # one branch is ``solved`` itself
+        out += _solved(("branches", k, "solved"), b.solved, targets, f"Solution {k + 1}")
+    for k, a in enumerate(answers.at_solutions):  # the solution's values put back in ω and the rates
+        group = f"Solution {k + 1}" if several else ""
+        out += [Named(("at_solutions", k, "values", x), targets.get(x, sp.Symbol(x)), group) for x in a.values]
+        out += [Named(("at_solutions", k, "rates", x), sp.Symbol(x), group) for x in a.rates]
+        out += [Named(("at_solutions", k, "angular_velocity"), omega_label(model), group)] if a.angular_velocity else []
     return tuple(out + criticals(("critical",), answers.critical))
 
 

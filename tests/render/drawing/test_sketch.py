@@ -208,3 +208,22 @@ def test_a_body_s_own_points_and_strings_straight_from_a_pulley() -> None:
                     "questions: [eom]\n", "r.yaml")
     points = {p.name: p.at for p in sketch(build_model(rod), {"theta": math.pi / 2}).points}
     assert close(points["B"], (0.5, 0.0)) and "rod" not in points
+
+
+def test_an_impact_draws_its_particle_touching_the_point_and_its_velocity_behind_it() -> None:
+    """The ball hits the rod's end A = (0, −l) moving along +x at v0: drawn at the instant
+    (θ = 0) just left of A, touching it, its arrow left of the ball pointing along +x;
+    the bullet comes in along (v0, −v1), so its arrow points down and right."""
+    drawing = sketch(model_of(PROBLEMS / "impact" / "ball-hits-pinned-rod.yaml", l=2))
+    (strike,) = drawing.strikes
+    assert strike.point == "A" and strike.label == "v₀"
+    assert close((strike.ball[0] + strike.radius, strike.ball[1]), (0.0, -2.0))  # touching A from the left
+    assert strike.tail[0] < strike.head[0] < strike.ball[0] and strike.tail[1] == strike.head[1] == strike.ball[1]
+    bullet = sketch(model_of(PROBLEMS / "impact" / "bullet-embeds-in-hanging-rod.yaml")).strikes[0]
+    dx, dy = bullet.head[0] - bullet.tail[0], bullet.head[1] - bullet.tail[1]
+    assert dx > 0 and dy < 0
+
+
+def test_an_impact_s_particle_is_not_drawn_away_from_the_instant() -> None:
+    model = model_of(PROBLEMS / "impact" / "ball-hits-pinned-rod.yaml")
+    assert sketch(model, {"theta": 0.4}).strikes == ()
