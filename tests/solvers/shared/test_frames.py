@@ -238,3 +238,26 @@ def test_a_sprung_bead_on_a_turning_rod_exists_below_the_critical_rate() -> None
     (about,) = modes.answers.modes
     assert sp.simplify(about.eigenvalues[0] - (k - m * Omega**2) / m) == 0
     assert about.motions[0].value == "oscillation" and not any(about.cases)
+
+
+# The same bead with its distance r from the axis as the coordinate: the spring's length
+# |r| is zero at r = 0, so its sign there is not decided and |r| stays. By hand, for
+# r > 0, V' = ½ k (r − a)² − ½ m Ω² r², ∂V'/∂r = (k − m Ω²) r − k a = 0 at
+# r = k a/(k − m Ω²), and by symmetry −k a/(k − m Ω²) for r < 0, both stable (K = k − m Ω²)
+# where k > m Ω². r = 0 is no equilibrium: V' has a kink there (≈ −k a |r|), and sympy's
+# and numpy's sign(0) = 0 made it look like one (listed as an evident root, 'undetermined'
+# with DiracDelta(0) in K; on the numeric route 'stable').
+RADIAL = TURNING_ROD.replace("coordinates: [x]", "coordinates: [r]").replace("(a + x)*", "r*").replace(
+    "  - modes: {frame: rod, about: each}\n", "")
+
+
+def test_a_spring_through_zero_length_is_no_equilibrium() -> None:
+    (equilibria,) = solve(RADIAL)
+    assert equilibria.error is not None and "no evident root" in equilibria.error
+    (numeric,) = solve(RADIAL.replace("coordinates:", "values: {m: 0.2, k: 50, a: 0.3, Omega: 5}\ncoordinates:"))
+    assert numeric.error is None, numeric.error
+    found = sorted(e.at["r"] for e in numeric.answers.equilibria)
+    by_hand = 50 * 0.3 / (50 - 0.2 * 25)  # k a/(k − m Ω²) = 1/3
+    assert found == pytest.approx([-by_hand, by_hand], rel=1e-9)
+    assert all(e.stability.value == "stable" for e in numeric.answers.equilibria)
+    assert any("r = 0 solves ∂V/∂q = 0 only through sign(0) = 0" in w for w in numeric.warnings)
