@@ -67,6 +67,7 @@ SUPPORTS = {  # the contacts' supports, for reactions
     "wheel-on-incline": [Support("C", "wheel", "x*[cos(alpha), -sin(alpha)]", "rolling", normal="[sin(alpha), cos(alpha)]")],
     "yo-yo": [Support("S", "yoyo", "[0, -y]", "string", normal="[0, 1]")],
     "particle-on-sphere": [Support("P", "particle", "P", "guide", normal="P/norm(P)")],
+    "bead-in-loop-on-spring": [Support("P", "bead", "P", "guide", normal="-P/norm(P)")],  # the loop pushes inwards
     "rod-pivot-released": [Support("O", "rod", "O", "pivot")],
 }
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]

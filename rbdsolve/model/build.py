@@ -254,7 +254,7 @@ def build_model(problem: Problem) -> Model:
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
     assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
-    springs = _signed(springs, names, assumptions)
+    springs = signed_springs(springs, names, assumptions)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
                   velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes,
                   loads=_loads(problem, names, bodies, assumptions, values), body_points=own)
@@ -609,7 +609,7 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
     return SpringModel(spring.name, k, stretch, spring)
 
 
-def _signed(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
+def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
     configuration (q = 0) is known (model/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}

@@ -31,7 +31,7 @@ from dataclasses import dataclass, replace
 import sympy as sp
 
 from rbdsolve.errors import InputError, UnsolvedError
-from rbdsolve.model.build import Model, RigidBody, SpringModel
+from rbdsolve.model.build import Model, RigidBody, SpringModel, signed_springs
 from rbdsolve.model.rotation import axis_rotation
 from rbdsolve.model.energy import EnergyTerm
 from rbdsolve.model.state import t
@@ -240,10 +240,14 @@ def _coriolis(body: RigidBody, model: Model, motion: FrameMotion) -> tuple[Energ
 
 def _relative_spring(spring: SpringModel, model: Model, motion: FrameMotion) -> SpringModel:
     """A linear spring's stretch from the ends' relative positions (the same length,
-    written so that a spring still in the frame shows no t)."""
+    written so that a spring still in the frame shows no t), its |u| written ±u by u's
+    sign at the reference configuration as the scene's own stretch is
+    (model/spring_length.py): a bead on a turning rod held by a spring from the axis has
+    the stretch x, not √((a + x)²) − a."""
     if spring.source.ends is None:
         return spring
     names = model.symbols.with_points(model.points)
     a, b = (motion.relative(names.vector(e)) for e in spring.source.ends)
     rest = names.scalar(spring.source.natural_length) if spring.source.natural_length else sp.Integer(0)
-    return replace(spring, stretch=sp.sqrt(tidy((a - b).dot(a - b))) - rest)
+    relative = replace(spring, stretch=sp.sqrt(tidy((a - b).dot(a - b))) - rest, lengths=())
+    return signed_springs((relative,), model.symbols, model.assumptions)[0]

@@ -74,3 +74,20 @@ def without_deltas(matrix: sp.Matrix) -> sp.Matrix:
     differentiable there, and the solvers say so."""
     deltas = {d: sp.Integer(0) for d in matrix.atoms(sp.DiracDelta) if sp.simplify(d.args[0]) != 0}
     return matrix.xreplace(deltas) if deltas else matrix
+
+
+def held_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...]:
+    """s·u at the configuration ``at`` for each |u| of the springs' lengths written s·u
+    (``signed_length``): the stretch is the spring's own only where s·u ≥ 0, the spring
+    on the side it is drawn on. A bead on a turning rod held by a spring from the axis
+    (length |a + x|, written a + x) has the equilibrium x = m Ω² a/(k − m Ω²), where
+    a + x = a k/(k − m Ω²): one only where k > m Ω²; past it, the bead would sit
+    beyond the axis, the spring through zero length, where its V is not ½ k x²."""
+    sides = []
+    for spring in springs:
+        for x in spring.lengths:
+            if x.sign is not None:
+                side = sp.factor(x.sign * x.inside.xreplace(dict(at)))
+                if side not in sides:
+                    sides.append(side)
+    return tuple(sides)

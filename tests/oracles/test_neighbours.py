@@ -28,13 +28,7 @@ from benchmarks.neighbours.work import run
 SEED = 43
 COUNT = 100
 # scene index -> the rbdsolve bug it meets (tests/oracles/neighbours_found/README.md)
-KNOWN_FAILURES: dict[int, str] = {
-    14: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided-pendulum)",
-    32: "energy: there.reached is true where q̇² at 'to' depends on the parameters (as 14)",
-    35: "energy: there.reached is true where q̇² at 'to' depends on the parameters (energy-reached-undecided)",
-    82: "modes about a bead's equilibrium on a sprung turning rod that does not exist at these values (k < m Ω²: "
-        "the spring past its anchor), listed without a condition (as 52)",
-}
+KNOWN_FAILURES: dict[int, str] = {}
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
 """energy: the oracle's own T = Σ ½ m v² + ½ ω·J ω and V = −Σ m g·r_G + ½ Σ k s²: the
 integral T + V at random states and at the start, and with one coordinate
 q̇²(q) = 2 (T₀ + V₀ − V(q))/M(q), each point's v² = |∂r/∂q|² q̇², and the rates and
-speeds at the configuration asked (reached where q̇² ≥ 0)."""
+speeds at the configuration asked (reached, and reached_when, where q̇² ≥ 0)."""
 
 from __future__ import annotations
 
@@ -71,8 +71,13 @@ def check(ctx: Context, question, result: dict) -> None:
                 if not close(got, want, abs(e0) / max(float(s.mass_matrix(q)[0][0]), 1e-300) * 1e-6 + 1e-12, tol):
                     raise Mismatch(f"q̇² at {opts['to']}: rbdsolve {fmt(got)}, oracle {fmt(want)}")
             reached = there.get("reached")
-            if reached is not None and abs(want) > 1e-9 * (abs(e0) + 1) and reached != (want >= 0):
+            decided = abs(want) > 1e-9 * (abs(e0) + 1)
+            if reached is not None and decided and reached != (want >= 0):
                 raise Mismatch(f"reached {reached} at {opts['to']}, but the oracle's q̇² there is {fmt(want)}")
+            when = ctx.reader.truth(there.get("reached_when", "True"), p)  # where the parameters decide it
+            if when is not None and decided and when != (want >= 0):
+                raise Mismatch(f"reached_when {there.get('reached_when')} is {when} at {opts['to']}, but the "
+                               f"oracle's q̇² there is {fmt(want)}")
             if want > 0:
                 for name, text in (there.get("speed") or {}).items():
                     if text is None:

@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from rbdsolve.solvers.shared.conditions import CriticalValue
+
 
 @dataclass(frozen=True)
 class EnergyAnswers:
@@ -17,18 +19,22 @@ class EnergyAnswers:
     to: dict[str, sp.Expr] | None  # the configuration asked ('to'): coordinate -> value, or None
     there: There | None  # the rates and speeds there, or None
     work: dict[str, sp.Expr] | None = None  # applied load -> its work from the start, V_F(q₀) − V_F(q)
+    critical: tuple[CriticalValue, ...] = ()  # the critical values of ``there.reached_when``
 
 
 @dataclass(frozen=True)
 class There:
     """At the configuration asked (``to``): q̇² and |q̇|, and each point's speed |v|;
-    ``reached`` False (and the rates and speeds None) where q̇² < 0 there."""
+    ``reached`` False (and the rates and speeds None) where q̇² < 0 there, None where
+    the parameters decide it: ``reached_when`` says where (q̇² ≥ 0 there, solved for one
+    parameter where one splits it), and the rates and speeds hold there."""
 
     rate_squared: dict[str, sp.Expr]
     rate: dict[str, sp.Expr | None]
     speed: dict[str, sp.Expr | None]
-    reached: bool
+    reached: bool | None
     work: dict[str, sp.Expr] | None = None  # each applied load's work from the start to here
+    reached_when: sp.Basic = sp.true  # where q̇² ≥ 0 there, for every value the assumptions allow
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,8 @@
 (shared/energy_integral.py); with one coordinate q̇²(q) = 2 (h₀ + T₀ − V)/M, each point's
 v² = |∂r_P/∂q|² q̇² along the motion, and both at the configuration asked (``to``),
 where the rate is |q̇| = √(q̇²) and a point's speed |v| = √(v²), unless q̇² < 0 there
-(the motion does not reach it)."""
+(the motion does not reach it); where the parameters decide that, the condition for
+q̇² ≥ 0 there is given (``_there``)."""
 
 from __future__ import annotations
 
@@ -20,6 +21,7 @@ from rbdsolve.solvers.energy.steps import exact_steps
 from rbdsolve.solvers.shared.accelerations import at_state, clean_fraction, state_values
 from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_integral, not_conserved
 from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.shared.conditions import Critical, critical_values, nonnegative_where
 from rbdsolve.solvers.shared.signs import sign_of
 
 
@@ -40,14 +42,14 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
                             "it fixes no speed at a configuration ('to', 'points' need one coordinate)")
     speeds = {p: _speed_squared(model, p, e.rate_squared) for p in opts.points} if one else None
     to = {n: model.symbols.scalar(v) for n, v in opts.to} if opts.to else None
-    there = _there(model, to, e.rate_squared, speeds) if to else None
+    there, criticals = _there(model, to, e.rate_squared, speeds) if to else (None, ())
     work = _work(model, state_values(model, opts.start))
     if there is not None and work:
         there = replace(there, work={k: at_state(w, {model.q[0]: to[name]}) for k, w in work.items()})
     answers = EnergyAnswers("T + V" if e.plain else "T2 - T0 + V", model.to_time(e.h), model.to_time(e.start),
                             {name: model.to_time(e.rate_squared)} if one else None,
                             {p: model.to_time(v) for p, v in speeds.items()} if speeds else None, to, there,
-                            {k: model.to_time(w) for k, w in work.items()} or None)
+                            {k: model.to_time(w) for k, w in work.items()} or None, critical_values(criticals))
     return answers, e
 
 
@@ -71,11 +73,30 @@ def _root(value: sp.Expr) -> sp.Expr:
     return sp.Pow(sp.factor(value), sp.Rational(1, 2), evaluate=False)
 
 
-def _there(model: Model, to: dict[str, sp.Expr], rate_squared: sp.Expr, speeds: dict) -> There:
+def _there(model: Model, to: dict[str, sp.Expr], rate_squared: sp.Expr, speeds: dict
+           ) -> tuple[There, tuple[Critical, ...]]:
+    """q̇² at ``to``, and whether the motion gets there, q̇² ≥ 0: decided by the signs,
+    the assumptions or the values (``reached`` True or False), else None with where it
+    is (``reached_when``, solved for one parameter: a block between springs from x = 0
+    at ẋ = 1 reaches x = 1/10 only where k₁ + k₂ ≤ 100 m); the rates and speeds where it
+    is reached, with the critical values of that condition."""
     table = {model.q[0]: to[model.coordinate_names()[0]]}
     w2 = at_state(rate_squared, table)
     name = model.coordinate_names()[0]
-    reached = sign_of(w2, model.decided_by) != -1
-    root = (lambda x: _root(x) if reached else None)
+    where = nonnegative_where(w2, model)
+    reached = _decided(w2, where.condition, model)
+    root = (lambda x: None if reached is False else _root(x))
     v2 = {p: at_state(v, table) for p, v in (speeds or {}).items()}
-    return There({name: w2}, {name: root(w2)}, {p: root(v) for p, v in v2.items()}, reached)
+    there = There({name: w2}, {name: root(w2)}, {p: root(v) for p, v in v2.items()}, reached,
+                  reached_when=where.condition)
+    return there, where.criticals
+
+
+def _decided(w2: sp.Expr, where: sp.Basic, model: Model) -> bool | None:
+    """Whether q̇² ≥ 0 at ``to``: by its sign at the values and under the assumptions,
+    else by the condition found at the values; None where the parameters decide it."""
+    sign = sign_of(w2, model.decided_by)
+    if isinstance(sign, int):
+        return sign != -1
+    at_values = where.xreplace(dict(model.values)) if model.values else where
+    return bool(at_values) if at_values in (sp.true, sp.false) else None

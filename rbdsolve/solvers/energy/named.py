@@ -1,6 +1,7 @@
 """The names the energy question's worked solution prints its answers by
 (report/numbers.py): the integral's value at the start, h, and at the configuration
-asked: q̇², the rate |q̇| and each point's speed v_P."""
+asked: q̇², the rate |q̇| and each point's speed v_P, and the critical values of where
+it is reached (ω₀,c)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.naming import coordinate
+from rbdsolve.solvers.shared.naming import coordinate, criticals
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:
@@ -21,4 +22,4 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
     out += [Named((*path, "rate_squared", k), coordinate(model, f"dot({k})") ** 2, group) for k in there.rate_squared]
     out += [Named((*path, "rate", k), coordinate(model, f"dot({k})"), group) for k in there.rate]
     out += [Named((*path, "speed", p), sp.Symbol(f"v_{p}"), group) for p in there.speed]
-    return tuple(out)
+    return tuple(out + criticals(("critical",), getattr(answers, "critical", ())))

@@ -13,6 +13,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.solvers.energy.answers import EnergyAnswers, NumericEnergyAnswers
 from rbdsolve.solvers.shared.accelerations import state_step
 from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_step
+from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
 
 
 def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, model: Model) -> tuple[st.Step, ...]:
@@ -30,12 +31,17 @@ def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, 
     if there is not None:
         at = [Relation(model.to_time(q), answers.to[n]) for q, n in zip(model.q, model.coordinate_names())]
         steps.append(st.given("At the configuration asked:", *at))
-        if not there.reached:
-            steps.append(st.note("There q̇² < 0: the motion from the start state does not reach it.",
-                                 *[Relation(model.to_time(model.qd[0]) ** 2, v) for v in there.rate_squared.values()]))
+        squared = [Relation(model.to_time(model.qd[0]) ** 2, v) for v in there.rate_squared.values()]
+        if there.reached is False:
+            steps.append(st.note("There q̇² < 0: the motion from the start state does not reach it.", *squared))
             return tuple(steps)
-        steps.append(st.result("There (the rate taken positive):", *[Relation(model.to_time(model.qd[0]) ** 2, v)
-                                           for v in there.rate_squared.values()],
+        if there.reached is None:  # the parameters decide: where q̇² ≥ 0 there
+            steps += [st.result("There q̇² is", *squared),
+                      st.result("The motion from the start state reaches it only where q̇² ≥ 0 there, that is "
+                                "when:", *condition_relations(there.reached_when, answers.critical)),
+                      *critical_steps(answers.critical, "where it stops being reached")]
+        lead = "There (the rate taken positive):" if there.reached else "Where it is reached (the rate taken positive):"
+        steps.append(st.result(lead, *(squared if there.reached else ()),
                                *[Relation(model.to_time(model.qd[0]), v) for v in there.rate.values()],
                                *[Relation(sp.Symbol(f"v_{p}"), v) for p, v in there.speed.items()],
                                *[Relation(sp.Symbol(f"W_{k}"), v) for k, v in (there.work or {}).items()]))

@@ -3,9 +3,9 @@ them: "exists when Ω ≥ Ω_c", "stable when Ω < Ω_c, unstable when Ω > Ω_c
 Ω_c = √(g/R) (``solvers/shared/conditions.py`` cuts a parameter's range into pieces
 at its critical values and finds the sign on each).
 
-Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos) that the parameters'
-signs do not decide holds on the pieces where c > 0, a boundary included where c is
-finite. Stability can change only where an eigenvalue of the Hessian K crosses zero,
+Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos, a spring's signed
+length: ``existing_where``) that the parameters' signs do not decide holds on the
+pieces where c > 0, a boundary included where c is finite. Stability can change only where an eigenvalue of the Hessian K crosses zero,
 where det K = 0: det K is cut into pieces, and on each where the equilibrium exists K
 is classified again with the parameter put in at a point of the piece (δ > 0 moving
 it across); neighbours of one stability are one case (a double pendulum on a turntable
@@ -16,26 +16,36 @@ be split stays as before: undetermined, with the conditions as they were.
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Mapping
 
 import sympy as sp
 
 from rbdsolve.model.build import Model
+from rbdsolve.model.spring_length import held_sides
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.shared.condition_roots import angle_parameters
-from rbdsolve.solvers.shared.conditions import Critical, Piece, at_samples, changes, existing, exists_when, partition
+from rbdsolve.solvers.shared.conditions import (Critical, Piece, at_samples, changes, existing, exists_when, partition,
+                                                 real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
 
 
-def with_cases(found: Equilibrium, model: Model, values,
+def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
+    """What must be ≥ 0 for the solution ``at`` of ∂V/∂q = 0 to be an equilibrium of the
+    scene: its radicands, 1 − c² under acos (its values real), and each spring's signed
+    length s·u there (the spring on the side it is drawn on: model/spring_length.py)."""
+    return [*real_where(at.values()), *held_sides(model.springs, at)]
+
+
+def with_cases(found: Equilibrium, model: Model, at: Mapping,
                first: sp.Symbol | None = None) -> tuple[Equilibrium, tuple[Critical, ...]]:
     """The equilibrium with ``exists_when`` and ``stability_cases`` where they depend on
-    the parameters (``values``: its coordinates, real only where ``real_where`` holds),
+    the parameters (``at``: its coordinates, one only where ``existing_where`` holds),
     and the critical values used, in ``first`` where it can (a question's ``for:``).
     Found from the symbols, whatever values are given: with values the stability itself
     is decided by them, and the cases say where that holds."""
-    existence = exists_when(values, model, first=first)
+    existence = exists_when((), model, existing_where(at, model), first=first)
     if existence is None:
         return found, ()
     found = replace(found, exists_when=existence.condition)

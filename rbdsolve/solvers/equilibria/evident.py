@@ -12,7 +12,10 @@ where c q is 0 or ±π, then 0 alone). A combination is a root when each
 equation, the values put in, is exactly zero for every value of the parameters: first
 screened at one sample of the parameters to 30 digits (a value far from zero rejects
 it at once), then proved by sympy's simplification; an equation undefined there (0/0)
-is no root. The list is not complete: other roots may exist, and the report says so.
+is no root, nor one that holds sign(u) where u = 0: a spring's length |u| is zero there
+and V has a kink, ½ k (|u| − l₀)² ≈ −k l₀ |u| (a bead on a turning rod, its distance r
+from the axis the coordinate, on a spring of natural length l₀ from the axis: sympy's
+sign(0) = 0 made r = 0 look like a root). The list is not complete: other roots may exist, and the report says so.
 """
 
 from __future__ import annotations
@@ -63,6 +66,8 @@ def _choices(candidates: list[tuple[tuple, tuple]]) -> list[tuple]:
 
 
 def _vanishes(equation: sp.Expr, at: dict, point: dict) -> bool:
+    if any(sp.expand(f.args[0].xreplace(at)) == 0 for f in equation.atoms(sp.sign)):
+        return False  # sign(u) at u = 0: |u| has a kink there (a spring through zero length), no derivative
     value = equation.xreplace(at)
     if value == 0:
         return True

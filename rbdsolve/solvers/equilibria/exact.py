@@ -34,12 +34,12 @@ from rbdsolve.model.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
-from rbdsolve.solvers.equilibria.cases import with_cases
+from rbdsolve.solvers.equilibria.cases import existing_where, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.shared.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
-from rbdsolve.solvers.shared.conditions import asked, critical_values, real_where, what_decides
+from rbdsolve.solvers.shared.conditions import asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.shared import contact_span
 from rbdsolve.solvers.shared.frames import require_static, spin_warnings
@@ -227,10 +227,11 @@ def _solve_polynomial(system: PolySystem) -> list[dict]:
 
 
 def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
-    """Where an equilibrium exists: None if it is not real at the given parameter values,
-    else the conditions (each ≥ 0) left undecided: radicands, and 1 − c² under acos."""
+    """Where an equilibrium exists: None if it is not at the given parameter values
+    (not real, or a spring past its zero length), else the conditions (each ≥ 0) left
+    undecided (``existing_where``)."""
     conditions = []
-    for condition in real_where(at.values()):
+    for condition in existing_where(at, model):
         sign = sign_of(tidy(condition), model.decided_by)
         if sign == -1 or (isinstance(sign, Undecided) and model.values and _numeric(condition, model)):
             return None  # not real for these parameter values
@@ -448,7 +449,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if not listed.equilibria and not listed.singular_points:
         return _uniform(model, grad, asked(model, question))
     first = asked(model, question)
-    classified = [with_cases(classify_listed(model, x), model, x.at.values(), first) for x in listed.equilibria]
+    classified = [with_cases(classify_listed(model, x), model, x.at, first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model)]

@@ -72,7 +72,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names),
-                *contact_span.warnings(list(found.off_edge)), *spin_warnings(model))
+                *contact_span.warnings(list(found.off_edge)), *found.kinks, *spin_warnings(model))
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)

@@ -13,6 +13,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
+from rbdsolve.model.spring_length import held_sides
+from rbdsolve.solvers.equilibria.cases import existing_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.shared.conditions import changes, exists_when, existing, partition, what_decides
@@ -23,21 +25,28 @@ from rbdsolve.solvers.shared.signs import Inertia, Undecided, sign_of
 def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
     """Where the equilibrium ``at`` is real (θ = acos(g/(R Ω²)) only where Ω ≥ √(g/R)),
     solved for ``first`` where it can; true where it always is, or cannot be split."""
-    found = exists_when(at.values(), model, first=first)
+    found = exists_when((), model, existing_where(at, model), first=first)
     return found.condition if found else sp.true
 
 
 def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
     """Why the equilibrium ``at`` does not exist at the given values (a coordinate that is
-    not a real number there: acos(g/(R Ω²)) below Ω_c), or None: no modes of it."""
+    not a real number there: acos(g/(R Ω²)) below Ω_c; a spring past its zero length:
+    ``existing_where``), or None: no modes of it."""
     names = dict(zip(model.q, model.coordinate_names()))
+    needs = "" if where is sp.true else f": it exists only where {condition_text(where)}"
+    shown = ", ".join(f"{unicode_name(names[q])} = {to_unicode(v)}" for q, v in at.items())
+    for side in held_sides(model.springs, at):
+        number = side.xreplace(dict(model.values))
+        if model.values and number.is_number and number.is_negative:
+            return (f"the equilibrium {shown} does not exist at the parameter values (a spring would be past its zero "
+                    f"length there, {to_unicode(side)} < 0){needs}")
     for q, value in at.items():
         number = value.xreplace(dict(model.values))
         if not model.values or number.free_symbols:
             continue
         z = complex(sp.N(number, 20))
         if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
-            needs = "" if where is sp.true else f": it exists only where {condition_text(where)}"
             return (f"the equilibrium {unicode_name(names[q])} = {to_unicode(value)} does not exist at the parameter "
                     f"values ({unicode_name(names[q])} is not a real number there){needs}")
     return None

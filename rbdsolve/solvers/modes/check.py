@@ -11,22 +11,24 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers
 from rbdsolve.solvers.shared.checks import Pencil, Residual
-from rbdsolve.solvers.shared.conditions import real_where
+from rbdsolve.solvers.equilibria.cases import existing_where
 
 
 def residuals(question: Question, model: Model, answers: object) -> tuple[Residual, ...]:
     """The exact route's eigenvalues and shapes, about one equilibrium or each."""
     if isinstance(answers, EachModesAnswers):
         return tuple(r for k, a in enumerate(answers.modes, 1) if isinstance(a, ModesAnswers)
-                     for r in eigenpairs(a, f" about equilibrium {k}"))
+                     for r in eigenpairs(a, model, f" about equilibrium {k}"))
     if isinstance(answers, ModesAnswers):
-        return eigenpairs(answers)
+        return eigenpairs(answers, model)
     return ()
 
 
-def eigenpairs(a: ModesAnswers, about: str = "") -> tuple[Residual, ...]:
+def eigenpairs(a: ModesAnswers, model: Model, about: str = "") -> tuple[Residual, ...]:
     """(K − λᵢ M) aᵢ = 0 for each λᵢ (det(K − λᵢ M) = 0 where no shape is given), where
-    every radicand of the equilibrium's coordinates is ≥ 0."""
-    where = sp.And(*(sp.GreaterThan(c, 0) for c in real_where(a.about.values())))
+    the equilibrium exists: every radicand of its coordinates and every spring's signed
+    length there ≥ 0 (``existing_where``)."""
+    at = {q: a.about[n] for q, n in zip(model.q, model.coordinate_names()) if n in a.about}
+    where = sp.And(*(sp.GreaterThan(c, 0) for c in existing_where(at, model)))
     shapes = tuple(a.shapes[k] if k < len(a.shapes) else None for k in range(len(a.eigenvalues)))
     return (Pencil(about, a.K, a.M, tuple(a.eigenvalues), shapes, where),)

@@ -25,7 +25,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.shared.accelerations import clean_fraction
 from rbdsolve.model.assumptions import implies
-from rbdsolve.solvers.shared.conditions import Critical, exists_when
+from rbdsolve.solvers.shared.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.shared.polynomial import trig_transcendental
 from rbdsolve.solvers.shared.signs import Undecided, sign_of
 
@@ -142,15 +142,8 @@ def mu(name: str) -> sp.Symbol:
 
 def _nonnegative(value: sp.Expr, model: Model) -> Holds:
     """value ≥ 0: decided by the parameters' signs, else solved for one parameter (a
-    rate first), else left as it is."""
-    sign = sign_of(tidy_fraction(value), model.assumed)
-    if isinstance(sign, int):
-        return Holds(sp.true if sign >= 0 else sp.false, ())
-    found = exists_when((), model, [value])
-    if found is None:
-        return Holds(sp.Ge(value, 0), ())
-    if implies(model.assumptions, found.condition):  # α ≤ π/2 under 0 < α < π/2: it always holds
-        return Holds(sp.true, ())
+    rate first), else left as it is (``nonnegative_where``)."""
+    found = nonnegative_where(value, model)
     return Holds(found.condition, found.criticals)
 
 

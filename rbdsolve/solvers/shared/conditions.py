@@ -39,7 +39,8 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.problem.dimensions import STIFFNESS, TORQUE
 from rbdsolve.problem.quantity import LENGTH, MASS, Dimension
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.shared.signs import sign_of, symbolic_sign
 
@@ -102,7 +103,7 @@ class Piece:
         low = self.span[0] if self.low is None else self.low
         high = self.span[1] if self.high is None else self.high
         if high is sp.oo:
-            at = low * (1 + delta)
+            at = low * (1 + delta) if low != 0 else delta  # the whole of (0, ∞): any δ
         elif low == 0:
             at = high / (1 + delta)
         else:
@@ -256,6 +257,40 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
         exists = sp.And(exists, sp.Or(*held))
         criticals += found.criticals
     return Existence(exists, tuple(criticals))
+
+
+def constant_sign(f: sp.Expr, model, first: sp.Symbol | None = None) -> int | None:
+    """f's sign where it keeps one throughout: the first parameter (``candidates``) in
+    whose range f has no root at any sample, f's sign on the whole range (``sign_on``:
+    exactly, else agreeing samples). An inverted plate held by a spring, released from
+    rest at θ₀ in (0, π), has θ̇² ∝ g m (cos θ₀ − 1) − 2 h k sin θ₀ < 0 at θ = 0: it
+    never gets there. None where no parameter shows it."""
+    angles = angle_parameters(f)
+    for p in candidates(f, model, angles, first):
+        if parameter_roots(f, p, angles, model) == []:
+            sign = sign_on(f, Piece(p, None, None, 0, angles.get(p, (sp.Integer(0), sp.oo))), model, angles)
+            if sign is not None:
+                return sign
+    return None
+
+
+def nonnegative_where(value: sp.Expr, model, first: sp.Symbol | None = None) -> Existence:
+    """Where value ≥ 0: true or false where the parameters' signs and the assumptions
+    decide it, or where it keeps one sign throughout (``constant_sign``); else solved
+    for one parameter (``exists_when``, ``first`` before all), true where the
+    assumptions imply what it gives (α ≤ π/2 under 0 < α < π/2); else value ≥ 0 as it
+    is. A support that holds at a state, a configuration the motion reaches (q̇² ≥ 0
+    there)."""
+    sign = sign_of(tidy_fraction(value), model.assumed)
+    if isinstance(sign, int):
+        return Existence(sp.true if sign >= 0 else sp.false, ())
+    found = exists_when((), model, [value], first)
+    if found is None:
+        sign = constant_sign(tidy_fraction(value), model, first)
+        return Existence(sp.Ge(value, 0) if sign is None else sp.true if sign > 0 else sp.false, ())
+    if implies(model.assumptions, found.condition):
+        return Existence(sp.true, ())
+    return found
 
 
 def _finite_at(f: sp.Expr, critical: Critical) -> bool:

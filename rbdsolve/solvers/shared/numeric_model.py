@@ -50,6 +50,7 @@ import numpy as np
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
@@ -174,7 +175,9 @@ def compiled_gradient(model: Model):
     q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
     V = V.xreplace(dict(zip(model.q, q)))
     grad = [sp.diff(V, x) for x in q]
-    H = hessian(V, tuple(q))
+    # ∂²|u|/∂q² = 2 δ(u) (∂u/∂q)²: 0 wherever u ≠ 0, and where u = 0 (a spring through
+    # zero length) V has a kink and no Hessian at all; numpy has no DiracDelta
+    H = hessian(V, tuple(q)).applyfunc(lambda e: e.replace(sp.DiracDelta, lambda *_: sp.Integer(0)))
     return finite(sp.lambdify([q], grad, "numpy"), model), finite(sp.lambdify([q], H.tolist(), "numpy"), model)
 
 
@@ -212,6 +215,7 @@ class NumericEquilibria:
     sampling: str  # how the starts were placed: a grid, a fixed pseudo-random sample, or the scan
     unresolved: tuple[tuple[float, float], ...] = ()  # intervals the scan could not settle
     off_edge: tuple = ()  # contact_span.OffEdge's: roots where a contact point would leave its edge
+    kinks: tuple[str, ...] = ()  # roots dropped where a spring has zero length: why, one line each
 
 
 def find_numeric(model: Model) -> NumericEquilibria:
@@ -235,7 +239,39 @@ def find_numeric(model: Model) -> NumericEquilibria:
         if found is not None:
             roots.append(found)
     kept, off = _on_edges(model, roots)
-    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off)
+    kept, kinks = _off_kinks(model, kept)
+    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off, kinks)
+
+
+KINK_TOL = 1e-9  # |u| at a root, relative to its terms' size, that counts as a spring of zero length
+
+
+def _off_kinks(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[str, ...]]:
+    """The roots where no spring with a length |u| kept (its sign not decided: model/
+    spring_length.py) has u = 0, and why each other one is not an equilibrium: there
+    ½ k (|u| − l₀)² has a kink, ∂V/∂q jumps by 2 k l₀ |∂u/∂q| and numpy's sign(0) = 0
+    makes it look like a root (a bead on a turning rod, its distance r from the axis the
+    coordinate, on a spring of natural length l₀ from the axis: r = 0)."""
+    held = [(s.name, x.inside.xreplace(dict(model.values))) for s in model.springs for x in s.lengths
+            if x.sign is None]
+    if not held:
+        return roots, ()
+    kept, dropped = [], []
+    for r in roots:
+        at = dict(zip(model.q, r.at))
+        zero = [name for name, u in held if _vanishes_at(u, at)]
+        if zero:
+            where = ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), r.at))
+            dropped.append(f"{where} solves ∂V/∂q = 0 only through sign(0) = 0: spring '{zero[0]}' has zero "
+                           "length there, where V has a kink and no derivative; it is not listed")
+        else:
+            kept.append(r)
+    return kept, tuple(dropped)
+
+
+def _vanishes_at(u: sp.Expr, at: dict) -> bool:
+    terms = [complex(sp.N(t.xreplace(at), 20)) for t in sp.Add.make_args(sp.expand(u))]
+    return abs(sum(terms)) <= KINK_TOL * max(sum(abs(t) for t in terms), 1e-300)
 
 
 def _on_edges(model: Model, roots: list[Root]) -> tuple[list[Root], tuple]:

@@ -54,14 +54,29 @@ TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤", "=": "="}
 def condition_relations(condition: sp.Basic, critical: Sequence = ()) -> list[Relation]:
     """Each part of a conjunction as ``condition_relation`` writes it, in sympy's sorted
     order of its parts (``And.args``): ``And.make_args`` gives a frozenset, whose order
-    changes with string hashing from one run to the next."""
+    changes with string hashing from one run to the next. A part that is a union of
+    pieces (k > k_c1 or k ≤ k_c2: where a pendulum held by a spring reaches the point
+    where its rod goes slack) is one line a piece, led by "either" and "or" ("or" alone
+    where it is the whole condition)."""
     parts = condition.args if isinstance(condition, sp.And) else (condition,)
-    return [condition_relation(c, critical) for c in parts]
+    out = []
+    for c in parts:
+        if isinstance(c, sp.Or):
+            first = "either" if len(parts) > 1 else ""
+            out += [condition_relation(x, critical, lead="or" if i else first) for i, x in enumerate(c.args)]
+        else:
+            out.append(condition_relation(c, critical))
+    return out
 
 
 def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Relation:
     """p < p_c with p_c by name where it is one of the ``critical`` values: Ω < Ω_c;
-    a piece between two, Ω_c1 < Ω < Ω_c2."""
+    a piece between two, Ω_c1 < Ω < Ω_c2; a union of pieces in one line, joined by
+    "or" (k < k_c1 or k > k_c2)."""
+    if isinstance(condition, sp.Or):
+        *pieces, last = (condition_relation(x, critical) for x in condition.args)
+        joined = " or ".join([*(_relation_text(r) for r in pieces), to_unicode(last.lhs)])
+        return Relation(joined, last.rhs, last.op, last.more, lead=lead, more_op=last.more_op)
     if isinstance(condition, sp.And):
         above, below = sorted(condition.args, key=lambda c: OPS.get(type(c), "?") not in (">", "≥"))
         low, high = _named_side(above, critical), _named_side(below, critical)
@@ -79,7 +94,23 @@ def _named_side(condition, critical: Sequence) -> sp.Expr:
     return rhs
 
 
+def _relation_text(r: Relation) -> str:
+    """One relation in a sentence: Ω_c1 < Ω < Ω_c2."""
+    chain = "".join(f" {r.more_op} {to_unicode(x)}" for x in r.more)
+    return f"{to_unicode(r.lhs)} {r.op} {to_unicode(r.rhs)}{chain}"
+
+
 def condition_text(condition: sp.Basic) -> str:
-    """A condition in a sentence: Ω ≥ √(g/R), its parts joined by "and"."""
+    """A condition in a sentence: Ω ≥ √(g/R), its parts joined by "and", the pieces of
+    a union by "or" (in parentheses within a conjunction)."""
     parts = condition.args if isinstance(condition, sp.And) else (condition,)
-    return " and ".join(f"{to_unicode(c.lhs)} {OPS.get(type(c), '?')} {to_unicode(c.rhs)}" for c in parts)
+
+    def text(c) -> str:
+        if isinstance(c, sp.Or):
+            joined = " or ".join(text(x) for x in c.args)
+            return f"({joined})" if len(parts) > 1 else joined
+        if isinstance(c, sp.And):
+            return " and ".join(text(x) for x in c.args)
+        return f"{to_unicode(c.lhs)} {OPS.get(type(c), '?')} {to_unicode(c.rhs)}"
+
+    return " and ".join(text(c) for c in parts)

@@ -5,13 +5,15 @@ docstrings, not taken from rbdsolve; bad input goes through the CLI (exit 2, loc
 from __future__ import annotations
 
 import json
+import random
 
 import pytest
+import sympy as sp
 from click.testing import CliRunner
 
 from rbdsolve.cli import main
 
-from conftest import PROBLEMS, SEED, same
+from conftest import PROBLEMS, SEED, positive_names, same
 
 SPHERE = (PROBLEMS / "forces" / "particle-on-sphere.yaml").read_text(encoding="utf-8").split("questions:")[0]
 
@@ -125,3 +127,77 @@ def test_two_coordinates_and_a_configuration_is_refused(tmp_path) -> None:
     head = (SEED / "p1-two-rods.yaml").read_text(encoding="utf-8").split("questions:")[0]
     out = _run(tmp_path, head + "questions:\n  - energy: {from_rest: {theta: 0, phi: 0}, to: {theta: 1, phi: 1}}\n")
     assert out.exit_code == 1 and "one equation for several rates" in out.output
+
+
+BLOCK = """title: a block between two springs, pushed from the middle
+parameters: {m: mass, k1: stiffness of the left spring, k2: stiffness of the right spring, L: natural length}
+coordinates: [x]
+points:
+  G: "[x, 0]"
+  W1: "[-L, 0]"
+  W2: "[L, 0]"
+bodies:
+  block: {shape: particle, mass: m, at: G}
+springs:
+  left: {stiffness: k1, between: [G, W1], natural_length: L}
+  right: {stiffness: k2, between: [G, W2], natural_length: L}
+questions:
+  - energy: {at: {x: 0, dot(x): 1}, to: {x: 1/10}}
+"""
+
+
+def _holds(condition: str, values: dict[str, float]) -> bool:
+    names = positive_names(condition)
+    return bool(sp.sympify(condition, locals=names).xreplace({names[k]: v for k, v in values.items()}))
+
+
+def test_reached_where_the_parameters_decide_it(tmp_path) -> None:
+    """Issue 38: from x = 0 at ẋ = 1, each spring stretched by |x|, ½ m ẋ² + ½ (k₁ + k₂) x²
+    = ½ m, so at x = 1/10 ẋ² = 1 − (k₁ + k₂)/(100 m): reached only where
+    100 m ≥ k₁ + k₂. Without values ``reached`` is null (not true) and ``reached_when``
+    holds exactly where the hand's ẋ² ≥ 0, sampled on both sides; with every value it is
+    decided, both ways."""
+    got = _answers(tmp_path, BLOCK)
+    there = got["there"]
+    assert there["reached"] is None
+    assert same(there["rate_squared"]["x"], "1 - (k1 + k2)/(100*m)")
+    rng = random.Random(38)
+    sides = set()
+    for _ in range(40):
+        values = {"m": rng.uniform(0.1, 3), "k1": rng.uniform(1, 200), "k2": rng.uniform(1, 200)}
+        hand = 1 - (values["k1"] + values["k2"]) / (100 * values["m"])
+        if abs(hand) > 1e-6:
+            sides.add(hand > 0)
+            assert _holds(there["reached_when"], values) is (hand > 0), values
+    assert sides == {True, False}
+    for (m, reached) in (("2", True), ("1", False)):  # ẋ² there: 1 − 150/(100 m) = 1/4, −1/2
+        got = _answers(tmp_path, BLOCK.replace("questions:", f"values: {{m: {m}, k1: 50, k2: 100}}\nquestions:"))
+        assert got["there"]["reached"] is reached
+        assert (got["there"]["rate"]["x"] is None) is (not reached)
+
+
+def test_never_reached_whatever_the_values(tmp_path) -> None:
+    """An inverted bar (G at l/2 above the pivot) held by a spring from its end B to A at
+    height 0, h beside the pivot, released from rest at θ₀ in (0, π) towards θ = 0:
+    V = m g (l/2) cos θ + ½ k |B − A|², |B − A|² = l² − 2 h l sin θ + h², so
+    ½ (m l²/3) θ̇² = V(θ₀) − V(θ) and at θ = 0, V(θ₀) − V(0) = m g (l/2)(cos θ₀ − 1)
+    − k h l sin θ₀ < 0 for every θ₀ in (0, π): gravity and the spring both push it away;
+    the motion never gets there (reached false, not true)."""
+    text = """title: an inverted bar on a spring
+parameters: {m: mass, l: length, g: gravity, k: stiffness, h: anchor, theta0: angle of release}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: l/2 * [sin(theta), cos(theta)]
+  B: l * [sin(theta), cos(theta)]
+  A: "[h, 0]"
+bodies:
+  bar: {shape: rod, mass: m, length: l, at: G, angle: pi/2 - theta}
+springs:
+  s: {stiffness: k, between: [B, A]}
+questions:
+  - energy: {from_rest: {theta: theta0}, to: {theta: 0}}
+"""
+    there = _answers(tmp_path, text)["there"]
+    assert there["reached"] is False and there["rate"]["theta"] is None
+    assert same(there["rate_squared"]["theta"], "3*(g*m*(cos(theta0) - 1) - 2*h*k*sin(theta0))/(l*m)")

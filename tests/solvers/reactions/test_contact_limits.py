@@ -5,11 +5,13 @@ is lost along the motion is reached at all. Expected values derived by hand belo
 from __future__ import annotations
 
 import json
+import random
 
 import sympy as sp
 
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
+from rbdsolve.render import latex, markdown
 from rbdsolve.render.json import report_object
 from rbdsolve.solvers import solve_problem
 
@@ -102,3 +104,50 @@ def test_a_zero_the_motion_does_not_reach_is_said() -> None:
     (lost,) = answers["contact_lost"]["N_" + name]
     assert sp.simplify(_read(lost).rhs - 4 * sp.cos(alpha) / 7) == 0
     assert _read(answers["lost_exists_when"]["N_" + name][0]) == sp.Ge(alpha, sp.pi / 2)
+
+
+def test_a_union_of_pieces_is_printed_and_right() -> None:
+    """A particle on a light rod of length l from a pivot (a guide at P), a spring of zero
+    natural length to A = (0, h) above the pivot, released from rest at θ₀ (issue 38: exit
+    3, 'Or' object has no attribute 'lhs', where the condition is k > … or k ≤ …). By
+    hand: V = −(m g − k h) l cos θ + const, so m l θ̇² = 2 (m g − k h)(cos θ − cos θ₀);
+    radially N = m l θ̇² + (m g − k h) cos θ − k l = (m g − k h)(3 cos θ − 2 cos θ₀) − k l,
+    zero at cos θ = c = (2 (m g − k h) cos θ₀ + k l)/(3 (m g − k h)). θ̇² is monotone in
+    cos θ from 0 at θ₀, so c is reached iff |c| ≤ 1 and θ̇² ≥ 0 there,
+    (m g − k h)(c − cos θ₀) = (k l − (m g − k h) cos θ₀)/3 ≥ 0. The printed condition,
+    sampled on both sides (θ₀ in (0, π), the range of a positive angle), says the same."""
+    text = """title: a pendulum held by a spring from above the pivot
+parameters: {m: mass, l: length, g: gravity, k: stiffness, h: height of the anchor, theta0: angle of release}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: l * [sin(theta), -cos(theta)]
+  A: "[0, h]"
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, A]}
+questions:
+  - reactions: {forces: [P], from_rest: {theta: theta0}}
+"""
+    report = solve_problem(build_model(load_text(text, "p.yaml")))
+    assert "either" in markdown.render(report) and "either" in latex.render_document([report])  # printed, no crash
+    got = json.loads(json.dumps(report_object(report)))["results"][0]["answers"]
+    (condition,) = got["lost_exists_when"]["N_P"]
+    l, h, theta0 = sp.symbols("l h theta0", positive=True)
+    names = {**NAMES, "l": l, "h": h, "theta0": theta0}
+    printed = sp.sympify(condition, locals=names)
+    rng = random.Random(38)
+    sides = set()
+    for _ in range(60):
+        values = {m: rng.uniform(0.1, 2), g: rng.uniform(1, 10), k: rng.uniform(0.1, 30), l: rng.uniform(0.1, 2),
+                  h: rng.uniform(0.1, 2), theta0: rng.uniform(0.05, 3.1)}
+        w = float((m * g - k * h).subs(values))
+        c = float(((2 * (m * g - k * h) * sp.cos(theta0) + k * l) / (3 * (m * g - k * h))).subs(values))
+        reached_by_rate = float((k * l - (m * g - k * h) * sp.cos(theta0)).subs(values))
+        if abs(w) < 1e-6 or min(abs(abs(c) - 1), abs(reached_by_rate)) < 1e-6:
+            continue  # too near a boundary to say
+        hand = abs(c) <= 1 and reached_by_rate >= 0
+        sides.add(hand)
+        assert bool(printed.subs(values)) is hand, values
+    assert sides == {True, False}

@@ -3,6 +3,8 @@ derivations, and the refusals where the frame does not make the scene still."""
 
 from __future__ import annotations
 
+import random
+
 import pytest
 import sympy as sp
 
@@ -11,7 +13,7 @@ from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
 
-Omega, m, L, d, k = sp.symbols("Omega m L d k", positive=True)
+Omega, m, L, d, k, a = sp.symbols("Omega m L d k a", positive=True)
 
 # A rod pivoted at distance d from the axis of a horizontal turntable. By hand, in the
 # table's frame: r_G = (d + L/2 cos φ, L/2 sin φ), V' = −½ m Ω² |r_G|², so
@@ -181,3 +183,81 @@ questions:
     l = sp.Symbol("l", positive=True)
     assert {e.at["theta"] for e in equilibria.answers.equilibria} >= {0, sp.acos(3 * sp.Symbol("g", positive=True)
                                                                            / (2 * l * Omega**2))}
+
+
+# A bead on a rod turning at Ω about z, held by a spring of natural length a from the
+# axis, x measured from the natural length. By hand, in the rod's frame: the spring's
+# length is |a + x|, a + x on the side it is drawn (x = 0), so while a + x > 0
+# V' = ½ k x² − ½ m Ω² (a + x)², ∂V'/∂x = k x − m Ω² (a + x) = 0 at
+# x₀ = m Ω² a/(k − m Ω²), where a + x₀ = k a/(k − m Ω²): positive only for k > m Ω²,
+# that is Ω < √(k/m). Past it the bead would sit beyond the axis, where the true
+# V'(x) = ½ k (|a + x| − a)² − ½ m Ω² (a + x)² has a slope at x₀: no equilibrium.
+# K = k − m Ω² > 0 wherever it exists: stable, λ = (k − m Ω²)/m an oscillation.
+TURNING_ROD = """
+parameters: {m: mass, k: stiffness, a: natural length, Omega: rate}
+coordinates: [x]
+frames:
+  rod: {axis: z, rate: Omega}
+points:
+  O: "[0, 0, 0]"
+  P: (a + x)*[cos(Omega*t), sin(Omega*t), 0]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, O], natural_length: a}
+questions:
+  - equilibria: {frame: rod}
+  - modes: {frame: rod, about: each}
+"""
+
+
+def _true_slope(x0, values) -> float:
+    """∂V'/∂x of the true potential, the spring's length |a + x|, at x0."""
+    x = sp.Symbol("x", real=True)
+    V = k * (sp.Abs(a + x) - a) ** 2 / 2 - m * Omega**2 * (a + x) ** 2 / 2
+    return float(sp.diff(V, x).subs(values).subs(x, x0.subs(values)))
+
+
+def test_a_sprung_bead_on_a_turning_rod_exists_below_the_critical_rate() -> None:
+    equilibria, modes = solve(TURNING_ROD)
+    (found,) = equilibria.answers.equilibria
+    x0 = m * Omega**2 * a / (k - m * Omega**2)
+    assert sp.simplify(found.at["x"] - x0) == 0
+    assert found.stability.value == "stable"
+    rng = random.Random(38)
+    sides = set()
+    for _ in range(30):
+        values = {m: rng.uniform(0.1, 2), k: rng.uniform(1, 100), a: rng.uniform(0.1, 2)}
+        values[Omega] = (values[k] / values[m]) ** 0.5 * rng.choice([rng.uniform(0.2, 0.99), rng.uniform(1.01, 3)])
+        exists = bool(found.exists_when.subs(values))
+        assert exists is (float((a + x0).subs(values)) > 0), values
+        sides.add(exists)
+        scale = values[k] * values[a]
+        assert (abs(_true_slope(x0, values)) < 1e-9 * scale) is exists, values
+    assert sides == {True, False}
+    (about,) = modes.answers.modes
+    assert sp.simplify(about.eigenvalues[0] - (k - m * Omega**2) / m) == 0
+    assert about.motions[0].value == "oscillation" and not any(about.cases)
+
+
+# The same bead with its distance r from the axis as the coordinate: the spring's length
+# |r| is zero at r = 0, so its sign there is not decided and |r| stays. By hand, for
+# r > 0, V' = ½ k (r − a)² − ½ m Ω² r², ∂V'/∂r = (k − m Ω²) r − k a = 0 at
+# r = k a/(k − m Ω²), and by symmetry −k a/(k − m Ω²) for r < 0, both stable (K = k − m Ω²)
+# where k > m Ω². r = 0 is no equilibrium: V' has a kink there (≈ −k a |r|), and sympy's
+# and numpy's sign(0) = 0 made it look like one (listed as an evident root, 'undetermined'
+# with DiracDelta(0) in K; on the numeric route 'stable').
+RADIAL = TURNING_ROD.replace("coordinates: [x]", "coordinates: [r]").replace("(a + x)*", "r*").replace(
+    "  - modes: {frame: rod, about: each}\n", "")
+
+
+def test_a_spring_through_zero_length_is_no_equilibrium() -> None:
+    (equilibria,) = solve(RADIAL)
+    assert equilibria.error is not None and "no evident root" in equilibria.error
+    (numeric,) = solve(RADIAL.replace("coordinates:", "values: {m: 0.2, k: 50, a: 0.3, Omega: 5}\ncoordinates:"))
+    assert numeric.error is None, numeric.error
+    found = sorted(e.at["r"] for e in numeric.answers.equilibria)
+    by_hand = 50 * 0.3 / (50 - 0.2 * 25)  # k a/(k − m Ω²) = 1/3
+    assert found == pytest.approx([-by_hand, by_hand], rel=1e-9)
+    assert all(e.stability.value == "stable" for e in numeric.answers.equilibria)
+    assert any("r = 0 solves ∂V/∂q = 0 only through sign(0) = 0" in w for w in numeric.warnings)
