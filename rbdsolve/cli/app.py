@@ -350,7 +350,7 @@ def _stopping(kind: type[BaseException]) -> None:
     ring can take the place of the interrupt on its way out. Not imported here: a
     process that has not imported the budget has no ring to fear (and a signal handler
     is no place for an import)."""
-    budget = sys.modules.get("rbdsolve.solvers.shared.budget")
+    budget = sys.modules.get("rbdsolve.solvers.routes.budget")
     if budget is not None:
         budget.stop(kind)
 

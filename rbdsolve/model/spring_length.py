@@ -7,7 +7,7 @@ the reference configuration (every coordinate 0) as long as the spring does not 
 through zero length, so |u| = u there when u > 0 (−u when u < 0), decided by the
 parameters' signs and the assumptions (R = r + δ: ``model/assumptions.py``). Where that
 sign is not decided (u = h − l at q = 0, with nothing said of h and l), |u| stays and the
-model section states the two cases in words (``solvers/shared/summary.py``).
+model section states the two cases in words (``model/summary/summary.py``).
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 A value with a unit is checked against its parameter's dimension where the file makes
 that dimension known, and an answer's SI unit is worked out from the parameters'
-dimensions (``solvers/shared/units.py``). A parameter's dimension is known from
+dimensions (``model/values/units.py``). A parameter's dimension is known from
 
 - its declared ``unit:`` (``parameters: {r: {unit: cm}}``);
 - the place it stands alone (times numbers) in the scene: a body's ``mass: 3*m`` (a

@@ -179,7 +179,7 @@ def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
     scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model
     from rbdsolve.render.drawing.figures import save_figures
-    from rbdsolve.solvers.shared.budget import MIN_SHARE, OutOfTime, within
+    from rbdsolve.solvers.routes.budget import MIN_SHARE, OutOfTime, within
 
     try:
         with within(None if budget is None else max(budget - problem.spent, MIN_SHARE), "the pictures", budget):

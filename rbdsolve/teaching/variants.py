@@ -43,9 +43,9 @@ from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
 from rbdsolve.report.tree import Path, label, leaves
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
-from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.values import numeric
+from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
+from rbdsolve.solvers.routes.options import Options, RouteChoice
+from rbdsolve.model.values.values import numeric
 
 VERIFY_RTOL = 1e-9  # |table − full solve| ≤ VERIFY_RTOL·max(|a|, |b|) + VERIFY_ATOL
 VERIFY_ATOL = 1e-12

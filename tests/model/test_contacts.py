@@ -112,8 +112,8 @@ def test_rolling_inside_a_circle_assumes_the_circle_is_the_larger() -> None:
     """A ball in a bowl with no 'assumptions:': the contact adds R > r (strict), shown as
     a step, so the stability of θ = 0 (K = m g (R − r), by hand) is decided without a
     case r > R; a file assuming R > r itself gets no second copy."""
-    from rbdsolve.solvers.shared.signs import sign_of
-    from rbdsolve.solvers.shared.summary import rolling_steps
+    from rbdsolve.solvers.conditions.signs import sign_of
+    from rbdsolve.model.summary.summary import rolling_steps
 
     model = build_model(load_file(PROBLEMS / "contacts" / "ball-in-bowl.yaml"))
     R, r = model.symbols.parameters["R"], model.symbols.parameters["r"]

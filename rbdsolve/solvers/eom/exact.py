@@ -26,10 +26,10 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
 from rbdsolve.solvers.eom.steps import frame_steps, instant_steps, lagrange_step, singular_step, solved_step
-from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
-from rbdsolve.solvers.shared.frames import refuse_loads_in_frame
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import eom_warnings
+from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import eom_warnings
 
 
 def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr, ...]:

@@ -1,6 +1,6 @@
 """Equilibria whose existence or stability depends on the parameters, as exams state
 them: "exists when Ω ≥ Ω_c", "stable when Ω < Ω_c, unstable when Ω > Ω_c", with
-Ω_c = √(g/R) (``solvers/shared/conditions.py`` cuts a parameter's range into pieces
+Ω_c = √(g/R) (``solvers/conditions/conditions.py`` cuts a parameter's range into pieces
 at its critical values and finds the sign on each).
 
 Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos) that the parameters'
@@ -21,11 +21,11 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
-from rbdsolve.solvers.shared.condition_roots import angle_parameters
-from rbdsolve.solvers.shared.conditions import Critical, Piece, at_samples, changes, existing, exists_when, partition
+from rbdsolve.solvers.conditions.condition_roots import angle_parameters
+from rbdsolve.solvers.conditions.conditions import Critical, Piece, at_samples, changes, existing, exists_when, partition
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
-from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
+from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia
 
 
 def with_cases(found: Equilibrium, model: Model, values,

@@ -41,7 +41,7 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.impact import restitution_message
 from rbdsolve.problem.schema import Collision, ImpactOptions
 from rbdsolve.solvers.impact.answers import ImpactAnswers
-from rbdsolve.solvers.shared.singular import exact_reason
+from rbdsolve.solvers.configuration.singular import exact_reason
 
 
 @dataclass(frozen=True)

@@ -36,7 +36,7 @@ from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energy import kinetic_energy, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.singular import exact_reason
+from rbdsolve.solvers.configuration.singular import exact_reason
 
 
 @dataclass(frozen=True)

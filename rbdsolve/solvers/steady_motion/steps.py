@@ -12,8 +12,8 @@ from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
 
 
