@@ -60,15 +60,15 @@ KINEMATICS = ("tests/solvers/kinematics",)
 
 MUTANTS: tuple[Mutant, ...] = (
     # model/: T, V, inertia, rotation, time derivatives
-    Mutant("T-translation-half", "rbdsolve/model/energy.py",
+    Mutant("T-translation-half", "rbdsolve/model/energies/energy.py",
            "T_translation = body.mass * v.dot(v) / 2", "T_translation = body.mass * v.dot(v)",
            MODEL, "½ m v² without the ½"),
-    Mutant("T-rotation-half", "rbdsolve/model/energy.py",
+    Mutant("T-rotation-half", "rbdsolve/model/energies/energy.py",
            "* omega)[0, 0] / 2 if", "* omega)[0, 0] if", MODEL, "½ ωᵀJω without the ½"),
-    Mutant("V-gravity-sign", "rbdsolve/model/energy.py",
+    Mutant("V-gravity-sign", "rbdsolve/model/energies/energy.py",
            "V_gravity = -body.mass * model.gravity.dot(body.position)",
            "V_gravity = body.mass * model.gravity.dot(body.position)", MODEL, "V = +m g·r"),
-    Mutant("V-spring-half", "rbdsolve/model/energy.py",
+    Mutant("V-spring-half", "rbdsolve/model/energies/energy.py",
            "spring.stiffness * spring.stretch**2 / 2", "spring.stiffness * spring.stretch**2",
            MODEL, "½ k s² without the ½"),
     Mutant("parallel-axis-sign", "rbdsolve/model/inertia.py",

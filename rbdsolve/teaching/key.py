@@ -25,7 +25,7 @@ from typing import Callable, Mapping, Sequence
 
 from rbdsolve.errors import InputError
 from rbdsolve.problem.schema import Problem
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.render.files import publish, require_folder, staging, write_file

@@ -37,7 +37,7 @@ from sympy.core.function import AppliedUndef
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, ValueRange
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant

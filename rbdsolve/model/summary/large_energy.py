@@ -19,7 +19,7 @@ import sympy as sp
 from rbdsolve.form.arrange import scaled_matrix
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import Energy, hessian, jacobians
+from rbdsolve.model.energies.energy import Energy, hessian, jacobians
 from rbdsolve.report import steps as st
 
 SCAN_TERMS = 12  # an energy with more terms than this is shown as a matrix, or as its total alone

@@ -14,9 +14,9 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
-from rbdsolve.problem.quantity import ACCELERATION
+from rbdsolve.problem.quantities.quantity import ACCELERATION
 from rbdsolve.problem.usage import unused_parameters
-from rbdsolve.model.energy import Energy, kinetic_energy, mass_matrix, potential_energy
+from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
 from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
@@ -85,7 +85,7 @@ def _free_force_steps(model: Model) -> list[st.Step]:
     free = [x for x in model.loads if x.potential is None]
     if not free:
         return []
-    from rbdsolve.model.loads import free_forces
+    from rbdsolve.model.energies.loads import free_forces
 
     names = ", ".join(f"{x.kind} '{x.name}'" for x in free)
     return [st.definition(f"Generalized forces of the loads without a potential ({names}), from their virtual "
@@ -97,7 +97,7 @@ def _free_force_steps(model: Model) -> list[st.Step]:
 def rolling_steps(model: Model) -> list[st.Step]:
     """Each contact's rolling condition, as a worked solution writes it: the contact
     point's velocity is zero (or the moving surface's there), which relates the rates,
-    and integrated from the reference configuration places the body (model/contacts.py)."""
+    and integrated from the reference configuration places the body (model/constraints/contacts.py)."""
     out = []
     for c in model.contacts:
         source = c.source
@@ -138,7 +138,7 @@ def _rolled_note(model: Model, c) -> list[st.Step]:
 
 def _implied_notes(c) -> list[st.Step]:
     """What the contact's geometry needs of the parameters (R > r inside a circle), as
-    the model assumes it (model/contacts.py)."""
+    the model assumes it (model/constraints/contacts.py)."""
     return [st.note(f"{a.implied_by[0].upper()}{a.implied_by[1:]}, so {a.source.text} (assumed in what follows)")
             for a in c.requires]
 
@@ -247,7 +247,7 @@ def swing_warnings(model: Model) -> tuple[str, ...]:
 
 def _two_sided(model: Model) -> list[st.Step]:
     """A note for each spring length |u| whose sign at the reference configuration is
-    not known (model/spring_length.py): the two cases, in words, and what decides them."""
+    not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
     out = []
     at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
     for spring in model.springs:

@@ -24,7 +24,7 @@ from fractions import Fraction
 from typing import Mapping
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 
 TIME = Dimension(time=Fraction(1))
 MASS = Dimension(mass=Fraction(1))

@@ -1,6 +1,6 @@
 """The SI unit of each numeric answer, from the dimensions of the parameters.
 
-A parameter's dimension is known from the file (``problem.dimensions``: a declared
+A parameter's dimension is known from the file (``problem.quantities.dimensions``: a declared
 unit, its place in the scene, the unit of its value); a coordinate declared (or found)
 to be an angle, or by which a body turns (one a torsional spring winds up), is a pure
 number, a length coordinate a length, and each time
@@ -35,7 +35,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import to_sympy
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.report.tree import Path, map_paths
 from rbdsolve.model.values.fixed_units import TORSIONAL, fixed_unit, torsional_stiffnesses

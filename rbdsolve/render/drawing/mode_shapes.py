@@ -89,7 +89,7 @@ def _in_frame(model: Model, question: Question) -> Model:
     name = frame_of(question)
     if name is None:
         return model
-    from rbdsolve.model.frames import frame_motion, in_frame
+    from rbdsolve.model.energies.frames import frame_motion, in_frame
 
     return in_frame(model, frame_motion(model, model.problem.frame(name)))
 

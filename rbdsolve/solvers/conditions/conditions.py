@@ -37,8 +37,8 @@ from typing import Iterable
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.problem.dimensions import STIFFNESS, TORQUE
-from rbdsolve.problem.quantity import LENGTH, MASS, Dimension
+from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
+from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import tidy
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign

@@ -36,7 +36,7 @@ import sympy as sp
 
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import memoized, potential_energy
+from rbdsolve.model.energies.energy import memoized, potential_energy
 from rbdsolve.model.state import t
 from rbdsolve.solvers.configuration.placement_screen import clearly_different, clearly_full_rank
 from rbdsolve.model.values.values import parameter_sample

@@ -32,7 +32,7 @@ from sympy.polys.matrices import DomainMatrix
 
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import mass_matrix
+from rbdsolve.model.energies.energy import mass_matrix
 
 if TYPE_CHECKING:  # numpy is imported where floats are used: the exact routes need none
     import numpy as np

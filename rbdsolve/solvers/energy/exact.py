@@ -53,7 +53,7 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
 
 def _work(model: Model, start: dict) -> dict[str, sp.Expr]:
     """Each applied load's work from the start state, W = −ΔV_F = V_F(q₀) − V_F(q) (a
-    load in the energy integral has a potential: model/loads.py)."""
+    load in the energy integral has a potential: model/energies/loads.py)."""
     return {x.name: tidy(sp.expand(x.potential.xreplace(start) - x.potential)) for x in model.loads
             if x.potential is not None}
 

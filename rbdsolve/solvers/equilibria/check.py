@@ -8,7 +8,7 @@ import sympy as sp
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import potential_energy
+from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium
 from rbdsolve.solvers.routes.checks import Residual, Vanishes

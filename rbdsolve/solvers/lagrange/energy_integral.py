@@ -24,7 +24,7 @@ import sympy as sp
 from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import kinetic_energy, potential_energy
+from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
 from rbdsolve.model.state import t
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction

@@ -1,7 +1,7 @@
 """Questions asked in a moving frame: relative equilibria and small oscillations.
 
 In a frame F where the scene is still (a hoop turning at Ω, seen from the hoop), the
-Lagrangian L' = T' + L₁ − V' (see :mod:`rbdsolve.model.frames`) has no explicit time,
+Lagrangian L' = T' + L₁ − V' (see :mod:`rbdsolve.model.energies.frames`) has no explicit time,
 and its q̇-free part gives the effective potential V' = V_gravity + V_springs + the
 centrifugal potentials (of each centre, −½ m |ω × r'|², and of each body's turning,
 −½ ω·J' ω) and the translation potential. Relative equilibria solve ∂V'/∂q = 0, and
@@ -24,8 +24,8 @@ from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
-from rbdsolve.model.energy import potential_energy
-from rbdsolve.model.frames import FrameMotion, frame_motion, in_frame
+from rbdsolve.model.energies.energy import potential_energy
+from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
@@ -93,7 +93,7 @@ def spin_warnings(model: Model) -> tuple[str, ...]:
     turns, a frame's terms): T is not built otherwise."""
     if not (model.gyroscopic or any(b.turns for b in model.bodies)) or len(model.q) < 2:
         return ()
-    from rbdsolve.model.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
+    from rbdsolve.model.energies.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
 
     if not has_gyroscopic_terms(model) or gyroscopic_matrix(model) == sp.zeros(len(model.q)):
         return ()

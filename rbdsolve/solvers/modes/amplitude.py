@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Callable, Mapping, Sequence
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import mass_matrix, potential_energy
+from rbdsolve.model.energies.energy import mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
 from rbdsolve.model.values.values import missing_values, numeric

@@ -35,8 +35,8 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
-from rbdsolve.model.spring_length import without_deltas
+from rbdsolve.model.energies.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes import gyroscopic

@@ -41,7 +41,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
+from rbdsolve.model.energies.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import Stability

@@ -51,8 +51,8 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
-from rbdsolve.model.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
+from rbdsolve.model.energies.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
+from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS

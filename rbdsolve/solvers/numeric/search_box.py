@@ -27,7 +27,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
-from rbdsolve.problem.quantity import LENGTH
+from rbdsolve.problem.quantities.quantity import LENGTH
 from rbdsolve.problem.schema import CoordinateKind
 
 SEARCH_SCALE = 10.0

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from rbdsolve.problem.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.model.values.fixed_units import fixed_unit, pair_unit, per_radians, rate_unit
 
 TIME = Dimension(time=Fraction(1))

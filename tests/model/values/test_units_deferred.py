@@ -5,7 +5,7 @@ from __future__ import annotations
 from rbdsolve.model.build import build_model
 from rbdsolve.model.deferred import Deferred
 from rbdsolve.problem import load_text
-from rbdsolve.problem.quantity import NUMBER
+from rbdsolve.problem.quantities.quantity import NUMBER
 from rbdsolve.model.values.units import known_dimensions
 
 SCENE = """\

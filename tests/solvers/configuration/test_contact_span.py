@@ -1,5 +1,5 @@
 """Where a contact holds, checked by its definition rather than by the span formula of
-model/contacts.py: at sampled values of the coordinate, the contact point C, carried
+model/constraints/contacts.py: at sampled values of the coordinate, the contact point C, carried
 back into the body's axes (Rᵀ (C − O)), lies on the edge — on the arc (d·a ≥ 0 for the
 arc's limits, by hand for each shape) or within the flat side's half length, all the
 way from the reference configuration — exactly when solvers/configuration/contact_span.py says

@@ -10,7 +10,7 @@ A **flat** edge is a straight side: its midpoint, its outward unit normal and it
 length; a plate's ``bottom`` is y = −h/2 with normal −y and half length w/2, a rod's its
 own line (no thickness, half length l/2), a half disk's or hemisphere's flat face the
 diameter (half length r). An arc's limits and a side's half length are the edge's
-extent: a contact is valid only while its point stays on it (model/contacts.py).
+extent: a contact is valid only while its point stays on it (model/constraints/contacts.py).
 The part's ``axis:`` turns them with the shape (Q, :func:`~rbdsolve.model.inertia.rotation_to`).
 """
 

@@ -1,5 +1,5 @@
 """Rolling contacts, checked by their definition rather than by the formulas of
-model/contacts.py: for each problem under problems/contacts/, the body's material point
+model/constraints/contacts.py: for each problem under problems/contacts/, the body's material point
 at the contact C (placed by the model) moves with the surface there — at rest, or with
 the plank — at random configurations and rates; and C lies on the surface."""
 
@@ -31,7 +31,7 @@ def test_the_contact_point_of_the_body_moves_with_the_surface(path: Path) -> Non
     model = build_model(load_file(path))
     state = model.state
     rng = random.Random(20)
-    for contact in (c for c in model.contacts if c.source.pulley is None):  # strings: tests/model/test_strings.py
+    for contact in (c for c in model.contacts if c.source.pulley is None):  # strings: tests/model/constraints/test_strings.py
         body = next(b for b in model.bodies if b.name == contact.body)
         origin = model.symbols.vector(next(b for b in model.problem.bodies if b.name == body.name).at)
         omega = body.angular_velocity(state)
@@ -75,8 +75,8 @@ def test_a_cylinder_segment_rocks_at_the_hand_frequency() -> None:
     C is the instantaneous centre, T = ½ (J_G + m (r − ȳ)²) θ̇² at θ = 0, so by hand
     ω² = g ȳ/(k_G² + (r − ȳ)²). ȳ and k_G² = J_G/m are integrated here by sympy over the
     cross-section, not taken from the shape library."""
-    from rbdsolve.model.energy import mass_matrix, potential_energy
-    from rbdsolve.model.energy import hessian
+    from rbdsolve.model.energies.energy import mass_matrix, potential_energy
+    from rbdsolve.model.energies.energy import hessian
 
     text = """
 parameters: {m: mass, r: radius, h: length, g: gravity}
@@ -152,7 +152,7 @@ def test_a_string_wound_on_an_axle_assumes_it_inside_the_rim_and_falls_at_the_ha
     """Maxwell's wheel: a disk of radius R unwinding from a string wound at radius b.
     By hand, b ω = −ẏ, T = ½ m ẏ² + ½ (m R²/2) ẏ²/b², V = −m g y, so
     ÿ = g/(1 + R²/(2 b²)). The string lies on the disk: R ≥ b, assumed (not strict)."""
-    from rbdsolve.model.energy import kinetic_energy, potential_energy
+    from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
 
     model = build_model(load_text(SPOOL, "spool.yaml"))
     p = model.symbols.parameters

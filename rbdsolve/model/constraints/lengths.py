@@ -92,7 +92,7 @@ def body_dimensions(problem: Problem, names: Symbols) -> None:
     and under its assumptions too (their signs alone are checked as the body is built)."""
     if not problem.values and not problem.assumptions:
         return
-    from rbdsolve.problem.bodies import POSITIONS
+    from rbdsolve.problem.sections.bodies import POSITIONS
 
     assumptions = _assumed(problem, names)
     for body in problem.bodies:

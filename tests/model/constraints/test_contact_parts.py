@@ -7,7 +7,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import kinetic_energy, mass_matrix, potential_energy
+from rbdsolve.model.energies.energy import kinetic_energy, mass_matrix, potential_energy
 from rbdsolve.problem import load_text
 
 SPOOL = """

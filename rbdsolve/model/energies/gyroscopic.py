@@ -26,7 +26,7 @@ import sympy as sp
 from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import kinetic_energy, memoized, potential_energy
+from rbdsolve.model.energies.energy import kinetic_energy, memoized, potential_energy
 
 
 @dataclass(frozen=True)

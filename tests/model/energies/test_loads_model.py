@@ -7,7 +7,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.loads import free_forces
+from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.problem import load_file, load_text
 
 from conftest import PROBLEMS

@@ -1,9 +1,9 @@
 """The floating-point route: M(q) and V(q) with its derivatives, without sympy.
 
 The scene's own expression trees (:mod:`rbdsolve.problem.expr`) are evaluated on
-:class:`~rbdsolve.model.jet.Jet` numbers, which carry exact first and second
+:class:`~rbdsolve.model.numeric.jet.Jet` numbers, which carry exact first and second
 derivatives with respect to the generalized coordinates (forward-mode automatic
-differentiation). Then, as in :mod:`rbdsolve.model.energy`,
+differentiation). Then, as in :mod:`rbdsolve.model.energies.energy`,
 
     M(q) = Σ_bodies (m J_vᵀ J_v + J_ωᵀ J_G J_ω),   J_v = ∂r_G/∂q,  J_ω = e_z ∂α/∂q
     V(q) = −Σ_bodies m g·r_G + Σ_springs ½ k s²,   s = |r_a − r_b| − L₀  or  α − α₀
@@ -29,11 +29,11 @@ import numpy as np
 import sympy as sp
 
 from rbdsolve.model.build import body_mass_properties, parts_key
-from rbdsolve.model.jet import FLOAT, MP50, Arithmetic, Jet, apply, atan2, full, power
+from rbdsolve.model.numeric.jet import FLOAT, MP50, Arithmetic, Jet, apply, atan2, full, power
 from rbdsolve.model.state import State
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.problem.schema import Body, Problem, Spring
 
 __all__ = ["FLOAT", "MP50", "Arithmetic", "NotNumeric", "NumericScene"]

@@ -33,7 +33,7 @@ import sympy as sp
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody, SpringModel
 from rbdsolve.model.rotation import axis_rotation
-from rbdsolve.model.energy import EnergyTerm
+from rbdsolve.model.energies.energy import EnergyTerm
 from rbdsolve.model.state import t
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.schema import Frame

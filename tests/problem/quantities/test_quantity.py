@@ -1,4 +1,4 @@
-"""Values as exams write them (problem/quantity.py): exact constants and SI units.
+"""Values as exams write them (problem/quantities/quantity.py): exact constants and SI units.
 
 Expected values are worked out by hand: 30 cm = 30/100 m, 1200 rev/min = 1200·2π/60
 rad/s = 40π rad/s, 45° = 45·π/180 = π/4.
@@ -15,7 +15,7 @@ from conftest import SIMPLE_PENDULUM
 from rbdsolve.errors import InputError, Location
 from rbdsolve.model.symbols import exact_number
 from rbdsolve.problem import load_text
-from rbdsolve.problem.quantity import LENGTH, MASS, Dimension, parse_value
+from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension, parse_value
 
 HERE = Location("p.yaml", 2, 13, ("values", "m"))
 RATE = Dimension(time=Fraction(-1))

@@ -3,7 +3,7 @@
     values: {g: 9.81 m/s^2, theta0: pi/6, m: {range: [1, 5], step: 0.5}, r: {choices: [20 cm, 30 cm]}}
 
 A value is the parameter's value (exact: ``pi/6``, ``30 cm``, read by
-``problem.quantity``); a range (with its step, so that students get tidy numbers) or a
+``problem.quantities.quantity``); a range (with its step, so that students get tidy numbers) or a
 list of choices is read into a :class:`ValueRange` for ``rbdsolve variants``. No text
 from the file reaches anything but rbdsolve's own parsers.
 """
@@ -11,7 +11,7 @@ from the file reaches anything but rbdsolve's own parsers.
 from __future__ import annotations
 
 from rbdsolve.errors import InputError, Location
-from rbdsolve.problem.quantity import Dimension, Value, parse_value
+from rbdsolve.problem.quantities.quantity import Dimension, Value, parse_value
 from rbdsolve.problem.readers import check_keys, describe, expect_scalar
 from rbdsolve.problem.schema import Parameter, ValueRange
 from rbdsolve.problem.yamlnodes import Map, Node, Seq

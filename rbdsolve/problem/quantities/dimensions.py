@@ -22,7 +22,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantity import ACCELERATION, LENGTH, MASS, Dimension
+from rbdsolve.problem.quantities.quantity import ACCELERATION, LENGTH, MASS, Dimension
 from rbdsolve.problem.schema import Body, Couple, Force, Spring
 
 FORCE = Dimension(Fraction(1), Fraction(1), Fraction(-2))  # N = kg m/s²

@@ -12,10 +12,10 @@ from dataclasses import replace
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.amplitudes import amplitudes
-from rbdsolve.problem.forces import energy_options, instant, reactions_options
-from rbdsolve.problem.impact import ImpactReader
-from rbdsolve.problem.kinematics import KinematicsReader
+from rbdsolve.problem.sections.amplitudes import amplitudes
+from rbdsolve.problem.sections.forces import energy_options, instant, reactions_options
+from rbdsolve.problem.sections.impact import ImpactReader
+from rbdsolve.problem.sections.kinematics import KinematicsReader
 from rbdsolve.problem.schema import (
     Body,
     Contact,
@@ -33,7 +33,7 @@ from rbdsolve.problem.schema import (
     SteadySpinOptions,
     SurfaceKind,
 )
-from rbdsolve.problem.contacts import NOT_INTEGRABLE
+from rbdsolve.problem.sections.contacts import NOT_INTEGRABLE
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 

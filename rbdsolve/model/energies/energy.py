@@ -4,7 +4,7 @@ T = Σ_bodies (T_translation + T_rotation),
     T_translation = ½ m v_G · v_G,   T_rotation = ½ ω · J_G ω     (König's theorem)
 V = V_gravity + V_springs + V_loads,
     V_gravity = −Σ m g·r_G,   V_spring = ½ k s²  (s: the spring's stretch),
-    V_load = −F·r_P for a constant force, … where an applied load has a potential (model/loads.py)
+    V_load = −F·r_P for a constant force, … where an applied load has a potential (model/energies/loads.py)
 
 The mass matrix comes from the velocity Jacobians, never from differentiating T twice:
 with v_G = J_v q̇ + v_t and ω = J_ω q̇ + ω_t (J_v = ∂r_G/∂q when r_G is known),

@@ -12,7 +12,7 @@ and the springs.
 
 A force may hold the parameters, the coordinates, the points and t (a given function of
 time); a couple likewise. Whether a load has a potential (a constant force at a point of
-a body: V = −F·r_P) is decided with sympy (model/loads.py).
+a body: V = −F·r_P) is decided with sympy (model/energies/loads.py).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from dataclasses import replace
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.bodies import refuse_negative
+from rbdsolve.problem.sections.bodies import refuse_negative
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.schema import Body, Couple, Force, Wound

@@ -1,4 +1,4 @@
-"""Contacts on a plane in 3D (model/plane_rolling.py), checked by what C must be rather
+"""Contacts on a plane in 3D (model/constraints/plane_rolling.py), checked by what C must be rather
 than by the module's formula: on the rim (|C − G| = r, across the axis), on the plane,
 and the rim's lowest point (no sampled rim point lies lower); the coin's C is the hand
 C = G − r e3 of the seed's problem 3; and the questions that need independent

@@ -14,7 +14,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar, read_bool
-from rbdsolve.problem.orientation import OrientationReader
+from rbdsolve.problem.sections.orientation import OrientationReader
 from rbdsolve.problem.schema import SHAPE_ALIASES, Body, Inertia, Part, Shape
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 

@@ -1,4 +1,4 @@
-"""Impossible geometry (issue 39, item 3; model/lengths.py): a circle a body rolls on,
+"""Impossible geometry (issue 39, item 3; model/constraints/lengths.py): a circle a body rolls on,
 a string's winding radius, a hanging string's length and a body's dimensions must be
 positive. Each case is refused with exit code 2 and one line located at the length,
 naming it — decided by the parameters' signs, by the file's values, or by its

@@ -1,4 +1,4 @@
-"""The numeric route (rbdsolve.model.numeric) against independent derivations.
+"""The numeric route (rbdsolve.model.numeric.numeric) against independent derivations.
 
 * Every problem in problems/ with coordinates: M(q), ∂V/∂q and ∂²V/∂q² at random
   configurations against the symbolic model (build_model, energy.mass_matrix, and
@@ -23,8 +23,8 @@ import sympy as sp
 from rbdsolve.model.symbols import exact_number
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import mass_matrix, potential_energy
-from rbdsolve.model.numeric import FLOAT, MP50, NotNumeric, NumericScene
+from rbdsolve.model.energies.energy import mass_matrix, potential_energy
+from rbdsolve.model.numeric.numeric import FLOAT, MP50, NotNumeric, NumericScene
 from rbdsolve.problem import load_file, load_text
 
 from conftest import PROBLEMS, chain, hand_matrices
@@ -47,7 +47,7 @@ def sample_values(problem) -> dict[str, Fraction]:
 
 def configurations(problem, count: int = 3, values=None) -> list[list[Fraction]]:
     """Random configurations in [−1.5, 1.5] per coordinate, kept where the symbolic
-    model's spring lengths hold: a stretch written u for |u| (model/spring_length.py)
+    model's spring lengths hold: a stretch written u for |u| (model/energies/spring_length.py)
     is the model only while u keeps its sign, and the numeric scene keeps √(u²)."""
     rng = random.Random(str(problem.file))
     domain = _spring_domain(problem, values) if values is not None else []

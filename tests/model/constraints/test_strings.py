@@ -1,5 +1,5 @@
 """A body hanging on a string from a drum over a pulley, checked by the string's
-definition rather than by model/strings.py's formulas: the block goes down exactly as
+definition rather than by model/constraints/strings.py's formulas: the block goes down exactly as
 fast as the drum's material point at C moves along the string towards the pulley
 (v_block·h = v_C·d, the straight part inextensible, the pulley light), at random
 configurations and rates; and by hand, for a cylinder rolling on a table with the

@@ -26,7 +26,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.errors import InputError
-from rbdsolve.model.edges import Curved
+from rbdsolve.model.constraints.edges import Curved
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, Contact

@@ -10,8 +10,8 @@ import sympy as sp
 
 from conftest import PROBLEMS
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import potential_energy
-from rbdsolve.model.spring_length import without_deltas
+from rbdsolve.model.energies.energy import potential_energy
+from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
 

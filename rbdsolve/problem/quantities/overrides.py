@@ -12,12 +12,12 @@ from fractions import Fraction
 from typing import Mapping
 
 from rbdsolve.errors import InputError, Location, did_you_mean, shown
-from rbdsolve.problem.quantity import Value, parse_value
-from rbdsolve.problem.ranges import parameter_value
+from rbdsolve.problem.quantities.quantity import Value, parse_value
+from rbdsolve.problem.quantities.ranges import parameter_value
 from rbdsolve.problem.schema import Problem
 
 OPTION = "--set {}"  # how a value given on the command line is named in a message
-LIMIT = 10**300  # as a file's numbers (problem/quantity.py): 10**5000 is refused before it is written out
+LIMIT = 10**300  # as a file's numbers (problem/quantities/quantity.py): 10**5000 is refused before it is written out
 
 
 def read_value(name: str, text: str, said: str = OPTION) -> Value:

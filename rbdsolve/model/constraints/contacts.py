@@ -37,13 +37,13 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import Assumed
-from rbdsolve.model.edges import Curved, Flat, NotInPlane, body_part, part_edge
-from rbdsolve.model.lengths import contact_lengths
+from rbdsolve.model.constraints.edges import Curved, Flat, NotInPlane, body_part, part_edge
+from rbdsolve.model.constraints.lengths import contact_lengths
 from rbdsolve.model.state import t, user_function
-from rbdsolve.model.strings import hang
+from rbdsolve.model.constraints.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.model.trees import as_expr, reverse_names
-from rbdsolve.problem.contacts import NOT_PLANAR
+from rbdsolve.problem.sections.contacts import NOT_PLANAR
 from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
 
 _Z = sp.Matrix([0, 0, 1])
@@ -115,11 +115,11 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
     placed, rollings = {}, []
     reverse = reverse_names(names)
     for contact in problem.contacts:
-        if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/plane_rolling.py
+        if contact.surface.kind is SurfaceKind.PLANE:  # in 3D, placed by the body's own turns: model/constraints/plane_rolling.py
             continue
         lengths = tuple(implied(contact, v, sp.Integer(0), names, why) for v, why in contact_lengths(contact, problem, names))
         body = bodies[contact.body]
-        if contact.pulley is not None:  # the drum is placed already (problem/contacts.py checks the order)
+        if contact.pulley is not None:  # the drum is placed already (problem/sections/contacts.py checks the order)
             origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names,
                                        values)
             placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
@@ -161,7 +161,7 @@ def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame 
 
 
 def _hanging(c: Contact, drum: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, Rolling]:
-    """A body on a string from a drum over a pulley, or straight from it (model/strings.py)."""
+    """A body on a string from a drum over a pulley, or straight from it (model/constraints/strings.py)."""
     e = _geometry(c, drum, c.pulley.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names, values)
     return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,

@@ -14,9 +14,9 @@ coordinate: the string's inextensibility places it from the drum's motion. Each 
 contact names one declared coordinate, as ``along`` (the contact point's travel:
 a distance along a line, the angle round a circle from its lowest point inside or its
 top outside) or ``angle`` (the body's turn); the body gives neither ``at`` nor
-``angle``: rolling places it (model/contacts.py). A body rolling on a plane in 3D keeps
+``angle``: rolling places it (model/constraints/contacts.py). A body rolling on a plane in 3D keeps
 its own ``at`` and ``orientation`` and names no coordinate: the condition does not
-integrate, so it stays a constraint (model/plane_rolling.py). This module only reads and checks
+integrate, so it stays a constraint (model/constraints/plane_rolling.py). This module only reads and checks
 names; the geometry (does the body fit, does it touch) is checked with sympy later.
 """
 
@@ -28,7 +28,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.bodies import refuse_negative
+from rbdsolve.problem.sections.bodies import refuse_negative
 from rbdsolve.problem.schema import Body, Contact, Measure, Part, Pulley, Surface, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 

@@ -19,7 +19,7 @@ coordinates (a coin can roll back to its place turned), so no coordinate is elim
 The contact is kept as a constraint: ``steady_motion`` uses C as it uses a point named
 in ``rolling_at``; ``impact`` keeps v_C = 0 along the plane just after, with the plane's
 impulse along it unknown (``material_velocity``, ``tangents``); eom, equilibria, modes and
-reactions refuse it (problem/questions.py).
+reactions refuse it (problem/sections/questions.py).
 """
 
 from __future__ import annotations
@@ -33,8 +33,8 @@ from rbdsolve.errors import InputError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.assumptions import Assumed
-from rbdsolve.model.contacts import implied
-from rbdsolve.model.edges import body_part, part_edge
+from rbdsolve.model.constraints.contacts import implied
+from rbdsolve.model.constraints.edges import body_part, part_edge
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Contact, Problem, SurfaceKind
