@@ -167,3 +167,20 @@ def test_the_exact_routes_load_no_numpy() -> None:
                           env={"PYTHONPATH": str(ROOT)}, timeout=120, check=False)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "[]"
+
+
+JUNK_ROOMS = {"shared", "common", "utils", "misc", "helpers"}
+
+
+def test_every_folder_is_named_for_what_it_holds() -> None:
+    """No junk room: a folder's name says what it holds (docs/architecture.md)."""
+    folders = sorted({p.parent.relative_to(ROOT) for p in PACKAGE.rglob("*.py")})
+    junk = [str(f) for f in folders if f.name in JUNK_ROOMS]
+    assert not junk, f"folders named for no content: {junk}"
+
+
+def test_no_folder_holds_more_than_twenty_modules() -> None:
+    """A folder past 20 modules is split into rooms named for what they hold."""
+    folders = {p.parent for p in PACKAGE.rglob("*.py")}
+    crowded = {str(f.relative_to(ROOT)): n for f in folders if (n := len(list(f.glob("*.py")))) > 20}
+    assert not crowded, f"folders of more than 20 modules: {crowded}"
