@@ -14,8 +14,6 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
-from rbdsolve.problem.quantities.quantity import ACCELERATION
-from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
@@ -239,12 +237,6 @@ def _named_pivot(model: Model, position: sp.Matrix) -> str | None:
     return None
 
 
-def swing_warnings(model: Model) -> tuple[str, ...]:
-    """The warnings for bodies that evidently swing without an angle (``Unturned`` with
-    a pivot), for every question that uses T."""
-    return tuple(u.text() for u in unturned(model) if u.pivot is not None)
-
-
 def _two_sided(model: Model) -> list[st.Step]:
     """A note for each spring length |u| whose sign at the reference configuration is
     not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
@@ -274,24 +266,6 @@ def _positive(value: sp.Expr) -> str:
     if above and below:
         return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
     return f"[{value} > 0]"
-
-
-def unused_warnings(model: Model) -> tuple[str, ...]:
-    """A warning for each declared parameter that nothing in the scene or the questions
-    uses (``problem.usage``): no answer depends on it, so a line is most likely missing;
-    for an acceleration of gravity in a scene without ``gravity:``, the line to add."""
-    return tuple(_unused_text(p, model) for p in unused_parameters(model.problem))
-
-
-def _unused_text(parameter, model: Model) -> str:
-    name = parameter.name
-    text = f"parameter '{name}' is declared but used nowhere: no answer depends on it"
-    dimension = model.problem.dimension_map().get(name)
-    gravity = (name == "g" or "gravit" in parameter.description.lower() or dimension == ACCELERATION)
-    if gravity and model.gravity is None:
-        return (f"{text}, and the scene has no gravity (no 'gravity:' line), so V holds no weight; if the bodies "
-                f"are in gravity, add `gravity: [0, -{name}]` (y up; `[0, 0, -{name}]` in 3D)")
-    return f"{text} (is a line that uses it missing?)"
 
 
 def _unturned(model: Model) -> list[st.Step]:

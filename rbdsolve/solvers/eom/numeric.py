@@ -38,7 +38,7 @@ from rbdsolve.solvers.eom.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import eom_warnings
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 FLOAT_DIGITS = 15  # sympy Float of 15 digits carries 53 bits, a binary64's precision
 REFERENCE_DIGITS = 50

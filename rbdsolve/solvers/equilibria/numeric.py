@@ -45,7 +45,7 @@ from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.numeric.search_box import box_text
 from rbdsolve.solvers.configuration.placement import SUGGESTION, numeric_listing
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

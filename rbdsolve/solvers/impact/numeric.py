@@ -22,7 +22,8 @@ from rbdsolve.solvers.impact.steps import numeric_steps
 from rbdsolve.solvers.numeric.numeric_model import to_floats
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import float_reason
-from rbdsolve.model.values.values import require_values, with_floats
+from rbdsolve.model.values.values import with_floats
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

@@ -28,7 +28,7 @@ from rbdsolve.solvers.inertia.exact import axis_moment, frame_matrix, in_plane
 from rbdsolve.solvers.inertia.steps import numeric_steps
 from rbdsolve.solvers.numeric.numeric_model import to_floats
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

@@ -15,7 +15,7 @@ from rbdsolve.solvers.kinematics.answers import NumericDistance, NumericKinemati
 from rbdsolve.solvers.kinematics.exact import kinematics
 from rbdsolve.solvers.kinematics.steps import numeric_steps
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 ROUNDING = 1e-15  # one rounding of each evaluated expression, relative
 

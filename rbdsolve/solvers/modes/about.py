@@ -24,7 +24,7 @@ from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, incomplete, listing
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.numeric.chosen import REFINE_TOL, several_stable
-from rbdsolve.model.values.values import missing_for
+from rbdsolve.solvers.routes.needed import missing_for
 
 
 def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:

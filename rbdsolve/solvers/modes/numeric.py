@@ -54,7 +54,7 @@ from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
 from rbdsolve.solvers.numeric.numeric_model import linearized
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import float_reason
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

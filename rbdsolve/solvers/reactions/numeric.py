@@ -19,7 +19,7 @@ from rbdsolve.solvers.reactions.balances import located, unheld
 from rbdsolve.solvers.reactions.exact import setup
 from rbdsolve.solvers.lagrange.accelerations import state_values
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = 2.0**-52
 

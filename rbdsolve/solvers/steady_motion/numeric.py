@@ -40,7 +40,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotion, NumericSteadyMotionAnswers
 from rbdsolve.solvers.steady_motion.balances import (
     angle_unknown,

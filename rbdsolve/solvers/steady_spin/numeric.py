@@ -24,7 +24,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.numeric import principal_floats, relative_estimate
 from rbdsolve.solvers.numeric.numeric_model import to_floats
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.model.values.values import require_values
+from rbdsolve.solvers.routes.needed import require_values
 from rbdsolve.solvers.steady_spin.answers import NumericSpin, NumericSteadySpinAnswers, Stability
 from rbdsolve.solvers.steady_spin.precession import numeric_precession, precession_steps
 from rbdsolve.solvers.steady_spin.steps import numeric_steps

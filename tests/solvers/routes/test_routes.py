@@ -382,7 +382,7 @@ def test_the_numeric_fallback_gets_the_rest_of_the_questions_share(monkeypatch) 
 
 
 def test_missing_values_names_them_in_order_and_auto_does_not_fall_back(monkeypatch) -> None:
-    from rbdsolve.model.values.values import missing_values
+    from rbdsolve.solvers.routes.needed import missing_values
 
     def refuse(question, model, options):
         raise UnsolvedError("too hard")
