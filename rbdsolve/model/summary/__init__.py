@@ -2,6 +2,6 @@
 V term by term, with their common scale; a large model's energies as matrices), and a
 model's expressions in the exam form.
 
-A room of the model, beside what it describes (the walk from solve_file prints it
-without climbing back up from the model). Used by solvers/routes/ (the report of a
-whole problem), solvers/lagrange/ (moving frames) and the solver families' steps."""
+A room of the model, beside the energies it describes, so that printing them needs
+nothing above the model. Used by solvers/routes/ (the report of a whole problem),
+solvers/lagrange/ (moving frames) and the solver families' steps."""
