@@ -50,7 +50,7 @@ def reference(case: Case, model) -> list:
     rbdsolve's exact M and K at the equilibrium (values put in, no rounding)."""
     import sympy as sp
 
-    from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
+    from rbdsolve.model.energies.energy import mass_matrix, potential_energy, stiffness_matrix
     from rbdsolve.solvers.modes.numeric import reference_eigenvalues
 
     if case.M is not None:

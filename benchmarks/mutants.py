@@ -48,7 +48,7 @@ class Mutant:
 
 
 MODEL = ("tests/model", "tests/solvers/inertia/test_inertia.py", "tests/solvers/eom")
-EQUILIBRIA = ("tests/solvers/equilibria", "tests/solvers/shared/test_signs.py", "tests/edges/test_equilibria_edges.py")
+EQUILIBRIA = ("tests/solvers/equilibria", "tests/solvers/conditions/test_signs.py", "tests/edges/test_equilibria_edges.py")
 MODES = ("tests/solvers/modes/test_modes.py", "tests/solvers/modes/test_modes_cases.py",
          "tests/solvers/modes/test_modes_numeric.py", "tests/edges/test_modes_edges.py")
 IMPACT = ("tests/solvers/impact",)
@@ -60,15 +60,15 @@ KINEMATICS = ("tests/solvers/kinematics",)
 
 MUTANTS: tuple[Mutant, ...] = (
     # model/: T, V, inertia, rotation, time derivatives
-    Mutant("T-translation-half", "rbdsolve/model/energy.py",
+    Mutant("T-translation-half", "rbdsolve/model/energies/energy.py",
            "T_translation = body.mass * v.dot(v) / 2", "T_translation = body.mass * v.dot(v)",
            MODEL, "½ m v² without the ½"),
-    Mutant("T-rotation-half", "rbdsolve/model/energy.py",
+    Mutant("T-rotation-half", "rbdsolve/model/energies/energy.py",
            "* omega)[0, 0] / 2 if", "* omega)[0, 0] if", MODEL, "½ ωᵀJω without the ½"),
-    Mutant("V-gravity-sign", "rbdsolve/model/energy.py",
+    Mutant("V-gravity-sign", "rbdsolve/model/energies/energy.py",
            "V_gravity = -body.mass * model.gravity.dot(body.position)",
            "V_gravity = body.mass * model.gravity.dot(body.position)", MODEL, "V = +m g·r"),
-    Mutant("V-spring-half", "rbdsolve/model/energy.py",
+    Mutant("V-spring-half", "rbdsolve/model/energies/energy.py",
            "spring.stiffness * spring.stretch**2 / 2", "spring.stiffness * spring.stretch**2",
            MODEL, "½ k s² without the ½"),
     Mutant("parallel-axis-sign", "rbdsolve/model/inertia.py",
@@ -91,21 +91,21 @@ MUTANTS: tuple[Mutant, ...] = (
            "E = model.state.d_dt(derivative(L, qd)) - derivative(L, q)",
            "E = model.state.d_dt(derivative(L, qd)) + derivative(L, q)", MODEL, "d/dt ∂L/∂q̇ + ∂L/∂q"),
     # equilibria: the sign counts of the Hessian
-    Mutant("inertia-count-swapped", "rbdsolve/solvers/shared/signs.py",
+    Mutant("inertia-count-swapped", "rbdsolve/solvers/conditions/signs.py",
            "return Inertia(positive, zero, n - positive - zero)", "return Inertia(n - positive - zero, zero, positive)",
            EQUILIBRIA, "Descartes' sign changes counted as negative eigenvalues (the reviewer's singular, "
                        "non-diagonal Hessian)"),
-    Mutant("sign-of-value", "rbdsolve/solvers/shared/signs.py",
+    Mutant("sign-of-value", "rbdsolve/solvers/conditions/signs.py",
            "return 0 if z.real == 0 else (1 if z.real > 0 else -1)",
            "return 0 if z.real == 0 else (1 if z.real < 0 else -1)", EQUILIBRIA, "a value's sign flipped"),
-    Mutant("negative-diagonal", "rbdsolve/solvers/shared/signs.py",
+    Mutant("negative-diagonal", "rbdsolve/solvers/conditions/signs.py",
            "if any(sign_of(H[i, i], values) == -1 for i in range(n)):",
            "if any(sign_of(H[i, i], values) == 1 for i in range(n)):", EQUILIBRIA,
            "a positive diagonal entry taken for proof of a negative eigenvalue"),
     Mutant("neutral-count", "rbdsolve/solvers/equilibria/exact.py",
            "if len(flat) == inertia.zero:", "if len(flat) != inertia.zero:", EQUILIBRIA,
            "neutral and undetermined swapped where the Hessian is singular"),
-    Mutant("numeric-unstable-test", "rbdsolve/solvers/shared/numeric_model.py",
+    Mutant("numeric-unstable-test", "rbdsolve/solvers/numeric/numeric_model.py",
            "if np.any(eig < -tol):", "if np.any(eig > -tol):", EQUILIBRIA,
            "the numeric search calls a zero curvature unstable"),
     # modes
@@ -155,7 +155,7 @@ MUTANTS: tuple[Mutant, ...] = (
            "moment += sign * (b.position - s.point).cross(c.symbol * c.direction)", REACTIONS,
            "a support's moment arm from the point to G"),
     # energy and kinematics
-    Mutant("energy-integral-factor", "rbdsolve/solvers/shared/energy_integral.py",
+    Mutant("energy-integral-factor", "rbdsolve/solvers/lagrange/energy_integral.py",
            "rate_squared = clean_fraction(2 * (h0 - (h - T2)) / M)",
            "rate_squared = clean_fraction((h0 - (h - T2)) / M)", ENERGY, "q̇² = (E − V)/M without the 2"),
     Mutant("speed-root", "rbdsolve/solvers/kinematics/exact.py",

@@ -125,7 +125,7 @@ bodies:
 """
 
 
-# --- an n-link chain (tests/model/test_numeric.py, tests/solvers/modes/test_numeric_chains.py)
+# --- an n-link chain (tests/model/numeric/test_numeric.py, tests/solvers/modes/test_numeric_chains.py)
 
 
 def chain(n: int, rods: bool) -> str:

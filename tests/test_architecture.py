@@ -23,7 +23,7 @@ ALLOWED = {
     "errors": set(),
     "form": set(),
     "problem": {"errors"},
-    "model": {"problem", "form", "errors"},
+    "model": {"problem", "report", "form", "errors"},
     "report": {"form", "errors"},
     "solvers": {"model", "problem", "report", "form", "errors"},
     "render": {"solvers", "model", "problem", "report", "form", "errors"},
@@ -33,8 +33,9 @@ ALLOWED = {
     "package": set(),  # rbdsolve/__init__.py, __main__.py: see PACKAGE_FILES
 }
 PACKAGE_FILES = {"__main__": {"cli"}, "__init__": {"api"}}  # __init__: the API, lazily
-# Solver families that build on another family's results; every other family imports
-# only solvers/shared and the layers below.
+# The solvers' machinery: folders of solvers/ that are no family. They import no family;
+# a family imports them and the layers below, and only the families FAMILY_USES names.
+MACHINERY = {"conditions", "configuration", "lagrange", "numeric", "routes"}
 FAMILY_USES = {"modes": {"equilibria"}, "steady_spin": {"inertia"}, "reactions": {"eom"}}
 TERMINAL_LIBRARIES = {"click", "rich"}
 MAY_PRINT = {"cli", "render"}
@@ -100,10 +101,11 @@ def family(module: str) -> str | None:
 def test_solver_families_stand_apart(module: str) -> None:
     mine = family(module)
     others = {family(t) for t in GRAPH[module] if family(t) and family(t) != mine}
-    if mine == "shared":
-        assert not others, f"{module}: shared machinery may not import a family ({others})"
+    if mine in MACHINERY:
+        assert not others - MACHINERY, (
+            f"{module}: the solvers' machinery may not import a family ({others - MACHINERY})")
     else:
-        assert others <= FAMILY_USES.get(mine, set()) | {"shared"}, f"{module} imports the families {others}"
+        assert others <= FAMILY_USES.get(mine, set()) | MACHINERY, f"{module} imports the families {others}"
 
 
 def test_no_circles() -> None:
@@ -158,10 +160,27 @@ def test_the_exact_routes_load_no_numpy() -> None:
     import subprocess
     import sys
 
-    families = sorted({family(m) for m in MODULES if family(m) and family(m) != "shared"})
+    families = sorted({family(m) for m in MODULES if family(m) and family(m) not in MACHINERY})
     code = "; ".join(f"import rbdsolve.solvers.{f}.exact" for f in families)
     code += "; import sys; print(sorted(m for m in ('numpy', 'scipy') if m in sys.modules))"
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
                           env={"PYTHONPATH": str(ROOT)}, timeout=120, check=False)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "[]"
+
+
+JUNK_ROOMS = {"shared", "common", "utils", "misc", "helpers"}
+
+
+def test_every_folder_is_named_for_what_it_holds() -> None:
+    """No junk room: a folder's name says what it holds (docs/architecture.md)."""
+    folders = sorted({p.parent.relative_to(ROOT) for p in PACKAGE.rglob("*.py")})
+    junk = [str(f) for f in folders if f.name in JUNK_ROOMS]
+    assert not junk, f"folders named for no content: {junk}"
+
+
+def test_no_folder_holds_more_than_twenty_modules() -> None:
+    """A folder past 20 modules is split into rooms named for what they hold."""
+    folders = {p.parent for p in PACKAGE.rglob("*.py")}
+    crowded = {str(f.relative_to(ROOT)): n for f in folders if (n := len(list(f.glob("*.py")))) > 20}
+    assert not crowded, f"folders of more than 20 modules: {crowded}"

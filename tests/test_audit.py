@@ -1,6 +1,6 @@
 """The audit of issue 38: every problem in problems/ solved, then again with its values
 set on each side of each critical value it prints, and no printed value fails its own
-check (solvers/shared/checks.py runs on every answer: a failure leaves the question
+check (solvers/routes/checks.py runs on every answer: a failure leaves the question
 unanswered with "rbdsolve's own check … failed") and none is a complex number printed
 as a pair of reals.
 
@@ -24,8 +24,8 @@ from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.report.tree import leaves
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.condition_roots import admissible
-from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.conditions.condition_roots import admissible
+from rbdsolve.solvers.conditions.conditions import CriticalValue
 
 FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
 SIDES = (Fraction(95, 100), Fraction(105, 100))

@@ -12,7 +12,7 @@ from rbdsolve.api.result import Result
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import load_file
 from rbdsolve.problem.data import load_data, load_string
-from rbdsolve.problem.overrides import checked_values, given_values
+from rbdsolve.problem.quantities.overrides import checked_values, given_values
 from rbdsolve.problem.schema import Problem
 
 ROUTES = ("auto", "exact", "numeric")

@@ -19,7 +19,7 @@ from rbdsolve import __version__
 from rbdsolve.errors import ExitCode, InputError, RbdError, printable
 
 if TYPE_CHECKING:
-    from rbdsolve.problem.quantity import Value
+    from rbdsolve.problem.quantities.quantity import Value
 
 EXPECTED_SUFFIX = ".expected.yaml"  # golden answers beside a problem file, not problems
 STDIN = "-"
@@ -153,8 +153,8 @@ def _is_problem(path: Path) -> bool:
 
 def parse_sets(items: tuple[str, ...]) -> dict[str, Value]:
     """``--set NAME=VALUE``: a value as in ``values:`` (9.81, pi/6, 30 cm), read by
-    rbdsolve's own parsers (problem/overrides.py, shared with the Python API)."""
-    from rbdsolve.problem.overrides import read_value
+    rbdsolve's own parsers (problem/quantities/overrides.py, shared with the Python API)."""
+    from rbdsolve.problem.quantities.overrides import read_value
 
     values = {}
     for item in items:
@@ -166,8 +166,8 @@ def parse_sets(items: tuple[str, ...]) -> dict[str, Value]:
 
 
 def check_sets(values: dict[str, Value], problem) -> dict[str, Value]:
-    """Every ``--set`` names a parameter of ``problem`` (problem/overrides.py)."""
-    from rbdsolve.problem.overrides import checked_values
+    """Every ``--set`` names a parameter of ``problem`` (problem/quantities/overrides.py)."""
+    from rbdsolve.problem.quantities.overrides import checked_values
 
     return checked_values(values, problem)
 
@@ -350,7 +350,7 @@ def _stopping(kind: type[BaseException]) -> None:
     ring can take the place of the interrupt on its way out. Not imported here: a
     process that has not imported the budget has no ring to fear (and a signal handler
     is no place for an import)."""
-    budget = sys.modules.get("rbdsolve.solvers.shared.budget")
+    budget = sys.modules.get("rbdsolve.solvers.routes.budget")
     if budget is not None:
         budget.stop(kind)
 

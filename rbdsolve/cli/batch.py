@@ -15,7 +15,7 @@ from rbdsolve.errors import ExitCode, InputError, Location, UnsolvedError, print
 if TYPE_CHECKING:  # not at start-up: the report module imports sympy, the pool multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    from rbdsolve.problem.quantity import Value
+    from rbdsolve.problem.quantities.quantity import Value
     from rbdsolve.report.steps import ProblemReport
 
 

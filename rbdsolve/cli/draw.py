@@ -58,7 +58,7 @@ def _draw(path: str, output: Path, at: tuple[str, ...], sets: tuple[str, ...], m
     from rbdsolve.errors import RbdError
     from rbdsolve.model.build import build_model
     from rbdsolve.render.files import publish, require_folder, staging
-    from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
+    from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
     from rbdsolve.render.drawing.figures import (
         check_suffix,
         modes_questions,

@@ -7,8 +7,8 @@ positive symbol: R > r becomes
 R = r + δ, and any sign that holds for every δ > 0 holds under the assumption
 (``decided_by``). One substitution per parameter, in the file's order; an assumption
 that is not linear in a free parameter is still checked, and used by the sampling in
-``solvers/shared/conditions.py``, but decides no sign exactly. A contact's geometry adds
-its own (R > r for a body rolling inside a circle, model/contacts.py), after the file's.
+``solvers/conditions/conditions.py``, but decides no sign exactly. A contact's geometry adds
+its own (R > r for a body rolling inside a circle, model/constraints/contacts.py), after the file's.
 """
 
 from __future__ import annotations

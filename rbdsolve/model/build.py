@@ -2,7 +2,7 @@
 
 The model is 3D underneath: a point is a 3-vector (a planar [x, y] gets z = 0) and a
 planar ``angle`` is a rotation about z. Energies are computed on demand
-(:mod:`rbdsolve.model.energy`), so a question that needs only V never builds T.
+(:mod:`rbdsolve.model.energies.energy`), so a question that needs only V never builds T.
 """
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
-from rbdsolve.model.spring_length import as_square_root, signed_length
+from rbdsolve.model.energies.spring_length import as_square_root, signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
-from rbdsolve.model.lengths import body_dimensions
+from rbdsolve.model.constraints.lengths import body_dimensions
 from rbdsolve.model.inertia import OWN_AXIS, MassProperties, body_properties, combine, explicit_inertia
 from rbdsolve.model.state import State, t
 from rbdsolve.model.rotation import Turns, angular_velocity, sequence_rotation, turns_angular_velocity, \
@@ -29,8 +29,8 @@ from rbdsolve.model.rotation import Turns, angular_velocity, sequence_rotation, 
 from rbdsolve.model.symbols import Symbols, exact_number, plainly_real
 from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
-from rbdsolve.problem.quantity import Value
-from rbdsolve.problem.bodies import POSITIONS
+from rbdsolve.problem.quantities.quantity import Value
+from rbdsolve.problem.sections.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
 
 
@@ -100,7 +100,7 @@ class SpringModel:
     stiffness: sp.Expr
     stretch: sp.Expr  # |r_a − r_b| − l₀ for a linear spring, α − α₀ for a torsional one
     source: Spring
-    lengths: tuple = ()  # model/spring_length.py Length's: each |u| of the length, written ±u where its sign is known
+    lengths: tuple = ()  # model/energies/spring_length.py Length's: each |u| of the length, written ±u where its sign is known
 
     def signed(self, expr: sp.Expr) -> sp.Expr:
         """expr with each |u| of the length written as the stretch writes it (±u where
@@ -129,9 +129,9 @@ class Model:
     inertial: tuple = ()  # EnergyTerm's: inertial potentials, for a model seen in a moving frame
     gyroscopic: tuple = ()  # EnergyTerm's: L's terms linear in q̇ that T does not hold (a frame's Coriolis terms)
     assumptions: tuple = ()  # model/assumptions.py Assumed's, from 'assumptions:' and implied by contacts
-    contacts: tuple = ()  # model/contacts.py Rolling's: each contact's point and rolling condition
-    plane_contacts: tuple = ()  # model/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
-    loads: tuple = ()  # model/loads.py Load's: applied forces and couples
+    contacts: tuple = ()  # model/constraints/contacts.py Rolling's: each contact's point and rolling condition
+    plane_contacts: tuple = ()  # model/constraints/plane_rolling.py PlaneRolling's: 3D contacts, kept as constraints
+    loads: tuple = ()  # model/energies/loads.py Load's: applied forces and couples
     body_points: Mapping[str, sp.Matrix] = field(default_factory=dict)  # each body's origin (by its name), its points
 
     @cached_property  # asked in every sign decision; the model never changes
@@ -246,7 +246,7 @@ def build_model(problem: Problem) -> Model:
     gravity = names.vector(problem.gravity) if problem.gravity else None
     values = {names.parameters[k]: exact_number(v) for k, v in problem.values}
     check_values(problem, names, values)
-    body_dimensions(problem, names)  # under the assumptions too (model/lengths.py)
+    body_dimensions(problem, names)  # under the assumptions too (model/constraints/lengths.py)
     planes = _plane_contacts(problem, names, bodies, values)
     if planes:  # C, named in questions (steady_motion's about, rolling_at)
         points = ChainMap({c.name: c.point for c in planes}, points)
@@ -297,12 +297,12 @@ def _rotation(spec: Body, names: Symbols, triads: Mapping[str, sp.Matrix]) -> sp
 
 
 def _loads(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], every: tuple, values) -> tuple:
-    """The applied forces and couples (model/loads.py, imported only for a scene with
+    """The applied forces and couples (model/energies/loads.py, imported only for a scene with
     some), each sign they need decided by the values and the assumptions."""
     if not (problem.forces or problem.couples):
         return ()
     from rbdsolve.model.assumptions import implies
-    from rbdsolve.model.loads import build_loads
+    from rbdsolve.model.energies.loads import build_loads
 
     table = decided_by(substitutions(every, names) if every else {}, values)
 
@@ -389,20 +389,20 @@ def _holds(parts: list, symbol: sp.Symbol) -> bool:
 
 
 def _place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple]:
-    """model/contacts.py's ``place_contacts``, its machinery (edges, strings) imported
+    """model/constraints/contacts.py's ``place_contacts``, its machinery (edges, strings) imported
     only for a scene with contacts: ~4 ms of start-up that a scene without them skips."""
     if not problem.contacts:
         return problem, ()
-    from rbdsolve.model.contacts import place_contacts
+    from rbdsolve.model.constraints.contacts import place_contacts
 
     return place_contacts(problem, names)
 
 
 def _plane_contacts(problem: Problem, names: Symbols, bodies: tuple[RigidBody, ...], values) -> tuple:
-    """The contacts on a plane (model/plane_rolling.py, imported only for a scene with contacts)."""
+    """The contacts on a plane (model/constraints/plane_rolling.py, imported only for a scene with contacts)."""
     if not problem.contacts:
         return ()
-    from rbdsolve.model.plane_rolling import plane_contacts
+    from rbdsolve.model.constraints.plane_rolling import plane_contacts
 
     return plane_contacts(problem, names, {b.name: b.rotation for b in bodies}, values)
 
@@ -611,7 +611,7 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
 
 def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
-    configuration (q = 0) is known (model/spring_length.py)."""
+    configuration (q = 0) is known (model/energies/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}
     assumed = substitutions(assumptions, names) if assumptions else {}
     out = []

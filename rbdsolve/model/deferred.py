@@ -4,7 +4,7 @@ A chain of n links has points P_k = P_{k−1} + l (sin θ_k, −cos θ_k): writt
 sympy, P_k is a sum of k terms, and sympy keeps each sum sorted, so building the n
 points costs Σ k ≈ n²/2 comparisons of terms (a 200-link chain: most of a second). The
 floating-point route never reads them (it evaluates the problem's own expression trees,
-:mod:`rbdsolve.model.numeric`), so they are folded on first read:
+:mod:`rbdsolve.model.numeric.numeric`), so they are folded on first read:
 
 - ``Later(make)``: a value to be made by ``make()`` when first read.
 - ``Deferred``: a dataclass field that also accepts a Later; the first read makes the

@@ -20,7 +20,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.state import State, t, user_function
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.problem.schema import Problem
 
 _FUNCTIONS = {

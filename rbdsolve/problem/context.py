@@ -233,7 +233,7 @@ def _unit_hint(error: InputError, node: Node) -> InputError:
     'values:' (and --set), so say how to write it here, rather than 'invalid syntax'."""
     if not (isinstance(node, Scalar) and error.message.startswith("cannot read expression")):
         return error
-    from rbdsolve.problem.quantity import parse_value  # pint only for a file that has a unit
+    from rbdsolve.problem.quantities.quantity import parse_value  # pint only for a file that has a unit
 
     try:
         value = parse_value(node.text, node.loc, node.plain)

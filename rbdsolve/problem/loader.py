@@ -25,16 +25,16 @@ from rbdsolve.problem.schema import (
     SurfaceKind,
     ValueRange,
 )
-from rbdsolve.problem.bodies import BodyReader, refuse_negative
-from rbdsolve.problem.contacts import ContactReader, contact_bodies, hanging_bodies
-from rbdsolve.problem.loads import LoadReader
+from rbdsolve.problem.sections.bodies import BodyReader, refuse_negative
+from rbdsolve.problem.sections.contacts import ContactReader, contact_bodies, hanging_bodies
+from rbdsolve.problem.sections.loads import LoadReader
 from rbdsolve.problem.context import Reading
-from rbdsolve.problem.coordinates import coordinate, declared_ranges
-from rbdsolve.problem.orientation import OrientationReader
-from rbdsolve.problem.questions import QuestionReader
-from rbdsolve.problem.dimensions import scene_dimensions
-from rbdsolve.problem.quantity import Dimension, Value, parse_unit
-from rbdsolve.problem.ranges import parameter_value, value_range
+from rbdsolve.problem.sections.coordinates import coordinate, declared_ranges
+from rbdsolve.problem.sections.orientation import OrientationReader
+from rbdsolve.problem.sections.questions import QuestionReader
+from rbdsolve.problem.quantities.dimensions import scene_dimensions
+from rbdsolve.problem.quantities.quantity import Dimension, Value, parse_unit
+from rbdsolve.problem.quantities.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text
 
@@ -331,7 +331,7 @@ class _Loader:
 
     def values(self, node: Node | None, parameters: tuple[Parameter, ...], dims: dict[str, tuple[Dimension, str]]
                ) -> tuple[tuple[tuple[str, Value], ...], tuple[ValueRange, ...]]:
-        """Values, and the ranges or choices to draw per exam variant (problem/ranges.py)."""
+        """Values, and the ranges or choices to draw per exam variant (problem/quantities/ranges.py)."""
         if node is None:
             return (), ()
         table = expect_mapping(node, "values: parameter -> number")
@@ -407,7 +407,7 @@ def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...
                       gravity: ex.Expr | None, points: tuple[Point, ...], forces: tuple = (),
                       couples: tuple = (), contacts: tuple = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter's dimension where the file fixes it: its declared unit first, then
-    the scene (problem/dimensions.py)."""
+    the scene (problem/quantities/dimensions.py)."""
     positions = tuple(p.position for p in points if p.position is not None)
     positions += tuple(b.at for b in bodies if b.at is not None)
     known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions, forces,

@@ -14,7 +14,7 @@ from fractions import Fraction
 
 from rbdsolve.errors import Location
 from rbdsolve.problem.expr import Expr
-from rbdsolve.problem.quantity import Dimension, Unit, Value
+from rbdsolve.problem.quantities.quantity import Dimension, Unit, Value
 
 
 class Shape(Enum):
@@ -47,7 +47,7 @@ class Shape(Enum):
 
     @property
     def edges(self) -> tuple[str, ...]:
-        """The named parts of its boundary a contact may use (model/edges.py gives
+        """The named parts of its boundary a contact may use (model/constraints/edges.py gives
         their geometry); the first is the default when a contact names none."""
         return _EDGES.get(self, ())
 
@@ -272,7 +272,7 @@ class Pulley:
     """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
     centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
     and hangs from there along ``down`` with the contact's body at its end, ``length``
-    below ``over`` at the reference configuration (model/strings.py). Without a pulley
+    below ``over`` at the reference configuration (model/constraints/strings.py). Without a pulley
     (``over`` None) it runs straight along ``direction`` from the drum's ``side`` to the
     body, ``length`` from the rim at the reference."""
 
@@ -292,7 +292,7 @@ class Pulley:
 class Contact:
     """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
     coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
-    and rolling fixes the rest (model/contacts.py). A string wound on a drum is a
+    and rolling fixes the rest (model/constraints/contacts.py). A string wound on a drum is a
     line the drum rolls on (``string``), at the winding ``radius``. A composite body
     touches with one of its parts (``part``); a body given by its inertia rolls on the
     circle of ``radius`` about its centre of mass."""
@@ -342,7 +342,7 @@ class Force:
     body's origin): ``force`` a vector (constant, or a function of t and the
     coordinates), or, with ``towards``, a size along the line from that point to
     ``towards`` (a string pulled over a peg there); ``wound``: a string wound on the body
-    about ``at``, so the force acts where the string leaves it (model/loads.py)."""
+    about ``at``, so the force acts where the string leaves it (model/energies/loads.py)."""
 
     name: str
     on: str
@@ -657,9 +657,9 @@ class Problem:
     triads: tuple[Triad, ...] = ()
     ranges: tuple[ValueRange, ...] = ()  # parameters drawn per variant; symbolic otherwise
     assumptions: tuple[Assumption, ...] = ()  # inequalities between parameters (R > r)
-    contacts: tuple[Contact, ...] = ()  # rolling contacts and strings (problem/contacts.py)
+    contacts: tuple[Contact, ...] = ()  # rolling contacts and strings (problem/sections/contacts.py)
     dimensions: tuple[tuple[str, Dimension], ...] = ()  # parameters whose dimension is known
-    forces: tuple[Force, ...] = ()  # applied forces (problem/loads.py)
+    forces: tuple[Force, ...] = ()  # applied forces (problem/sections/loads.py)
     couples: tuple[Couple, ...] = ()  # applied couples and motor torques
 
     def frame(self, name: str) -> Frame:

@@ -1,7 +1,7 @@
 """Which declared parameters the problem uses: a parameter no expression of the scene or
 of a question names changes no answer, and is most likely a line left out (a pendulum
 whose ``gravity:`` was forgotten has g declared and used nowhere: V = 0, a "neutral"
-equilibrium, λ = 0). The solvers warn of it (``solvers/shared/summary.py``).
+equilibrium, λ = 0). The solvers warn of it (``model/summary/summary.py``).
 
 Used means named by an expression anywhere but ``parameters:`` themselves, ``values:``
 (a value uses nothing) and ``assumptions:`` (a bound on a parameter that nothing else

@@ -8,7 +8,7 @@ from rbdsolve.render import spreadsheet
 from rbdsolve.render.json_text import strict_json
 from rbdsolve.render.latex import PREAMBLE, text
 from rbdsolve.report.variants import VariantTable
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 
 NUMBER_FORMAT = "{:.10g}"  # ten significant digits: exact to well past what an exam marks
 

@@ -3,7 +3,7 @@ solution prints it by (ω₁, λ₂, M, K, Ω_c, v_G1), with its unit and what a
 beside it (a frequency's period, an angle in degrees, the fraction of energy lost).
 
 A family says which answers carry which printed name (``Named``: a path in the answers
-tree, docs/json.md, and the name); ``solvers/shared/numbers.py`` reads their values and
+tree, docs/json.md, and the name); ``model/values/numbers.py`` reads their values and
 units and writes the lines (``Number``), which every renderer prints. The grading of a
 student's answers reads the same names (teaching/), so that ``omega_c = …`` is checked
 against the answer the solution calls ω_c.

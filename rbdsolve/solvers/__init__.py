@@ -6,10 +6,14 @@ dataclasses, the JSON contract), ``exact.py`` (sympy, rational arithmetic) and
 
     solve(question, model, options) -> Solution
 
-and ``steps.py``, where both routes write their worked solutions. ``shared/`` holds the
-machinery several families use: options and routes, the time budget, signs decided
-exactly, numeric values, the model section of a report, the numeric model of a scene
-and its root search, moving frames.
+and ``steps.py``, where both routes write their worked solutions. Beside the families,
+the machinery several use, each folder named for what it holds: ``conditions/``
+(conditions on the parameters, signs decided exactly), ``configuration/`` (the
+placement of a scene, singular points), ``numeric/`` (the numeric model of a scene and
+its root search), ``routes/`` (options and routes, the time budget, the checks),
+``lagrange/`` (accelerations, the energy integral, moving frames). Numeric values
+and units live in rbdsolve/model/values/, the model section of a report in
+rbdsolve/model/summary/.
 
     family          question          what it answers
     eom/            eom               Lagrange's equations, in moving frames too
@@ -29,9 +33,9 @@ from __future__ import annotations
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report.steps import ProblemReport, Solution
-from rbdsolve.solvers.shared import routes
-from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.routes import Family, later, later_check, later_residuals
+from rbdsolve.solvers.routes import routes
+from rbdsolve.solvers.routes.options import Options, RouteChoice
+from rbdsolve.solvers.routes.routes import Family, later, later_check, later_residuals
 
 FAMILIES = {
     QuestionKind.EOM: Family(later("eom.exact"), later("eom.numeric"), named=later("eom.named", "named")),

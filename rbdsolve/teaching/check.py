@@ -29,7 +29,7 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
 from rbdsolve.report.tree import label, leaves
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
-from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
+from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.teaching.addresses import resolve
 from rbdsolve.teaching.compare import Sampler, compare, value_at
 from rbdsolve.teaching.files import read_file

@@ -29,7 +29,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
+from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.teaching.verdicts import (FACTOR_SLIPS, Different, EqualFor, Equivalent, Factor, Proof, Root,
                                         SignDiffers, Slip, Undecided, Verdict)
 

@@ -124,7 +124,7 @@ def grade(key: Key, answers_file: str, rule: Rule = Rule(), budget: float | None
     within ``budget`` seconds of processor time (None: no limit; past it an
     UnsolvedError). More than MAX_STUDENTS rows, MAX_COLUMNS columns or MAX_MARKS
     answers is refused (an InputError) as soon as it is seen."""
-    from rbdsolve.solvers.shared.budget import OutOfTime, within
+    from rbdsolve.solvers.routes.budget import OutOfTime, within
 
     text = read_file(answers_file)
     try:

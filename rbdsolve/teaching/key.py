@@ -25,7 +25,7 @@ from typing import Callable, Mapping, Sequence
 
 from rbdsolve.errors import InputError
 from rbdsolve.problem.schema import Problem
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture, default_title
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.render.files import publish, require_folder, staging, write_file
@@ -179,7 +179,7 @@ def _pictures(problem: Solved, folder: Path, home: Path, stem: str, suffix: str,
     scene that is not planar. A picture that fails is noted and left out."""
     from rbdsolve.model.build import build_model
     from rbdsolve.render.drawing.figures import save_figures
-    from rbdsolve.solvers.shared.budget import MIN_SHARE, OutOfTime, within
+    from rbdsolve.solvers.routes.budget import MIN_SHARE, OutOfTime, within
 
     try:
         with within(None if budget is None else max(budget - problem.spent, MIN_SHARE), "the pictures", budget):

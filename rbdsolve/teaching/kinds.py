@@ -19,7 +19,7 @@ import sympy as sp
 from sympy.logic.boolalg import BooleanAtom
 
 from rbdsolve.model.symbols import exact_number
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.tree import Path, leaves
 
 KIND_FIELDS = ("stability", "motions")  # the answers' fields that hold a kind

@@ -37,15 +37,15 @@ from sympy.core.function import AppliedUndef
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem.schema import Problem, ValueRange
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
 from rbdsolve.report.tree import Path, label, leaves
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.budget import Allowance, OutOfTime, within
-from rbdsolve.solvers.shared.options import Options, RouteChoice
-from rbdsolve.solvers.shared.values import numeric
+from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
+from rbdsolve.solvers.routes.options import Options, RouteChoice
+from rbdsolve.model.values.values import numeric
 
 VERIFY_RTOL = 1e-9  # |table − full solve| ≤ VERIFY_RTOL·max(|a|, |b|) + VERIFY_ATOL
 VERIFY_ATOL = 1e-12

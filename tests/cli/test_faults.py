@@ -48,7 +48,7 @@ def test_a_budget_that_rings_at_once_stops_the_work_not_the_process() -> None:
     ring is left to kill the process with SIGPROF's default action ("Profiling timer
     expired", exit code 155)."""
     code = ("import time, sympy as sp\n"
-            "from rbdsolve.solvers.shared.budget import within, OutOfTime\n"
+            "from rbdsolve.solvers.routes.budget import within, OutOfTime\n"
             "x = sp.Symbol('x')\n"
             "for i in range(300):\n"
             "    try:\n"

@@ -4,8 +4,8 @@ on a quiet machine and on one whose cores are busy with other work.
 The scenes are ones that sat at the old budget's edge: their exact route ran sympy's
 solve for 18 to 60 s and the numeric route started only when that ran out, so a busy
 machine changed the route and the exit code. Now the route is chosen from the
-equations' structure (solvers/shared/routes.py) and the budget counts processor time
-(solvers/shared/budget.py). Each is solved as a whole process once on the machine as it
+equations' structure (solvers/routes/routes.py) and the budget counts processor time
+(solvers/routes/budget.py). Each is solved as a whole process once on the machine as it
 is, then again while two busy-loop processes keep both cores loaded; the JSON, without
 its ``seconds``, is the same. No clock is read: the 600 s timeouts guard against a hang.
 """

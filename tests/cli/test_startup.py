@@ -15,8 +15,8 @@ from rbdsolve.cli.app import COMMANDS
 HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
 COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imported when its command runs
 # imported only for a scene or question that uses them: seed problem 1 has none
-FEATURES = ("rbdsolve.model.contacts", "rbdsolve.model.plane_rolling", "rbdsolve.solvers.modes.amplitude",
-            "rbdsolve.solvers.shared.monotone")
+FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.plane_rolling", "rbdsolve.solvers.modes.amplitude",
+            "rbdsolve.solvers.conditions.monotone")
 WATCHED = HEAVY + COMMAND_MODULES + FEATURES
 
 

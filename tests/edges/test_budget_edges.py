@@ -3,7 +3,7 @@ whole process. A 64-link chain of rods with symbolic m, l, g: the exact route's 
 section and its modes each take seconds of processor time, twenty times a budget of
 0.1 s, so the budget runs out on any machine, quiet or loaded (the budget counts
 processor time). That auto then answers on the numeric route, with the budget again,
-is tested with a fake route (tests/solvers/shared/test_routes.py): no budget separates
+is tested with a fake route (tests/solvers/routes/test_routes.py): no budget separates
 the two real routes by a wide enough margin on every machine.
 """
 
@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-from rbdsolve.solvers.shared.budget import available
+from rbdsolve.solvers.routes.budget import available
 
 pytestmark = pytest.mark.skipif(not available(), reason="no SIGPROF on this platform")
 

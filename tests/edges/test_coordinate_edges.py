@@ -16,7 +16,7 @@ import sympy as sp
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 
 def _report(text: str, route: RouteChoice = RouteChoice.AUTO):

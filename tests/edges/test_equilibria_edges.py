@@ -21,7 +21,7 @@ from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.equilibria import exact as equilibria
 from rbdsolve.solvers.equilibria import numeric as equilibria_numeric
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 TOL = 1e-9
 

@@ -26,7 +26,7 @@ import sympy as sp
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_file, solve_problem
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 SCENE = """\
 parameters: {m: mass, l: length, g: gravity, Omega: rate of turning}

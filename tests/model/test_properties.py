@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import kinetic_energy, mass_matrix
+from rbdsolve.model.energies.energy import kinetic_energy, mass_matrix
 from rbdsolve.problem import load_text
 
 SHAPES = {

@@ -9,7 +9,7 @@ import pytest
 import sympy as sp
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import kinetic_energy
+from rbdsolve.model.energies.energy import kinetic_energy
 from rbdsolve.model.rotation import sequence_rotation, turns_angular_velocity, turns_conjugate, unit_turns, vee
 from rbdsolve.model.state import State, t
 from rbdsolve.problem import load_text

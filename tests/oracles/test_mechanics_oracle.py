@@ -33,7 +33,7 @@ from sympy.physics.mechanics import (
 )
 
 from rbdsolve.model.build import build_model
-from rbdsolve.model.energy import (
+from rbdsolve.model.energies.energy import (
     kinetic_energy,
     mass_matrix,
     potential_energy,

@@ -14,7 +14,7 @@ import json
 import math
 from fractions import Fraction
 
-from rbdsolve.problem.quantity import Value
+from rbdsolve.problem.quantities.quantity import Value
 
 import pytest
 from click.testing import CliRunner

@@ -61,8 +61,8 @@ class ModeShapes:
 def mode_shapes(model: Model, question: Question) -> ModeShapes:
     """The mode pictures of a modes question; NotDrawable for a scene that is not planar,
     UnsolvedError where the numeric route cannot answer (no stable equilibrium, singular M)."""
-    from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
-    from rbdsolve.solvers.shared.numeric_model import linearized
+    from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
+    from rbdsolve.solvers.numeric.numeric_model import linearized
 
     require_planar(model)
     filled = model.with_values({name: Fraction(1) for name in unvalued(model)})
@@ -84,12 +84,12 @@ def mode_shapes(model: Model, question: Question) -> ModeShapes:
 
 def _in_frame(model: Model, question: Question) -> Model:
     """The model as the question's frame sees it (the solvers' own view), if it names one."""
-    from rbdsolve.solvers.shared.frames import frame_of
+    from rbdsolve.solvers.lagrange.frames import frame_of
 
     name = frame_of(question)
     if name is None:
         return model
-    from rbdsolve.model.frames import frame_motion, in_frame
+    from rbdsolve.model.energies.frames import frame_motion, in_frame
 
     return in_frame(model, frame_motion(model, model.problem.frame(name)))
 

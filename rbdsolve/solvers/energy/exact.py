@@ -1,5 +1,5 @@
 """The energy question, exact: the energy integral from the start state
-(shared/energy_integral.py); with one coordinate q̇²(q) = 2 (h₀ + T₀ − V)/M, each point's
+(solvers/lagrange/energy_integral.py); with one coordinate q̇²(q) = 2 (h₀ + T₀ − V)/M, each point's
 v² = |∂r_P/∂q|² q̇² along the motion, and both at the configuration asked (``to``),
 where the rate is |q̇| = √(q̇²) and a point's speed |v| = √(v²), unless q̇² < 0 there
 (the motion does not reach it); where the parameters decide that, the condition for
@@ -18,11 +18,11 @@ from rbdsolve.problem.schema import EnergyOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.energy.answers import EnergyAnswers, There
 from rbdsolve.solvers.energy.steps import exact_steps
-from rbdsolve.solvers.shared.accelerations import at_state, clean_fraction, state_values
-from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_integral, not_conserved
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.conditions import Critical, critical_values, nonnegative_where
-from rbdsolve.solvers.shared.signs import sign_of
+from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
+from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral, energy_integral, not_conserved
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.conditions.conditions import Critical, critical_values, nonnegative_where
+from rbdsolve.solvers.conditions.signs import sign_of
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
@@ -55,7 +55,7 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
 
 def _work(model: Model, start: dict) -> dict[str, sp.Expr]:
     """Each applied load's work from the start state, W = −ΔV_F = V_F(q₀) − V_F(q) (a
-    load in the energy integral has a potential: model/loads.py)."""
+    load in the energy integral has a potential: model/energies/loads.py)."""
     return {x.name: tidy(sp.expand(x.potential.xreplace(start) - x.potential)) for x in model.loads
             if x.potential is not None}
 

@@ -10,8 +10,9 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.energy.answers import NumericEnergyAnswers
 from rbdsolve.solvers.energy.exact import energy
 from rbdsolve.solvers.energy.steps import numeric_steps
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import numeric, require_values
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.model.values.values import numeric
+from rbdsolve.solvers.routes.needed import require_values
 
 ROUNDING = 1e-15  # one rounding of each evaluated expression, relative
 

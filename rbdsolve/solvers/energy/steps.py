@@ -11,9 +11,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import EnergyOptions
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.energy.answers import EnergyAnswers, NumericEnergyAnswers
-from rbdsolve.solvers.shared.accelerations import state_step
-from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_step
-from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
+from rbdsolve.solvers.lagrange.accelerations import state_step
+from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral, energy_step
+from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps
 
 
 def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, opts: EnergyOptions, model: Model) -> tuple[st.Step, ...]:

@@ -18,24 +18,24 @@ import sympy as sp
 from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import kinetic_energy, potential_energy
-from rbdsolve.model.frames import frame_lagrangian, frame_motion
-from rbdsolve.model.loads import free_forces
+from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
+from rbdsolve.model.energies.frames import frame_lagrangian, frame_motion
+from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
 from rbdsolve.solvers.eom.steps import frame_steps, instant_steps, lagrange_step, singular_step, solved_step
-from rbdsolve.solvers.shared.accelerations import accelerations, at_state, state_values
-from rbdsolve.solvers.shared.frames import refuse_loads_in_frame
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import eom_warnings
+from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import eom_warnings
 
 
 def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr, ...]:
     """E_i = d/dt(∂L/∂q̇_i) − ∂L/∂q_i − Q_i for each coordinate, in the model's plain
     symbols; L = T − V unless given, Q_i the generalized forces of the applied loads that
-    have no potential (model/loads.py; the others are in V)."""
+    have no potential (model/energies/loads.py; the others are in V)."""
     if L is None:
         L = kinetic_energy(model).total - potential_energy(model).total
     Q = free_forces(model) or (0,) * len(model.q)

@@ -8,7 +8,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.naming import coordinate
+from rbdsolve.solvers.routes.naming import coordinate
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:

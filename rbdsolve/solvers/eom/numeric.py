@@ -27,18 +27,18 @@ import sympy as sp
 
 from rbdsolve.form.tidy import collect_in
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import body_kinetic_energy, potential_terms
-from rbdsolve.model.frames import frame_lagrangian, frame_motion
-from rbdsolve.model.loads import free_forces
+from rbdsolve.model.energies.energy import body_kinetic_energy, potential_terms
+from rbdsolve.model.energies.frames import frame_lagrangian, frame_motion
+from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import NumericEomAnswers, NumericFrameAnswers
 from rbdsolve.solvers.eom.steps import numeric_steps
-from rbdsolve.solvers.shared.frames import refuse_loads_in_frame
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import eom_warnings
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import eom_warnings
+from rbdsolve.solvers.routes.needed import require_values
 
 FLOAT_DIGITS = 15  # sympy Float of 15 digits carries 53 bits, a binary64's precision
 REFERENCE_DIGITS = 50
@@ -76,7 +76,7 @@ def _scene_lagrangian(model: Model, digits: int) -> sp.Expr:
 
 
 def _free_forces(model: Model, digits: int) -> tuple[sp.Expr, ...] | None:
-    """Q_i of the loads without a potential (model/loads.py), values as floats."""
+    """Q_i of the loads without a potential (model/energies/loads.py), values as floats."""
     Q = free_forces(model)
     return None if Q is None else tuple(_floats(x, model, digits) for x in Q)
 

@@ -11,10 +11,10 @@ from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
+from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.eom.answers import NumericEomAnswers
-from rbdsolve.solvers.shared.accelerations import state_step
-from rbdsolve.solvers.shared.present import present, present_equation
+from rbdsolve.solvers.lagrange.accelerations import state_step
+from rbdsolve.model.summary.present import present, present_equation
 
 
 def frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: bool) -> list[st.Step]:

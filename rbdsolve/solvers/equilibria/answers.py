@@ -8,7 +8,7 @@ from typing import Mapping
 
 import sympy as sp
 
-from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.conditions.conditions import CriticalValue
 
 
 class Stability(Enum):
@@ -47,7 +47,7 @@ class Equilibrium:
 
 @dataclass(frozen=True)
 class SingularPoint:
-    """A solution of ∂V/∂q = 0 where the coordinates are singular (solvers/shared/
+    """A solution of ∂V/∂q = 0 where the coordinates are singular (solvers/configuration/
     placement.py): not reported as an equilibrium."""
 
     at: Mapping[str, sp.Expr]

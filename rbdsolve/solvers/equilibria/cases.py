@@ -1,6 +1,6 @@
 """Equilibria whose existence or stability depends on the parameters, as exams state
 them: "exists when Ω ≥ Ω_c", "stable when Ω < Ω_c, unstable when Ω > Ω_c", with
-Ω_c = √(g/R) (``solvers/shared/conditions.py`` cuts a parameter's range into pieces
+Ω_c = √(g/R) (``solvers/conditions/conditions.py`` cuts a parameter's range into pieces
 at its critical values and finds the sign on each).
 
 Existence: each condition c ≥ 0 (a radicand, 1 − x² under acos, a spring's signed
@@ -21,20 +21,20 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.model.spring_length import held_sides
+from rbdsolve.model.energies.spring_length import held_sides
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
-from rbdsolve.solvers.shared.condition_roots import angle_parameters
-from rbdsolve.solvers.shared.conditions import (Critical, Piece, at_samples, changes, existing, exists_when, partition,
+from rbdsolve.solvers.conditions.condition_roots import angle_parameters
+from rbdsolve.solvers.conditions.conditions import (Critical, Piece, at_samples, changes, existing, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
-from rbdsolve.solvers.shared.signs import Undecided, matrix_inertia
+from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia
 
 
 def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
     """What must be ≥ 0 for the solution ``at`` of ∂V/∂q = 0 to be an equilibrium of the
     scene: its radicands, 1 − c² under acos (its values real), and each spring's signed
-    length s·u there (the spring on the side it is drawn on: model/spring_length.py)."""
+    length s·u there (the spring on the side it is drawn on: model/energies/spring_length.py)."""
     return [*real_where(at.values()), *held_sides(model.springs, at)]
 
 

@@ -1,5 +1,5 @@
 """What an equilibrium must satisfy, for the check before it is printed
-(shared/checks.py): ∂V/∂q = 0 there, for every coordinate, wherever it exists."""
+(solvers/routes/checks.py): ∂V/∂q = 0 there, for every coordinate, wherever it exists."""
 
 from __future__ import annotations
 
@@ -8,10 +8,10 @@ import sympy as sp
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import potential_energy
+from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium
-from rbdsolve.solvers.shared.checks import Residual, Vanishes
+from rbdsolve.solvers.routes.checks import Residual, Vanishes
 
 
 def residuals(question: Question, model: Model, answers: object) -> tuple[Residual, ...]:

@@ -27,7 +27,7 @@ import sympy as sp
 
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.shared.values import parameter_sample
+from rbdsolve.model.values.values import parameter_sample
 
 COMBINATIONS = 256
 SCREEN = 1e-12  # |value| at the sample above this (relative to the equation's scale) rejects at once

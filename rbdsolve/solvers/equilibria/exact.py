@@ -29,25 +29,25 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import hessian, memoized, potential_energy
-from rbdsolve.model.spring_length import without_deltas
+from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
+from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.cases import existing_where, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
-from rbdsolve.solvers.shared.polynomial import polynomial_roots, trig_mixed
+from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
-from rbdsolve.solvers.shared.conditions import asked, critical_values, what_decides
+from rbdsolve.solvers.conditions.conditions import asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
-from rbdsolve.solvers.shared import contact_span
-from rbdsolve.solvers.shared.frames import require_static, spin_warnings
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.shared.search_box import search_rule
-from rbdsolve.solvers.shared.signs import Inertia, Undecided, matrix_inertia, sign_of, symbolic_sign
-from rbdsolve.solvers.shared.values import sample
+from rbdsolve.solvers.configuration import contact_span
+from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
+from rbdsolve.solvers.numeric.search_box import search_rule
+from rbdsolve.solvers.conditions.signs import Inertia, Undecided, matrix_inertia, sign_of, symbolic_sign
+from rbdsolve.model.values.values import sample
 
 
 @memoized
@@ -111,7 +111,7 @@ def incomplete(model: Model) -> str | None:
 
 
 def partial(question: Question, model: Model) -> str | None:
-    """The route choice's check (shared/routes.py): ``incomplete``."""
+    """The route choice's check (solvers/routes/routes.py): ``incomplete``."""
     return incomplete(model)
 
 
@@ -281,7 +281,7 @@ def proved_monotone(model: Model) -> tuple[dict, str] | None:
     equations, unknowns, _ = equations_and_unknowns(model)
     if len(equations) != 1 or len(unknowns) != 1 or not trig_mixed(equations[0], unknowns[0]):
         return None
-    from rbdsolve.solvers.shared.monotone import monotone_root  # only for such an equation: ~0.5 ms of start-up
+    from rbdsolve.solvers.conditions.monotone import monotone_root  # only for such an equation: ~0.5 ms of start-up
 
     (e,), (q,) = equations, unknowns
     found = monotone_root(e, q, model.decided_by)
@@ -384,10 +384,10 @@ class Listing:
 def listing(model: Model) -> Listing:
     """The equilibria as the report lists them: solutions of ∂V/∂q = 0 at singular
     points of the coordinates set apart unless the fibre test shows an equilibrium
-    (solvers/shared/placement.py), and solutions that are one configuration (the same
+    (solvers/configuration/placement.py), and solutions that are one configuration (the same
     orientation, or the same up to a coordinate V does not depend on) merged into the
     first, the others named as equivalent. Solutions where a contact point would be off
-    its edge (solvers/shared/contact_span.py) are dropped, a warning saying why."""
+    its edge (solvers/configuration/contact_span.py) are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
     solutions, off = contact_span.split(model, solutions)
     warnings = [*warnings, *contact_span.warnings(off), *contact_span.undecided(model, solutions)]

@@ -8,8 +8,8 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.naming import criticals, state
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.routes.naming import criticals, state
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:

@@ -33,19 +33,19 @@ from rbdsolve.solvers.equilibria.answers import (
     Stability,
 )
 from rbdsolve.solvers.equilibria.steps import numeric_steps
-from rbdsolve.solvers.shared.frames import require_static, spin_warnings
-from rbdsolve.solvers.shared.numeric_model import (
+from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
+from rbdsolve.solvers.numeric.numeric_model import (
     CURVATURE_TOL,
     compiled_gradient,
     continuum_text,
     find_numeric,
     periodic_angles,
 )
-from rbdsolve.solvers.shared import contact_span
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.search_box import box_text
-from rbdsolve.solvers.shared.placement import SUGGESTION, numeric_listing
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.configuration import contact_span
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.numeric.search_box import box_text
+from rbdsolve.solvers.configuration.placement import SUGGESTION, numeric_listing
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

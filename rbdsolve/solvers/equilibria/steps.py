@@ -11,9 +11,9 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
+from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, NumericEquilibriaAnswers
-from rbdsolve.solvers.shared.present_conditions import condition_relation, condition_relations, critical_steps
+from rbdsolve.solvers.conditions.present_conditions import condition_relation, condition_relations, critical_steps
 
 
 def exact_steps(answers: EquilibriaAnswers, grad: tuple[sp.Expr, ...], model: Model,
@@ -80,7 +80,7 @@ def _shown(name: str, value: float, recognized) -> sp.Expr:
 
 def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
     # numpy's machinery only here: the exact route's steps load none of it
-    from rbdsolve.solvers.shared.numeric_model import CURVATURE_TOL, continuum_text
+    from rbdsolve.solvers.numeric.numeric_model import CURVATURE_TOL, continuum_text
 
     names = model.coordinate_names()
     steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),

@@ -25,7 +25,7 @@ and so whether the exact route can list every solution before it tries.
   equation vanish exactly.
 
 ``exact.incomplete(model)`` says why the exact list would be partial, or None: the
-route choice (``shared/routes.py``) then runs the numeric search at once where every
+route choice (``solvers/routes/routes.py``) then runs the numeric search at once where every
 parameter has a value, instead of waiting for the exact route to give up.
 """
 

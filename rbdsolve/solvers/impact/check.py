@@ -1,5 +1,5 @@
 """What an impact's answers must satisfy, for the check before they are printed
-(shared/checks.py): the velocities after solve Lagrange's equations for impact with
+(solvers/routes/checks.py): the velocities after solve Lagrange's equations for impact with
 the generalized impulses answered,
 
     ∂T/∂q̇_a |_f − ∂T/∂q̇_a |_i − I_a = 0,
@@ -16,7 +16,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import ImpactOptions, Question
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.impact.equations import Instant, blows, instant
-from rbdsolve.solvers.shared.checks import Residual, Vanishes
+from rbdsolve.solvers.routes.checks import Residual, Vanishes
 
 
 def residuals(question: Question, model: Model, answers: object) -> tuple[Residual, ...]:

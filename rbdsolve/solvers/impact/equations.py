@@ -34,14 +34,14 @@ from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.form.stand_ins import stand_ins
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
-from rbdsolve.model.energy import body_kinetic_energy, tidy_quadratic
-from rbdsolve.model.plane_rolling import material_velocity, tangents
+from rbdsolve.model.energies.energy import body_kinetic_energy, tidy_quadratic
+from rbdsolve.model.constraints.plane_rolling import material_velocity, tangents
 from rbdsolve.model.state import t
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.impact import restitution_message
+from rbdsolve.problem.sections.impact import restitution_message
 from rbdsolve.problem.schema import Collision, ImpactOptions
 from rbdsolve.solvers.impact.answers import ImpactAnswers
-from rbdsolve.solvers.shared.singular import exact_reason
+from rbdsolve.solvers.configuration.singular import exact_reason
 
 
 @dataclass(frozen=True)
@@ -73,7 +73,7 @@ class Instant:
 
     def velocity(self, point: str) -> sp.Matrix:
         """A point's velocity at the instant; at a contact on a plane, the body's material
-        point there (model/plane_rolling.py)."""
+        point there (model/constraints/plane_rolling.py)."""
         contact = next((c for c in self.model.plane_contacts if c.name == point), None)
         if contact is not None:
             body = next(b for b in self.model.bodies if b.name == contact.body)

@@ -8,7 +8,7 @@ from rbdsolve.problem.schema import ImpactOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.impact.equations import ImpactEquations, blows, instant, require_known
 from rbdsolve.solvers.impact.steps import exact_steps
-from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.routes.options import Options
 
 
 def solve(question: Question, model: Model, options: Options) -> Solution:

@@ -9,7 +9,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
 from rbdsolve.report.numbers import Meaning, Named
-from rbdsolve.solvers.shared.naming import per_coordinate
+from rbdsolve.solvers.routes.naming import per_coordinate
 
 T_I, T_F = sp.Symbol("T_i"), sp.Symbol("T_f")
 

@@ -19,10 +19,11 @@ from rbdsolve.problem.schema import ImpactOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.impact.equations import ImpactEquations, blows, instant
 from rbdsolve.solvers.impact.steps import numeric_steps
-from rbdsolve.solvers.shared.numeric_model import to_floats
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import float_reason
-from rbdsolve.solvers.shared.values import require_values, with_floats
+from rbdsolve.solvers.numeric.numeric_model import to_floats
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import float_reason
+from rbdsolve.model.values.values import with_floats
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

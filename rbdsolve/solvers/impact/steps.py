@@ -15,8 +15,8 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Step
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.impact.equations import ImpactEquations
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.signs import sign_of
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.conditions.signs import sign_of
 
 
 

@@ -37,7 +37,7 @@ def at_configuration(model: Model, at: dict[sp.Symbol, sp.Expr]) -> Model:
 
 def about_point(opts: InertiaOptions, model: Model, at: dict[sp.Symbol, sp.Expr]) -> sp.Matrix:
     """The point asked about, at the configuration: a point, a position, or a contact's
-    point C (where a rolling body touches: model/contacts.py)."""
+    point C (where a rolling body touches: model/constraints/contacts.py)."""
     contacts = {c.name: c.point for c in model.contacts}
     names = model.symbols.with_points({**model.points, **contacts})
     return names.vector(opts.about).xreplace(at)

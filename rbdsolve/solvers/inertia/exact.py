@@ -49,8 +49,8 @@ from rbdsolve.solvers.inertia.steps import (
     scene_axes_step,
     shift_steps,
 )
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import sample
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.model.values.values import sample
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 

@@ -9,8 +9,8 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.naming import state
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.routes.naming import state
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:

@@ -26,9 +26,9 @@ from rbdsolve.solvers.inertia.answers import NumericInertiaAnswers
 from rbdsolve.solvers.inertia.configuration import about_point, at_configuration, substitution
 from rbdsolve.solvers.inertia.exact import axis_moment, frame_matrix, in_plane
 from rbdsolve.solvers.inertia.steps import numeric_steps
-from rbdsolve.solvers.shared.numeric_model import to_floats
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.numeric.numeric_model import to_floats
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 

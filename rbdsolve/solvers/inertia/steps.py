@@ -13,7 +13,7 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
+from rbdsolve.solvers.routes.labels import labels_for
 
 STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
 

@@ -17,7 +17,7 @@ from rbdsolve.problem.schema import KinematicsOptions, Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.kinematics.answers import Distance, KinematicsAnswers, PointMotion
 from rbdsolve.solvers.kinematics.steps import exact_steps
-from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.routes.options import Options
 
 RATE_NAMES = {0: "{}", 1: "dot({})", 2: "ddot({})"}
 

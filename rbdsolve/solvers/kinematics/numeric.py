@@ -14,8 +14,8 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.kinematics.answers import NumericDistance, NumericKinematicsAnswers, NumericPointMotion
 from rbdsolve.solvers.kinematics.exact import kinematics
 from rbdsolve.solvers.kinematics.steps import numeric_steps
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.routes.needed import require_values
 
 ROUNDING = 1e-15  # one rounding of each evaluated expression, relative
 

@@ -10,7 +10,7 @@ from rbdsolve.form.display import Math, Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.present import present
+from rbdsolve.model.summary.present import present
 from rbdsolve.solvers.kinematics.answers import KinematicsAnswers, NumericKinematicsAnswers
 
 

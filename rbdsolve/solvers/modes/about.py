@@ -6,7 +6,7 @@ within REFINE_TOL of it in every coordinate (angles modulo 2π), so that a root 
 with 6 digits is taken as the root itself, and a note says so. Farther away, refused,
 with the residual as a number. ``about: {equilibrium: N}``: the N-th listed
 equilibrium. Neither: the first stable one; when several are stable, a note names the
-others (the numeric route does the same, ``shared/chosen.py``).
+others (the numeric route does the same, ``solvers/numeric/chosen.py``).
 """
 
 from __future__ import annotations
@@ -22,9 +22,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, incomplete, listing
-from rbdsolve.solvers.shared import contact_span
-from rbdsolve.solvers.shared.chosen import REFINE_TOL, several_stable
-from rbdsolve.solvers.shared.values import missing_for
+from rbdsolve.solvers.configuration import contact_span
+from rbdsolve.solvers.numeric.chosen import REFINE_TOL, several_stable
+from rbdsolve.solvers.routes.needed import missing_for
 
 
 def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:

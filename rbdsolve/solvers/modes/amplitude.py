@@ -32,10 +32,11 @@ from typing import TYPE_CHECKING, Callable, Mapping, Sequence
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import mass_matrix, potential_energy
+from rbdsolve.model.energies.energy import mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
-from rbdsolve.solvers.shared.values import missing_values, numeric
+from rbdsolve.model.values.values import numeric
+from rbdsolve.solvers.routes.needed import missing_values
 
 if TYPE_CHECKING:  # numpy is imported where a check runs: a modes question without one needs none
     import numpy as np

@@ -9,7 +9,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.solvers.equilibria.answers import Stability
-from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.conditions.conditions import CriticalValue
 
 
 class Motion(Enum):

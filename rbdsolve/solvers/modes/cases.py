@@ -1,6 +1,6 @@
 """The kind of each small oscillation, and where it exists: oscillation, growth or
 neutral by the sign of λ; where the parameters decide that sign, the cases an exam
-writes ("oscillation when Ω < Ω_c, growth when Ω > Ω_c", ``shared/conditions.py``),
+writes ("oscillation when Ω < Ω_c, growth when Ω > Ω_c", ``solvers/conditions/conditions.py``),
 only where the equilibrium exists and the assumptions allow: a λ left with one case is
 of that kind (an off-axis equilibrium that exists only above Ω_c oscillates there), and
 a mode's cases are two or more (docs/json.md). What ``equilibria/cases.py`` is to equilibria.
@@ -13,13 +13,13 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
-from rbdsolve.model.spring_length import held_sides
+from rbdsolve.model.energies.spring_length import held_sides
 from rbdsolve.solvers.equilibria.cases import existing_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
-from rbdsolve.solvers.shared.conditions import changes, exists_when, existing, partition, what_decides
-from rbdsolve.solvers.shared.present_conditions import condition_text
-from rbdsolve.solvers.shared.signs import Inertia, Undecided, sign_of
+from rbdsolve.solvers.conditions.conditions import changes, exists_when, existing, partition, what_decides
+from rbdsolve.solvers.conditions.present_conditions import condition_text
+from rbdsolve.solvers.conditions.signs import Inertia, Undecided, sign_of
 
 
 def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
@@ -55,7 +55,7 @@ def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
 def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
           first: sp.Symbol | None = None):
     """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
-    parameters decide (its critical values: ``shared/conditions.py``), those outside
+    parameters decide (its critical values: ``solvers/conditions/conditions.py``), those outside
     ``where`` the equilibrium exists or outside the assumptions left out (a λ left with
     one case is of that kind: an off-axis equilibrium that exists only above Ω_c
     oscillates there). A λ has cases only where it has two or more; then its kind is

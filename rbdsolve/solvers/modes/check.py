@@ -1,5 +1,5 @@
 """What small oscillations must satisfy, for the check before they are printed
-(shared/checks.py): each eigenvalue λ makes K − λM singular, det(K − λM) = 0, and its
+(solvers/routes/checks.py): each eigenvalue λ makes K − λM singular, det(K − λM) = 0, and its
 mode shape a solves (K − λM) a = 0, wherever the equilibrium they are about exists.
 The text names λ₁ … and the equilibrium: "row 1 of (K − λ₁ M) a₁ about equilibrium 2"."""
 
@@ -10,7 +10,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.modes.answers import EachModesAnswers, ModesAnswers
-from rbdsolve.solvers.shared.checks import Pencil, Residual
+from rbdsolve.solvers.routes.checks import Pencil, Residual
 from rbdsolve.solvers.equilibria.cases import existing_where
 
 

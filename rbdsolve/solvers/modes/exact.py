@@ -35,8 +35,8 @@ from rbdsolve.form.display import Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model
-from rbdsolve.model.energy import mass_matrix, potential_energy, stiffness_matrix
-from rbdsolve.model.spring_length import without_deltas
+from rbdsolve.model.energies.energy import mass_matrix, potential_energy, stiffness_matrix
+from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes import gyroscopic
@@ -44,16 +44,16 @@ from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
-from rbdsolve.solvers.shared.present_conditions import condition_relations
+from rbdsolve.solvers.conditions.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
-from rbdsolve.solvers.shared.conditions import asked, critical_values
-from rbdsolve.solvers.shared.frames import require_static
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import exact_reason
-from rbdsolve.solvers.shared.values import sample
+from rbdsolve.solvers.conditions.conditions import asked, critical_values
+from rbdsolve.solvers.lagrange.frames import require_static
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import exact_reason
+from rbdsolve.model.values.values import sample
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword (the JSON's characteristic)
 MU = sp.Symbol("mu")
@@ -88,7 +88,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 
 
 def partial(question: Question, model: Model) -> str | None:
-    """The route choice's check (shared/routes.py), read from the structure: where the
+    """The route choice's check (solvers/routes/routes.py), read from the structure: where the
     modes are taken about an equilibrium the exact route must find (no ``about`` point,
     ``about: each``, or ``about: {equilibrium: N}``), why its list of equilibria would be
     partial; about a given point, why its eigenvalues would take minutes (``_slow_spectrum``).

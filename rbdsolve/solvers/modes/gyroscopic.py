@@ -21,7 +21,7 @@ stability is each of
     n = 3:  Δ > 0 (three distinct real roots),  −a₂/a₃ > 0,  a₁/a₃ > 0,  −a₀/a₃ > 0
 
 and the case analysis of these conditions on one parameter goes through the shared
-machinery (solvers/shared/conditions.py): the sleeping top, p(λ) = A²λ² + (2 A m g h −
+machinery (solvers/conditions/conditions.py): the sleeping top, p(λ) = A²λ² + (2 A m g h −
 C² s²) λ + m²g²h², is stable when Δ = C² s² (C² s² − 4 A m g h) > 0, s > s_c = 2√(A m g h)/C.
 
 The frequencies are written as an exam writes them: P factored over the parameters;
@@ -41,7 +41,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
+from rbdsolve.model.energies.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import Stability
@@ -49,10 +49,10 @@ from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.answers import GyroscopicCase, GyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic_steps import cyclic_note, gyroscopic_steps
 from rbdsolve.solvers.modes.routh import Linear, linearize
-from rbdsolve.solvers.shared.condition_roots import SAMPLES, admissible, angle_parameters
-from rbdsolve.solvers.shared.conditions import Piece, changes, critical_values, partition, sign_on
-from rbdsolve.solvers.shared.signs import Undecided, sign_of, symbolic_sign
-from rbdsolve.solvers.shared.values import sample
+from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters
+from rbdsolve.solvers.conditions.conditions import Piece, changes, critical_values, partition, sign_on
+from rbdsolve.solvers.conditions.signs import Undecided, sign_of, symbolic_sign
+from rbdsolve.model.values.values import sample
 
 OMEGA = sp.Symbol("omega")  # the variable of det(K − ω²M + iωG) (the JSON's characteristic)
 LAMBDA = sp.Symbol("lamda")
@@ -290,7 +290,7 @@ def _stability(conditions: list[sp.Expr], lam: sp.Poly, model: Model, quadratics
 def _cases(conditions: list[sp.Expr], model: Model, quadratics: list[sp.Expr]):
     """(cases, critical values) where the assumptions alone leave the stability open and
     one parameter's values split it: each condition's own partition of that parameter's
-    range (solvers/shared/conditions.py), the pieces between all their critical values
+    range (solvers/conditions/conditions.py), the pieces between all their critical values
     taken together, stable where every condition is positive; None where they do not
     split alike."""
     assumed = [sign_of(f, model.assumed) for f in conditions]

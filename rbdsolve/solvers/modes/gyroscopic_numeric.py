@@ -30,7 +30,7 @@ from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
 from rbdsolve.solvers.modes.routh import linearize
-from rbdsolve.solvers.shared.numeric_model import to_floats
+from rbdsolve.solvers.numeric.numeric_model import to_floats
 
 DIGITS = 50
 SAFETY = 10.0  # the bound is this many times the distance to the 50-digit eigenvalue
@@ -65,7 +65,7 @@ def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ..
         values = dict(question.options.about)
         return {q: model.symbols.scalar(values[n]) for q, n in zip(model.q, model.coordinate_names())
                 if n in values}, ()
-    from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
+    from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
 
     found, notes = equilibrium_for_modes(question, model)
     return {q: found[n] for q, n in zip(model.q, model.coordinate_names())}, notes

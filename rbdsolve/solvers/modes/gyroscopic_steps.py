@@ -16,9 +16,9 @@ from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.answers import GyroscopicModesAnswers
 from rbdsolve.solvers.modes.routh import Linear
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
-from rbdsolve.solvers.shared.signs import Inertia, matrix_inertia
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.conditions.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.conditions.signs import Inertia, matrix_inertia
 
 KEYS = ("mass_matrix", "stiffness_matrix", "gyroscopic_matrix", "displacement", "frequency", "growth_rate",
         "amplitude", "eigenvalue")

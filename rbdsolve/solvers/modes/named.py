@@ -12,7 +12,7 @@ from rbdsolve.report.tree import Path
 from rbdsolve.solvers.modes.answers import EachModesAnswers
 from rbdsolve.solvers.modes.steps import mode_labels
 from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_labels
-from rbdsolve.solvers.shared.naming import coordinate, criticals, state
+from rbdsolve.solvers.routes.naming import coordinate, criticals, state
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:

@@ -49,12 +49,12 @@ from rbdsolve.solvers.modes import gyroscopic
 from rbdsolve.solvers.modes.answers import EachModesAnswers, Motion, NumericModesAnswers, Skipped, with_amplitude_check
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
-from rbdsolve.solvers.shared.frames import require_static
-from rbdsolve.solvers.shared.chosen import equilibrium_for_modes
-from rbdsolve.solvers.shared.numeric_model import linearized
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.singular import float_reason
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.lagrange.frames import require_static
+from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
+from rbdsolve.solvers.numeric.numeric_model import linearized
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.configuration.singular import float_reason
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = float(np.finfo(float).eps)
 
@@ -78,8 +78,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 def _at_each(model: Model) -> Solution:
     """The modes at every equilibrium the numeric search lists (as 'equilibria' numbers
     them), each under its own heading; one that cannot be answered says why."""
-    from rbdsolve.solvers.shared.numeric_model import find_numeric
-    from rbdsolve.solvers.shared.placement import numeric_listing
+    from rbdsolve.solvers.numeric.numeric_model import find_numeric
+    from rbdsolve.solvers.configuration.placement import numeric_listing
 
     names = model.coordinate_names()
     found, skipped, steps, warned, estimates = [], [], [], [], []

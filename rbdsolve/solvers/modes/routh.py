@@ -33,10 +33,10 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energy import kinetic_energy, potential_energy
+from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.singular import exact_reason
+from rbdsolve.solvers.configuration.singular import exact_reason
 
 
 @dataclass(frozen=True)

@@ -16,10 +16,10 @@ from rbdsolve.form.printers import unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.present_conditions import condition_relation, critical_steps
+from rbdsolve.solvers.conditions.present_conditions import condition_relation, critical_steps
 from rbdsolve.solvers.modes.answers import Form, ModesAnswers, Motion, NumericModesAnswers
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE
-from rbdsolve.solvers.shared.labels import MODES, labels_for
+from rbdsolve.solvers.routes.labels import MODES, labels_for
 
 
 def _repeated_notes(eigenvalues: tuple[sp.Expr, ...], labels: Labels) -> list[st.Step]:

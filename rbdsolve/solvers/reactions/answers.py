@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.conditions.conditions import CriticalValue
 
 
 @dataclass(frozen=True)

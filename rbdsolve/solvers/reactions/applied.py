@@ -13,7 +13,7 @@ state). A torsional spring on an angle α = Σ c_B α_B + const (α_B body B's t
 angle about e_z) turns body B by M_B = −k s c_B e_z; what is left acts on the ground.
 
 An applied force F acts on its body at its point P; a couple M turns its body, and a
-motor's couple at a joint turns the other body by −M (model/loads.py).
+motor's couple at a joint turns the other body by −M (model/energies/loads.py).
 """
 
 from __future__ import annotations

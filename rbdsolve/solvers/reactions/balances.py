@@ -22,7 +22,7 @@ from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.applied import applied
-from rbdsolve.solvers.shared.accelerations import clean_fraction
+from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point
 
 

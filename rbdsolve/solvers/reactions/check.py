@@ -1,5 +1,5 @@
 """What the reactions must satisfy, for the check before they are printed
-(shared/checks.py): with the accelerations answered, Lagrange's equations vanish; with
+(solvers/routes/checks.py): with the accelerations answered, Lagrange's equations vanish; with
 them and the forces answered, every row of every held body's balances (Newton–Euler:
 m a_G = m g + Σ R, dL_G/dt = Σ M) does too, as functions of the state (the
 coordinates and rates drawn at random) and at the state asked for."""
@@ -14,8 +14,8 @@ from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions.answers import Reaction, ReactionsAnswers
 from rbdsolve.solvers.reactions.balances import balances, with_strings
 from rbdsolve.solvers.reactions.supports import held, planar
-from rbdsolve.solvers.shared.accelerations import state_values
-from rbdsolve.solvers.shared.checks import Residual, Vanishes
+from rbdsolve.solvers.lagrange.accelerations import state_values
+from rbdsolve.solvers.routes.checks import Residual, Vanishes
 
 
 def residuals(question: Question, model: Model, answers: object) -> tuple[Residual, ...]:

@@ -21,10 +21,10 @@ from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_str
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
-from rbdsolve.solvers.shared.accelerations import accelerations, at_state, clean_fraction, state_values
-from rbdsolve.solvers.shared.conditions import critical_values
-from rbdsolve.solvers.shared.energy_integral import energy_step
-from rbdsolve.solvers.shared.options import Options
+from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, clean_fraction, state_values
+from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.lagrange.energy_integral import energy_step
+from rbdsolve.solvers.routes.options import Options
 
 
 def setup(question: Question, model: Model):

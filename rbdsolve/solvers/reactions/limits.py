@@ -10,7 +10,7 @@ while the friction it needs is within reach, |F| ≤ μ N. So
 - the least coefficient of friction for rolling is μ = |F|/N (``least_mu``);
 - at a state, the support holds when N ≥ 0 (T ≥ 0), and rolls when μ ≥ |F|/N: where the
   parameters' signs do not decide N's, the condition solved for one parameter in the
-  form of the conditions on parameters (shared/conditions.py), "holds when ω ≤ ω_c",
+  form of the conditions on parameters (solvers/conditions/conditions.py), "holds when ω ≤ ω_c",
   with its critical values (``holds``).
 """
 
@@ -23,11 +23,11 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.supports import Held, How
-from rbdsolve.solvers.shared.accelerations import clean_fraction
+from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.model.assumptions import implies
-from rbdsolve.solvers.shared.conditions import Critical, nonnegative_where
-from rbdsolve.solvers.shared.polynomial import trig_transcendental
-from rbdsolve.solvers.shared.signs import Undecided, sign_of
+from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
+from rbdsolve.solvers.conditions.polynomial import trig_transcendental
+from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 
 
 def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:

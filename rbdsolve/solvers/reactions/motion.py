@@ -2,7 +2,7 @@
 as functions of the coordinate, and the contact limits.
 
 With one coordinate q and a Lagrangian that holds no t, the energy integral is
-constant (shared/energy_integral.py; T + V where T = ½ M q̇²):
+constant (solvers/lagrange/energy_integral.py; T + V where T = ½ M q̇²):
 
     ½ M(q) q̇² + V(q) = V(q₀)   ⇒   q̇² = 2 (V(q₀) − V(q)) / M(q),
 
@@ -16,8 +16,8 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.shared.accelerations import clean_fraction
-from rbdsolve.solvers.shared.energy_integral import EnergyIntegral, energy_integral, not_conserved
+from rbdsolve.solvers.lagrange.accelerations import clean_fraction
+from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral, energy_integral, not_conserved
 
 
 def energy(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyIntegral | None:

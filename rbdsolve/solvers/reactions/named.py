@@ -9,7 +9,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.naming import coordinate, criticals
+from rbdsolve.solvers.routes.naming import coordinate, criticals
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:

@@ -17,9 +17,9 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.reactions.answers import NumericReactionsAnswers
 from rbdsolve.solvers.reactions.balances import located, unheld
 from rbdsolve.solvers.reactions.exact import setup
-from rbdsolve.solvers.shared.accelerations import state_values
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.lagrange.accelerations import state_values
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.routes.needed import require_values
 
 EPS = 2.0**-52
 

@@ -11,13 +11,13 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
+from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.reactions.applied import Applied, applied
 from rbdsolve.solvers.reactions.balances import Balance
 from rbdsolve.solvers.reactions.supports import Held, How
-from rbdsolve.solvers.shared.accelerations import state_step
-from rbdsolve.solvers.shared.conditions import critical_values
-from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
+from rbdsolve.solvers.lagrange.accelerations import state_step
+from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps
 
 
 def _vector(v) -> str:

@@ -31,7 +31,7 @@ from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Support, SupportKind
-from rbdsolve.solvers.shared.values import parameter_sample
+from rbdsolve.model.values.values import parameter_sample
 
 _Z = sp.Matrix([0, 0, 1])
 

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rbdsolve.solvers.shared.conditions import CriticalValue
+from rbdsolve.solvers.conditions.conditions import CriticalValue
 
 
 @dataclass(frozen=True)

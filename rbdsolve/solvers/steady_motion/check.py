@@ -1,5 +1,5 @@
 """What a steady motion must satisfy, for the check before it is printed
-(shared/checks.py): each solution, put into the balances it was solved from
+(solvers/routes/checks.py): each solution, put into the balances it was solved from
 (``relations``, each = 0), makes every one of them vanish wherever it is real."""
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
-from rbdsolve.solvers.shared.checks import Residual, Vanishes
+from rbdsolve.solvers.routes.checks import Residual, Vanishes
 from rbdsolve.solvers.steady_motion.answers import SteadyMotionAnswers
 
 

@@ -37,10 +37,10 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.polynomial import polynomial_roots
-from rbdsolve.solvers.shared.values import parameter_sample
-from rbdsolve.solvers.shared.conditions import asked
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.conditions.polynomial import polynomial_roots
+from rbdsolve.model.values.values import parameter_sample
+from rbdsolve.solvers.conditions.conditions import asked
 from rbdsolve.solvers.steady_motion.answers import AtSolution, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.existence import absent_at_values, with_existence
 from rbdsolve.solvers.steady_motion.balances import (

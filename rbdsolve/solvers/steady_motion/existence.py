@@ -14,7 +14,7 @@ value of a square asked for ≥ 0: ``real_where``) is
 - dropped where the assumptions make it hold for every value (its sign is ≥ 0);
 - false where they make it fail for every value: the solution is never real, and is
   not listed;
-- else solved for one parameter (``exists_when`` of shared/conditions.py: rates first;
+- else solved for one parameter (``exists_when`` of solvers/conditions/conditions.py: rates first;
   at the given values of the others, where the problem gives some);
 - else stated as it is, ``D ≥ 0``: never dropped as if it always held.
 
@@ -34,11 +34,11 @@ from sympy.logic.boolalg import BooleanAtom
 from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.shared.condition_roots import admissible, angle_parameters
-from rbdsolve.solvers.shared.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values, exists_when,
+from rbdsolve.solvers.conditions.condition_roots import admissible, angle_parameters
+from rbdsolve.solvers.conditions.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values, exists_when,
                                                 real_where)
-from rbdsolve.solvers.shared.present_conditions import critical_names
-from rbdsolve.solvers.shared.signs import sign_of
+from rbdsolve.solvers.conditions.present_conditions import critical_names
+from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
 
 

@@ -9,7 +9,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.shared.naming import criticals
+from rbdsolve.solvers.routes.naming import criticals
 from rbdsolve.solvers.steady_motion.steps import omega_label
 
 

@@ -39,8 +39,8 @@ from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.routes.needed import require_values
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotion, NumericSteadyMotionAnswers
 from rbdsolve.solvers.steady_motion.balances import (
     angle_unknown,

@@ -12,8 +12,8 @@ from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import SteadyMotionOptions
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.labels import labels_for
-from rbdsolve.solvers.shared.present_conditions import condition_relations, critical_steps
+from rbdsolve.solvers.routes.labels import labels_for
+from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps
 from rbdsolve.solvers.steady_motion.answers import NumericSteadyMotionAnswers, SteadyMotionAnswers
 
 
@@ -123,7 +123,7 @@ def kinematics_step(vectors, Omega_T, omega, v_G, w: sp.Symbol = OMEGA) -> st.St
 
 def contact_point_step(name: str, offset, vectors) -> st.Step:
     """C on the plane: a sphere's point along −n, a rim's point nearest the plane
-    (model/plane_rolling.py), shown in the triad."""
+    (model/constraints/plane_rolling.py), shown in the triad."""
     return st.definition(f"The contact point {name} is where the body touches the plane: for a rim of radius ρ "
                          "and axis a on a plane of normal n, its point nearest the plane, r_C − r_G = "
                          "−ρ (n − (n·a) a)/|n − (n·a) a| (a sphere: −ρ n):",

@@ -34,8 +34,8 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.exact import principal
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.signs import sign_of
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_spin.answers import (
     Condition,
     SpinCase,

@@ -22,9 +22,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.numeric import principal_floats, relative_estimate
-from rbdsolve.solvers.shared.numeric_model import to_floats
-from rbdsolve.solvers.shared.options import Options
-from rbdsolve.solvers.shared.values import require_values
+from rbdsolve.solvers.numeric.numeric_model import to_floats
+from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.routes.needed import require_values
 from rbdsolve.solvers.steady_spin.answers import NumericSpin, NumericSteadySpinAnswers, Stability
 from rbdsolve.solvers.steady_spin.precession import numeric_precession, precession_steps
 from rbdsolve.solvers.steady_spin.steps import numeric_steps

@@ -25,7 +25,7 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import PrecessionOptions
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.shared.signs import sign_of
+from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_spin.answers import FreePrecession
 
 

@@ -20,7 +20,7 @@ SPOOL = (PROBLEMS / "forces" / "spool-pulled-at-angle.yaml").read_text(encoding=
 
 
 def _results(text: str, route: str | None = None) -> list[dict]:
-    from rbdsolve.solvers.shared.options import Options, RouteChoice
+    from rbdsolve.solvers.routes.options import Options, RouteChoice
 
     options = Options(route=RouteChoice(route)) if route else Options()
     report = solve_problem(build_model(load_text(text, "p.yaml")), options)

@@ -1,6 +1,6 @@
 """A chain of five links: Lagrange's equations are given, but the general q̈ (Cramer's
 rule: numerators of about 10⁴ operations) is too long to write out, and is refused at
-once rather than cancelled for minutes (shared/accelerations.py, NUMERATOR_OPS)."""
+once rather than cancelled for minutes (solvers/lagrange/accelerations.py, NUMERATOR_OPS)."""
 
 from __future__ import annotations
 

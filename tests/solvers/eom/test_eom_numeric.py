@@ -58,7 +58,7 @@ def test_a_value_with_pi_in_it_goes_in_as_a_float() -> None:
     from conftest import PROBLEMS
     from rbdsolve.render.json import report_object
     from rbdsolve.solvers import solve_problem
-    from rbdsolve.solvers.shared.options import Options, RouteChoice
+    from rbdsolve.solvers.routes.options import Options, RouteChoice
 
     text = (PROBLEMS / "contacts" / "wheel-on-incline.yaml").read_text(encoding="utf-8")
     model = build_model(load_text(text.replace("values: {alpha: 1/2}", "values: {alpha: pi/6, m: 1, g: 9.81, r: 1}"),

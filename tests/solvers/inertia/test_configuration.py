@@ -10,7 +10,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 PENDULUM = """
 parameters: {{m: mass, l: length}}

@@ -12,7 +12,7 @@ from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.modes.gyroscopic import essential, squares_out
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 m, h, A, C, g, s, k, r = sp.symbols("m h A C g s k r", positive=True)
 

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from rbdsolve.problem import load_file
-from rbdsolve.problem.overrides import checked_values, given_values
+from rbdsolve.problem.quantities.overrides import checked_values, given_values
 from rbdsolve.render.numbers import number_text
 from rbdsolve.solvers import Options, RouteChoice, solve_file
 

@@ -77,7 +77,7 @@ def test_a_tilt_with_no_compact_closed_form_falls_back_to_the_numeric_route() ->
     4 g sin θ is a quartic in sin θ. The exact route says so at once; auto takes the
     numeric route (θ needs no value there), whose solutions satisfy the relation by hand."""
     from rbdsolve.solvers import solve_file
-    from rbdsolve.solvers.shared.options import Options
+    from rbdsolve.solvers.routes.options import Options
 
     text = (PROBLEMS / "steady" / "rolling-coin.yaml").read_text().replace("solve_for: omega0**2", "solve_for: theta")
     text += "values: {m: 1, r: 1/50, R: 2/5, g: 981/100, omega0: 3}\n"

@@ -203,7 +203,7 @@ def _sampled_both_sides(report, values: dict, name: str, critical: float) -> Non
 def test_no_numeric_printer_shows_a_complex_value_as_a_pair() -> None:
     """values.numbers: a complex value is None, named by not_real, except in a record
     whose own exists_when is false there."""
-    from rbdsolve.solvers.shared.values import not_real, numbers
+    from rbdsolve.model.values.values import not_real, numbers
     from rbdsolve.solvers.steady_motion.answers import Branch
 
     x = sp.Symbol("x", positive=True)

@@ -11,7 +11,7 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
-from rbdsolve.solvers.shared.options import Options, RouteChoice
+from rbdsolve.solvers.routes.options import Options, RouteChoice
 
 SCENE = """\
 parameters: {{m: mass, r: radius, Omega: spin, w: rate across}}

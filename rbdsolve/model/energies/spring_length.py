@@ -1,0 +1,93 @@
+"""A spring's length as an exam writes it: d + x, not |d + x|.
+
+A linear spring's length is √(d·d), d = r_A − r_B; where d lies along one axis sympy
+writes √(u²) as |u|, and V = ½ k (|u| − l₀)² then gives sign(u) in ∂V/∂q and
+DiracDelta(u) in K. An exam takes the spring as it is drawn: u keeps the sign it has at
+the reference configuration (every coordinate 0) as long as the spring does not pass
+through zero length, so |u| = u there when u > 0 (−u when u < 0), decided by the
+parameters' signs and the assumptions (R = r + δ: ``model/assumptions.py``). Where that
+sign is not decided (u = h − l at q = 0, with nothing said of h and l), |u| stays and the
+model section states the two cases in words (``model/summary/summary.py``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class Length:
+    """One |u| in a spring's length: u, and its sign at the reference configuration
+    (1 or −1, by which |u| was written ±u), or None where it is not decided (|u| kept)."""
+
+    inside: sp.Expr
+    sign: int | None
+
+
+def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
+                  assumed: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, tuple[Length, ...]]:
+    """``length`` with each |u| written ±u where u's sign at ``reference`` (the
+    coordinates at 0) is decided by the parameters' signs or ``assumed`` (the
+    assumptions' substitutions), and what was done to each |u|."""
+    found = sorted(length.atoms(sp.Abs), key=sp.default_sort_key)
+    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed)) for a in found)
+    signed = {a: x.sign * x.inside for a, x in zip(found, lengths) if x.sign is not None}
+    return length.xreplace(signed), lengths
+
+
+def as_square_root(length: sp.Expr) -> sp.Expr:
+    """√(d·d) written √(u²) = |u| where d·d is a square once its sin² + cos² are
+    joined: a spring along a slope, d = (D − x)(cos α, sin α), has d·d = (D − x)²
+    (cos² α + sin² α), which sympy leaves as √(D² − 2 D x + x²); |D − x| is then the
+    form ``signed_length`` writes D − x. Small radicands only (trigsimp is slow), and
+    the length unchanged unless it became an |u|."""
+    if not (length.is_Pow and length.exp == sp.S.Half) or sp.count_ops(length.base) > _SMALL:
+        return length
+    joined = sp.sqrt(sp.factor(sp.trigsimp(length.base)))
+    return joined if joined.has(sp.Abs) else length
+
+
+_SMALL = 80  # operations in a radicand worth joining (two springs on a slope have ~30)
+
+
+def _sign_at(u: sp.Expr, reference: Mapping, assumed: Mapping) -> int | None:
+    """u's sign at the reference configuration, where the parameters' signs (or the
+    assumptions) decide it, and it is not 0; else None."""
+    value = u.xreplace(dict(reference))
+    for form in (value, value.xreplace(dict(assumed))):
+        for written in (form, sp.factor(form)):
+            if written.is_positive:
+                return 1
+            if written.is_negative:
+                return -1
+    return None
+
+
+def without_deltas(matrix: sp.Matrix) -> sp.Matrix:
+    """A Hessian at a configuration with each DiracDelta(u) whose u is not zero there
+    written 0: ∂²|u|/∂q² = 2 δ(u) (∂u/∂q)² vanishes wherever the spring's length is not
+    zero, and a spring of zero length at an equilibrium is no spring an exam draws. A
+    DiracDelta(0) (the length zero there whatever the parameters) is kept: V is not twice
+    differentiable there, and the solvers say so."""
+    deltas = {d: sp.Integer(0) for d in matrix.atoms(sp.DiracDelta) if sp.simplify(d.args[0]) != 0}
+    return matrix.xreplace(deltas) if deltas else matrix
+
+
+def held_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...]:
+    """s·u at the configuration ``at`` for each |u| of the springs' lengths written s·u
+    (``signed_length``): the stretch is the spring's own only where s·u ≥ 0, the spring
+    on the side it is drawn on. A bead on a turning rod held by a spring from the axis
+    (length |a + x|, written a + x) has the equilibrium x = m Ω² a/(k − m Ω²), where
+    a + x = a k/(k − m Ω²): one only where k > m Ω²; past it, the bead would sit
+    beyond the axis, the spring through zero length, where its V is not ½ k x²."""
+    sides = []
+    for spring in springs:
+        for x in spring.lengths:
+            if x.sign is not None:
+                side = sp.factor(x.sign * x.inside.xreplace(dict(at)))
+                if side not in sides:
+                    sides.append(side)
+    return tuple(sides)

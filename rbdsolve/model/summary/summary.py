@@ -1,0 +1,291 @@
+"""The model section of a report: coordinates, T and V, term by term, as in the seed's
+problem 1: T₁, T₂, then T = T₁ + T₂ with its common scale pulled out."""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rbdsolve.form.arrange import subscript
+from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.problem.schema import CoordinateKind
+from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
+from rbdsolve.report import steps as st
+from rbdsolve.report.steps import ModelSummary
+from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
+                                                  potential_steps, quadratic_products, terms)
+from rbdsolve.model.summary.present import present
+from rbdsolve.model.values.values import parameter_sample
+
+
+def coordinates_only(model: Model) -> ModelSummary:
+    """The model section of the numeric route: the coordinates; T and V are not
+    expanded (the solvers take M and K at a configuration, not T and V in full)."""
+    if not model.q:
+        return ModelSummary((), None, None, ())
+    q = sp.ImmutableMatrix([model.state.functions()])
+    return ModelSummary(model.state.functions(), None, None,
+                        (st.given("Generalized coordinates (T and V are not expanded on the numeric route):",
+                                  Relation(sp.Symbol("q"), q)), *rolling_steps(model)))
+
+
+KINETIC = "Kinetic energy, ½ m v·v + ½ ω·J ω per body (v and J at its centre of mass)"
+POTENTIAL = "Potential energy, −m g·r per body in gravity and ½ k s² per spring of stretch s"
+LOADED = ("Potential energy, −m g·r per body in gravity, ½ k s² per spring of stretch s, and the applied loads' "
+          "(−F·r_P for a constant force at P, −M α for a constant couple turning a body by α)")
+
+
+def summarize_model(model: Model) -> ModelSummary:
+    if not model.q:
+        return ModelSummary((), None, None, ())
+    q = sp.ImmutableMatrix([model.state.functions()])
+    steps = [st.given("Generalized coordinates:", Relation(sp.Symbol("q"), q)), *rolling_steps(model)]
+    T, kinetic = _kinetic(model)
+    steps += kinetic
+    if model.instant:  # velocities at one instant: no positions, so no V
+        return ModelSummary(model.state.functions(), model.to_time(T), None, tuple(steps))
+    V = potential_energy(model)
+    steps += _potential_steps(V, model)
+    steps += _free_force_steps(model)
+    steps += _two_sided(model)
+    steps += _unturned(model)
+    return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
+
+
+def _kinetic(model: Model) -> tuple[sp.Expr, list[st.Step]]:
+    """T and its steps: body by body, or, past SCAN_TERMS products q̇ᵢq̇ⱼ, as ½ q̇ᵀ M(q) q̇
+    (large_energy.py; T then built from M, not expanded and collected)."""
+    products = quadratic_products(model)
+    if products is not None and products > SCAN_TERMS:
+        M = mass_matrix(model)
+        return kinetic_from_matrix(M, model.qd), kinetic_steps(KINETIC, products, M, model)
+    T = kinetic_energy(model)
+    return T.total, _energy_steps(KINETIC, "T", T, model)
+
+
+def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
+    """V term by term, or, past SCAN_TERMS terms in all (or twice that in its parts
+    together: a chain's bodies each repeat the links above them), as ½ qᵀ K q or one sum."""
+    text = LOADED if any(x.potential is not None for x in model.loads) else POTENTIAL
+    if V.terms and (terms(V.total) > SCAN_TERMS or sum(terms(t.value) for t in V.terms) > 2 * SCAN_TERMS):
+        return potential_steps(text, V, model, present(V.total, model))
+    return _energy_steps(text, "V", V, model)
+
+
+def _free_force_steps(model: Model) -> list[st.Step]:
+    """The generalized forces of the loads without a potential (a force given as a
+    function of t), Q_i = Σ F·∂v_P/∂q̇_i + M·∂ω/∂q̇_i: Lagrange's equations keep them."""
+    free = [x for x in model.loads if x.potential is None]
+    if not free:
+        return []
+    from rbdsolve.model.energies.loads import free_forces
+
+    names = ", ".join(f"{x.kind} '{x.name}'" for x in free)
+    return [st.definition(f"Generalized forces of the loads without a potential ({names}), from their virtual "
+                          "work, Q_i = Σ F·∂v_P/∂q̇_i + M·∂ω/∂q̇_i (v_P the velocity of the body's point where F "
+                          "acts):", *[Relation(sp.Symbol(f"Q_{n}"), model.to_time(Q))
+                                      for n, Q in zip(model.coordinate_names(), free_forces(model))])]
+
+
+def rolling_steps(model: Model) -> list[st.Step]:
+    """Each contact's rolling condition, as a worked solution writes it: the contact
+    point's velocity is zero (or the moving surface's there), which relates the rates,
+    and integrated from the reference configuration places the body (model/constraints/contacts.py)."""
+    out = []
+    for c in model.contacts:
+        source = c.source
+        if source.pulley is not None:
+            pulley = source.pulley
+            how = "over a light pulley" if pulley.over is not None else f"straight from its {pulley.side} side"
+            out.append(st.equation(f"String at {c.name} ({pulley.drum} to {c.body}, {how}): "
+                                   f"inextensible, so the hanging part lengthens as fast as the string leaves "
+                                   f"{pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
+                                   Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
+            out += _implied_notes(c)
+            continue
+        surface = source.surface
+        on = ("its string" if source.string else f"{surface.body}'s {surface.edge}" if surface.body
+              else f"the {surface.kind.value}")
+        rest = (f"v_{c.name} equals the velocity of the surface's point at {c.name}" if c.moving_surface
+                else f"v_{c.name} = 0")
+        out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
+                               Relation(c.lhs, c.rhs),
+                               Relation(c.dependent, c.integrated, lead="⇒")))
+        out += _implied_notes(c) + _rolled_note(model, c)
+    return out
+
+
+def _rolled_note(model: Model, c) -> list[st.Step]:
+    """A coordinate declared an angle that the rolling makes non-periodic (model/build.py
+    ``_angles``): said, with what that changes."""
+    declared = {qi: k for k, qi in zip(model.problem.coordinates, model.q)}
+    k = declared.get(c.coordinate)
+    if k is None or k.kind is not CoordinateKind.ANGLE or k.periodic is False or c.coordinate in model.angles:
+        return []
+    name = unicode_name(k.name)
+    where = " and its equilibria are searched where the contact holds" if c.span is not None else ""
+    return [st.note(f"{name} is declared an angle, but body '{c.body}' rolls by it: the arc it lays off enters the "
+                    f"positions outside sin and cos, so the scene does not repeat after a turn of {name}. It is "
+                    f"taken as an angle that does not repeat (periodic: false){where}")]
+
+
+def _implied_notes(c) -> list[st.Step]:
+    """What the contact's geometry needs of the parameters (R > r inside a circle), as
+    the model assumes it (model/constraints/contacts.py)."""
+    return [st.note(f"{a.implied_by[0].upper()}{a.implied_by[1:]}, so {a.source.text} (assumed in what follows)")
+            for a in c.requires]
+
+
+@dataclass(frozen=True)
+class Unturned:
+    """A body with rotational inertia that moves with angle coordinates but has no
+    ``angle`` or ``orientation``: it translates, and its rotational energy is zero.
+    ``pivot``: a point it keeps a constant distance to while it moves (a named one, or
+    the centre of the circle its centre moves on), so it evidently swings about it with
+    the coordinate ``turns_by`` (a likely mistake); None: it may just slide."""
+
+    body: str
+    coordinates: tuple[str, ...]
+    pivot: str | None
+    turns_by: str = ""  # the coordinate it evidently swings with ('' with no pivot)
+
+    def text(self) -> str:
+        moves = ", ".join(self.coordinates)
+        if self.pivot is None:
+            return (f"Note: {self.body} has no 'angle', so it moves with {moves} without turning "
+                    "(no rotational energy). If it turns, give its angle.")
+        return (f"body '{self.body}' has no angle: it moves with {moves} without turning (no rotational "
+                f"energy), though it keeps its distance to {self.pivot}; if it swings about {self.pivot}, "
+                f"add `angle: {self.turns_by}` (or the angle it turns by)")
+
+
+def unturned(model: Model) -> tuple[Unturned, ...]:
+    """The bodies that move with an angle coordinate without turning (see Unturned)."""
+    out = []
+    for body in model.bodies:
+        if body.angle is not None or body.turns_3d or body.inertia == sp.zeros(3, 3) or not body.placed:
+            continue
+        moves = tuple(n for q, n in zip(model.q, model.coordinate_names())
+                      if q in model.angles and body.position.has(q))
+        if moves:
+            pivot, turns_by = _pivot(model, body.position) or (None, "")
+            out.append(Unturned(body.name, moves, pivot, turns_by or moves[0]))
+    return tuple(out)
+
+
+def _pivot(model: Model, position: sp.Matrix) -> tuple[str, str] | None:
+    """What G turns about, and with which coordinate: a named point (``_named_pivot``),
+    else the centre of the circle G moves on as one angle coordinate turns
+    (``_circle_centre``: a rod hung by its end from an unnamed pivot, G = l/2 (sin θ,
+    −cos θ)); None if neither."""
+    named = _named_pivot(model, position)
+    if named is not None:
+        return named, ""
+    found = _circle_centre(model, position)
+    if found is None:
+        return None
+    centre, q = found
+    shown = centre[:2, 0] if centre[2] == 0 else centre
+    name = dict(zip(model.q, model.coordinate_names()))[q]
+    return f"the point ({', '.join(to_unicode(model.readable(x)) for x in shown)})", name
+
+
+def _circle_centre(model: Model, position: sp.Matrix) -> tuple[sp.Matrix, sp.Symbol] | None:
+    """A + B cos q + C sin q, with A, B, C free of the angle coordinate q, is a circle of
+    centre A where B·C = 0 and |B| = |C| ≠ 0: that centre and q, for the last angle q
+    (in the file's order: a chain's links from the base out, the body's own joint last)
+    that moves G so; else None. Exact: A, B, C are read off with sin q and cos q as
+    symbols."""
+    c, s = sp.Dummy("c"), sp.Dummy("s")
+    for q in reversed(model.q):
+        if q not in model.angles or not position.has(q):
+            continue
+        r = position.applyfunc(sp.expand).xreplace({sp.cos(q): c, sp.sin(q): s})
+        if r.has(q):
+            continue
+        A, B, C = r.xreplace({c: 0, s: 0}), r.diff(c), r.diff(s)
+        if any(sp.expand(x) != 0 for x in r - (A + B * c + C * s)) or B.has(c, s) or C.has(c, s):
+            continue
+        if B == sp.zeros(3, 1) or sp.expand(B.dot(C)) != 0 or sp.expand(B.dot(B) - C.dot(C)) != 0:
+            continue
+        return A, q
+    return None
+
+
+def _named_pivot(model: Model, position: sp.Matrix) -> str | None:
+    """A named point P with |r_G − r_P| the same at random samples of the coordinates
+    (the parameters at one sample), while r_G − r_P is not: G turns about P. Sampled, not
+    simplified: a constant distance needs sin² + cos² = 1 and its like, which the
+    samples see at once."""
+    rng = random.Random(26)
+    parameters = parameter_sample(model, rng)
+    samples = [{**parameters, **{q: sp.Rational(rng.randint(1100, 2900), 1000) for q in model.q}}
+               for _ in range(3)]
+    for name, point in model.points.items():
+        r = position - point
+        if not r.free_symbols & set(model.q):
+            continue
+        d = r.dot(r)
+        lengths = {round(float(sp.N(d.xreplace(x), 30)), 9) for x in samples}
+        if len(lengths) == 1 and next(iter(lengths)) > 0:
+            return name
+    return None
+
+
+def _two_sided(model: Model) -> list[st.Step]:
+    """A note for each spring length |u| whose sign at the reference configuration is
+    not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
+    out = []
+    at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
+    for spring in model.springs:
+        for length in spring.lengths:
+            if length.sign is not None:
+                continue
+            u = model.readable(length.inside)
+            shown, minus = to_unicode(u), to_unicode(tidy(-u))
+            here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
+            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
+                   f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
+                   f"'assumptions:', such as {_positive(here)}, to take one side)")
+            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
+                               f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
+                               "keep |…| and sign(…)"))
+    return out
+
+
+def _positive(value: sp.Expr) -> str:
+    """value > 0 as an assumption is written in a file: [l > h] for l − h."""
+    terms = sp.Add.make_args(value)
+    below = [-x for x in terms if x.could_extract_minus_sign()]
+    above = [x for x in terms if not x.could_extract_minus_sign()]
+    if above and below:
+        return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
+    return f"[{value} > 0]"
+
+
+def _unturned(model: Model) -> list[st.Step]:
+    """The model section's note (a warning where the body evidently swings)."""
+    return [st.note(u.text() if u.pivot is None else f"warning: {u.text()}") for u in unturned(model)]
+
+
+def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:
+    if not energy.terms:
+        return [st.definition(text, Relation(sp.Symbol(name), sp.Integer(0)))]
+    parts = [
+        Relation(sp.Symbol(f"{name}_{i}"), present(term.value, model))
+        for i, term in enumerate(energy.terms, start=1)
+    ]
+    legend = ", ".join(f"{name}{subscript(i)} {term.name}" for i, term in enumerate(energy.terms, start=1))
+    total = present(energy.total, model)
+    if len(parts) == 1:
+        return [st.definition(f"{text}; {legend}.", Relation(sp.Symbol(name), total))]
+    sum_name = sp.Add(*[p.lhs for p in parts], evaluate=False)
+    return [
+        st.definition(f"{text}; {legend}.", *parts),
+        st.equation("", Relation(sp.Symbol(name), sum_name, more=(total,))),
+    ]

@@ -1,0 +1,349 @@
+"""Conditions on the parameters: where a quantity changes sign, its critical values, and
+the sign between them — the "stable iff Ω < √(g/R)" of an exam answer.
+
+For a quantity f whose sign the parameters' own signs do not decide, one parameter p
+is chosen (``partition``), the one the question is about (``candidates``): the one a
+question's ``for:`` names; else the problem's only parameter without a value (every
+value given but k: "how stiff must the springs be"); else a rate or a spin (exams ask
+"above which rate"), then a stiffness, then a length, then a mass, then the others,
+each group in the file's order. The first of these that f holds and whose roots split
+its range is taken. The roots of f's numerator and denominator in p, solved exactly,
+that lie inside p's range at every sample (``parameter_roots``) cut the range into
+pieces; f's sign on each piece is decided exactly by putting in a point of it,
+
+    p = p₁/(1 + δ)  (below the first),  p = pₙ (1 + δ)  (above the last),
+    p = pₖ + (pₖ₊₁ − pₖ) δ/(1 + δ)  (between),   δ > 0,
+
+and asking sympy for the sign of the result (factored). Where sympy cannot tell, f is
+evaluated at SAMPLES random points of the piece (the other parameters and δ drawn at
+random); the piece gets a sign only if every sample agrees. Neighbouring pieces of one
+sign are one (a double root changes nothing); the roots left are the critical values.
+A physical f is dimensionally homogeneous, so each is a formula in the others, such as
+√(g/R), and a condition in one parameter is the simplest an exam would write.
+
+An angle parameter (one that f holds only through sines and cosines of whole
+multiples of it: a tilt, an incline, a half-angle) has no positive scale; its range is
+(0, π) for a positive one and (−π, π) otherwise (``angle_parameters``), and its roots
+are turned into it by whole turns (θ < π/2 for a coin's tilt).
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass, replace
+from fractions import Fraction
+from typing import Iterable
+
+import sympy as sp
+
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
+from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
+from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.model.assumptions import implies
+from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
+from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign
+
+RATE_WORDS = ("omega", "spin", "rate", "speed", "angular")  # exams ask "above which rate"
+STIFFNESS_WORDS = ("stiff", "spring", "torsion")  # then "how stiff a spring"
+RATE = Dimension(time=Fraction(-1))
+
+
+@dataclass(frozen=True)
+class Critical:
+    """p_c: a value of one parameter where a sign changes."""
+
+    parameter: sp.Symbol
+    value: sp.Expr
+
+    def same_as(self, other: Critical) -> bool:
+        return self.parameter == other.parameter and sp.simplify(self.value - other.value) == 0
+
+
+@dataclass(frozen=True)
+class CriticalValue:
+    """A critical value as answers give it (docs/json.md, ``critical``)."""
+
+    parameter: str
+    value: sp.Expr
+
+
+def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
+    """Each critical value once, in the order found."""
+    out: list[CriticalValue] = []
+    for c in criticals:
+        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
+            out.append(CriticalValue(str(c.parameter), c.value))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Piece:
+    """The values of one parameter between two critical values (None: an end of its
+    range), and the sign of the quantity there."""
+
+    parameter: sp.Symbol
+    low: sp.Expr | None
+    high: sp.Expr | None
+    sign: int
+    span: tuple[sp.Expr, sp.Expr]  # the parameter's range: (0, ∞), or an angle's
+
+    def when(self, closed_low: bool = False, closed_high: bool = False) -> sp.Boolean:
+        """Ω < Ω_c, Ω_c1 < Ω < Ω_c2 or Ω > Ω_c (≤, ≥ where closed), in the parameters' symbols."""
+        p, parts = self.parameter, []
+        if self.low is not None:
+            parts.append(sp.Ge(p, self.low) if closed_low else sp.Gt(p, self.low))
+        if self.high is not None:
+            parts.append(sp.Le(p, self.high) if closed_high else sp.Lt(p, self.high))
+        return sp.And(*parts)
+
+    def inside(self, expr: sp.Expr) -> tuple[sp.Expr, sp.Symbol]:
+        """expr at a point of the piece, and δ > 0 that moves the point across it."""
+        delta = sp.Dummy("delta", positive=True)
+        low = self.span[0] if self.low is None else self.low
+        high = self.span[1] if self.high is None else self.high
+        if high is sp.oo:
+            at = low * (1 + delta) if low != 0 else delta  # the whole of (0, ∞): any δ
+        elif low == 0:
+            at = high / (1 + delta)
+        else:
+            at = low + (high - low) * delta / (1 + delta)
+        return expr.xreplace({self.parameter: at}), delta
+
+    def joined(self, other: Piece) -> Piece:
+        """This piece and the next one, as one."""
+        return Piece(self.parameter, self.low, other.high, self.sign, self.span)
+
+
+@dataclass(frozen=True)
+class Partition:
+    """The range of one parameter in pieces, in increasing order; neighbours differ."""
+
+    parameter: sp.Symbol
+    pieces: tuple[Piece, ...]
+
+    @property
+    def criticals(self) -> tuple[Critical, ...]:
+        return changes(self.pieces)
+
+
+def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | None:
+    """f's sign piece by piece in the first parameter (``candidates``: ``first``, the one
+    a question names, before all) whose roots cut its range into pieces of known sign,
+    at least one change of sign among them; None where no parameter does."""
+    angles = angle_parameters(f)
+    for p in candidates(f, model, angles, first):
+        roots = parameter_roots(f, p, angles, model)
+        if not roots:
+            continue
+        span = angles.get(p, (sp.Integer(0), sp.oo))
+        ends = [None, *roots, None]
+        pieces = [Piece(p, a, b, 0, span) for a, b in zip(ends, ends[1:])]
+        signs = [sign_on(f, piece, model, angles) for piece in pieces]
+        if None in signs:
+            continue
+        merged = [replace(pieces[0], sign=signs[0])]
+        for piece, sign in zip(pieces[1:], signs[1:]):
+            if sign == merged[-1].sign:
+                merged[-1] = merged[-1].joined(piece)
+            else:
+                merged.append(replace(piece, sign=sign))
+        if len(merged) > 1:
+            return Partition(p, tuple(merged))
+    return None
+
+
+def allowed(piece: Piece, model) -> bool:
+    """Whether the assumptions that hold the piece's parameter hold somewhere on it:
+    False only where they fail at every sampled point of it (R < r under R > r)."""
+    mine = [a.relation for a in model.assumptions if piece.parameter in a.difference.free_symbols]
+    return not mine or within(piece, sp.And(*mine), model) is not False
+
+
+def at_samples(piece: Piece, expr, model, seed: int, angles: dict) -> list | None:
+    """expr at SAMPLES random points of the piece (the other parameters admissible
+    rationals, angles in their ranges); None where no admissible point is found."""
+    value, delta = piece.inside(expr)
+    rng = random.Random(seed)
+    out = []
+    for _ in range(SAMPLES):
+        point = admissible(model, rng, (piece.parameter,), angles)
+        if point is None:
+            return None
+        out.append(value.xreplace({**point, delta: sp.Rational(rng.randint(50, 3000), 1000)}))
+    return out
+
+
+def within(piece: Piece, condition: sp.Basic, model) -> bool | None:
+    """Whether ``condition`` holds on the piece: True if at every sampled point of it,
+    False if at none, None if at some (the pieces do not line up)."""
+    if condition is sp.true:
+        return True
+    held = [x for x in (condition, piece.low, piece.high) if x is not None]
+    angles = {p: span for x in held for p, span in angle_parameters(x).items()}
+    values = at_samples(piece, condition, model, 23, angles)
+    try:
+        seen = {bool(v) for v in values} if values is not None else set()
+    except TypeError:  # not decided at some point (a value that is not real)
+        return None
+    return seen.pop() if len(seen) == 1 else None
+
+
+def existing(pieces, where: sp.Basic, model) -> list[Piece] | None:
+    """The pieces on which ``where`` (an equilibrium's existence) holds and the
+    assumptions allow (``allowed``: R < r is no case under R > r); None where one lies
+    partly inside ``where`` (the pieces do not line up with it)."""
+    kept = []
+    for piece in pieces:
+        inside = within(piece, where, model)
+        if inside is None:
+            return None
+        if inside and allowed(piece, model):
+            kept.append(piece)
+    return kept
+
+
+def changes(pieces) -> tuple[Critical, ...]:
+    """The critical values between neighbouring pieces (where one ends and the next
+    begins): where what the pieces carry changes."""
+    return tuple(Critical(a.parameter, a.high) for a, b in zip(pieces, pieces[1:])
+                 if a.high is not None and a.high == b.low)
+
+
+def what_decides(f: sp.Expr) -> str:
+    """What a user can give to decide the sign of f, for a message: its parameters'
+    values, or an assumption."""
+    names = ", ".join(sorted(str(s) for s in f.free_symbols))
+    return (f"give values for {names}, or state the sign of {to_unicode(f)} under 'assumptions:' "
+            "(such as [R > r])")
+
+
+def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
+    """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
+    needed = set()
+    for value in values:
+        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
+    return sorted(needed, key=sp.default_sort_key)
+
+
+@dataclass(frozen=True)
+class Existence:
+    """Where values are real: the condition, solved for one parameter each (true:
+    always), and the critical values it uses."""
+
+    condition: sp.Basic
+    criticals: tuple[Critical, ...]
+
+
+def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr] = (),
+                first: sp.Symbol | None = None) -> Existence | None:
+    """Where ``values`` are real (``real_where``) and ``nonnegative`` ones are ≥ 0 (the
+    value of a square, ω₀²): each condition the assumptions do not decide, piece by
+    piece, holds on its positive pieces, a boundary included where the condition is
+    finite there (ω² ≥ g/R, but R > r where 1/(R − r) is); None where one cannot be
+    split."""
+    exists, criticals = sp.true, []
+    for condition in [*real_where(values), *nonnegative]:
+        condition = tidy(condition)
+        if isinstance(sign_of(condition, model.assumed), int):
+            continue
+        found = partition(condition, model, first)
+        if found is None:
+            return None
+        closed = {c.value: _finite_at(condition, c) for c in found.criticals}
+        held = [piece.when(closed.get(piece.low, False), closed.get(piece.high, False))
+                for piece in found.pieces if piece.sign > 0]
+        exists = sp.And(exists, sp.Or(*held))
+        criticals += found.criticals
+    return Existence(exists, tuple(criticals))
+
+
+def constant_sign(f: sp.Expr, model, first: sp.Symbol | None = None) -> int | None:
+    """f's sign where it keeps one throughout: the first parameter (``candidates``) in
+    whose range f has no root at any sample, f's sign on the whole range (``sign_on``:
+    exactly, else agreeing samples). An inverted plate held by a spring, released from
+    rest at θ₀ in (0, π), has θ̇² ∝ g m (cos θ₀ − 1) − 2 h k sin θ₀ < 0 at θ = 0: it
+    never gets there. None where no parameter shows it."""
+    angles = angle_parameters(f)
+    for p in candidates(f, model, angles, first):
+        if parameter_roots(f, p, angles, model) == []:
+            sign = sign_on(f, Piece(p, None, None, 0, angles.get(p, (sp.Integer(0), sp.oo))), model, angles)
+            if sign is not None:
+                return sign
+    return None
+
+
+def nonnegative_where(value: sp.Expr, model, first: sp.Symbol | None = None) -> Existence:
+    """Where value ≥ 0: true or false where the parameters' signs and the assumptions
+    decide it, or where it keeps one sign throughout (``constant_sign``); else solved
+    for one parameter (``exists_when``, ``first`` before all), true where the
+    assumptions imply what it gives (α ≤ π/2 under 0 < α < π/2); else value ≥ 0 as it
+    is. A support that holds at a state, a configuration the motion reaches (q̇² ≥ 0
+    there)."""
+    sign = sign_of(tidy_fraction(value), model.assumed)
+    if isinstance(sign, int):
+        return Existence(sp.true if sign >= 0 else sp.false, ())
+    found = exists_when((), model, [value], first)
+    if found is None:
+        sign = constant_sign(tidy_fraction(value), model, first)
+        return Existence(sp.Ge(value, 0) if sign is None else sp.true if sign > 0 else sp.false, ())
+    if implies(model.assumptions, found.condition):
+        return Existence(sp.true, ())
+    return found
+
+
+def _finite_at(f: sp.Expr, critical: Critical) -> bool:
+    """Whether f is finite at the critical value (its numerator vanishes there, not its
+    denominator): a boundary where the condition holds with equality."""
+    _, denominator = sp.fraction(sp.together(f))
+    return sp.simplify(denominator.xreplace({critical.parameter: critical.value})) != 0
+
+
+def asked(model, question) -> sp.Symbol | None:
+    """The parameter a question's ``for:`` names, as a symbol (None: none named, or no
+    question)."""
+    name = getattr(getattr(question, "options", None), "for_parameter", None)
+    return model.symbols.parameters[name] if name is not None else None
+
+
+def candidates(f: sp.Expr, model, angles: dict, first: sp.Symbol | None = None) -> list[sp.Symbol]:
+    """The positive parameters and the angles in f, the one the question is about
+    first: ``first`` (a question's ``for:``), then the problem's only parameter without
+    a value, then by kind (``_kind``), each kind in the file's order."""
+    order = [model.symbols.parameters[p.name] for p in model.problem.parameters]
+    held = [p for p in order if p in f.free_symbols and (p.is_positive or p in angles)]
+    open_ = [p for p in order if p not in model.values]
+    lone = open_[0] if len(open_) == 1 else None
+    kinds = {model.symbols.parameters[p.name]: _kind(p, model.problem.dimension_map())
+             for p in model.problem.parameters}
+    return sorted(held, key=lambda p: (p != first, p != lone, kinds[p]))
+
+
+def _kind(parameter, dimensions: dict) -> int:
+    """0 a rate or a spin, 1 a stiffness, 2 a length, 3 a mass, 4 any other (an
+    acceleration, an angle): by its dimension where the file makes it known, else by
+    its name and description (docs/format.md, "Conditions")."""
+    dimension = dimensions.get(parameter.name)
+    words = f"{parameter.name} {parameter.description}".lower()
+    if dimension == RATE or any(w in words for w in RATE_WORDS):
+        return 0
+    if dimension in (STIFFNESS, TORQUE) or any(w in words for w in STIFFNESS_WORDS):
+        return 1
+    return {LENGTH: 2, MASS: 3}.get(dimension, 4)
+
+
+def sign_on(f: sp.Expr, piece: Piece, model, angles: dict, seed: int = 20) -> int | None:
+    """f's sign on a piece: exactly (δ positive), else by agreeing samples (drawn from
+    ``seed``)."""
+    value, _ = piece.inside(f)
+    sign = symbolic_sign(tidy(value))
+    if sign:
+        return sign
+    signs = set()
+    for v in at_samples(piece, f, model, seed, angles) or [sp.nan]:
+        z = complex(sp.N(v, 30))
+        if z != z or abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
+            return None
+        signs.add(1 if z.real > 0 else -1)
+    return signs.pop() if len(signs) == 1 else None

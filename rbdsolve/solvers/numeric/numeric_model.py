@@ -1,0 +1,493 @@
+"""The floating-point routes' view of a model: M and K at a configuration as float
+arrays, and the equilibria of ∂V/∂q = 0 found numerically.
+
+M and K (``linearized``) come first from the scene itself (``NumericScene``: M(q) and V's
+derivatives by forward-mode automatic differentiation of the scene's own expressions, in
+floats); only where the scene needs the symbolic model (see NotNumeric) from the
+model's exact velocity Jacobians and Hessian of V at the configuration, with the
+parameter values put in and rounded once to floats.
+
+Equilibria (``find_numeric``): V's gradient g(q) and Hessian H(q) likewise come from the
+scene by automatic differentiation where it allows, else compiled from the symbolic V
+with sympy's lambdify (``compiled_gradient``). The search box (``search_box``): a
+declared range, else a periodic angle over one turn (one cell more each side, so a root
+at ±π is bracketed whatever its rounding), else ±SEARCH_SCALE × the scene's largest
+length; equilibria outside the box are not searched. An angle
+along which ∂V/∂q is not 2π-periodic (``periodic_angles``: a torsional spring counts
+turns) is searched as a length.
+
+* One coordinate: a sign-change scan of g (``scan``: adaptive halving with a sampled
+  Lipschitz exclusion test, Brent's method for each root, extrema of g for roots of
+  even multiplicity). Complete, to round-off, under the assumption stated there (|g'|
+  within twice its sampled size on each cell; roots more than the smallest cell, box
+  width / 2**20, apart); intervals left when its evaluations run out are reported.
+* More coordinates: Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H)
+  from every point of a grid over the box, GRID_POINTS per coordinate (fewer in higher
+  dimension, at most MAX_STARTS starts; where even 2 per coordinate would exceed
+  MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead). No
+  completeness claim: an equilibrium whose basin of attraction misses every start is
+  not found, and the report says so.
+
+Roots are wrapped into (−π, π] along periodic angles and merged when closer than
+MERGE_TOL. A root on a continuum of equilibria (a straight line along which ∂V/∂q
+stays zero) is replaced by its family's representative with its free directions
+(``continua``), so a family is reported once. Each root is classified from the
+eigenvalues of H against CURVATURE_TOL × the Hessian's scale over the box
+(``hessian_scale``): the tolerance covers the rounding of H and its change over the
+root's own error (up to √ε at a double root of g), so a degenerate Hessian is called
+singular (neutral along a continuum, else undetermined), never stable or unstable on
+round-off.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+import numpy as np
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.printers import unicode_name
+from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
+from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
+from rbdsolve.solvers.configuration import contact_span
+from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
+from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS
+from rbdsolve.solvers.numeric.scan import scan
+from rbdsolve.solvers.numeric.search_box import search_box
+
+GRID_POINTS = 24
+MAX_STARTS = 4096
+SAMPLE_SEED = 20151029  # fixed: the same starts, and the same answers, every run
+SCALE_SAMPLES = 16
+ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
+MERGE_TOL = 1e-6
+EPS_STEP = 4 * float(np.finfo(float).eps)
+PERIODIC_SAMPLES = 3
+PERIODIC_TOL = 1e-8
+CURVATURE_TOL = 1e-7  # a Hessian eigenvalue this small relative to hessian_scale counts as zero
+
+
+def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndarray:
+    """An exact matrix with the parameter values put in, rounded once to floats."""
+    filled = matrix.xreplace(dict(values))
+    try:
+        return np.array([[float(sp.N(x, 20)) for x in row] for row in filled.tolist()], dtype=float)
+    except TypeError:
+        raise UnsolvedError("a matrix entry is not a real number at the given values") from None
+
+
+def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, np.ndarray, str]:
+    """M and K at the configuration ``about`` (coordinate name -> value), as floats: by
+    automatic differentiation on the scene's own expressions where the scene allows
+    (``NumericScene``), else from the exact Jacobians and Hessian, rounded once."""
+    scene = numeric_scene(model)
+    if scene is not None:
+        q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
+        M, K = finite(lambda x: np.stack(scene.linearized(x)), model)(q0)
+        return M, (K + K.T) / 2, "by automatic differentiation of the scene"
+    at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
+    M = to_floats(mass_matrix(model, at), model.values)
+    K = to_floats(stiffness_matrix(potential_energy(model).total, model.q, at), model.values)
+    return M, (K + K.T) / 2, "from the exact Jacobians and Hessian, rounded once"
+
+
+def finite(evaluate, model: Model):
+    """``evaluate`` at a configuration, as a float array, or an UnsolvedError where the
+    scene has no finite value there, naming the causes this scene can have."""
+
+    def at(x):
+        try:
+            with np.errstate(all="ignore"):
+                value = np.asarray(evaluate(x), dtype=float)
+        except (ArithmeticError, ValueError) as exc:
+            raise UnsolvedError(f"M or V cannot be evaluated at q = {_shown(x)} ({exc}): "
+                                f"{_causes(model, 'a square root or logarithm out of its domain')}?") from None
+        if not np.all(np.isfinite(value)):
+            raise UnsolvedError(f"M or V is not finite at q = {_shown(x)}: {_causes(model, 'a division by zero there')}?")
+        return value
+
+    return at
+
+
+HUGE = 1e100  # a parameter value this far from 1 (or its inverse) can overflow a float in T or V
+
+
+def _causes(model: Model, otherwise: str) -> str:
+    """What makes T or V infinite in this scene: parameter values past floating point's
+    range first, a spring of zero length only where there is a spring."""
+    extreme = [f"{k} = {float(v):.3g}" for k, v in model.values.items()
+               if v != 0 and not 1 / HUGE < abs(float(v)) < HUGE]
+    causes = [f"an overflow of floating point from the parameter values ({', '.join(extreme)})"] if extreme else []
+    if model.problem.springs:
+        causes.append("a spring of zero length")
+    return ", or ".join(causes + [otherwise])
+
+
+def _shown(x) -> str:
+    return "(" + ", ".join(f"{float(v):.6g}" for v in x) + ")"
+
+
+def numeric_scene(model: Model, arithmetic=FLOAT) -> NumericScene | None:
+    """The scene for floating-point evaluation, or None where it needs the symbolic model
+    (3D orientations, frames, prescribed motion, …: see NotNumeric)."""
+    return _float_scene(model) if arithmetic is FLOAT else _scene(model, arithmetic)
+
+
+@memoized  # the gradient, the Hessian and M of one model share it
+def _float_scene(model: Model) -> NumericScene | None:
+    return _scene(model, FLOAT)
+
+
+def _scene(model: Model, arithmetic) -> NumericScene | None:
+    values = {str(k): exact_fraction(v) for k, v in model.values.items()}
+    try:
+        return NumericScene.build(model.problem, values, arithmetic, model.state)
+    except NotNumeric:
+        return None
+
+
+def continuum_text(free: tuple[tuple[float, ...], ...], names: list[str]) -> str:
+    """'every x is an equilibrium (a continuum); shown at x = 0', or the direction."""
+    parts = []
+    for v in free:
+        axis = is_axis(v)
+        if axis is not None:
+            parts.append(f"every {names[axis]} is an equilibrium (a continuum); shown at {names[axis]} = 0")
+        else:
+            direction = ", ".join(f"{c:.6g}" for c in v)
+            parts.append(f"the equilibria form a continuum along ({', '.join(names)}) ∝ ({direction}); "
+                         "shown at its point nearest q = 0")
+    return "; ".join(parts)
+
+
+def compiled_gradient(model: Model):
+    """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions:
+    from the numeric scene where it applies, else compiled from the symbolic V."""
+    scene = numeric_scene(model)
+    if scene is not None:
+        return finite(scene.gradient, model), finite(lambda x: scene.potential(x)[2], model)
+    V = potential_energy(model).total.xreplace(dict(model.values))
+    q = sp.symbols(f"x0:{len(model.q)}", real=True)  # so that d|x|/dx is sign(x), which lambdify prints
+    V = V.xreplace(dict(zip(model.q, q)))
+    grad = [sp.diff(V, x) for x in q]
+    # ∂²|u|/∂q² = 2 δ(u) (∂u/∂q)²: 0 wherever u ≠ 0, and where u = 0 (a spring through
+    # zero length) V has a kink and no Hessian at all; numpy has no DiracDelta
+    H = hessian(V, tuple(q)).applyfunc(lambda e: e.replace(sp.DiracDelta, lambda *_: sp.Integer(0)))
+    return finite(sp.lambdify([q], grad, "numpy"), model), finite(sp.lambdify([q], H.tolist(), "numpy"), model)
+
+
+def gradient_scale(model: Model, g) -> float:
+    """The size of ∂V/∂q over the search box: roots are judged relative to it."""
+    box = _box(model)
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    samples = []
+    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+        try:
+            samples.append(np.max(np.abs(g(low + p * (high - low))), initial=0.0))
+        except UnsolvedError:  # a sample where V has no value tells nothing of its scale
+            continue
+    return max(max(samples, default=1.0), 1e-300)
+
+
+@dataclass(frozen=True)
+class Root:
+    """An equilibrium found numerically: where, its kind ("stable" | "unstable" |
+    "neutral", from the Hessian of V), the directions along which it is one point of a
+    continuum of equilibria (unit vectors in coordinate order; empty when isolated),
+    and whether V curves upward across them (H ≥ 0 with zero eigenvalues only along
+    the free directions)."""
+
+    at: tuple[float, ...]
+    kind: str
+    free: tuple[tuple[float, ...], ...] = ()
+    stable_across: bool = False
+
+
+@dataclass(frozen=True)
+class NumericEquilibria:
+    equilibria: tuple[Root, ...]
+    starts: int  # Newton starts; in one coordinate, the points the scan evaluated
+    sampling: str  # how the starts were placed: a grid, a fixed pseudo-random sample, or the scan
+    unresolved: tuple[tuple[float, float], ...] = ()  # intervals the scan could not settle
+    off_edge: tuple = ()  # contact_span.OffEdge's: roots where a contact point would leave its edge
+    kinks: tuple[str, ...] = ()  # roots dropped where a spring has zero length: why, one line each
+
+
+def find_numeric(model: Model) -> NumericEquilibria:
+    """In one coordinate, the sign-change scan (``scan``); in more, Newton from every
+    start (see the module's docstring). Each root is wrapped, replaced by its continuum's
+    representative if it lies on one, classified against the Hessian's scale, and merged."""
+    g, H = compiled_gradient(model)
+    scale = gradient_scale(model, g)
+    tol, curvature = ROOT_TOL * scale, hessian_scale(model, H)
+    if len(model.q) == 1:
+        candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
+    else:
+        starts, sampling = _starts(model, GRID_POINTS)
+        candidates, unresolved = (newton(x, g, H) for x in starts), ()
+    roots: list[Root] = []
+    for x in candidates:
+        try:
+            found = _accepted(model, x, g, H, tol, curvature, roots)
+        except UnsolvedError:  # Newton wandered where V has no value: this start finds nothing
+            continue
+        if found is not None:
+            roots.append(found)
+    kept, off = _on_edges(model, roots)
+    kept, kinks = _off_kinks(model, kept)
+    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off, kinks)
+
+
+KINK_TOL = 1e-9  # |u| at a root, relative to its terms' size, that counts as a spring of zero length
+
+
+def _off_kinks(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[str, ...]]:
+    """The roots where no spring with a length |u| kept (its sign not decided: model/
+    spring_length.py) has u = 0, and why each other one is not an equilibrium: there
+    ½ k (|u| − l₀)² has a kink, ∂V/∂q jumps by 2 k l₀ |∂u/∂q| and numpy's sign(0) = 0
+    makes it look like a root (a bead on a turning rod, its distance r from the axis the
+    coordinate, on a spring of natural length l₀ from the axis: r = 0)."""
+    held = [(s.name, x.inside.xreplace(dict(model.values))) for s in model.springs for x in s.lengths
+            if x.sign is None]
+    if not held:
+        return roots, ()
+    kept, dropped = [], []
+    for r in roots:
+        at = dict(zip(model.q, r.at))
+        zero = [name for name, u in held if _vanishes_at(u, at)]
+        if zero:
+            where = ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), r.at))
+            dropped.append(f"{where} solves ∂V/∂q = 0 only through sign(0) = 0: spring '{zero[0]}' has zero "
+                           "length there, where V has a kink and no derivative; it is not listed")
+        else:
+            kept.append(r)
+    return kept, tuple(dropped)
+
+
+def _vanishes_at(u: sp.Expr, at: dict) -> bool:
+    terms = [complex(sp.N(t.xreplace(at), 20)) for t in sp.Add.make_args(sp.expand(u))]
+    return abs(sum(terms)) <= KINK_TOL * max(sum(abs(t) for t in terms), 1e-300)
+
+
+def _on_edges(model: Model, roots: list[Root]) -> tuple[list[Root], tuple]:
+    """The roots with every contact point on its edge, and the others with the reason
+    (solvers/configuration/contact_span.py)."""
+    if not any(c.span is not None for c in model.contacts):
+        return roots, ()
+    kept, off = [], []
+    for r in roots:
+        at = {q: sp.Float(x, 17) for q, x in zip(model.q, r.at)}
+        outside = contact_span.outside(model, at)
+        (kept.append(r) if outside is None else off.append(outside))
+    return kept, tuple(off)
+
+
+def newton(start: np.ndarray, g, H) -> np.ndarray | None:
+    """Newton's method (hybr) from a start, polished; None where V has no value."""
+    from scipy.optimize import root
+
+    try:
+        return _polished(root(g, start, jac=H, method="hybr").x, g, H)
+    except UnsolvedError:
+        return None
+
+
+def _scanned(model: Model, g, H, tol: float):
+    """The scan's candidate roots in the one coordinate, the points it evaluated,
+    its description and the intervals it left unresolved."""
+    (low, high), = _box(model)
+    if model.q[0] in periodic_angles(model):  # one cell more each side: a root at ±π, whatever its rounding
+        low, high = low - (high - low) / SCAN_CELLS, high + (high - low) / SCAN_CELLS
+    result = scan(_slope_and_curvature(model, g, H), low, high, tol)
+    sampling = (f"points ({SCAN_CELLS} cells over [{low:.6g}, {high:.6g}], halved where they may hold a root, "
+                f"down to {result.smallest:.3g})")
+    return [np.array([x]) for x in result.roots], list(range(result.evaluations)), sampling, result.unresolved
+
+
+def _slope_and_curvature(model: Model, g, H):
+    """x -> (∂V/∂q, ∂²V/∂q²) in one coordinate: one pass of the scene's automatic
+    differentiation where it applies, else the two compiled functions."""
+    scene = numeric_scene(model)
+    if scene is None:
+        return lambda x: (g(np.array([x]))[0], H(np.array([x]))[0][0])
+    both = finite(lambda x: _first_derivatives(scene.potential(x)), model)
+    return lambda x: tuple(both(np.array([x])))
+
+
+def _first_derivatives(potential) -> list[float]:
+    """(∂V/∂q, ∂²V/∂q²) from the scene's (V, gradient, Hessian) in one coordinate."""
+    _, gradient, hess = potential
+    return [float(np.asarray(gradient, dtype=float).ravel()[0]), float(np.asarray(hess, dtype=float).ravel()[0])]
+
+
+def _accepted(model: Model, x, g, H, tol: float, curvature: float, roots: list[Root]) -> Root | None:
+    """The candidate x as a new Root, or None: not a root, outside the box, or one
+    already found (on a family found, or within MERGE_TOL of a root)."""
+    if x is None:
+        return None
+    x = _wrapped(model, x)
+    if np.max(np.abs(g(x))) > tol or not _inside(model, x) or _on_a_family(model, x, roots):
+        return None
+    found = _as_root(model, x, g, H, tol, curvature)
+    if any(np.max(np.abs(difference(model, np.array(found.at), np.array(r.at)))) <= MERGE_TOL for r in roots):
+        return None
+    return found
+
+
+def _on_a_family(model: Model, x: np.ndarray, roots: list[Root]) -> bool:
+    """x differs from a continuum's representative only along its free directions."""
+    for r in roots:
+        if r.free:
+            d = difference(model, x, np.array(r.at))
+            F = np.array(r.free, dtype=float).T
+            if np.max(np.abs(d - F @ (F.T @ d))) <= MERGE_TOL:
+                return True
+    return False
+
+
+def _as_root(model: Model, x: np.ndarray, g, H, tol: float, curvature: float) -> Root:
+    """The root x classified, or its continuum's representative with the free directions."""
+    hess = np.asarray(H(x), dtype=float)
+    half_widths = [(hi - lo) / 2 for lo, hi in _box(model)]
+    free = free_directions(x, g, hess, half_widths, tol) if null_count(hess) else ()
+    if free:
+        rep = _wrapped(model, representative(x, free))
+        if np.max(np.abs(g(rep))) <= tol:
+            x, hess = rep, np.asarray(H(rep), dtype=float)
+        else:
+            free = ()
+    kind = _kind(hess, curvature)
+    across = bool(free) and kind == "singular" and null_count(hess) == len(free)
+    if kind == "singular":
+        kind = "neutral" if across else "undetermined"
+    return Root(tuple(float(v) for v in x), kind, free, across)
+
+
+def _polished(x: np.ndarray, g, H, steps: int = 3) -> np.ndarray:
+    """A few plain Newton steps: hybr stops at a relative step of 1.5e-8, Newton's
+    quadratic convergence takes the root on to round-off."""
+    for _ in range(steps):
+        try:
+            step = np.linalg.solve(np.asarray(H(x), dtype=float), np.asarray(g(x), dtype=float))
+        except np.linalg.LinAlgError:
+            break
+        x = x - step
+        if np.max(np.abs(step)) <= EPS_STEP * max(np.max(np.abs(x)), 1.0):
+            break
+    return x
+
+
+def _kind(H: np.ndarray, curvature: float) -> str:
+    """stable (every eigenvalue of H above CURVATURE_TOL × curvature), unstable (one
+    below −that), else singular: zero within the tolerance, which rounding cannot
+    decide (the caller makes it neutral along a continuum, else undetermined)."""
+    eig = np.linalg.eigvalsh((H + H.T) / 2)
+    tol = CURVATURE_TOL * max(curvature, np.max(np.abs(eig), initial=0.0))
+    if np.all(eig > tol):
+        return "stable"
+    if np.any(eig < -tol):
+        return "unstable"
+    return "singular"
+
+
+def hessian_scale(model: Model, H) -> float:
+    """The size of ∂²V/∂q∂q over the search box (the largest |eigenvalue| at the
+    sample points of ``gradient_scale``): curvatures are judged zero relative to it."""
+    box = _box(model)
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    sizes = []
+    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+        try:
+            hess = np.asarray(H(low + p * (high - low)), dtype=float)
+        except UnsolvedError:
+            continue
+        sizes.append(np.max(np.abs(np.linalg.eigvalsh((hess + hess.T) / 2)), initial=0.0))
+    return max(max(sizes, default=1.0), 1e-300)
+
+
+@memoized  # asked for each candidate root
+def _box(model: Model) -> tuple[tuple[float, float], ...]:
+    """The search box (``search_box``: declared ranges, one turn, the scene's lengths)."""
+    return tuple((i.low, i.high) for i in search_box(model, periodic_angles(model)))
+
+
+def periodic_angles(model: Model) -> frozenset:
+    """The angle coordinates along which ∂V/∂q is 2π-periodic: an angle that also enters
+    V bare (a torsional spring counts turns) is searched, wrapped and merged as a length
+    instead.
+
+    Where V is only gravity and springs (no inertial potential of a moving frame), the
+    build has already proved it for every angle of ``model.angles``: each enters the
+    positions and stretches only through sin and cos of integer multiples of itself
+    (model.build: ``_periodic_coordinates``, ``_refuse_winding_angles``), and masses,
+    stiffnesses and gravity are constants. Otherwise it is checked at PERIODIC_SAMPLES
+    points to PERIODIC_TOL."""
+    if not model.angles:
+        return frozenset()
+    return model.angles if not model.inertial else _periodic(model)
+
+
+@memoized
+def _periodic(model: Model) -> frozenset:
+    g, _ = compiled_gradient(model)
+    rng = np.random.default_rng(SAMPLE_SEED)
+    points = [np.array([rng.uniform(-math.pi, math.pi) for _ in model.q]) for _ in range(PERIODIC_SAMPLES)]
+    periodic = set()
+    for i, q in enumerate(model.q):
+        if q in model.angles and all(_same_after_a_turn(g, x, i) for x in points):
+            periodic.add(q)
+    return frozenset(periodic)
+
+
+def _same_after_a_turn(g, x: np.ndarray, i: int) -> bool:
+    turned = x.copy()
+    turned[i] += 2 * math.pi
+    try:
+        a, b = np.asarray(g(x), dtype=float), np.asarray(g(turned), dtype=float)
+    except UnsolvedError:
+        return True  # no value to compare: keep the declared kind
+    return bool(np.max(np.abs(a - b), initial=0.0) <= PERIODIC_TOL * max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300))
+
+
+def _starts(model: Model, per_axis: int) -> tuple[list[np.ndarray], str]:
+    """A grid of per_axis points on each coordinate, cell-centred, while it has at most
+    MAX_STARTS points; in more dimensions MAX_STARTS points of a fixed pseudo-random
+    sample of the box instead (the same every run). With a description of which."""
+    n, box = len(model.q), _box(model)
+    per_axis = min(per_axis, int(MAX_STARTS ** (1 / n)))
+    if per_axis >= 2:
+        axes = [np.linspace(lo, hi, per_axis, endpoint=False) + (hi - lo) / (2 * per_axis) for lo, hi in box]
+        grid = " × ".join([str(per_axis)] * n)
+        return [np.array(p) for p in itertools.product(*axes)], "starts on a " + (f"{grid} grid" if n > 1 else "grid")
+    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    sample = np.random.default_rng(SAMPLE_SEED).random((MAX_STARTS, n))
+    return list(low + sample * (high - low)), (f"starts at fixed pseudo-random points (a grid of even 2 per "
+                                               f"coordinate would exceed {MAX_STARTS} starts in {n} dimensions)")
+
+
+def _wrapped(model: Model, x: np.ndarray) -> np.ndarray:
+    """Angles into (−π, π]."""
+    out = np.array(x, dtype=float)
+    angles = periodic_angles(model)
+    for i, q in enumerate(model.q):
+        if q in angles:
+            out[i] = math.pi - (math.pi - out[i]) % (2 * math.pi)
+    return out
+
+
+def difference(model: Model, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    d = x - y
+    angles = periodic_angles(model)
+    for i, q in enumerate(model.q):
+        if q in angles:
+            d[i] = (d[i] + math.pi) % (2 * math.pi) - math.pi
+    return d
+
+
+def _inside(model: Model, x: np.ndarray) -> bool:
+    return all(lo - 1e-12 <= v <= hi + 1e-12 for v, (lo, hi) in zip(x, _box(model)))

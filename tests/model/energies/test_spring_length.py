@@ -1,0 +1,154 @@
+"""A spring's length without |…| where its sign is known (issue 38): an exam writes a
+spring from the wall at −d to a cart at x as d + x, and V = ½ k (d + x − l₀)², never
+|d + x|, sign(d + x) or DiracDelta(d + x). Where the sign is not known, |…| stays and
+the model section says why, in words. Expected values by hand in each test.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from conftest import PROBLEMS
+from rbdsolve.model.build import build_model
+from rbdsolve.model.energies.energy import potential_energy
+from rbdsolve.model.energies.spring_length import without_deltas
+from rbdsolve.problem import load_text
+from rbdsolve.solvers import solve_problem
+
+CART = (PROBLEMS / "examples" / "cart-between-springs.yaml").read_text()
+
+# One spring from the anchor A = (h, 0) to a cart at (l + x, 0): its length at x = 0 is
+# l − h, of a sign nothing decides.
+OFFSET = """\
+parameters: {m: mass, k: stiffness, h: anchor, l: reference position, l0: natural length}
+coordinates: [x]
+points:
+  A: [h, 0]
+  P: [l + x, 0]
+bodies:
+  cart: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [A, P], natural_length: l0}
+questions:
+  - eom
+"""
+
+SIGNS = (sp.Abs, sp.sign, sp.DiracDelta)
+
+
+def _model(text: str):
+    return build_model(load_text(text, "scene.yaml"))
+
+
+def _symbols(model, names: str):
+    return [model.symbols.parameters[n] for n in names.split()]
+
+
+def test_two_springs_on_a_cart_have_lengths_d_plus_x_and_d_minus_x() -> None:
+    model = _model(CART)
+    k, d, l0 = _symbols(model, "k d l0")
+    (x,) = model.q
+    V = potential_energy(model).total
+    assert not V.has(*SIGNS)
+    assert sp.expand(V - (k * (d + x - l0) ** 2 / 2 + k * (d - x - l0) ** 2 / 2)) == 0
+    report = solve_problem(model)
+    eom, equilibria, modes = report.solutions
+    assert not any(s.has(*SIGNS) for s in eom.answers.equations)
+    (equilibrium,) = equilibria.answers.equilibria
+    assert equilibrium.at["x"] == 0 and equilibrium.stability.value == "stable"
+    assert sp.simplify(modes.answers.eigenvalues[0] - 2 * k / model.symbols.parameters["m"]) == 0
+    assert not any("its length is |" in step.text for step in report.model.steps)
+
+
+def test_a_spring_whose_sign_is_not_known_keeps_its_bars_and_says_why() -> None:
+    report = solve_problem(_model(OFFSET))
+    (note,) = [step for step in report.model.steps if "its length is |" in step.text]
+    assert "l − h + x where l − h + x > 0" in note.text and "[l > h]" in note.text
+    (equation,) = report.solutions[0].answers.equations
+    assert equation.has(sp.sign)  # two cases, as the note says
+
+
+def test_an_assumption_decides_the_sign_either_way() -> None:
+    """[l > h + l0]: the length is l − h + x; [h > l]: it is h − l − x."""
+    for assumption, length in (("[l > h + l0]", lambda l, h, x: l - h + x), ("[h > l]", lambda l, h, x: h - l - x)):
+        model = _model(OFFSET.replace("coordinates:", f"assumptions: {assumption}\ncoordinates:"))
+        k, h, l, l0 = _symbols(model, "k h l l0")
+        (x,) = model.q
+        V = potential_energy(model).total
+        assert sp.expand(V - k * (length(l, h, x) - l0) ** 2 / 2) == 0
+
+
+def test_a_spring_through_zero_length_is_refused_by_modes_with_a_reason() -> None:
+    """The anchor at the cart's reference point: the length |x| is zero at x = 0, where V
+    = ½ k (|x| − l₀)² has no second derivative."""
+    text = OFFSET.replace("A: [h, 0]", "A: [0, 0]").replace("P: [l + x, 0]", "P: [x, 0]")
+    text = text.replace("  - eom\n", "  - eom\n  - modes: {about: {x: 0}}\n")
+    report = solve_problem(_model(text))
+    (note,) = [step for step in report.model.steps if "its length is |" in step.text]
+    assert "zero at x = 0" in note.text
+    modes = report.solutions[1]
+    assert not modes.solved and "does not exist at this configuration" in modes.error
+
+
+def test_no_delta_in_K_where_the_spring_has_a_length() -> None:
+    """A cart at x on a spring from the wall at −h, natural length 2h: the length h + x
+    (positive at x = 0), V = ½ k (x − h)², the equilibrium x = h with K = k (by hand),
+    where |h + x| gave K = k (1 − 2h DiracDelta(…))."""
+    text = OFFSET.replace("A: [h, 0]", "A: [-h, 0]").replace("P: [l + x, 0]", "P: [x, 0]")
+    text = text.replace("natural_length: l0", "natural_length: 2*h").replace("  - eom\n", "  - equilibria\n  - modes\n")
+    model = _model(text)
+    k, h, m = _symbols(model, "k h m")
+    equilibria, modes = solve_problem(model).solutions
+    (equilibrium,) = equilibria.answers.equilibria
+    assert sp.simplify(equilibrium.at["x"] - h) == 0 and equilibrium.hessian == sp.Matrix([[k]])
+    assert sp.simplify(modes.answers.frequencies[0] - sp.sqrt(k / m)) == 0
+
+
+def test_without_deltas_keeps_only_a_delta_at_zero() -> None:
+    k, h, l = sp.symbols("k h l", positive=True)
+    K = sp.Matrix([[k * (1 - 2 * h * sp.DiracDelta(h - l))]])
+    assert without_deltas(K) == sp.Matrix([[k]])
+    assert without_deltas(sp.Matrix([[k * sp.DiracDelta(0)]])).has(sp.DiracDelta)
+
+
+def test_a_spring_pull_in_a_free_body_diagram_has_no_bars() -> None:
+    """The cart's springs pull it with −k (d + x − l₀) and k (d − x − l₀) along x."""
+    text = CART.replace("  - eom\n  - equilibria\n  - modes: {about: {x: 0}}\n",
+                        "  - reactions: {forces: [P], at: {x: 0, dot(x): 0}}\n")
+    text = text.replace("coordinates: [x]", "coordinates: [x]\ngravity: [0, -g]").replace(
+        "  l0: natural length of each spring\n", "  l0: natural length of each spring\n  g: gravity\n")
+    report = solve_problem(_model(text))
+    (solution,) = report.solutions
+    assert solution.solved, solution.error
+    pulls = [m for step in solution.steps for m in step.math if getattr(m, "lhs", None) is not None]
+    assert not any(sp.sympify(m.rhs).has(*SIGNS) if isinstance(m.rhs, sp.Basic) else False for m in pulls)
+    (said,) = [step.text for step in solution.steps if "spring 'left' pulls" in step.text]
+    assert "(−k (d − l₀ + x), 0)" in said and "(k (d − l₀ − x), 0)" in said and "|" not in said
+
+
+# A block at x along a slope at α, a spring from it up the slope to the point d along it:
+# d·d = (d − x)² (cos² α + sin² α), a square once sin² + cos² are joined.
+SLOPE = """\
+parameters: {m: mass, k: stiffness, d: anchor distance, l0: natural length, alpha: slope}
+coordinates: [x]
+points:
+  A: "d*[cos(alpha), sin(alpha)]"
+  P: "x*[cos(alpha), sin(alpha)]"
+bodies:
+  block: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [A, P], natural_length: l0}
+questions:
+  - eom
+"""
+
+
+def test_a_spring_along_a_slope_is_written_d_minus_x() -> None:
+    """By hand: |A − P| = |d − x|, d − x > 0 at x = 0 (d > 0), so V = ½ k (d − x − l₀)²,
+    ∂V/∂x = −k (d − x − l₀), with no root or |…| left."""
+    model = _model(SLOPE)
+    V = potential_energy(model).total
+    (x,) = model.q
+    k, d, l0 = (model.symbols.parameters[n] for n in ("k", "d", "l0"))
+    assert not V.has(*SIGNS) and not any(p.exp == sp.S.Half for p in V.atoms(sp.Pow))
+    assert sp.simplify(sp.diff(V, x) + k * (d - x - l0)) == 0

@@ -1,0 +1,40 @@
+"""Units an answer's meaning fixes (model/values/fixed_units.py). By hand: with q an
+angle (a pure number), ∂²V/∂q² is J/rad² = N·m/rad; ∂V/∂q is N·m; M over two angles is
+kg·m²; over a length and an angle kg·m; q̈ of an angle rad/s²."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.model.values.fixed_units import fixed_unit, pair_unit, per_radians, rate_unit
+
+TIME = Dimension(time=Fraction(1))
+ENERGY = Dimension(mass=Fraction(1)) * LENGTH ** 2 / TIME ** 2
+
+
+def test_stiffness_and_mass_entries_per_the_coordinates() -> None:
+    assert pair_unit("K", NUMBER, NUMBER) == "N·m/rad"
+    assert pair_unit("K", LENGTH, LENGTH) == (ENERGY / LENGTH ** 2).unit  # N/m, kg/s²
+    assert pair_unit("K", LENGTH, NUMBER) == "N/rad"
+    assert pair_unit("M", NUMBER, NUMBER) == "kg·m²"
+    assert pair_unit("M", LENGTH, NUMBER) == "kg·m"
+    assert pair_unit("K", None, NUMBER) is None
+
+
+def test_a_torque_is_not_an_energy() -> None:
+    assert per_radians(ENERGY, 1) == "N·m"
+    assert per_radians(ENERGY, 0) == ENERGY.unit  # J
+    assert fixed_unit("reactions", ("at", "O", "components", "M_O"), {"theta": NUMBER}) == "N·m"
+
+
+def test_rates_of_an_angle() -> None:
+    assert rate_unit(NUMBER, 1) == "rad/s" and rate_unit(NUMBER, 2) == "rad/s²"
+    assert rate_unit(LENGTH, 2) == (LENGTH / TIME ** 2).unit
+    assert fixed_unit("eom", ("accelerations", "theta"), {"theta": NUMBER}) == "rad/s²"
+    assert fixed_unit("eom", ("accelerations", "x"), {"x": LENGTH}) == (LENGTH / TIME ** 2).unit
+
+
+def test_an_angular_impulse_and_a_growth_rate() -> None:
+    assert fixed_unit("impact", ("impulses", "theta"), {"theta": NUMBER}) == "N·m·s"
+    assert fixed_unit("modes", ("growth_rates", 0), {"theta": NUMBER}) == "1/s"
