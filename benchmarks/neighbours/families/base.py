@@ -36,6 +36,7 @@ class Builder:
         self.contacts_yaml: dict[str, dict] = {}
         self.frames_yaml: dict[str, dict] = {}
         self.forces_yaml: dict[str, dict] = {}
+        self.couples_yaml: dict[str, dict] = {}
         self.forces: list[Force] = []
         self.supports: list[Support] = []
         self.questions: list[Question] = []
@@ -117,6 +118,7 @@ class Builder:
             "contacts": self.contacts_yaml or None,
             "springs": self.springs_yaml or None,
             "forces": self.forces_yaml or None,
+            "couples": self.couples_yaml or None,
             "questions": [q.kind if not q.options else {q.kind: q.options} for q in self.questions],
         }
         for k, v in self.extra.items():
