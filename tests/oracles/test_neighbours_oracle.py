@@ -34,11 +34,11 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled",
               "wheel-driven-by-couple",
               # bodies placed by a contact, no placement by hand yet
-              "disk-in-turning-ring", "half-disk-on-drum", "half-ring-with-particle", "maxwell-wheel",
-              "ring-and-disk-inside", "slab-on-drum-angle", "spool-radius-of-gyration", "atwood-massive-pulley",
+              "disk-in-turning-ring", "slab-on-drum-angle",
+              "spool-radius-of-gyration", "atwood-massive-pulley",
               "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
-              "incline-30-deg", "incline-block-massive-pulley", "slab-released", "spool-released", "stepped-pulley",
-              "table-block-massive-pulley", "half-disk-about-contact",
+              "incline-block-massive-pulley", "stepped-pulley",
+              "table-block-massive-pulley",
               # a body's own points
               "inverted-rod-spring-at-point"}
 

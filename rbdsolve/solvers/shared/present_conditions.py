@@ -54,9 +54,18 @@ TURNED = {"<": ">", "≤": "≥", ">": "<", "≥": "≤", "=": "="}
 def condition_relations(condition: sp.Basic, critical: Sequence = ()) -> list[Relation]:
     """Each part of a conjunction as ``condition_relation`` writes it, in sympy's sorted
     order of its parts (``And.args``): ``And.make_args`` gives a frozenset, whose order
-    changes with string hashing from one run to the next."""
+    changes with string hashing from one run to the next. A part that is a union
+    (``Or``: h < h₁ or h > h₂) gives one relation per alternative, each after the first
+    led by "or"."""
     parts = condition.args if isinstance(condition, sp.And) else (condition,)
-    return [condition_relation(c, critical) for c in parts]
+    out = []
+    for c in parts:
+        if isinstance(c, sp.Or):  # a union of intervals: "either A", "or B" (A, "or B" alone)
+            first = "either" if len(parts) > 1 else ""
+            out += [condition_relation(a, critical, lead="or" if k else first) for k, a in enumerate(c.args)]
+        else:
+            out.append(condition_relation(c, critical))
+    return out
 
 
 def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Relation:
@@ -80,6 +89,10 @@ def _named_side(condition, critical: Sequence) -> sp.Expr:
 
 
 def condition_text(condition: sp.Basic) -> str:
-    """A condition in a sentence: Ω ≥ √(g/R), its parts joined by "and"."""
+    """A condition in a sentence: Ω ≥ √(g/R), its parts joined by "and", a union's
+    alternatives by "or" (in parentheses inside a conjunction)."""
+    if isinstance(condition, sp.Or):
+        return " or ".join(condition_text(c) for c in condition.args)
     parts = condition.args if isinstance(condition, sp.And) else (condition,)
-    return " and ".join(f"{to_unicode(c.lhs)} {OPS.get(type(c), '?')} {to_unicode(c.rhs)}" for c in parts)
+    return " and ".join(f"({condition_text(c)})" if isinstance(c, sp.Or)
+                        else f"{to_unicode(c.lhs)} {OPS.get(type(c), '?')} {to_unicode(c.rhs)}" for c in parts)
