@@ -89,7 +89,7 @@ def _moment_below(b: Builder, name: str, description: str, product: dict[str, in
     return b.param(name, "moment", description, symbolic=True, low=0.1, high=0.4).name
 
 
-def _rolling_inside(b: Builder, body: Body, entry: dict, r: str) -> None:
+def _rolling_inside(b: Builder, body: Body, entry: dict, r: str, extra: dict | None = None) -> None:
     R = b.param("R", "length", "radius of the fixed cylinder", low=1.0, high=3.0).name
     b.assumptions.append(f"{R} > 2*{r}")
     b.coordinate("theta", "angle")
@@ -97,8 +97,8 @@ def _rolling_inside(b: Builder, body: Body, entry: dict, r: str) -> None:
     body.origin = "_G"
     body.angle = f"-({R} - {r})*theta/{r}" if body.angle is None else body.angle
     b.body(entry, body)
-    b.contacts_yaml["C"] = {"body": body.name, "rolls_on": {"circle": {"centre": "[0, 0]", "radius": R, "side": "inside"}},
-                            "along": "theta"}
+    b.contacts_yaml["C"] = {"body": body.name, **(extra or {}),
+                            "rolls_on": {"circle": {"centre": "[0, 0]", "radius": R, "side": "inside"}}, "along": "theta"}
     b.feature("contact", "rolling:inside")
 
 
@@ -109,7 +109,7 @@ def _gyration(b: Builder) -> None:
     k = b.param("k", "length", "radius of gyration", low=0.1, high=0.4).name
     _g(b)
     body = Body("spool", m, inertia=f"{m}*{k}**2")
-    _rolling_inside(b, body, {"mass": m, "inertia": f"{m}*{k}**2", "radius": r}, r)
+    _rolling_inside(b, body, {"mass": m, "inertia": f"{m}*{k}**2"}, r, {"radius": r})  # the radius it rolls on
     b.feature("given inertia rolling")
     b.ask("modes", {"about": {"theta": "0"}})
 
