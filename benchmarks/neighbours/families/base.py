@@ -49,11 +49,15 @@ class Builder:
 
     # --- parameters and coordinates ----------------------------------------------------
     def param(self, name: str, kind: str, description: str = "", **kw) -> Param:
+        if any(p.name == name for p in self.params):  # one name for two quantities (k a stiffness and a radius)
+            raise ValueError(f"parameter {name!r} drawn twice in one scene")
         p = self.draw.param(name, kind, description, **kw)
         self.params.append(p)
         return p
 
     def fixed(self, name: str, kind: str, text: str, si: str, description: str = "") -> Param:
+        if any(p.name == name for p in self.params):
+            raise ValueError(f"parameter {name!r} drawn twice in one scene")
         p = Param(name, kind, text, si, description=description)
         self.params.append(p)
         return p

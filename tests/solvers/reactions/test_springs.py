@@ -175,3 +175,34 @@ def test_a_contact_loss_reached_on_a_union_of_intervals() -> None:
         assert printed == reached(mv, lv, gv, kv, hv, t0), (mv, lv, gv, kv, hv, t0)
         seen.add(printed)
     assert seen == {True, False}
+
+
+def test_one_coordinate_with_a_spring_s_root_is_answered() -> None:
+    """A particle pendulum held by a spring of natural length L0 to A = (0, h): the
+    spring's length √(l² + h² + 2 h l cos θ) puts a root in Lagrange's equation, which
+    refused the general accelerations ('too long to write out') although with one
+    coordinate q̈ = −h/M needs no determinant (seed 11 of the neighbours, scenes 57, 126,
+    247). By hand at θ = π/2, θ̇ = 0: P = (l, 0), the inward unit vector u = (−1, 0),
+    the spring's pull on P is −k (d − L0)(P − A)/d with d = √(l² + h²), gravity has no
+    component along u, and m a·u = m l θ̇² = 0, so N = −k l (1 − L0/d)."""
+    h, L0 = sp.symbols("h L0", positive=True)
+    text = f"""title: a pendulum on a spring with a natural length
+parameters: {{m: mass, l: length, g: gravity, k: stiffness, h: height, L0: natural length}}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  A: [0, h]
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  bob: {{shape: particle, mass: m, at: P}}
+springs:
+  s: {{stiffness: k, between: [P, A], natural_length: L0}}
+questions:
+  - reactions: {{forces: [P], at: {{theta: pi/2, dot(theta): 0}}}}
+"""
+    result = json.loads(json.dumps(report_object(solve_problem(build_model(load_text(text, "spring.yaml"))))))[
+        "results"][0]
+    assert result["ok"], result["error"]
+    got = sp.sympify(result["answers"]["at"]["P"]["components"]["N_P"], locals={**NAMES, "h": h, "L0": L0})
+    assert sp.simplify(got - (-k * l * (1 - L0 / sp.sqrt(l**2 + h**2)))) == 0
