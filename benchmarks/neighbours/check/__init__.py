@@ -72,6 +72,7 @@ def category(message: str) -> str:
         (r"no compact closed form", "no closed form without values"),
         (r"mass matrix is singular", "singular mass matrix"),
         (r"may miss", "may miss solutions"),
+        (r"= 0 along the motion has no closed-form solution", "contact loss: no closed form of where N = 0 (transcendental)"),
         (r"transcendental.*Other equilibria may exist", "equilibria: the evident roots only (transcendental equations)"),
         (r"give either 'shape' or 'inertia'|explicit inertia takes no dimensions",
          "format: a rolling body must be a shape (no given inertia)"),

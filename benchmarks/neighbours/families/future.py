@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+from benchmarks.neighbours.draw import LARGE, SMALL
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Body, Force, Part, Spring, Support
 
@@ -90,7 +91,7 @@ def _moment_below(b: Builder, name: str, description: str, product: dict[str, in
 
 
 def _rolling_inside(b: Builder, body: Body, entry: dict, r: str, extra: dict | None = None) -> None:
-    R = b.param("R", "length", "radius of the fixed cylinder", low=1.0, high=3.0).name
+    R = b.param("R", "length", "radius of the fixed cylinder", low=1.0, high=3.0, table=[x for x in LARGE if x[1] != "4/5"]).name
     b.assumptions.append(f"{R} > 2*{r}")
     b.coordinate("theta", "angle")
     b.hide("_G", f"({R} - {r})*[sin(theta), -cos(theta)]")
@@ -105,8 +106,8 @@ def _rolling_inside(b: Builder, body: Body, entry: dict, r: str, extra: dict | N
 def _gyration(b: Builder) -> None:
     """A spool of radius of gyration k rolling inside a cylinder: ω² = g/((R − r)(1 + k²/r²))."""
     m = b.param("m", "mass", "mass of the spool").name
-    r = b.param("r", "length", "radius of the spool", low=0.2, high=0.5).name
-    k = b.param("k", "length", "radius of gyration", low=0.1, high=0.4).name
+    r = b.param("r", "length", "radius of the spool", low=0.2, high=0.5, table=SMALL).name
+    k = b.param("k", "length", "radius of gyration", low=0.1, high=0.4, table=[("5 cm", "1/20"), ("0.1", "1/10")]).name
     _g(b)
     body = Body("spool", m, inertia=f"{m}*{k}**2")
     _rolling_inside(b, body, {"mass": m, "inertia": f"{m}*{k}**2"}, r, {"radius": r})  # the radius it rolls on
@@ -118,7 +119,7 @@ def _eccentric(b: Builder) -> None:
     """A disk with a particle fixed on its rim rolls inside a cylinder."""
     m = b.param("m", "mass", "mass of the disk").name
     mp = b.param("mp", "mass", "mass of the particle", low=0.1, high=0.5).name
-    r = b.param("r", "length", "radius of the disk", low=0.2, high=0.5).name
+    r = b.param("r", "length", "radius of the disk", low=0.2, high=0.5, table=SMALL).name
     _g(b)
     parts = {"disk": {"shape": "disk", "mass": m, "radius": r},
              "bob": {"shape": "particle", "mass": mp, "at": f"[0, -{r}/2]"}}
