@@ -64,7 +64,7 @@ def category(message: str) -> str:
         (r"unknown key '(forces|couples|torques)'", r"format: no '\1:' (applied forces and couples)"),
         (r"unknown key '(\w+)' in (\w+)", r"format: unknown key '\1' in \2"),
         (r"unknown key '(\w+)'", r"format: unknown key '\1'"),
-        (r"ran out of its [\d.]+ s budget", "out of the time budget"),
+        (r"ran out of its [\d.]+ s budget|ran out of its share", "out of the time budget"),
         (r"not an equilibrium", "about: not an equilibrium"),
         (r"no stable equilibrium", "no stable equilibrium found"),
         (r"depends (explicitly )?on time", "the scene depends on time t"),
