@@ -62,19 +62,38 @@ PLACED = {
     "cylinder-on-plank": {"cylinder": ("[x + s, h + r]", "-s/r")},
     "disk-on-turning-disk": {"disk": ("(R + r)*[-sin(theta), cos(theta)]", "psi + (R + r)*(theta - psi)/r")},
     "cylinder-pulley-block": {"cylinder": ("[x, r]", "-x/r"), "block": ("[d, 2*r - d - 2*x]", None)},
+    "incline-30-deg": {"wheel": ("x*[cos(alpha), -sin(alpha)] + r*[sin(alpha), cos(alpha)]", "-x/r")},
+    "spool-released": {"spool": ("[b, -y]", "-y/b")},     # the string leaves the hub on the left
+    "maxwell-wheel": {"wheel": ("[r, -y]", "-y/r")},      # the string on the axle, radius r
+    "slab-released": {"slab": ("(R + a/2)*[-sin(theta), cos(theta)] + R*theta*[cos(theta), sin(theta)]", "theta")},
+    "half-disk-about-contact": {"half": ("[-R*theta, R]", "theta")},
+    "half-ring-with-particle": {"rocker": ("[-R*theta, R]", "theta")},
+    # rolling inside the turning ring: r φ̇ = R ψ̇ − (R − r) θ̇ (no slip at the contact, θ in the scene)
+    "ring-and-disk-inside": {"disk": ("(R - r)*[sin(theta), -cos(theta)]", "(R*psi - (R - r)*theta)/r")},
+    # a circle of radius r rolling on the drum's top turned by θ: its centre at the angle
+    # φ = r θ/(R + r) round the drum (arcs R φ = r (θ − φ))
+    "half-disk-on-drum": {"half": ("(R + r)*[-sin(r*theta/(R + r)), cos(r*theta/(R + r))]", "theta")},
 }
 SUPPORTS = {  # the contacts' supports, for reactions
     "wheel-on-incline": [Support("C", "wheel", "x*[cos(alpha), -sin(alpha)]", "rolling", normal="[sin(alpha), cos(alpha)]")],
     "yo-yo": [Support("S", "yoyo", "[0, -y]", "string", normal="[0, 1]")],
+    "incline-30-deg": [Support("C", "wheel", "x*[cos(alpha), -sin(alpha)]", "rolling", normal="[sin(alpha), cos(alpha)]")],
+    "spool-released": [Support("S", "spool", "[0, -y]", "string", normal="[0, 1]")],
+    "slab-released": [Support("C", "slab", "R*[-sin(theta), cos(theta)]", "rolling", normal="[-sin(theta), cos(theta)]")],
     "particle-on-sphere": [Support("P", "particle", "P", "guide", normal="P/norm(P)")],
     "bead-in-loop-on-spring": [Support("P", "bead", "P", "guide", normal="-P/norm(P)")],  # the loop pushes inwards
     "rod-pivot-released": [Support("O", "rod", "O", "pivot")],
 }
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
                  for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
-ASSUMED = {"ball-in-bowl": ("R > r",), "cylinder-in-cylinder": ("R > r",)}  # implied by rolling inside
+CONTACT_POINTS = {"half-disk-about-contact": {"C": "[-R*theta, 0]"}}  # a contact asked about, as a point
+ASSUMED = {"ball-in-bowl": ("R > r",), "cylinder-in-cylinder": ("R > r",), "ring-and-disk-inside": ("R > r",)}  # implied by rolling inside
 DOMAINS = {"half-disk-rocking": ("-pi/2", "pi/2"), "hemisphere-rocking": ("-pi/2", "pi/2"),
-           "slab-on-drum": ("-b/(2*R)", "b/(2*R)")}
+           "slab-on-drum": ("-b/(2*R)", "b/(2*R)"), "slab-released": ("-b/(2*R)", "b/(2*R)"),
+           "half-disk-about-contact": ("-pi/2", "pi/2"),
+           "half-ring-with-particle": ("-pi/2", "pi/2"),
+           # the contact stays on the curved edge while θ + φ < π/2
+           "half-disk-on-drum": ("-pi/2*(R + r)/(R + 2*r)", "pi/2*(R + r)/(R + 2*r)")}
 
 
 def scene(path: Path) -> Scene:
@@ -107,7 +126,7 @@ def scene(path: Path) -> Scene:
         params.append(Param(p, "length", None if v is None else str(v), None if v is None else si(v), 0.5, 2.0,
                             not (isinstance(raw, dict) and isinstance(raw[p], dict) and raw[p].get("positive") is False)))
     coords = _coords(doc.get("coordinates") or [], name)
-    points = {k: _vec(v) for k, v in (doc.get("points") or {}).items()}
+    points = {k: _vec(v) for k, v in (doc.get("points") or {}).items()} | CONTACT_POINTS.get(name, {})
     for k, v in (doc.get("prescribed") or {}).items():
         points = {p: re.sub(rf"\b{k}\b", f"({v})", e) for p, e in points.items()}
     bodies = [_body(n, b, PLACED.get(name, {})) for n, b in (doc.get("bodies") or {}).items()]

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from benchmarks.neighbours.check import (energy, eom, equilibria, impact, inertia, kinematics, modes, reactions, spin,
                                          steady)
-from benchmarks.neighbours.check.context import Mismatch, context
+from benchmarks.neighbours.check.context import Mismatch, Partial, context
 from benchmarks.neighbours.scene import Scene
 
 CHECKS = {"eom": eom.check, "equilibria": equilibria.check, "modes": modes.check, "energy": energy.check,
@@ -64,7 +64,7 @@ def category(message: str) -> str:
         (r"unknown key '(forces|couples|torques)'", r"format: no '\1:' (applied forces and couples)"),
         (r"unknown key '(\w+)' in (\w+)", r"format: unknown key '\1' in \2"),
         (r"unknown key '(\w+)'", r"format: unknown key '\1'"),
-        (r"ran out of its [\d.]+ s budget", "out of the time budget"),
+        (r"ran out of its [\d.]+ s budget|ran out of its share", "out of the time budget"),
         (r"not an equilibrium", "about: not an equilibrium"),
         (r"no stable equilibrium", "no stable equilibrium found"),
         (r"depends (explicitly )?on time", "the scene depends on time t"),
@@ -72,6 +72,8 @@ def category(message: str) -> str:
         (r"no compact closed form", "no closed form without values"),
         (r"mass matrix is singular", "singular mass matrix"),
         (r"may miss", "may miss solutions"),
+        (r"= 0 along the motion has no closed-form solution", "contact loss: no closed form of where N = 0 (transcendental)"),
+        (r"transcendental.*Other equilibria may exist", "equilibria: the evident roots only (transcendental equations)"),
         (r"give either 'shape' or 'inertia'|explicit inertia takes no dimensions",
          "format: a rolling body must be a shape (no given inertia)"),
         (r"give it one shape, not parts", "format: a rolling body must be one shape (no parts)"),
@@ -143,6 +145,8 @@ def _question(ctx, question, result: dict) -> QuestionOutcome:
         out.notes = list(notes or [])
     except Mismatch as exc:
         out.status, out.reason = "mismatch", str(exc)
+    except Partial as exc:
+        out.status, out.reason, out.detail = "refused", category(exc.reason), str(exc)
     except Exception as exc:  # noqa: BLE001 - the oracle's own failure, counted apart
         out.status, out.reason = "oracle", f"{type(exc).__name__}: {exc}"
         out.detail = traceback.format_exc(limit=6)

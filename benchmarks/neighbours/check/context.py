@@ -22,6 +22,16 @@ class Mismatch(Exception):
     """rbdsolve's answer disagrees with the oracle (the message says where and by how much)."""
 
 
+class Partial(Exception):
+    """rbdsolve's answer is right as far as it goes and says itself that it is not complete
+    (a warning that other solutions may exist): the part missing is a refusal, with the
+    warning as its reason, not a mismatch."""
+
+    def __init__(self, reason: str, detail: str):
+        super().__init__(detail)
+        self.reason = reason
+
+
 @dataclass
 class Context:
     scene: Scene

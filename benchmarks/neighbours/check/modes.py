@@ -98,8 +98,9 @@ def question_about(ctx, entry):
 
 
 def _about(ctx, given, i):
-    """The equilibrium the question names, or (none named) the only stable one the oracle finds."""
-    if isinstance(given, dict):
+    """The equilibrium the question names, or (none named, or named by its number in the
+    equilibria's list: ``{equilibrium: 1}``) the only stable one the oracle finds."""
+    if isinstance(given, dict) and "equilibrium" not in given:
         return {c: str(v) for c, v in given.items()}
     from benchmarks.neighbours.expr import FLOAT
     from benchmarks.neighbours.oracle.search import equilibria, stability

@@ -36,6 +36,7 @@ class Builder:
         self.contacts_yaml: dict[str, dict] = {}
         self.frames_yaml: dict[str, dict] = {}
         self.forces_yaml: dict[str, dict] = {}
+        self.couples_yaml: dict[str, dict] = {}
         self.forces: list[Force] = []
         self.supports: list[Support] = []
         self.questions: list[Question] = []
@@ -48,11 +49,15 @@ class Builder:
 
     # --- parameters and coordinates ----------------------------------------------------
     def param(self, name: str, kind: str, description: str = "", **kw) -> Param:
+        if any(p.name == name for p in self.params):  # one name for two quantities (k a stiffness and a radius)
+            raise ValueError(f"parameter {name!r} drawn twice in one scene")
         p = self.draw.param(name, kind, description, **kw)
         self.params.append(p)
         return p
 
     def fixed(self, name: str, kind: str, text: str, si: str, description: str = "") -> Param:
+        if any(p.name == name for p in self.params):
+            raise ValueError(f"parameter {name!r} drawn twice in one scene")
         p = Param(name, kind, text, si, description=description)
         self.params.append(p)
         return p
@@ -117,6 +122,7 @@ class Builder:
             "contacts": self.contacts_yaml or None,
             "springs": self.springs_yaml or None,
             "forces": self.forces_yaml or None,
+            "couples": self.couples_yaml or None,
             "questions": [q.kind if not q.options else {q.kind: q.options} for q in self.questions],
         }
         for k, v in self.extra.items():

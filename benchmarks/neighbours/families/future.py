@@ -9,6 +9,9 @@ they are answered."""
 
 from __future__ import annotations
 
+from fractions import Fraction
+
+from benchmarks.neighbours.draw import LARGE, SMALL
 from benchmarks.neighbours.families.base import Builder
 from benchmarks.neighbours.scene import Body, Force, Part, Spring, Support
 
@@ -54,42 +57,60 @@ def _couple(b: Builder) -> None:
     """A rod on a pivot turned by a motor's couple M0: sin θ = 2 M0/(m g l)."""
     m = b.param("m", "mass", "mass of the rod").name
     l = b.param("l", "length", "length of the rod").name
-    M0 = b.param("M0", "torsion", "the motor's couple", low=0.5, high=2.0).name
-    b.assumptions.append(f"2*{M0} < {m}*g*{l}")
-    _g(b)
+    g = _g(b)
+    M0 = _moment_below(b, "M0", "the motor's couple", {m: 1, g: 1, l: 1}, 2)
+    b.assumptions.append(f"2*{M0} < {m}*{g}*{l}")
     b.coordinate("theta", "angle")
     b.point("O", "[0, 0]")
     b.point("G", f"{l}/2*[sin(theta), -cos(theta)]")
     b.body({"shape": "rod", "mass": m, "length": l, "at": "G", "angle": "theta", "axis": "y"},
            Body("rod", m, "rod", {"length": l}, (0, 1, 0), origin="G", angle="theta"))
-    b.forces_yaml["motor"] = {"on": "rod", "couple": M0}
+    b.couples_yaml["motor"] = {"on": "rod", "moment": M0}
     b.forces.append(Force("motor", "rod", couple=M0))
     b.feature("applied couple")
     b.ask("equilibria")
     b.ask("eom")
 
 
-def _rolling_inside(b: Builder, body: Body, entry: dict, r: str) -> None:
-    R = b.param("R", "length", "radius of the fixed cylinder", low=1.0, high=3.0).name
+MOMENTS = [("2 N*m", "2"), ("1", "1"), ("1/2 N*m", "1/2"), ("0.2 N*m", "1/5"), ("1/10", "1/10")]
+
+
+def _moment_below(b: Builder, name: str, description: str, product: dict[str, int], factor: int) -> str:
+    """A couple's parameter M with factor·M below the product of the named parameters
+    (its existence condition, such as 2 M0 < m g l): a value from the table that keeps
+    it where every factor has a value, else symbolic (the condition an assumption)."""
+    given = {p.name: p.si for p in b.params}
+    if all(given.get(n) for n in product):
+        bound = 1.0
+        for n, power in product.items():
+            bound *= float(Fraction(given[n])) ** power
+        table = [(t, si) for t, si in MOMENTS if factor * float(Fraction(si)) < 0.8 * bound]
+        if table:
+            return b.param(name, "moment", description, symbolic=False, table=table, low=0.1, high=0.4).name
+    return b.param(name, "moment", description, symbolic=True, low=0.1, high=0.4).name
+
+
+def _rolling_inside(b: Builder, body: Body, entry: dict, r: str, extra: dict | None = None) -> None:
+    R = b.param("R", "length", "radius of the fixed cylinder", low=1.0, high=3.0, table=[x for x in LARGE if x[1] != "4/5"]).name
     b.assumptions.append(f"{R} > 2*{r}")
     b.coordinate("theta", "angle")
     b.hide("_G", f"({R} - {r})*[sin(theta), -cos(theta)]")
     body.origin = "_G"
     body.angle = f"-({R} - {r})*theta/{r}" if body.angle is None else body.angle
     b.body(entry, body)
-    b.contacts_yaml["C"] = {"body": body.name, "rolls_on": {"circle": {"centre": "[0, 0]", "radius": R, "side": "inside"}},
-                            "along": "theta"}
+    b.contacts_yaml["C"] = {"body": body.name, **(extra or {}),
+                            "rolls_on": {"circle": {"centre": "[0, 0]", "radius": R, "side": "inside"}}, "along": "theta"}
     b.feature("contact", "rolling:inside")
 
 
 def _gyration(b: Builder) -> None:
     """A spool of radius of gyration k rolling inside a cylinder: ω² = g/((R − r)(1 + k²/r²))."""
     m = b.param("m", "mass", "mass of the spool").name
-    r = b.param("r", "length", "radius of the spool", low=0.2, high=0.5).name
-    k = b.param("k", "length", "radius of gyration", low=0.1, high=0.4).name
+    r = b.param("r", "length", "radius of the spool", low=0.2, high=0.5, table=SMALL).name
+    k = b.param("k", "length", "radius of gyration", low=0.1, high=0.4, table=[("5 cm", "1/20"), ("0.1", "1/10")]).name
     _g(b)
     body = Body("spool", m, inertia=f"{m}*{k}**2")
-    _rolling_inside(b, body, {"mass": m, "inertia": f"{m}*{k}**2", "radius": r}, r)
+    _rolling_inside(b, body, {"mass": m, "inertia": f"{m}*{k}**2"}, r, {"radius": r})  # the radius it rolls on
     b.feature("given inertia rolling")
     b.ask("modes", {"about": {"theta": "0"}})
 
@@ -98,7 +119,7 @@ def _eccentric(b: Builder) -> None:
     """A disk with a particle fixed on its rim rolls inside a cylinder."""
     m = b.param("m", "mass", "mass of the disk").name
     mp = b.param("mp", "mass", "mass of the particle", low=0.1, high=0.5).name
-    r = b.param("r", "length", "radius of the disk", low=0.2, high=0.5).name
+    r = b.param("r", "length", "radius of the disk", low=0.2, high=0.5, table=SMALL).name
     _g(b)
     parts = {"disk": {"shape": "disk", "mass": m, "radius": r},
              "bob": {"shape": "particle", "mass": mp, "at": f"[0, -{r}/2]"}}

@@ -68,7 +68,7 @@ def _body(b: Builder, kind: str, up: bool):
         return "half", "O", "B", f"4*{r}/(3*pi)"
     if kind == "gyration":
         d = b.param("d", "length", "distance from the pivot to G").name
-        k = b.param("k", "length", "radius of gyration about G").name
+        k = b.param("kG", "length", "radius of gyration about G").name
         b.point("G", f"{d} * {u}")
         b.point("B", f"2*{d} * {u}")
         b.body({"mass": m, "inertia": f"{m}*{k}**2", "at": "G", "angle": angle},

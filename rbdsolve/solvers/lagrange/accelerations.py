@@ -50,7 +50,8 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None 
     h = tuple(expanded(E.xreplace({a: 0 for a in model.qdd})) for E in equations)
     if at is not None:
         M, h = M.xreplace(at).applyfunc(sp.simplify), tuple(sp.simplify(x.xreplace(at)) for x in h)
-    elif general and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
+    elif general and n > 1 and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
+        # (one coordinate: q̈ = −h/M, no determinant to swell, whatever h holds)
         return Accelerations(M, h, None, too_long=True)
     det = tidy(expanded(M.det(method="berkowitz")))
     if det == 0:

@@ -7,8 +7,9 @@ with the reason it is what it is (the report prints them):
   holds (a slab on a drum, |θ| ≤ b/(2R)): elsewhere no solution is an equilibrium of
   the scene (``contact_span``);
 * a periodic angle: one turn, (−π, π] (the scan adds a cell each side);
-* an angle that is not periodic (declared ``periodic: false``, or in the angle of a
-  torsional spring), without a range: ±SEARCH_SCALE π (five turns each way);
+* an angle that is not periodic (declared ``periodic: false``, in the angle of a
+  torsional spring, or a contact's travel round a circle, ``along`` it), without a
+  range: ±SEARCH_SCALE π (five turns each way);
 * anything else (a length, or a coordinate whose kind is not known): ±SEARCH_SCALE
   times the scene's largest length (the largest value of a parameter whose dimension
   is a length), ±SEARCH_SCALE when no length has a value. A mass of 1000 kg does not
@@ -28,7 +29,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.quantities.quantity import LENGTH
-from rbdsolve.problem.schema import CoordinateKind
+from rbdsolve.problem.schema import CoordinateKind, Measure, SurfaceKind
 
 SEARCH_SCALE = 10.0
 
@@ -57,7 +58,7 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
         return span
     if periodic:
         return Interval(-math.pi, math.pi, "one turn")
-    if c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model):
+    if c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model) or c.name in _round_a_circle(model):
         return Interval(-SEARCH_SCALE * math.pi, SEARCH_SCALE * math.pi,
                         f"±{SEARCH_SCALE:g}π: an angle that winds up, with no declared range")
     name, length = _largest_length(model)
@@ -95,7 +96,7 @@ def search_rule(model: Model, angles: frozenset) -> str:
             parts.append(f"{shown} in the span where contact '{spans[0].name}' holds")
         elif q in angles:
             parts.append(f"{shown} in (−π, π]")
-        elif c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model):
+        elif c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model) or c.name in _round_a_circle(model):
             parts.append(f"{shown} in ±{SEARCH_SCALE:g}π")
         else:
             parts.append(f"{shown} in ±{SEARCH_SCALE:g} × the scene's largest length")
@@ -105,6 +106,13 @@ def search_rule(model: Model, angles: frozenset) -> str:
 def _torsion_angles(model: Model) -> set:
     """Coordinates in the angle of a torsional spring: angles, whatever their kind says."""
     return {q for s in model.springs if s.source.angle is not None for q in s.stretch.free_symbols & set(model.q)}
+
+
+def _round_a_circle(model: Model) -> set[str]:
+    """Coordinates that are a contact's travel round a fixed circle (``along`` it): an
+    angle, whatever their kind says (a wheel inside a cylinder at θ = π is no length)."""
+    return {c.coordinate for c in model.problem.contacts
+            if c.measure is Measure.ALONG and c.surface.kind is SurfaceKind.CIRCLE and c.coordinate}
 
 
 def _largest_length(model: Model) -> tuple[str | None, float]:

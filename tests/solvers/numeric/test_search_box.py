@@ -81,3 +81,29 @@ def test_a_rolling_wheel_s_declared_range_and_its_default(tmp_path) -> None:
             [-0.48453720205778310, 0.0, 0.48453720205778310], abs=1e-12)
         assert [eq.stability.value for eq in solution.answers.equilibria] == ["stable", "unstable", "stable"]
         assert any(box in w for w in solution.warnings), solution.warnings
+
+
+def test_a_travel_round_a_circle_is_searched_as_an_angle() -> None:
+    """A wheel (disk m = 4, a particle mp = 5 at r/2 from its centre) rolling inside a
+    cylinder, θ its travel round the circle: no length, though its kind is not said (the
+    box was ±10 × r = ±3, which left out θ = π; neighbours seed 2027, scene 11). By hand,
+    the wheel turns by φ = −(R − r) θ/r = −4θ, so V = −(m + mp) g (R − r) cos θ
+    − mp g (r/2) cos 4θ; at θ = π, V' = 0 and V'' = −(m + mp) g (R − r) + 16 mp g r/2
+    = 11.772 > 0: stable at the top of the cylinder, with the particle below the centre."""
+    text = """\
+parameters: {m: mass, mp: mass, r: length, g: gravity, R: length}
+values: {m: 4, mp: 5, r: 0.3, g: 9.81, R: 1.5}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  wheel: {parts: {disk: {shape: disk, mass: m, radius: r}, bob: {shape: particle, mass: mp, at: "[0, -r/2]"}}}
+contacts:
+  C: {body: wheel, rolls_on: {circle: {centre: "[0, 0]", radius: R, side: inside}}, along: theta}
+questions: [equilibria]
+"""
+    model = build_model(load_text(text, "wheel.yaml"))
+    (box,) = search_box(model, periodic_angles(model))
+    assert box.low <= -math.pi and box.high >= math.pi
+    solution = equilibria_numeric.solve(None, model, Options())
+    at_pi = [eq for eq in solution.answers.equilibria if abs(math.remainder(eq.at["theta"] - math.pi, 2 * math.pi)) < 1e-9]
+    assert at_pi and {str(eq.stability) for eq in at_pi} <= {"Stability.STABLE", "stable"}, at_pi

@@ -130,3 +130,79 @@ def test_a_spring_at_a_joint_is_refused() -> None:
     text = head + ("springs:\n  s: {stiffness: k, between: [G1, A]}\nquestions:\n  - reactions: {forces: "
                    "[{at: O, on: long_rod}, {at: G1, on: short_rod, by: long_rod}]}\n")
     assert "its end is a point of bodies long_rod, short_rod" in _refusal(text)
+
+
+def test_a_contact_loss_reached_on_a_union_of_intervals() -> None:
+    """The pendulum of tests/oracles/neighbours_found/spring-pendulum-reactions-or.yaml
+    (a particle on a light rod of length l, a spring of stiffness k to A = (0, h) above
+    the pivot, released from rest at θ₀): where N = 0 is reached is a union of
+    intervals in k and h (it exited 3: 'Or' object has no attribute 'lhs'). By hand:
+    V = −m g l cos θ + ½ k |P − A|², so θ̇² = 2 (m g − h k)(cos θ − cos θ₀)/(m l);
+    Newton's law along the rod, inward: m l θ̇² = N − m g cos θ + k (l + h cos θ).
+    The printed condition is sampled against a scan of N over the swing (θ̇² ≥ 0)."""
+    from pathlib import Path
+
+    import numpy as np
+
+    path = Path(__file__).parents[2] / "oracles" / "neighbours_found" / "spring-pendulum-reactions-or.yaml"
+    report = report_object(solve_problem(build_model(load_text(path.read_text(encoding="utf-8"), path.name))))
+    result = json.loads(json.dumps(report))["results"][2]
+    assert result["ok"], result["error"]
+    (when,) = result["answers"]["lost_exists_when"]["N_P"]
+    h, theta0 = sp.symbols("h theta0", positive=True)
+    condition = sp.sympify(when, locals={**NAMES, "h": h, "theta0": theta0})
+
+    def reached(mv, lv, gv, kv, hv, t0) -> bool:
+        grid = np.linspace(-np.pi, np.pi, 20001)
+        rate2 = 2 * (mv * gv - hv * kv) * (np.cos(grid) - np.cos(t0)) / (mv * lv)
+        swing = rate2 >= 0  # the arc of the swing holds θ₀: its run of θ̇² ≥ 0 through θ₀
+        i0 = int(np.argmin(abs(grid - t0)))
+        lo, hi = i0, i0
+        while lo > 0 and swing[lo - 1]:
+            lo -= 1
+        while hi < len(grid) - 1 and swing[hi + 1]:
+            hi += 1
+        arc = slice(lo, hi + 1)
+        N = mv * lv * np.maximum(rate2[arc], 0) + mv * gv * np.cos(grid[arc]) - kv * (lv + hv * np.cos(grid[arc]))
+        return bool(N.min() <= 0 <= N.max())
+
+    rng = np.random.default_rng(29)
+    seen = set()
+    for _ in range(200):
+        mv, lv, gv, kv, hv, t0 = (rng.uniform(0.5, 3), rng.uniform(0.3, 2), rng.uniform(5, 12), rng.uniform(1, 60),
+                                  rng.uniform(0.1, 2), rng.uniform(0.2, 1.2))
+        printed = bool(condition.subs({m: mv, l: lv, g: gv, k: kv, h: hv, theta0: t0}))
+        assert printed == reached(mv, lv, gv, kv, hv, t0), (mv, lv, gv, kv, hv, t0)
+        seen.add(printed)
+    assert seen == {True, False}
+
+
+def test_one_coordinate_with_a_spring_s_root_is_answered() -> None:
+    """A particle pendulum held by a spring of natural length L0 to A = (0, h): the
+    spring's length √(l² + h² + 2 h l cos θ) puts a root in Lagrange's equation, which
+    refused the general accelerations ('too long to write out') although with one
+    coordinate q̈ = −h/M needs no determinant (seed 11 of the neighbours, scenes 57, 126,
+    247). By hand at θ = π/2, θ̇ = 0: P = (l, 0), the inward unit vector u = (−1, 0),
+    the spring's pull on P is −k (d − L0)(P − A)/d with d = √(l² + h²), gravity has no
+    component along u, and m a·u = m l θ̇² = 0, so N = −k l (1 − L0/d)."""
+    h, L0 = sp.symbols("h L0", positive=True)
+    text = f"""title: a pendulum on a spring with a natural length
+parameters: {{m: mass, l: length, g: gravity, k: stiffness, h: height, L0: natural length}}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  A: [0, h]
+  P: l * [sin(theta), -cos(theta)]
+bodies:
+  bob: {{shape: particle, mass: m, at: P}}
+springs:
+  s: {{stiffness: k, between: [P, A], natural_length: L0}}
+questions:
+  - reactions: {{forces: [P], at: {{theta: pi/2, dot(theta): 0}}}}
+"""
+    result = json.loads(json.dumps(report_object(solve_problem(build_model(load_text(text, "spring.yaml"))))))[
+        "results"][0]
+    assert result["ok"], result["error"]
+    got = sp.sympify(result["answers"]["at"]["P"]["components"]["N_P"], locals={**NAMES, "h": h, "L0": L0})
+    assert sp.simplify(got - (-k * l * (1 - L0 / sp.sqrt(l**2 + h**2)))) == 0
