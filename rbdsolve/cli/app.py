@@ -190,10 +190,17 @@ def write_text(text: str, output: str | None) -> None:
 def _silence_stdout() -> None:
     """Standard output to /dev/null once a write to it failed: what is still buffered
     would fail again when Python flushes it at exit, with a second message."""
+    _silence(sys.stdout)
+
+
+def _silence(stream) -> bool:
+    """The stream's descriptor pointed at /dev/null (its buffer then flushes there);
+    False where it has none (a test's stream)."""
     try:
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-    except (OSError, ValueError, AttributeError):  # no file descriptor (a test's stream)
-        pass
+        os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+        return True
+    except (OSError, ValueError, AttributeError):
+        return False
 
 
 class OutputPath(click.Path):
@@ -300,12 +307,9 @@ def _leave(code: object) -> None:
     watched = sys.getprofile() is not None or sys.gettrace() is not None  # a profiler, coverage: they write at exit
     if not isinstance(code, int) or others or watched or "concurrent.futures.process" in sys.modules:
         return
-    try:
-        for stream in (sys.stdout, sys.stderr):
-            if stream is not None:
-                stream.flush()
-    except (OSError, ValueError):
-        return
+    for stream in (sys.stdout, sys.stderr):
+        if stream is not None and not _flushes(stream):
+            return
     atexit._run_exitfuncs()  # what Python's exit would run, in the same order
     os._exit(code)
 
@@ -373,6 +377,24 @@ def _on_signal(name: str, handler):
     if handler is None or threading.current_thread() is not threading.main_thread():
         return None
     return signal.signal(getattr(signal, name), handler)
+
+
+def _flushes(stream) -> bool:
+    """Flushed, or, where its device refuses (standard error on a full disk), emptied
+    into /dev/null: what it held could not be said anyway, and Python's own flush at
+    exit would fail again and end the process with 120 instead of its exit code."""
+    try:
+        stream.flush()
+        return True
+    except (OSError, ValueError):
+        pass
+    if not _silence(stream):
+        return False
+    try:
+        stream.flush()
+        return True
+    except (OSError, ValueError):
+        return False
 
 
 def _flushed() -> ExitCode:

@@ -128,6 +128,6 @@ def test_the_starts_are_described_as_they_were_placed(n, starts, text) -> None:
         __hash__ = object.__hash__
 
     model = Fake(q=q, angles=set(), values={}, springs=(), contacts=(),
-                            problem=SimpleNamespace(coordinates=coordinates, dimensions=()))
+                            problem=SimpleNamespace(coordinates=coordinates, dimensions=(), contacts=()))
     points, how = _starts(model, 24)
     assert len(points) == starts and how.startswith(text)
