@@ -254,7 +254,7 @@ def build_model(problem: Problem) -> Model:
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
     assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
-    springs = signed_springs(springs, names, assumptions)
+    springs = signed_springs(springs, names, assumptions, problem.coordinates)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
                   velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes,
                   loads=_loads(problem, names, bodies, assumptions, values), body_points=own)
@@ -609,17 +609,22 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
     return SpringModel(spring.name, k, stretch, spring)
 
 
-def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple) -> tuple[SpringModel, ...]:
+def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple,
+                   coordinates: tuple = ()) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
-    configuration (q = 0) is known (model/energies/spring_length.py)."""
+    configuration (q = 0), or over a coordinate's declared range, is known
+    (model/energies/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}
     assumed = substitutions(assumptions, names) if assumptions else {}
+    by_name = dict(zip(names.state.names, names.state.q))
+    ranges = {by_name[c.name]: (names.scalar(c.range[0]), names.scalar(c.range[1]))
+              for c in coordinates if c.range is not None and c.name in by_name}
     out = []
     for s in springs:
         if s.source.ends is not None and not s.stretch.has(sp.Abs):  # along a slope: √(u²) = |u| once joined
             s = replace(s, stretch=s.stretch.xreplace({r: as_square_root(r) for r in _roots(s.stretch)}))
         if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
-            stretch, lengths = signed_length(s.stretch, reference, assumed)
+            stretch, lengths = signed_length(s.stretch, reference, assumed, ranges)
             s = replace(s, stretch=stretch, lengths=lengths)
         out.append(s)
     return tuple(out)

@@ -28,12 +28,15 @@ class Length:
 
 
 def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
-                  assumed: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, tuple[Length, ...]]:
+                  assumed: Mapping[sp.Symbol, sp.Expr],
+                  ranges: Mapping[sp.Symbol, tuple[sp.Expr, sp.Expr]] = {}) -> tuple[sp.Expr, tuple[Length, ...]]:
     """``length`` with each |u| written ±u where u's sign at ``reference`` (the
     coordinates at 0) is decided by the parameters' signs or ``assumed`` (the
-    assumptions' substitutions), and what was done to each |u|."""
+    assumptions' substitutions), or else over the declared range of the one coordinate
+    u holds (``_sign_over``), and what was done to each |u|."""
     found = sorted(length.atoms(sp.Abs), key=sp.default_sort_key)
-    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed)) for a in found)
+    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed) or _sign_over(a.args[0], ranges, assumed))
+                    for a in found)
     signed = {a: x.sign * x.inside for a, x in zip(found, lengths) if x.sign is not None}
     return length.xreplace(signed), lengths
 
@@ -63,6 +66,27 @@ def _sign_at(u: sp.Expr, reference: Mapping, assumed: Mapping) -> int | None:
                 return 1
             if written.is_negative:
                 return -1
+    return None
+
+
+def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping) -> int | None:
+    """u's sign over the declared range [lo, hi] of the one coordinate q it holds, where u
+    is linear in q: a linear u keeps one sign between its values at the ends, so u ≥ 0 at
+    both and > 0 at one makes it positive inside the range (zero at most at an end: a
+    collar on a turning rod with r in [0, 10 L] and a spring from the axis, |r| = r).
+    None where that is not decided."""
+    coordinates = u.free_symbols & set(ranges)
+    if len(coordinates) != 1:
+        return None
+    (q,) = coordinates
+    if sp.diff(u, q, 2) != 0:
+        return None
+    ends = [u.xreplace({q: end}) for end in ranges[q]]
+    ends = [e.xreplace(dict(assumed)) if e.is_nonnegative is None and e.is_nonpositive is None else e for e in ends]
+    if all(e.is_nonnegative for e in ends) and any(e.is_positive for e in ends):
+        return 1
+    if all(e.is_nonpositive for e in ends) and any(e.is_negative for e in ends):
+        return -1
     return None
 
 

@@ -152,3 +152,28 @@ def test_a_spring_along_a_slope_is_written_d_minus_x() -> None:
     k, d, l0 = (model.symbols.parameters[n] for n in ("k", "d", "l0"))
     assert not V.has(*SIGNS) and not any(p.exp == sp.S.Half for p in V.atoms(sp.Pow))
     assert sp.simplify(sp.diff(V, x) + k * (d - x - l0)) == 0
+
+
+def test_a_declared_range_decides_the_sign_of_a_length_linear_in_its_coordinate() -> None:
+    """u linear in q keeps one sign between its values at the range's ends (by hand):
+    r on [0, 10 L] is ≥ 0 with r > 0 inside, so |r| = r; −r there is −|r|; r − L changes
+    sign inside (undecided); r² is not linear (left to the other rules)."""
+    from rbdsolve.model.energies.spring_length import _sign_over
+
+    r, L = sp.Symbol("r", real=True), sp.Symbol("L", positive=True)
+    ranges = {r: (sp.Integer(0), 10 * L)}
+    assert _sign_over(r, ranges, {}) == 1
+    assert _sign_over(-r, ranges, {}) == -1
+    assert _sign_over(r - L, ranges, {}) is None
+    assert _sign_over(r**2 + 1, ranges, {}) is None
+    assert _sign_over(r, {}, {}) is None  # no range declared: nothing decided here
+    assert _sign_over(r + 1, {r: (-sp.Integer(1), sp.Integer(2))}, {}) == 1  # zero only at the low end
+
+
+def test_a_collar_on_a_turning_rod_with_its_range_has_no_bars() -> None:
+    """The spring from the axis to a collar at r ∈ [0, 10 L]: V = ½ k (L − r)² (by hand),
+    no |r| and no sign(r) in the equations."""
+    model = build_model(load_text((PROBLEMS / "frames" / "collar-on-horizontal-turning-rod.yaml").read_text()))
+    V = potential_energy(model).total
+    r, L, k = (model.symbols.parameters.get(n) or dict(zip(model.symbols.state.names, model.q))[n] for n in "rLk")
+    assert not V.has(sp.Abs) and sp.simplify(V - k * (L - r) ** 2 / 2) == 0
