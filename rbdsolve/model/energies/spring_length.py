@@ -29,14 +29,14 @@ class Length:
 
 def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
                   assumed: Mapping[sp.Symbol, sp.Expr],
-                  ranges: Mapping[sp.Symbol, tuple[sp.Expr, sp.Expr]] = {}) -> tuple[sp.Expr, tuple[Length, ...]]:
+                  ranges: Mapping[sp.Symbol, tuple[sp.Expr, sp.Expr]] | None = None) -> tuple[sp.Expr, tuple[Length, ...]]:
     """``length`` with each |u| written ±u where u's sign at ``reference`` (the
     coordinates at 0) is decided by the parameters' signs or ``assumed`` (the
     assumptions' substitutions), or else over the declared range of the one coordinate
     u holds (``_sign_over``), and what was done to each |u|."""
     found = sorted(length.atoms(sp.Abs), key=sp.default_sort_key)
-    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed) or _sign_over(a.args[0], ranges, assumed))
-                    for a in found)
+    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed)
+                           or _sign_over(a.args[0], ranges or {}, assumed)) for a in found)
     signed = {a: x.sign * x.inside for a, x in zip(found, lengths) if x.sign is not None}
     return length.xreplace(signed), lengths
 
@@ -82,11 +82,11 @@ def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping) -> int | None:
     if sp.diff(u, q, 2) != 0:
         return None
     ends = [u.xreplace({q: end}) for end in ranges[q]]
-    ends = [e.xreplace(dict(assumed)) if e.is_nonnegative is None and e.is_nonpositive is None else e for e in ends]
-    if all(e.is_nonnegative for e in ends) and any(e.is_positive for e in ends):
-        return 1
-    if all(e.is_nonpositive for e in ends) and any(e.is_negative for e in ends):
-        return -1
+    for form in (ends, [e.xreplace(dict(assumed)) for e in ends]):  # as _sign_at: as written, then assumed
+        if all(e.is_nonnegative for e in form) and any(e.is_positive for e in form):
+            return 1
+        if all(e.is_nonpositive for e in form) and any(e.is_negative for e in form):
+            return -1
     return None
 
 
