@@ -45,9 +45,12 @@ def as_square_root(length: sp.Expr) -> sp.Expr:
     """√(d·d) written √(u²) = |u| where d·d is a square once its sin² + cos² are
     joined: a spring along a slope, d = (D − x)(cos α, sin α), has d·d = (D − x)²
     (cos² α + sin² α), which sympy leaves as √(D² − 2 D x + x²); |D − x| is then the
-    form ``signed_length`` writes D − x. Small radicands only (trigsimp is slow), and
-    the length unchanged unless it became an |u|."""
+    form ``signed_length`` writes D − x. Small radicands of sines and cosines only
+    (trigsimp is slow: a radicand of 60 operations with tan, sec and sinh took it a
+    minute), and the length unchanged unless it became an |u|."""
     if not (length.is_Pow and length.exp == sp.S.Half) or sp.count_ops(length.base) > _SMALL:
+        return length
+    if any(f.func not in (sp.sin, sp.cos) for f in length.base.atoms(sp.Function)):
         return length
     joined = sp.sqrt(sp.factor(sp.trigsimp(length.base)))
     return joined if joined.has(sp.Abs) else length
