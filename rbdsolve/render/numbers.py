@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text, unicode_name
 from rbdsolve.report.numbers import Beside, Note, Number
 from rbdsolve.report.tree import Path, label
 
@@ -20,8 +20,19 @@ def accuracy_keys(question: str) -> frozenset[str]:
 
 
 def accuracy_lines(solution) -> list[str]:
-    """How accurate a numeric route's answers are (bounds, residuals), as lines."""
-    return numeric_lines(solution.values, solution.units, only=accuracy_keys(solution.question))
+    """How accurate a numeric route's answers are (bounds, residuals), as lines; those of
+    modes about each of several equilibria under the equilibrium's coordinates, each
+    named as in the one-equilibrium case (not by its JSON path, modes[2].spread)."""
+    only = accuracy_keys(solution.question)
+    entries = solution.values.get("modes") if isinstance(solution.values, dict) else None
+    if not (isinstance(entries, list) and len(entries) > 1 and all(isinstance(e, dict) for e in entries)):
+        return numeric_lines(solution.values, solution.units, only=only)
+    out = []
+    for i, entry in enumerate(entries):
+        lines = numeric_lines(entry, _part(_part(solution.units, "modes"), i), only=only)
+        about = ", ".join(f"{unicode_name(q)} = {float_text(v)}" for q, v in (entry.get("about") or {}).items())
+        out += [f"About {about}:", *("  " + line for line in lines)] if lines else []
+    return out
 
 
 def groups(numbers: tuple[Number, ...]) -> list[tuple[str, list[Number]]]:

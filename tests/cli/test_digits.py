@@ -52,13 +52,13 @@ def test_accuracy_is_a_block_under_the_answers(scene) -> None:
     answers, _, accuracy = out.partition("Accuracy:")
     assert "Numeric values:" in answers and "λ₁ =" in answers
     assert "Conditioning:" not in answers and "relative_errors" not in answers
-    assert "Conditioning: κ₂(M) = 1" in accuracy and "relative_errors = [" in accuracy
+    assert "Conditioning about θ = 0: κ₂(M) = 1" in accuracy and "relative_errors = [" in accuracy
 
 
 def test_json_marks_the_accuracy_steps(scene) -> None:
     steps = json.loads(solve(scene, "-f", "json"))["results"][0]["steps"]
     marked = [s for s in steps if s.get("accuracy")]
-    assert len(marked) == 1 and marked[0]["text"].startswith("Conditioning:")
+    assert len(marked) == 1 and marked[0]["text"].startswith("Conditioning about θ = 0:")
 
 
 def test_every_number_in_the_steps_holds_the_digits_asked(scene) -> None:

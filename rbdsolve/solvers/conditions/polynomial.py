@@ -21,7 +21,13 @@ from rbdsolve.errors import UnsolvedError
 
 def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str) -> list[dict]:
     """Every root {symbol: value} of the polynomial ``system``; UnsolvedError naming
-    ``what`` where some root has no closed form."""
+    ``what`` where some root has no closed form, or none an exam writes
+    (``_unreadable_degree``)."""
+    degree = _unreadable_degree(system, symbols)
+    if degree:
+        raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}: its roots "
+                            f"in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes; give values "
+                            f"for the parameters to solve it numerically")
     try:
         found = solve_poly_system(system, *symbols, strict=True)
     except UnsolvableFactorError:
@@ -31,6 +37,30 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]
+
+
+def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
+    """The degree of the eliminant's largest irreducible factor where it is 3 or 4, else
+    None. The last polynomial of a lexicographic Gröbner basis of a zero-dimensional
+    system is the eliminant, univariate in the last symbol (Cox, Little, O'Shea, §3.1);
+    an irreducible cubic or quartic factor of it has roots in radicals that sympy's
+    solve writes out (casus irreducibilis: cube roots of complex numbers for three real
+    roots) and then spends minutes testing and tidying (a rod on a turning arm: a
+    quartic in cos θ, past 150 s). A factor of degree 5 or more is refused by solve's
+    own strict mode."""
+    if not symbols:
+        return None
+    try:
+        basis = sp.groebner(system, *symbols, order="lex")
+    except (PolynomialError, NotImplementedError):
+        return None
+    last = symbols[-1]
+    eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
+    if eliminant.free_symbols & set(symbols) != {last}:
+        return None  # not zero-dimensional, or nothing to eliminate: solve decides
+    degrees = [sp.degree(f, last) for f, _ in sp.factor_list(eliminant, last)[1]]
+    worst = max(degrees, default=0)
+    return worst if worst in (3, 4) else None
 
 
 def trig_mixed(expr: sp.Expr, q: sp.Symbol) -> bool:

@@ -1,0 +1,51 @@
+"""polynomial_roots: every root, or a refusal that names why (never a partial list, never
+an exam-unreadable radical)."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from rbdsolve.errors import UnsolvedError
+from rbdsolve.solvers.conditions.polynomial import polynomial_roots
+
+x, s, c = sp.symbols("x s c")
+
+
+def test_a_product_of_linear_factors_is_solved():
+    # x³ − x = x (x − 1)(x + 1): reducible, degree 1 factors
+    roots = polynomial_roots([x**3 - x], [x], "the equations")
+    assert sorted(r[x] for r in roots) == [-1, 0, 1]
+
+
+def test_a_quadratic_keeps_its_radicals():
+    roots = polynomial_roots([x**2 - 2], [x], "the equations")
+    assert sorted((r[x] for r in roots), key=float) == [-sp.sqrt(2), sp.sqrt(2)]
+
+
+@pytest.mark.parametrize("p, degree", [
+    (x**3 - 3 * x + 1, 3),  # irreducible over ℚ, three real roots: casus irreducibilis
+    (x**4 - 10 * x**2 + 1, 4),  # irreducible (the minimal polynomial of √2 + √3)
+])
+def test_an_irreducible_cubic_or_quartic_is_refused_with_its_degree(p, degree):
+    with pytest.raises(UnsolvedError, match=f"irreducible factor of degree {degree}"):
+        polynomial_roots([p], [x], "the equations")
+
+
+def test_a_trig_system_eliminating_to_a_quartic_is_refused():
+    """The rod on a turning arm with values: g l/2 s = Ω²/2 (a l c + 2 l²/3 s c) and
+    s² + c² = 1 (l = 3/5, a = 1/5, Ω = 5, g = 981/100) eliminate to a quartic in c with
+    no rational root."""
+    g, l, a, w = sp.Rational(981, 100), sp.Rational(3, 5), sp.Rational(1, 5), 5
+    eq = g * l / 2 * s - sp.Rational(w**2, 2) * (a * l * c + 2 * l**2 / 3 * s * c)
+    with pytest.raises(UnsolvedError, match="degree 4"):
+        polynomial_roots([eq, s**2 + c**2 - 1], [s, c], "the equilibrium equations")
+
+
+def test_a_system_that_factors_into_small_pieces_is_still_solved():
+    """s (g − l Ω² c) = 0 with s² + c² = 1 (the rod on the axis): the eliminant factors
+    into degrees ≤ 2, and every root is listed."""
+    eq = s * (3 - 4 * c)
+    roots = polynomial_roots([eq, s**2 + c**2 - 1], [s, c], "the equations")
+    assert sorted((r[s], r[c]) for r in roots if r[s] == 0) == [(0, -1), (0, 1)]
+    assert {r[c] for r in roots if r[s] != 0} == {sp.Rational(3, 4)}
