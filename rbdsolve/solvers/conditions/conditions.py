@@ -40,6 +40,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
 from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign
@@ -57,7 +58,7 @@ class Critical:
     value: sp.Expr
 
     def same_as(self, other: Critical) -> bool:
-        return self.parameter == other.parameter and sp.simplify(self.value - other.value) == 0
+        return self.parameter == other.parameter and simplifies_to_zero(self.value - other.value)
 
 
 @dataclass(frozen=True)
@@ -72,7 +73,7 @@ def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
     """Each critical value once, in the order found."""
     out: list[CriticalValue] = []
     for c in criticals:
-        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
+        if not any(o.parameter == str(c.parameter) and simplifies_to_zero(o.value - c.value) for o in out):
             out.append(CriticalValue(str(c.parameter), c.value))
     return tuple(out)
 
@@ -297,7 +298,7 @@ def _finite_at(f: sp.Expr, critical: Critical) -> bool:
     """Whether f is finite at the critical value (its numerator vanishes there, not its
     denominator): a boundary where the condition holds with equality."""
     _, denominator = sp.fraction(sp.together(f))
-    return sp.simplify(denominator.xreplace({critical.parameter: critical.value})) != 0
+    return not simplifies_to_zero(denominator.xreplace({critical.parameter: critical.value}))
 
 
 def asked(model, question) -> sp.Symbol | None:
