@@ -27,6 +27,7 @@ _VALUES = tuple(sp.Rational(p, q) for p, q in ((13, 7), (17, 11), (23, 13), (29,
 def simplifies_to_zero(expr: sp.Expr) -> bool:
     """``sp.simplify(expr) == 0``, with a nonzero value at one admissible point as a
     shortcut to False."""
+    expr = sp.sympify(expr)
     if expr == 0:
         return True
     if surely_nonzero(expr):
@@ -37,11 +38,12 @@ def simplifies_to_zero(expr: sp.Expr) -> bool:
 def surely_nonzero(expr: sp.Expr) -> bool:
     """Whether expr is nonzero at one point its symbols' assumptions allow (so not zero
     everywhere); False where that point does not tell."""
+    expr = sp.sympify(expr)
     point = _point(expr)
     if point is None:
         return False
     try:
-        value = sp.sympify(expr).xreplace(point)
+        value = expr.xreplace(point)
         if not value.is_number:
             return False
         z = value.evalf(15, strict=True)
