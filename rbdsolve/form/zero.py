@@ -73,8 +73,9 @@ def _point(expr: sp.Basic) -> dict | None:
 
 
 def _allowed(symbol: sp.Symbol, v: sp.Rational) -> sp.Rational | None:
-    """v or −v, whichever the symbol's sign allows (None: an integer, a zero, or a sign
-    the assumptions leave unmet)."""
-    if symbol.is_integer or symbol.is_zero or symbol.is_real is False:
-        return None
-    return -v if symbol.is_nonpositive else v
+    """v or −v, whichever has every property the symbol is declared with (positive,
+    real, nonzero …); None where neither has (an integer, an irrational symbol)."""
+    for value in (v, -v):
+        if all(getattr(value, f"is_{fact}") == known for fact, known in symbol.assumptions0.items()):
+            return value
+    return None

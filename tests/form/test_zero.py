@@ -63,3 +63,15 @@ def test_a_sign_the_values_cannot_meet_is_left_to_simplify():
     k = sp.Symbol("k", integer=True)
     assert not surely_nonzero(sp.sin(sp.pi * k / 3))
     assert not simplifies_to_zero(sp.sin(sp.pi * k / 3))
+
+
+def test_a_symbol_gets_a_value_with_every_property_it_is_declared_with():
+    """A negative symbol a negative value; an irrational one none (the values are
+    fractions): √2-like symbols are left to simplify."""
+    from rbdsolve.form.zero import _allowed
+
+    v = sp.Rational(13, 7)
+    assert _allowed(sp.Symbol("n", negative=True), v) == -v
+    assert _allowed(sp.Symbol("p", positive=True), v) == v
+    assert _allowed(sp.Symbol("i", irrational=True), v) is None
+    assert _allowed(sp.Dummy("z", zero=True), v) is None
