@@ -6,7 +6,8 @@ A value is a constant expression (numbers, ``pi``, the functions of ``problem.ex
 no names), read by rbdsolve's own parser, optionally followed by a unit. The unit is
 read here too (names, ``*``, ``·``, a space, ``/``, ``^`` or ``**`` and an integer):
 only single unit names go to pint, for their factor to SI and their dimension, and
-pint is imported only when a unit is present (start-up time). Factors are exact:
+pint is imported only when a unit other than the common ones (``_KNOWN``: pint's own
+definitions of m, cm, kg, deg, rev, N, …, built in) is present (start-up time). Factors are exact:
 pint's decimal definitions are kept as fractions (cm = 1/100 m), and a factor that
 is a rational multiple of π (deg = π/180 rad, rev/min = π/30 rad/s) is written with
 ``pi``, so ``45 deg`` is π/4 and ``30 cm`` is 3/10.
