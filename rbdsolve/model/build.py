@@ -32,6 +32,7 @@ from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.problem.sections.bodies import POSITIONS
 from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 @dataclass(frozen=True)
@@ -368,7 +369,7 @@ def turning_holds_time(body: RigidBody, state: State) -> bool:
         return False
     omega = body.angular_velocity(state)
     energy = tidy((omega.T * body.inertia_in_scene() * omega)[0, 0])
-    return energy.has(t) and sp.simplify(sp.diff(energy, t)) != 0
+    return energy.has(t) and not simplifies_to_zero(sp.diff(energy, t))
 
 
 def _holds(parts: list, symbol: sp.Symbol) -> bool:

@@ -22,6 +22,7 @@ from rbdsolve.model.state import State, t, user_function
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.problem.schema import Problem
+from rbdsolve.form.zero import simplifies_to_zero
 
 _FUNCTIONS = {
     "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
@@ -74,7 +75,7 @@ class Symbols:
         """A direction: refused when it is the zero vector, written as zeros or zero by
         arithmetic ([m - m, 0, 0]: the loader, without sympy, sees only the former)."""
         value = self.vector(expr)
-        if all(sp.simplify(c) == 0 for c in value):
+        if all(simplifies_to_zero(c) for c in value):
             raise InputError(f"an axis direction must not be the zero vector ('{expr.text}' is zero)", expr.loc)
         return value
 

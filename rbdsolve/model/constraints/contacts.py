@@ -45,6 +45,7 @@ from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.sections.contacts import NOT_PLANAR
 from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
+from rbdsolve.form.zero import simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -205,7 +206,7 @@ def _surface(c: Contact, names: Symbols, sigma: sp.Symbol, under: Body | None) -
     moving = bool(base.free_symbols & set(names.state.q)) or base.has(t)
     if s.kind is SurfaceKind.LINE:
         d = names.vector(s.direction)
-        if d.rows == 3 and sp.simplify(d[2]) != 0:
+        if d.rows == 3 and not simplifies_to_zero(d[2]):
             raise InputError(f"contact '{c.name}': " + NOT_PLANAR.format(what="a line out of the xy-plane"), s.loc)
         return _line(base, d / sp.sqrt(d.dot(d)), s.inside, sigma, moving)
     return _circle(base, names.scalar(s.radius), s.inside, sigma, moving)

@@ -23,6 +23,7 @@ import sympy as sp
 from rbdsolve.model.inertia import OWN_AXIS, rotation_to
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, Part, Shape
+from rbdsolve.form.zero import simplifies_to_zero
 
 _X, _Y, _Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
 _ROUND_IN_PLANE = (Shape.RING, Shape.DISK, Shape.CYLINDRICAL_SHELL, Shape.CYLINDER, Shape.TUBE,
@@ -114,7 +115,7 @@ def part_edge(part: Part, name: str, names: Symbols, radius: sp.Expr | None = No
 
 def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Curved | Flat:
     """A planar contact needs the edge's section in the scene's xy-plane."""
-    if shape in _DOMES and Q is not None and sp.simplify((Q * _Z)[2]) != 0:
+    if shape in _DOMES and Q is not None and not simplifies_to_zero((Q * _Z)[2]):
         raise NotInPlane(f"a {shape.value}'s axis must lie in the plane of the scene to rock in it "
                          "(for instance 'axis: -y', the dome down)")
     if isinstance(e, Curved) and e.plane_normal is not None:
@@ -123,6 +124,6 @@ def _in_plane(shape: Shape, e: Curved | Flat, Q: sp.Matrix | None = None) -> Cur
             raise NotInPlane(f"the {shape.value}'s circle is not in the plane of the scene: its own axis must "
                              "be along z (leave 'axis' out)" if shape in _ROUND_IN_PLANE[:5] else
                              f"the {shape.value} must lie in the plane of the scene (its axis in the xy-plane)")
-    if isinstance(e, Flat) and sp.simplify(e.outward[2]) != 0:
+    if isinstance(e, Flat) and not simplifies_to_zero(e.outward[2]):
         raise NotInPlane(f"the {shape.value}'s flat edge is not across the plane of the scene")
     return e

@@ -38,6 +38,7 @@ from rbdsolve.model.constraints.edges import body_part, part_edge
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Contact, Problem, SurfaceKind
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 @dataclass(frozen=True)
@@ -103,7 +104,7 @@ def _touching(c: Contact, point: sp.Matrix, n: sp.Matrix, names: Symbols) -> sp.
     P = names.vector(c.surface.point)
     P = P if P.rows == 3 else P.col_join(sp.zeros(1, 1))
     gap = tidy((point - P).dot(n))
-    if gap != 0 and sp.simplify(gap) != 0:
+    if gap != 0 and not simplifies_to_zero(gap):
         raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the plane: its contact point is "
                          f"{to_unicode(gap)} from it along the normal", c.surface.loc)
     return point

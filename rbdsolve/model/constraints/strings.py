@@ -30,6 +30,7 @@ from rbdsolve.model.constraints.edges import Curved
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.schema import Body, Contact
+from rbdsolve.form.zero import simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -99,7 +100,7 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
     for sign in (1, -1):
         C = centre + sign * rho * n
         across = sp.simplify((over - C).dot(n))
-        if sp.simplify(across.xreplace(reference)) != 0:
+        if not simplifies_to_zero(across.xreplace(reference)):
             continue
         if sp.simplify((over - C).dot(d).xreplace(reference)).is_negative:
             continue

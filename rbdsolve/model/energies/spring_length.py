@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 import sympy as sp
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 @dataclass(frozen=True)
@@ -99,7 +100,7 @@ def without_deltas(matrix: sp.Matrix) -> sp.Matrix:
     zero, and a spring of zero length at an equilibrium is no spring an exam draws. A
     DiracDelta(0) (the length zero there whatever the parameters) is kept: V is not twice
     differentiable there, and the solvers say so."""
-    deltas = {d: sp.Integer(0) for d in matrix.atoms(sp.DiracDelta) if sp.simplify(d.args[0]) != 0}
+    deltas = {d: sp.Integer(0) for d in matrix.atoms(sp.DiracDelta) if not simplifies_to_zero(d.args[0])}
     return matrix.xreplace(deltas) if deltas else matrix
 
 

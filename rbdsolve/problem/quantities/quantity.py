@@ -6,7 +6,8 @@ A value is a constant expression (numbers, ``pi``, the functions of ``problem.ex
 no names), read by rbdsolve's own parser, optionally followed by a unit. The unit is
 read here too (names, ``*``, ``·``, a space, ``/``, ``^`` or ``**`` and an integer):
 only single unit names go to pint, for their factor to SI and their dimension, and
-pint is imported only when a unit is present (start-up time). Factors are exact:
+pint is imported only when a unit other than the common ones (``_KNOWN``: pint's own
+definitions of m, cm, kg, deg, rev, N, …, built in) is present (start-up time). Factors are exact:
 pint's decimal definitions are kept as fractions (cm = 1/100 m), and a factor that
 is a rational multiple of π (deg = π/180 rad, rev/min = π/30 rad/s) is written with
 ``pi``, so ``45 deg`` is π/4 and ``30 cm`` is 3/10.
@@ -297,9 +298,34 @@ _BASE = {"[mass]": "mass", "[length]": "length", "[time]": "time"}
 _COMMON = ("m", "cm", "mm", "km", "kg", "g", "s", "min", "h", "rad", "deg", "rev", "rpm", "N", "J", "Hz", "W")
 
 
+_LENGTH, _MASS, _TIME = Dimension(length=Fraction(1)), Dimension(mass=Fraction(1)), Dimension(time=Fraction(1))
+_ANGLE, _FORCE = Dimension(), Dimension(Fraction(1), Fraction(1), Fraction(-2))
+# The names exams use most, as pint defines them (factor to SI with π taken out,
+# dimension, power of π), so that a file in these units does not import pint, a quarter
+# of a second (issue 37); tests/problem/quantities/test_known_units.py holds each to pint's.
+_KNOWN: dict[str, tuple[Fraction, Dimension, int]] = {
+    "m": (Fraction(1), _LENGTH, 0), "cm": (Fraction(1, 100), _LENGTH, 0), "mm": (Fraction(1, 1000), _LENGTH, 0),
+    "km": (Fraction(1000), _LENGTH, 0), "kg": (Fraction(1), _MASS, 0), "g": (Fraction(1, 1000), _MASS, 0),
+    "s": (Fraction(1), _TIME, 0), "ms": (Fraction(1, 1000), _TIME, 0), "min": (Fraction(60), _TIME, 0),
+    "h": (Fraction(3600), _TIME, 0), "rad": (Fraction(1), _ANGLE, 0), "deg": (Fraction(1, 180), _ANGLE, 1),
+    "degree": (Fraction(1, 180), _ANGLE, 1), "°": (Fraction(1, 180), _ANGLE, 1), "rev": (Fraction(2), _ANGLE, 1),
+    "revolution": (Fraction(2), _ANGLE, 1), "rpm": (Fraction(1, 30), _TIME ** -1, 1),
+    "N": (Fraction(1), _FORCE, 0), "J": (Fraction(1), _FORCE * _LENGTH, 0), "W": (Fraction(1), _FORCE * _LENGTH / _TIME, 0),
+    "Hz": (Fraction(1), _TIME ** -1, 0),
+}
+
+
 def _named_unit(name: str, loc: Location) -> tuple[Fraction, Dimension, int]:
     """One unit name: its exact factor to SI (π taken out: (1/180, …, 1) for deg), its
-    dimension and its power of π. Pint is asked about this single name only."""
+    dimension and its power of π. Pint is asked about this single name only, and only
+    for a name not among the common ones (``_KNOWN``)."""
+    if name in _KNOWN:
+        return _KNOWN[name]
+    return _pint_named_unit(name, loc)
+
+
+def _pint_named_unit(name: str, loc: Location) -> tuple[Fraction, Dimension, int]:
+    """One unit name, as pint defines it."""
     found = _pint_unit(_ALIASES.get(name, name))
     if found is None:
         raise InputError(f"unknown unit '{name}'{did_you_mean(name, list(_COMMON))}", loc)

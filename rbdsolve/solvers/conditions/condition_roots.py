@@ -17,6 +17,7 @@ import random
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
 
 SAMPLES = 8
@@ -77,7 +78,7 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
         if len(turns) != 1 or None in turns:
             return None
         turned = tidy(r + 2 * sp.pi * turns.pop()) if p in angles else _one_root(r)
-        if not any(sp.simplify(turned - x) == 0 for x in inside):
+        if not any(simplifies_to_zero(turned - x) for x in inside):
             inside[turned] = [float(sp.N(turned.xreplace(point), 20)) for point in points]
     order = sorted(inside, key=lambda r: inside[r][0])
     if any(sorted(inside, key=lambda r: inside[r][k]) != order for k in range(len(points))):

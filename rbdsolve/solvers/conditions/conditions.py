@@ -40,6 +40,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
 from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign
@@ -57,7 +58,7 @@ class Critical:
     value: sp.Expr
 
     def same_as(self, other: Critical) -> bool:
-        return self.parameter == other.parameter and sp.simplify(self.value - other.value) == 0
+        return self.parameter == other.parameter and simplifies_to_zero(self.value - other.value)
 
 
 @dataclass(frozen=True)
@@ -72,7 +73,7 @@ def critical_values(criticals: Iterable[Critical]) -> tuple[CriticalValue, ...]:
     """Each critical value once, in the order found."""
     out: list[CriticalValue] = []
     for c in criticals:
-        if not any(o.parameter == str(c.parameter) and sp.simplify(o.value - c.value) == 0 for o in out):
+        if not any(o.parameter == str(c.parameter) and simplifies_to_zero(o.value - c.value) for o in out):
             out.append(CriticalValue(str(c.parameter), c.value))
     return tuple(out)
 
@@ -297,7 +298,7 @@ def _finite_at(f: sp.Expr, critical: Critical) -> bool:
     """Whether f is finite at the critical value (its numerator vanishes there, not its
     denominator): a boundary where the condition holds with equality."""
     _, denominator = sp.fraction(sp.together(f))
-    return sp.simplify(denominator.xreplace({critical.parameter: critical.value})) != 0
+    return not simplifies_to_zero(denominator.xreplace({critical.parameter: critical.value}))
 
 
 def asked(model, question) -> sp.Symbol | None:
@@ -335,14 +336,28 @@ def _kind(parameter, dimensions: dict) -> int:
 
 def sign_on(f: sp.Expr, piece: Piece, model, angles: dict, seed: int = 20) -> int | None:
     """f's sign on a piece: exactly (δ positive), else by agreeing samples (drawn from
-    ``seed``)."""
+    ``seed``).
+
+    The samples are asked first: where sympy's assumptions decide the sign at the
+    δ-point, it holds at every point of the piece, so samples that all agree give the
+    same sign, and one that decides nothing (a long sum of nested radicals: a tenth of a
+    second per query) is never asked. Where they do not all agree, it is as above."""
+    sampled = _sampled_sign(f, piece, model, seed, angles)
+    if sampled is not None:
+        return sampled
     value, _ = piece.inside(f)
-    sign = symbolic_sign(tidy(value))
-    if sign:
-        return sign
+    return symbolic_sign(tidy(value)) or None  # 0 there (f vanishes at the δ-point): no sign
+
+
+def _sampled_sign(f: sp.Expr, piece: Piece, model, seed: int, angles: dict) -> int | None:
+    """The one sign of f at SAMPLES random points of the piece; None where they differ,
+    or one is zero, not real or not a number."""
     signs = set()
     for v in at_samples(piece, f, model, seed, angles) or [sp.nan]:
-        z = complex(sp.N(v, 30))
+        try:
+            z = complex(sp.N(v, 30))
+        except TypeError:  # not a number at the point
+            return None
         if z != z or abs(z.imag) > 1e-12 * max(1.0, abs(z.real)) or z.real == 0:
             return None
         signs.add(1 if z.real > 0 else -1)

@@ -11,6 +11,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.report import steps as st
 
 
@@ -89,7 +90,7 @@ def _named_side(condition, critical: Sequence) -> sp.Expr:
     """The right side of p < value, by name where it is a critical value of p."""
     lhs, rhs = condition.lhs, condition.rhs
     for c, name in critical_names(critical):
-        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and sp.simplify(rhs - c.value) == 0:
+        if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and simplifies_to_zero(rhs - c.value):
             return name
     return rhs
 

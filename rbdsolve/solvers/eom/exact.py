@@ -30,6 +30,7 @@ from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, sta
 from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import eom_warnings
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr, ...]:
@@ -104,4 +105,4 @@ def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[Fram
 def _vanishes(expr: sp.Expr) -> bool:
     """Exactly zero: expanded, then tidied, then (small expressions only) simplified."""
     expr = tidy(sp.expand(expr))
-    return expr == 0 or (sp.count_ops(expr) < 400 and sp.simplify(expr) == 0)
+    return expr == 0 or (sp.count_ops(expr) < 400 and simplifies_to_zero(expr))

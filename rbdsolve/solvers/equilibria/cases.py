@@ -103,14 +103,21 @@ def _boundary(H: sp.Matrix) -> sp.Expr:
 def _stability_on(H: sp.Matrix, piece: Piece, model: Model) -> Stability:
     """K classified at a point of the piece: exactly (δ > 0), else at SAMPLES random
     points of it (the parameters as rationals, so each K is exact numbers), which
-    must all agree."""
+    must all agree.
+
+    The samples are classified first: a class found exactly at the δ-point holds at
+    every point of the piece, so samples that all agree on a class give that class,
+    and the δ-point's assumption queries (tenths of a second over nested radicals) are
+    not made. Where the samples do not all agree on one, it is as above."""
     H = sp.Matrix(H)
+    samples = at_samples(piece, H, model, 24, angle_parameters(H))
+    seen = {_classified(K) for K in samples} if samples else set()
+    if len(seen) == 1 and Stability.UNDETERMINED not in seen:
+        return seen.pop()
     value, _ = piece.inside(H)
     found = _classified(value.applyfunc(sp.factor))
     if found is not Stability.UNDETERMINED:
         return found
-    samples = at_samples(piece, H, model, 24, angle_parameters(H))
-    seen = {_classified(K) for K in samples} if samples else set()
     return seen.pop() if len(seen) == 1 else Stability.UNDETERMINED
 
 

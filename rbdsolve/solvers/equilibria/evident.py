@@ -28,6 +28,7 @@ import sympy as sp
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.values.values import parameter_sample
+from rbdsolve.form.zero import simplifies_to_zero
 
 COMBINATIONS = 256
 SCREEN = 1e-12  # |value| at the sample above this (relative to the equation's scale) rejects at once
@@ -77,7 +78,7 @@ def _vanishes(equation: sp.Expr, at: dict, point: dict) -> bool:
         return False
     if sp.expand(value) == 0 or tidy(value) == 0:
         return True
-    return sp.count_ops(value) <= SIMPLIFY_OPS and sp.simplify(value) == 0
+    return sp.count_ops(value) <= SIMPLIFY_OPS and simplifies_to_zero(value)
 
 
 def _small_at(value: sp.Expr, point: dict) -> bool:

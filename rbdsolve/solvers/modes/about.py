@@ -25,6 +25,7 @@ from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, incompl
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.numeric.chosen import REFINE_TOL, several_stable
 from rbdsolve.solvers.routes.needed import missing_for
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
@@ -53,10 +54,10 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     contact_span.require_on_edges(question, model)
     at = {q: model.symbols.scalar(e) for q, (_, e) in zip(model.q, about)}
     residual = [tidy(g.xreplace(at)) for g in gradient(model)]
-    if all(sp.simplify(r) == 0 for r in residual):
+    if all(simplifies_to_zero(r) for r in residual):
         return at, ()
     if missing_for(model, question):
-        (name, expr), r = next((a, r) for a, r in zip(about, residual) if sp.simplify(r) != 0)
+        (name, expr), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
         shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
         raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {shown} there (give values for "
                             "the parameters to have a nearby equilibrium found)")

@@ -53,6 +53,7 @@ from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, ang
 from rbdsolve.solvers.conditions.conditions import Piece, changes, critical_values, partition, sign_on
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of, symbolic_sign
 from rbdsolve.model.values.values import sample
+from rbdsolve.form.zero import simplifies_to_zero
 
 OMEGA = sp.Symbol("omega")  # the variable of det(K − ω²M + iωG) (the JSON's characteristic)
 LAMBDA = sp.Symbol("lamda")
@@ -136,7 +137,7 @@ def characteristic(linear: Linear) -> sp.Expr:
     pencil = linear.K - OMEGA**2 * linear.M + sp.I * OMEGA * linear.G
     P = sp.expand(sp.Matrix(pencil).det(method="berkowitz"))
     if P.has(sp.I):
-        P = sp.expand(sp.re(P)) if sp.simplify(sp.im(P)) == 0 else P
+        P = sp.expand(sp.re(P)) if simplifies_to_zero(sp.im(P)) else P
     return tidy(P) if not P.has(sp.I) else P
 
 
@@ -333,7 +334,7 @@ def _in_order(values: list[sp.Expr], p: sp.Symbol, model: Model, angles: dict) -
     parameters (None where the order changes between samples)."""
     distinct: list[sp.Expr] = []
     for v in values:
-        if not any(sp.simplify(v - d) == 0 for d in distinct):
+        if not any(simplifies_to_zero(v - d) for d in distinct):
             distinct.append(v)
     orders = set()
     for k in range(SAMPLES):
@@ -351,7 +352,7 @@ def _sign_within(part, low, bounds: list[sp.Expr]) -> int:
     """A partition's sign on the merged piece that starts at ``low``: that of its own
     piece whose ends bracket it."""
     def position(value, default: int) -> int:
-        return default if value is None else next(i for i, b in enumerate(bounds) if sp.simplify(value - b) == 0)
+        return default if value is None else next(i for i, b in enumerate(bounds) if simplifies_to_zero(value - b))
 
     start = position(low, -1)
     for piece in part.pieces:

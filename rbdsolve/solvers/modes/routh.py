@@ -37,6 +37,7 @@ from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.configuration.singular import exact_reason
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 @dataclass(frozen=True)
@@ -158,7 +159,7 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
         if residual.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
             raise UnsolvedError(f"∂({what})/∂{unicode_name(name)} has no value at this configuration: the "
                                 "coordinates are singular there" + (_euler_hint({0: None}, names) if routh else ""))
-        if residual != 0 and sp.simplify(residual) != 0:
+        if residual != 0 and not simplifies_to_zero(residual):
             shown = to_unicode(model.readable(-residual)) if sp.count_ops(residual) <= 30 else "not zero"
             raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there")
 

@@ -28,6 +28,7 @@ from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
@@ -131,7 +132,7 @@ def holds(s: Held, values: dict[str, sp.Expr], model: Model) -> Holds:
             condition, criticals = sp.And(condition, found.condition), criticals + list(found.criticals)
     if s.how is How.ROLLING and condition is not sp.false:
         N, F = (values[str(c.symbol)] for c in s.components)
-        if sp.simplify(N) != 0:
+        if not simplifies_to_zero(N):
             condition = sp.And(condition, sp.Ge(mu(s.name), least_mu(F, N, model)))
     return Holds(condition, tuple(criticals))
 

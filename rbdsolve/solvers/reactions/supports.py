@@ -32,6 +32,7 @@ from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.state import t
 from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.model.values.values import parameter_sample
+from rbdsolve.form.zero import simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -85,7 +86,7 @@ def material_velocity(model: Model, b: RigidBody, P: sp.Matrix) -> sp.Matrix:
 
 def planar(model: Model) -> bool:
     """Every body turns about e_z only and moves in the x-y plane, gravity in it too."""
-    flat = all(not b.turns_3d and b.position is not None and sp.simplify(b.position[2]) == 0 for b in model.bodies)
+    flat = all(not b.turns_3d and b.position is not None and simplifies_to_zero(b.position[2]) for b in model.bodies)
     return flat and (model.gravity is None or model.gravity[2] == 0)
 
 

@@ -40,6 +40,7 @@ from rbdsolve.solvers.conditions.conditions import (RATE_WORDS, Critical, Critic
 from rbdsolve.solvers.conditions.present_conditions import critical_names
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model, first: sp.Symbol | None = None
@@ -209,7 +210,7 @@ def _part_text(part: sp.Basic, critical: Sequence[CriticalValue], values: dict) 
     if not (isinstance(lhs, sp.Symbol) and lhs in values):
         return f"{to_unicode(lhs)} {op} {to_unicode(rhs)}, which is {_number(lhs, values)} there", ""
     named = [name for c, name in critical_names(critical)
-             if c.parameter == lhs.name and sp.simplify(c.value - rhs) == 0]
+             if c.parameter == lhs.name and simplifies_to_zero(c.value - rhs)]
     name = to_unicode(named[0]) if named else to_unicode(rhs)
     bound = f"{name} = {_number(rhs, values)}" if rhs.free_symbols else name
     return f"{to_unicode(lhs)} {op} {bound}", f"{to_unicode(lhs)} = {_number(lhs, values)}"

@@ -1,0 +1,81 @@
+"""Whether an expression is zero, as ``sp.simplify(expr) == 0`` says, without the
+simplify where one numeric value already says no.
+
+simplify returns 0 only for an expression that is zero at every value its symbols may
+take (their sympy assumptions: positive, real, integer). So if the expression is not
+zero at one such point, simplify cannot return 0: the answer is False, found in
+microseconds rather than the tenths of a second a simplify over a long difference of
+critical values takes (issue 37). The value at the point is evaluated by sympy's evalf
+with ``strict=True``, which raises rather than return digits it cannot vouch for; only a
+value known to be nonzero to full precision decides. Anywhere else (zero at the point,
+a pole, precision exhausted, something that is not a number) the answer is simplify's
+own, so the two agree wherever simplify is right.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.core.evalf import PrecisionExhausted
+
+# Generic values, one per symbol (in sorted order): unlikely to be a root or a pole of a
+# physical formula by chance, and a chance hit only costs the simplify it would have run.
+_VALUES = tuple(sp.Rational(p, q) for p, q in ((13, 7), (17, 11), (23, 13), (29, 17), (31, 19), (37, 23),
+                                                  (41, 29), (43, 31), (47, 37), (53, 41), (59, 43), (61, 47)))
+
+
+def simplifies_to_zero(expr: sp.Expr) -> bool:
+    """``sp.simplify(expr) == 0``, with a nonzero value at one admissible point as a
+    shortcut to False."""
+    expr = sp.sympify(expr)
+    if expr == 0:
+        return True
+    if surely_nonzero(expr):
+        return False
+    return sp.simplify(expr) == 0
+
+
+def surely_nonzero(expr: sp.Expr) -> bool:
+    """Whether expr is nonzero at one point its symbols' assumptions allow (so not zero
+    everywhere); False where that point does not tell."""
+    expr = sp.sympify(expr)
+    point = _point(expr)
+    if point is None:
+        return False
+    try:
+        value = expr.xreplace(point)
+        if not value.is_number:
+            return False
+        z = value.evalf(15, strict=True)
+    except (PrecisionExhausted, ArithmeticError, TypeError, ValueError, NotImplementedError):
+        return False
+    finite = all(isinstance(a, (sp.Float, sp.Integer, sp.Rational)) or a is sp.I for a in z.atoms())
+    return finite and z != 0
+
+
+def _point(expr: sp.Basic) -> dict | None:
+    """A value for each symbol, unknown function of time and derivative in expr, allowed
+    by its assumptions; None where one has assumptions the values cannot meet."""
+    stand_ins = sorted(expr.atoms(sp.Derivative), key=sp.default_sort_key)
+    stand_ins += sorted(expr.atoms(AppliedUndef), key=sp.default_sort_key)
+    symbols = sorted(expr.free_symbols - {s for x in stand_ins for s in x.free_symbols}, key=sp.default_sort_key)
+    held = [*stand_ins, *symbols]
+    if len(held) > len(_VALUES):
+        return None
+    point = {}
+    for x, v in zip(held, _VALUES):
+        if isinstance(x, sp.Symbol):
+            v = _allowed(x, v)
+            if v is None:
+                return None
+        point[x] = v
+    return point
+
+
+def _allowed(symbol: sp.Symbol, v: sp.Rational) -> sp.Rational | None:
+    """v or −v, whichever has every property the symbol is declared with (positive,
+    real, nonzero …); None where neither has (an integer, an irrational symbol)."""
+    for value in (v, -v):
+        if all(getattr(value, f"is_{fact}") == known for fact, known in symbol.assumptions0.items()):
+            return value
+    return None
