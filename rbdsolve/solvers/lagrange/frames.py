@@ -22,6 +22,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
 from rbdsolve.model.energies.energy import potential_energy
@@ -67,7 +68,8 @@ def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
     if frame.origin is not None:
         how.append(f"its origin follows {frame.origin.text}")
     if frame.axis is not None:
-        how.append(f"it turns at the rate {frame.rate.text} about {frame.axis.text}")
+        rate = seen.symbols.with_points(seen.points).scalar(frame.rate)
+        how.append(f"it turns at the rate {to_unicode(seen.readable(rate))} about {frame.axis.text}")
     V = potential_energy(seen)
     rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
     legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
