@@ -167,7 +167,7 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
                             "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [pair.lam for pair in spectrum.pairs]
-    motions, cases, criticals = kinds(eigenvalues, K, model, where, first)
+    motions, cases, criticals = kinds(eigenvalues, K, model, where, first, at)
     frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for pair, mo in zip(spectrum.pairs, motions))
     shapes = _shapes(spectrum, model.values)
