@@ -39,6 +39,7 @@ from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
+from rbdsolve.solvers.equilibria import zero_length
 from rbdsolve.solvers.conditions.conditions import asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.configuration import contact_span
@@ -399,10 +400,12 @@ def listing(model: Model) -> Listing:
     (solvers/configuration/placement.py), and solutions that are one configuration (the same
     orientation, or the same up to a coordinate V does not depend on) merged into the
     first, the others named as equivalent. Solutions where a contact point would be off
-    its edge (solvers/configuration/contact_span.py) are dropped, a warning saying why."""
+    its edge (solvers/configuration/contact_span.py), or where a spring with a natural
+    length would be at zero length (zero_length.py), are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
     solutions, off = contact_span.split(model, solutions)
-    warnings = [*warnings, *contact_span.warnings(off), *contact_span.undecided(model, solutions)]
+    solutions, crushed = zero_length.split(model, solutions)
+    warnings = [*warnings, *contact_span.warnings(off), *crushed, *contact_span.undecided(model, solutions)]
     free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
     kept: list[Listed] = []
     apart: list[tuple[dict, Singularity]] = []
