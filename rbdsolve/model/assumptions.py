@@ -3,10 +3,9 @@ other, and turned into substitutions that let sympy decide signs under them.
 
 An assumption L > R (or L ≥ R) that is linear in some parameter p with a coefficient
 of known sign on the larger side (a positive coefficient), or else in a parameter of
-either sign (``positive: false``) on the smaller side (k < 0: k = −δ), is solved for p, p = p₀ + δ with δ a new
-positive symbol: R > r becomes
-R = r + δ, and any sign that holds for every δ > 0 holds under the assumption
-(``decided_by``). One substitution per parameter, in the file's order; an assumption
+either sign (``positive: false``) on the smaller side (k < 0: k = −δ), is solved for
+p, p = p₀ + δ with δ a new positive symbol: R > r becomes R = r + δ, and any sign
+that holds for every δ > 0 holds under the assumption (``decided_by``). One substitution per parameter, in the file's order; an assumption
 that is not linear in a free parameter is still checked, and used by the sampling in
 ``solvers/conditions/conditions.py``, but decides no sign exactly. A contact's geometry adds
 its own (R > r for a body rolling inside a circle, model/constraints/contacts.py), after the file's.

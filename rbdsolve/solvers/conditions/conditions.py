@@ -227,7 +227,7 @@ def _assumption_example(f: sp.Expr) -> str:
               if not isinstance(p, sp.Dummy) and (f / p).free_symbols.isdisjoint({p}) and not p.is_positive]
     if linear:
         return f" (such as [{linear[0]} > 0] or [{linear[0]} < 0])"
-    return " (an inequality linear in one of its parameters, such as [a > b] between two of them)"
+    return " (an inequality between its parameters that is linear in one of them)"
 
 
 def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:

@@ -141,7 +141,7 @@ def test_what_decides_names_the_expressions_own_parameters() -> None:
     text = what_decides(-m * W**2 * sp.sin(alpha) ** 2)
     assert "R > r" not in text  # the hint of another scene (issue 43)
     assert "give values for Omega, alpha, m" in text
-    assert "an inequality linear in one of its parameters" in text  # none of its own is of either sign
+    assert text.endswith("(an inequality between its parameters that is linear in one of them)")  # none of either sign
 
 
 def test_the_assumption_the_hint_suggests_decides_the_sign() -> None:
