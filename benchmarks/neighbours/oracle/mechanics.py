@@ -235,9 +235,12 @@ class System:
             axes = [k for k, x in enumerate(d) if abs(x) > 1e-12 * size]
             if len(axes0) == 1 and axes == axes0 and d0[axes0[0]] * d[axes0[0]] < 0:
                 return True
-            if any(q[i] < 0 for i in self._polar_distances(s, t)):
-                return True
-        return False
+        return self.polar_negative(q, t)
+
+    def polar_negative(self, q, t=0) -> bool:
+        """Is a spring's polar distance (``_polar_distances``) negative at q? The same
+        point as one with it positive, which an exam writes instead."""
+        return any(q[i] < 0 for s in self.scene.springs if s.angle is None for i in self._polar_distances(s, t))
 
     def _polar_distances(self, s, t=0) -> list[int]:
         """The coordinates r with the spring's end-to-end vector r e, e a unit vector that
