@@ -2,10 +2,10 @@
 other, and turned into substitutions that let sympy decide signs under them.
 
 An assumption L > R (or L ≥ R) that is linear in some parameter p with a coefficient
-of known sign on the larger side (a positive coefficient) is solved for p, p = p₀ + δ with δ a new
-positive symbol: R > r becomes
-R = r + δ, and any sign that holds for every δ > 0 holds under the assumption
-(``decided_by``). One substitution per parameter, in the file's order; an assumption
+of known sign on the larger side (a positive coefficient), or else in a parameter of
+either sign (``positive: false``) on the smaller side (k < 0: k = −δ), is solved for
+p, p = p₀ + δ with δ a new positive symbol: R > r becomes R = r + δ, and any sign
+that holds for every δ > 0 holds under the assumption (``decided_by``). One substitution per parameter, in the file's order; an assumption
 that is not linear in a free parameter is still checked, and used by the sampling in
 ``solvers/conditions/conditions.py``, but decides no sign exactly. A contact's geometry adds
 its own (R > r for a body rolling inside a circle, model/constraints/contacts.py), after the file's.
@@ -133,18 +133,26 @@ def substitutions(assumptions: tuple[Assumed, ...], names: Symbols) -> dict[sp.S
     order = list(names.parameters.values())
     for k, a in enumerate(assumptions):
         difference = a.difference.xreplace(out)
-        for p in sorted(difference.free_symbols & set(order), key=order.index):
+        for p in _solved_for(difference, order, out):
             coefficient = sp.diff(difference, p)
-            if p in out or coefficient.has(p) or coefficient == 0:
-                continue
-            if not coefficient.is_positive:  # solve for the larger side: R > r gives R = r + δ
-                continue
             delta = sp.Dummy(f"delta{k}", positive=True) if a.strict else sp.Dummy(f"delta{k}", nonnegative=True)
             rest = difference - coefficient * p
             out = {q: v.xreplace({p: (delta - rest) / coefficient}) for q, v in out.items()}
             out[p] = (delta - rest) / coefficient
             break
     return out
+
+
+def _solved_for(difference: sp.Expr, order: list, taken: Mapping) -> list[sp.Symbol]:
+    """The parameters an assumption may be solved for, in the file's order: those on its
+    larger side (a positive coefficient: R > r gives R = r + δ, which keeps R > 0), then
+    a parameter of either sign on its smaller side (k < 0 gives k = −δ: a sign the
+    assumption itself gives)."""
+    linear = [p for p in sorted(difference.free_symbols & set(order), key=order.index)
+              if p not in taken and not sp.diff(difference, p).has(p) and sp.diff(difference, p) != 0]
+    larger = [p for p in linear if sp.diff(difference, p).is_positive]
+    smaller = [p for p in linear if sp.diff(difference, p).is_negative and not p.is_positive]
+    return larger + smaller
 
 
 def decided_by(substituted: Mapping[sp.Symbol, sp.Expr], values: Mapping[sp.Symbol, sp.Expr]) -> dict:

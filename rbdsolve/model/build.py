@@ -18,7 +18,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
-from rbdsolve.model.energies.spring_length import as_square_root, signed_length
+from rbdsolve.model.energies.spring_length import as_square_root, polar_distances, signed_length
 from rbdsolve.model.assumptions import check as check_assumptions
 from rbdsolve.model.deferred import Deferred, Later, Points
 from rbdsolve.model.constraints.lengths import body_dimensions
@@ -613,8 +613,8 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
 def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple,
                    coordinates: tuple = ()) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
-    configuration (q = 0), or over a coordinate's declared range, is known
-    (model/energies/spring_length.py)."""
+    configuration (q = 0), or over a coordinate's declared range, or a polar distance's
+    r ≥ 0, is known (model/energies/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}
     assumed = substitutions(assumptions, names) if assumptions else {}
     by_name = dict(zip(names.state.names, names.state.q))
@@ -625,7 +625,9 @@ def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions
         if s.source.ends is not None and not s.stretch.has(sp.Abs):  # along a slope: √(u²) = |u| once joined
             s = replace(s, stretch=s.stretch.xreplace({r: as_square_root(r) for r in _roots(s.stretch)}))
         if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
-            stretch, lengths = signed_length(s.stretch, reference, assumed, ranges)
+            a, b = (names.vector(e) for e in s.source.ends)
+            stretch, lengths = signed_length(s.stretch, reference, assumed,
+                                             polar_distances(a - b, names.state.q) | ranges)
             s = replace(s, stretch=stretch, lengths=lengths)
         out.append(s)
     return tuple(out)

@@ -52,6 +52,10 @@ ORACLE_GAPS = {
     "ladder-released": "the guides' supports are not written for the oracle's reactions (SUPPORTS)",
     "cylinder-precession": "the oracle's steady-spin check reads no 'steady_spins' answer of this form",
     "ball-sticks-to-turntable": "the oracle's impact matrix is singular for a particle sticking to a turning body",
+    "pendulum-light-rod-torsion": "the oracle's guide (SUPPORTS) pushes along the light rod only; the rod also carries "
+                                  "the torsion spring's couple to the particle as a force across it, which the oracle "
+                                  "does not model (rbdsolve's N agrees with the hand's, test_golden)",
+    "bob-on-offset-torsion-rod": "as pendulum-light-rod-torsion: a light rod's torsion spring, not in the oracle's supports",
     "bead-in-loop-on-spring": "the oracle's guide (SUPPORTS) with a spring on the particle leaves a residual of 0.04 "
                               "in its own balances (rbdsolve's N agrees with the hand's, test_golden): not diagnosed",
 }

@@ -110,7 +110,7 @@ def check(ctx: Context, question, result: dict) -> list[str]:
                 notes.append(f"{stab} where the oracle finds it {kind}")
         if "equilibria" not in answers:
             continue
-        found = equilibria(ms, fs)
+        found = [r for r in equilibria(ms, fs) if not ms.polar_negative(r)]  # (−r, θ) is (r, θ + π)
         known = []
         for q, _, eq, _, _ in rb:
             known += [x for x in [wrap(q, bx)] + [wrap(e, bx) for e in eq] if x is not None]

@@ -235,7 +235,44 @@ class System:
             axes = [k for k, x in enumerate(d) if abs(x) > 1e-12 * size]
             if len(axes0) == 1 and axes == axes0 and d0[axes0[0]] * d[axes0[0]] < 0:
                 return True
-        return False
+        return self.polar_negative(q, t)
+
+    def polar_negative(self, q, t=0) -> bool:
+        """Is a spring's polar distance (``_polar_distances``) negative at q? The same
+        point as one with it positive, which an exam writes instead."""
+        return any(q[i] < 0 for s in self.scene.springs if s.angle is None for i in self._polar_distances(s, t))
+
+    def _polar_distances(self, s, t=0) -> list[int]:
+        """The coordinates r with the spring's end-to-end vector r e, e a unit vector that
+        another coordinate θ turns to −e at θ + π (the elastic pendulum, P = r (sin θ,
+        −cos θ) on a spring from O): a distance from the anchor, which an exam takes ≥ 0
+        ((−r, θ) is the point (r, θ + π)). Checked at a few states: |d| = |r|, and d
+        reversed by a half turn of θ. Once per spring."""
+        cache = self.__dict__.setdefault("_polar_cache", {})
+        if id(s) not in cache:
+            cache[id(s)] = [i for i in range(self.n) if self._is_polar(s, i, t)]
+        return cache[id(s)]
+
+    def _is_polar(self, s, i: int, t) -> bool:
+        rng = np.random.default_rng(7)
+        turned_by = set(range(self.n)) - {i}
+        for _ in range(3):
+            q = [self.zero + float(x) for x in rng.uniform(-1.5, 1.5, self.n)]
+            for r in (0.7, -1.3):
+                q[i] = self.zero + r
+                d = self._end_to_end(s, q, t)
+                if abs(math.sqrt(sum(x * x for x in d)) - abs(r)) > 1e-9 * (1 + abs(r)):
+                    return False
+                for j in list(turned_by):
+                    half = list(q)
+                    half[j] = half[j] + math.pi
+                    if any(abs(a + b) > 1e-9 * (1 + abs(r)) for a, b in zip(d, self._end_to_end(s, half, t))):
+                        turned_by.discard(j)
+        return bool(turned_by)
+
+    def _end_to_end(self, s, q, t) -> list[float]:
+        env = self.env(q, t)
+        return [float(x) for x in evaluate(s.ends[1], env) - evaluate(s.ends[0], env)]
 
     def potential(self, q, t=0):
         """V = −Σ m g·r_G + ½ Σ k s² (the oracle's own, for energy questions)."""

@@ -87,9 +87,9 @@ def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping) -> int | None:
         return None
     ends = [u.xreplace({q: end}) for end in ranges[q]]
     for form in (ends, [e.xreplace(dict(assumed)) for e in ends]):  # as _sign_at: as written, then assumed
-        if all(e.is_nonnegative for e in form) and any(e.is_positive for e in form):
-            return 1
-        if all(e.is_nonpositive for e in form) and any(e.is_negative for e in form):
+        if all(e.is_extended_nonnegative for e in form) and any(e.is_extended_positive for e in form):
+            return 1  # (extended: an end may be ∞, a polar distance's)
+        if all(e.is_extended_nonpositive for e in form) and any(e.is_extended_negative for e in form):
             return -1
     return None
 
@@ -119,3 +119,25 @@ def held_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...]:
                 if side not in sides:
                     sides.append(side)
     return tuple(sides)
+
+
+def polar_distances(d: sp.Matrix, q: tuple[sp.Symbol, ...]) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:
+    """{r: (0, ∞)} where a spring's end-to-end vector is d = r e(θ), e a unit vector of
+    the other coordinates with e(θ + π) = −e(θ) for one of them: r is a polar distance
+    (the elastic pendulum, P = r (sin θ, −cos θ) on a spring from O). r < 0 then repeats a
+    configuration, (r, θ) the same point as (−r, θ + π), so the exam's r ≥ 0 loses none,
+    as a declared range [0, …] would say (``_sign_over``: |r| = r)."""
+    found = {}
+    for r in q:
+        e = (d / r).applyfunc(sp.cancel)
+        if not d.has(r) or e.has(r) or sp.trigsimp(sp.expand(e.dot(e))) != 1:
+            continue
+        turns = [t for t in q if t != r and e.has(t)]
+        if any(_opposite(e, t) for t in turns):
+            found[r] = (sp.Integer(0), sp.oo)
+    return found
+
+
+def _opposite(e: sp.Matrix, t: sp.Symbol) -> bool:
+    """Whether e(t + π) = −e(t)."""
+    return all(sp.expand_trig(x.xreplace({t: t + sp.pi}) + x) == 0 for x in e)

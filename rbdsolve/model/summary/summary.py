@@ -15,6 +15,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
+from rbdsolve.model.energies.spring_length import polar_distances
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
 from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
@@ -53,6 +54,7 @@ def summarize_model(model: Model) -> ModelSummary:
     steps += _potential_steps(V, model)
     steps += _free_force_steps(model)
     steps += _two_sided(model)
+    steps += _polar(model)
     steps += _unturned(model)
     return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
 
@@ -255,6 +257,24 @@ def _two_sided(model: Model) -> list[st.Step]:
             out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
                                f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
                                "keep |…| and sign(…)"))
+    return out
+
+
+def _polar(model: Model) -> list[st.Step]:
+    """A note for each spring length |r| written r because r is a polar distance
+    (model/energies/spring_length.py, ``polar_distances``): the answers hold for r ≥ 0."""
+    out = []
+    for spring in model.springs:
+        if spring.source.ends is None or not spring.lengths:
+            continue
+        a, b = (model.symbols.vector(e) for e in spring.source.ends)
+        polar = polar_distances(a - b, model.q)
+        for length in spring.lengths:
+            if length.sign is not None and length.inside in polar:
+                r = to_unicode(model.readable(length.inside))
+                out.append(st.note(f"Spring '{spring.name}': its length |{r}| is {r}, a distance from its other end, "
+                                   f"taken ≥ 0 (a negative {r} is the same point as {r} > 0 with the direction turned "
+                                   f"half a turn); the answers hold for {r} ≥ 0"))
     return out
 
 

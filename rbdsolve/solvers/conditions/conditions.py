@@ -215,8 +215,20 @@ def what_decides(f: sp.Expr) -> str:
     """What a user can give to decide the sign of f, for a message: its parameters'
     values, or an assumption."""
     names = ", ".join(sorted(str(s) for s in f.free_symbols))
-    return (f"give values for {names}, or state the sign of {to_unicode(f)} under 'assumptions:' "
-            "(such as [R > r])")
+    return (f"give values for {names}, or state the sign of {to_unicode(f)} under 'assumptions:'"
+            + _assumption_example(f))
+
+
+def _assumption_example(f: sp.Expr) -> str:
+    """An assumption that decides f's sign, in the file's own names: one linear in one
+    of f's parameters is solved for it (model/assumptions.py), so where f is such a
+    parameter's multiple its own sign serves ([k < 0]); otherwise what kind of
+    assumption does."""
+    linear = [p for p in sorted(f.free_symbols, key=str)
+              if not isinstance(p, sp.Dummy) and (f / p).free_symbols.isdisjoint({p}) and not p.is_positive]
+    if linear:
+        return f" (such as [{linear[0]} > 0] or [{linear[0]} < 0])"
+    return " (an inequality between its parameters that is linear in one of them)"
 
 
 def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:

@@ -6,7 +6,7 @@ returned as ``Undecided`` with the expression, never guessed."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Mapping
+from typing import Iterable, Mapping
 
 import sympy as sp
 
@@ -81,6 +81,31 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
         if sign is not None:
             return sign
     return Undecided(value)
+
+
+def nonzero_where_defined(values: Iterable[sp.Expr]) -> dict[sp.Expr, sp.Dummy]:
+    """Each factor f of the values' denominators, as a nonzero real stand-in: where f = 0
+    the values are not defined (s = g cos α/(Ω² sin² α) is no point where sin α = 0), so
+    a sign decided at them may take f ≠ 0, and f² > 0 (K = −m Ω² sin² α < 0 there).
+    A factor whose sign is already decided, or that is not real, is left as it is."""
+    found = {}
+    for value in values:
+        _, factors = sp.factor_list(sp.denom(sp.together(value)))
+        for f, _ in factors:
+            if f.free_symbols and f.is_real and symbolic_sign(f) is None:
+                found[f] = sp.Dummy("f", real=True, nonzero=True)
+    return found
+
+
+def sign_where_defined(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr],
+                       nonzero: Mapping[sp.Expr, sp.Dummy]) -> int | Undecided:
+    """``sign_of`` value, the factors ``nonzero`` (``nonzero_where_defined``) taken ≠ 0;
+    the Undecided names value as written."""
+    sign = sign_of(value, values)
+    if not isinstance(sign, Undecided) or not nonzero:
+        return sign
+    found = sign_of(value.xreplace(nonzero), values)
+    return sign if isinstance(found, Undecided) else found
 
 
 FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes

@@ -39,6 +39,7 @@ from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
+from rbdsolve.solvers.equilibria import zero_length
 from rbdsolve.solvers.conditions.conditions import asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.configuration import contact_span
@@ -46,7 +47,8 @@ from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
 from rbdsolve.solvers.numeric.search_box import search_rule
-from rbdsolve.solvers.conditions.signs import Inertia, Undecided, matrix_inertia, sign_of, symbolic_sign
+from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, sign_of,
+                                              symbolic_sign)
 from rbdsolve.model.values.values import sample
 
 
@@ -311,7 +313,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(tidy))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
-    inertia = decided_inertia(H, model)
+    inertia = decided_inertia(H, model, at)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            f"the sign of {to_unicode(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
@@ -327,10 +329,21 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")
 
 
-def decided_inertia(H: sp.Matrix, model: Model) -> Inertia | Undecided:
+def decided_inertia(H: sp.Matrix, model: Model, at: Mapping[sp.Expr, sp.Expr] | None = None) -> Inertia | Undecided:
     """H's inertia decided by the values and the assumptions' substitutions, else by the
     assumptions alone: a value given for R drops the substitution R = r + δ (R is a
-    number there), which still decides that g m (R − r) > 0 under R > r."""
+    number there), which still decides that g m (R − r) > 0 under R > r. At an
+    equilibrium ``at``, each factor of its coordinates' denominators is ≠ 0 where it is
+    defined (``nonzero_where_defined``): K = −m Ω² sin² α < 0 at s = g cos α/(Ω² sin² α)."""
+    found = _inertia(H, model)
+    nonzero = nonzero_where_defined(at.values()) if at else {}
+    if isinstance(found, Undecided) and nonzero:
+        defined = _inertia(H.xreplace(nonzero), model)
+        return found if isinstance(defined, Undecided) else defined
+    return found
+
+
+def _inertia(H: sp.Matrix, model: Model) -> Inertia | Undecided:
     found = matrix_inertia(H, model.decided_by)
     if isinstance(found, Undecided) and model.assumed:
         alone = matrix_inertia(H, model.assumed)
@@ -387,10 +400,12 @@ def listing(model: Model) -> Listing:
     (solvers/configuration/placement.py), and solutions that are one configuration (the same
     orientation, or the same up to a coordinate V does not depend on) merged into the
     first, the others named as equivalent. Solutions where a contact point would be off
-    its edge (solvers/configuration/contact_span.py) are dropped, a warning saying why."""
+    its edge (solvers/configuration/contact_span.py), or where a spring with a natural
+    length would be at zero length (zero_length.py), are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
     solutions, off = contact_span.split(model, solutions)
-    warnings = [*warnings, *contact_span.warnings(off), *contact_span.undecided(model, solutions)]
+    solutions, crushed = zero_length.split(model, solutions)
+    warnings = [*warnings, *contact_span.warnings(off), *crushed, *contact_span.undecided(model, solutions)]
     free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
     kept: list[Listed] = []
     apart: list[tuple[dict, Singularity]] = []
@@ -424,7 +439,7 @@ def _classify_singular(model: Model, at: dict) -> Equilibrium:
         return found
     B = sp.Matrix.hstack(*sp.Matrix.hstack(*kernel).T.nullspace())
     reduced = (B.T * found.hessian * B).applyfunc(tidy)
-    inertia = decided_inertia(sp.ImmutableMatrix(reduced), model)
+    inertia = decided_inertia(sp.ImmutableMatrix(reduced), model, at)
     how = "at a singular point of the coordinates, the Hessian across the directions that move the scene"
     if isinstance(inertia, Undecided):
         return replace(found, stability=Stability.UNDETERMINED, reason=f"{how} has a sign that depends on the "

@@ -92,6 +92,16 @@ class Skipped:
     reason: str
 
 
+def none_answered(skipped: tuple[Skipped, ...] | list[Skipped], found_by: str) -> str:
+    """Why 'about: each' answered nothing: each equilibrium's reason, or, where there was
+    none to answer about, that no equilibrium was found (``found_by``: how they were
+    sought), never an empty reason."""
+    if not skipped:
+        return f"no equilibrium was found {found_by}, so there are no small oscillations about one"
+    return "no equilibrium's small oscillations could be answered: " + "; ".join(
+        s.reason or "(no reason given)" for s in skipped)
+
+
 @dataclass(frozen=True)
 class EachModesAnswers:
     """'about: each': the modes at every equilibrium ``equilibria`` lists (both routes)."""

@@ -8,6 +8,8 @@ a mode's cases are two or more (docs/json.md). What ``equilibria/cases.py`` is t
 
 from __future__ import annotations
 
+from typing import Mapping
+
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
@@ -19,7 +21,7 @@ from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.conditions import changes, exists_when, existing, partition, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
-from rbdsolve.solvers.conditions.signs import Inertia, Undecided, sign_of
+from rbdsolve.solvers.conditions.signs import Inertia, Undecided, nonzero_where_defined, sign_of, sign_where_defined
 
 
 def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
@@ -53,7 +55,7 @@ def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
 
 
 def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
-          first: sp.Symbol | None = None):
+          first: sp.Symbol | None = None, at: Mapping[sp.Expr, sp.Expr] | None = None):
     """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
     parameters decide (its critical values: ``solvers/conditions/conditions.py``), those outside
     ``where`` the equilibrium exists or outside the assumptions left out (a λ left with
@@ -63,11 +65,13 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
     in. When a λ's sign is not decided by itself, Sylvester's law of inertia decides it: with M
     positive definite, K a = λ M a has as many positive, zero and negative λ as K has
     eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
-    every λ positive."""
-    counts = decided_inertia(K, model)
+    every λ positive. At the equilibrium ``at``, a factor of its coordinates'
+    denominators is ≠ 0 (``nonzero_where_defined``: λ = −Ω² sin² α < 0 where s = g cos α/(Ω² sin² α))."""
+    counts = decided_inertia(K, model, at)
+    nonzero = nonzero_where_defined(at.values()) if at else {}
     motions, cases, criticals = [], [], []
     for lam in eigenvalues:
-        sign = _decided_sign(lam, model)
+        sign = _decided_sign(lam, model, nonzero)
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
@@ -97,12 +101,12 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
 KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
 
 
-def _decided_sign(lam: sp.Expr, model: Model) -> int | Undecided:
+def _decided_sign(lam: sp.Expr, model: Model, nonzero: Mapping[sp.Expr, sp.Dummy]) -> int | Undecided:
     """λ's sign by the values and the assumptions' substitutions, else by the assumptions
-    alone (as ``decided_inertia``: R given drops R = r + δ)."""
-    sign = sign_of(lam, model.decided_by)
+    alone (as ``decided_inertia``: R given drops R = r + δ), the factors ``nonzero`` ≠ 0."""
+    sign = sign_where_defined(lam, model.decided_by, nonzero)
     if isinstance(sign, Undecided) and model.assumed:
-        alone = sign_of(lam, model.assumed)
+        alone = sign_where_defined(lam, model.assumed, nonzero)
         return sign if isinstance(alone, Undecided) else alone
     return sign
 

@@ -45,7 +45,8 @@ from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.conditions.present_conditions import condition_relations
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Form, ModesAnswers, Motion, Skipped, with_amplitude_check
+from rbdsolve.solvers.modes.answers import (EachModesAnswers, Form, ModesAnswers, Motion, Skipped, none_answered,
+                                             with_amplitude_check)
 from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
@@ -146,8 +147,7 @@ def _at_each(model: Model, first: sp.Symbol | None) -> Solution:
         found.append(answers)
         steps += more
     if not found:
-        raise UnsolvedError("no equilibrium's small oscillations could be answered: " +
-                            "; ".join(s.reason for s in skipped))
+        raise UnsolvedError(none_answered(skipped, "among the roots of ∂V/∂q = 0"))
     return Solution("modes", Route.EXACT, EachModesAnswers(tuple(found), tuple(skipped)), tuple(steps))
 
 
@@ -167,7 +167,7 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
                             "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
     eigenvalues = [pair.lam for pair in spectrum.pairs]
-    motions, cases, criticals = kinds(eigenvalues, K, model, where, first)
+    motions, cases, criticals = kinds(eigenvalues, K, model, where, first, at)
     frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
                         for pair, mo in zip(spectrum.pairs, motions))
     shapes = _shapes(spectrum, model.values)

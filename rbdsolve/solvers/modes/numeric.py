@@ -46,7 +46,8 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.form.arrange import configuration
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.modes import gyroscopic
-from rbdsolve.solvers.modes.answers import EachModesAnswers, Motion, NumericModesAnswers, Skipped, with_amplitude_check
+from rbdsolve.solvers.modes.answers import (EachModesAnswers, Motion, NumericModesAnswers, Skipped, none_answered,
+                                             with_amplitude_check)
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static
@@ -98,8 +99,7 @@ def _at_each(model: Model) -> Solution:
         warned += [f"equilibrium {k}: {x}" for x in w]
         estimates += [estimate] if estimate is not None else []
     if not found:
-        raise UnsolvedError("no equilibrium's small oscillations could be answered: " +
-                            "; ".join(s.reason for s in skipped))
+        raise UnsolvedError(none_answered(skipped, "in the numeric search's box"))
     return Solution("modes", Route.NUMERIC, EachModesAnswers(tuple(found), tuple(skipped)), tuple(steps),
                     warnings=tuple(warned), error_estimate=max(estimates, default=None))
 

@@ -58,7 +58,7 @@ from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.numeric.scan import scan
-from rbdsolve.solvers.numeric.search_box import search_box
+from rbdsolve.solvers.numeric.search_box import round_a_circle, search_box
 
 GRID_POINTS = 24
 MAX_STARTS = 4096
@@ -416,6 +416,7 @@ def _box(model: Model) -> tuple[tuple[float, float], ...]:
     return tuple((i.low, i.high) for i in search_box(model, periodic_angles(model)))
 
 
+@memoized
 def periodic_angles(model: Model) -> frozenset:
     """The angle coordinates along which ∂V/∂q is 2π-periodic: an angle that also enters
     V bare (a torsional spring counts turns) is searched, wrapped and merged as a length
@@ -426,31 +427,38 @@ def periodic_angles(model: Model) -> frozenset:
     positions and stretches only through sin and cos of integer multiples of itself
     (model.build: ``_periodic_coordinates``, ``_refuse_winding_angles``), and masses,
     stiffnesses and gravity are constants. Otherwise it is checked at PERIODIC_SAMPLES
-    points to PERIODIC_TOL."""
-    if not model.angles:
+    points to PERIODIC_TOL. A contact's travel round a fixed circle (``along`` it,
+    searched as an angle that winds up: search_box.py) is one too where ∂V/∂q is checked
+    the same after a turn: a uniform wheel inside a cylinder, V = −m g (R − r) cos θ,
+    has its equilibria at 0 and π, not again at ±2π, ±4π … (its roll differs there, not
+    its V)."""
+    travels = round_a_circle(model) - model.angles
+    if not model.angles and not travels:
         return frozenset()
-    return model.angles if not model.inertial else _periodic(model)
+    declared = model.angles if not model.inertial else _periodic(model, model.angles, True)
+    return declared | (_periodic(model, travels, False) if travels else frozenset())
 
 
-@memoized
-def _periodic(model: Model) -> frozenset:
+def _periodic(model: Model, candidates: frozenset, declared: bool) -> frozenset:
+    """The candidates along which ∂V/∂q is the same after a turn at every sample point;
+    ``declared``: what an undecidable sample says (the declared kind is kept)."""
     g, _ = compiled_gradient(model)
     rng = np.random.default_rng(SAMPLE_SEED)
     points = [np.array([rng.uniform(-math.pi, math.pi) for _ in model.q]) for _ in range(PERIODIC_SAMPLES)]
     periodic = set()
     for i, q in enumerate(model.q):
-        if q in model.angles and all(_same_after_a_turn(g, x, i) for x in points):
+        if q in candidates and all(_same_after_a_turn(g, x, i, declared) for x in points):
             periodic.add(q)
     return frozenset(periodic)
 
 
-def _same_after_a_turn(g, x: np.ndarray, i: int) -> bool:
+def _same_after_a_turn(g, x: np.ndarray, i: int, declared: bool = True) -> bool:
     turned = x.copy()
     turned[i] += 2 * math.pi
     try:
         a, b = np.asarray(g(x), dtype=float), np.asarray(g(turned), dtype=float)
     except UnsolvedError:
-        return True  # no value to compare: keep the declared kind
+        return declared  # no value to compare: keep the declared kind
     return bool(np.max(np.abs(a - b), initial=0.0) <= PERIODIC_TOL * max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300))
 
 

@@ -6,7 +6,8 @@ with the reason it is what it is (the report prints them):
 * the coordinate of a contact on an edge of limited extent: the span where the contact
   holds (a slab on a drum, |θ| ≤ b/(2R)): elsewhere no solution is an equilibrium of
   the scene (``contact_span``);
-* a periodic angle: one turn, (−π, π] (the scan adds a cell each side);
+* a periodic angle: one turn, (−π, π] (the scan adds a cell each side); a contact's
+  travel round a circle is one where ∂V/∂q repeats after a turn (numeric_model.periodic_angles);
 * an angle that is not periodic (declared ``periodic: false``, in the angle of a
   torsional spring, or a contact's travel round a circle, ``along`` it), without a
   range: ±SEARCH_SCALE π (five turns each way);
@@ -113,6 +114,12 @@ def _round_a_circle(model: Model) -> set[str]:
     angle, whatever their kind says (a wheel inside a cylinder at θ = π is no length)."""
     return {c.coordinate for c in model.problem.contacts
             if c.measure is Measure.ALONG and c.surface.kind is SurfaceKind.CIRCLE and c.coordinate}
+
+
+def round_a_circle(model: Model) -> frozenset:
+    """``_round_a_circle``'s coordinates, as the model's symbols."""
+    names = _round_a_circle(model)
+    return frozenset(q for c, q in zip(model.problem.coordinates, model.q) if c.name in names)
 
 
 def _largest_length(model: Model) -> tuple[str | None, float]:

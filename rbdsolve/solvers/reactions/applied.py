@@ -11,6 +11,8 @@ An end whose position is constant is fixed to the ground; a moving end is carrie
 the body whose material point it is (its velocity is v_G + ω × (end − r_G) at every
 state). A torsional spring on an angle α = Σ c_B α_B + const (α_B body B's turning
 angle about e_z) turns body B by M_B = −k s c_B e_z; what is left acts on the ground.
+One on the direction of a body's centre G seen from a fixed point O (a particle on a
+light rod pivoted at O) acts on G through the rod: F = −k s κ (e_z × d)/|d|², d = r_G − O.
 
 An applied force F acts on its body at its point P; a couple M turns its body, and a
 motor's couple at a joint turns the other body by −M (model/energies/loads.py).
@@ -102,10 +104,35 @@ def _torsional(model: Model, s: SpringModel) -> list[Applied]:
                  for q in model.q]
     solved = sp.solve(rows, c, dict=True) if turning else []
     if not planar(model) or len(solved) != 1 or any(ci not in solved[0] for ci in c):
-        raise UnsolvedError(f"spring '{s.name}': its angle is not read as a sum of the bodies' turning angles, "
-                            "so which bodies it turns is not known")
+        rod = _light_rod(model, s) if planar(model) else None
+        if rod is None:
+            raise UnsolvedError(f"spring '{s.name}': its angle is neither a sum of the bodies' turning angles nor the "
+                                "direction of a body's centre seen from a fixed point (a light rod's), so which "
+                                "bodies it turns is not known")
+        return [rod]
     return [Applied(s.name, b.name, b.position, sp.zeros(3, 1), -s.stiffness * s.stretch * solved[0][ci] * _Z)
             for ci, b in zip(c, turning) if solved[0][ci] != 0]
+
+
+def _light_rod(model: Model, s: SpringModel) -> Applied | None:
+    """A torsional spring on the direction φ of d = r_G − O, O a fixed point and G a
+    body's centre (a particle on a light rod pivoted at O, the spring at the pivot):
+    α = κ φ + const, κ = ±1. The light rod carries the couple −k s κ e_z to G as the force
+    F = −k s κ (e_z × d)/|d|², whose moment about O is d × F = −k s κ e_z and whose
+    virtual work F·δr_G = −k s κ δφ = −k s δα is the spring's. None where no such pair."""
+    fixed = [p for p in model.points.values() if not (p.free_symbols & {*model.q, t})]
+    for b in model.bodies:
+        if b.position is None or not (b.position.free_symbols & set(model.q)):
+            continue
+        for origin in fixed:
+            d = b.position - origin
+            turn = sp.atan2(d[1], d[0])
+            for kappa in (1, -1):
+                if all(abs(sp.diff(s.stretch - kappa * turn, q).xreplace(generic_point(model, seed)).evalf(30)) < 1e-20
+                       for seed in (2, 5) for q in model.q):
+                    force = -s.stiffness * s.stretch * kappa * _Z.cross(d) / (d[0] ** 2 + d[1] ** 2)
+                    return Applied(s.name, b.name, b.position, force.applyfunc(sp.simplify), sp.zeros(3, 1))
+    return None
 
 
 def _zero(v: sp.Matrix, model: Model) -> bool:

@@ -177,3 +177,38 @@ def test_a_collar_on_a_turning_rod_with_its_range_has_no_bars() -> None:
     V = potential_energy(model).total
     r, L, k = (model.symbols.parameters.get(n) or dict(zip(model.symbols.state.names, model.q))[n] for n in "rLk")
     assert not V.has(sp.Abs) and sp.simplify(V - k * (L - r) ** 2 / 2) == 0
+
+
+# Issue 43, the neighbours' elastic pendulum: r in P = r (sin θ, −cos θ) is a polar
+# distance ((−r, θ) is (r, θ + π)), so r ≥ 0 and its spring's |r| = r, as a declared range
+# [0, …] says; an end-to-end vector that is not a unit vector times r, or whose direction
+# does not reverse at θ + π, is no polar distance.
+def test_a_polar_distance_is_nonnegative() -> None:
+    from rbdsolve.model.energies.spring_length import polar_distances
+
+    r, th, ph, a = sp.symbols("r theta phi a", real=True)
+    assert polar_distances(sp.Matrix([r * sp.sin(th), -r * sp.cos(th)]), (r, th)) == {r: (0, sp.oo)}
+    spherical = r * sp.Matrix([sp.sin(th) * sp.cos(ph), sp.sin(th) * sp.sin(ph), sp.cos(th)])
+    assert set(polar_distances(spherical, (r, th, ph))) == {r}  # θ + π reverses it
+    assert polar_distances(sp.Matrix([r * sp.sin(th), 2 * r * sp.cos(th)]), (r, th)) == {}  # not a unit vector
+    assert polar_distances(sp.Matrix([r * sp.sin(th), -r * sp.cos(th) + 1]), (r, th)) == {}  # not r times one
+    assert polar_distances(sp.Matrix([r * sp.sin(a), -r * sp.cos(a)]), (r,)) == {}  # a fixed direction: r of either sign
+    assert polar_distances(sp.Matrix([r, 0]), (r, th)) == {}  # [r, 0]: no turn
+
+
+def test_the_elastic_pendulums_spring_is_written_r_minus_L() -> None:
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+
+    model = build_model(load_text("""
+parameters: {m: mass, k: stiffness, L: natural length, g: gravity}
+coordinates: [r, theta]
+gravity: [0, -g]
+points: {O: "[0, 0]", P: "r*[sin(theta), -cos(theta)]"}
+bodies: {bob: {shape: particle, mass: m, at: P}}
+springs: {s: {stiffness: k, between: [O, P], natural_length: L}}
+questions: [eom]
+""", "elastic.yaml"))
+    r = model.q[0]
+    L = model.symbols.parameters["L"]
+    assert sp.expand(model.springs[0].stretch - (r - L)) == 0

@@ -111,3 +111,56 @@ def test_a_singular_non_diagonal_hessian_is_undetermined_not_unstable(values) ->
         assert eq.curvatures == pytest.approx((0, 6), abs=1e-9)
     else:
         assert "singular" in eq.reason
+
+
+# Issue 43, the neighbours' bead on a turning wire: K = −m Ω² sin²α is ≤ 0 for every real
+# α and < 0 wherever sin α ≠ 0; at the equilibrium s₀ = g cos α/(Ω² sin²α), defined only
+# where sin α ≠ 0, it is negative (by hand), though its sign alone is not decided.
+alpha = sp.Symbol("alpha", real=True)
+W, m, g = sp.symbols("Omega m g", positive=True)
+
+
+def test_a_square_that_vanishes_only_where_the_equilibrium_is_undefined_is_positive() -> None:
+    from rbdsolve.solvers.conditions.signs import nonzero_where_defined, sign_where_defined
+
+    K = -m * W**2 * sp.sin(alpha) ** 2
+    assert isinstance(sign_of(K, {}), Undecided)  # zero at α = 0: not decided alone
+    nonzero = nonzero_where_defined([g * sp.cos(alpha) / (W**2 * sp.sin(alpha) ** 2)])
+    assert set(nonzero) == {sp.sin(alpha)}
+    assert sign_where_defined(K, {}, nonzero) == -1
+    assert sign_where_defined(m * W**2 * sp.sin(alpha) ** 2 + g, {}, nonzero) == 1
+    # a factor the point does not divide by is not taken ≠ 0: cos α here is free to vanish
+    assert isinstance(sign_where_defined(-m * sp.cos(alpha) ** 2, {}, nonzero), Undecided)
+    # nothing is taken ≠ 0 at a point with no denominator
+    assert nonzero_where_defined([g * sp.cos(alpha)]) == {}
+
+
+def test_what_decides_names_the_expressions_own_parameters() -> None:
+    from rbdsolve.solvers.conditions.conditions import what_decides
+
+    text = what_decides(-m * W**2 * sp.sin(alpha) ** 2)
+    assert "R > r" not in text  # the hint of another scene (issue 43)
+    assert "give values for Omega, alpha, m" in text
+    assert text.endswith("(an inequality between its parameters that is linear in one of them)")  # none of either sign
+
+
+def test_the_assumption_the_hint_suggests_decides_the_sign() -> None:
+    """A spring of stiffness k of either sign (positive: false) on a particle: V = ½ k x²,
+    x = 0 with K = k undecided; the hint's own assumption [k < 0] is read and decides it:
+    unstable (K = k < 0, by hand), and [k > 0] stable (issue 43: the hint was another
+    scene's, [R > r]; and [k < 0] decided nothing, an assumption was solved only for a
+    parameter on its larger side)."""
+    scene = """
+parameters: {k: {description: stiffness, positive: false}, m: mass}
+coordinates: [x]
+points: {O: "[0, 0]", P: "[x, 0]"}
+bodies: {b: {shape: particle, mass: m, at: P}}
+springs: {s: {stiffness: k, between: [O, P]}}
+questions: [equilibria]
+"""
+    stability = lambda text: solve_problem(build_model(load_text(text, "t.yaml"))).solutions[0].answers.equilibria[0]
+    undecided = stability(scene)
+    assert undecided.stability.value == "undetermined"
+    assert "[k > 0] or [k < 0]" in undecided.reason
+    assert stability(scene + "assumptions: [k < 0]\n").stability.value == "unstable"
+    assert stability(scene + "assumptions: [k > 0]\n").stability.value == "stable"

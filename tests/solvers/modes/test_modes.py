@@ -76,3 +76,23 @@ def test_four_rod_chain_against_a_hand_derivation() -> None:
     for lam, shape in zip(result.values["eigenvalues"], result.values["shapes"]):
         a = np.array(shape, dtype=float)
         assert np.abs(K @ a - lam * M @ a).max() < 1e-9 * np.abs(a).max()
+
+
+def test_modes_about_each_with_no_equilibrium_say_so() -> None:
+    """Issue 43: a scene with no equilibrium (a falling particle, ∂V/∂y = m g ≠ 0 by hand)
+    refused 'modes: {about: each}' with an empty reason ("… could be answered: "), on
+    both routes. Now the reason is named on each."""
+    scene = """
+parameters: {m: mass, g: gravity}
+coordinates: [y]
+gravity: [0, -g]
+points: {P: "[0, y]"}
+bodies: {b: {shape: particle, mass: m, at: P}}
+questions: [{modes: {about: each}}]
+"""
+    for text in (scene, scene + "values: {m: 1, g: 9.81}\n"):
+        (solution,) = solve_problem(build_model(load_text(text, "falling.yaml"))).solutions
+        assert solution.error is not None
+        assert "no equilibrium was found among the roots of ∂V/∂q = 0" in solution.error
+        assert not solution.error.rstrip(" )").endswith(":")
+    assert "in the numeric search's box" in solution.error  # with values, the numeric route too

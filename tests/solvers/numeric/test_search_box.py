@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 import pytest
+import sympy as sp
 
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file, load_text
@@ -107,3 +108,36 @@ questions: [equilibria]
     solution = equilibria_numeric.solve(None, model, Options())
     at_pi = [eq for eq in solution.answers.equilibria if abs(math.remainder(eq.at["theta"] - math.pi, 2 * math.pi)) < 1e-9]
     assert at_pi and {str(eq.stability) for eq in at_pi} <= {"Stability.STABLE", "stable"}, at_pi
+
+
+@pytest.mark.parametrize("shape, m, r, R", [
+    ("cylinder", 1, "1/3", 1),  # problems/contacts/cylinder-in-cylinder.yaml with m, g given
+    ("ring", 2, "1/2", 2),  # next door: a ring, another ratio R/r
+])
+def test_a_travel_round_a_circle_whose_potential_repeats_is_wrapped_into_one_turn(shape, m, r, R) -> None:
+    """Issue 43: a uniform body rolling inside a cylinder, θ its travel round the circle,
+    on the numeric route: searched over ±10π, it listed θ = −9π, −7π, … and −8π, −6π, …
+    as "the same configuration" of two equilibria, their representatives −28.27 and
+    −25.13. By hand V = −m g (R − r) cos θ, which repeats after a turn: equilibria θ = 0,
+    V'' = m g (R − r) > 0, stable, and θ = π, V'' = −m g (R − r), unstable; no others."""
+    text = f"""\
+parameters: {{m: mass, r: length, R: length, g: gravity}}
+values: {{m: {m}, r: {r}, R: {R}, g: 9.81}}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  wheel: {{shape: {shape}, mass: m, radius: r{', height: 1' if shape == 'cylinder' else ''}}}
+contacts:
+  C: {{body: wheel, rolls_on: {{circle: {{centre: [0, 0], radius: R, side: inside}}}}, along: theta}}
+questions: [equilibria]
+"""
+    model = build_model(load_text(text, "wheel.yaml"))
+    (box,) = search_box(model, periodic_angles(model))
+    assert (box.low, box.high) == pytest.approx((-math.pi, math.pi))
+    solution = equilibria_numeric.solve(None, model, Options())
+    found = sorted(solution.answers.equilibria, key=lambda eq: eq.at["theta"])
+    assert [eq.at["theta"] for eq in found] == pytest.approx([0.0, math.pi], abs=1e-9)
+    assert [eq.stability.value for eq in found] == ["stable", "unstable"]
+    curvature = m * 9.81 * (R - float(sp.Rational(r)))
+    assert [eq.curvatures[0] for eq in found] == pytest.approx([curvature, -curvature], rel=1e-9)
+    assert all(not eq.equivalent for eq in found)

@@ -206,3 +206,30 @@ questions:
     assert result["ok"], result["error"]
     got = sp.sympify(result["answers"]["at"]["P"]["components"]["N_P"], locals={**NAMES, "h": h, "L0": L0})
     assert sp.simplify(got - (-k * l * (1 - L0 / sp.sqrt(l**2 + h**2)))) == 0
+
+
+def test_a_torsion_spring_on_a_particles_light_rod_acts_through_the_rod() -> None:
+    """Issue 43 (neighbours seed 2027, scene 113: refused 'its angle is not read as a sum
+    of the bodies' turning angles'). A particle on a light rod of length l from O, φ
+    measured clockwise below the horizontal (P = O + l (cos φ, −sin φ)), a torsion spring
+    on φ: the rod carries the couple −c φ to P as a force F ⊥ OP with F·∂P/∂φ = −c φ, by
+    hand F = (c φ/l)(sin φ, cos φ) (here the rod's direction angle is −φ: κ = −1)."""
+    from rbdsolve.solvers.reactions.applied import applied
+
+    scene = """
+parameters: {m: mass, l: length, g: acceleration, c: torsional stiffness}
+coordinates: {phi: {kind: angle, periodic: false}}
+gravity: [0, -g]
+points: {O: "[1, 2]", P: "[1 + l*cos(phi), 2 - l*sin(phi)]"}
+bodies: {bob: {shape: particle, mass: m, at: P}}
+springs: {s: {stiffness: c, angle: phi}}
+questions: [{reactions: {forces: [P]}}]
+"""
+    model = build_model(load_text(scene, "rod.yaml"))
+    (found,) = applied(model, ["bob"])
+    phi = model.q[0]
+    c_, l_ = model.symbols.parameters["c"], model.symbols.parameters["l"]
+    want = sp.Matrix([c_ * phi * sp.sin(phi) / l_, c_ * phi * sp.cos(phi) / l_, 0])
+    assert found.body == "bob"
+    assert sp.simplify(found.force - want) == sp.zeros(3, 1)
+    assert found.moment == sp.zeros(3, 1)
