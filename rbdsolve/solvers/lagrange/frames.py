@@ -68,17 +68,16 @@ def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
         how.append(f"its origin follows {frame.origin.text}")
     if frame.axis is not None:
         how.append(f"it turns at the rate {frame.rate.text} about {frame.axis.text}")
+    turning = "; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen) else "."
     V = potential_energy(seen)
     rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
+    total = Relation(sp.Symbol("V'"), present(V.total, seen))
     legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
     return [
         st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
                  "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
-                 "(centrifugal) and m a_O' · r' (the origin's acceleration)"
-                 + ("; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen)
-                    else ".")),
-        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows,
-                      Relation(sp.Symbol("V'"), present(V.total, seen))),
+                 "(centrifugal) and m a_O' · r' (the origin's acceleration)" + turning),
+        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows, total),
     ]
 
 
