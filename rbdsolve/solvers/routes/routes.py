@@ -29,9 +29,7 @@ from typing import Callable
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.problem.quantities.quantity import ACCELERATION
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
-from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
@@ -39,7 +37,8 @@ from rbdsolve.solvers.routes.checks import CheckFailed, Residuals, verify
 from rbdsolve.solvers.lagrange.frames import frame_of, model_in_frame, solve_in_frame
 from rbdsolve.model.values.numbers import numbers as numeric_lines
 from rbdsolve.solvers.routes.options import Options, RouteChoice
-from rbdsolve.model.summary.summary import coordinates_only, summarize_model, unturned
+from rbdsolve.model.summary.scene import swing_warnings, unused_warnings
+from rbdsolve.model.summary.summary import coordinates_only, summarize_model
 from rbdsolve.model.values.units import answer_units, parameter_units
 from rbdsolve.model.values.values import not_finite, not_real, numbers
 from rbdsolve.solvers.routes.needed import missing_for, missing_values, with_irrelevant_filled
@@ -123,7 +122,8 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
     error (exit code 1), not an exception, so the other questions still run."""
     start = time.perf_counter()
-    solution = _with_scene_warnings(question, model, _routed(family, question, model, options))
+    routed = _routed(family, question, model, options)
+    solution = _with_scene_warnings(question, model, routed)
     found = numbers(solution.answers, model.values) if model.values and solution.answers else None
     values = found.tree if found is not None else {}
     said = (not_finite(solution.answers, model.values), not_real(found)) if values else ()
@@ -148,35 +148,11 @@ USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, Q
 def _with_scene_warnings(question: Question, model: Model, solution: Solution) -> Solution:
     """What the scene itself makes doubtful, on the questions it bears on: a question
     whose answer rests on T warns of bodies that swing without turning
-    (``summary.unturned``: their T lacks the rotational part), and every question of a
+    (``scene.swing_warnings``: their T lacks the rotational part), and every question of a
     parameter declared and used nowhere (``unused_warnings``: a line left out,
     such as ``gravity:``). The answers are unchanged."""
     swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
     return replace(solution, warnings=(*solution.warnings, *swing, *unused_warnings(model)))
-
-
-def swing_warnings(model: Model) -> tuple[str, ...]:
-    """The warnings for bodies that evidently swing without an angle (``Unturned`` with
-    a pivot), for every question that uses T."""
-    return tuple(u.text() for u in unturned(model) if u.pivot is not None)
-
-
-def unused_warnings(model: Model) -> tuple[str, ...]:
-    """A warning for each declared parameter that nothing in the scene or the questions
-    uses (``problem.usage``): no answer depends on it, so a line is most likely missing;
-    for an acceleration of gravity in a scene without ``gravity:``, the line to add."""
-    return tuple(_unused_text(p, model) for p in unused_parameters(model.problem))
-
-
-def _unused_text(parameter, model: Model) -> str:
-    name = parameter.name
-    text = f"parameter '{name}' is declared but used nowhere: no answer depends on it"
-    dimension = model.problem.dimension_map().get(name)
-    gravity = (name == "g" or "gravit" in parameter.description.lower() or dimension == ACCELERATION)
-    if gravity and model.gravity is None:
-        return (f"{text}, and the scene has no gravity (no 'gravity:' line), so V holds no weight; if the bodies "
-                f"are in gravity, add `gravity: [0, -{name}]` (y up; `[0, 0, -{name}]` in 3D)")
-    return f"{text} (is a line that uses it missing?)"
 
 
 def _finite_estimate(solution: Solution) -> Solution:
