@@ -20,16 +20,12 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.arrange import subscript
-from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
-from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
+from rbdsolve.model.summary.frame import frame_steps
 from rbdsolve.problem.schema import Question
-from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
-from rbdsolve.model.summary.present import present
 
 
 def frame_of(question: Question) -> str | None:
@@ -58,31 +54,7 @@ def solve_in_frame(solve, question: Question, model: Model, options) -> Solution
     motion = frame_motion(model, frame)
     seen = _seen(model, motion)
     solution = solve(question, seen, options)
-    return replace(solution, steps=(*_frame_steps(seen, motion), *solution.steps))
-
-
-def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
-    frame = motion.frame
-    how = []
-    if frame.origin is not None:
-        how.append(f"its origin follows {frame.origin.text}")
-    if frame.axis is not None:
-        how.append(f"it turns at the rate {frame.rate.text} about {frame.axis.text}")
-    turning = "; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen) else "."
-    V = potential_energy(seen)
-    rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
-    total = Relation(sp.Symbol("V'"), present(V.total, seen))
-    legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
-    return [
-        st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
-                 "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
-                 "(centrifugal) and m a_O' · r' (the origin's acceleration)" + turning),
-        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows, total),
-    ]
-
-
-def _turning(seen: Model) -> bool:
-    return any(x.name.endswith(", turning") for x in seen.inertial)
+    return replace(solution, steps=(*frame_steps(seen, motion), *solution.steps))
 
 
 def spin_warnings(model: Model) -> tuple[str, ...]:
