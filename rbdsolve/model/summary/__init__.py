@@ -6,5 +6,5 @@ without an angle, a parameter used nowhere: ``scene.py``).
 
 A room of the model, beside the energies it describes, so that printing them needs
 nothing above the model. Used by solvers/routes/ (the report of a whole problem, the
-scene's warnings on each question), solvers/lagrange/ (a question in a moving frame) and the solver
-families' steps."""
+scene's warnings on each question), solvers/lagrange/ (a question in a moving frame)
+and the solver families' steps."""
