@@ -24,7 +24,7 @@ from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
 from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
 from rbdsolve.model.summary.frame import frame_steps
-from rbdsolve.problem.schema import Question
+from rbdsolve.problem.schema import Frame, Question
 from rbdsolve.report.steps import Solution
 
 
@@ -35,15 +35,19 @@ def frame_of(question: Question) -> str | None:
 def model_in_frame(question: Question, model: Model) -> Model:
     """The model as seen in the question's frame; refused where the scene still moves
     there."""
-    return _seen(model, frame_motion(model, model.problem.frame(frame_of(question))))
+    _, seen = _seen(model, model.problem.frame(frame_of(question)))
+    return seen
 
 
-def _seen(model: Model, motion: FrameMotion) -> Model:
+def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
+    """The frame's motion and the model as seen in it; refused where the scene still
+    depends on t there."""
+    motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
     if seen.depends_on_time():
-        raise UnsolvedError(f"in frame '{motion.frame.name}' the scene still depends on t (a body, a spring or "
+        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or "
                             "gravity moves in it): it has no relative equilibria there")
-    return seen
+    return motion, seen
 
 
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
@@ -51,8 +55,7 @@ def solve_in_frame(solve, question: Question, model: Model, options) -> Solution
     the ones that say what the frame adds."""
     frame = model.problem.frame(frame_of(question))
     refuse_loads_in_frame(model, frame.name)
-    motion = frame_motion(model, frame)
-    seen = _seen(model, motion)
+    motion, seen = _seen(model, frame)
     solution = solve(question, seen, options)
     return replace(solution, steps=(*frame_steps(seen, motion), *solution.steps))
 
