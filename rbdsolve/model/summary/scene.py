@@ -1,8 +1,9 @@
 """What the scene itself makes doubtful, said on the questions it bears on and in the
-model section: a body that moves with an angle coordinate without turning (``Unturned``:
-its T lacks the rotational part; where it evidently swings, every question that uses T
-warns of it), and a declared parameter that nothing uses (a line left out, such as
-``gravity:``). Read from the model alone; the answers are unchanged."""
+model section's notes: a body that moves with an angle coordinate without turning
+(``Unturned``: its T lacks the rotational part; where it evidently swings, every
+question that uses T warns of it), a spring whose length keeps |…| (its sign at the
+reference configuration undecided), and a declared parameter that nothing uses (a line
+left out, such as ``gravity:``). Read from the model alone; the answers are unchanged."""
 
 from __future__ import annotations
 
@@ -11,11 +12,13 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.problem.quantities.quantity import ACCELERATION
 from rbdsolve.problem.usage import unused_parameters
+from rbdsolve.report import steps as st
 
 
 def swing_warnings(model: Model) -> tuple[str, ...]:
@@ -40,6 +43,48 @@ def _unused_text(parameter, model: Model) -> str:
         return (f"{text}, and the scene has no gravity (no 'gravity:' line), so V holds no weight; if the bodies "
                 f"are in gravity, add `gravity: [0, -{name}]` (y up; `[0, 0, -{name}]` in 3D)")
     return f"{text} (is a line that uses it missing?)"
+
+
+def scene_notes(model: Model) -> list[st.Step]:
+    """The model section's notes on the scene: each spring whose length keeps |…|
+    (``_two_sided``), then each body that moves with an angle coordinate without
+    turning (a warning where it evidently swings: ``unturned``)."""
+    swinging = unturned(model)
+    return [*_two_sided(model),
+            *(st.note(u.text() if u.pivot is None else f"warning: {u.text()}") for u in swinging)]
+
+
+def _two_sided(model: Model) -> list[st.Step]:
+    """A note for each spring length |u| whose sign at the reference configuration is
+    not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
+    out = []
+    at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
+    for spring in model.springs:
+        for length in spring.lengths:
+            if length.sign is not None:
+                continue
+            u = model.readable(length.inside)
+            shown, minus = to_unicode(u), to_unicode(tidy(-u))
+            here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
+            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
+                   f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
+                   f"'assumptions:', such as {_positive(here)}, to take one side)")
+            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
+                               f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
+                               "keep |…| and sign(…)"))
+    return out
+
+
+def _positive(value: sp.Expr) -> str:
+    """value > 0 as an assumption is written in a file: [l > h] for l − h."""
+    terms = sp.Add.make_args(value)
+    below = [-x for x in terms if x.could_extract_minus_sign()]
+    above = [x for x in terms if not x.could_extract_minus_sign()]
+    if above and below:
+        return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
+    return f"[{value} > 0]"
+
+
 
 
 @dataclass(frozen=True)

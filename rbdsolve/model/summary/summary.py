@@ -7,8 +7,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
@@ -17,7 +16,7 @@ from rbdsolve.report.steps import ModelSummary
 from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
                                                   potential_steps, quadratic_products, terms)
 from rbdsolve.model.summary.present import present
-from rbdsolve.model.summary.scene import unturned
+from rbdsolve.model.summary.scene import scene_notes
 
 
 def coordinates_only(model: Model) -> ModelSummary:
@@ -49,8 +48,7 @@ def summarize_model(model: Model) -> ModelSummary:
     V = potential_energy(model)
     steps += _potential_steps(V, model)
     steps += _free_force_steps(model)
-    steps += _two_sided(model)
-    steps += _unturned(model)
+    steps += scene_notes(model)
     return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
 
 
@@ -136,42 +134,6 @@ def _implied_notes(c) -> list[st.Step]:
     the model assumes it (model/constraints/contacts.py)."""
     return [st.note(f"{a.implied_by[0].upper()}{a.implied_by[1:]}, so {a.source.text} (assumed in what follows)")
             for a in c.requires]
-
-
-def _two_sided(model: Model) -> list[st.Step]:
-    """A note for each spring length |u| whose sign at the reference configuration is
-    not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
-    out = []
-    at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
-    for spring in model.springs:
-        for length in spring.lengths:
-            if length.sign is not None:
-                continue
-            u = model.readable(length.inside)
-            shown, minus = to_unicode(u), to_unicode(tidy(-u))
-            here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
-            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
-                   f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
-                   f"'assumptions:', such as {_positive(here)}, to take one side)")
-            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
-                               f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
-                               "keep |…| and sign(…)"))
-    return out
-
-
-def _positive(value: sp.Expr) -> str:
-    """value > 0 as an assumption is written in a file: [l > h] for l − h."""
-    terms = sp.Add.make_args(value)
-    below = [-x for x in terms if x.could_extract_minus_sign()]
-    above = [x for x in terms if not x.could_extract_minus_sign()]
-    if above and below:
-        return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
-    return f"[{value} > 0]"
-
-
-def _unturned(model: Model) -> list[st.Step]:
-    """The model section's note (a warning where the body evidently swings)."""
-    return [st.note(u.text() if u.pivot is None else f"warning: {u.text()}") for u in unturned(model)]
 
 
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:
