@@ -68,7 +68,7 @@ def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
     together: a chain's bodies each repeat the links above them), as ½ qᵀ K q or one sum."""
     text = LOADED if any(x.potential is not None for x in model.loads) else POTENTIAL
     if V.terms and (terms(V.total) > SCAN_TERMS or sum(terms(t.value) for t in V.terms) > 2 * SCAN_TERMS):
-        return potential_steps(text, V, model, present(V.total, model))
+        return potential_steps(text, V, model)
     return _energy_steps(text, "V", V, model)
 
 
