@@ -22,7 +22,7 @@ from conftest import PROBLEMS
 from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
-from rbdsolve.report.tree import leaves
+from rbdsolve.model.values.tree import leaves
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.conditions.condition_roots import admissible
 from rbdsolve.solvers.conditions.conditions import CriticalValue

@@ -22,7 +22,7 @@ from rbdsolve.errors import InputError, InternalError, UnsolvedError
 from rbdsolve.render.json_text import strict_json
 from rbdsolve.form.printers import relation_latex
 from rbdsolve.form.display import Math, plain
-from rbdsolve.report.tree import map_leaves
+from rbdsolve.model.values.tree import map_leaves
 from rbdsolve.report.steps import ProblemReport, Solution, Step
 from rbdsolve.form.display import Relation
 

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text, unicode_name
 from rbdsolve.report.numbers import Beside, Note, Number
-from rbdsolve.report.tree import Path, label
+from rbdsolve.report.numbers import Path
+from rbdsolve.model.values.tree import label
 
 
 ACCURACY = frozenset({"absolute_errors", "relative_errors", "absolute_error", "shape_errors", "condition_M",
@@ -80,7 +81,7 @@ def note_text(note: Note | None) -> str:
 def numeric_lines(values: object, units: object = None, path: Path = (), skip: frozenset[str] = frozenset(),
                   only: frozenset[str] | None = None) -> list[str]:
     """Flatten a numeric values tree into 'name = value unit' lines, skipping the empty;
-    names are spelled by ``report.tree.label``; ``units`` is the same tree of SI units
+    names are spelled by ``model.values.tree.label``; ``units`` is the same tree of SI units
     (``Solution.units``; None or '' where there is none to print). ``skip``: keys left
     out at any depth; ``only``: just the keys named, at any depth, whole. Numbers to the
     significant digits asked (form.printers.digits); an entry of a list of values that

@@ -17,7 +17,8 @@ from enum import Enum
 import sympy as sp
 
 from rbdsolve.form.display import Label, Relation
-from rbdsolve.report.tree import Path
+
+Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an answers tree
 
 
 class Meaning(Enum):

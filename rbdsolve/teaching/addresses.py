@@ -6,7 +6,7 @@ indices in brackets counting from 1 as the printed solution does:
 ``modes.frequencies[1]`` is ω₁, ``equilibria.equilibria[2].at.phi`` the second
 equilibrium's φ, ``modes(2).eigenvalues[1]`` the first eigenvalue of a file's second
 modes question. The same spelling names the columns of ``rbdsolve variants``
-(report/tree.label). The question's label may be left out where only one question has
+(model/values/tree.label). The question's label may be left out where only one question has
 that path (``frequencies[1]``).
 
 Aliases, for the answers asked most (each only where the file has one question of its

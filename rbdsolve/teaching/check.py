@@ -27,7 +27,7 @@ from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model, build_model
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.schema import Problem
-from rbdsolve.report.tree import label, leaves
+from rbdsolve.model.values.tree import label, leaves
 from rbdsolve.solvers import Options, RouteChoice, solve_problem
 from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.teaching.addresses import resolve

@@ -20,7 +20,8 @@ from sympy.logic.boolalg import BooleanAtom
 
 from rbdsolve.model.symbols import exact_number
 from rbdsolve.problem.quantities.quantity import Value
-from rbdsolve.report.tree import Path, leaves
+from rbdsolve.report.numbers import Path
+from rbdsolve.model.values.tree import leaves
 
 KIND_FIELDS = ("stability", "motions")  # the answers' fields that hold a kind
 

@@ -19,7 +19,7 @@ from rbdsolve.form.display import Label
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.report.steps import ProblemReport
-from rbdsolve.report.tree import label
+from rbdsolve.model.values.tree import label
 from rbdsolve.solvers import FAMILIES
 from rbdsolve.teaching.addresses import normal
 

@@ -41,7 +41,8 @@ from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.steps import ProblemReport
 from rbdsolve.report.variants import VariantTable
 from rbdsolve.teaching.kinds import is_kind, kinds, per_variant
-from rbdsolve.report.tree import Path, label, leaves
+from rbdsolve.report.numbers import Path
+from rbdsolve.model.values.tree import label, leaves
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.routes.options import Options, RouteChoice

@@ -67,10 +67,10 @@ def memoized(compute):
 
 @memoized
 def kinetic_energy(model: Model) -> Energy:
-    terms = tuple(
-        EnergyTerm(b.name, tidy_quadratic(body_kinetic_energy(b, model.state), model.qd))
-        for b in model.bodies
-    )
+    """T body by body, each built first (``body_kinetic_energy``), then tidied as a
+    quadratic form in the rates, and their tidied total."""
+    built = [(b.name, body_kinetic_energy(b, model.state)) for b in model.bodies]
+    terms = tuple(EnergyTerm(name, tidy_quadratic(T, model.qd)) for name, T in built)
     return Energy(terms, tidy_quadratic(sum((x.value for x in terms), sp.Integer(0)), model.qd))
 
 

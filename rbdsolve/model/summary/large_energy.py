@@ -20,6 +20,7 @@ from rbdsolve.form.arrange import scaled_matrix
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import Energy, hessian, jacobians
+from rbdsolve.model.summary.present import present
 from rbdsolve.report import steps as st
 
 SCAN_TERMS = 12  # an energy with more terms than this is shown as a matrix, or as its total alone
@@ -50,22 +51,23 @@ def kinetic_from_matrix(M: sp.Matrix, qd: tuple[sp.Expr, ...]) -> sp.Expr:
 def kinetic_steps(text: str, products: int, M: sp.Matrix, model: Model) -> list[st.Step]:
     """T = ½ q̇ᵀ M(q) q̇ with M(q) written out."""
     symbols = set(model.symbols.parameters.values())
+    timed = in_time(M, model.to_time)
     return [st.definition(
         f"{text}. T has {products} products q̇ᵢq̇ⱼ, so it is written as a matrix: T = ½ q̇ᵀ M(q) q̇ with "
         f"M(q) = Σ (m J_vᵀ J_v + J_ωᵀ J_G J_ω) over the bodies (J_v, J_ω: the Jacobians of v_G and ω "
         "with respect to q̇):",
-        Relation(_M_of_q(), scaled_matrix(in_time(M, model.to_time), symbols)))]
+        Relation(_M_of_q(), scaled_matrix(timed, symbols)))]
 
 
-def potential_steps(text: str, energy: Energy, model: Model, shown: sp.Expr) -> list[st.Step]:
+def potential_steps(text: str, energy: Energy, model: Model) -> list[st.Step]:
     """V = ½ qᵀ K q with K written out when V is a quadratic form in q; else V in one
-    sum (``shown``, arranged), its per-body parts left out."""
+    sum (arranged: ``present``), its per-body parts left out."""
     symbols = set(model.symbols.parameters.values())
     if _quadratic_form(energy.total, model.q):
-        K = hessian(energy.total, tuple(model.q))
+        K = in_time(hessian(energy.total, tuple(model.q)), model.to_time)
         return [st.definition(f"{text}. V is a quadratic form in q, written as a matrix: V = ½ qᵀ K q with "
-                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), scaled_matrix(in_time(K, model.to_time), symbols)))]
-    return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), shown))]
+                              "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), scaled_matrix(K, symbols)))]
+    return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), present(energy.total, model)))]
 
 
 def in_time(matrix: sp.Matrix, to_time: Callable[[sp.Expr], sp.Expr]) -> sp.ImmutableMatrix:

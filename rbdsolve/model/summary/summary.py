@@ -3,25 +3,20 @@ problem 1: T₁, T₂, then T = T₁ + T₂ with its common scale pulled out."""
 
 from __future__ import annotations
 
-import random
-from dataclasses import dataclass
-
 import sympy as sp
 
 from rbdsolve.form.arrange import subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
-from rbdsolve.model.energies.spring_length import polar_distances
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
 from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
                                                   potential_steps, quadratic_products, terms)
 from rbdsolve.model.summary.present import present
-from rbdsolve.model.values.values import parameter_sample
+from rbdsolve.model.summary.scene import scene_notes
 
 
 def coordinates_only(model: Model) -> ModelSummary:
@@ -53,9 +48,7 @@ def summarize_model(model: Model) -> ModelSummary:
     V = potential_energy(model)
     steps += _potential_steps(V, model)
     steps += _free_force_steps(model)
-    steps += _two_sided(model)
-    steps += _polar(model)
-    steps += _unturned(model)
+    steps += scene_notes(model)
     return ModelSummary(model.state.functions(), model.to_time(T), model.to_time(V.total), tuple(steps))
 
 
@@ -75,7 +68,7 @@ def _potential_steps(V: Energy, model: Model) -> list[st.Step]:
     together: a chain's bodies each repeat the links above them), as ½ qᵀ K q or one sum."""
     text = LOADED if any(x.potential is not None for x in model.loads) else POTENTIAL
     if V.terms and (terms(V.total) > SCAN_TERMS or sum(terms(t.value) for t in V.terms) > 2 * SCAN_TERMS):
-        return potential_steps(text, V, model, present(V.total, model))
+        return potential_steps(text, V, model)
     return _energy_steps(text, "V", V, model)
 
 
@@ -141,156 +134,6 @@ def _implied_notes(c) -> list[st.Step]:
     the model assumes it (model/constraints/contacts.py)."""
     return [st.note(f"{a.implied_by[0].upper()}{a.implied_by[1:]}, so {a.source.text} (assumed in what follows)")
             for a in c.requires]
-
-
-@dataclass(frozen=True)
-class Unturned:
-    """A body with rotational inertia that moves with angle coordinates but has no
-    ``angle`` or ``orientation``: it translates, and its rotational energy is zero.
-    ``pivot``: a point it keeps a constant distance to while it moves (a named one, or
-    the centre of the circle its centre moves on), so it evidently swings about it with
-    the coordinate ``turns_by`` (a likely mistake); None: it may just slide."""
-
-    body: str
-    coordinates: tuple[str, ...]
-    pivot: str | None
-    turns_by: str = ""  # the coordinate it evidently swings with ('' with no pivot)
-
-    def text(self) -> str:
-        moves = ", ".join(self.coordinates)
-        if self.pivot is None:
-            return (f"Note: {self.body} has no 'angle', so it moves with {moves} without turning "
-                    "(no rotational energy). If it turns, give its angle.")
-        return (f"body '{self.body}' has no angle: it moves with {moves} without turning (no rotational "
-                f"energy), though it keeps its distance to {self.pivot}; if it swings about {self.pivot}, "
-                f"add `angle: {self.turns_by}` (or the angle it turns by)")
-
-
-def unturned(model: Model) -> tuple[Unturned, ...]:
-    """The bodies that move with an angle coordinate without turning (see Unturned)."""
-    out = []
-    for body in model.bodies:
-        if body.angle is not None or body.turns_3d or body.inertia == sp.zeros(3, 3) or not body.placed:
-            continue
-        moves = tuple(n for q, n in zip(model.q, model.coordinate_names())
-                      if q in model.angles and body.position.has(q))
-        if moves:
-            pivot, turns_by = _pivot(model, body.position) or (None, "")
-            out.append(Unturned(body.name, moves, pivot, turns_by or moves[0]))
-    return tuple(out)
-
-
-def _pivot(model: Model, position: sp.Matrix) -> tuple[str, str] | None:
-    """What G turns about, and with which coordinate: a named point (``_named_pivot``),
-    else the centre of the circle G moves on as one angle coordinate turns
-    (``_circle_centre``: a rod hung by its end from an unnamed pivot, G = l/2 (sin θ,
-    −cos θ)); None if neither."""
-    named = _named_pivot(model, position)
-    if named is not None:
-        return named, ""
-    found = _circle_centre(model, position)
-    if found is None:
-        return None
-    centre, q = found
-    shown = centre[:2, 0] if centre[2] == 0 else centre
-    name = dict(zip(model.q, model.coordinate_names()))[q]
-    return f"the point ({', '.join(to_unicode(model.readable(x)) for x in shown)})", name
-
-
-def _circle_centre(model: Model, position: sp.Matrix) -> tuple[sp.Matrix, sp.Symbol] | None:
-    """A + B cos q + C sin q, with A, B, C free of the angle coordinate q, is a circle of
-    centre A where B·C = 0 and |B| = |C| ≠ 0: that centre and q, for the last angle q
-    (in the file's order: a chain's links from the base out, the body's own joint last)
-    that moves G so; else None. Exact: A, B, C are read off with sin q and cos q as
-    symbols."""
-    c, s = sp.Dummy("c"), sp.Dummy("s")
-    for q in reversed(model.q):
-        if q not in model.angles or not position.has(q):
-            continue
-        r = position.applyfunc(sp.expand).xreplace({sp.cos(q): c, sp.sin(q): s})
-        if r.has(q):
-            continue
-        A, B, C = r.xreplace({c: 0, s: 0}), r.diff(c), r.diff(s)
-        if any(sp.expand(x) != 0 for x in r - (A + B * c + C * s)) or B.has(c, s) or C.has(c, s):
-            continue
-        if B == sp.zeros(3, 1) or sp.expand(B.dot(C)) != 0 or sp.expand(B.dot(B) - C.dot(C)) != 0:
-            continue
-        return A, q
-    return None
-
-
-def _named_pivot(model: Model, position: sp.Matrix) -> str | None:
-    """A named point P with |r_G − r_P| the same at random samples of the coordinates
-    (the parameters at one sample), while r_G − r_P is not: G turns about P. Sampled, not
-    simplified: a constant distance needs sin² + cos² = 1 and its like, which the
-    samples see at once."""
-    rng = random.Random(26)
-    parameters = parameter_sample(model, rng)
-    samples = [{**parameters, **{q: sp.Rational(rng.randint(1100, 2900), 1000) for q in model.q}}
-               for _ in range(3)]
-    for name, point in model.points.items():
-        r = position - point
-        if not r.free_symbols & set(model.q):
-            continue
-        d = r.dot(r)
-        lengths = {round(float(sp.N(d.xreplace(x), 30)), 9) for x in samples}
-        if len(lengths) == 1 and next(iter(lengths)) > 0:
-            return name
-    return None
-
-
-def _two_sided(model: Model) -> list[st.Step]:
-    """A note for each spring length |u| whose sign at the reference configuration is
-    not known (model/energies/spring_length.py): the two cases, in words, and what decides them."""
-    out = []
-    at = ", ".join(f"{unicode_name(n)} = 0" for n in model.coordinate_names())
-    for spring in model.springs:
-        for length in spring.lengths:
-            if length.sign is not None:
-                continue
-            u = model.readable(length.inside)
-            shown, minus = to_unicode(u), to_unicode(tidy(-u))
-            here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
-            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
-                   f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
-                   f"'assumptions:', such as {_positive(here)}, to take one side)")
-            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
-                               f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
-                               "keep |…| and sign(…)"))
-    return out
-
-
-def _polar(model: Model) -> list[st.Step]:
-    """A note for each spring length |r| written r because r is a polar distance
-    (model/energies/spring_length.py, ``polar_distances``): the answers hold for r ≥ 0."""
-    out = []
-    for spring in model.springs:
-        if spring.source.ends is None or not spring.lengths:
-            continue
-        a, b = (model.symbols.vector(e) for e in spring.source.ends)
-        polar = polar_distances(a - b, model.q)
-        for length in spring.lengths:
-            if length.sign is not None and length.inside in polar:
-                r = to_unicode(model.readable(length.inside))
-                out.append(st.note(f"Spring '{spring.name}': its length |{r}| is {r}, a distance from its other end, "
-                                   f"taken ≥ 0 (a negative {r} is the same point as {r} > 0 with the direction turned "
-                                   f"half a turn); the answers hold for {r} ≥ 0"))
-    return out
-
-
-def _positive(value: sp.Expr) -> str:
-    """value > 0 as an assumption is written in a file: [l > h] for l − h."""
-    terms = sp.Add.make_args(value)
-    below = [-x for x in terms if x.could_extract_minus_sign()]
-    above = [x for x in terms if not x.could_extract_minus_sign()]
-    if above and below:
-        return f"[{sp.Add(*above)} > {sp.Add(*below)}]"
-    return f"[{value} > 0]"
-
-
-def _unturned(model: Model) -> list[st.Step]:
-    """The model section's note (a warning where the body evidently swings)."""
-    return [st.note(u.text() if u.pivot is None else f"warning: {u.text()}") for u in unturned(model)]
 
 
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:

@@ -23,8 +23,7 @@ from typing import Iterable
 import sympy as sp
 
 from rbdsolve.form.display import Relation
-from rbdsolve.report.numbers import Beside, Meaning, Named, Note, Number
-from rbdsolve.report.tree import Path
+from rbdsolve.report.numbers import Beside, Meaning, Named, Note, Number, Path
 
 
 def numbers(named: Iterable[Named], answers: object, values: object, units: object) -> tuple[Number, ...]:

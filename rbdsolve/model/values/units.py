@@ -37,7 +37,8 @@ from rbdsolve.model.symbols import to_sympy
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
-from rbdsolve.report.tree import Path, map_paths
+from rbdsolve.report.numbers import Path
+from rbdsolve.model.values.tree import map_paths
 from rbdsolve.model.values.fixed_units import TORSIONAL, fixed_unit, torsional_stiffnesses
 from rbdsolve.model.values.numbers import at
 from rbdsolve.model.values.values import CONDITIONS

@@ -16,7 +16,8 @@ from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 
 from rbdsolve.form.tidy import tidy_fraction
-from rbdsolve.report.tree import Path, label, leaves, map_paths
+from rbdsolve.report.numbers import Path
+from rbdsolve.model.values.tree import label, leaves, map_paths
 
 
 SAMPLE_POINTS = (1, sp.Rational(13, 10), sp.Rational(17, 7))  # each symbol without a value, in turn

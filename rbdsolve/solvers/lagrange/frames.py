@@ -20,17 +20,12 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.arrange import subscript
-from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
-from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
-from rbdsolve.problem.schema import Question
-from rbdsolve.report import steps as st
+from rbdsolve.model.summary.frame import frame_steps
+from rbdsolve.problem.schema import Frame, Question
 from rbdsolve.report.steps import Solution
-from rbdsolve.model.summary.present import present
 
 
 def frame_of(question: Question) -> str | None:
@@ -40,15 +35,19 @@ def frame_of(question: Question) -> str | None:
 def model_in_frame(question: Question, model: Model) -> Model:
     """The model as seen in the question's frame; refused where the scene still moves
     there."""
-    return _seen(model, frame_motion(model, model.problem.frame(frame_of(question))))
+    _, seen = _seen(model, model.problem.frame(frame_of(question)))
+    return seen
 
 
-def _seen(model: Model, motion: FrameMotion) -> Model:
+def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
+    """The frame's motion and the model as seen in it; refused where the scene still
+    depends on t there."""
+    motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
     if seen.depends_on_time():
-        raise UnsolvedError(f"in frame '{motion.frame.name}' the scene still depends on t (a body, a spring or "
+        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or "
                             "gravity moves in it): it has no relative equilibria there")
-    return seen
+    return motion, seen
 
 
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
@@ -56,36 +55,9 @@ def solve_in_frame(solve, question: Question, model: Model, options) -> Solution
     the ones that say what the frame adds."""
     frame = model.problem.frame(frame_of(question))
     refuse_loads_in_frame(model, frame.name)
-    motion = frame_motion(model, frame)
-    seen = _seen(model, motion)
+    motion, seen = _seen(model, frame)
     solution = solve(question, seen, options)
-    return replace(solution, steps=(*_frame_steps(seen, motion), *solution.steps))
-
-
-def _frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
-    frame = motion.frame
-    how = []
-    if frame.origin is not None:
-        how.append(f"its origin follows {frame.origin.text}")
-    if frame.axis is not None:
-        rate = seen.symbols.with_points(seen.points).scalar(frame.rate)
-        how.append(f"it turns at the rate {to_unicode(seen.readable(rate))} about {frame.axis.text}")
-    V = potential_energy(seen)
-    rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
-    legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
-    return [
-        st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
-                 "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
-                 "(centrifugal) and m a_O' · r' (the origin's acceleration)"
-                 + ("; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen)
-                    else ".")),
-        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows,
-                      Relation(sp.Symbol("V'"), present(V.total, seen))),
-    ]
-
-
-def _turning(seen: Model) -> bool:
-    return any(x.name.endswith(", turning") for x in seen.inertial)
+    return replace(solution, steps=(*frame_steps(seen, motion), *solution.steps))
 
 
 def spin_warnings(model: Model) -> tuple[str, ...]:

@@ -8,7 +8,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Meaning, Named
-from rbdsolve.report.tree import Path
+from rbdsolve.report.numbers import Path
 from rbdsolve.solvers.modes.answers import EachModesAnswers
 from rbdsolve.solvers.modes.steps import mode_labels
 from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_labels

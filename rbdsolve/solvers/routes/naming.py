@@ -11,7 +11,7 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.model.state import t
 from rbdsolve.report.numbers import Named
-from rbdsolve.report.tree import Path
+from rbdsolve.report.numbers import Path
 from rbdsolve.solvers.conditions.present_conditions import critical_names
 
 _RATE = re.compile(r"(d?dot)\((\w+)\)")

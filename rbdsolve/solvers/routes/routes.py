@@ -29,19 +29,17 @@ from typing import Callable
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.problem.quantities.quantity import ACCELERATION
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
-from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary, ProblemReport, Route, Solution
 from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.routes.checks import CheckFailed, Residuals, verify
 from rbdsolve.solvers.lagrange.frames import frame_of, model_in_frame, solve_in_frame
-from rbdsolve.model.values.numbers import numbers as numeric_lines
 from rbdsolve.solvers.routes.options import Options, RouteChoice
-from rbdsolve.model.summary.summary import coordinates_only, summarize_model, unturned
-from rbdsolve.model.values.units import answer_units, parameter_units
-from rbdsolve.model.values.values import not_finite, not_real, numbers
+from rbdsolve.model.summary.scene import swing_warnings, unused_warnings
+from rbdsolve.model.summary.summary import coordinates_only, summarize_model
+from rbdsolve.model.values.answers import valued
+from rbdsolve.model.values.units import parameter_units
 from rbdsolve.solvers.routes.needed import missing_for, missing_values, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
@@ -121,74 +119,33 @@ def later_check(module: str) -> Check:
 def answer(family: Family, question: Question, model: Model, options: Options) -> Solution:
     """Run one question's solver on the route asked for, each route within its own time
     budget; an unanswerable question, or one past its budget, becomes a Solution with an
-    error (exit code 1), not an exception, so the other questions still run."""
+    error (exit code 1), not an exception, so the other questions still run. The
+    answers' numbers, units and numeric block come from model/values/ in one call; the
+    warnings follow the route's: the scene's (``scene.py``, on the questions it bears
+    on), then those on answers without a number, then an estimate that is not finite."""
     start = time.perf_counter()
-    solution = _with_scene_warnings(question, model, _routed(family, question, model, options))
-    found = numbers(solution.answers, model.values) if model.values and solution.answers else None
-    values = found.tree if found is not None else {}
-    said = (not_finite(solution.answers, model.values), not_real(found)) if values else ()
-    solution = replace(solution, warnings=(*solution.warnings, *(x for x in said if x)))
-    units = answer_units(solution.answers, model, question.kind.value) if values else {}
-    lines = _numbers(family, question, solution, model, values, units) if values else ()
-    return replace(_finite_estimate(solution), values=values or {}, units=units, numbers=lines,
-                   seconds=time.perf_counter() - start)
-
-
-def _numbers(family: Family, question: Question, solution: Solution, model: Model, values, units) -> tuple:
-    """The numeric block: the values under the names the solution prints."""
-    if family.named is None:
-        return ()
-    return numeric_lines(family.named(question, solution.answers, model), solution.answers, values, units)
+    solution = _routed(family, question, model, options)
+    estimate, unsure = _finite_estimate(solution.error_estimate)
+    named = None if family.named is None else lambda: family.named(question, solution.answers, model)
+    found = valued(solution.answers, model, question.kind.value, named)
+    swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
+    warnings = (*solution.warnings, *swing, *unused_warnings(model), *found.warnings, *unsure)
+    return replace(solution, warnings=warnings, error_estimate=estimate, values=found.values, units=found.units,
+                   numbers=found.lines, seconds=time.perf_counter() - start)
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, QuestionKind.ENERGY,
                     QuestionKind.REACTIONS})
 
 
-def _with_scene_warnings(question: Question, model: Model, solution: Solution) -> Solution:
-    """What the scene itself makes doubtful, on the questions it bears on: a question
-    whose answer rests on T warns of bodies that swing without turning
-    (``summary.unturned``: their T lacks the rotational part), and every question of a
-    parameter declared and used nowhere (``unused_warnings``: a line left out,
-    such as ``gravity:``). The answers are unchanged."""
-    swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
-    return replace(solution, warnings=(*solution.warnings, *swing, *unused_warnings(model)))
-
-
-def swing_warnings(model: Model) -> tuple[str, ...]:
-    """The warnings for bodies that evidently swing without an angle (``Unturned`` with
-    a pivot), for every question that uses T."""
-    return tuple(u.text() for u in unturned(model) if u.pivot is not None)
-
-
-def unused_warnings(model: Model) -> tuple[str, ...]:
-    """A warning for each declared parameter that nothing in the scene or the questions
-    uses (``problem.usage``): no answer depends on it, so a line is most likely missing;
-    for an acceleration of gravity in a scene without ``gravity:``, the line to add."""
-    return tuple(_unused_text(p, model) for p in unused_parameters(model.problem))
-
-
-def _unused_text(parameter, model: Model) -> str:
-    name = parameter.name
-    text = f"parameter '{name}' is declared but used nowhere: no answer depends on it"
-    dimension = model.problem.dimension_map().get(name)
-    gravity = (name == "g" or "gravit" in parameter.description.lower() or dimension == ACCELERATION)
-    if gravity and model.gravity is None:
-        return (f"{text}, and the scene has no gravity (no 'gravity:' line), so V holds no weight; if the bodies "
-                f"are in gravity, add `gravity: [0, -{name}]` (y up; `[0, 0, -{name}]` in 3D)")
-    return f"{text} (is a line that uses it missing?)"
-
-
-def _finite_estimate(solution: Solution) -> Solution:
+def _finite_estimate(estimate: float | None) -> tuple[float | None, tuple[str, ...]]:
     """``error_estimate`` is a number or None (docs/json.md): a route whose estimate is not
     finite (a singular matrix in it) gives none, and a warning says so, rather than an
-    infinity that strict JSON cannot hold."""
-    estimate = solution.error_estimate
+    infinity that strict JSON cannot hold. The estimate to keep, and that warning."""
     if estimate is None or math.isfinite(estimate):
-        return solution
-    note = (f"no error estimate: the route's estimate is not finite ({estimate}), e.g. a singular Hessian "
-            "where the equilibria form a continuum")
-    return replace(solution, error_estimate=None, warnings=(*solution.warnings, note))
+        return estimate, ()
+    return None, (f"no error estimate: the route's estimate is not finite ({estimate}), e.g. a singular Hessian "
+                  "where the equilibria form a continuum",)
 
 
 def _routed(family: Family, question: Question, model: Model, options: Options) -> Solution:

@@ -1,4 +1,8 @@
-"""Walk an answers tree (frozen dataclasses, mappings, tuples, matrices) leaf by leaf."""
+"""Walk an answers tree (frozen dataclasses, mappings, tuples, matrices) leaf by leaf.
+
+A walk, not vocabulary: report/ holds the answers as data (and ``Path``, the address of
+an answer in them, report/numbers.py); its callers are here beside it (numbers and
+units of the answers), and above: render/ (JSON), teaching/ (keys, variants, grading)."""
 
 from __future__ import annotations
 
@@ -7,14 +11,13 @@ from typing import Callable, Iterator, Mapping
 
 import sympy as sp
 
+from rbdsolve.report.numbers import Path
+
 
 def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
     """The same tree as plain JSON-like data, with ``leaf`` applied to each leaf:
     dataclasses and mappings become dicts, tuples and matrices (nested) lists."""
     return map_paths(value, lambda _, x: leaf(x))
-
-
-Path = tuple[str | int, ...]  # keys and 0-based indices from the root of an answers tree
 
 
 def leaves(value: object, path: Path = (), floats: bool = True) -> Iterator[tuple[Path, object]]:

@@ -1,0 +1,47 @@
+"""The section a question asked in a moving frame opens with, after the model section:
+how the frame moves, what it adds to the scene (positions r' = Rᵀ (r − r_O), the
+potentials of the inertial forces: −½ m |ω × r'|² centrifugal, m a_O' · r' for the
+origin's acceleration, −½ ω·J' ω for a turning body), and the effective potential V'
+term by term, as the model section writes T and V (model/energies/frames.py builds the
+model as the frame sees it). Used by solvers/lagrange/frames.py."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rbdsolve.form.arrange import subscript
+from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import potential_energy
+from rbdsolve.model.energies.frames import FrameMotion
+from rbdsolve.model.summary.present import present
+from rbdsolve.report import steps as st
+
+
+def frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
+    """What the frame adds (r' = Rᵀ (r − r_O), the inertial forces' potentials), then
+    the effective potential V' term by term, read from the model as the frame sees it
+    (``seen``: model/energies/frames.py ``in_frame``)."""
+    frame = motion.frame
+    how = []
+    if frame.origin is not None:
+        how.append(f"its origin follows {frame.origin.text}")
+    if frame.axis is not None:
+        rate = seen.symbols.with_points(seen.points).scalar(frame.rate)
+        how.append(f"it turns at the rate {to_unicode(seen.readable(rate))} about {frame.axis.text}")
+    turning = "; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen) else "."
+    V = potential_energy(seen)
+    rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
+    total = Relation(sp.Symbol("V'"), present(V.total, seen))
+    legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
+    return [
+        st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
+                 "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
+                 "(centrifugal) and m a_O' · r' (the origin's acceleration)" + turning),
+        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows, total),
+    ]
+
+
+def _turning(seen: Model) -> bool:
+    return any(x.name.endswith(", turning") for x in seen.inertial)

@@ -1,0 +1,45 @@
+"""An answers tree at the parameter values, in one call: its numbers (``values.py``),
+the warnings on those that have none (not finite, not real), their SI units
+(``units.py``) and the numeric block's lines (``numbers.py``).
+
+Used by solvers/routes/routes.py on every answered question: the routes hand the
+answers down once and put what comes back on the Solution."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Iterable
+
+from rbdsolve.model.build import Model
+from rbdsolve.model.values.numbers import numbers as numeric_lines
+from rbdsolve.model.values.units import answer_units
+from rbdsolve.model.values.values import not_finite, not_real, numbers
+from rbdsolve.report.numbers import Named, Number
+
+
+@dataclass(frozen=True)
+class Valued:
+    """An answers tree's numbers (``{}`` where the model has no values, or nothing was
+    answered), the warnings on answers shown as null, their units (``{}`` likewise) and
+    the numeric block."""
+
+    values: object
+    warnings: tuple[str, ...]
+    units: object
+    lines: tuple[Number, ...]
+
+
+NOTHING = Valued({}, (), {}, ())
+
+
+def valued(answers: object, model: Model, kind: str, named: Callable[[], Iterable[Named]] | None) -> Valued:
+    """The answers of a ``kind`` question at the model's values. ``named``: which
+    answers the worked solution prints under which name (the family's, asked only
+    where there are numbers), or None for a family without a numeric block."""
+    found = numbers(answers, model.values) if model.values and answers else None
+    if found is None or not found.tree:
+        return NOTHING
+    said = (not_finite(answers, model.values), not_real(found))
+    units = answer_units(answers, model, kind)
+    lines = numeric_lines(named(), answers, found.tree, units) if named is not None else ()
+    return Valued(found.tree, tuple(x for x in said if x), units, lines)
