@@ -29,6 +29,14 @@ SEED = 43
 COUNT = 100
 # scene index -> the rbdsolve bug it meets (tests/oracles/neighbours_found/README.md)
 KNOWN_FAILURES: dict[int, str] = {}
+# (scene index, question) of the few scenes drawn from one family below (``solved``) -> what
+# the oracle cannot judge there (its own gap, not rbdsolve's); strict: the entry goes the day
+# the oracle learns it
+ORACLE_GAPS: dict[tuple[int, str], str] = {
+    (12, "reactions"): "a torsion spring on a particle's light rod: the oracle puts the spring's moment on the "
+                       "particle, which its guide along the rod cannot hold (rbdsolve's force through the rod is "
+                       "checked by hand in problems/forces/pendulum-light-rod-torsion and bob-on-offset-torsion-rod)",
+}
 
 
 @pytest.fixture(scope="module")
@@ -87,9 +95,12 @@ def test_the_oracle_catches_answers_one_percent_off(solved):
     """Tests that can fail: every answered question, its answers scaled by 1.01, is a mismatch."""
     tried = 0
     for scene, obj in solved:
-        assert judge(scene, obj).status in ("answered", "refused"), scene.name
+        gaps = {question for index, question in ORACLE_GAPS if index == scene.index}
+        verdict = judge(scene, obj).questions
+        assert all(q.status in ("answered", "refused") for q in verdict if q.kind not in gaps), scene.name
+        assert all(q.status == "oracle" for q in verdict if q.kind in gaps), f"{scene.name}: take it out of ORACLE_GAPS"
         for k, result in enumerate(obj["results"]):
-            if not result["ok"]:
+            if not result["ok"] or result["question"] in gaps:
                 continue
             tried += 1
             wrong = copy.deepcopy(obj)
