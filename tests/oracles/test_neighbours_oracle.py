@@ -28,10 +28,10 @@ PROBLEMS = sorted(p for p in ROOT.glob("*/*.yaml") if not p.name.endswith(".expe
 # by a contact whose placement has not been written by hand in from_problem.PLACED.
 UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-euler-angles", "p2-rod-impact",
               "p3-rolling-ring", "p5-accelerated-pendulum", "heavy-top", "rolling-coin", "rolling-cone",
-              "rod-on-turning-shaft", "rod-on-turning-arm", "gyroscope-gimbal", "sleeping-top",
+              "rod-on-turning-shaft", "rod-on-turning-arm", "gyroscope-gimbal", "sleeping-top", "hanging-top",
               # applied loads
               "cylinder-pulled", "disk-pulled-up-incline", "motor-on-pendulum", "rod-follower-force",
-              "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled",
+              "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled", "spool-pulled-off-top",
               "wheel-driven-by-couple",
               # bodies placed by a contact, no placement by hand yet
               "disk-in-turning-ring", "slab-on-drum-angle",
