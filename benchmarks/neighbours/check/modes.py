@@ -36,6 +36,8 @@ def _one(ctx: Context, entry: dict, result: dict, i: int, notes: list[str]) -> N
     if about is None:
         return
     entry = {**entry, "about": about}
+    if ctx.reader.truth(entry.get("exists_when", "True"), ctx.points[i]) is False:
+        return  # rbdsolve says this equilibrium does not exist at these values (checked by the equilibria)
     q0 = [_value(ctx, about[c], i) for c in coords]
     if any(isinstance(x, mpmath.mpc) for x in q0):
         return  # this equilibrium does not exist at these values

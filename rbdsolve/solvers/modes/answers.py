@@ -57,6 +57,7 @@ class ModesAnswers:
     critical: tuple[CriticalValue, ...] = ()  # where a λ changes sign
     forms: tuple[Form, ...] = ()  # per λ: a formula, or certified decimals (its ω, γ and shape alike)
     certified_digits: int | None = None  # the significant digits of every certified decimal
+    exists_when: sp.Basic = sp.true  # where the equilibrium it is about exists (as for equilibria; true: always)
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,7 @@ each vector scaled so its first nonzero entry is 1.
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Mapping
 
 import sympy as sp
@@ -144,7 +144,7 @@ def _at_each(model: Model, first: sp.Symbol | None) -> Solution:
             skipped.append(Skipped(about, str(exc)))
             steps.append(st.note(f"Not answered here: {exc}."))
             continue
-        found.append(answers)
+        found.append(replace(answers, exists_when=where))  # a script reads where it holds, as the text says
         steps += more
     if not found:
         raise UnsolvedError(none_answered(skipped, "among the roots of ∂V/∂q = 0"))

@@ -228,3 +228,42 @@ def test_two_masses_oscillate_in_both_modes_by_hand() -> None:
         got = sorted(float(sp.sympify(str(w), locals={"m1": m1, "m2": m2, "k": k}).subs(at)) ** 2
                      for w in a.frequencies)
         assert got == pytest.approx(sorted(float(x.subs(at)) for x in want), rel=1e-10)
+
+
+BEAD_ON_TURNING_ROD = """
+parameters: {m: mass, k: stiffness, a: length, Omega: rate}
+coordinates: [x]
+frames:
+  rod: {axis: z, rate: Omega}
+points:
+  O: "[0, 0, 0]"
+  P: (a + x)*[cos(Omega*t), sin(Omega*t), 0]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+springs:
+  s: {stiffness: k, between: [P, O], natural_length: a}
+questions:
+  - modes: {frame: rod, about: each}
+"""
+
+
+def test_modes_about_an_equilibrium_that_exists_somewhere_say_where():
+    """A bead on a rod turning at Ω, held by a spring of natural length a from the axis
+    (neighbours seed 5150, scene 45). By hand: V' = ½ k x² − ½ m Ω² (a + x)², so
+    x₀ = m Ω² a/(k − m Ω²), and the bead is on the spring's drawn side, a + x₀ =
+    a k/(k − m Ω²) > 0, only where Ω² < k/m. The modes' answers say so (a script reading
+    JSON has no other way to know): the condition holds at samples below √(k/m), not above."""
+    (entry,) = _modes(BEAD_ON_TURNING_ROD).modes
+    x0, exists_when = entry.about["x"], entry.exists_when
+    names = {str(x): x for x in x0.free_symbols | exists_when.free_symbols}
+    m, k, a, W = (names[n] for n in ("m", "k", "a", "Omega"))
+    assert sp.simplify(x0 - m * W**2 * a / (k - m * W**2)) == 0
+    rng = random.Random(5150)
+    for _ in range(8):
+        values = {m: sp.Rational(rng.randint(1, 9), 2), k: sp.Rational(rng.randint(10, 90), 3), a: sp.Rational(1, 2)}
+        critical = sp.sqrt(values[k] / values[m])
+        for rate, exists in ((critical * sp.Rational(9, 10), True), (critical * sp.Rational(11, 10), False)):
+            at = {**values, W: rate}
+            assert bool(exists_when.subs(at)) is exists
+            side = (a + x0).subs(at)  # the bead's distance from the axis, on the spring's side
+            assert bool(side > 0) is exists
