@@ -112,6 +112,11 @@ def unicode_name(name: str) -> str:
     return base + _subscript(head) + (comma + (GREEK.get(rest, rest)) if comma else "")
 
 
+def point_text(values) -> str:
+    """'θ = −2.89055, φ = 0': coordinates' names and numbers, as a heading names a point."""
+    return ", ".join(f"{unicode_name(str(q))} = {float_text(v)}" for q, v in values.items())
+
+
 def _subscript(sub: str) -> str:
     """₁, ₐ where every character has a subscript form (and the subscript is short or a
     number), else _sub: y_A, T_rod."""

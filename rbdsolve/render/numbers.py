@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, relation_text, unicode_name
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, point_text, relation_text
 from rbdsolve.report.numbers import Beside, Note, Number
 from rbdsolve.report.numbers import Path
 from rbdsolve.model.values.tree import label
@@ -31,8 +31,7 @@ def accuracy_lines(solution) -> list[str]:
     out = []
     for i, entry in enumerate(entries):
         lines = numeric_lines(entry, _part(_part(solution.units, "modes"), i), only=only)
-        about = ", ".join(f"{unicode_name(q)} = {float_text(v)}" for q, v in (entry.get("about") or {}).items())
-        out += [f"About {about}:", *("  " + line for line in lines)] if lines else []
+        out += [f"About {point_text(entry.get('about') or {})}:", *("  " + line for line in lines)] if lines else []
     return out
 
 

@@ -48,6 +48,7 @@ class FrameMotion:
     origin: sp.Matrix  # r_O(t), scene axes
     rotation: sp.Matrix  # R(t): F's axes -> scene axes
     omega: sp.Matrix  # ω = Ω n, constant
+    rate: sp.Expr = sp.Integer(0)  # Ω, as the file gives it (0: the frame does not turn)
 
     def relative(self, r: sp.Matrix) -> sp.Matrix:
         """r' = Rᵀ (r − r_O), each component tidied (cos²Ωt + sin²Ωt = 1)."""
@@ -85,7 +86,7 @@ def frame_motion(model: Model, frame: Frame) -> FrameMotion:
         raise InputError(f"frame '{frame.name}' turns about the zero vector", frame.axis.loc)
     n = axis / sp.sqrt(length)
     rate = names.scalar(frame.rate)
-    return FrameMotion(frame, origin, axis_rotation(n, rate * t), rate * n)
+    return FrameMotion(frame, origin, axis_rotation(n, rate * t), rate * n, rate)
 
 
 def inertial_potentials(name: str, m: sp.Expr, r: sp.Expr, motion: FrameMotion) -> list[EnergyTerm]:

@@ -28,8 +28,7 @@ def frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
     if frame.origin is not None:
         how.append(f"its origin follows {frame.origin.text}")
     if frame.axis is not None:
-        rate = seen.symbols.with_points(seen.points).scalar(frame.rate)
-        how.append(f"it turns at the rate {to_unicode(seen.readable(rate))} about {frame.axis.text}")
+        how.append(f"it turns at the rate {to_unicode(seen.readable(motion.rate))} about {frame.axis.text}")
     turning = "; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen) else "."
     V = potential_energy(seen)
     rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]

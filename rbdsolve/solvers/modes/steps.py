@@ -12,7 +12,7 @@ from rbdsolve.form.arrange import configuration, scaled_matrix, subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.form.factor import no_longer
 from rbdsolve.form.labels import Labels
-from rbdsolve.form.printers import float_text, unicode_name
+from rbdsolve.form.printers import point_text, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
@@ -182,8 +182,7 @@ def _conditioning_note(a: NumericModesAnswers) -> st.Step:
     the equilibrium where it has at most three coordinates (a question about each of
     several prints one such note per equilibrium, in one accuracy block)."""
     kappas = [k for k in a.conditions if k is not None]
-    about = ", ".join(f"{unicode_name(q)} = {float_text(v)}" for q, v in a.about.items())
-    text = f"Conditioning{f' about {about}' if len(a.about) <= 3 else ''}: κ₂(M) = {a.condition_M:.2g}"
+    text = f"Conditioning{f' about {point_text(a.about)}' if len(a.about) <= 3 else ''}: κ₂(M) = {a.condition_M:.2g}"
     if a.spread is not None:
         text += f", max |λ|/min |λ| = {a.spread:.2g}"
     if kappas:
