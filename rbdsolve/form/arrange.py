@@ -13,7 +13,8 @@ is the expression it was made from.
 
 from __future__ import annotations
 
-from typing import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Callable
 
 import sympy as sp
 
@@ -24,12 +25,31 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import collect_in, tidy
 
 
-def arranged(expr: sp.Expr, generators: Sequence[sp.Expr], coordinates: Sequence[sp.Expr],
-             scale_symbols: set[sp.Symbol], show: Callable[[sp.Expr], sp.Expr] = lambda e: e) -> Math:
+def _as_written(e: sp.Expr) -> sp.Expr:
+    return e
+
+
+@dataclass(frozen=True)
+class Reading:
+    """What an exam arranges a model's expressions by: the ``generators`` its terms are
+    monomials in (q̈, q̇), the ``coordinates`` that order them, the parameters whose
+    common scale is pulled out, and ``show``, how each coefficient and factor is written
+    (a coordinate as a function of time). A model gives its own (``Model.reading``)."""
+
+    generators: tuple[sp.Expr, ...]
+    coordinates: tuple[sp.Expr, ...]
+    scale_symbols: frozenset[sp.Symbol]
+    show: Callable[[sp.Expr], sp.Expr] = field(default=_as_written, compare=False)
+
+
+def arranged(expr: sp.Expr, reading: Reading) -> Math:
     """An energy or an equation's left side, its coefficients tidied already, as an exam
-    writes it: split into monomials in the ``generators`` (q̈, q̇), ordered
+    writes it: split into monomials in the reading's generators (q̈, q̇), ordered
     (``ordered_sum``), the parameters' common scale pulled out (``scaled_sum``); each
-    coefficient and factor passed through ``show`` (a coordinate as a function of time)."""
+    coefficient and factor passed through ``show`` (a coordinate as a function of time):
+    m r² [7/8 θ̇² + 1/4 cos(φ − θ) θ̇ φ̇ + 1/6 φ̇²]."""
+    generators, coordinates, scale_symbols, show = (reading.generators, reading.coordinates,
+                                                    set(reading.scale_symbols), reading.show)
     parts = collect_in(expr, list(generators), tidied=True)
     terms = [(show(c), tuple(show(f) for f in factors))
              for c, factors in ordered_sum(parts, list(generators), list(coordinates))]
@@ -48,23 +68,23 @@ def _groups_parameters(product: sp.Expr, parameters: set[sp.Symbol]) -> bool:
                for f in sp.Mul.make_args(product))
 
 
-def arranged_equation(expr: sp.Expr, generators: Sequence[sp.Expr], coordinates: Sequence[sp.Expr],
-                      scale_symbols: set[sp.Symbol], show: Callable[[sp.Expr], sp.Expr] = lambda e: e) -> Math:
+def arranged_equation(expr: sp.Expr, reading: Reading) -> Math:
     """An equation's left side in two groups, each with its own scale pulled out: the
     inertia terms (with q̈ or q̇), m r² […], and the rest, m g r […]; the rest factored
     as a whole, m l (g + ÿ_A) sin φ, where pulling its common factors out leaves a
-    coordinate among them (shorter than m l [g sin φ + sin φ ÿ_A])."""
+    coordinate among them (shorter than m l [g sin φ + sin φ ÿ_A]): m r² [7/4 θ̈ + …] + 2 g m r sin(θ)."""
+    generators, coordinates, show = reading.generators, reading.coordinates, reading.show
     parts = collect_in(expr, list(generators), tidied=True)
     moving = sp.Add(*[c * m for m, c in parts.items() if m != 1])
     still = parts.get(sp.Integer(1), sp.Integer(0))
-    groups = [arranged(moving, generators, coordinates, scale_symbols, show)] if moving != 0 else []
+    groups = [arranged(moving, reading)] if moving != 0 else []
     if still != 0:
         common = sp.factor_terms(expanded(still))
         pulled = [f for f in sp.Mul.make_args(common) if not f.is_Add]
         if len(pulled) < len(sp.Mul.make_args(common)) and any(f.has(*coordinates) for f in pulled):
             groups.append(show(common))
         else:
-            groups.append(arranged(still, generators, coordinates, scale_symbols, show))
+            groups.append(arranged(still, reading))
     return groups[0] if len(groups) == 1 else Terms(tuple(groups))
 
 

@@ -15,6 +15,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.form.arrange import Reading
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, decided_by, substitutions
@@ -186,6 +187,13 @@ class Model:
 
     def to_time(self, expr):
         return self.state.to_time(expr)
+
+    def reading(self) -> Reading:
+        """How the exam form arranges this model's energies and equations
+        (form/arrange.py): by the rates q̈, q̇, ordered by q, the parameters' common scale
+        pulled out, each coordinate shown as a function of time."""
+        return Reading((*self.qdd, *self.qd), tuple(self.q), frozenset(self.symbols.parameters.values()),
+                       self.to_time)
 
     def depends_on_time(self) -> bool:
         """Does the scene move by itself (t in a body's position or angle, a spring, gravity

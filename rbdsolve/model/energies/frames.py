@@ -175,15 +175,66 @@ def in_frame(model: Model, motion: FrameMotion) -> Model:
     bodies = tuple(_relative_body(b, motion) for b in model.bodies)
     springs = tuple(_relative_spring(s, model, motion) for s in model.springs)
     gravity = motion.in_axes(model.gravity) if model.gravity is not None else None
-    extra = [x for b, moved in zip(model.bodies, bodies)
-             for x in inertial_potentials(b.name, b.mass, moved.position, motion)]
-    coriolis = [_coriolis(moved, model, motion) for moved in bodies]
-    extra += [x for moved, (_, still) in zip(bodies, coriolis)
-              for x in (_turning_potential(moved, motion, model), still)]
     points = {name: motion.relative(r) for name, r in model.points.items()}
+    origin = motion.in_axes(sp.diff(motion.origin, t, 2))
+    settled = [_raw_terms(moved, model, motion, origin).settled(model.q, model.qd) for moved in bodies]
+    extra = [x for terms in settled for x in terms.inertial]
+    extra += [x for terms in settled for x in (terms.turning, terms.still)]
     return replace(model, points=points, bodies=bodies, springs=springs, gravity=gravity,
                    inertial=tuple(x for x in extra if x.value != 0),
-                   gyroscopic=tuple(x for x, _ in coriolis if x.value != 0))
+                   gyroscopic=tuple(terms.gyroscopic for terms in settled if terms.gyroscopic.value != 0))
+
+
+@dataclass(frozen=True)
+class _Settled:
+    """A body's terms in F, tidied: its inertial potentials (centrifugal, the origin's
+    acceleration), the centrifugal potential of its turning, the gyroscopic term and the
+    gyroscopic term's part without rates (as a potential)."""
+
+    inertial: tuple[EnergyTerm, EnergyTerm]
+    turning: EnergyTerm
+    gyroscopic: EnergyTerm
+    still: EnergyTerm
+
+
+@dataclass(frozen=True)
+class _RawTerms:
+    """A body's terms in F as built, before tidying (``in_frame`` first builds them from
+    the tidied positions r', then tidies them all): −½ m |ω × r'|², m a' · r',
+    m v'·(ω_F × r'), and (ω_Fᵀ J' ω', ½ ω_Fᵀ J' ω_F), J' the inertia in F's axes."""
+
+    name: str
+    centrifugal: sp.Expr
+    translation: sp.Expr
+    coriolis: sp.Expr
+    turning: sp.Expr
+    turning_energy: sp.Expr
+
+    def settled(self, q, qd) -> _Settled:
+        """L's terms linear in the relative rates, m v'·(ω_F × r') + ω_Fᵀ J' ω', are the
+        model's gyroscopic term, their part without rates a potential (negated);
+        −½ ω_Fᵀ J' ω_F is kept where it depends on the coordinates (a constant changes
+        nothing)."""
+        inertial = (EnergyTerm(f"centrifugal on {self.name}", tidy(self.centrifugal)),
+                    EnergyTerm(f"inertial force on {self.name}", tidy(self.translation)))
+        linear = tidy(self.coriolis + tidy(self.turning))
+        still = tidy(linear.xreplace({x: 0 for x in qd}))
+        held = still if still.free_symbols & set(q) else sp.Integer(0)
+        energy = tidy(self.turning_energy)
+        turning = energy if energy.free_symbols & set(q) else sp.Integer(0)
+        return _Settled(inertial, EnergyTerm(f"centrifugal on {self.name}, turning", tidy(-turning)),
+                        EnergyTerm(f"{self.name}, gyroscopic", tidy(linear - still)),
+                        EnergyTerm(f"gyroscopic potential on {self.name}", tidy(-held)))
+
+
+def _raw_terms(body: RigidBody, model: Model, motion: FrameMotion, origin: sp.Matrix) -> _RawTerms:
+    """A body's terms in F, built from its relative position r' (``_RawTerms``), where
+    ``origin`` is a' = Rᵀ a_O."""
+    m, r, omega = body.mass, body.position, motion.omega
+    v = model.state.d_dt(r)
+    turning, energy = _relative_rotational_energy(body, motion, model)
+    return _RawTerms(body.name, -m * omega.cross(r).dot(omega.cross(r)) / 2, m * origin.dot(r),
+                     m * v.dot(omega.cross(r)), turning, energy)
 
 
 def _relative_body(body: RigidBody, motion: FrameMotion) -> RigidBody:
@@ -212,31 +263,11 @@ def _relative_turns(turns, motion: FrameMotion):
 
 
 def _relative_rotational_energy(body: RigidBody, motion: FrameMotion, model: Model) -> tuple[sp.Expr, sp.Expr]:
-    """(ω_Fᵀ J' ω', ½ ω_Fᵀ J' ω_F) of a body seen in F, J' its inertia in F's axes."""
+    """(ω_Fᵀ J' ω', ½ ω_Fᵀ J' ω_F) of a body seen in F, J' its inertia in F's axes, as built."""
     if body.inertia == sp.zeros(3, 3) or motion.omega == sp.zeros(3, 1):
         return sp.Integer(0), sp.Integer(0)
     J, w = body.inertia_in_scene(), motion.omega
-    return tidy((w.T * J * body.angular_velocity(model.state))[0, 0]), tidy((w.T * J * w)[0, 0] / 2)
-
-
-def _turning_potential(body: RigidBody, motion: FrameMotion, model: Model) -> EnergyTerm:
-    """−½ ω_Fᵀ J' ω_F where it depends on the coordinates (a constant changes nothing)."""
-    _, energy = _relative_rotational_energy(body, motion, model)
-    held = energy if energy.free_symbols & set(model.q) else sp.Integer(0)
-    return EnergyTerm(f"centrifugal on {body.name}, turning", tidy(-held))
-
-
-def _coriolis(body: RigidBody, model: Model, motion: FrameMotion) -> tuple[EnergyTerm, EnergyTerm]:
-    """L's terms linear in the relative rates, m v'·(ω_F × r') + ω_Fᵀ J' ω', as the
-    model's gyroscopic term, and their part without rates as a potential (negated)."""
-    r, omega = body.position, motion.omega
-    v = model.state.d_dt(r)
-    turning, _ = _relative_rotational_energy(body, motion, model)
-    linear = tidy(body.mass * v.dot(omega.cross(r)) + turning)
-    still = tidy(linear.xreplace({x: 0 for x in model.qd}))
-    held = still if still.free_symbols & set(model.q) else sp.Integer(0)
-    return (EnergyTerm(f"{body.name}, gyroscopic", tidy(linear - still)),
-            EnergyTerm(f"gyroscopic potential on {body.name}", tidy(-held)))
+    return (w.T * J * body.angular_velocity(model.state))[0, 0], (w.T * J * w)[0, 0] / 2
 
 
 def _relative_spring(spring: SpringModel, model: Model, motion: FrameMotion) -> SpringModel:

@@ -1,6 +1,6 @@
 """The model's summary: the model section every solution opens with (coordinates, T and
-V term by term, with their common scale; a large model's energies as matrices), a
-model's expressions in the exam form, the section a question asked in a moving frame
+V term by term, with their common scale, arranged by ``Model.reading``; a large model's
+energies as matrices), the section a question asked in a moving frame
 opens with (``frame.py``), and what the scene itself makes doubtful (a body that swings
 without an angle, a parameter used nowhere: ``scene.py``).
 

@@ -9,13 +9,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import subscript
+from rbdsolve.form.arrange import arranged, subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.model.energies.frames import FrameMotion
-from rbdsolve.model.summary.present import present
 from rbdsolve.report import steps as st
 
 
@@ -30,9 +29,9 @@ def frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
     if frame.axis is not None:
         how.append(f"it turns at the rate {to_unicode(seen.readable(motion.rate))} about {frame.axis.text}")
     turning = "; a body that turns adds −½ ω·J' ω, J' its inertia in the frame's axes." if _turning(seen) else "."
-    V = potential_energy(seen)
-    rows = [Relation(sp.Symbol(f"V_{i}"), present(term.value, seen)) for i, term in enumerate(V.terms, start=1)]
-    total = Relation(sp.Symbol("V'"), present(V.total, seen))
+    V, reading = potential_energy(seen), seen.reading()
+    rows = [Relation(sp.Symbol(f"V_{i}"), arranged(term.value, reading)) for i, term in enumerate(V.terms, start=1)]
+    total = Relation(sp.Symbol("V'"), arranged(V.total, reading))
     legend = ", ".join(f"V{subscript(i)} {term.name}" for i, term in enumerate(V.terms, start=1))
     return [
         st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "

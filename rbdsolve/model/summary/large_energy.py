@@ -16,11 +16,10 @@ from typing import Callable
 
 import sympy as sp
 
-from rbdsolve.form.arrange import scaled_matrix
+from rbdsolve.form.arrange import arranged, scaled_matrix
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import Energy, hessian, jacobians
-from rbdsolve.model.summary.present import present
 from rbdsolve.report import steps as st
 
 SCAN_TERMS = 12  # an energy with more terms than this is shown as a matrix, or as its total alone
@@ -61,13 +60,13 @@ def kinetic_steps(text: str, products: int, M: sp.Matrix, model: Model) -> list[
 
 def potential_steps(text: str, energy: Energy, model: Model) -> list[st.Step]:
     """V = ½ qᵀ K q with K written out when V is a quadratic form in q; else V in one
-    sum (arranged: ``present``), its per-body parts left out."""
-    symbols = set(model.symbols.parameters.values())
+    sum (form/arrange.py ``arranged``), its per-body parts left out."""
+    symbols, reading = set(model.symbols.parameters.values()), model.reading()
     if _quadratic_form(energy.total, model.q):
         K = in_time(hessian(energy.total, tuple(model.q)), model.to_time)
         return [st.definition(f"{text}. V is a quadratic form in q, written as a matrix: V = ½ qᵀ K q with "
                               "K = ∂²V/∂q∂q:", Relation(sp.Symbol("K"), scaled_matrix(K, symbols)))]
-    return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), present(energy.total, model)))]
+    return [st.definition(f"{text}; summed:", Relation(sp.Symbol("V"), arranged(energy.total, reading)))]
 
 
 def in_time(matrix: sp.Matrix, to_time: Callable[[sp.Expr], sp.Expr]) -> sp.ImmutableMatrix:

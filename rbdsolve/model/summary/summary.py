@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import subscript
+from rbdsolve.form.arrange import arranged, subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
@@ -15,7 +15,6 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import ModelSummary
 from rbdsolve.model.summary.large_energy import (SCAN_TERMS, kinetic_from_matrix, kinetic_steps,
                                                   potential_steps, quadratic_products, terms)
-from rbdsolve.model.summary.present import present
 from rbdsolve.model.summary.scene import scene_notes
 
 
@@ -139,12 +138,13 @@ def _implied_notes(c) -> list[st.Step]:
 def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st.Step]:
     if not energy.terms:
         return [st.definition(text, Relation(sp.Symbol(name), sp.Integer(0)))]
+    reading = model.reading()
     parts = [
-        Relation(sp.Symbol(f"{name}_{i}"), present(term.value, model))
+        Relation(sp.Symbol(f"{name}_{i}"), arranged(term.value, reading))
         for i, term in enumerate(energy.terms, start=1)
     ]
     legend = ", ".join(f"{name}{subscript(i)} {term.name}" for i, term in enumerate(energy.terms, start=1))
-    total = present(energy.total, model)
+    total = arranged(energy.total, reading)
     if len(parts) == 1:
         return [st.definition(f"{text}; {legend}.", Relation(sp.Symbol(name), total))]
     sum_name = sp.Add(*[p.lhs for p in parts], evaluate=False)

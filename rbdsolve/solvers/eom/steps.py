@@ -7,19 +7,20 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import subscript
+from rbdsolve.form.arrange import arranged, arranged_equation, subscript
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.eom.answers import NumericEomAnswers
 from rbdsolve.solvers.lagrange.accelerations import state_step
-from rbdsolve.model.summary.present import present, present_equation
 
 
 def frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: bool) -> list[st.Step]:
+    reading = model.reading()
+
     def rows(terms, name):
-        return [Relation(sp.Symbol(f"{name}_{i}"), present(x.value, model)) for i, x in enumerate(terms, start=1)]
+        return [Relation(sp.Symbol(f"{name}_{i}"), arranged(x.value, reading)) for i, x in enumerate(terms, start=1)]
 
     legend_T = ", ".join(f"T'{subscript(i)} {x.name}" for i, x in enumerate(seen.kinetic, start=1))
     legend_V = ", ".join(f"V'{subscript(i)} {x.name}" for i, x in enumerate(seen.potential, start=1))
@@ -31,9 +32,9 @@ def frame_steps(model: Model, frame, seen, primed, agree: bool, derivative: bool
                       *rows(seen.kinetic, "T'")),
         st.definition(f"Potentials, gravity and the inertial forces included; {legend_V}:",
                       *rows(seen.potential, "V'")),
-        st.equation(f"The Lagrangian in frame {frame.name}:", Relation(sp.Symbol("L'"), present(seen.L, model))),
+        st.equation(f"The Lagrangian in frame {frame.name}:", Relation(sp.Symbol("L'"), arranged(seen.L, reading))),
         st.result(f"Lagrange's equations in frame {frame.name}:",
-                  *[Relation(present_equation(E, model), sp.Integer(0)) for E in primed]),
+                  *[Relation(arranged_equation(E, reading), sp.Integer(0)) for E in primed]),
         st.result(f"{checks}, with", F) if derivative else st.note(f"{checks}.", F),
     ]
 
@@ -56,8 +57,9 @@ def numeric_steps(answers: NumericEomAnswers, model: Model, error: float,
 
 
 def lagrange_step(equations: tuple[sp.Expr, ...], model: Model) -> st.Step:
+    reading = model.reading()
     return st.result("Lagrange's equations, d/dt(∂L/∂q̇) − ∂L/∂q = 0 with L = T − V, one for each "
-                     "coordinate in turn:", *[Relation(present_equation(E, model), sp.Integer(0)) for E in equations])
+                     "coordinate in turn:", *[Relation(arranged_equation(E, reading), sp.Integer(0)) for E in equations])
 
 
 def solved_step(solved: tuple[sp.Expr, ...], model: Model) -> st.Step:

@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rbdsolve.form.arrange import along_axes
+from rbdsolve.form.arrange import along_axes, arranged
 from rbdsolve.form.display import Math, Relation
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
-from rbdsolve.model.summary.present import present
 from rbdsolve.solvers.kinematics.answers import KinematicsAnswers, NumericKinematicsAnswers
 
 
@@ -21,7 +20,8 @@ def _row(vector) -> sp.ImmutableMatrix:
 def _vector(vector, model: Model) -> Math:
     """Along the scene's axes, each component collected in the rates as Lagrange's
     equations are (q̈, then q̇²…): a_B = (… θ̈ − … θ̇²) eₓ + …"""
-    return along_axes(vector, lambda x: present(tidy(x), model))
+    reading = model.reading()
+    return along_axes(vector, lambda x: arranged(tidy(x), reading))
 
 
 def _state_symbol(key: str, model: Model) -> sp.Expr:
