@@ -121,6 +121,22 @@ def held_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...]:
     return tuple(sides)
 
 
+def crushed_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ...]:
+    """The sides of ``held_sides`` whose zero puts a spring with a natural length l₀ ≠ 0
+    at zero length (its stretch s·u − l₀ has a part other than its one |u|): there it
+    pushes with k l₀ along no defined direction, no equilibrium
+    (solvers/equilibria/zero_length.py), so such a side must be > 0, not ≥ 0. The
+    elastic pendulum's r = L − m g/k at θ = π exists where k > m g/L, not at k = m g/L."""
+    sides = []
+    for spring in springs:
+        signed = [x for x in spring.lengths if x.sign is not None]
+        if len(spring.lengths) == 1 and signed and sp.expand(spring.stretch - signed[0].sign * signed[0].inside) != 0:
+            side = sp.factor(signed[0].sign * signed[0].inside.xreplace(dict(at)))
+            if side not in sides:
+                sides.append(side)
+    return tuple(sides)
+
+
 def polar_distances(d: sp.Matrix, q: tuple[sp.Symbol, ...]) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:
     """{r: (0, ∞)} where a spring's end-to-end vector is d = r e(θ), e a unit vector of
     the other coordinates with e(θ + π) = −e(θ) for one of them: r is a polar distance

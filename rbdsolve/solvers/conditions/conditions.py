@@ -250,21 +250,23 @@ class Existence:
 
 
 def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr] = (),
-                first: sp.Symbol | None = None) -> Existence | None:
-    """Where ``values`` are real (``real_where``) and ``nonnegative`` ones are ≥ 0 (the
-    value of a square, ω₀²): each condition the assumptions do not decide, piece by
-    piece, holds on its positive pieces, a boundary included where the condition is
-    finite there (ω² ≥ g/R, but R > r where 1/(R − r) is); None where one cannot be
+                first: sp.Symbol | None = None, positive: Iterable[sp.Expr] = ()) -> Existence | None:
+    """Where ``values`` are real (``real_where``), ``nonnegative`` ones are ≥ 0 (the
+    value of a square, ω₀²) and ``positive`` ones > 0: each condition the assumptions do
+    not decide, piece by piece, holds on its positive pieces, a boundary included where
+    the condition is finite there and may be zero (ω² ≥ g/R, but R > r where 1/(R − r)
+    is, and k > m g/L where a spring would be at zero length); None where one cannot be
     split."""
     exists, criticals = sp.true, []
-    for condition in [*real_where(values), *nonnegative]:
+    strict = [tidy(x) for x in positive]
+    for condition in dict.fromkeys([*real_where(values), *nonnegative, *positive]):
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
         found = partition(condition, model, first)
         if found is None:
             return None
-        closed = {c.value: _finite_at(condition, c) for c in found.criticals}
+        closed = {c.value: condition not in strict and _finite_at(condition, c) for c in found.criticals}
         held = [piece.when(closed.get(piece.low, False), closed.get(piece.high, False))
                 for piece in found.pieces if piece.sign > 0]
         exists = sp.And(exists, sp.Or(*held))

@@ -21,10 +21,10 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.model.energies.spring_length import held_sides
+from rbdsolve.model.energies.spring_length import crushed_sides, held_sides
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
-from rbdsolve.solvers.conditions.conditions import (Critical, Piece, at_samples, changes, existing, exists_when, partition,
+from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
@@ -38,6 +38,13 @@ def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
     return [*real_where(at.values()), *held_sides(model.springs, at)]
 
 
+def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> Existence | None:
+    """Where the solution ``at`` of ∂V/∂q = 0 is an equilibrium (``existing_where`` ≥ 0,
+    and > 0 where zero would put a spring with a natural length at zero length:
+    ``crushed_sides``), solved for ``first`` where it can; None where it cannot be split."""
+    return exists_when((), model, existing_where(at, model), first=first, positive=crushed_sides(model.springs, at))
+
+
 def with_cases(found: Equilibrium, model: Model, at: Mapping,
                first: sp.Symbol | None = None) -> tuple[Equilibrium, tuple[Critical, ...]]:
     """The equilibrium with ``exists_when`` and ``stability_cases`` where they depend on
@@ -45,7 +52,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     and the critical values used, in ``first`` where it can (a question's ``for:``).
     Found from the symbols, whatever values are given: with values the stability itself
     is decided by them, and the cases say where that holds."""
-    existence = exists_when((), model, existing_where(at, model), first=first)
+    existence = existence_where(at, model, first)
     if existence is None:
         return found, ()
     found = replace(found, exists_when=existence.condition)

@@ -16,10 +16,10 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.spring_length import held_sides
-from rbdsolve.solvers.equilibria.cases import existing_where
+from rbdsolve.solvers.equilibria.cases import existence_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
-from rbdsolve.solvers.conditions.conditions import changes, exists_when, existing, partition, what_decides
+from rbdsolve.solvers.conditions.conditions import changes, existing, partition, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
 from rbdsolve.solvers.conditions.signs import Inertia, Undecided, nonzero_where_defined, sign_of, sign_where_defined
 
@@ -27,7 +27,7 @@ from rbdsolve.solvers.conditions.signs import Inertia, Undecided, nonzero_where_
 def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
     """Where the equilibrium ``at`` is real (θ = acos(g/(R Ω²)) only where Ω ≥ √(g/R)),
     solved for ``first`` where it can; true where it always is, or cannot be split."""
-    found = exists_when((), model, existing_where(at, model), first=first)
+    found = existence_where(at, model, first)
     return found.condition if found else sp.true
 
 

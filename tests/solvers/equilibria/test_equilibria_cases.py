@@ -190,3 +190,39 @@ def test_a_case_the_assumptions_rule_out_is_no_case() -> None:
         R, r, m, g = (rng.uniform(0.1, 5) for _ in range(4))
         if R**2 > r**2:
             assert m * g * (R - r) > 0
+
+
+# The elastic pendulum (problems/forces/elastic-pendulum.yaml), by hand: V = ½ k (r − L)²
+# − m g r cos θ with r ≥ 0 a polar distance; θ = π, r = L − m g/k is an equilibrium only
+# where r > 0, i.e. k > k_c = m g/L. At k = k_c it is r = 0, the spring at zero length
+# pushing with k L along no direction: no equilibrium (V has a cone at P = O), so the
+# printed condition is strict. Sampled below k_c, at it and above it (m = 1, g = 10,
+# L = 1: k_c = 10).
+ELASTIC = (PROBLEMS / "forces" / "elastic-pendulum.yaml").read_text()
+
+
+def test_the_elastic_pendulums_inverted_equilibrium_exists_where_k_exceeds_k_c() -> None:
+    report = solve_problem(build_model(load_text(ELASTIC, "elastic.yaml")))
+    (solution,) = report.solutions
+    (inverted,) = [eq for eq in solution.answers.equilibria if eq.at["theta"] == sp.pi]
+    assert isinstance(inverted.exists_when, sp.StrictGreaterThan)
+    k, g, m, L = (sp.Symbol(n, positive=True) for n in ("k", "g", "m", "L"))
+    condition = _elastic_names(inverted.exists_when)
+    for value, held in ((8, False), (10, False), (sp.Rational(101, 10), True), (12, True)):
+        assert bool(condition.subs({k: value, g: 10, m: 1, L: 1})) is held
+
+
+@pytest.mark.parametrize("k, listed", [(8, {0}), (10, {0}), (12, {0, sp.pi})])
+def test_the_elastic_pendulum_with_values_lists_the_inverted_one_only_past_k_c(k, listed) -> None:
+    text = ELASTIC + f"values: {{m: 1, g: 10, L: 1, k: {k}}}\n"
+    report = solve_problem(build_model(load_text(text, "elastic.yaml")))
+    (solution,) = report.solutions
+    assert solution.solved, solution.error
+    existing = {eq.at["theta"] for eq in solution.answers.equilibria
+                if bool(_elastic_names(eq.exists_when).subs({sp.Symbol(n, positive=True): v for n, v in
+                                                             (("k", k), ("g", 10), ("m", 1), ("L", 1))}))}
+    assert existing == listed
+
+
+def _elastic_names(expr: sp.Basic) -> sp.Basic:
+    return sp.sympify(sp.parse_expr(str(expr), local_dict={n: sp.Symbol(n, positive=True) for n in ("k", "g", "m", "L")}))
