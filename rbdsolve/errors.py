@@ -129,8 +129,13 @@ class InternalError(RbdError):
         super().__init__(message)
 
 
+NUMERIC_REMEDY = "give values for the parameters to solve it numerically"  # where only the exact route cannot
+
+
 class UnsolvedError(RbdError):
-    """A well-formed question that rbdsolve could not answer. Exit code 1."""
+    """A well-formed question that rbdsolve could not answer. Exit code 1. A reason that
+    ends in ``; `` + NUMERIC_REMEDY is one the numeric route would not share: on auto
+    with the values given, the numeric route's note quotes the reason without it."""
 
     exit_code = ExitCode.UNSOLVED
 

@@ -16,7 +16,7 @@ import sympy as sp
 from sympy.polys.polyerrors import PolynomialError, UnsolvableFactorError
 from sympy.solvers.polysys import SolveFailed, solve_poly_system
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
 
 
 def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str) -> list[dict]:
@@ -26,14 +26,12 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     degree = _unreadable_degree(system, symbols)
     if degree:
         raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}: its roots "
-                            f"in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes; give values "
-                            f"for the parameters to solve it numerically")
+                            f"in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes; {NUMERIC_REMEDY}")
     try:
         found = solve_poly_system(system, *symbols, strict=True)
     except UnsolvableFactorError:
         raise UnsolvedError(f"{what} reduce to a polynomial with a factor whose roots have no closed form "
-                            f"(in radicals): an exact list would leave solutions out; give values for "
-                            f"the parameters to solve it numerically") from None
+                            f"(in radicals): an exact list would leave solutions out; {NUMERIC_REMEDY}") from None
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]

@@ -27,7 +27,7 @@ import time
 from dataclasses import dataclass, replace
 from typing import Callable
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Problem, Question, QuestionKind
 from rbdsolve.report import steps as st
@@ -181,7 +181,8 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
                         " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
-    note = f"the exact route could not answer ({exact.error}); these are the numeric route's answers"
+    reason = exact.error.removesuffix(f"; {NUMERIC_REMEDY}")  # the values are given: the numeric route has answered
+    note = f"the exact route could not answer ({reason}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
 
 

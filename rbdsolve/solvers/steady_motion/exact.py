@@ -32,7 +32,7 @@ import random
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question, SteadyMotionOptions
@@ -280,8 +280,7 @@ def _require_low_degree(system: list[sp.Expr], symbols: list) -> None:
     eliminated = sp.Poly(sp.resultant(relation, circle, c), s)
     if eliminated.degree() > MAX_DEGREE and eliminated.free_symbols - {s}:
         raise UnsolvedError(f"the relation is a polynomial of degree {eliminated.degree()} in the sine of the "
-                            "angle asked for, with symbolic coefficients: no compact closed form; give values "
-                            "for the parameters to solve it numerically")
+                            f"angle asked for, with symbolic coefficients: no compact closed form; {NUMERIC_REMEDY}")
 
 
 def _on_unit_circle(relations, unknowns):

@@ -450,3 +450,22 @@ def test_one_reason_both_routes_give_is_said_once(monkeypatch) -> None:
     monkeypatch.setitem(solvers.FAMILIES, QuestionKind.EQUILIBRIA, solvers.Family(refuse, refuse))
     (solution,) = solve_problem(build_model(_problem(PENDULUM)), Options()).solutions
     assert solution.error == "the scene depends explicitly on time t (the exact and the numeric route alike)"
+
+
+# A rod hinged to a turning arm (problems/frames/rod-on-turning-arm.yaml): its equilibria
+# reduce to an irreducible quartic, which the exact route refuses with the remedy "give
+# values … numerically". On auto with the values given, the numeric route answers, and
+# its note quotes the exact route's reason without that remedy (it would read as if the
+# values were missing); on the exact route alone the remedy stays.
+def test_the_numeric_routes_note_does_not_ask_for_values_it_was_given() -> None:
+    from rbdsolve.errors import NUMERIC_REMEDY
+
+    path = PROBLEMS / "frames" / "rod-on-turning-arm.yaml"
+    auto = solve_file(load_file(path))
+    (equilibria,) = [s for s in auto.solutions if s.question == "equilibria"]
+    assert equilibria.solved and equilibria.route.value == "numeric"
+    (note,) = [w for w in equilibria.warnings if w.startswith("the exact route could not answer")]
+    assert "degree 4" in note and NUMERIC_REMEDY not in note
+    exact = solve_file(load_file(path), Options(route=RouteChoice.EXACT))
+    (refused,) = [s for s in exact.solutions if s.question == "equilibria"]
+    assert not refused.solved and refused.error.endswith(f"; {NUMERIC_REMEDY}")
