@@ -112,6 +112,21 @@ def unicode_name(name: str) -> str:
     return base + _subscript(head) + (comma + (GREEK.get(rest, rest)) if comma else "")
 
 
+PROSE_NAME = re.compile(r"(?<![\w'])([A-Za-z])_([A-Za-z0-9]{1,3})(?!\w)")  # v_C, J_G, r_O in prose
+
+
+def prose_pieces(text: str) -> list[tuple[str, str, str]]:
+    """Prose split where it writes a subscripted name as unicode cannot (v_C, a_O: no
+    subscript capitals): (text before, base, subscript) for each such name, then (the rest,
+    '', ''), so a typeset page writes v<sub>C</sub> or $v_{C}$. A name in quotes (body
+    'rod_1') is the file's own and stays as written."""
+    pieces, at = [], 0
+    for match in PROSE_NAME.finditer(text):
+        pieces.append((text[at:match.start()], match.group(1), match.group(2)))
+        at = match.end()
+    return [*pieces, (text[at:], "", "")]
+
+
 def point_text(values) -> str:
     """'θ = −2.89055, φ = 0': coordinates' names and numbers, as a heading names a point."""
     return ", ".join(f"{unicode_name(str(q))} = {float_text(v)}" for q, v in values.items())

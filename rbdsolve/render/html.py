@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 
 from rbdsolve.form.mathml import relation_mathml
+from rbdsolve.form.printers import prose_pieces
 from rbdsolve.render.numbers import accuracy_lines, groups, route_text, tail_text
 from rbdsolve.report.key import AnswerKey, KeyEntry, Picture
 from rbdsolve.report.steps import ProblemReport, Solution, Step, StepKind, accuracy_steps, answer_steps
@@ -101,7 +102,7 @@ def _report(report: ProblemReport, figures: tuple[str, ...]) -> list[str]:
 def _solution(number: int, s: Solution) -> list[str]:
     out = [f'<h3>Question {number}: {_e(s.question)} <span class="route">({_e(route_text(s))})</span></h3>']
     out += [line for step in answer_steps(s.steps) for line in _step(step)]
-    out += [f'<p class="warning"><b>Warning:</b> {_e(w)}</p>' for w in s.warnings]
+    out += [f'<p class="warning"><b>Warning:</b> {_prose(w)}</p>' for w in s.warnings]
     if s.error:
         out.append(f'<p class="error"><b>Could not answer:</b> {_e(s.error)}</p>')
     out += _numbers(s)
@@ -129,7 +130,8 @@ def _numbers(s: Solution) -> list[str]:
 def _step(step: Step) -> list[str]:
     out = []
     if step.text:
-        out.append(f'<p class="note">{_e(step.text)}</p>' if step.kind is StepKind.NOTE else f"<p>{_e(step.text)}</p>")
+        out.append(f'<p class="note">{_prose(step.text)}</p>' if step.kind is StepKind.NOTE
+                   else f"<p>{_prose(step.text)}</p>")
     for rel in step.math:
         math = relation_mathml(rel)
         out.append(f'<div class="math"><span class="result">{math}</span></div>' if step.kind is StepKind.RESULT
@@ -143,6 +145,12 @@ def _figure(picture: Picture, folder: Path) -> str:
     data = base64.b64encode(path.read_bytes()).decode("ascii")
     return (f'<figure><img src="data:image/{kind};base64,{data}" alt="{_e(picture.caption)}"/>'
             f"<figcaption>{_e(picture.caption)}</figcaption></figure>")
+
+
+def _prose(value: str) -> str:
+    """A step's text, escaped, its subscripted names (v_C) set as subscripts."""
+    return "".join(_e(before) + (f"<i>{_e(base)}</i><sub>{_e(sub)}</sub>" if base else "")
+                   for before, base, sub in prose_pieces(value))
 
 
 def _e(value: str) -> str:

@@ -5,8 +5,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rbdsolve.form.printers import relation_latex
-from rbdsolve.form.printers import GREEK
+from rbdsolve.form.printers import GREEK, prose_pieces, relation_latex
 from rbdsolve.render.numbers import accuracy_lines, groups, tail_text, unit_text, value_latex
 from rbdsolve.report.key import AnswerKey, Picture
 from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps, answer_steps
@@ -67,10 +66,20 @@ def text(value: str) -> str:
     return re.sub(r"\\ensuremath\{([^{}]*)\}\\ensuremath\{", r"\\ensuremath{\1", "".join(out))
 
 
+def prose(value: str) -> str:
+    """A step's text (``text``), its subscripted names (v_C) set in math: $v_{C}$."""
+    return "".join(text(before) + (_subscripted(base, sub) if base else "") for before, base, sub in prose_pieces(value))
+
+
+def _subscripted(base: str, sub: str) -> str:
+    sub = sub if len(sub) == 1 else "\\mathrm{" + sub + "}"
+    return "\\ensuremath{" + base + "_{" + sub + "}}"
+
+
 def _step(step: Step) -> list[str]:
     out = []
     if step.text:
-        out.append(f"\\emph{{{text(step.text)}}}" if step.kind is StepKind.NOTE else text(step.text))
+        out.append(f"\\emph{{{prose(step.text)}}}" if step.kind is StepKind.NOTE else prose(step.text))
     for rel in step.math:
         math = relation_latex(rel)
         out.append(f"\\[ \\boxed{{{math}}} \\]" if step.kind is StepKind.RESULT else f"\\[ {math} \\]")
@@ -94,7 +103,7 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines.append(f"\\subsection*{{Question {number}: {text(s.question)}}}")
         for step in answer_steps(s.steps):
             lines += _step(step)
-        lines += [f"\\textbf{{Warning:}} {text(w)}\\par" for w in s.warnings]
+        lines += [f"\\textbf{{Warning:}} {prose(w)}\\par" for w in s.warnings]
         if s.error:
             lines.append(f"\\textbf{{Could not answer:}} {text(s.error)}\\par")
         lines += _numbers(s)
