@@ -6,6 +6,10 @@ with the reason it is what it is (the report prints them):
 * the coordinate of a contact on an edge of limited extent: the span where the contact
   holds (a slab on a drum, |θ| ≤ b/(2R)): elsewhere no solution is an equilibrium of
   the scene (``contact_span``);
+* a spring's polar distance r (the elastic pendulum's, P = r e(θ) from the spring's
+  other end: model/energies/spring_length.py ``polar_distances``), without a range: r ≥ 0,
+  to SEARCH_SCALE times the scene's largest length ((−r, θ) is the point (r, θ + π), so
+  r < 0 would list each equilibrium twice, as the exact route does not);
 * a periodic angle: one turn, (−π, π] (the scan adds a cell each side); a contact's
   travel round a circle is one where ∂V/∂q repeats after a turn (numeric_model.periodic_angles);
 * an angle that is not periodic (declared ``periodic: false``, in the angle of a
@@ -57,6 +61,12 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
     span = _contact_span(model, q)
     if span is not None:
         return span
+    polar = _polar_spring(model, q)
+    if polar is not None:
+        name, length = _largest_length(model)
+        reach, scale = (SEARCH_SCALE * length, f"{SEARCH_SCALE:g} × {name} = {SEARCH_SCALE * length:g}") if name \
+            else (SEARCH_SCALE, f"{SEARCH_SCALE:g}")
+        return Interval(0.0, reach, f"≥ 0, a polar distance (spring '{polar}'), to {scale}")
     if periodic:
         return Interval(-math.pi, math.pi, "one turn")
     if c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model) or c.name in _round_a_circle(model):
@@ -95,6 +105,8 @@ def search_rule(model: Model, angles: frozenset) -> str:
             parts.append(f"{shown} in its declared range")
         elif spans:
             parts.append(f"{shown} in the span where contact '{spans[0].name}' holds")
+        elif _polar_spring(model, q) is not None:
+            parts.append(f"{shown} ≥ 0 (a polar distance)")
         elif q in angles:
             parts.append(f"{shown} in (−π, π]")
         elif c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model) or c.name in _round_a_circle(model):
@@ -102,6 +114,16 @@ def search_rule(model: Model, angles: frozenset) -> str:
         else:
             parts.append(f"{shown} in ±{SEARCH_SCALE:g} × the scene's largest length")
     return "over " + ", ".join(parts) + " (a coordinate's 'range' sets it)"
+
+
+def _polar_spring(model: Model, q: sp.Symbol) -> str | None:
+    """The name of a spring whose length |q| is written q because q is a polar distance
+    (a Length of q itself with sign +1: at the reference q = 0 nothing else decides it;
+    a declared range is read before this), or None."""
+    for s in model.springs:
+        if any(x.inside == q and x.sign == 1 for x in s.lengths):
+            return s.name
+    return None
 
 
 def _torsion_angles(model: Model) -> set:

@@ -141,3 +141,21 @@ questions: [equilibria]
     curvature = m * 9.81 * (R - float(sp.Rational(r)))
     assert [eq.curvatures[0] for eq in found] == pytest.approx([curvature, -curvature], rel=1e-9)
     assert all(not eq.equivalent for eq in found)
+
+
+# The elastic pendulum (problems/forces/elastic-pendulum.yaml) with m = 1, k = 20, L = 1,
+# g = 9.81, by hand: r ≥ 0 is a polar distance ((−r, θ) is the point (r, θ + π)), and
+# ∂V/∂r = k (r − L) − m g cos θ = 0, ∂V/∂θ = m g r sin θ = 0 give r = L + m g/k = 1.4905 at
+# θ = 0 (stable) and r = L − m g/k = 0.5095 at θ = π (unstable), as the exact route says.
+# The numeric route searches r ≥ 0 too: before, it also listed (−1.4905, π) and (−0.5095, 0),
+# the same two points again.
+def test_a_polar_distance_is_searched_from_zero_and_each_equilibrium_listed_once() -> None:
+    text = (PROBLEMS / "forces" / "elastic-pendulum.yaml").read_text() + "values: {m: 1, k: 20, L: 1, g: 9.81}\n"
+    model = build_model(load_text(text, "elastic.yaml"))
+    r_box, _ = search_box(model, periodic_angles(model))
+    assert (r_box.low, r_box.high) == pytest.approx((0.0, 10.0))
+    solution = equilibria_numeric.solve(None, model, Options())
+    found = sorted((eq.at["r"], abs(eq.at["theta"]), eq.stability.value) for eq in solution.answers.equilibria)
+    assert [x for r, th, _ in found for x in (r, th)] == pytest.approx([0.5095, math.pi, 1.4905, 0.0], abs=1e-9)
+    assert [s for _, _, s in found] == ["unstable", "stable"]
+    assert any("r in [0, 10] (≥ 0, a polar distance (spring 's'), to 10 × L = 10)" in w for w in solution.warnings)
