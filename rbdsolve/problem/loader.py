@@ -16,6 +16,7 @@ from rbdsolve.problem.schema import (
     Body,
     Coordinate,
     Frame,
+    ImpactOptions,
     Parameter,
     Point,
     Prescribed,
@@ -117,7 +118,10 @@ class _Loader:
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
         loads = LoadReader(self.reading, bodies)
         forces, couples = loads.forces(get("forces")), loads.couples(get("couples"))
-        known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples, contacts)
+        questions = self.questions(get("questions"), coordinates, bodies, points + _body_points(bodies), frames,
+                                   contacts)
+        collisions = tuple(c for q in questions if isinstance(q.options, ImpactOptions) for c in q.options.collisions)
+        known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples, contacts, collisions)
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
             file=self.reading.file,
@@ -131,8 +135,7 @@ class _Loader:
             springs=springs,
             gravity=gravity,
             values=values,
-            questions=self.questions(get("questions"), coordinates, bodies, points + _body_points(bodies), frames,
-                                     contacts),
+            questions=questions,
             prescribed=prescribed,
             frames=frames,
             unknowns=unknowns,
@@ -405,13 +408,13 @@ def _body_points(bodies: tuple[Body, ...]) -> tuple[Point, ...]:
 
 def _known_dimensions(parameters: tuple[Parameter, ...], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
                       gravity: ex.Expr | None, points: tuple[Point, ...], forces: tuple = (),
-                      couples: tuple = (), contacts: tuple = ()) -> dict[str, tuple[Dimension, str]]:
+                      couples: tuple = (), contacts: tuple = (), collisions: tuple = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter's dimension where the file fixes it: its declared unit first, then
     the scene (problem/quantities/dimensions.py)."""
     positions = tuple(p.position for p in points if p.position is not None)
     positions += tuple(b.at for b in bodies if b.at is not None)
     known = scene_dimensions(frozenset(p.name for p in parameters), bodies, springs, gravity, positions, forces,
-                             couples, contacts)
+                             couples, contacts, collisions)
     for p in parameters:
         if p.unit is not None:
             known[p.name] = (p.unit.dimension, f"its unit {p.unit.text}")

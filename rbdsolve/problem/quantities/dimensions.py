@@ -11,7 +11,8 @@ dimensions (``model/values/units.py``). A parameter's dimension is known from
   (N/m), a term ``l*sin(theta)`` of a point's position (a length), a term
   ``F*cos(alpha)`` of an applied force (N) and a couple's moment (N·m), a contact's
   circle ``radius: R``, the radius it rolls or a string winds at, a string's length,
-  the terms of a surface's point (lengths);
+  the terms of a surface's point (lengths); an impact's coefficient of restitution ``e``
+  (a pure number), a striking particle's mass and the terms of its velocity (m/s);
 - otherwise, the unit of its value (``values: {c: 2 N*m/rad}``).
 
 A parameter found with two different dimensions in the scene (``mass: l``, with l a
@@ -24,18 +25,19 @@ from __future__ import annotations
 from fractions import Fraction
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.quantities.quantity import ACCELERATION, LENGTH, MASS, Dimension
-from rbdsolve.problem.schema import Body, Contact, Couple, Force, Spring
+from rbdsolve.problem.quantities.quantity import ACCELERATION, LENGTH, MASS, NUMBER, Dimension
+from rbdsolve.problem.schema import Body, Collision, Contact, Couple, Force, Spring
 
 FORCE = Dimension(Fraction(1), Fraction(1), Fraction(-2))  # N = kg m/s²
 STIFFNESS = Dimension(Fraction(1), Fraction(0), Fraction(-2))  # N/m = kg/s²
 TORQUE = Dimension(Fraction(1), Fraction(2), Fraction(-2))  # a torsional stiffness, N·m per radian
+VELOCITY = Dimension(Fraction(0), Fraction(1), Fraction(-1))  # m/s
 
 
 def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], springs: tuple[Spring, ...],
                      gravity: ex.Expr | None, positions: tuple[ex.Expr, ...], forces: tuple[Force, ...] = (),
-                     couples: tuple[Couple, ...] = (), contacts: tuple[Contact, ...] = ()
-                     ) -> dict[str, tuple[Dimension, str]]:
+                     couples: tuple[Couple, ...] = (), contacts: tuple[Contact, ...] = (),
+                     collisions: tuple[Collision, ...] = ()) -> dict[str, tuple[Dimension, str]]:
     """Each parameter whose dimension the scene fixes: (dimension, where it was seen)."""
     found: dict[str, set[tuple[Dimension, str]]] = {}
 
@@ -79,6 +81,15 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
         if c.surface.point is not None and c.surface.point.kind is ex.Kind.VECTOR:
             for term in _vector_terms(c.surface.point.tree):
                 see(term, LENGTH, f"contacts.{c.name}.rolls_on", calls=True)
+    for c in collisions:
+        where = f"questions.impact.collisions.{c.point}"
+        if c.restitution is not None:
+            see(c.restitution.tree, NUMBER, f"{where}.restitution")
+        if c.particle is not None:
+            see(c.particle.mass.tree, MASS, f"{where}.particle.mass")
+            for velocity in (c.particle.velocity, c.particle.after):
+                for term in _vector_terms(velocity.tree) if velocity is not None else ():
+                    see(term, VELOCITY, f"{where}.particle.velocity", calls=True)
     return {name: min(seen, key=lambda s: s[1]) for name, seen in found.items()
             if len({d for d, _ in seen}) == 1}
 
