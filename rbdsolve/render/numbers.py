@@ -37,15 +37,22 @@ def accuracy_lines(solution) -> list[str]:
 
 def groups(numbers: tuple[Number, ...]) -> list[tuple[str, list[Number]]]:
     """The numeric block's lines under their headings (Equilibrium 2, Branch 1; '' for
-    none), consecutive lines of one heading together."""
+    none): consecutive lines of one heading together, and a heading met again (a steady
+    motion's Ω per solution, then its ω per solution) joins its first place, so each
+    solution's numbers stand under one heading."""
     out: list[tuple[str, list[Number]]] = []
+    named: dict[str, list[Number]] = {}
     for n in numbers:
         if n.accuracy:
             continue
         if out and out[-1][0] == n.group:
             out[-1][1].append(n)
+        elif n.group and n.group in named:
+            named[n.group].append(n)
         else:
             out.append((n.group, [n]))
+            if n.group:
+                named[n.group] = out[-1][1]
     return out
 
 

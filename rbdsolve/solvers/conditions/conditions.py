@@ -240,6 +240,15 @@ def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
     return sorted(needed, key=sp.default_sort_key)
 
 
+def divided_radicands(values: Iterable[sp.Expr]) -> list[sp.Expr]:
+    """The radicands that stand under a square root in a denominator, 1/√c: a value is
+    infinite where c = 0, so it is real only where c > 0, not c ≥ 0 (a rod as a conical
+    pendulum: Ω = √(3 g/(2 l cos α)) needs α < π/2)."""
+    found = {p.base for value in values for p in value.atoms(sp.Pow)
+             if p.exp.is_Rational and p.exp.q == 2 and p.exp < 0}
+    return sorted(found, key=sp.default_sort_key)
+
+
 @dataclass(frozen=True)
 class Existence:
     """Where values are real: the condition, solved for one parameter each (true:
@@ -256,9 +265,10 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
     not decide, piece by piece, holds on its positive pieces, a boundary included where
     the condition is finite there and may be zero (ω² ≥ g/R, but R > r where 1/(R − r)
     is, and k > m g/L where a spring would be at zero length); None where one cannot be
-    split."""
+    split. A radicand under a root in a denominator (``divided_radicands``) is positive."""
+    values = list(values)
     exists, criticals = sp.true, []
-    strict = [tidy(x) for x in positive]
+    strict = [tidy(x) for x in (*positive, *divided_radicands(values))]
     for condition in dict.fromkeys([*real_where(values), *nonnegative, *positive]):
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):

@@ -35,8 +35,8 @@ from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.conditions.condition_roots import admissible, angle_parameters
-from rbdsolve.solvers.conditions.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values, exists_when,
-                                                real_where)
+from rbdsolve.solvers.conditions.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values,
+                                                divided_radicands, exists_when, real_where)
 from rbdsolve.solvers.conditions.present_conditions import critical_names
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
@@ -50,34 +50,36 @@ def with_existence(found: Sequence[dict], squares: Sequence[int], model: Model, 
     squares, ω₀², so ≥ 0), and the critical values those conditions use, solved for
     ``first`` (the question's ``for:``) where it names a parameter."""
     out, criticals = [], []
-    known: dict[sp.Expr, tuple[sp.Basic, tuple[Critical, ...]]] = {}  # ±√D share D: split once
+    known: dict[tuple[sp.Expr, bool], tuple[sp.Basic, tuple[Critical, ...]]] = {}  # ±√D share D: split once
     for solved in found:
         values = list(solved.values())
         needed = [*real_where(values), *(values[k] for k in squares)]
+        divided = divided_radicands(values)  # 1/√c: c > 0
         condition = sp.true
         for c in needed:
-            if c not in known:
-                known[c] = _where_nonnegative(c, model, first)
-            part, found_criticals = known[c]
+            key = (c, c in divided)
+            if key not in known:
+                known[key] = _where_nonnegative(c, model, first, strict=c in divided)
+            part, found_criticals = known[key]
             condition = sp.And(condition, part)
             criticals += found_criticals
         out.append(Branch(solved, condition))
     return tuple(out), critical_values(criticals)
 
 
-def _where_nonnegative(c: sp.Expr, model: Model, first: sp.Symbol | None = None
+def _where_nonnegative(c: sp.Expr, model: Model, first: sp.Symbol | None = None, strict: bool = False
                        ) -> tuple[sp.Basic, tuple[Critical, ...]]:
-    """Where c ≥ 0: a top's discriminant in its spin (``least_rate``); else solved for
-    one parameter where one splits it (``exists_when``, which passes over a c whose sign
-    the assumptions decide: then true where c ≥ 0, false where it is negative), else
-    c ≥ 0 as it is."""
+    """Where c ≥ 0 (c > 0 where ``strict``: c under a root in a denominator): a top's
+    discriminant in its spin (``least_rate``); else solved for one parameter where one
+    splits it (``exists_when``, which passes over a c whose sign the assumptions decide:
+    then true where c ≥ 0, false where it is negative), else c ≥ 0 as it is."""
     c = tidy(c)
-    found = least_rate(c, model, first)
+    found = None if strict else least_rate(c, model, first)
     if found is not None:
         return found
-    split = exists_when((), model, [c], first)
+    split = exists_when((), model, [], first, positive=[c]) if strict else exists_when((), model, [c], first)
     if split is None:
-        return sp.GreaterThan(c, 0), ()
+        return (sp.StrictGreaterThan if strict else sp.GreaterThan)(c, 0), ()
     if split.condition is sp.true and _sign(c, model) == -1:
         return sp.false, ()
     return split.condition, split.criticals
