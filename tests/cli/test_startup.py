@@ -17,7 +17,8 @@ COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imp
 # imported only for a scene or question that uses them: seed problem 1 has none
 FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.plane_rolling", "rbdsolve.solvers.modes.amplitude",
             "rbdsolve.solvers.conditions.monotone")
-WATCHED = HEAVY + COMMAND_MODULES + FEATURES
+TERMINAL = ("rich.console",)  # a solution written to a pipe or a file is laid out without it (render/text.py)
+WATCHED = HEAVY + COMMAND_MODULES + FEATURES + TERMINAL
 
 
 def loaded_after(*args: str) -> set[str]:
@@ -48,3 +49,9 @@ def test_the_probe_sees_an_import() -> None:
     assert "sympy" in loaded
     assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
     assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ
+
+
+def test_a_solution_to_a_pipe_loads_no_rich_console() -> None:
+    """Text without colour (standard output a pipe here) is laid out without rich's console."""
+    loaded = loaded_after("solve", "--quiet", str(SEED / "p1-two-rods.yaml"))
+    assert "sympy" in loaded and not loaded & set(TERMINAL)
