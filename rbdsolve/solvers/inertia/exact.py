@@ -123,6 +123,8 @@ def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
     something that vanishes at some configurations (sin β, cos α): there it is
     undefined, and the axis must be found at that configuration itself."""
     q = set(model.q)
+    if not any(sp.sympify(x).free_symbols & q for axis in found.axes for x in axis):
+        return ()  # no coordinate in the axes (asked at a configuration): no divisor to factor out
     divisors = {factor for axis in found.axes for x in axis
                 for factor in sp.Mul.make_args(sp.factor(sp.fraction(sp.together(x))[1]))
                 if factor.free_symbols & q}
