@@ -6,6 +6,7 @@ returned as ``Undecided`` with the expression, never guessed."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Iterable, Mapping
 
 import sympy as sp
@@ -111,6 +112,7 @@ def sign_where_defined(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr],
 FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes
 
 
+@lru_cache(maxsize=4096)  # one value is judged again and again (each piece, each question)
 def symbolic_sign(value: sp.Expr) -> int | None:
     """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored where it
     is short enough: the friction ratio of a slab rolling on a drum, F/N with θ and
