@@ -116,13 +116,20 @@ FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it 
 def symbolic_sign(value: sp.Expr) -> int | None:
     """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored where it
     is short enough: the friction ratio of a slab rolling on a drum, F/N with θ and
-    sin θ mixed, ran sympy's factor for minutes)."""
-    forms = (value,) if sp.count_ops(value) > FACTOR_OPS else (value, sp.factor(value))
-    for form in forms:
-        if form.is_zero:
-            return 0
-        if form.is_positive:
-            return 1
-        if form.is_negative:
-            return -1
+    sin θ mixed, ran sympy's factor for minutes). The factored form is made only where
+    the written one is undecided (a number, a sum of positive terms, is decided as it
+    stands)."""
+    sign = _assumed_sign(value)
+    if sign is None and sp.count_ops(value) <= FACTOR_OPS:
+        sign = _assumed_sign(sp.factor(value))
+    return sign
+
+
+def _assumed_sign(form: sp.Expr) -> int | None:
+    if form.is_zero:
+        return 0
+    if form.is_positive:
+        return 1
+    if form.is_negative:
+        return -1
     return None
