@@ -122,7 +122,9 @@ def factored_sum(total: sp.Add, alone: bool = False) -> sp.Expr:
     ``alone``: the sum is the whole expression, not a factor beside others (k (…)), so
     a number would be all it has in front."""
     terms = sp.Add.make_args(expanded(total))
-    integral, plain = (_with_content(total, _content(terms, rational), alone) for rational in (True, False))
+    whole, content = _content(terms, True), _content(terms, False)
+    integral = _with_content(total, whole, alone)
+    plain = integral if whole == content else _with_content(total, content, alone)  # no rational to take out: once
     if integral == total:
         return plain
     # whole coefficients inside, 1/2 g m (2R − a), unless that costs more than the "1/2 "

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 from contextlib import contextmanager
 from contextvars import ContextVar
+from functools import lru_cache
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -452,6 +453,16 @@ def to_unicode(value: Math) -> str:
         return _tidy_unicode(" ".join(_product_parts(value, to_unicode)).replace("- ", "-", 1))
     if isinstance(value, Along):
         return _along(value, to_unicode(value.component), to_unicode(value.basis), "({})")
+    try:
+        return _printed(value, digits())
+    except TypeError:  # a mutable matrix: not hashable, printed as it is
+        return _tidy_unicode(_UNICODE.doprint(value))
+
+
+@lru_cache(maxsize=8192, typed=True)  # printed to weigh its forms (form/factor.py), then shown: 1 and 1.0 apart
+def _printed(value: sp.Basic, significant: int) -> str:
+    """The unicode text of an expression at ``significant`` digits (the current ones:
+    floats print to them, so they are part of what the text depends on)."""
     return _tidy_unicode(_UNICODE.doprint(value))
 
 

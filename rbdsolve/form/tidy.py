@@ -87,27 +87,41 @@ def _foldable(expr: sp.Expr) -> bool:
     sum, cos a cos b ± sin a sin b, sin a cos b ± cos a sin b, or a cos x + b sin x with
     b/a ∈ {1, √3, 1/√3}: in each, one term has a factor cos x and the other sin x for
     the same x, and the two terms differ by a number and by sines and cosines only
-    (``fu.trig_split`` refuses a pair whose quotient holds anything else). Where no sum
-    has such a pair, TR10i returns ``expr`` itself, and skipping it saves its search
-    over all pairs (a chain's V, n cosines: n² pairs, for nothing; a q̈ numerator's
-    terms in θ̇² and φ̇²)."""
+    (``fu.trig_split`` refuses a pair whose quotient holds anything else), that number
+    ±1, ±√3 or ±1/√3 (``trig_split`` folds two products of two only when neither has a
+    coefficient left after their common factor, and one sine against one cosine only
+    for those ratios). Where no sum has such a pair, TR10i returns ``expr`` itself, and
+    skipping it saves its search over all pairs (a chain's V, n cosines: n² pairs, for
+    nothing; a q̈ numerator's terms in θ̇² and φ̇²; a force along a motion released at
+    θ₀, 48 sin θ₀ beside 480 cos θ₀)."""
     for total in expr.atoms(sp.Add):
         cosines: dict[sp.Expr, set[int]] = {}
         sines: dict[sp.Expr, set[int]] = {}
-        rests = []
+        rests, numbers = [], []
         for i, term in enumerate(total.args):
-            rest = []
+            rest, number = [], []
             for factor in sp.Mul.make_args(term):
                 base = factor.as_base_exp()[0]
                 if isinstance(base, (sp.sin, sp.cos)):
                     (sines if isinstance(base, sp.sin) else cosines).setdefault(base.args[0], set()).add(i)
-                elif not factor.is_number:
-                    rest.append(factor)
+                else:
+                    (number if factor.is_number else rest).append(factor)
             rests.append(sp.Mul(*rest))
+            numbers.append(sp.Mul(*number))
         for x in cosines.keys() & sines.keys():
-            if any(i != j and rests[i] == rests[j] for i in cosines[x] for j in sines[x]):
+            if any(i != j and rests[i] == rests[j] and _folding_ratio(numbers[i] / numbers[j])
+                   for i in cosines[x] for j in sines[x]):
                 return True
     return False
+
+
+_FOLDING_RATIOS = tuple(s * r for s in (1, -1) for r in (sp.Integer(1), sp.sqrt(3), sp.sqrt(3) / 3))
+
+
+def _folding_ratio(ratio: sp.Expr) -> bool:
+    """±1, ±√3 or ±1/√3, or a float (2.0/2.0 is 1.0, which sympy does not call equal to 1
+    but TR10i folds: kept as a yes)."""
+    return ratio in _FOLDING_RATIOS or ratio.has(sp.Float)
 
 
 def tidy_fraction(expr: sp.Expr) -> sp.Expr:

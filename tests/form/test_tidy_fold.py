@@ -57,3 +57,26 @@ def test_a_sum_said_unfoldable_is_one_tr10i_leaves_as_it_is() -> None:
                 refused += 1
                 assert TR10i(e) == e, e
     assert refused > 500 and accepted > 50  # both answers were met
+
+
+def test_a_sum_whose_numbers_cannot_fold_is_one_tr10i_leaves_as_it_is() -> None:
+    """The same oracle over numeric coefficients: a cos x + b sin x folds only where b/a
+    is ±1, ±√3 or ±1/√3, a product of two against a product of two only where b/a = ±1;
+    _foldable turns away the others (48 sin θ₀ beside 480 cos θ₀) and never one TR10i
+    folds."""
+    t = sp.Rational(1, 10)
+    trig = [sp.cos(x), sp.sin(x), sp.cos(x) * sp.cos(y), sp.sin(x) * sp.sin(y), sp.sin(x) * sp.cos(y),
+            sp.cos(t), sp.sin(t), sp.cos(x) * sp.sin(t), sp.sin(x) * sp.cos(t)]
+    numbers = [sp.Integer(1), sp.Integer(-1), sp.Integer(2), sp.Integer(10), sp.sqrt(3), -2 * sp.sqrt(3),
+               sp.sqrt(3) / 3, sp.sqrt(6), sp.sqrt(2), sp.Float(2.0), sp.pi]
+    refused = accepted = 0
+    for (n1, s1), (n2, s2) in itertools.combinations(itertools.product(numbers, trig), 2):
+        e = n1 * a * s1 + n2 * a * s2
+        if not e.is_Add:
+            continue
+        if _foldable(e):
+            accepted += 1
+        else:
+            refused += 1
+            assert TR10i(e) == e, e
+    assert refused > 1000 and accepted > 100  # both answers were met

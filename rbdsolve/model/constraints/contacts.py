@@ -274,7 +274,7 @@ def _flat(c: Contact, e: Flat, s: _Surface, sigma, how: _Placing, names: Symbols
                          "rests); give the body a curved edge, or roll it on a circle", c.loc)
     if s.inside:
         raise InputError(f"contact '{c.name}': a flat edge cannot roll on the inside of a circle", c.loc)
-    if sp.simplify(e.outward + s.normal.subs(sigma, 0)) != sp.zeros(3, 1):
+    if not all(simplifies_to_zero(x) for x in e.outward + s.normal.subs(sigma, 0)):
         raise InputError(f"contact '{c.name}': body '{c.body}' does not touch the circle at the reference "
                          f"configuration ({c.coordinate} = 0): its '{c.edge}' edge does not face the top of the "
                          "circle there", c.loc)

@@ -30,6 +30,7 @@ are turned into it by whole turns (θ < π/2 for a coin's tilt).
 from __future__ import annotations
 
 import random
+import weakref
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Iterable
@@ -128,10 +129,22 @@ class Partition:
         return changes(self.pieces)
 
 
+_PARTITIONS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # model -> {(f, first): Partition | None}
+
+
 def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | None:
     """f's sign piece by piece in the first parameter (``candidates``: ``first``, the one
     a question names, before all) whose roots cut its range into pieces of known sign,
-    at least one change of sign among them; None where no parameter does."""
+    at least one change of sign among them; None where no parameter does. Found once
+    per model (its samples are seeded: the same f gives the same pieces): the equilibria
+    and the modes about them ask for one stability condition each."""
+    found = _PARTITIONS.setdefault(model, {})
+    if (f, first) not in found:
+        found[(f, first)] = _partition(f, model, first)
+    return found[(f, first)]
+
+
+def _partition(f: sp.Expr, model, first: sp.Symbol | None) -> Partition | None:
     angles = angle_parameters(f)
     for p in candidates(f, model, angles, first):
         roots = parameter_roots(f, p, angles, model)

@@ -6,6 +6,7 @@ returned as ``Undecided`` with the expression, never guessed."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Iterable, Mapping
 
 import sympy as sp
@@ -111,16 +112,24 @@ def sign_where_defined(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr],
 FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes
 
 
+@lru_cache(maxsize=4096)  # one value is judged again and again (each piece, each question)
 def symbolic_sign(value: sp.Expr) -> int | None:
     """−1, 0 or 1 where sympy's assumptions decide it (as written, or factored where it
     is short enough: the friction ratio of a slab rolling on a drum, F/N with θ and
-    sin θ mixed, ran sympy's factor for minutes)."""
-    forms = (value,) if sp.count_ops(value) > FACTOR_OPS else (value, sp.factor(value))
-    for form in forms:
-        if form.is_zero:
-            return 0
-        if form.is_positive:
-            return 1
-        if form.is_negative:
-            return -1
+    sin θ mixed, ran sympy's factor for minutes). The factored form is made only where
+    the written one is undecided (a number, a sum of positive terms, is decided as it
+    stands)."""
+    sign = _assumed_sign(value)
+    if sign is None and sp.count_ops(value) <= FACTOR_OPS:
+        sign = _assumed_sign(sp.factor(value))
+    return sign
+
+
+def _assumed_sign(form: sp.Expr) -> int | None:
+    if form.is_zero:
+        return 0
+    if form.is_positive:
+        return 1
+    if form.is_negative:
+        return -1
     return None

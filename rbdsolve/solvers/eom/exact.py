@@ -18,7 +18,7 @@ import sympy as sp
 from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
+from rbdsolve.model.energies.energy import kinetic_energy, memoized, potential_energy
 from rbdsolve.model.energies.frames import frame_lagrangian, frame_motion
 from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.problem.schema import Question
@@ -37,8 +37,15 @@ def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr,
     """E_i = d/dt(∂L/∂q̇_i) − ∂L/∂q_i − Q_i for each coordinate, in the model's plain
     symbols; L = T − V unless given, Q_i the generalized forces of the applied loads that
     have no potential (model/energies/loads.py; the others are in V)."""
-    if L is None:
-        L = kinetic_energy(model).total - potential_energy(model).total
+    return _own_equations(model) if L is None else _equations(model, L)
+
+
+@memoized  # the reactions' route and their check before printing both ask
+def _own_equations(model: Model) -> tuple[sp.Expr, ...]:
+    return _equations(model, kinetic_energy(model).total - potential_energy(model).total)
+
+
+def _equations(model: Model, L: sp.Expr) -> tuple[sp.Expr, ...]:
     Q = free_forces(model) or (0,) * len(model.q)
     generators = [*model.qdd, *model.qd]
     out = []

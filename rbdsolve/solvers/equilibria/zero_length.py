@@ -14,6 +14,7 @@ import sympy as sp
 
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
+from rbdsolve.form.zero import simplifies_to_zero
 
 
 def crushed_spring(model: Model, at: Mapping[sp.Expr, sp.Expr]) -> str | None:
@@ -21,9 +22,9 @@ def crushed_spring(model: Model, at: Mapping[sp.Expr, sp.Expr]) -> str | None:
     has a natural length), or None."""
     for spring in model.springs:
         for length in spring.lengths:
-            if length.sign is None or sp.simplify(length.inside.xreplace(dict(at))) != 0:
+            if length.sign is None or not simplifies_to_zero(length.inside.xreplace(dict(at))):
                 continue
-            if sp.simplify(spring.stretch.xreplace(dict(at))) != 0:
+            if not simplifies_to_zero(spring.stretch.xreplace(dict(at))):
                 return spring.name
     return None
 

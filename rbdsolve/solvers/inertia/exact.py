@@ -51,6 +51,7 @@ from rbdsolve.solvers.inertia.steps import (
 )
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.model.values.values import sample
+from rbdsolve.form.zero import simplifies_to_zero
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword
 
@@ -123,6 +124,8 @@ def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
     something that vanishes at some configurations (sin β, cos α): there it is
     undefined, and the axis must be found at that configuration itself."""
     q = set(model.q)
+    if not any(sp.sympify(x).free_symbols & q for axis in found.axes for x in axis):
+        return ()  # no coordinate in the axes (asked at a configuration): no divisor to factor out
     divisors = {factor for axis in found.axes for x in axis
                 for factor in sp.Mul.make_args(sp.factor(sp.fraction(sp.together(x))[1]))
                 if factor.free_symbols & q}
@@ -146,7 +149,7 @@ def frame_matrix(opts: InertiaOptions, model: Model) -> sp.Matrix:
     names = model.symbols.with_points(model.points)
     rows = [names.vector(e).applyfunc(tidy) for e in opts.axes]
     A = sp.Matrix.hstack(*rows).T
-    if (A * A.T - sp.eye(3)).applyfunc(lambda x: sp.simplify(x)) != sp.zeros(3, 3):
+    if not all(simplifies_to_zero(x) for x in A * A.T - sp.eye(3)):
         raise UnsolvedError(f"{opts.axes[0].loc}: the axes must be orthonormal unit vectors (A Aᵀ = 1)")
     return A
 

@@ -63,7 +63,8 @@ def _at_the_state(model: Model, instant, supports, forces, answers):
     the motion too. Returns the answers, the steps, the critical values used and the
     warnings."""
     table = state_values(model, instant)
-    at = {s.name: _reaction(s, {x: at_state(v, table) for x, v in forces.items()}, table) for s in supports}
+    there = {x: at_state(v, table) for x, v in forces.items()}  # once, not once per support
+    at = {s.name: _reaction(s, there, table) for s in supports}
     limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
     answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()},
                        holds_when={k: model.to_time(h.condition) for k, h in limits.items()})

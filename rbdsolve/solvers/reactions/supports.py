@@ -21,6 +21,7 @@ point: a tension T along the string.
 from __future__ import annotations
 
 import random
+import weakref
 from dataclasses import dataclass, replace
 from enum import Enum
 
@@ -90,9 +91,18 @@ def planar(model: Model) -> bool:
     return flat and (model.gravity is None or model.gravity[2] == 0)
 
 
+_HELD: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # model -> {support: Held}
+
+
 def held(model: Model, support: Support) -> Held:
-    found = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
-    return replace(found, loc=support.loc)
+    """The support's components and directions; found once per model (the exact route
+    and the check before printing both ask, and a guide's normal costs a few simplify
+    calls)."""
+    found = _HELD.setdefault(model, {})
+    if support not in found:
+        placed = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
+        found[support] = replace(placed, loc=support.loc)
+    return found[support]
 
 
 def _contact(model: Model, support: Support) -> Held:
@@ -151,7 +161,7 @@ def _point(model: Model, support: Support) -> Held:
                                 "relative to its holder) are answered in a 3D scene yet")
         return Held(support.point, P, on.name, support.by, _free(support.point, 3), How.BALL_JOINT)
     rank = _rank(columns, model)
-    turns = any(sp.simplify(w.diff(qd)) != sp.zeros(3, 1) for qd in model.qd)
+    turns = any(not all(simplifies_to_zero(x) for x in w.diff(qd)) for qd in model.qd)
     moment = () if turns or _particle_at(on, P) else (Component(sp.Symbol(f"M_{support.point}"), _Z, moment=True),)
     if rank == 0:
         return Held(support.point, P, on.name, support.by, _free(support.point, 2) + moment, How.PIVOT)
@@ -169,7 +179,7 @@ def _free(name: str, dims: int) -> tuple[Component, ...]:
 
 
 def _particle_at(b: RigidBody, P: sp.Matrix) -> bool:
-    return b.inertia == sp.zeros(3, 3) and sp.simplify(P - b.position) == sp.zeros(3, 1)
+    return b.inertia == sp.zeros(3, 3) and all(simplifies_to_zero(x) for x in P - b.position)
 
 
 def generic_point(model: Model, seed: int) -> dict[sp.Symbol, sp.Expr]:
