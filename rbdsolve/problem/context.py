@@ -52,6 +52,13 @@ def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
         raise InputError(f"unknown point '{name}'{did_you_mean(name, sorted(scope.vectors))}", node.loc)
 
 
+
+# What a name declared twice most likely means, where the two kinds say it: a steady
+# motion's rate asked for, written among the parameters too.
+_MENDS = {("parameter", "unknown"): " (an unknown is what a question solves for: take it out of 'parameters')",
+          ("parameter", "coordinate"): " (a coordinate changes with time, a parameter does not: take it out of "
+                                       "'parameters')"}
+
 class Reading:
     """One file's names, scopes and points, and the readers of its expressions."""
 
@@ -103,7 +110,8 @@ class Reading:
     def declare(self, key: Scalar, what: str) -> str:
         name = identifier(key, what)
         if name in self.taken:
-            raise InputError(f"'{name}' is already declared as a {self.taken[name]}", key.loc)
+            mend = _MENDS.get((self.taken[name], what), "")
+            raise InputError(f"'{name}' is already declared as a {self.taken[name]}{mend}", key.loc)
         self.taken[name] = what
         return name
 

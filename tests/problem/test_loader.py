@@ -359,3 +359,14 @@ questions: [eom]
     assert length.size == 4 and [length.value(k).rational for k in range(4)] == [
         Fraction(1, 2), Fraction(9, 10), Fraction(13, 10), Fraction(17, 10)]
     assert gravity.size == 2 and gravity.value(0).rational == Fraction(981, 100)
+
+
+# A steady motion's rate written among the parameters and as the unknown a question
+# solves for (a new user's first try at a conical pendulum): the message says the mend.
+def test_an_unknown_also_declared_a_parameter_says_to_take_it_out() -> None:
+    text = "parameters: {m: mass, Omega: rate}\nunknowns: [Omega]\ncoordinates: [theta]\nquestions: [eom]\n"
+    with pytest.raises(InputError) as caught:
+        load_text(text, "cone.yaml")
+    assert "unknowns[0]: 'Omega' is already declared as a parameter (an unknown is what a question solves for: " \
+           "take it out of 'parameters')" in str(caught.value)
+    assert (caught.value.location.line, caught.value.location.column) == (2, 12)
