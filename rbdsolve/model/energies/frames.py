@@ -90,10 +90,15 @@ def frame_motion(model: Model, frame: Frame) -> FrameMotion:
 
 
 def inertial_potentials(name: str, m: sp.Expr, r: sp.Expr, motion: FrameMotion) -> list[EnergyTerm]:
-    """−½ m |ω × r'|² (centrifugal) and m a' · r' (the origin's acceleration)."""
-    omega, a = motion.omega, motion.in_axes(sp.diff(motion.origin, t, 2))
-    return [EnergyTerm(f"centrifugal on {name}", tidy(-m * omega.cross(r).dot(omega.cross(r)) / 2)),
-            EnergyTerm(f"inertial force on {name}", tidy(m * a.dot(r)))]
+    """−½ m |ω × r'|² (centrifugal) and m a' · r' (the origin's acceleration), tidied."""
+    centrifugal, translation = _inertial(m, r, motion.omega, motion.in_axes(sp.diff(motion.origin, t, 2)))
+    return [EnergyTerm(f"centrifugal on {name}", tidy(centrifugal)),
+            EnergyTerm(f"inertial force on {name}", tidy(translation))]
+
+
+def _inertial(m: sp.Expr, r: sp.Matrix, omega: sp.Matrix, a: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
+    """(−½ m |ω × r'|², m a' · r') as built, a' = Rᵀ a_O the origin's acceleration in F."""
+    return -m * omega.cross(r).dot(omega.cross(r)) / 2, m * a.dot(r)
 
 
 def frame_lagrangian(model: Model, motion: FrameMotion) -> FrameLagrangian:
@@ -233,8 +238,7 @@ def _raw_terms(body: RigidBody, model: Model, motion: FrameMotion, origin: sp.Ma
     m, r, omega = body.mass, body.position, motion.omega
     v = model.state.d_dt(r)
     turning, energy = _relative_rotational_energy(body, motion, model)
-    return _RawTerms(body.name, -m * omega.cross(r).dot(omega.cross(r)) / 2, m * origin.dot(r),
-                     m * v.dot(omega.cross(r)), turning, energy)
+    return _RawTerms(body.name, *_inertial(m, r, omega, origin), m * v.dot(omega.cross(r)), turning, energy)
 
 
 def _relative_body(body: RigidBody, motion: FrameMotion) -> RigidBody:
