@@ -127,14 +127,15 @@ def crushed_sides(springs, at: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, ..
     pushes with k l₀ along no defined direction, no equilibrium
     (solvers/equilibria/zero_length.py), so such a side must be > 0, not ≥ 0. The
     elastic pendulum's r = L − m g/k at θ = π exists where k > m g/L, not at k = m g/L."""
-    sides = []
-    for spring in springs:
-        signed = [x for x in spring.lengths if x.sign is not None]
-        if len(spring.lengths) == 1 and signed and sp.expand(spring.stretch - signed[0].sign * signed[0].inside) != 0:
-            side = sp.factor(signed[0].sign * signed[0].inside.xreplace(dict(at)))
-            if side not in sides:
-                sides.append(side)
-    return tuple(sides)
+    return held_sides([s for s in springs if _pushes_at_zero_length(s)], at)
+
+
+def _pushes_at_zero_length(spring) -> bool:
+    """One |u| in the length, written s·u, and a stretch other than s·u (an l₀ ≠ 0)."""
+    if len(spring.lengths) != 1 or spring.lengths[0].sign is None:
+        return False
+    (x,) = spring.lengths
+    return sp.expand(spring.stretch - x.sign * x.inside) != 0
 
 
 def polar_distances(d: sp.Matrix, q: tuple[sp.Symbol, ...]) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:

@@ -8,6 +8,7 @@ import random
 import pytest
 import sympy as sp
 
+from conftest import TURNING_ROD
 from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
@@ -185,30 +186,8 @@ questions:
                                                                            / (2 * l * Omega**2))}
 
 
-# A bead on a rod turning at Ω about z, held by a spring of natural length a from the
-# axis, x measured from the natural length. By hand, in the rod's frame: the spring's
-# length is |a + x|, a + x on the side it is drawn (x = 0), so while a + x > 0
-# V' = ½ k x² − ½ m Ω² (a + x)², ∂V'/∂x = k x − m Ω² (a + x) = 0 at
-# x₀ = m Ω² a/(k − m Ω²), where a + x₀ = k a/(k − m Ω²): positive only for k > m Ω²,
-# that is Ω < √(k/m). Past it the bead would sit beyond the axis, where the true
-# V'(x) = ½ k (|a + x| − a)² − ½ m Ω² (a + x)² has a slope at x₀: no equilibrium.
-# K = k − m Ω² > 0 wherever it exists: stable, λ = (k − m Ω²)/m an oscillation.
-TURNING_ROD = """
-parameters: {m: mass, k: stiffness, a: natural length, Omega: rate}
-coordinates: [x]
-frames:
-  rod: {axis: z, rate: Omega}
-points:
-  O: "[0, 0, 0]"
-  P: (a + x)*[cos(Omega*t), sin(Omega*t), 0]
-bodies:
-  bead: {shape: particle, mass: m, at: P}
-springs:
-  s: {stiffness: k, between: [P, O], natural_length: a}
-questions:
-  - equilibria: {frame: rod}
-  - modes: {frame: rod, about: each}
-"""
+# The bead on a turning rod held by a spring from the axis (tests/conftest.py TURNING_ROD,
+# with its derivation by hand).
 
 
 def _true_slope(x0, values) -> float:

@@ -15,7 +15,7 @@ import random
 import pytest
 import sympy as sp
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, TURNING_ROD
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -230,21 +230,7 @@ def test_two_masses_oscillate_in_both_modes_by_hand() -> None:
         assert got == pytest.approx(sorted(float(x.subs(at)) for x in want), rel=1e-10)
 
 
-BEAD_ON_TURNING_ROD = """
-parameters: {m: mass, k: stiffness, a: length, Omega: rate}
-coordinates: [x]
-frames:
-  rod: {axis: z, rate: Omega}
-points:
-  O: "[0, 0, 0]"
-  P: (a + x)*[cos(Omega*t), sin(Omega*t), 0]
-bodies:
-  bead: {shape: particle, mass: m, at: P}
-springs:
-  s: {stiffness: k, between: [P, O], natural_length: a}
-questions:
-  - modes: {frame: rod, about: each}
-"""
+BEAD_ON_TURNING_ROD = TURNING_ROD.replace("  - equilibria: {frame: rod}\n", "")  # its modes alone
 
 
 def test_modes_about_an_equilibrium_that_exists_somewhere_say_where():
