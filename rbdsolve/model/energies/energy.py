@@ -53,14 +53,18 @@ def body_kinetic_energy(body: RigidBody, state: State) -> sp.Expr:
 
 
 def memoized(compute):
-    """Compute once per model object (solvers ask for T, V and ∂V/∂q repeatedly)."""
+    """Compute once per model object, and per value of any further (hashable) arguments
+    (solvers ask for T, V and ∂V/∂q repeatedly; a frame's seen model, a support's
+    components, a condition's pieces are asked by a question and again by its check).
+    Kept as long as the model lives; a computation that raises keeps nothing."""
     cache: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
     @functools.wraps(compute)
-    def wrapper(model: Model):
-        if model not in cache:
-            cache[model] = compute(model)
-        return cache[model]
+    def wrapper(model: Model, *key):
+        found = cache.setdefault(model, {})
+        if key not in found:
+            found[key] = compute(model, *key)
+        return found[key]
 
     return wrapper
 

@@ -30,7 +30,6 @@ are turned into it by whole turns (θ < π/2 for a coin's tilt).
 from __future__ import annotations
 
 import random
-import weakref
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Iterable
@@ -43,6 +42,7 @@ from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign
 
@@ -129,22 +129,17 @@ class Partition:
         return changes(self.pieces)
 
 
-_PARTITIONS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # model -> {(f, first): Partition | None}
-
-
 def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | None:
     """f's sign piece by piece in the first parameter (``candidates``: ``first``, the one
     a question names, before all) whose roots cut its range into pieces of known sign,
     at least one change of sign among them; None where no parameter does. Found once
     per model (its samples are seeded: the same f gives the same pieces): the equilibria
     and the modes about them ask for one stability condition each."""
-    found = _PARTITIONS.setdefault(model, {})
-    if (f, first) not in found:
-        found[(f, first)] = _partition(f, model, first)
-    return found[(f, first)]
+    return _partition(model, f, first)
 
 
-def _partition(f: sp.Expr, model, first: sp.Symbol | None) -> Partition | None:
+@memoized
+def _partition(model, f: sp.Expr, first: sp.Symbol | None) -> Partition | None:
     angles = angle_parameters(f)
     for p in candidates(f, model, angles, first):
         roots = parameter_roots(f, p, angles, model)

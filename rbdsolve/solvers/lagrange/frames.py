@@ -15,7 +15,6 @@ and V' hold no t (a body's orientation composes the frame's turn with its own).
 
 from __future__ import annotations
 
-import weakref
 from dataclasses import replace
 
 import sympy as sp
@@ -24,6 +23,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
 from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.model.summary.frame import frame_steps
 from rbdsolve.problem.schema import Frame, Question
 from rbdsolve.report.steps import Solution
@@ -40,24 +40,19 @@ def model_in_frame(question: Question, model: Model) -> Model:
     return seen
 
 
-_SEEN: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # model -> {frame name: (motion, seen)}
-
-
+@memoized
 def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
     """The frame's motion and the model as seen in it; refused where the scene still
     depends on t there. Built once per model and frame: the equilibria, the modes about
     them and each one's check then share one seen model, and so its memoized T, V and
     equilibria (solvers/equilibria/exact.py ``listing``), as the questions of a scene
     without a frame share the model itself."""
-    found = _SEEN.setdefault(model, {})
-    if frame.name not in found:
-        motion = frame_motion(model, frame)
-        seen = in_frame(model, motion)
-        if seen.depends_on_time():
-            raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or "
-                                "gravity moves in it): it has no relative equilibria there")
-        found[frame.name] = (motion, seen)
-    return found[frame.name]
+    motion = frame_motion(model, frame)
+    seen = in_frame(model, motion)
+    if seen.depends_on_time():
+        raise UnsolvedError(f"in frame '{frame.name}' the scene still depends on t (a body, a spring or "
+                            "gravity moves in it): it has no relative equilibria there")
+    return motion, seen
 
 
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:

@@ -21,7 +21,6 @@ point: a tension T along the string.
 from __future__ import annotations
 
 import random
-import weakref
 from dataclasses import dataclass, replace
 from enum import Enum
 
@@ -31,6 +30,7 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.state import t
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.problem.schema import Support, SupportKind
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.form.zero import simplifies_to_zero
@@ -91,18 +91,13 @@ def planar(model: Model) -> bool:
     return flat and (model.gravity is None or model.gravity[2] == 0)
 
 
-_HELD: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # model -> {support: Held}
-
-
+@memoized
 def held(model: Model, support: Support) -> Held:
     """The support's components and directions; found once per model (the exact route
     and the check before printing both ask, and a guide's normal costs a few simplify
     calls)."""
-    found = _HELD.setdefault(model, {})
-    if support not in found:
-        placed = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
-        found[support] = replace(placed, loc=support.loc)
-    return found[support]
+    placed = _contact(model, support) if support.kind is SupportKind.CONTACT else _point(model, support)
+    return replace(placed, loc=support.loc)
 
 
 def _contact(model: Model, support: Support) -> Held:
