@@ -86,6 +86,7 @@ SUPPORTS = {  # the contacts' supports, for reactions
 }
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
                  for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
+SUPPORTS["plate-struck-by-ball"] = [Support("O", "plate", "[0, 0]", "pivot")]
 CONTACT_POINTS = {"half-disk-about-contact": {"C": "[-R*theta, 0]"}}  # a contact asked about, as a point
 ASSUMED = {"ball-in-bowl": ("R > r",), "cylinder-in-cylinder": ("R > r",), "ring-and-disk-inside": ("R > r",)}  # implied by rolling inside
 DOMAINS = {"half-disk-rocking": ("-pi/2", "pi/2"), "hemisphere-rocking": ("-pi/2", "pi/2"),

@@ -46,9 +46,6 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
 # Files the oracle models but cannot judge yet: its own gaps, not rbdsolve's (each an
 # expected failure, strict, so the entry goes the day the oracle learns it).
 ORACLE_GAPS = {
-    "plate-struck-by-ball": "the oracle's impact leaves a residual of 0.05 in its own constraint balance here (and on "
-                            "ball-hits-pinned-rod once values are added): not diagnosed; rbdsolve agrees with the hand "
-                            "derivation (test_golden)",
     "collar-on-horizontal-turning-rod": "the oracle takes the kink of V at r = 0 (the spring at zero length, the edge of "
                                         "the declared range, where ∂V/∂r jumps from k L to −k L) for an equilibrium: its "
                                         "central differences see ∂V/∂r = 0 there",
