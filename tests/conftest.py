@@ -60,7 +60,29 @@ def same(a: str, b: str) -> bool:
         return bool(x) == bool(y)  # a condition that always holds: "True"
     if isinstance(x, sp.core.relational.Relational) or isinstance(y, sp.core.relational.Relational):
         return _same_condition(x, y)
+    if isinstance(x, (sp.And, sp.Or)) or isinstance(y, (sp.And, sp.Or)):
+        return _same_compound(x, y)
     return sp.simplify(_canonical_radicands(x - y)) == 0
+
+
+def _same_compound(x, y) -> bool:
+    """Two conditions joined by & (or by |) the same: each part of one the same as a part
+    of the other (in any order), part for part."""
+    if type(x) is not type(y) or len(x.args) != len(y.args):
+        return False
+    left = list(y.args)
+    for a in x.args:
+        match = next((b for b in left if _same_part(a, b)), None)
+        if match is None:
+            return False
+        left.remove(match)
+    return True
+
+
+def _same_part(a, b) -> bool:
+    if isinstance(a, (sp.And, sp.Or)) or isinstance(b, (sp.And, sp.Or)):
+        return _same_compound(a, b)
+    return _same_condition(a, b)
 
 
 def _same_condition(x, y) -> bool:

@@ -56,8 +56,6 @@ ORACLE_GAPS = {
                                   "the torsion spring's couple to the particle as a force across it, which the oracle "
                                   "does not model (rbdsolve's N agrees with the hand's, test_golden)",
     "bob-on-offset-torsion-rod": "as pendulum-light-rod-torsion: a light rod's torsion spring, not in the oracle's supports",
-    "bead-in-loop-on-spring": "the oracle's guide (SUPPORTS) with a spring on the particle leaves a residual of 0.04 "
-                              "in its own balances (rbdsolve's N agrees with the hand's, test_golden): not diagnosed",
 }
 
 
