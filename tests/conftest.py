@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import time
 from fractions import Fraction
@@ -40,11 +41,17 @@ def read_back(text: str, names: dict[str, sp.Symbol] | None = None) -> sp.Expr:
     return expr
 
 
+_NAMES = re.compile(r"\b([A-Za-z_]\w*)\b(?!\s*\()")  # a name not called as a function
+
+
 def positive_names(*texts: str) -> dict[str, sp.Symbol]:
-    """Positive symbols for every free name in these strings, except t."""
-    out: dict[str, sp.Symbol] = {}
+    """Positive symbols for every free name in these strings, except t; a parameter
+    named as one of sympy's functions (beta, gamma: the angle of a slope) is a symbol."""
+    out: dict[str, sp.Symbol] = {name: sp.Symbol(name, positive=True) for text in texts
+                                 for name in _NAMES.findall(text)
+                                 if isinstance(getattr(sp, name, None), sp.FunctionClass)}
     for text in texts:
-        for s in getattr(sp.sympify(text), "free_symbols", set()):
+        for s in getattr(sp.sympify(text, locals=dict(out)), "free_symbols", set()):
             if s.name != "t":
                 out[s.name] = sp.Symbol(s.name, positive=True)
     out["t"] = sp.Symbol("t", real=True)

@@ -37,7 +37,7 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "disk-in-turning-ring", "slab-on-drum-angle",
               "spool-radius-of-gyration", "atwood-massive-pulley",
               "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
-              "incline-block-massive-pulley", "stepped-pulley",
+              "incline-block-massive-pulley", "double-incline-massive-pulley", "stepped-pulley",
               "table-block-massive-pulley",
               # a body's own points
               "inverted-rod-spring-at-point"}
