@@ -90,14 +90,49 @@ def _roots_in(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
     """The roots of ``factor`` in p: a polynomial of degree ≤ 2 in p by sympy's roots
     (the formula: a discriminant's I₃² s² − 4 (I₁ − I₃) m g h cos θ has ±s_c),
     without solve's checks of each root, which cost a third of a second there and
-    which the samples below make again; anything else by sympy's solve."""
+    which the samples below make again; one of higher degree factor by factor
+    (``_factor_by_factor``); anything else by sympy's solve."""
     if factor.is_polynomial(p):
         polynomial = sp.Poly(factor, p)
         if polynomial.degree() <= 2:
             found = sp.roots(polynomial)
             if sum(found.values()) == polynomial.degree():
                 return list(found)
+        else:
+            return _factor_by_factor(polynomial)
     return sp.solve(factor, p)
+
+
+def _factor_by_factor(polynomial: sp.Poly) -> list[sp.Expr]:
+    """The roots in p of a polynomial of degree 3 or more, factor by factor: a factor of
+    degree ≤ 2 by the formula, a quadratic in p² (k² − 3 k m Ω² + m² Ω⁴) as ±√u for each
+    root u of it (Ω_c = √(k (3 − √5)/(2 m))); NotImplementedError (the parameter left
+    undecided) where a factor needs Cardano's or Ferrari's formula: a root of a general
+    cubic or quartic in the parameters is no condition a reader can use. sympy's solve,
+    which this replaces for them, spent tens of seconds on a quadratic in r² with four
+    other parameters (a disk with a weight rolling in a track, its λ about an
+    equilibrium at acos c: 1.3 s became 33 s); the factors and the formula take
+    milliseconds. Decided by the structure, not by a budget."""
+    p, u = polynomial.gen, sp.Dummy("u")
+    found: list[sp.Expr] = []
+    for factor, _ in sp.factor_list(polynomial)[1]:
+        if factor.degree() <= 2:
+            found += _formula(factor)
+        elif factor.degree() == 4 and all(d % 2 == 0 for (d,) in factor.monoms()):
+            halved = sp.Poly(factor.as_expr().xreplace({p: sp.sqrt(u)}), u)
+            found += [s * sp.sqrt(root) for root in _formula(halved) for s in (1, -1)]
+        else:
+            raise NotImplementedError(f"a factor of degree {factor.degree()} in {p} needs a cubic or quartic "
+                                      "formula")
+    return found
+
+
+def _formula(polynomial: sp.Poly) -> list[sp.Expr]:
+    """The roots of a polynomial of degree ≤ 2 (sympy's roots: the formula)."""
+    found = sp.roots(polynomial)
+    if sum(found.values()) != polynomial.degree():
+        raise NotImplementedError(f"no roots found of {polynomial.as_expr()}")
+    return list(found)
 
 
 RADICAL_OPS = 40  # a longer expression with p under a radical is not given to sympy's solve

@@ -12,6 +12,8 @@ import os
 import subprocess
 import sys
 
+import sympy as sp
+
 ROOTS = """
 import sympy as sp
 from rbdsolve.model.build import build_model
@@ -39,3 +41,29 @@ def test_the_roots_are_the_same_whatever_the_hash_seed() -> None:
     first = _roots_with_seed(0)
     assert "a + b" in first
     assert first == _roots_with_seed(2)
+
+
+QUARTIC = ROOTS.replace(
+    "print(parameter_roots((c - a - b) / (c - sp.sqrt(a**2 + 2*a*b + b**2)), c, {}, model))",
+    "print(parameter_roots(c**4 - a*c**3 - b**2*c + a*b**2 + a**4, c, {}, model))\n"
+    "print(parameter_roots((c**2 - a**2)*(c - 2*a), c, {}, model))\n"
+    "print(parameter_roots(a**2 - 3*a*b*c**2 + b**2*c**4, c, {}, model))")
+
+
+def test_a_factor_of_degree_three_or_more_is_left_undecided_at_once() -> None:
+    """A quartic in c with no factor of lower degree (at a = b = 1 it is c⁴ − c³ − c + 2,
+    which has no rational root: ±1 and ±2 give 1, 5, 8, 28; sympy's factor_list finds no
+    factor of it either, checked here): no root is given (None: no condition printed),
+    where sympy's solve would write Ferrari's formula; a cubic that splits,
+    (c² − a²)(c − 2a), gives its roots inside c > 0, a and 2a; a quadratic in c²,
+    a² − 3ab c² + b² c⁴, gives c² = a (3 ∓ √5)/(2b) (the formula in c², by hand), the
+    two positive roots √(a (3 − √5)/(2b)) < √(a (3 + √5)/(2b))."""
+    a, b, c = sp.symbols("a b c", positive=True)
+    assert len(sp.factor_list(c**4 - a * c**3 - b**2 * c + a * b**2 + a**4)[1]) == 1
+    first, second, third = subprocess.run([sys.executable, "-c", QUARTIC], capture_output=True, text=True,
+                                          check=True).stdout.splitlines()
+    assert first == "None"
+    assert second == "[a, 2*a]"
+    roots = [sp.sympify(x, locals={"a": a, "b": b}) for x in third.strip("[]").split(", ")]
+    by_hand = [sp.sqrt(a * (3 - sp.sqrt(5)) / (2 * b)), sp.sqrt(a * (3 + sp.sqrt(5)) / (2 * b))]
+    assert len(roots) == 2 and all(sp.simplify(x - y) == 0 for x, y in zip(roots, by_hand))
