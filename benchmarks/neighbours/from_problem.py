@@ -53,6 +53,7 @@ AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1), "-x": (-1, 0, 0), "-y": 
 PLACED = {
     "ball-in-bowl": {"ball": ("(R - r)*[sin(theta), -cos(theta)]", "-(R - r)*theta/r")},
     "cylinder-in-cylinder": {"cylinder": ("(R - r)*[sin(theta), -cos(theta)]", "-(R - r)*theta/r")},
+    "weighted-disk-in-track": {"wheel": ("2*r*[sin(phi), -cos(phi)]", "-2*phi")},  # inside a track of radius 3 r
     "ring-on-drum": {"ring": ("(R + r)*[-sin(theta), cos(theta)]", "(R + r)*theta/r")},
     "wheel-on-incline": {"wheel": ("x*[cos(alpha), -sin(alpha)] + r*[sin(alpha), cos(alpha)]", "-x/r")},
     "yo-yo": {"yoyo": ("[r, -y]", "-y/r")},

@@ -31,6 +31,8 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     expr = expanded(expr)
     if expr.is_Rational:
         return expr
+    if expr.has(sp.acos, sp.asin, sp.atan):
+        expr = _of_inverses(expr)
     ops = sp.count_ops(expr)
     if ops > MAX_OPS:
         return expr
@@ -42,6 +44,20 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     if _has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(sp.factor_terms(expr))
+
+
+def _of_inverses(expr: sp.Expr) -> sp.Expr:
+    """sin and cos of a multiple of an inverse function written out in its argument,
+    cos(2 acos c) = 2 c² − 1, sin(2 acos c) = 2 c √(1 − c²), cos(3 acos c) = 4 c³ − 3 c
+    (sympy's ``expand_trig``; sympy itself writes sin(acos c) = √(1 − c²) but keeps the
+    multiples): an equilibrium θ₀ = acos c put into a form in 2θ, as M and K about it,
+    reads as an exam writes it, in c."""
+    def multiple(f: sp.Expr) -> bool:
+        n, inner = f.args[0].as_coeff_Mul()
+        return n.is_Integer and 1 < abs(n) <= 4 and isinstance(inner, (sp.acos, sp.asin, sp.atan))
+
+    found = {f: sp.expand_trig(f) for f in expr.atoms(sp.sin, sp.cos) if multiple(f)}
+    return expanded(expr.xreplace(found)) if found else expr
 
 
 def _folded(expr: sp.Expr, ops: int) -> sp.Expr:
