@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import time
 from fractions import Fraction
@@ -40,11 +41,17 @@ def read_back(text: str, names: dict[str, sp.Symbol] | None = None) -> sp.Expr:
     return expr
 
 
+_NAMES = re.compile(r"\b([A-Za-z_]\w*)\b(?!\s*\()")  # a name not called as a function
+
+
 def positive_names(*texts: str) -> dict[str, sp.Symbol]:
-    """Positive symbols for every free name in these strings, except t."""
-    out: dict[str, sp.Symbol] = {}
+    """Positive symbols for every free name in these strings, except t; a parameter
+    named as one of sympy's functions (beta, gamma: the angle of a slope) is a symbol."""
+    out: dict[str, sp.Symbol] = {name: sp.Symbol(name, positive=True) for text in texts
+                                 for name in _NAMES.findall(text)
+                                 if isinstance(getattr(sp, name, None), sp.FunctionClass)}
     for text in texts:
-        for s in getattr(sp.sympify(text), "free_symbols", set()):
+        for s in getattr(sp.sympify(text, locals=dict(out)), "free_symbols", set()):
             if s.name != "t":
                 out[s.name] = sp.Symbol(s.name, positive=True)
     out["t"] = sp.Symbol("t", real=True)
@@ -60,7 +67,29 @@ def same(a: str, b: str) -> bool:
         return bool(x) == bool(y)  # a condition that always holds: "True"
     if isinstance(x, sp.core.relational.Relational) or isinstance(y, sp.core.relational.Relational):
         return _same_condition(x, y)
+    if isinstance(x, (sp.And, sp.Or)) or isinstance(y, (sp.And, sp.Or)):
+        return _same_compound(x, y)
     return sp.simplify(_canonical_radicands(x - y)) == 0
+
+
+def _same_compound(x, y) -> bool:
+    """Two conditions joined by & (or by |) the same: each part of one the same as a part
+    of the other (in any order), part for part."""
+    if type(x) is not type(y) or len(x.args) != len(y.args):
+        return False
+    left = list(y.args)
+    for a in x.args:
+        match = next((b for b in left if _same_part(a, b)), None)
+        if match is None:
+            return False
+        left.remove(match)
+    return True
+
+
+def _same_part(a, b) -> bool:
+    if isinstance(a, (sp.And, sp.Or)) or isinstance(b, (sp.And, sp.Or)):
+        return _same_compound(a, b)
+    return _same_condition(a, b)
 
 
 def _same_condition(x, y) -> bool:

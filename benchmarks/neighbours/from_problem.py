@@ -86,6 +86,7 @@ SUPPORTS = {  # the contacts' supports, for reactions
 }
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
                  for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
+SUPPORTS["plate-struck-by-ball"] = [Support("O", "plate", "[0, 0]", "pivot")]
 CONTACT_POINTS = {"half-disk-about-contact": {"C": "[-R*theta, 0]"}}  # a contact asked about, as a point
 ASSUMED = {"ball-in-bowl": ("R > r",), "cylinder-in-cylinder": ("R > r",), "ring-and-disk-inside": ("R > r",)}  # implied by rolling inside
 DOMAINS = {"half-disk-rocking": ("-pi/2", "pi/2"), "hemisphere-rocking": ("-pi/2", "pi/2"),
@@ -130,7 +131,9 @@ def scene(path: Path) -> Scene:
     for k, v in (doc.get("prescribed") or {}).items():
         points = {p: re.sub(rf"\b{k}\b", f"({v})", e) for p, e in points.items()}
     bodies = [_body(n, b, PLACED.get(name, {})) for n, b in (doc.get("bodies") or {}).items()]
-    springs = [_spring(n, s) for n, s in (doc.get("springs") or {}).items()]
+    centres = {b["at"]: n for n, b in (doc.get("bodies") or {}).items() if isinstance(b, dict)
+               and isinstance(b.get("at"), str)}
+    springs = [_spring(n, s, centres) for n, s in (doc.get("springs") or {}).items()]
     questions = [Question(*(next(iter(q.items())) if isinstance(q, dict) else (q, {}))) for q in doc["questions"]]
     planar = all(len(str(_vec(v)).split(",")) < 3 for v in (doc.get("points") or {}).values()) and "gravity" not in doc \
         or len(str(doc.get("gravity", "[0, -g]")).split(",")) < 3
@@ -189,8 +192,11 @@ def _body(name: str, b: dict, placed: dict) -> Body:
     return body
 
 
-def _spring(name: str, s: dict) -> Spring:
+def _spring(name: str, s: dict, centres: dict) -> Spring:
+    """A spring, each end on the body whose centre (``at``) it names, else on the ground
+    (the oracle's reactions apply its force to that body: oracle/reactions.py)."""
     if "angle" in s:
         return Spring(name, str(s["stiffness"]), angle=str(s["angle"]), rest=str(s.get("rest", 0)))
     a, b = s["between"]
-    return Spring(name, str(s["stiffness"]), ends=(_vec(a), _vec(b)), natural_length=str(s.get("natural_length", 0)))
+    return Spring(name, str(s["stiffness"]), ends=(_vec(a), _vec(b)), on=tuple(centres.get(e) if isinstance(e, str) else None for e in (a, b)),
+                  natural_length=str(s.get("natural_length", 0)))

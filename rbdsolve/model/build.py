@@ -197,16 +197,29 @@ class Model:
 
     def depends_on_time(self) -> bool:
         """Does the scene move by itself (t in a body's position or angle, a spring, gravity
-        or an inertial potential)? Points alone carry no energy. A position not made yet
-        is made from the file's points and origins, which cannot bring in t where none
-        of them names t or a prescribed motion (``_timed``): it is then not made here."""
-        positions = self._positions() if _timed(self.problem) else [
-            b.position for b in self.bodies if Deferred.made(b, "position") and b.position is not None]
-        parts = [*positions, *(b.rotation for b in self.bodies if not b.turns),
-                 *(s.stretch for s in self.springs), *(x.value for x in self.inertial)]
-        parts += [q for x in self.loads for q in x.generalized]  # a force given as a function of t
-        parts += [self.gravity] if self.gravity is not None else []
-        return _holds(parts, t) or any(turning_holds_time(b, self.state) for b in self.bodies if b.turns)
+        or an inertial potential)? Points alone carry no energy."""
+        return _holds([x for _, x in self._parts_in_time()], t) or any(
+            turning_holds_time(b, self.state) for b in self.bodies if b.turns)
+
+    def moving_parts(self) -> tuple[str, ...]:
+        """What of the scene moves by itself, as a message names it ("the angle of body
+        'disk'", "spring 's'", "gravity"): ``depends_on_time``'s parts that hold t."""
+        names = [what for what, x in self._parts_in_time() if _holds([x], t)]
+        names += [f"the turns of body '{b.name}'" for b in self.bodies if b.turns and turning_holds_time(b, self.state)]
+        return tuple(dict.fromkeys(names))
+
+    def _parts_in_time(self) -> list[tuple[str, object]]:
+        """Each part that may hold t, with its name. A position not made yet is made from
+        the file's points and origins, which cannot bring in t where none of them names t
+        or a prescribed motion (``_timed``): it is then not made here."""
+        placed = self.bodies if _timed(self.problem) else [b for b in self.bodies if Deferred.made(b, "position")]
+        parts: list[tuple[str, object]] = [(f"the position of body '{b.name}'", b.position) for b in placed
+                                           if b.position is not None]
+        parts += [(f"the angle of body '{b.name}'", b.rotation) for b in self.bodies if not b.turns]
+        parts += [(f"spring '{s.name}'", s.stretch) for s in self.springs]
+        parts += [(x.name, x.value) for x in self.inertial]
+        parts += [(f"{x.kind} '{x.name}'", q) for x in self.loads for q in x.generalized]  # a force of t
+        return parts + ([("gravity", self.gravity)] if self.gravity is not None else [])
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]

@@ -37,7 +37,7 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "disk-in-turning-ring", "slab-on-drum-angle",
               "spool-radius-of-gyration", "atwood-massive-pulley",
               "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
-              "incline-block-massive-pulley", "stepped-pulley",
+              "incline-block-massive-pulley", "double-incline-massive-pulley", "stepped-pulley",
               "table-block-massive-pulley",
               # a body's own points
               "inverted-rod-spring-at-point"}
@@ -46,9 +46,6 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
 # Files the oracle models but cannot judge yet: its own gaps, not rbdsolve's (each an
 # expected failure, strict, so the entry goes the day the oracle learns it).
 ORACLE_GAPS = {
-    "plate-struck-by-ball": "the oracle's impact leaves a residual of 0.05 in its own constraint balance here (and on "
-                            "ball-hits-pinned-rod once values are added): not diagnosed; rbdsolve agrees with the hand "
-                            "derivation (test_golden)",
     "collar-on-horizontal-turning-rod": "the oracle takes the kink of V at r = 0 (the spring at zero length, the edge of "
                                         "the declared range, where ∂V/∂r jumps from k L to −k L) for an equilibrium: its "
                                         "central differences see ∂V/∂r = 0 there",
@@ -59,8 +56,6 @@ ORACLE_GAPS = {
                                   "the torsion spring's couple to the particle as a force across it, which the oracle "
                                   "does not model (rbdsolve's N agrees with the hand's, test_golden)",
     "bob-on-offset-torsion-rod": "as pendulum-light-rod-torsion: a light rod's torsion spring, not in the oracle's supports",
-    "bead-in-loop-on-spring": "the oracle's guide (SUPPORTS) with a spring on the particle leaves a residual of 0.04 "
-                              "in its own balances (rbdsolve's N agrees with the hand's, test_golden): not diagnosed",
 }
 
 

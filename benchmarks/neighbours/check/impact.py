@@ -53,7 +53,8 @@ def check(ctx: Context, question, result: dict) -> None:
     for i in points_for(ctx, result):
         s, q, qd0, out, cols, imp = oracle(ctx, question, i)
         if out["residual"] > 1e-15:
-            raise AssertionError(f"the oracle's bodies leave the coordinates' motions (residual {fmt(out['residual'])})")
+            raise AssertionError(f"the oracle's bodies leave the coordinates' motions (residual {fmt(out['residual'])}): "
+                                 "a support the coordinates imply is not among the oracle's (from_problem.SUPPORTS)")
         p = ctx.points[i]
         rd = lambda x: ctx.reader.value(x, p)  # noqa: E731
         vscale = max([abs(x) for x in out["V0"] + out["V1"]] + [mpmath.mpf(1)])

@@ -191,12 +191,20 @@ def _leaves(f: Force, names: Symbols, centre: sp.Matrix, force: sp.Matrix, decid
                          f"does not leave the body on its {w.side}: give the side across the pull", w.loc)
     sign = decide(along)
     if sign is None:
+        deciding = -along if along.could_extract_minus_sign() else along
         raise InputError(f"force '{f.name}': whether the string leaves the body {w.side} its centre on the "
-                         f"left or on the right of the pull depends on the sign of "
-                         f"{to_unicode(-along if along.could_extract_minus_sign() else along)}; give an "
-                         "assumption that decides it (such as 'assumptions: [alpha < pi/2]'), or a value, or the "
-                         "point where it leaves with 'at:'", w.loc)
+                         f"left or on the right of the pull depends on the sign of {to_unicode(deciding)}; give an "
+                         f"assumption that decides it (such as 'assumptions: {_deciding(deciding)}'), or a value, "
+                         "or the point where it leaves with 'at:'", w.loc)
     return centre + rho * sign * left
+
+
+def _deciding(value: sp.Expr) -> str:
+    """An assumption, as a file writes it, that fixes the sign of ``value``: [alpha < pi/2]
+    for cos α (the angle of a slope or a pull), else [value > 0]."""
+    if isinstance(value, sp.cos) and value.args[0].is_Symbol:
+        return f"[{value.args[0]} < pi/2]"
+    return f"[{value} > 0]"
 
 
 def free_forces(model) -> tuple[sp.Expr, ...] | None:

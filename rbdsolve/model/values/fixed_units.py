@@ -13,7 +13,9 @@ coordinates are angles (``units.known_dimensions``). With q_i an angle in radian
 - q̇ and q̈ of an angle are rad/s and rad/s², q̇² rad²/s² (of a length m/s, m/s², m²/s²);
 - a moment (of gravity, of a support: M_C, M_O) is a torque, N·m;
 - a growth rate γ = √(−λ) is in 1/s (e^(γt) grows; nothing turns), an eigenvalue λ = ω²
-  of small oscillations in 1/s² (λ = 0 too, which has no dimension to read);
+  of small oscillations in 1/s² (λ = 0 too, which has no dimension to read), and its
+  frequency ω in rad/s (read from ω's expression, it has none where a parameter given
+  as a bare number, a frame's rate Ω = 8.9, carries no dimension);
 - the function F a frame's Lagrangian differs by, L' = L + dF/dt, is an action, J·s
   (F = 0 too); the point an inertia is taken about is a place, in m (the origin too);
 - a parameter that is a torsional spring's stiffness is in N·m/rad, and so is each
@@ -81,6 +83,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return "1/s"
     if kind == "modes" and key == "eigenvalues":
         return "1/s²"
+    if kind == "modes" and key == "frequencies":  # ω = √λ, whatever units the parameters were given in
+        return "rad/s"
     if kind == "eom" and key == "total_derivative":
         return "J·s"
     if kind == "inertia" and named == ["about"]:

@@ -4,8 +4,12 @@ work by hand (or absent where the load changes with t)."""
 
 from __future__ import annotations
 
+import re
+
+import pytest
 import sympy as sp
 
+from rbdsolve.errors import InputError
 from rbdsolve.model.build import build_model
 from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.problem import load_file, load_text
@@ -54,6 +58,9 @@ def test_a_wound_side_the_signs_do_not_decide_is_refused_with_the_way_out() -> N
         raise AssertionError("the side below the axle was taken without knowing the sign of cos α")
     assert "depends on the sign of cos(α)" in message and "alpha < pi/2" in message
     assert build_model(load_text(text.replace("questions:", "values: {alpha: pi/3}\nquestions:"), "s.yaml")).loads
+    renamed = re.sub(r"\balpha\b", "beta", text)  # the way out names the file's own angle
+    with pytest.raises(InputError, match=re.escape("such as 'assumptions: [beta < pi/2]'")):
+        build_model(load_text(renamed, "s.yaml"))
 
 
 ROD = """\

@@ -38,3 +38,10 @@ def test_rates_of_an_angle() -> None:
 def test_an_angular_impulse_and_a_growth_rate() -> None:
     assert fixed_unit("impact", ("impulses", "theta"), {"theta": NUMBER}) == "N·m·s"
     assert fixed_unit("modes", ("growth_rates", 0), {"theta": NUMBER}) == "1/s"
+
+
+def test_a_small_oscillation_frequency_is_in_radians_per_second_whatever_the_parameters() -> None:
+    """ω = √λ with λ in 1/s²: rad/s even where its expression holds a parameter given as a
+    bare number (a frame's rate Ω = 8.9 set on the command line), as the numeric route's."""
+    assert fixed_unit("modes", ("about", 0, "frequencies", 0), {"theta": NUMBER}) == "rad/s"
+    assert fixed_unit("modes", ("about", 0, "eigenvalues", 0), {"theta": NUMBER}) == "1/s²"

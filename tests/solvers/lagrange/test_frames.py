@@ -76,7 +76,18 @@ def test_a_spring_to_the_axis_in_the_turning_frame() -> None:
 
 def test_a_spring_anchored_off_the_axis_is_not_still_in_the_frame() -> None:
     (modes,) = solve(SLOT.replace("A: [0, 0]", "A: [1, 0]"))
-    assert modes.error is not None and "still depends on t" in modes.error
+    assert modes.error is not None and "still depends on t: spring 's' moves in it" in modes.error
+    assert "planar 'angle'" not in modes.error  # no body turns: no word on orientations
+
+
+def test_a_planar_angle_in_a_turning_frame_is_refused_with_the_orientation_that_follows_it() -> None:
+    """The disk hinged to a turning shaft (DISK_ON_SHAFT below), written with ``angle:
+    theta`` (a turn about z in the scene's axes) where it swings about the pin that turns with the shaft: in the
+    frame its angle is θ − Ω t, so it is not still there; the message names the disk's
+    angle and the way out, its orientation as turns, the frame's first."""
+    equilibria = solve(DISK_ON_SHAFT.replace("axis: x, orientation: [[z, Omega*t], [y, -theta]]", "angle: theta"))[0]
+    assert "the angle of body 'disk' moves in it" in equilibria.error
+    assert "orientation: [[z, Omega*t], [y, -theta]]" in equilibria.error
 
 
 def test_gyroscopic_coupling_is_answered_with_g() -> None:
