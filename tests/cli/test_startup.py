@@ -16,7 +16,8 @@ HEAVY = ("sympy", "numpy", "scipy", "matplotlib")
 COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imported when its command runs
 # imported only for a scene or question that uses them: seed problem 1 has none
 FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.plane_rolling", "rbdsolve.solvers.modes.amplitude",
-            "rbdsolve.solvers.conditions.monotone")
+            "rbdsolve.solvers.conditions.monotone", "rbdsolve.model.energies.frames", "rbdsolve.model.summary.frame",
+            "rbdsolve.solvers.modes.gyroscopic", "rbdsolve.solvers.modes.routh", "rbdsolve.model.energies.gyroscopic")
 TERMINAL = ("rich.console",)  # a solution written to a pipe or a file is laid out without it (render/text.py)
 WATCHED = HEAVY + COMMAND_MODULES + FEATURES + TERMINAL
 
@@ -48,10 +49,30 @@ def test_the_probe_sees_an_import() -> None:
     loaded = loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
     assert "sympy" in loaded
     assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
-    assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ
+    assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ, no frame, no spin
 
 
 def test_a_solution_to_a_pipe_loads_no_rich_console() -> None:
     """Text without colour (standard output a pipe here) is laid out without rich's console."""
     loaded = loaded_after("solve", "--quiet", str(SEED / "p1-two-rods.yaml"))
     assert "sympy" in loaded and not loaded & set(TERMINAL)
+
+
+def ground_types_after(env: dict[str, str]) -> str:
+    """sympy's ground types, and whether python-flint was imported, in a fresh
+    interpreter that first makes the rbdsolve process's settings."""
+    code = ("import sys; from rbdsolve.cli.app import process_settings\n"
+            "process_settings()\n"
+            "from sympy.external.gmpy import GROUND_TYPES\n"
+            "print(GROUND_TYPES, 'flint' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True, cwd=ROOT,
+                          env={"PYTHONPATH": str(ROOT), **env}, timeout=60)
+    return done.stdout.strip()
+
+
+def test_the_process_takes_python_integers_unless_told() -> None:
+    """python-flint is installed (the certified roots use it), so sympy would take its
+    integers and import it; the rbdsolve process takes Python's, and a user's
+    SYMPY_GROUND_TYPES still decides."""
+    assert ground_types_after({}) == "python False"
+    assert ground_types_after({"SYMPY_GROUND_TYPES": "flint"}) == "flint True"

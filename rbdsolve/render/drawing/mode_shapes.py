@@ -67,9 +67,9 @@ def mode_shapes(model: Model, question: Question) -> ModeShapes:
     require_planar(model)
     filled = model.with_values({name: Fraction(1) for name in unvalued(model)})
     seen = _in_frame(filled, question)
-    from rbdsolve.solvers.modes import gyroscopic
+    from rbdsolve.solvers.modes import gyroscopic_terms
 
-    if gyroscopic.applies(question, seen):
+    if gyroscopic_terms.applies(question, seen):
         raise UnsolvedError("the modes cannot be drawn: the scene has gyroscopic terms (a turning frame's Coriolis "
                           "terms, a spin), so its small motions are whirls, not normal modes with one shape each")
     about, notes = equilibrium_for_modes(question, seen)

@@ -19,7 +19,6 @@ from rbdsolve.form.tidy import collect_in, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energies.energy import kinetic_energy, memoized, potential_energy
-from rbdsolve.model.energies.frames import frame_lagrangian, frame_motion
 from rbdsolve.model.energies.loads import free_forces
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
@@ -99,6 +98,9 @@ def _in_frame(model: Model, frame, equations: tuple[sp.Expr, ...]) -> tuple[Fram
     """L' in the frame, its equations, and the two checks: the same equations, and
     L − L' = dF/dt."""
     refuse_loads_in_frame(model, frame.name)
+    # a frame's machinery, loaded only where a frame is asked
+    from rbdsolve.model.energies.frames import frame_lagrangian, frame_motion
+
     seen = frame_lagrangian(model, frame_motion(model, frame))
     primed = lagrange_equations(model, seen.L)
     agree = all(_vanishes(a - b) for a, b in zip(primed, equations))

@@ -16,17 +16,19 @@ and V' hold no t (a body's orientation composes the frame's turn with its own).
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
-from rbdsolve.model.energies.frames import FrameMotion, frame_motion, in_frame
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.model.summary.frame import frame_steps
 from rbdsolve.problem.schema import Frame, Question
 from rbdsolve.report.steps import Solution
+
+if TYPE_CHECKING:
+    from rbdsolve.model.energies.frames import FrameMotion
 
 
 def frame_of(question: Question) -> str | None:
@@ -47,6 +49,9 @@ def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
     them and each one's check then share one seen model, and so its memoized T, V and
     equilibria (solvers/equilibria/exact.py ``listing``), as the questions of a scene
     without a frame share the model itself."""
+    # a frame's machinery, loaded only where a question names a frame
+    from rbdsolve.model.energies.frames import frame_motion, in_frame
+
     motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
     if seen.depends_on_time():
@@ -72,6 +77,8 @@ def _still_moving(seen: Model, frame: Frame) -> str:
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
     """Run ``solve`` on the model as seen in the question's frame, its steps after
     the ones that say what the frame adds."""
+    from rbdsolve.model.summary.frame import frame_steps
+
     frame = model.problem.frame(frame_of(question))
     refuse_loads_in_frame(model, frame.name)
     motion, seen = _seen(model, frame)

@@ -39,7 +39,7 @@ from rbdsolve.model.energies.energy import mass_matrix, potential_energy, stiffn
 from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.modes import gyroscopic
+from rbdsolve.solvers.modes import gyroscopic_terms
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
@@ -70,13 +70,15 @@ def _det(labels) -> sp.Expr:
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "small oscillations")
-    if gyroscopic.applies(question, model):
+    if gyroscopic_terms.applies(question, model):
+        from rbdsolve.solvers.modes import gyroscopic  # that route, only for such a scene
+
         return gyroscopic.solve(question, model)
     first = asked(model, question)
     if question.options.each:
         return _at_each(model, first)
     at, notes = exact_equilibrium(question, model)
-    notes += gyroscopic.spin_notes(question, model)
+    notes += gyroscopic_terms.spin_notes(question, model)
     where = existence(at, model, first)
     missing = absent(at, where, model)
     if missing:
@@ -94,7 +96,7 @@ def partial(question: Question, model: Model) -> str | None:
     ``about: each``, or ``about: {equilibrium: N}``), why its list of equilibria would be
     partial; about a given point, why its eigenvalues would take minutes (``_slow_spectrum``).
     A scene with gyroscopic terms has its own exact route and no such check."""
-    if gyroscopic.applies(question, model):
+    if gyroscopic_terms.applies(question, model):
         return None  # its own exact route (Routh, det(K − ω²M + iωG)), not this one's spectrum
     if question.options.about is None:
         return incomplete(model)

@@ -41,13 +41,12 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.energies.gyroscopic import gyroscopic_matrix, has_gyroscopic_terms
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.answers import GyroscopicCase, GyroscopicModesAnswers
-from rbdsolve.solvers.modes.gyroscopic_steps import cyclic_note, gyroscopic_steps
+from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_steps
 from rbdsolve.solvers.modes.routh import Linear, linearize
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters
 from rbdsolve.solvers.conditions.conditions import Piece, changes, critical_values, partition, sign_on
@@ -57,33 +56,6 @@ from rbdsolve.form.zero import simplifies_to_zero
 
 OMEGA = sp.Symbol("omega")  # the variable of det(K − ω²M + iωG) (the JSON's characteristic)
 LAMBDA = sp.Symbol("lamda")
-
-
-def applies(question: Question, model: Model) -> bool:
-    """Steady rates in 'about' (Routh), or terms linear in the rates that couple the
-    coordinates (G ≠ 0 somewhere): then the gyroscopic route answers. Only a body turned
-    by a sequence of turns (a spin) or a frame's Coriolis terms bring such terms into a
-    scene without t."""
-    if question.options.steady:
-        return True
-    if len(model.q) < 2 or not (model.gyroscopic or any(b.turns for b in model.bodies)):
-        return False  # only these can have such terms in a still scene: T is not built otherwise
-    return has_gyroscopic_terms(model) and gyroscopic_matrix(model) != sp.zeros(len(model.q))
-
-
-def spin_notes(question: Question, model: Model) -> tuple[str, ...]:
-    """A spin angle (a coordinate in a body's turns that L does not hold) given a value
-    in 'about': the modes are those of the body at rest, said so, with the form for a
-    steady spin."""
-    turned = {s for b in model.bodies for _, angle in b.turns for s in angle.free_symbols}
-    given = [n for n, _ in (question.options.about or ())]
-    spins = [n for n, q in zip(model.coordinate_names(), model.q) if n in given and q in turned]
-    if not spins:
-        return ()
-    from rbdsolve.solvers.modes.routh import lagrangian
-
-    L = lagrangian(model)
-    return tuple(cyclic_note(n) for n, q in zip(model.coordinate_names(), model.q) if n in spins and not L.has(q))
 
 
 def solve(question: Question, model: Model) -> Solution:

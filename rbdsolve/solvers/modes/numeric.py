@@ -45,7 +45,7 @@ from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.form.arrange import configuration
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.modes import gyroscopic
+from rbdsolve.solvers.modes import gyroscopic_terms
 from rbdsolve.solvers.modes.answers import (EachModesAnswers, Motion, NumericModesAnswers, Skipped, none_answered,
                                              with_amplitude_check)
 from rbdsolve.solvers.modes.spaces import analyse, warnings
@@ -63,14 +63,14 @@ EPS = float(np.finfo(float).eps)
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     require_static(model, "small oscillations")
-    if gyroscopic.applies(question, model):
+    if gyroscopic_terms.applies(question, model):
         from rbdsolve.solvers.modes import gyroscopic_numeric
 
         return gyroscopic_numeric.solve(question, model)
     if question.options.each:
         return _at_each(model)
     about, notes = equilibrium_for_modes(question, model)
-    notes = (*notes, *gyroscopic.spin_notes(question, model))
+    notes = (*notes, *gyroscopic_terms.spin_notes(question, model))
     answers, steps, warned, estimate = modes_at(about, model)
     return with_amplitude_check(question, model, Solution("modes", Route.NUMERIC, answers, steps,
                                                           warnings=tuple(notes) + warned, error_estimate=estimate))
