@@ -54,24 +54,16 @@ def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
 
     motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
-    if seen.depends_on_time():
-        raise UnsolvedError(_still_moving(seen, frame))
+    if seen.depends_on_time():  # what still moves, and for a planar angle the orientation that follows F
+        moving = seen.moving_parts() or ("the scene",)
+        text = (f"in frame '{frame.name}' the scene still depends on t: {', '.join(moving)} "
+                f"{'moves' if len(moving) == 1 else 'move'} in it, so it has no relative equilibria there")
+        if frame.axis is not None and any(x.startswith("the angle of") for x in moving):
+            text += ("; a body's planar 'angle' turns it about z in the scene's axes, not with the frame: where "
+                     "the body turns with the frame, give its orientation as turns, the frame's turn first, such as "
+                     f"orientation: [[{frame.axis.text}, {frame.rate.text}*t], [y, -theta]] (docs/format.md, frames)")
+        raise UnsolvedError(text)
     return motion, seen
-
-
-def _still_moving(seen: Model, frame: Frame) -> str:
-    """Why a scene has no relative equilibria in the frame: what still moves in it, and,
-    for a body turned by a planar ``angle`` in a turning frame (about z in the scene's
-    axes, not with the frame: a disk swinging on a pin that turns with the shaft), the
-    orientation that can follow the frame."""
-    moving = seen.moving_parts() or ("the scene",)
-    text = (f"in frame '{frame.name}' the scene still depends on t: {', '.join(moving)} "
-            f"{'moves' if len(moving) == 1 else 'move'} in it, so it has no relative equilibria there")
-    if frame.axis is not None and any(x.startswith("the angle of") for x in moving):
-        text += ("; a body's planar 'angle' turns it about z in the scene's axes, not with the frame: where the "
-                 "body turns with the frame, give its orientation as turns, the frame's turn first, such as "
-                 f"orientation: [[{frame.axis.text}, {frame.rate.text}*t], [y, -theta]] (docs/format.md, frames)")
-    return text
 
 
 def solve_in_frame(solve, question: Question, model: Model, options) -> Solution:
