@@ -24,6 +24,10 @@ Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three t
   (M + δM lies between (1 − η) M and (1 + η) M: Rayleigh quotients). Where η ≥ 1 the
   rounding of M may be as large as its smallest eigenvalue: the question is refused.
 
+To these, the equilibrium's own error (``location.py``): at the point used, ∂V/∂q in 50
+digits is not 0 where the equilibrium is known only to floating point, and each λ moves
+with the point, twice its first-order move Σ ∂λ/∂q_j δq_j.
+
 An eigenvalue within its bound of zero is neutral (zero within rounding); its relative
 error is undefined (None). ``error_estimate`` is the largest relative bound of the
 others. A negative λ is reported by its growth rate γ = √(−λ). Clusters of eigenvalues
@@ -48,6 +52,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.solvers.modes import gyroscopic_terms
 from rbdsolve.solvers.modes.answers import (EachModesAnswers, Motion, NumericModesAnswers, Skipped, none_answered,
                                              with_amplitude_check)
+from rbdsolve.solvers.modes.location import location_bounds
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static
@@ -111,6 +116,7 @@ def modes_at(about: dict, model: Model):
     if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
         raise UnsolvedError(singular)
     lam, vectors, absolute, pencil = solve_pencil(K, M)
+    absolute = absolute + location_bounds(model, about, K, lam, lambda at: linearized(model, at)[:2])
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
     spaces = analyse(pencil, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
