@@ -173,11 +173,30 @@ def _cancel_over(expr: sp.Expr, rational: bool, any_form: bool) -> sp.Expr:
     (√3) unless ``rational`` says it has none. ``any_form``: the numerator and
     denominator cancelled as they stand, without ``cancel``'s own sign and common-factor
     rewriting of the whole fraction first (6x cheaper; the same fraction, with its
-    constant perhaps on the other side)."""
-    if rational and any_form:
-        c, top, bottom = sp.cancel(sp.fraction(expr))
-        return c * top / bottom
+    constant perhaps on the other side).
+
+    A quotient of polynomials in symbols with rational coefficients is cancelled as the
+    pair (numerator, denominator). ``cancel`` of the whole expression first rewrites it
+    with ``factor_terms`` (most of its time), then cancels its numerator and denominator
+    the same way: both end at P/Q with P and Q coprime in ℤ[x, y, …] and Q's leading
+    coefficient positive, which the fraction alone fixes (ℤ[x, y, …] factors uniquely,
+    its units ±1), so the result is the same expression. Where none of the pair's
+    symbols is left once expanded (the pair is a number), ``cancel`` returns the pair as
+    it came but the whole expression expanded: that one, as before."""
+    if rational and (any_form or _polynomial_quotient(expr)):
+        top, bottom = sp.fraction(expr)
+        c, p, q = sp.cancel((top, bottom))
+        if any_form or not (p is top and q is bottom):  # (a pair with no symbol left comes back as it was)
+            return c * p / q
     return sp.cancel(expr) if rational else sp.cancel(expr, extension=True)
+
+
+def _polynomial_quotient(expr: sp.Expr) -> bool:
+    """Sums, products and integer powers of symbols and rationals only: the pair's
+    generators are its symbols whichever way it is written (a root of a symbol, √l
+    beside l, or a function of one, would make generators of its own forms)."""
+    return all(isinstance(e, (sp.Add, sp.Mul, sp.Symbol, sp.Rational)) or (e.is_Pow and e.exp.is_Integer)
+               for e in sp.preorder_traversal(expr))
 
 
 def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: bool,
