@@ -130,19 +130,35 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     applied (numerator and denominator reduced to degree < 2 in sin α); radicals such
     as √3 are algebraic numbers. So the result is zero exactly when the expression is.
     For answers built from solved linear systems, where ``tidy`` would swell."""
-    return _leading_plus(sp.factor_terms(_cancelled(expr, False)))
+    return _leading_plus(sp.factor_terms(_cancelled(expr, False)[0]))
+
+
+def tidy_fraction_parts(expr: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``sp.fraction(tidy_fraction(expr))``, numerator and denominator each the same once
+    expanded, for a caller that expands them. Over the rationals the cancelled fraction
+    is P/Q with P and Q coprime in ℤ[x, …] and Q's leading coefficient positive;
+    ``factor_terms`` pulls each one's content (coprime integers) and common factors
+    apart, and ``_leading_plus`` trades signs among the numerator's factors, so
+    ``fraction`` finds P and Q again: that rewriting is skipped there. (Not where P/Q is
+    a sum: over a number Q, sympy spreads 1/Q over P's terms, and ``fraction`` finds Q
+    no more.)"""
+    value, rational = _cancelled(expr, False)
+    if rational and not value.is_Add:
+        return sp.fraction(value)
+    return sp.fraction(_leading_plus(sp.factor_terms(value)))
 
 
 def cancelled(expr: sp.Expr) -> sp.Expr:
     """``tidy_fraction``'s one cancelled fraction, before its common factors are pulled
     out and in whichever of its equal forms comes cheapest (a constant may sit on
     either side): for a caller that expands and factors each part itself."""
-    return _cancelled(expr, True)
+    return _cancelled(expr, True)[0]
 
 
-def _cancelled(expr: sp.Expr, any_form: bool) -> sp.Expr:
+def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
+    """The cancelled fraction, and whether it was cancelled over the rationals."""
     if expr.is_Rational:
-        return expr
+        return expr, True
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
@@ -151,7 +167,7 @@ def _cancelled(expr: sp.Expr, any_form: bool) -> sp.Expr:
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
         value = _reduced(value, pairs, rational, any_form)
-    return value.xreplace(back)
+    return value.xreplace(back), rational
 
 
 def _rational(expr: sp.Expr) -> bool:

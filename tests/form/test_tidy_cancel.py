@@ -49,3 +49,20 @@ def test_roots_and_functions_are_left_to_cancel():
     assert not _polynomial_quotient(sp.sqrt(a) * b + a ** sp.Rational(3, 2))
     assert not _polynomial_quotient(sp.sin(a) / (b + 1))
     assert _polynomial_quotient((a**2 + b) / (3 * c - 1))
+
+
+def test_parts_are_the_fractions_parts_once_expanded():
+    from rbdsolve.form.tidy import tidy_fraction, tidy_fraction_parts
+
+    rng = random.Random(29)
+    s, co = sp.sin(th), sp.cos(th)
+
+    def poly():
+        return sp.Add(*[sp.Rational(rng.randint(-9, 9), rng.randint(1, 4))
+                        * sp.Mul(*[f ** rng.randint(0, 2) for f in (a, b, s, co)]) for _ in range(rng.randint(1, 3))])
+
+    cases = [(a / 3 + 2 * b / 3) / 5, -(a + b) / (2 * c), (s**2 + co**2) * a / (3 * b - 6 * c)]
+    cases += [poly() / poly() for _ in range(40)]
+    for expr in cases:
+        old = [sp.expand(x) for x in sp.fraction(tidy_fraction(expr))]
+        assert [sp.expand(x) for x in tidy_fraction_parts(expr)] == old, expr
