@@ -156,13 +156,21 @@ def cancelled(expr: sp.Expr) -> sp.Expr:
 
 
 def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
-    """The cancelled fraction, and whether it was cancelled over the rationals."""
+    """The cancelled fraction, and whether it was cancelled over the rationals. A
+    rational function over the rationals cancels to the one P/Q its value fixes
+    (``_cancel_over``), so it is put over one denominator by ``as_numer_denom``, a
+    quarter of ``together``'s time (which pulls the common factors of each sum apart
+    first), where ``together``'s form tells nothing; any other by ``together``."""
     if expr.is_Rational:
         return expr, True
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
-    value = _cancel_over(sp.together(plain), rational, any_form)
+    if rational and _polynomial_quotient(plain):
+        top, bottom = plain.as_numer_denom()
+        value = _cancel_over(top / bottom, rational, any_form)
+    else:
+        value = _cancel_over(sp.together(plain), rational, any_form)
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:

@@ -66,3 +66,21 @@ def test_parts_are_the_fractions_parts_once_expanded():
     for expr in cases:
         old = [sp.expand(x) for x in sp.fraction(tidy_fraction(expr))]
         assert [sp.expand(x) for x in tidy_fraction_parts(expr)] == old, expr
+
+
+def test_sums_of_fractions_cancel_as_together_then_cancel():
+    from rbdsolve.form.tidy import _leading_plus, tidy_fraction
+
+    rng = random.Random(41)
+
+    def poly():
+        return sp.Add(*[sp.Rational(rng.randint(-9, 9), rng.randint(1, 3))
+                        * sp.Mul(*[s ** rng.randint(0, 2) for s in (a, b, c)]) for _ in range(rng.randint(1, 3))])
+
+    for _ in range(40):
+        common = poly()
+        expr = sp.Add(*[poly() / (poly() * common) for _ in range(rng.randint(1, 3))])
+        if expr.is_Rational:
+            continue
+        whole = _leading_plus(sp.factor_terms(sp.cancel(sp.together(expr))))  # sympy's way, the oracle
+        assert sp.srepr(tidy_fraction(expr)) == sp.srepr(whole), expr
