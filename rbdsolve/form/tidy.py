@@ -156,26 +156,29 @@ def cancelled(expr: sp.Expr) -> sp.Expr:
 
 
 def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
-    """The cancelled fraction, and whether it was cancelled over the rationals. A
-    rational function over the rationals cancels to the one P/Q its value fixes
-    (``_cancel_over``), so it is put over one denominator by ``as_numer_denom``, a
-    quarter of ``together``'s time (which pulls the common factors of each sum apart
-    first), where ``together``'s form tells nothing; any other by ``together``."""
+    """The cancelled fraction, and whether it was cancelled over the rationals."""
     if expr.is_Rational:
         return expr, True
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
-    if rational and _polynomial_quotient(plain):
-        top, bottom = plain.as_numer_denom()
-        value = _cancel_over(top / bottom, rational, any_form)
-    else:
-        value = _cancel_over(sp.together(plain), rational, any_form)
+    value = _cancel_over(_one_fraction(plain, rational), rational, any_form)
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
         value = _reduced(value, pairs, rational, any_form)
     return value.xreplace(back), rational
+
+
+def _one_fraction(plain: sp.Expr, rational: bool) -> sp.Expr:
+    """``plain`` over one denominator, to be cancelled: by ``as_numer_denom`` where it is
+    a rational function over the rationals (``rational``; the cancelled P/Q is fixed by
+    its value alone), a quarter of ``together``'s time (which pulls each sum's common
+    factors apart first); by ``together`` otherwise, whose form the cancel may keep."""
+    if rational and _polynomial_quotient(plain):
+        top, bottom = plain.as_numer_denom()
+        return top / bottom
+    return sp.together(plain)
 
 
 def _rational(expr: sp.Expr) -> bool:
@@ -245,7 +248,10 @@ def _cancel(expr: sp.Expr) -> sp.Expr:
     """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
     rational function of them, as impact and statics answers are."""
     table, back = stand_ins(expr.atoms(sp.Function))
-    return sp.cancel(sp.together(expr.xreplace(table))).xreplace(back)
+    plain = expr.xreplace(table)
+    if _rational(plain):  # the pair's one P/Q (``_cancel_over``), as sympy's cancel finds it
+        return _cancel_over(_one_fraction(plain, True), True, False).xreplace(back)
+    return sp.cancel(sp.together(plain)).xreplace(back)
 
 
 def _has_denominator(expr: sp.Expr) -> bool:
