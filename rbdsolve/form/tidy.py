@@ -162,7 +162,7 @@ def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
-    value = _cancel_over(_one_fraction(plain, rational), rational, any_form)
+    value = _one_cancelled(plain, rational, any_form)
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
@@ -170,15 +170,18 @@ def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
     return value.xreplace(back), rational
 
 
-def _one_fraction(plain: sp.Expr, rational: bool) -> sp.Expr:
-    """``plain`` over one denominator, to be cancelled: by ``as_numer_denom`` where it is
-    a rational function over the rationals (``rational``; the cancelled P/Q is fixed by
-    its value alone), a quarter of ``together``'s time (which pulls each sum's common
-    factors apart first); by ``together`` otherwise, whose form the cancel may keep."""
+def _one_cancelled(plain: sp.Expr, rational: bool, any_form: bool) -> sp.Expr:
+    """``plain`` over one denominator and cancelled. A rational function over the
+    rationals cancels to the one P/Q its value fixes (``_cancel_over``), so it is put
+    over one denominator by ``as_numer_denom``, a quarter of ``together``'s time (which
+    pulls each sum's common factors apart first); any other by ``together``, whose form
+    the cancel may keep, as may a pair that comes back as it went in (no symbol left)."""
     if rational and _polynomial_quotient(plain):
         top, bottom = plain.as_numer_denom()
-        return top / bottom
-    return sp.together(plain)
+        c, p, q = sp.cancel((top, bottom))
+        if not (p is top and q is bottom):
+            return c * p / q
+    return _cancel_over(sp.together(plain), rational, any_form)
 
 
 def _rational(expr: sp.Expr) -> bool:
@@ -249,8 +252,8 @@ def _cancel(expr: sp.Expr) -> sp.Expr:
     rational function of them, as impact and statics answers are."""
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
-    if _rational(plain):  # the pair's one P/Q (``_cancel_over``), as sympy's cancel finds it
-        return _cancel_over(_one_fraction(plain, True), True, False).xreplace(back)
+    if _rational(plain):  # the one P/Q (``_cancel_over``), as sympy's cancel finds it
+        return _one_cancelled(plain, True, False).xreplace(back)
     return sp.cancel(sp.together(plain)).xreplace(back)
 
 
