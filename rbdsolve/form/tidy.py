@@ -146,28 +146,58 @@ def tidy_fraction(expr: sp.Expr) -> sp.Expr:
     applied (numerator and denominator reduced to degree < 2 in sin α); radicals such
     as √3 are algebraic numbers. So the result is zero exactly when the expression is.
     For answers built from solved linear systems, where ``tidy`` would swell."""
-    return _leading_plus(sp.factor_terms(_cancelled(expr, False)))
+    return _leading_plus(sp.factor_terms(_cancelled(expr, False)[0]))
+
+
+def tidy_fraction_parts(expr: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``sp.fraction(tidy_fraction(expr))``, numerator and denominator each the same once
+    expanded, for a caller that expands them. Over the rationals the cancelled fraction
+    is P/Q with P and Q coprime in ℤ[x, …] and Q's leading coefficient positive;
+    ``factor_terms`` pulls each one's content (coprime integers) and common factors
+    apart, and ``_leading_plus`` trades signs among the numerator's factors, so
+    ``fraction`` finds P and Q again: that rewriting is skipped there. (Not where P/Q is
+    a sum: over a number Q, sympy spreads 1/Q over P's terms, and ``fraction`` finds Q
+    no more.)"""
+    value, rational = _cancelled(expr, False)
+    if rational and not value.is_Add:
+        return sp.fraction(value)
+    return sp.fraction(_leading_plus(sp.factor_terms(value)))
 
 
 def cancelled(expr: sp.Expr) -> sp.Expr:
     """``tidy_fraction``'s one cancelled fraction, before its common factors are pulled
     out and in whichever of its equal forms comes cheapest (a constant may sit on
     either side): for a caller that expands and factors each part itself."""
-    return _cancelled(expr, True)
+    return _cancelled(expr, True)[0]
 
 
-def _cancelled(expr: sp.Expr, any_form: bool) -> sp.Expr:
+def _cancelled(expr: sp.Expr, any_form: bool) -> tuple[sp.Expr, bool]:
+    """The cancelled fraction, and whether it was cancelled over the rationals."""
     if expr.is_Rational:
-        return expr
+        return expr, True
     table, back = stand_ins(expr.atoms(sp.Function))
     plain = expr.xreplace(table)
     rational = _rational(plain)
-    value = _cancel_over(sp.together(plain), rational, any_form)
+    value = _one_cancelled(plain, rational, any_form)
     pairs = [(table[f], table[sp.cos(f.args[0])]) for f in table
              if isinstance(f, sp.sin) and sp.cos(f.args[0]) in table]
     if pairs:
         value = _reduced(value, pairs, rational, any_form)
-    return value.xreplace(back)
+    return value.xreplace(back), rational
+
+
+def _one_cancelled(plain: sp.Expr, rational: bool, any_form: bool) -> sp.Expr:
+    """``plain`` over one denominator and cancelled. A rational function over the
+    rationals cancels to the one P/Q its value fixes (``_cancel_over``), so it is put
+    over one denominator by ``as_numer_denom``, a quarter of ``together``'s time (which
+    pulls each sum's common factors apart first); any other by ``together``, whose form
+    the cancel may keep, as may a pair that comes back as it went in (no symbol left)."""
+    if rational and _polynomial_quotient(plain):
+        top, bottom = plain.as_numer_denom()
+        c, p, q = sp.cancel((top, bottom))
+        if not (p is top and q is bottom):
+            return c * p / q
+    return _cancel_over(sp.together(plain), rational, any_form)
 
 
 def _rational(expr: sp.Expr) -> bool:
@@ -189,11 +219,30 @@ def _cancel_over(expr: sp.Expr, rational: bool, any_form: bool) -> sp.Expr:
     (√3) unless ``rational`` says it has none. ``any_form``: the numerator and
     denominator cancelled as they stand, without ``cancel``'s own sign and common-factor
     rewriting of the whole fraction first (6x cheaper; the same fraction, with its
-    constant perhaps on the other side)."""
-    if rational and any_form:
-        c, top, bottom = sp.cancel(sp.fraction(expr))
-        return c * top / bottom
+    constant perhaps on the other side).
+
+    A quotient of polynomials in symbols with rational coefficients is cancelled as the
+    pair (numerator, denominator). ``cancel`` of the whole expression first rewrites it
+    with ``factor_terms`` (most of its time), then cancels its numerator and denominator
+    the same way: both end at P/Q with P and Q coprime in ℤ[x, y, …] and Q's leading
+    coefficient positive, which the fraction alone fixes (ℤ[x, y, …] factors uniquely,
+    its units ±1), so the result is the same expression. Where none of the pair's
+    symbols is left once expanded (the pair is a number), ``cancel`` returns the pair as
+    it came but the whole expression expanded: that one, as before."""
+    if rational and (any_form or _polynomial_quotient(expr)):
+        top, bottom = sp.fraction(expr)
+        c, p, q = sp.cancel((top, bottom))
+        if any_form or not (p is top and q is bottom):  # (a pair with no symbol left comes back as it was)
+            return c * p / q
     return sp.cancel(expr) if rational else sp.cancel(expr, extension=True)
+
+
+def _polynomial_quotient(expr: sp.Expr) -> bool:
+    """Sums, products and integer powers of symbols and rationals only: the pair's
+    generators are its symbols whichever way it is written (a root of a symbol, √l
+    beside l, or a function of one, would make generators of its own forms)."""
+    return all(isinstance(e, (sp.Add, sp.Mul, sp.Symbol, sp.Rational)) or (e.is_Pow and e.exp.is_Integer)
+               for e in sp.preorder_traversal(expr))
 
 
 def _reduced(value: sp.Expr, pairs: list[tuple[sp.Dummy, sp.Dummy]], rational: bool,
@@ -218,7 +267,10 @@ def _cancel(expr: sp.Expr) -> sp.Expr:
     """One fraction with common factors cancelled, sin α, cos α, … taken as symbols: a
     rational function of them, as impact and statics answers are."""
     table, back = stand_ins(expr.atoms(sp.Function))
-    return sp.cancel(sp.together(expr.xreplace(table))).xreplace(back)
+    plain = expr.xreplace(table)
+    if _rational(plain):  # the one P/Q (``_cancel_over``), as sympy's cancel finds it
+        return _one_cancelled(plain, True, False).xreplace(back)
+    return sp.cancel(sp.together(plain)).xreplace(back)
 
 
 def _has_denominator(expr: sp.Expr) -> bool:

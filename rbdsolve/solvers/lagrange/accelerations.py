@@ -18,7 +18,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.expansion import expanded
-from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction
+from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction_parts
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.problem.schema import Instant
@@ -87,8 +87,7 @@ def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:
 
 def clean_fraction(expr: sp.Expr) -> sp.Expr:
     """One cancelled fraction, then each part tidied (sin² + cos² = 1, common factors)."""
-    value = tidy_fraction(expr)
-    top, bottom = sp.fraction(value)
+    top, bottom = tidy_fraction_parts(expr)
     return sp.factor_terms(tidy(expanded(top))) / sp.factor_terms(tidy(expanded(bottom)))
 
 
