@@ -112,6 +112,16 @@ class SpringModel:
         return expr.xreplace({sp.Abs(x.inside): x.sign * x.inside for x in self.lengths if x.sign is not None})
 
 
+@dataclass(frozen=True)
+class Moving:
+    """A part of the scene that holds t (``Model.moving_parts``): as a message names it,
+    and whether it is a body's planar angle (a turn about z in the scene's axes, which a
+    frame turning with the body does not carry)."""
+
+    text: str
+    planar_angle: bool = False
+
+
 @dataclass(frozen=True, eq=False)  # identity equality: energies are memoized per model
 class Model:
     """A scene as sympy objects, the input of every solver: the problem and its symbols,
@@ -201,25 +211,26 @@ class Model:
         return _holds([x for _, x in self._parts_in_time()], t) or any(
             turning_holds_time(b, self.state) for b in self.bodies if b.turns)
 
-    def moving_parts(self) -> tuple[str, ...]:
-        """What of the scene moves by itself, as a message names it ("the angle of body
-        'disk'", "spring 's'", "gravity"): ``depends_on_time``'s parts that hold t."""
-        names = [what for what, x in self._parts_in_time() if _holds([x], t)]
-        names += [f"the turns of body '{b.name}'" for b in self.bodies if b.turns and turning_holds_time(b, self.state)]
-        return tuple(dict.fromkeys(names))
+    def moving_parts(self) -> tuple[Moving, ...]:
+        """What of the scene moves by itself (``depends_on_time``'s parts that hold t), for
+        a message: "the angle of body 'disk'", "spring 's'", "gravity"."""
+        found = [part for part, x in self._parts_in_time() if _holds([x], t)]
+        found += [Moving(f"the turns of body '{b.name}'") for b in self.bodies
+                  if b.turns and turning_holds_time(b, self.state)]
+        return tuple(dict.fromkeys(found))
 
-    def _parts_in_time(self) -> list[tuple[str, object]]:
+    def _parts_in_time(self) -> list[tuple[Moving, object]]:
         """Each part that may hold t, with its name. A position not made yet is made from
         the file's points and origins, which cannot bring in t where none of them names t
         or a prescribed motion (``_timed``): it is then not made here."""
         placed = self.bodies if _timed(self.problem) else [b for b in self.bodies if Deferred.made(b, "position")]
-        parts: list[tuple[str, object]] = [(f"the position of body '{b.name}'", b.position) for b in placed
-                                           if b.position is not None]
-        parts += [(f"the angle of body '{b.name}'", b.rotation) for b in self.bodies if not b.turns]
-        parts += [(f"spring '{s.name}'", s.stretch) for s in self.springs]
-        parts += [(x.name, x.value) for x in self.inertial]
-        parts += [(f"{x.kind} '{x.name}'", q) for x in self.loads for q in x.generalized]  # a force of t
-        return parts + ([("gravity", self.gravity)] if self.gravity is not None else [])
+        parts = [(Moving(f"the position of body '{b.name}'"), b.position) for b in placed if b.position is not None]
+        parts += [(Moving(f"the angle of body '{b.name}'", planar_angle=True), b.rotation)
+                  for b in self.bodies if not b.turns]
+        parts += [(Moving(f"spring '{s.name}'"), s.stretch) for s in self.springs]
+        parts += [(Moving(x.name), x.value) for x in self.inertial]
+        parts += [(Moving(f"{x.kind} '{x.name}'"), q) for x in self.loads for q in x.generalized]  # a force of t
+        return parts + ([(Moving("gravity"), self.gravity)] if self.gravity is not None else [])
 
     def _positions(self) -> list[sp.Matrix]:
         return [b.position for b in self.bodies if b.position is not None]

@@ -55,10 +55,11 @@ def _seen(model: Model, frame: Frame) -> tuple[FrameMotion, Model]:
     motion = frame_motion(model, frame)
     seen = in_frame(model, motion)
     if seen.depends_on_time():  # what still moves, and for a planar angle the orientation that follows F
-        moving = seen.moving_parts() or ("the scene",)
-        text = (f"in frame '{frame.name}' the scene still depends on t: {', '.join(moving)} "
-                f"{'moves' if len(moving) == 1 else 'move'} in it, so it has no relative equilibria there")
-        if frame.axis is not None and any(x.startswith("the angle of") for x in moving):
+        moving = seen.moving_parts()
+        what = [m.text for m in moving] or ["the scene"]
+        text = (f"in frame '{frame.name}' the scene still depends on t: {', '.join(what)} "
+                f"{'moves' if len(what) == 1 else 'move'} in it, so it has no relative equilibria there")
+        if frame.axis is not None and any(m.planar_angle for m in moving):
             text += ("; a body's planar 'angle' turns it about z in the scene's axes, not with the frame: where "
                      "the body turns with the frame, give its orientation as turns, the frame's turn first, such as "
                      f"orientation: [[{frame.axis.text}, {frame.rate.text}*t], [y, -theta]] (docs/format.md, frames)")

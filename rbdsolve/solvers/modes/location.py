@@ -28,11 +28,11 @@ from rbdsolve.model.build import Model
 SIZE = 12  # up to this many coordinates the equilibrium's own error is measured
 STEP = 1e-6  # the central differences' step, relative to max(|q_j|, 1)
 
-Pencil = Callable[[Mapping[str, sp.Expr]], tuple[np.ndarray, np.ndarray]]  # about -> (M, K) as floats
+PencilAt = Callable[[Mapping[str, sp.Expr]], tuple[np.ndarray, np.ndarray]]  # about -> (M, K) as floats
 
 
 def location_bounds(model: Model, about: Mapping[str, sp.Expr], K: np.ndarray, lam: np.ndarray,
-                    pencil: Pencil) -> np.ndarray:
+                    pencil: PencilAt) -> np.ndarray:
     """2 |Σ_j ∂λ/∂q_j δq_j| per eigenvalue (the module docstring); zeros where not measured."""
     from rbdsolve.model.numeric.jet import MP50
     from rbdsolve.solvers.numeric.numeric_model import numeric_scene
@@ -58,7 +58,7 @@ def location_bounds(model: Model, about: Mapping[str, sp.Expr], K: np.ndarray, l
     return 2 * np.abs(slope @ dq)
 
 
-def _eigenvalues(pencil: Pencil, about: Mapping[str, float]) -> np.ndarray:
+def _eigenvalues(pencil: PencilAt, about: Mapping[str, float]) -> np.ndarray:
     from scipy.linalg import eigh
 
     M, K = pencil({n: sp.Float(v, 17) for n, v in about.items()})
