@@ -30,7 +30,7 @@ from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
 from rbdsolve.solvers.modes.routh import linearize
-from rbdsolve.solvers.numeric.numeric_model import to_floats
+from rbdsolve.solvers.numeric.numeric_model import as_floats, to_floats
 
 DIGITS = 50
 SAFETY = 10.0  # the bound is this many times the distance to the 50-digit eigenvalue
@@ -48,9 +48,9 @@ def solve(question: Question, model: Model) -> Solution:
     on_axis = np.abs(s.real) <= bounds
     frequencies = sorted({round(abs(float(x.imag)), 12): abs(float(x.imag)) for x in s[on_axis] if x.imag > 0}.values())
     neutral = int(np.sum(on_axis & (np.abs(s) <= bounds)) // 2)
-    numbers = {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in linear.about.items()}
+    numbers = as_floats(model, linear.about)
     answers = NumericGyroscopicModesAnswers(
-        numbers, {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in linear.steady.items()},
+        numbers, as_floats(model, linear.steady),
         _rows(M), _rows(G), _rows(K), tuple(frequencies), stability,
         tuple(sorted({round(float(x), 12): float(x) for x in s.real[s.real - bounds > 0]}.values())),
         tuple((float(x.real), float(x.imag)) for x in s), tuple(float(b) for b in bounds), neutral)

@@ -35,14 +35,14 @@ def location_bounds(model: Model, about: Mapping[str, sp.Expr], K: np.ndarray, l
                     pencil: PencilAt) -> np.ndarray:
     """2 |Σ_j ∂λ/∂q_j δq_j| per eigenvalue (the module docstring); zeros where not measured."""
     from rbdsolve.model.numeric.jet import MP50
-    from rbdsolve.solvers.numeric.numeric_model import numeric_scene
+    from rbdsolve.solvers.numeric.numeric_model import as_floats, numeric_scene
 
     zero = np.zeros(len(lam))
     scene = numeric_scene(model, MP50) if len(about) <= SIZE else None
     if scene is None:
         return zero
     names = list(about)
-    q0 = np.array([float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()])
+    q0 = np.array(list(as_floats(model, about).values()))
     g = np.array([float(x) for x in scene.gradient(list(q0))])
     if not np.any(g):
         return zero

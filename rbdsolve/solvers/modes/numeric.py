@@ -57,7 +57,7 @@ from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static
 from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
-from rbdsolve.solvers.numeric.numeric_model import linearized
+from rbdsolve.solvers.numeric.numeric_model import as_floats, linearized
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import float_reason
 from rbdsolve.solvers.routes.needed import require_values
@@ -121,7 +121,7 @@ def modes_at(about: dict, model: Model):
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
     spaces = analyse(pencil, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
     answers = NumericModesAnswers(
-        {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}, _rows(M), _rows(K),
+        as_floats(model, about), _rows(M), _rows(K),
         tuple(float(x) for x in lam),
         tuple(float(np.sqrt(x)) if m is Motion.OSCILLATION else None for x, m in zip(lam, motions)),
         motions, tuple(normalized(v) for v in vectors.T), tuple(float(a) for a in absolute), relative,

@@ -81,13 +81,18 @@ def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndar
         raise UnsolvedError("a matrix entry is not a real number at the given values") from None
 
 
+def as_floats(model: Model, about: Mapping[str, sp.Expr]) -> dict[str, float]:
+    """A configuration (name -> exact or float value) as floats at the parameter values."""
+    return {n: float(sp.N(v.xreplace(dict(model.values)), 20)) for n, v in about.items()}
+
+
 def linearized(model: Model, about: Mapping[str, sp.Expr]) -> tuple[np.ndarray, np.ndarray, str]:
     """M and K at the configuration ``about`` (coordinate name -> value), as floats: by
     automatic differentiation on the scene's own expressions where the scene allows
     (``NumericScene``), else from the exact Jacobians and Hessian, rounded once."""
     scene = numeric_scene(model)
     if scene is not None:
-        q0 = [float(sp.N(v.xreplace(dict(model.values)), 20)) for v in about.values()]
+        q0 = list(as_floats(model, about).values())
         M, K = finite(lambda x: np.stack(scene.linearized(x)), model)(q0)
         return M, (K + K.T) / 2, "by automatic differentiation of the scene"
     at = {q: about[name] for q, name in zip(model.q, model.coordinate_names())}
