@@ -262,13 +262,12 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     run = Allowance(options.budget)
     total = options.budget if options.budget_total is None else options.budget_total
     questions = problem.questions
-    model = None  # set once built, with its values: only the summary is left then
+    model = None  # set once built: only the summary is left then
     _stage(options, "the model (T and V)")
     try:
         with within(run.share(2) if _numeric_may_follow(problem, options) else run.left(), "the model (T and V)",
                     total):
-            built = build()
-            model = built.with_values(options.values) if options.values else built
+            model = build()
             summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
     except OutOfTime as exc:
         if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
@@ -286,9 +285,10 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
 
 
 def _numeric_may_follow(problem: Problem, options: Options) -> bool:
-    """On auto, does every parameter have a value (the file's or given), so that the
-    numeric route may answer where the exact one cannot?"""
-    given = {name for name, _ in problem.values} | set(options.values)
+    """On auto, does every parameter have a value (the file's or given on the command
+    line: ``Problem.with_values``), so that the numeric route may answer where the exact
+    one cannot?"""
+    given = {name for name, _ in problem.values}
     return options.route is RouteChoice.AUTO and all(p.name in given for p in problem.parameters)
 
 
