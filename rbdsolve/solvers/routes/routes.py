@@ -280,8 +280,9 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     units = {k: u for k, u in parameter_units(model).items() if k in values}
+    angles = frozenset(name for name, value in problem.values if value.angle and name in values)
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
-                         summary, solutions, values, symbols, units)
+                         summary, solutions, values, symbols, units, angles)
 
 
 def _numeric_may_follow(problem: Problem, options: Options) -> bool:
