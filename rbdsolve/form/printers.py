@@ -360,7 +360,7 @@ def _has_denominator(expr: sp.Expr) -> bool:
 
 def _tidy_unicode(text: str) -> str:
     text = text.replace("**", "^").replace("*", " ")
-    text = re.sub(r"(?<=[\w)\u0307\u0308⁰¹²³⁴⁵⁶⁷⁸⁹]) - ", " − ", text)
+    text = re.sub(r"(?<=[\w)\]|\u0307\u0308⁰¹²³⁴⁵⁶⁷⁸⁹]) - ", " − ", text)  # also after |x| and [x]
     text = text.replace(" + -", " − ").replace("(-", "(−").replace("[-", "[−").replace(", -", ", −")
     return "−" + text[1:] if text.startswith("-") else text
 

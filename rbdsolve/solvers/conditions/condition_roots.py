@@ -70,9 +70,14 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     # in sort order, not the set's (the hash seed's): of two forms of one root the first
     # is kept, and two that simplify cannot tell equal keep this order among equal values
     for r in sorted(found, key=sp.default_sort_key):
-        if r.has(sp.DiracDelta, sp.sign, sp.Heaviside):
-            return None  # not a number at a sample (DiracDelta(0) where a spring passes zero length)
-        turns = {_turns_at(r.xreplace(point), low, high, p in angles) for point in points}
+        if r.has(sp.DiracDelta, sp.sign, sp.Heaviside, sp.Piecewise, sp.nan):
+            # not a number at a sample (DiracDelta(0) where a spring passes zero length), or
+            # a root solve gives only under a condition of its own (Piecewise((…, cond), (nan, True)))
+            return None
+        try:
+            turns = {_turns_at(r.xreplace(point), low, high, p in angles) for point in points}
+        except TypeError:  # still not a number at a sample: the parameter is left undecided
+            return None
         if turns == {None}:
             continue  # never real inside the range
         if len(turns) != 1 or None in turns:
