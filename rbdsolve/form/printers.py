@@ -371,6 +371,12 @@ class TexPrinter(LatexPrinter):
     def _as_ordered_terms(self, expr, order=None):
         return exam_order(without_noise(list(super()._as_ordered_terms(expr, order))))
 
+    def _print_Add(self, expr, order=None):
+        """A term whose sign ``signs_placed`` moves back in front (−k (−R cos θ − h),
+        negated by the sum to k (−R cos θ − h), printed −k (R cos θ + h)) is joined by
+        the one sign it has: + k (R cos θ + h), not - - k (…)."""
+        return super()._print_Add(expr, order).replace(" - - ", " + ").replace(" + - ", " - ")
+
     def _print_Pow(self, expr):
         base, exp = expr.as_base_exp()
         if exp.is_Integer and exp > 0 and exp % 2 == 0 and base.is_Add and base.could_extract_minus_sign():

@@ -33,3 +33,16 @@ def test_a_minus_after_an_absolute_value_or_a_bracket_is_the_minus_sign() -> Non
     assert to_unicode(b * sp.Abs(a) - 4) == "b |α| − 4"
     assert to_unicode(12 * sp.pi * sp.sin(a) * sp.Abs(sp.sin(a)) - 4 * b) == "12 π sin(α) |sin(α)| − 4 b"
     assert " - " not in to_unicode(sp.Abs(a) / sp.cos(a) - sp.Abs(b) / sp.sin(a))
+
+
+def test_latex_joins_a_term_whose_sign_moves_by_its_one_sign() -> None:
+    """N_P cos θ − g m − k (−R cos θ − h) is N_P cos θ − g m + k (R cos θ + h); LaTeX wrote
+    '- g m - - k (…)' (a bead on a spring inside a loop, its free body diagram)."""
+    import sympy as sp
+
+    from rbdsolve.form.printers import to_latex
+
+    N, g, m, k, R, h, th = sp.symbols("N_P g m k R h theta")
+    text = to_latex(N * sp.cos(th) - g * m - k * (-R * sp.cos(th) - h))
+    assert "- -" not in text and "+ -" not in text
+    assert text.endswith("- g m + k \\left(R \\cos{\\left(\\theta \\right)} + h\\right)")
