@@ -324,3 +324,20 @@ def test_the_main_help_and_the_readme_name_every_question_kind_and_template() ->
     rows = [line.split("|")[1].strip() for line in readme.splitlines() if line.startswith("| `")]
     for name in [*KINDS, *SCENES]:
         assert rows.count(f"`{name}`") >= (2 if name in KINDS else 1), name  # a template row, and what it solves
+
+
+def test_the_ladder_template_turns_its_rod_the_way_its_ends_move() -> None:
+    """The equilibria template's rod AB has A = 2a (sin θ, 0) and B = (0, 2a cos θ): the
+    body's own axis (y, for axis: y) must lie along B − A = 2a (−sin θ, cos θ) at every θ,
+    which a rod turned by −θ does not (its T is the same, its moments would not be)."""
+    import sympy as sp
+
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_file
+
+    model = build_model(load_file(template_path("equilibria")))
+    (rod,) = model.bodies
+    theta, a = model.q[0], model.symbols.parameters["a"]
+    along = rod.rotation * sp.Matrix([0, 1, 0])
+    ends = sp.Matrix([-2 * a * sp.sin(theta), 2 * a * sp.cos(theta), 0]) / (2 * a)
+    assert sp.simplify(along - ends) == sp.zeros(3, 1)

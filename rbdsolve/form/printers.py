@@ -360,7 +360,7 @@ def _has_denominator(expr: sp.Expr) -> bool:
 
 def _tidy_unicode(text: str) -> str:
     text = text.replace("**", "^").replace("*", " ")
-    text = re.sub(r"(?<=[\w)\u0307\u0308⁰¹²³⁴⁵⁶⁷⁸⁹]) - ", " − ", text)
+    text = re.sub(r"(?<=[\w)\]|\u0307\u0308⁰¹²³⁴⁵⁶⁷⁸⁹]) - ", " − ", text)  # also after |x| and [x]
     text = text.replace(" + -", " − ").replace("(-", "(−").replace("[-", "[−").replace(", -", ", −")
     return "−" + text[1:] if text.startswith("-") else text
 
@@ -370,6 +370,12 @@ class TexPrinter(LatexPrinter):
 
     def _as_ordered_terms(self, expr, order=None):
         return exam_order(without_noise(list(super()._as_ordered_terms(expr, order))))
+
+    def _print_Add(self, expr, order=None):
+        """A term whose sign ``signs_placed`` moves back in front (−k (−R cos θ − h),
+        negated by the sum to k (−R cos θ − h), printed −k (R cos θ + h)) is joined by
+        the one sign it has: + k (R cos θ + h), not - - k (…)."""
+        return super()._print_Add(expr, order).replace(" - - ", " + ").replace(" + - ", " - ")
 
     def _print_Pow(self, expr):
         base, exp = expr.as_base_exp()

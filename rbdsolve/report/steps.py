@@ -13,7 +13,7 @@ from typing import Mapping
 
 import sympy as sp
 
-from rbdsolve.form.display import Relation
+from rbdsolve.form.display import Along, Relation, Terms
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import float_text, unicode_name
 from rbdsolve.report.numbers import Number
@@ -69,12 +69,25 @@ def result(text: str, *math: Relation) -> Step:
 
 def _factored(rel: Relation) -> Relation:
     """The factors of a product factored (the sums under a root, over a fraction); a sum
-    at the top is left as its solver ordered it (F's time part apart from the rest)."""
-    rhs = factored(rel.rhs) if _product(rel.rhs) else rel.rhs
+    at the top is left as its solver ordered it (F's time part apart from the rest); a
+    vector written along its basis, component by component (an impulse's M l m v₀ (e + 1)
+    (3 d − 2 l)/(2 (M l² + 3 d² m)) eₓ)."""
+    rhs = factored(rel.rhs) if _product(rel.rhs) else _along_factored(rel.rhs)
     if isinstance(rhs, sp.MatrixBase) and 1 in rhs.shape:  # a vector, entry by entry
         rhs = rhs.applyfunc(lambda x: factored(x) if _product(x) else x)
     more = tuple(factored(x) if _product(x) else x for x in rel.more)
     return rel if (rhs is rel.rhs and more == rel.more) else replace(rel, rhs=rhs, more=more)
+
+
+def _along_factored(value):
+    """Each component along a basis vector (``Along``, alone or in a sum of them) factored
+    as a product is; anything else as it is."""
+    if isinstance(value, Along) and _product(value.component):
+        return replace(value, component=factored(value.component))
+    if isinstance(value, Terms):
+        parts = tuple(_along_factored(x) for x in value.items)
+        return value if parts == value.items else replace(value, items=parts)
+    return value
 
 
 def note(text: str, *math: Relation) -> Step:

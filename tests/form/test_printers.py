@@ -21,3 +21,28 @@ def test_a_typeset_page_writes_v_c_with_its_subscript() -> None:
 
     assert _prose("v_C = 0 ⇒") == "<i>v</i><sub>C</sub> = 0 ⇒"
     assert prose("v_C = 0, J_Gz") == r"\ensuremath{v_{C}} = 0, \ensuremath{J_{\mathrm{Gz}}}"
+
+
+def test_a_minus_after_an_absolute_value_or_a_bracket_is_the_minus_sign() -> None:
+    """'|cos θ| − g m', not the ASCII hyphen '- g m' (a ladder's reactions printed it)."""
+    import sympy as sp
+
+    from rbdsolve.form.printers import to_unicode
+
+    a, b = sp.symbols("alpha b", real=True)
+    assert to_unicode(b * sp.Abs(a) - 4) == "b |α| − 4"
+    assert to_unicode(12 * sp.pi * sp.sin(a) * sp.Abs(sp.sin(a)) - 4 * b) == "12 π sin(α) |sin(α)| − 4 b"
+    assert " - " not in to_unicode(sp.Abs(a) / sp.cos(a) - sp.Abs(b) / sp.sin(a))
+
+
+def test_latex_joins_a_term_whose_sign_moves_by_its_one_sign() -> None:
+    """N_P cos θ − g m − k (−R cos θ − h) is N_P cos θ − g m + k (R cos θ + h); LaTeX wrote
+    '- g m - - k (…)' (a bead on a spring inside a loop, its free body diagram)."""
+    import sympy as sp
+
+    from rbdsolve.form.printers import to_latex
+
+    N, g, m, k, R, h, th = sp.symbols("N_P g m k R h theta")
+    text = to_latex(N * sp.cos(th) - g * m - k * (-R * sp.cos(th) - h))
+    assert "- -" not in text and "+ -" not in text
+    assert text.endswith("- g m + k \\left(R \\cos{\\left(\\theta \\right)} + h\\right)")

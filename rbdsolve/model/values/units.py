@@ -56,7 +56,8 @@ def answer_units(answers: object, model: Model, kind: str = "") -> object:
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
     numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles, kind)
-    parameters = parameter_units(model)
+    # a parameter given in angle units (30 deg) is an angle: its critical values in rad, with their degrees
+    parameters = {**parameter_units(model), **{name: "rad" for name, value in model.problem.values if value.angle}}
 
     zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
 
@@ -129,7 +130,8 @@ def _coordinate_unit(name: str, coordinates: Mapping[str, Dimension | None], ang
 
 
 def _critical_unit(answers: object, path: Path, parameters: Mapping[str, str]) -> str | None:
-    """A critical value's unit is its parameter's: path (…, 'critical', i, 'value')."""
+    """A critical value's unit is its parameter's: path (…, 'critical', i, 'value'); rad
+    for a parameter given in angle units, so its degrees print beside it."""
     if len(path) < 3 or path[-1] != "value" or path[-3] != "critical":
         return None
     return parameters.get(getattr(at(answers, path[:-1]), "parameter", None))

@@ -23,6 +23,14 @@ POSITIONS = {"apex"}
 MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
+
+# Names a student writes for a shape the library has under another name and more
+# parameters, where the closest spelling would mislead ('half_cylinder': 'cylinder').
+_HALF_CYLINDER = (": a solid half-cylinder is shape: cylinder_segment with half_angle: pi/2 (and radius, "
+                  "height); turning in its own plane only, a half_disk has the same moment about its axis")
+_SHAPE_HINTS = {"half_cylinder": _HALF_CYLINDER, "semicylinder": _HALF_CYLINDER, "semi_cylinder": _HALF_CYLINDER,
+                "half_sphere": " (did you mean 'hemisphere'?)"}
+
 class BodyReader:
     def __init__(self, reading: Reading, placed: dict[str, str] | None = None,
                  hanging: frozenset[str] = frozenset()):
@@ -164,7 +172,8 @@ class BodyReader:
         try:
             return Shape(word)
         except ValueError:
-            hint = did_you_mean(word, names) or f" (shapes: {', '.join(s.value for s in Shape)})"
+            hint = _SHAPE_HINTS.get(word.lower()) or did_you_mean(word, names) or \
+                f" (shapes: {', '.join(s.value for s in Shape)})"
             raise InputError(f"unknown shape '{word}'{hint}", node.loc) from None
 
     def inertia(self, node: Node | None) -> Inertia | None:

@@ -43,9 +43,9 @@ def coordinate(reading: Reading, name: str, key: Scalar, options: Node | None) -
         raise InputError(f"'periodic' is for an angle: declare 'kind: angle' for '{name}', or leave "
                          "'periodic' out", periodic_node.loc)
     if range_node is not None and kind is CoordinateKind.ANGLE and periodic is not False:
-        raise InputError(f"a periodic angle is searched over one turn, (−π, π]; for a range of '{name}' "
-                         "declare 'periodic: false' (an angle that winds up, as a torsion spring's)",
-                         range_node.loc)
+        raise InputError(f"a periodic angle is searched over one turn, (−π, π]; to search '{name}' over "
+                         f"a range, add 'periodic: false' ({{kind: angle, periodic: false, range: [0, pi/2]}}: "
+                         "a ladder between the floor and the wall, an angle that winds up)", range_node.loc)
     return Coordinate(name, kind, key.loc, periodic), range_node
 
 

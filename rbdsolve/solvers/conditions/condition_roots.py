@@ -57,8 +57,11 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
-    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) for factor in factors):
-        return None  # sympy's solve squares the radicals away, or searches a transcendental one: minutes (issue 37)
+    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) or _in_absolute_value(factor, p)
+           for factor in factors):
+        # sympy's solve squares the radicals away, searches a transcendental one, or splits |…| into
+        # cases: minutes (issue 37), and roots under conditions of their own; decided by the structure
+        return None
     try:
         found = {tidy(r) for factor in factors for r in _roots_in(factor, p)}
     except (NotImplementedError, ValueError):
@@ -70,9 +73,14 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     # in sort order, not the set's (the hash seed's): of two forms of one root the first
     # is kept, and two that simplify cannot tell equal keep this order among equal values
     for r in sorted(found, key=sp.default_sort_key):
-        if r.has(sp.DiracDelta, sp.sign, sp.Heaviside):
-            return None  # not a number at a sample (DiracDelta(0) where a spring passes zero length)
-        turns = {_turns_at(r.xreplace(point), low, high, p in angles) for point in points}
+        if r.has(sp.DiracDelta, sp.sign, sp.Heaviside, sp.Piecewise, sp.nan):
+            # not a number at a sample (DiracDelta(0) where a spring passes zero length), or
+            # a root solve gives only under a condition of its own (Piecewise((…, cond), (nan, True)))
+            return None
+        try:
+            turns = {_turns_at(r.xreplace(point), low, high, p in angles) for point in points}
+        except TypeError:  # still not a number at a sample: the parameter is left undecided
+            return None
         if turns == {None}:
             continue  # never real inside the range
         if len(turns) != 1 or None in turns:
@@ -144,6 +152,16 @@ def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
     √(4a² + d²) beside a² k: solving that for a ran for minutes."""
     radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
     return radical and sp.count_ops(expr) > RADICAL_OPS
+
+
+def _in_absolute_value(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand inside |…| or sign(…) within a sum? sympy's solve splits those into
+    cases: for a half-cylinder on an incline, 12 π sin α |sin α| − 4 √(16 − 9 π² sin² α)
+    cos α − 9 π took it 20 s, for a root valid only under a condition of its own (the
+    same without the |…|: 1 s). A |u| that multiplies the whole factor (a ladder's
+    (1 + 3 cos² θ₀) |cos θ₀|) only adds the roots of u, which solve finds at once."""
+    outer = {f.base if f.is_Pow else f for f in sp.Mul.make_args(expr)}
+    return any(x.has(p) and x not in outer for x in expr.atoms(sp.Abs, sp.sign))
 
 
 def _turns_at(root: sp.Expr, low, high, periodic: bool) -> int | None:

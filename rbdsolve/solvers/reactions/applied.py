@@ -5,7 +5,10 @@ acts on with a known value.
 A linear spring between ends a and b, stretch s = |a − b| − l₀, V = ½ k s², pulls the
 body that carries end a with
 
-    F_a = −∂V/∂r_a = −k s (a − b)/|a − b|   at a,      and that of end b with −F_a at b.
+    F_a = −∂V/∂r_a = −k s (a − b)/|a − b|   at a,      and that of end b with −F_a at b;
+
+with no natural length (s = |a − b|) that is F_a = −k (a − b), written so: no length,
+no |…| (a disk's centre tied to the axis of the cylinder it rolls in).
 
 An end whose position is constant is fixed to the ground; a moving end is carried by
 the body whose material point it is (its velocity is v_G + ω × (end − r_G) at every
@@ -63,16 +66,19 @@ def applied(model: Model, held: list[str]) -> list[Applied]:
 def _linear(model: Model, s: SpringModel, held: list[str]) -> list[Applied]:
     a, b = (model.symbols.vector(e) for e in s.source.ends)
     d = a - b
-    unit = d / s.signed(sp.sqrt(d.dot(d)))
-    if s.lengths:  # along one axis: ±(d + x)/(d + x), cancelled to ±1
-        unit = unit.applyfunc(sp.cancel)
-    pull = -s.stiffness * s.stretch * unit
+    pull = -s.stiffness * d if not s.source.natural_length else -s.stiffness * s.stretch * _unit(s, d)
     out = []
     for end, force in ((a, pull), (b, -pull)):
         carrier = _carrier(model, s, end, held)
         if carrier is not None:
             out.append(Applied(s.name, carrier, end, force, sp.zeros(3, 1)))
     return out
+
+
+def _unit(s: SpringModel, d: sp.Matrix) -> sp.Matrix:
+    """d/|d|, |d| written as the stretch writes it."""
+    unit = d / s.signed(sp.sqrt(d.dot(d)))
+    return unit.applyfunc(sp.cancel) if s.lengths else unit  # along one axis: ±(d + x)/(d + x), cancelled to ±1
 
 
 def _carrier(model: Model, s: SpringModel, end: sp.Matrix, held: list[str]) -> str | None:

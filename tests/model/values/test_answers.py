@@ -42,3 +42,24 @@ def test_nothing_without_values_and_no_block_without_names() -> None:
     assert valued(_answers(model), model, "modes", lambda: []) == NOTHING
     given = model.with_values({"m": 2, "l": 3, "g": Fraction(981, 100)})
     assert valued(_answers(given), given, "modes", None).lines == ()
+
+
+def test_a_critical_value_of_a_parameter_given_in_degrees_is_in_rad_with_its_degrees() -> None:
+    """θ₀ given as 30 deg is an angle: a critical value of it, 2θ₀ here (π/3 = 1.0472 rad,
+    60° by hand), prints in rad with its degrees, as a coordinate's angle does; m's in kg."""
+    from rbdsolve.model.values.units import answer_units
+    from rbdsolve.problem import load_text
+    from rbdsolve.render.numbers import number_text
+    from rbdsolve.solvers.conditions.conditions import CriticalValue
+    from rbdsolve.solvers.routes.naming import criticals
+
+    text = (PROBLEMS / "examples" / "pendulum.yaml").read_text()
+    text = text.replace("parameters:", "parameters:\n  theta0: angle of release") + \
+        "\nvalues: {m: 2, l: 3, g: 9.81, theta0: 30 deg}\n"
+    model = build_model(load_text(text))
+    theta0, m = model.symbols.parameters["theta0"], model.symbols.parameters["m"]
+    answers = {"critical": [CriticalValue("theta0", 2 * theta0), CriticalValue("m", 3 * m)]}
+    assert answer_units(answers, model)["critical"] == [{"parameter": None, "value": "rad"},
+                                                        {"parameter": None, "value": "kg"}]
+    found = valued(answers, model, "", lambda: tuple(criticals(("critical",), answers["critical"])))
+    assert [number_text(n) for n in found.lines] == ["θ₀,c = 1.0472 rad (60°)", "m_c = 6 kg"]

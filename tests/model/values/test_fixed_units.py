@@ -28,6 +28,14 @@ def test_a_torque_is_not_an_energy() -> None:
     assert fixed_unit("reactions", ("at", "O", "components", "M_O"), {"theta": NUMBER}) == "N·m"
 
 
+def test_a_support_force_is_in_newtons_at_a_given_state_too() -> None:
+    """N_C at θ = 0, θ̇ = 8 reads −R k + 64 R m + g m …: the 64 (θ̇² put in) carries no
+    1/s² to read, so the sum mixes dimensions; a force is in N by what it is."""
+    assert fixed_unit("reactions", ("at", "C", "components", "N_C"), {"theta": NUMBER}) == "N"
+    assert fixed_unit("reactions", ("at", "C", "force", 1), {"theta": NUMBER}) == "N"
+    assert fixed_unit("steady_motion", ("reactions", "C", "components", "F_C"), {}) == "N"
+
+
 def test_rates_of_an_angle() -> None:
     assert rate_unit(NUMBER, 1) == "rad/s" and rate_unit(NUMBER, 2) == "rad/s²"
     assert rate_unit(LENGTH, 2) == (LENGTH / TIME ** 2).unit

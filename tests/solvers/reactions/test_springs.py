@@ -13,9 +13,9 @@ from rbdsolve.problem import load_text
 from rbdsolve.render.json import report_object
 from rbdsolve.solvers import solve_problem
 
-m, R, a, k, l, g, c = sp.symbols("m R a k l g c", positive=True)
+m, R, a, k, l, g, c, _r = sp.symbols("m R a k l g c r", positive=True)
 th, thd = sp.symbols("theta thetadot")
-NAMES = {"m": m, "R": R, "a": a, "k": k, "l": l, "g": g, "c": c}
+NAMES = {"m": m, "R": R, "a": a, "k": k, "l": l, "g": g, "c": c, "r": _r}
 
 BEAD = """title: bead on a ring with a spring
 parameters: {m: mass, R: radius, a: distance, k: stiffness}
@@ -233,3 +233,34 @@ questions: [{reactions: {forces: [P]}}]
     assert found.body == "bob"
     assert sp.simplify(found.force - want) == sp.zeros(3, 1)
     assert found.moment == sp.zeros(3, 1)
+
+
+DISK_IN_CYLINDER = """title: a disk rolling inside a cylinder, its centre tied to the axis
+parameters: {m: mass, r: radius, R: radius, k: stiffness, g: acceleration}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {circle: {centre: O, radius: R, side: inside}}, along: theta}
+springs:
+  s: {stiffness: k, between: [O, disk]}
+questions:
+  - reactions: {forces: [C]}
+"""
+
+
+def test_a_spring_of_no_natural_length_pulls_with_minus_k_d() -> None:
+    """The disk's centre G = (R − r)(sin θ, −cos θ), the spring from O pulls it with
+    −k (G − O): no |R − r| or √ in its force. Along the inward normal −(sin θ, −cos θ):
+    m (R − r) θ̇² = N + k (R − r) − m g cos θ, so N = m (R − r) θ̇² + m g cos θ − k (R − r);
+    tangentially (3/2) m (R − r) θ̈ = −m g sin θ, the friction F = m (R − r) θ̈ + m g sin θ
+    = −(1/3) m g sin θ against θ (a user's own problem, derived by hand before)."""
+    answers = _answers(DISK_IN_CYLINDER)
+    got = answers["reactions"]["C"]["components"]
+    assert not any(mark in got["N_C"] for mark in ("Abs", "sqrt"))
+    assert sp.simplify(_read(got["N_C"]) - (m * (R - _r) * thd**2 + m * g * sp.cos(th)
+                                           - k * (R - _r))) == 0
+    assert sp.simplify(_read(got["F_C"]) + m * g * sp.sin(th) / 3) == 0
