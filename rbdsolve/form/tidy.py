@@ -33,14 +33,12 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         return expr
     if expr.has(sp.acos, sp.asin, sp.atan):
         expr = _of_inverses(expr)
-    ops = sp.count_ops(expr)
-    if ops > MAX_OPS:
+    if _past_limit(expr):
         return expr
     if expr.has(sp.sin, sp.cos):
-        shorter = _pythagoras(expr)
-        ops, expr = (ops if shorter is expr else sp.count_ops(shorter)), shorter
+        expr = _pythagoras(expr)
         if _foldable(expr):
-            expr = _folded(expr, ops)
+            expr = _folded(expr)
     if _has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(sp.factor_terms(expr))
@@ -60,15 +58,41 @@ def _of_inverses(expr: sp.Expr) -> sp.Expr:
     return expanded(expr.xreplace(found)) if found else expr
 
 
-def _folded(expr: sp.Expr, ops: int) -> sp.Expr:
-    """``fu.TR10i``'s fold where it is shorter (``ops``: the operations of ``expr``);
+OPS_PER_NODE = 9  # count_ops(e) ≤ 9 × the nodes of e's tree (``_past_limit``)
+
+
+def _past_limit(expr: sp.Expr) -> bool:
+    """count_ops(expr) > MAX_OPS, counted only where the size of expr's tree leaves it
+    open: a coefficient of a few dozen nodes (every entry of a chain's M(q)) is within
+    the limit without counting, which would cost more than the rest of its tidying.
+
+    The bound: count_ops walks the tree from the root, and each term it takes counts
+    at most 2 operations (− and / of a rational, of a product's coefficient) plus one
+    per argument it puts back to walk (the ± of a sum's terms, the × of a product's
+    factors, a function or power over its arguments): at most 3 per term walked. It
+    walks each node once, except that a product is first split into its numerator and
+    denominator (sympy's ``fraction``), two new products of its factors (a rational
+    coefficient p/q split in two): at most 3 terms walked per node. So count_ops(e) ≤
+    9 × nodes(e), and a tree of at most MAX_OPS / 9 nodes is within the limit."""
+    stack, nodes = [expr], 0
+    while stack:
+        nodes += 1
+        if nodes * OPS_PER_NODE > MAX_OPS:
+            return sp.count_ops(expr) > MAX_OPS
+        stack.extend(stack.pop().args)
+    return False
+
+
+def _folded(expr: sp.Expr) -> sp.Expr:
+    """``fu.TR10i``'s fold where it is shorter (no more operations than ``expr``);
     C cos a cos b + C sin a sin b, the form of every entry of a chain's M(q), read off
-    its two terms directly (TR10i searches every pair of every sum for it)."""
+    its two terms directly (TR10i searches every pair of every sum for it, and neither
+    form's operations need counting)."""
     folded = _cosine_of_difference(expr)
     if folded is not None:  # one cosine for two terms of two each: always shorter
         return folded
     folded = TR10i(expr)
-    return folded if sp.count_ops(folded) <= ops else expr
+    return folded if sp.count_ops(folded) <= sp.count_ops(expr) else expr
 
 
 def _cosine_of_difference(expr: sp.Expr) -> sp.Expr | None:
