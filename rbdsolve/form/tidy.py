@@ -11,6 +11,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.simplify.fu import TR10i
 
 from rbdsolve.form.expansion import expanded
@@ -41,7 +42,55 @@ def tidy(expr: sp.Expr) -> sp.Expr:
             expr = _folded(expr)
     if _has_denominator(expr):
         expr = _cancel(expr)
-    return _leading_plus(sp.factor_terms(expr))
+    return _leading_plus(terms_factored(expr))
+
+
+def terms_factored(expr: sp.Expr) -> sp.Expr:
+    """sympy's ``factor_terms(expr)`` (a common factor pulled out of each sum, in every
+    argument), or ``expr`` itself where that is what it gives: a product of a rational,
+    powers of symbols, coordinates θ(t) and their derivatives, and sines and cosines of a
+    symbol, a coordinate or a sum of them with unit coefficients (cos(θ₂ − θ₁)), as every
+    entry of a chain's M(q) is. There factor_terms takes the rational out and puts it
+    back in front of the same factors, and finds nothing to pull out of the sum (its
+    terms share no factor, and not every one is negative) after walking it with gcd_terms:
+    most of ``tidy``'s time on such an entry. tests/form/test_terms_factored.py checks
+    the form against factor_terms."""
+    if all(_kept_as_it_is(f) for f in sp.Mul.make_args(expr)):
+        return expr
+    return sp.factor_terms(expr)
+
+
+def _kept_as_it_is(factor: sp.Expr) -> bool:
+    if factor.is_Rational or factor.is_Symbol:
+        return True
+    if factor.is_Pow:
+        return factor.base.is_Symbol and factor.exp.is_Rational
+    if isinstance(factor, sp.Derivative):
+        return _coordinate(factor.expr)
+    if isinstance(factor, (sp.sin, sp.cos)):
+        return _unit_sum(factor.args[0])
+    return _coordinate(factor)
+
+
+def _coordinate(expr: sp.Expr) -> bool:
+    """θ(t): an undefined function of symbols."""
+    return isinstance(expr, AppliedUndef) and all(x.is_Symbol for x in expr.args)
+
+
+def _unit_sum(expr: sp.Expr) -> bool:
+    """A symbol or a coordinate, or a sum of them each with coefficient ±1, one at least +1."""
+    if expr.is_Symbol or _coordinate(expr):
+        return True
+    if not expr.is_Add:
+        return False
+    positive = False
+    for term in expr.args:
+        if term.is_Symbol or _coordinate(term):
+            positive = True
+        elif not (term.is_Mul and len(term.args) == 2 and term.args[0] is sp.S.NegativeOne
+                  and (term.args[1].is_Symbol or _coordinate(term.args[1]))):
+            return False
+    return positive
 
 
 def _of_inverses(expr: sp.Expr) -> sp.Expr:
@@ -379,7 +428,7 @@ def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False)
     """Split ``expr`` into monomials in the symbols ``generators`` (q̇, q̈), each with its
     coefficient tidied (skipped when ``expr`` was built from tidied coefficients already).
     Returns {monomial: coefficient}; monomial 1 holds the rest."""
-    finish = (lambda c: sp.factor_terms(c)) if tidied else tidy
+    finish = terms_factored if tidied else tidy
     if not generators:
         return {sp.Integer(1): finish(expr)}
     grouped = _group_by_monomial(expanded(expr), set(generators))
