@@ -186,7 +186,7 @@ def _foldable(expr: sp.Expr) -> bool:
     for total in expr.atoms(sp.Add):
         cosines: dict[sp.Expr, set[int]] = {}
         sines: dict[sp.Expr, set[int]] = {}
-        rests, numbers = [], []
+        parts = []  # each term's factors other than sines and cosines: (the rest, the numbers)
         for i, term in enumerate(total.args):
             rest, number = [], []
             for factor in sp.Mul.make_args(term):
@@ -195,9 +195,12 @@ def _foldable(expr: sp.Expr) -> bool:
                     (sines if isinstance(base, sp.sin) else cosines).setdefault(base.args[0], set()).add(i)
                 else:
                     (number if factor.is_number else rest).append(factor)
-            rests.append(sp.Mul(*rest))
-            numbers.append(sp.Mul(*number))
-        for x in cosines.keys() & sines.keys():
+            parts.append((rest, number))
+        shared = cosines.keys() & sines.keys()
+        if not shared:  # (a sum of cosines alone, a chain's V: no product to build)
+            continue
+        rests, numbers = [sp.Mul(*r) for r, _ in parts], [sp.Mul(*n) for _, n in parts]
+        for x in shared:
             if any(i != j and rests[i] == rests[j] and _folding_ratio(numbers[i] / numbers[j])
                    for i in cosines[x] for j in sines[x]):
                 return True
