@@ -209,6 +209,8 @@ def _linear_and_primitive(poly: sp.Poly) -> bool:
     for x in poly.gens:
         if poly.degree(x) == 1:
             a = poly.diff(x)
+            if a.is_ground:  # gcd(a, b) divides a, so is a number: no gcd to take (V = Σ cᵢ cos θᵢ)
+                return True
             b = poly - a * sp.Poly(x, *poly.gens, domain=poly.domain)
             if a.gcd(b).is_ground:
                 return True

@@ -520,13 +520,32 @@ def to_latex(value: Math) -> str:
     if isinstance(value, sp.MatrixBase) and value.shape == (1, 1):
         return to_latex(value[0, 0])
     if isinstance(value, sp.MatrixBase) and 1 in value.shape:
-        items = " \\\\ ".join(_TEX.doprint(x) for x in _zeroed(list(value)))
+        items = " \\\\ ".join(_entries_latex(_zeroed(list(value))))
         return f"\\begin{{pmatrix}} {items} \\end{{pmatrix}}"
     if isinstance(value, sp.MatrixBase):
-        value = sp.Matrix(value.shape[0], value.shape[1], _zeroed(list(value)))
-        rows = " \\\\ ".join(" & ".join(_TEX.doprint(x) for x in row) for row in value.tolist())
+        cols = value.shape[1]
+        entries = _entries_latex(_zeroed(list(value)))
+        rows = " \\\\ ".join(" & ".join(entries[i:i + cols]) for i in range(0, len(entries), cols))
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
     return _TEX.doprint(value)
+
+
+def _entries_latex(entries: list) -> list[str]:
+    """Each entry of a matrix in LaTeX, an entry that recurs printed once: a symmetric
+    M or K of n coordinates has n(n + 1)/2 distinct entries of n² (an n-link chain's
+    M(q): each cos(θⱼ − θᵢ) twice). An entry with a Float is printed each time (0.5 at
+    15 and at 30 digits are equal keys), as is anything not hashable."""
+    printed: dict = {}
+    out = []
+    for x in entries:
+        if not isinstance(x, sp.Basic) or x.has(sp.Float):
+            out.append(_TEX.doprint(x))
+            continue
+        text = printed.get(x)
+        if text is None:
+            text = printed[x] = _TEX.doprint(x)
+        out.append(text)
+    return out
 
 
 LATEX_OPS = {"≥": r"\geq", "≤": r"\leq", "≠": r"\neq", "<": "<", ">": ">", "=": "="}

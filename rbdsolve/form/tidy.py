@@ -11,6 +11,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.simplify.fu import TR10i
 
 from rbdsolve.form.expansion import expanded
@@ -33,17 +34,63 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         return expr
     if expr.has(sp.acos, sp.asin, sp.atan):
         expr = _of_inverses(expr)
-    ops = sp.count_ops(expr)
-    if ops > MAX_OPS:
+    if _past_limit(expr):
         return expr
     if expr.has(sp.sin, sp.cos):
-        shorter = _pythagoras(expr)
-        ops, expr = (ops if shorter is expr else sp.count_ops(shorter)), shorter
+        expr = _pythagoras(expr)
         if _foldable(expr):
-            expr = _folded(expr, ops)
+            expr = _folded(expr)
     if _has_denominator(expr):
         expr = _cancel(expr)
-    return _leading_plus(sp.factor_terms(expr))
+    return _leading_plus(terms_factored(expr))
+
+
+def terms_factored(expr: sp.Expr) -> sp.Expr:
+    """sympy's ``factor_terms(expr)`` (a common factor pulled out of each sum, in every
+    argument), or ``expr`` itself where that is what it gives: a product of a rational,
+    powers of symbols, coordinates θ(t) and their derivatives, and sines and cosines of a
+    symbol, a coordinate or a sum of them with unit coefficients (cos(θ₂ − θ₁)), as every
+    entry of a chain's M(q) is. There factor_terms takes the rational out and puts it
+    back in front of the same factors, and finds nothing to pull out of the sum (its
+    terms share no factor, and not every one is negative) after walking it with gcd_terms:
+    most of ``tidy``'s time on such an entry. tests/form/test_terms_factored.py checks
+    the form against factor_terms."""
+    if all(_kept_as_it_is(f) for f in sp.Mul.make_args(expr)):
+        return expr
+    return sp.factor_terms(expr)
+
+
+def _kept_as_it_is(factor: sp.Expr) -> bool:
+    if factor.is_Rational or factor.is_Symbol:
+        return True
+    if factor.is_Pow:
+        return factor.base.is_Symbol and factor.exp.is_Rational
+    if isinstance(factor, sp.Derivative):
+        return _coordinate(factor.expr)
+    if isinstance(factor, (sp.sin, sp.cos)):
+        return _unit_sum(factor.args[0])
+    return _coordinate(factor)
+
+
+def _coordinate(expr: sp.Expr) -> bool:
+    """θ(t): an undefined function of symbols."""
+    return isinstance(expr, AppliedUndef) and all(x.is_Symbol for x in expr.args)
+
+
+def _unit_sum(expr: sp.Expr) -> bool:
+    """A symbol or a coordinate, or a sum of them each with coefficient ±1, one at least +1."""
+    if expr.is_Symbol or _coordinate(expr):
+        return True
+    if not expr.is_Add:
+        return False
+    positive = False
+    for term in expr.args:
+        if term.is_Symbol or _coordinate(term):
+            positive = True
+        elif not (term.is_Mul and len(term.args) == 2 and term.args[0] is sp.S.NegativeOne
+                  and (term.args[1].is_Symbol or _coordinate(term.args[1]))):
+            return False
+    return positive
 
 
 def _of_inverses(expr: sp.Expr) -> sp.Expr:
@@ -60,15 +107,41 @@ def _of_inverses(expr: sp.Expr) -> sp.Expr:
     return expanded(expr.xreplace(found)) if found else expr
 
 
-def _folded(expr: sp.Expr, ops: int) -> sp.Expr:
-    """``fu.TR10i``'s fold where it is shorter (``ops``: the operations of ``expr``);
+OPS_PER_NODE = 9  # count_ops(e) ≤ 9 × the nodes of e's tree (``_past_limit``)
+
+
+def _past_limit(expr: sp.Expr) -> bool:
+    """count_ops(expr) > MAX_OPS, counted only where the size of expr's tree leaves it
+    open: a coefficient of a few dozen nodes (every entry of a chain's M(q)) is within
+    the limit without counting, which would cost more than the rest of its tidying.
+
+    The bound: count_ops walks the tree from the root, and each term it takes counts
+    at most 2 operations (− and / of a rational, of a product's coefficient) plus one
+    per argument it puts back to walk (the ± of a sum's terms, the × of a product's
+    factors, a function or power over its arguments): at most 3 per term walked. It
+    walks each node once, except that a product is first split into its numerator and
+    denominator (sympy's ``fraction``), two new products of its factors (a rational
+    coefficient p/q split in two): at most 3 terms walked per node. So count_ops(e) ≤
+    9 × nodes(e), and a tree of at most MAX_OPS / 9 nodes is within the limit."""
+    stack, nodes = [expr], 0
+    while stack:
+        nodes += 1
+        if nodes * OPS_PER_NODE > MAX_OPS:
+            return sp.count_ops(expr) > MAX_OPS
+        stack.extend(stack.pop().args)
+    return False
+
+
+def _folded(expr: sp.Expr) -> sp.Expr:
+    """``fu.TR10i``'s fold where it is shorter (no more operations than ``expr``);
     C cos a cos b + C sin a sin b, the form of every entry of a chain's M(q), read off
-    its two terms directly (TR10i searches every pair of every sum for it)."""
+    its two terms directly (TR10i searches every pair of every sum for it, and neither
+    form's operations need counting)."""
     folded = _cosine_of_difference(expr)
     if folded is not None:  # one cosine for two terms of two each: always shorter
         return folded
     folded = TR10i(expr)
-    return folded if sp.count_ops(folded) <= ops else expr
+    return folded if sp.count_ops(folded) <= sp.count_ops(expr) else expr
 
 
 def _cosine_of_difference(expr: sp.Expr) -> sp.Expr | None:
@@ -113,7 +186,7 @@ def _foldable(expr: sp.Expr) -> bool:
     for total in expr.atoms(sp.Add):
         cosines: dict[sp.Expr, set[int]] = {}
         sines: dict[sp.Expr, set[int]] = {}
-        rests, numbers = [], []
+        parts = []  # each term's factors other than sines and cosines: (the rest, the numbers)
         for i, term in enumerate(total.args):
             rest, number = [], []
             for factor in sp.Mul.make_args(term):
@@ -122,9 +195,12 @@ def _foldable(expr: sp.Expr) -> bool:
                     (sines if isinstance(base, sp.sin) else cosines).setdefault(base.args[0], set()).add(i)
                 else:
                     (number if factor.is_number else rest).append(factor)
-            rests.append(sp.Mul(*rest))
-            numbers.append(sp.Mul(*number))
-        for x in cosines.keys() & sines.keys():
+            parts.append((rest, number))
+        shared = cosines.keys() & sines.keys()
+        if not shared:  # (a sum of cosines alone, a chain's V: no product to build)
+            continue
+        rests, numbers = [sp.Mul(*r) for r, _ in parts], [sp.Mul(*n) for _, n in parts]
+        for x in shared:
             if any(i != j and rests[i] == rests[j] and _folding_ratio(numbers[i] / numbers[j])
                    for i in cosines[x] for j in sines[x]):
                 return True
@@ -355,7 +431,7 @@ def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False)
     """Split ``expr`` into monomials in the symbols ``generators`` (q̇, q̈), each with its
     coefficient tidied (skipped when ``expr`` was built from tidied coefficients already).
     Returns {monomial: coefficient}; monomial 1 holds the rest."""
-    finish = (lambda c: sp.factor_terms(c)) if tidied else tidy
+    finish = terms_factored if tidied else tidy
     if not generators:
         return {sp.Integer(1): finish(expr)}
     grouped = _group_by_monomial(expanded(expr), set(generators))

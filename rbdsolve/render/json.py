@@ -17,6 +17,7 @@ from enum import Enum
 from functools import lru_cache
 
 import sympy as sp
+from sympy.printing.str import StrPrinter
 
 from rbdsolve.errors import InputError, InternalError, UnsolvedError
 from rbdsolve.render.json_text import strict_json
@@ -46,8 +47,40 @@ def _exact_leaf(value: object) -> object:
 def _printed(value: sp.Basic) -> str:
     """``str`` of an exact expression, which a report prints several times (an answer,
     then in its step; the zeros of every matrix): sympy orders a sum's terms each time.
-    (Not for floats: 0.5 at 15 and at 30 digits are equal keys that print differently.)"""
-    return str(value)
+    (Not for floats: 0.5 at 15 and at 30 digits are equal keys that print differently.)
+    An object whose class writes its own ``str`` (a matrix, on one line) is left to it."""
+    return _SHARED.doprint(value) if type(value).__str__ is sp.Basic.__str__ else str(value)
+
+
+class SharedStr(StrPrinter):
+    """``str`` of exact expressions with each subexpression printed once, whichever
+    expression it stands in: a chain's T and M(q) hold each cos(θⱼ(t) − θᵢ(t)) and θ̇ᵢ
+    n times over, and sympy's printer orders a sum's terms again each time. The text is
+    ``str``'s: the same printer with the settings ``str`` uses (sympy's ``sstr`` with
+    order None), and it prints a subexpression the same wherever it stands (the brackets
+    round it are its parent's). Only for expressions without a Float (``_printed``): a
+    Float prints by its precision, which equal keys do not share. Past ``LIMIT``
+    subexpressions (a long batch) the memory starts again."""
+
+    LIMIT = 100_000
+
+    def __init__(self) -> None:
+        super().__init__({"order": None})
+        self._texts: dict[sp.Basic, str] = {}
+
+    def _print(self, expr, **kwargs) -> str:
+        if kwargs or not isinstance(expr, sp.Basic):
+            return super()._print(expr, **kwargs)
+        text = self._texts.get(expr)
+        if text is None:
+            text = super()._print(expr)
+            if len(self._texts) >= self.LIMIT:
+                self._texts.clear()
+            self._texts[expr] = text
+        return text
+
+
+_SHARED = SharedStr()
 
 
 def _math(value: Math) -> object:

@@ -89,6 +89,8 @@ x, y, z, w = sp.symbols("x y z w")
     (x**2 + y**2, False),
     ((x + 1)**2 * y, True),  # linear in y, b = 0: the gcd (x + 1)² is not a number
     (x**2 * w - 3 * y * z**2 + 7, False),  # linear in w, gcd(x², 7 − 3yz²) = 1
+    (31 * x / 2 + 29 * y / 2 + 3 * z + w / 2, False),  # a = 31/2, a number: no gcd taken (a chain's V)
+    (3 * x + 6 * y * z**2 + 9 * z, False),  # a = 3 divides b: the number alone is no factor
 ])
 def test_whether_a_polynomial_splits(expr, splits):
     """By hand: a factor of a x + b of degree 0 in x divides a and b."""

@@ -1,0 +1,66 @@
+"""tidy's size limit decided without counting where the tree is small: the bound
+count_ops(e) ≤ 9 × nodes(e) that ``_past_limit`` rests on holds on every shape that
+count_ops treats apart (negative coefficients, fractions, negative powers, sums of
+negative terms, functions, derivatives), and ``_past_limit`` answers what
+``count_ops(e) > MAX_OPS`` answers (sympy's count_ops the oracle)."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+
+from rbdsolve.form.tidy import MAX_OPS, OPS_PER_NODE, _past_limit
+
+x, y, z = sp.symbols("x y z")
+th = sp.Function("theta")(sp.Symbol("t"))
+LEAVES = [x, y, z, th, sp.Integer(2), sp.Integer(-3), sp.Rational(-5, 7), sp.Rational(1, 3), sp.pi, sp.sqrt(2),
+          sp.Float(0.25)]
+
+
+def _random_expr(rng: random.Random, depth: int) -> sp.Expr:
+    if depth == 0 or rng.random() < 0.2:
+        return rng.choice(LEAVES)
+    pick = rng.randrange(8)
+    a, b = _random_expr(rng, depth - 1), _random_expr(rng, depth - 1)
+    if pick == 0:
+        return a + b
+    if pick == 1:
+        return a - b
+    if pick == 2:
+        return a * b
+    if pick == 3:
+        return a / (b + 1)
+    if pick == 4:
+        return -a * b / 3
+    if pick == 5:
+        return sp.cos(a) * sp.sin(b)
+    if pick == 6:
+        return a ** rng.choice([-2, -1, 2, sp.Rational(1, 2), sp.Rational(-3, 2)])
+    return sp.exp(-a) + sp.Derivative(th, sp.Symbol("t")) * b
+
+
+def _nodes(e: sp.Basic) -> int:
+    return 1 + sum(_nodes(a) for a in e.args)
+
+
+def test_count_ops_is_at_most_nine_per_node() -> None:
+    rng = random.Random(37)
+    worst = 0.0
+    for _ in range(1500):
+        e = _random_expr(rng, 5)
+        ops = sp.count_ops(e)
+        assert ops <= OPS_PER_NODE * _nodes(e), e
+        worst = max(worst, ops / _nodes(e))
+    assert worst > 0.5  # the shapes that count were met
+
+
+def test_past_limit_is_count_ops_past_max_ops() -> None:
+    rng = random.Random(5)
+    sizes = set()
+    for _ in range(300):
+        terms = rng.randrange(1, 120)
+        e = sp.Add(*[_random_expr(rng, 3) * sp.Symbol(f"a{i}") for i in range(terms)])
+        assert _past_limit(e) == (sp.count_ops(e) > MAX_OPS), e
+        sizes.add(sp.count_ops(e) > MAX_OPS)
+    assert sizes == {True, False}  # both sides of the limit were sampled
