@@ -22,7 +22,7 @@ from rbdsolve.form.display import Along, Math, Product, Relation, Scaled, Terms
 from rbdsolve.form.expansion import expanded
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import collect_in, tidy
+from rbdsolve.form.tidy import collect_in, common_factors, tidy
 
 
 def _as_written(e: sp.Expr) -> sp.Expr:
@@ -79,7 +79,7 @@ def arranged_equation(expr: sp.Expr, reading: Reading) -> Math:
     still = parts.get(sp.Integer(1), sp.Integer(0))
     groups = [arranged(moving, reading)] if moving != 0 else []
     if still != 0:
-        common = sp.factor_terms(expanded(still))
+        common = common_factors(expanded(still))
         pulled = [f for f in sp.Mul.make_args(common) if not f.is_Add]
         if len(pulled) < len(sp.Mul.make_args(common)) and any(f.has(*coordinates) for f in pulled):
             groups.append(show(common))
@@ -95,7 +95,7 @@ def common_scale(exprs: list[sp.Expr], symbols: set[sp.Symbol]) -> sp.Expr:
     m r² [7/8 θ̇² + …] and a matrix as m r² [[7/4, 1/4], [1/4, 1/3]]. A common sign
     is included when every expression is negative.
     """
-    nonzero = [sp.factor_terms(e) for e in dict.fromkeys(exprs) if e != 0]  # each distinct entry once
+    nonzero = [common_factors(e) for e in dict.fromkeys(exprs) if e != 0]  # each distinct entry once
     if not nonzero:
         return sp.Integer(1)
     powers: dict[sp.Symbol, sp.Expr] | None = None
