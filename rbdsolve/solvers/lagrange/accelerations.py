@@ -21,7 +21,7 @@ from rbdsolve.form.expansion import expanded
 from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction_parts
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.problem.schema import Instant
+from rbdsolve.problem.instants import Instant
 from rbdsolve.report import steps as st
 from rbdsolve.model.values.values import sample
 
