@@ -33,14 +33,12 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         return expr
     if expr.has(sp.acos, sp.asin, sp.atan):
         expr = _of_inverses(expr)
-    ops = sp.count_ops(expr)
-    if ops > MAX_OPS:
+    if _larger_than(expr, MAX_OPS):
         return expr
     if expr.has(sp.sin, sp.cos):
-        shorter = _pythagoras(expr)
-        ops, expr = (ops if shorter is expr else sp.count_ops(shorter)), shorter
+        expr = _pythagoras(expr)
         if _foldable(expr):
-            expr = _folded(expr, ops)
+            expr = _folded(expr)
     if _has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(common_factors(expr))
@@ -73,15 +71,30 @@ def _of_inverses(expr: sp.Expr) -> sp.Expr:
     return expanded(expr.xreplace(found)) if found else expr
 
 
-def _folded(expr: sp.Expr, ops: int) -> sp.Expr:
-    """``fu.TR10i``'s fold where it is shorter (``ops``: the operations of ``expr``);
+def _larger_than(expr: sp.Expr, limit: int) -> bool:
+    """``sp.count_ops(expr) > limit``, without counting where ``expr`` is too small for
+    it. ``count_ops`` counts at most one operation per argument of a sum, a product, a
+    power or a function (a product's sign and denominator come with arguments it splits
+    off) and two per rational (−3/4: NEG, DIV), so at most 3 per node of the tree;
+    counting the nodes costs a tenth of counting the operations, which builds a sympy
+    sum of the operations' names."""
+    nodes = 0
+    for _ in sp.preorder_traversal(expr):
+        nodes += 1
+        if 3 * nodes > limit:
+            return sp.count_ops(expr) > limit
+    return False
+
+
+def _folded(expr: sp.Expr) -> sp.Expr:
+    """``fu.TR10i``'s fold where it is shorter (fewer operations than ``expr``);
     C cos a cos b + C sin a sin b, the form of every entry of a chain's M(q), read off
     its two terms directly (TR10i searches every pair of every sum for it)."""
     folded = _cosine_of_difference(expr)
     if folded is not None:  # one cosine for two terms of two each: always shorter
         return folded
     folded = TR10i(expr)
-    return folded if sp.count_ops(folded) <= ops else expr
+    return folded if sp.count_ops(folded) <= sp.count_ops(expr) else expr
 
 
 def _cosine_of_difference(expr: sp.Expr) -> sp.Expr | None:
