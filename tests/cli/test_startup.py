@@ -20,7 +20,9 @@ FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.p
             "rbdsolve.solvers.modes.gyroscopic", "rbdsolve.solvers.modes.routh", "rbdsolve.model.energies.gyroscopic",
             # a scene's contacts, springs, loads, frames (and their readers), the other questions' options
             "rbdsolve.problem.scene", "rbdsolve.problem.options", "rbdsolve.problem.sections.contacts",
-            "rbdsolve.problem.sections.loads", "rbdsolve.problem.sections.impact")
+            "rbdsolve.problem.sections.loads", "rbdsolve.problem.sections.impact",
+            # roots of degree ≥ 5 as certified decimals; where the numeric route would search
+            "rbdsolve.solvers.modes.certified", "rbdsolve.solvers.numeric.search_box")
 TERMINAL = ("rich.console",)  # a solution written to a pipe or a file is laid out without it (render/text.py)
 WATCHED = HEAVY + COMMAND_MODULES + FEATURES + TERMINAL
 
