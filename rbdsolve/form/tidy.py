@@ -39,7 +39,7 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         expr = _pythagoras(expr)
         if _foldable(expr):
             expr = _folded(expr)
-    if _has_denominator(expr):
+    if has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(common_factors(expr))
 
@@ -299,7 +299,7 @@ def _cancel(expr: sp.Expr) -> sp.Expr:
     return sp.cancel(sp.together(plain)).xreplace(back)
 
 
-def _has_denominator(expr: sp.Expr) -> bool:
+def has_denominator(expr: sp.Expr) -> bool:
     """Does a sum appear in a denominator (a rational function worth cancelling)?"""
     return any(p.exp.is_negative and p.base.is_Add for p in expr.atoms(sp.Pow))
 
