@@ -22,7 +22,9 @@ FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.p
             "rbdsolve.problem.scene", "rbdsolve.problem.options", "rbdsolve.problem.sections.contacts",
             "rbdsolve.problem.sections.loads", "rbdsolve.problem.sections.impact",
             # roots of degree ≥ 5 as certified decimals; where the numeric route would search
-            "rbdsolve.solvers.modes.certified", "rbdsolve.solvers.numeric.search_box")
+            "rbdsolve.solvers.modes.certified", "rbdsolve.solvers.numeric.search_box",
+            # the units and the numeric block of answers with values (seed problem 1 has none)
+            "rbdsolve.model.values.units", "rbdsolve.model.values.numbers")
 TERMINAL = ("rich.console",)  # a solution written to a pipe or a file is laid out without it (render/text.py)
 WATCHED = HEAVY + COMMAND_MODULES + FEATURES + TERMINAL
 
