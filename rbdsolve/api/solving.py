@@ -53,9 +53,9 @@ def solve(problem: Problem | str | os.PathLike | Mapping, *, route: str = "auto"
     from rbdsolve.solvers import Options, RouteChoice, solve_file
 
     problem = _as_problem(problem)
-    options = Options(values=checked_values(given_values(values, SAID), problem, SAID), budget=_budget(budget),
-                      route=RouteChoice(_route(route)))
-    return Result(problem, solve_file(problem, options))
+    given = checked_values(given_values(values, SAID), problem, SAID)
+    options = Options(budget=_budget(budget), route=RouteChoice(_route(route)))
+    return Result(problem, solve_file(problem.with_values(given), options))
 
 
 def _as_problem(problem: object) -> Problem:

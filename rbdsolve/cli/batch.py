@@ -67,8 +67,8 @@ def solve_source(source: Source, settings: Settings, on_stage: Callable[[str], N
     try:
         problem = source.load()
         values = check_sets(dict(settings.values), problem)
-        options = Options(values=values, budget=settings.budget, route=RouteChoice(settings.route), on_stage=on_stage)
-        report = solve_file(problem, options)
+        options = Options(budget=settings.budget, route=RouteChoice(settings.route), on_stage=on_stage)
+        report = solve_file(problem.with_values(values), options)
     except (InputError, UnsolvedError) as exc:
         failure = Failure(exc.message, exc.location, exc.exit_code, str(exc))
         return Outcome(source.name, None, failure, time.perf_counter() - start)

@@ -15,10 +15,10 @@ are modules of their own, which these share.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Mapping
 
 from rbdsolve.errors import Location
 from rbdsolve.problem.expr import Expr
@@ -342,3 +342,14 @@ class Problem:
 
     def value_map(self) -> dict[str, Value]:
         return dict(self.values)
+
+    def with_values(self, values: Mapping[str, Value]) -> Problem:
+        """The same problem with these values, as if written under ``values:`` (``--set``,
+        the API's ``values=``): each overrides the file's in its place, the others follow
+        in the order given. Values are the problem's data, not how it is solved: the
+        model is built from them."""
+        if not values:
+            return self
+        table = dict(self.values)
+        table.update(values)
+        return replace(self, values=tuple(table.items()))

@@ -94,7 +94,9 @@ def body(report: ProblemReport, pictures: tuple[Picture, ...] = ()) -> list[str]
         lines += [text(report.statement), ""]
     lines += [line for picture in pictures for line in _picture(picture)]
     if report.values:
-        lines.append("Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + text(unit_text(report.units.get(k))) for k, v in report.values.items()) + ".")
+        given = (f"${value_latex(k, v)}$" + text(unit_text(report.units.get(k)) + report.degrees_text(k))
+                 for k, v in report.values.items())
+        lines.append("Parameter values: " + ", ".join(given) + ".")
     if report.model.steps:
         lines += ["\\subsection*{Model}"]
         for step in report.model.steps:

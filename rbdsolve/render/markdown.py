@@ -38,7 +38,9 @@ def render(report: ProblemReport, pictures: tuple[Picture, ...] = (), level: int
         lines += [md(report.statement, lines=True), ""]
     lines += [f"![{md(p.caption)}]({p.path.as_posix()})\n\n*{md(p.caption)}*\n" for p in pictures]
     if report.values:
-        lines += ["Parameter values: " + ", ".join(f"${value_latex(k, v)}$" + unit_text(report.units.get(k)) for k, v in report.values.items()), ""]
+        given = (f"${value_latex(k, v)}$" + unit_text(report.units.get(k)) + report.degrees_text(k)
+                 for k, v in report.values.items())
+        lines += ["Parameter values: " + ", ".join(given), ""]
     if report.model.steps:
         lines += [f"{head}# Model", ""]
         for step in report.model.steps:

@@ -6,6 +6,7 @@ given, what is defined, the equations, what is substituted, the results, and not
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 from enum import Enum
 from typing import TYPE_CHECKING, Mapping
@@ -144,12 +145,21 @@ class ProblemReport:
     values: Mapping[str, object] = field(default_factory=dict)  # parameter values used
     symbols: tuple[str, ...] = ()  # parameter names, to read answers back (docs/json.md)
     units: Mapping[str, str] = field(default_factory=dict)  # SI unit of each value whose dimension is known
+    angles: frozenset[str] = frozenset()  # parameters given in an angle unit (30 deg): shown with their degrees
 
     def value_text(self, name: str) -> str:
-        """'m = 0.2 kg', 'v₀ = 300 m/s': a parameter's value as the answers print it,
-        with its unit where known."""
+        """'m = 0.2 kg', 'v₀ = 300 m/s', 'α = 0.523599 (30°)': a parameter's value as the
+        answers print it, with its unit where known, and an angle's degrees."""
         unit = self.units.get(name)
-        return f"{unicode_name(name)} = {float_text(self.values[name])}" + (f" {unit}" if unit else "")
+        return f"{unicode_name(name)} = {float_text(self.values[name])}" + (f" {unit}" if unit else "") + \
+            self.degrees_text(name)
+
+    def degrees_text(self, name: str) -> str:
+        """' (30°)' after a parameter given in an angle unit (its value in radians, as
+        every answer uses it), '' after any other."""
+        if name not in self.angles:
+            return ""
+        return f" ({float_text(math.degrees(float(self.values[name])))}°)"
 
     @property
     def solved(self) -> bool:

@@ -152,3 +152,26 @@ def test_an_angle_a_spring_winds_up_is_in_radians(name, where) -> None:
     result = CliRunner().invoke(main, ["solve", "-f", "json", str(PROBLEMS / name)])
     units = json.loads(result.output)["results"][where]["units"]
     assert (units["equilibria"][0]["at"] if "equilibria" in units else units["about"]) == {"theta": "rad"}
+
+
+def test_a_value_given_with_set_decides_what_the_same_value_in_the_file_would(tmp_path) -> None:
+    """Which side of the axle the string leaves from depends on the sign of cos α: a value
+    decides it, under ``values:`` or given with --set alike (the model is built from them)."""
+    text = (PROBLEMS / "forces" / "spool-pulled-off-top.yaml").read_text()
+    line = next(x for x in text.splitlines() if x.startswith("values:"))
+    path = tmp_path / "spool.yaml"
+    path.write_text(text.replace(line + "\n", ""))
+    unset = CliRunner().invoke(main, ["solve", "-f", "json", str(path)])
+    assert unset.exit_code == 2 and "sign of cos(α)" in unset.output
+    sets = [x for pair in (("--set", v) for v in ("m=2 kg", "R=10 cm", "r=5 cm", "k=8 cm", "F=10 N",
+                                                   "alpha=30 deg", "g=9.81 m/s^2")) for x in pair]
+    result = CliRunner().invoke(main, ["solve", "-f", "json", str(path), *sets])
+    assert result.exit_code == 0, result.output
+    eom, reactions = json.loads(result.output)["results"]
+    # By hand, moments about the contact: m (k² + R²) a/R = F (r + R cos α); N = m g − F sin α.
+    m, R, r, k, F, alpha, g = 2, 0.1, 0.05, 0.08, 10, math.pi / 6, 9.81
+    a = F * R * (r + R * math.cos(alpha)) / (m * (k**2 + R**2))
+    assert eom["values"]["accelerations"]["x"] == pytest.approx(a, rel=1e-12)
+    components = reactions["values"]["reactions"]["C"]["components"]
+    assert components["N_C"] == pytest.approx(m * g - F * math.sin(alpha), rel=1e-12)
+    assert components["F_C"] == pytest.approx(F * math.cos(alpha) - m * a, rel=1e-12)

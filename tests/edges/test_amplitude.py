@@ -17,9 +17,10 @@ import pytest
 from scipy.special import ellipk
 
 from rbdsolve.errors import InputError
+from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.render.json import render_report
-from rbdsolve.solvers import Options, RouteChoice, solve_file
+from rbdsolve.solvers import Options, RouteChoice, solve_file, solve_problem
 
 from conftest import SIMPLE_PENDULUM
 
@@ -32,8 +33,8 @@ questions:
 TOLERANCE = 1e-8  # relative, measured ω against the elliptic-integral one (rtol 1e-11 integration)
 
 
-def _modes(text: str, route: RouteChoice = RouteChoice.EXACT, values=None):
-    report = solve_file(load_text(text, "scene.yaml"), Options(values or {}, route=route, budget=30))
+def _modes(text: str, route: RouteChoice = RouteChoice.EXACT):
+    report = solve_file(load_text(text, "scene.yaml"), Options(route=route, budget=30))
     return report, report.solutions[0]
 
 
@@ -67,8 +68,9 @@ def test_the_two_rods_at_small_amplitude_match_the_linear_modes() -> None:
     assert "check_amplitudes" in text
     from fractions import Fraction
 
-    report = solve_file(load_text(text, "p1.yaml"), Options({"m": Fraction(1), "r": Fraction(1, 2),
-                                                             "g": Fraction(981, 100)}, budget=30))
+    model = build_model(load_text(text, "p1.yaml")).with_values({"m": Fraction(1), "r": Fraction(1, 2),
+                                                                 "g": Fraction(981, 100)})
+    report = solve_problem(model, Options(budget=30))
     modes = next(s for s in report.solutions if s.question == "modes")
     g, r = 9.81, 0.5
     linear = [math.sqrt(24 * g / (25 * r)), math.sqrt(2 * g / r)]

@@ -89,11 +89,14 @@ MASS, LENGTH, ACCELERATION, NUMBER = Dimension(mass=Fraction(1)), Dimension(leng
 
 @dataclass(frozen=True)
 class Unit:
-    """A unit as written (``rev/min``): its exact factor to SI and its dimension."""
+    """A unit as written (``rev/min``): its exact factor to SI and its dimension;
+    ``angle``: written in angle units alone (``30 deg``, ``2 rev``), so the value is an
+    angle, whose degrees the parameter values beside the answers show."""
 
     text: str
     factor: ex.Tree
     dimension: Dimension
+    angle: bool = False
 
 
 @dataclass(frozen=True)
@@ -101,12 +104,14 @@ class Value:
     """An exact real constant (a tree of numbers, ``pi`` and functions), in SI units.
 
     ``dimension`` is None for a plain number (the file says nothing of its dimension);
-    ``approx`` is its floating-point value, for comparisons and tables."""
+    ``approx`` is its floating-point value, for comparisons and tables; ``angle``: given
+    in an angle unit (``30 deg``: ``Unit.angle``)."""
 
     tree: ex.Tree
     text: str
     approx: float
     dimension: Dimension | None = None
+    angle: bool = False
 
     def __float__(self) -> float:
         return self.approx
@@ -119,7 +124,8 @@ class Value:
     def step(self, k: int, step: Value) -> Value:
         """self + k·step, exactly (a grid of exam values such as π/12 + k·π/12)."""
         tree = ex.BinOp("+", self.tree, ex.BinOp("*", ex.Num(Fraction(k)), step.tree)) if k else self.tree
-        return Value(tree, f"{self.text} + {k}·({step.text})", self.approx + k * step.approx, self.dimension)
+        return Value(tree, f"{self.text} + {k}·({step.text})", self.approx + k * step.approx, self.dimension,
+                     self.angle)
 
 
 def number_value(x: Fraction | int) -> Value:
@@ -194,7 +200,7 @@ def _value(tree: ex.Tree, text: str, loc: Location, unit: Unit | None) -> Value:
         raise InputError(f"the number {ex._clip(text)} is too large (the limit is 1e300)", loc)
     if approx is None or not math.isfinite(approx):
         raise InputError(f"'{ex._clip(text)}' is not a real number", loc)
-    return Value(tree, text, approx, unit.dimension if unit is not None else None)
+    return Value(tree, text, approx, unit.dimension if unit is not None else None, unit is not None and unit.angle)
 
 
 def _overflows(tree: ex.Tree) -> bool:
@@ -250,7 +256,7 @@ _UNIT_TOKEN = re.compile(r"\s*(?:(?P<name>[^\W\d_][\w]*|°)|(?P<op>\*\*|\^|\*|·
 def parse_unit(text: str, loc: Location, plain: bool = True) -> Unit:
     """``m/s^2``, ``kg*m**2``, ``N m/rad``, ``rev/min``: a product of unit names with
     integer powers; each name after '/' divides."""
-    factor, dimension, pi_power = Fraction(1), Dimension(), 0
+    factor, dimension, pi_power, names = Fraction(1), Dimension(), 0, []
     pos, divide, expect_name = 0, False, True
     source = text.rstrip()
     while pos < len(source):
@@ -263,6 +269,7 @@ def parse_unit(text: str, loc: Location, plain: bool = True) -> Unit:
             name = match.group("name")
             power, pos = _exponent(source, match.end(), loc, plain)
             f, d, p = _named_unit(name, _at(loc, plain, start))
+            names.append(name)
             sign = -power if divide else power
             factor, dimension, pi_power = factor * f ** sign, dimension * d ** sign, pi_power + p * sign
             divide, expect_name = False, False
@@ -276,7 +283,7 @@ def parse_unit(text: str, loc: Location, plain: bool = True) -> Unit:
     tree = ex.Num(factor)
     if pi_power:
         tree = ex.BinOp("*", tree, ex.BinOp("**", ex.Const("pi"), ex.Num(Fraction(pi_power))))
-    return Unit(source.strip(), tree, dimension)
+    return Unit(source.strip(), tree, dimension, dimension == NUMBER and all(n in _ANGLES for n in names))
 
 
 def _exponent(source: str, pos: int, loc: Location, plain: bool) -> tuple[int, int]:
@@ -294,6 +301,7 @@ def _exponent(source: str, pos: int, loc: Location, plain: bool) -> tuple[int, i
 
 
 _ALIASES = {"°": "degree"}
+_ANGLES = frozenset({"rad", "deg", "degree", "°", "rev", "revolution"})
 _BASE = {"[mass]": "mass", "[length]": "length", "[time]": "time"}
 _COMMON = ("m", "cm", "mm", "km", "kg", "g", "s", "min", "h", "rad", "deg", "rev", "rpm", "N", "J", "Hz", "W")
 

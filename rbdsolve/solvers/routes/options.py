@@ -4,8 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
-from fractions import Fraction
-from typing import Callable, Mapping
+from typing import Callable
 
 
 class RouteChoice(Enum):
@@ -20,12 +19,12 @@ class RouteChoice(Enum):
 
 @dataclass(frozen=True)
 class Options:
-    """How to solve: parameter values from the command line (they override the file's),
-    the route, and the time budget in processor seconds for the whole run (None: none);
-    each stage of it is given its share as ``budget``, with the run's whole budget as
-    ``budget_total`` (solvers/routes/budget.py)."""
+    """How to solve: the route, and the time budget in processor seconds for the whole
+    run (None: none); each stage of it is given its share as ``budget``, with the run's
+    whole budget as ``budget_total`` (solvers/routes/budget.py). What is solved, values
+    from the command line included, is the problem's (``Problem.with_values``) or the
+    model's (``Model.with_values``)."""
 
-    values: Mapping[str, Fraction] = field(default_factory=dict)
     route: RouteChoice = RouteChoice.AUTO
     budget: float | None = None
     budget_total: float | None = None  # the run's budget of which ``budget`` is a share (None: budget is the whole)

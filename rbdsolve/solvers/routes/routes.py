@@ -261,13 +261,12 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     run = Allowance(options.budget)
     total = options.budget if options.budget_total is None else options.budget_total
     questions = problem.questions
-    model = None  # set once built, with its values: only the summary is left then
+    model = None  # set once built: only the summary is left then
     _stage(options, "the model (T and V)")
     try:
         with within(run.share(2) if _numeric_may_follow(problem, options) else run.left(), "the model (T and V)",
                     total):
-            built = build()
-            model = built.with_values(options.values) if options.values else built
+            model = build()
             summary = coordinates_only(model) if options.route is RouteChoice.NUMERIC else summarize_model(model)
     except OutOfTime as exc:
         if model is None or options.route is not RouteChoice.AUTO or missing_values(model):
@@ -280,8 +279,9 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     units = _units(model, values)
+    angles = frozenset(name for name, value in problem.values if value.angle and name in values)
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
-                         summary, solutions, values, symbols, units)
+                         summary, solutions, values, symbols, units, angles)
 
 
 def _units(model: Model, values: dict[str, float]) -> dict[str, str]:
@@ -295,9 +295,10 @@ def _units(model: Model, values: dict[str, float]) -> dict[str, str]:
 
 
 def _numeric_may_follow(problem: Problem, options: Options) -> bool:
-    """On auto, does every parameter have a value (the file's or given), so that the
-    numeric route may answer where the exact one cannot?"""
-    given = {name for name, _ in problem.values} | set(options.values)
+    """On auto, does every parameter have a value (the file's or given on the command
+    line: ``Problem.with_values``), so that the numeric route may answer where the exact
+    one cannot?"""
+    given = {name for name, _ in problem.values}
     return options.route is RouteChoice.AUTO and all(p.name in given for p in problem.parameters)
 
 

@@ -98,3 +98,13 @@ def test_ranges_take_exact_values_with_units() -> None:
     angles = load_text(PENDULUM.replace("VALUES", "{m: 1, l: 1, g: {range: [pi/12, pi/3], step: pi/12}}"))
     (g,) = angles.ranges
     assert g.size == 4 and sp.simplify(exact_number(g.value(3)) - sp.pi / 3) == 0
+
+
+@pytest.mark.parametrize("text, angle", [
+    ("30 deg", True), ("30°", True), ("2 rev", True), ("0.5 rad", True), ("30 degree", True),
+    ("pi/6", False), ("30", False), ("1200 rev/min", False), ("2 rad/s", False), ("2 N m/rad", False),
+    ("30 cm", False),
+])
+def test_a_value_in_angle_units_alone_is_an_angle(text, angle) -> None:
+    """An angle is what the parameter values beside the answers show in degrees too."""
+    assert parse_value(text, HERE).angle is angle

@@ -69,8 +69,7 @@ positive = st.fractions(min_value=Fraction(1, 4), max_value=Fraction(4), max_den
 
 def solve(text: str, **values):
     model = build_model(load_text(text, "scene.yaml"))
-    options = Options({k: Fraction(v) for k, v in values.items()})
-    return solve_problem(model, options).solutions[0]
+    return solve_problem(model.with_values({k: Fraction(v) for k, v in values.items()}), Options()).solutions[0]
 
 
 def answered(text: str):

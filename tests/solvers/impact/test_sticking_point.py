@@ -32,7 +32,7 @@ questions:
 
 def _solve(text: str):
     model = build_model(load_text(text, "scene.yaml"))
-    solution = solve_problem(model, Options({})).solutions[0]
+    solution = solve_problem(model, Options()).solutions[0]
     assert solution.error is None, solution.error
     return model, solution.answers
 
@@ -116,5 +116,5 @@ def test_a_fixed_point_cannot_stick() -> None:
     text = ROD.replace("AT", "0").replace("BEFORE", "{y: -v0}").replace("A: {sticks", "O: {sticks")
     text = text.replace("  A: G", "  O: [0, 0]\n  A: G")
     model = build_model(load_text(text, "scene.yaml"))
-    solution = solve_problem(model, Options({})).solutions[0]
+    solution = solve_problem(model, Options()).solutions[0]
     assert "the point O cannot move at the instant" in solution.error

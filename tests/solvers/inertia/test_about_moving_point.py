@@ -40,7 +40,7 @@ def _quadrature_about_contact(theta: float) -> float:
 
 def _solutions(path=HALF_DISK, route: RouteChoice = RouteChoice.EXACT, **values):
     model = build_model(load_file(path))
-    return solve_problem(model, Options(values, route=route)).solutions
+    return solve_problem(model.with_values(values), Options(route=route)).solutions
 
 
 def _number(expr, theta: float = 0.0, m: float = 1.0, R: float = 1.0) -> float:

@@ -23,7 +23,7 @@ def _numbers(path, values: dict) -> dict[str, str]:
     """The numeric block on the exact route, as ``--set NAME=VALUE…`` gives it."""
     problem = load_file(path)
     given = checked_values(given_values(values, "values"), problem, "values")
-    report = solve_file(problem, Options(values=given, route=RouteChoice("exact")))
+    report = solve_file(problem.with_values(given), Options(route=RouteChoice("exact")))
     (solution,) = report.solutions
     return {number_text(n).split(" = ")[0]: number_text(n) for n in solution.numbers}
 
