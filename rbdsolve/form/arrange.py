@@ -23,7 +23,7 @@ from rbdsolve.form.display import Along, Math, Product, Relation, Scaled, Terms
 from rbdsolve.form.expansion import expanded
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import collect_in, tidy
+from rbdsolve.form.tidy import collect_in, common_factors, tidy
 
 
 def _as_written(e: sp.Expr) -> sp.Expr:
@@ -80,7 +80,7 @@ def arranged_equation(expr: sp.Expr, reading: Reading) -> Math:
     still = parts.get(sp.Integer(1), sp.Integer(0))
     groups = [arranged(moving, reading)] if moving != 0 else []
     if still != 0:
-        common = sp.factor_terms(expanded(still))
+        common = common_factors(expanded(still))
         pulled = [f for f in sp.Mul.make_args(common) if not f.is_Add]
         if len(pulled) < len(sp.Mul.make_args(common)) and any(f.has(*coordinates) for f in pulled):
             groups.append(show(common))
@@ -126,7 +126,7 @@ def _common_factors(e: sp.Expr) -> sp.Expr:
     are the same, and sympy's factor_terms, which walks every argument, is not needed."""
     if all(_kept_by_factor_terms(f) for f in sp.Mul.make_args(e)):
         return e
-    return sp.factor_terms(e)
+    return common_factors(e)
 
 
 def _kept_by_factor_terms(factor: sp.Expr) -> bool:

@@ -15,13 +15,16 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
-from typing import Mapping
+from typing import Mapping, TYPE_CHECKING
 
 import sympy as sp
 
 from rbdsolve.errors import InputError
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.schema import Assumption, Problem
+from rbdsolve.problem.schema import Problem
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Assumption
 
 SAMPLES = 400  # random points tried for a sample that satisfies the assumptions
 

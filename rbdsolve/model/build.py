@@ -11,7 +11,7 @@ from collections import ChainMap
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 from fractions import Fraction
-from typing import Mapping
+from typing import Mapping, TYPE_CHECKING
 
 import sympy as sp
 
@@ -32,8 +32,11 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.problem.expr import Expr, Kind
 from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.problem.sections.bodies import POSITIONS
-from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem, Spring
+from rbdsolve.problem.schema import Body, CoordinateKind, Part, Problem
 from rbdsolve.form.zero import simplifies_to_zero
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Spring
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from fractions import Fraction
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.readers import expect_mapping, expect_scalar
-from rbdsolve.problem.schema import StateValue
+from rbdsolve.problem.instants import StateValue
 from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
 
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.

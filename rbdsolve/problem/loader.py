@@ -1,6 +1,10 @@
 """Located nodes -> Problem. The schema is written out here, section by section.
 
 Every error names file:line:column, the key path, what was expected and what was found.
+The sections most files leave out (contacts, springs, forces and couples, frames,
+prescribed quantities, assumptions) import their readers and problem/scene.py's classes
+where a file has them: a file without them creates none of those classes (Python
+generates each frozen dataclass's methods at import, ~0.3 ms a class).
 """
 
 from __future__ import annotations
@@ -8,27 +12,13 @@ from __future__ import annotations
 import re
 from fractions import Fraction
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.schema import (
-    Assumption,
-    Body,
-    Coordinate,
-    Frame,
-    ImpactOptions,
-    Parameter,
-    Point,
-    Prescribed,
-    Problem,
-    Question,
-    Spring,
-    SurfaceKind,
-    ValueRange,
-)
+from rbdsolve.problem.schema import Body, Coordinate, Parameter, Point, Problem, Question, QuestionKind, ValueRange
+from rbdsolve.problem.surfaces import SurfaceKind
 from rbdsolve.problem.sections.bodies import BodyReader, refuse_negative
-from rbdsolve.problem.sections.contacts import ContactReader, contact_bodies, hanging_bodies
-from rbdsolve.problem.sections.loads import LoadReader
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.sections.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.sections.orientation import OrientationReader
@@ -38,6 +28,9 @@ from rbdsolve.problem.quantities.quantity import Dimension, Value, parse_unit
 from rbdsolve.problem.quantities.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Assumption, Contact, Couple, Force, Frame, Prescribed, Spring
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
@@ -111,16 +104,14 @@ class _Loader:
         self.reading.set_point_scopes(frozenset(), frozenset())
         points = self.points(get("points"))
         frames = self.frames(get("frames"))
-        bodies = self.bodies(get("bodies"), contact_bodies(get("contacts")), hanging_bodies(get("contacts")))
-        contacts = ContactReader(self.reading).contacts(get("contacts"), bodies)
+        bodies, contacts = self.bodies_and_contacts(get("bodies"), get("contacts"))
         self.reading.add_positions(frozenset(c.name for c in contacts if c.surface.kind is SurfaceKind.PLANE))
         self.reading.add_body_points(bodies)  # a body's origin (its name) and its own points, from here on
         springs, gravity = self.springs(get("springs")), self.gravity(get("gravity"))
-        loads = LoadReader(self.reading, bodies)
-        forces, couples = loads.forces(get("forces")), loads.couples(get("couples"))
+        forces, couples = self.loads(get("forces"), get("couples"), bodies)
         questions = self.questions(get("questions"), coordinates, bodies, points + _body_points(bodies), frames,
                                    contacts)
-        collisions = tuple(c for q in questions if isinstance(q.options, ImpactOptions) for c in q.options.collisions)
+        collisions = tuple(c for q in questions if q.kind is QuestionKind.IMPACT for c in q.options.collisions)
         known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples, contacts, collisions)
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
@@ -173,6 +164,8 @@ class _Loader:
         for side in (left, right):
             if side.kind is not ex.Kind.SCALAR:
                 raise InputError(f"an assumption compares scalars; '{side.text}' is a {side.kind.value}", scalar.loc)
+        from rbdsolve.problem.scene import Assumption
+
         return Assumption(left, op, right, text.strip(), scalar.loc)
 
     def gravity(self, node: Node | None) -> ex.Expr | None:
@@ -209,6 +202,8 @@ class _Loader:
         """name -> 'unknown' (a function y_A(t) kept symbolic) or an expression in t."""
         if node is None:
             return ()
+        from rbdsolve.problem.scene import Prescribed
+
         table = expect_mapping(node, "prescribed: name -> unknown, or an expression in t")
         scope = ex.Scope(frozenset({p.name for p in parameters} | {"t"}))
         out = []
@@ -264,6 +259,8 @@ class _Loader:
         """name -> {origin: point or vector in t, axis: x|y|z|vector, rate: constant}."""
         if node is None:
             return ()
+        from rbdsolve.problem.scene import Frame
+
         table = expect_mapping(node, "frames: name -> frame")
         out = []
         for key, value in table.entries:
@@ -297,6 +294,27 @@ class _Loader:
             self.reading.add_body_points(out[-1:])  # a later body may sit at this one's points
         return tuple(out)
 
+    def bodies_and_contacts(self, bodies: Node | None, contacts: Node | None
+                            ) -> tuple[tuple[Body, ...], tuple[Contact, ...]]:
+        """The bodies, and the contacts that place some of them (read before the bodies,
+        so that those know they are placed by rolling or hang from a drum)."""
+        if contacts is None:
+            return self.bodies(bodies, {}), ()
+        from rbdsolve.problem.sections.contacts import ContactReader, contact_bodies, hanging_bodies
+
+        read = self.bodies(bodies, contact_bodies(contacts), hanging_bodies(contacts))
+        return read, ContactReader(self.reading).contacts(contacts, read)
+
+    def loads(self, forces: Node | None, couples: Node | None,
+              bodies: tuple[Body, ...]) -> tuple[tuple[Force, ...], tuple[Couple, ...]]:
+        """The applied forces and couples on the bodies."""
+        if forces is None and couples is None:
+            return (), ()
+        from rbdsolve.problem.sections.loads import LoadReader
+
+        loads = LoadReader(self.reading, bodies)
+        return loads.forces(forces), loads.couples(couples)
+
     def springs(self, node: Node | None) -> tuple[Spring, ...]:
         if node is None:
             return ()
@@ -304,6 +322,8 @@ class _Loader:
         return tuple(self.spring(self.reading.declare(k, "spring"), v) for k, v in table.entries)
 
     def spring(self, name: str, node: Node) -> Spring:
+        from rbdsolve.problem.scene import Spring
+
         what = f"spring '{name}'"
         spec = expect_mapping(node, what)
         check_keys(spec, ("stiffness",), ("between", "natural_length", "angle", "rest"), what)

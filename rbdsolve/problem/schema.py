@@ -3,6 +3,13 @@
 Every expression is a :class:`~rbdsolve.problem.expr.Expr` (a checked tree plus the
 place it came from), so later stages can point back at the file when a value turns out
 to be wrong (a negative length, a singular mass matrix).
+
+Here: the Problem, its parameters, coordinates, points and bodies, its questions and
+the options of eom, equilibria and modes. What a scene holds beyond its bodies
+(contacts, springs, loads, frames, assumptions) is in problem/scene.py, the other
+questions' options in problem/options.py: each loaded where a file has them. The
+kinds of surface (problem/surfaces.py) and a state of the motion (problem/instants.py)
+are modules of their own, which these share.
 """
 
 from __future__ import annotations
@@ -11,11 +18,17 @@ import math
 from dataclasses import dataclass, replace
 from enum import Enum
 from fractions import Fraction
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 from rbdsolve.errors import Location
 from rbdsolve.problem.expr import Expr
+from rbdsolve.problem.instants import Instant
 from rbdsolve.problem.quantities.quantity import Dimension, Unit, Value
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.options import (EnergyOptions, ImpactOptions, InertiaOptions, KinematicsOptions,
+                                          ReactionsOptions, SteadyMotionOptions, SteadySpinOptions)
+    from rbdsolve.problem.scene import Assumption, Contact, Couple, Force, Frame, Prescribed, Spring
 
 
 class Shape(Enum):
@@ -134,17 +147,6 @@ class Parameter:
 
 
 @dataclass(frozen=True)
-class Prescribed:
-    """A quantity that follows a given function of time, not a degree of freedom: an
-    unknown function y_A(t) (``value`` None; its derivatives stay symbolic) or an
-    explicit expression in t and the parameters."""
-
-    name: str
-    value: Expr | None
-    loc: Location
-
-
-@dataclass(frozen=True)
 class Coordinate:
     """A generalized coordinate: an angle, a length, or decided from the energies; an
     angle may be declared not periodic, and a search range given."""
@@ -233,164 +235,6 @@ class Body:
     points: tuple[tuple[str, Expr], ...] = ()  # its own points: name -> offset from its origin, in body axes
 
 
-class SurfaceKind(Enum):
-    LINE = "line"  # a straight line (a floor, an incline, a string)
-    CIRCLE = "circle"  # a circle (a drum, a track, a bowl in its plane)
-    BODY = "body"  # an edge of another body, moving with it (a turning disk, a sliding plank)
-    PLANE = "plane"  # a fixed plane in 3D (a table): rolling there is not integrable, kept as a constraint
-
-
-@dataclass(frozen=True)
-class Surface:
-    """A fixed (or translating) line or circle a body rolls on.
-
-    A line passes through ``point`` along ``direction`` (a vector) and the body lies on
-    its left (``flip``: on its right); a circle has its centre at ``point`` and the body
-    rolls on its ``inside`` or outside. A body's edge (kind BODY) names the body and the
-    edge; it moves and turns with that body. A plane (kind PLANE, in 3D) has the
-    normal ``direction`` towards the body and passes through ``point`` (None: not said)."""
-
-    kind: SurfaceKind
-    point: Expr | None  # None: a body's edge, or a plane through no stated point
-    direction: Expr | None  # line; a plane's normal
-    radius: Expr | None  # circle
-    inside: bool  # circle: inside; line: the body on the right of ``direction``
-    loc: Location
-    body: str | None = None  # BODY: the body whose edge it is
-    edge: str | None = None  # BODY: which edge
-    part: str | None = None  # BODY: the part of a composite body whose edge it is (None: its only part)
-
-
-class Measure(Enum):
-    """What a contact's coordinate measures."""
-
-    ANGLE = "angle"  # the body's turn (counterclockwise)
-    ALONG = "along"  # the contact point's travel: a distance along a line, an angle round a circle
-
-
-@dataclass(frozen=True)
-class Pulley:
-    """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
-    centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
-    and hangs from there along ``down`` with the contact's body at its end, ``length``
-    below ``over`` at the reference configuration (model/constraints/strings.py). Without a pulley
-    (``over`` None) it runs straight along ``direction`` from the drum's ``side`` to the
-    body, ``length`` from the rim at the reference."""
-
-    drum: str
-    edge: str
-    radius: Expr | None
-    over: Expr | None  # None: no pulley, the body hangs straight from the drum
-    direction: Expr
-    down: Expr | None  # None: straight down, [0, −1]
-    length: Expr | None  # None: the straight part's length at the reference (0 without a pulley)
-    loc: Location
-    side: str | None = None  # without a pulley: left, right, above or below the drum's centre, as drawn
-    part: str | None = None  # the drum's part the string is wound on (None: its only part)
-
-
-@dataclass(frozen=True)
-class Contact:
-    """Body ``body`` rolls without slipping on ``surface`` with its ``edge``; the
-    coordinate ``coordinate`` (a declared one) measures the motion as ``measure`` says,
-    and rolling fixes the rest (model/constraints/contacts.py). A string wound on a drum is a
-    line the drum rolls on (``string``), at the winding ``radius``. A composite body
-    touches with one of its parts (``part``); a body given by its inertia rolls on the
-    circle of ``radius`` about its centre of mass."""
-
-    name: str  # the contact point C
-    body: str
-    edge: str
-    surface: Surface
-    coordinate: str | None  # None: a body hanging from a pulley (its place follows from the drum's)
-    measure: Measure | None
-    radius: Expr | None  # a string's winding radius, or the radius the body rolls at; None: the edge's own
-    string: bool
-    loc: Location
-    pulley: Pulley | None = None  # the body hangs on a string from a drum, over a pulley
-    part: str | None = None  # the part of a composite body that touches (None: its only part)
-
-
-@dataclass(frozen=True)
-class Spring:
-    """A linear spring between two points, or a torsional spring on an angle.
-
-    V = k/2 (|r_a - r_b| - natural_length)^2   or   V = k/2 (angle - rest)^2
-    """
-
-    name: str
-    stiffness: Expr
-    ends: tuple[Expr, Expr] | None
-    natural_length: Expr | None
-    angle: Expr | None
-    rest: Expr | None
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Wound:
-    """A string wound at ``radius`` about a force's point, leaving it tangentially on
-    ``side`` (below, above, left or right of the point, as drawn) along the force."""
-
-    radius: Expr
-    side: str
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Force:
-    """A force applied to body ``on``, taken by its material point at ``at`` (None: the
-    body's origin): ``force`` a vector (constant, or a function of t and the
-    coordinates), or, with ``towards``, a size along the line from that point to
-    ``towards`` (a string pulled over a peg there); ``wound``: a string wound on the body
-    about ``at``, so the force acts where the string leaves it (model/energies/loads.py)."""
-
-    name: str
-    on: str
-    at: Expr | None
-    force: Expr
-    towards: Expr | None
-    wound: Wound | None
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Couple:
-    """A couple (a torque) ``moment`` on body ``on`` (a scalar about z, or a vector), and
-    −moment on body ``by`` where it acts at a joint between the two (a motor)."""
-
-    name: str
-    on: str
-    by: str | None
-    moment: Expr
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Frame:
-    """A frame moving relative to the scene's (inertial) axes: its origin follows
-    ``origin`` (a point or a vector in t; None: the scene's origin), and it turns at the
-    constant rate ``rate`` about the fixed direction ``axis`` through that origin (None:
-    it does not turn)."""
-
-    name: str
-    origin: Expr | None
-    axis: Expr | None
-    rate: Expr | None
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Instant:
-    """A state of the motion: every coordinate's value and every rate's (``at:``), or
-    every coordinate's with the rates zero (``from_rest:``, just after release)."""
-
-    coordinates: tuple[tuple[str, Expr], ...]  # coordinate -> value, in the coordinates' order
-    rates: tuple[tuple[str, Expr], ...]  # coordinate -> its rate's value; () when from rest
-    from_rest: bool
-    loc: Location
-
-
 @dataclass(frozen=True)
 class EomOptions:
     """What an ``eom`` question asks beyond Lagrange's equations: the equations in moving
@@ -398,51 +242,6 @@ class EomOptions:
 
     frames: tuple[str, ...]  # frames to write the Lagrangian and the equations in, too
     instant: Instant | None = None  # where to give q̈ too (numbers with values)
-
-
-class SupportKind(Enum):
-    """What holds a body at a point, as the reactions question reads it."""
-
-    POINT = "point"  # a point of a body held by the ground or another body: the kinematics decide
-    CONTACT = "contact"  # a rolling contact or string from 'contacts:'
-
-
-@dataclass(frozen=True)
-class Support:
-    """A force asked for: at point ``point`` on body ``on``, from the ground (``by`` None)
-    or from body ``by``; or the contact named ``point``. ``normal``: the direction a
-    one-sided push is counted positive along (None: against gravity). ``two_sided``: a
-    guide that holds both ways (a bead threaded on its wire, a pin in a slot), so its
-    push may change sign and no contact is lost."""
-
-    kind: SupportKind
-    point: str
-    on: str
-    by: str | None
-    normal: Expr | None
-    loc: Location
-    two_sided: bool = False
-
-
-@dataclass(frozen=True)
-class ReactionsOptions:
-    """A ``reactions`` question: the supports whose forces are asked, at a state or as
-    functions of the state."""
-
-    supports: tuple[Support, ...]
-    instant: Instant | None  # None: the forces as functions of the state
-    loc: Location
-
-
-@dataclass(frozen=True)
-class EnergyOptions:
-    """The energy integral from a start state, and the speed it gives at ``to`` (a
-    configuration: coordinate -> value) and of ``points`` along the motion."""
-
-    start: Instant
-    to: tuple[tuple[str, Expr], ...]  # () when not asked
-    points: tuple[str, ...]
-    loc: Location
 
 
 @dataclass(frozen=True)
@@ -467,123 +266,6 @@ class ModesOptions:
     loc: Location | None = None  # where 'about' is
     steady: tuple[tuple[str, Expr], ...] = ()  # 'about: {dot(phi): s}': cyclic coordinates' steady rates
     for_parameter: str | None = None  # 'for: k': conditions solved for k first (docs/format.md)
-
-
-@dataclass(frozen=True)
-class StateValue:
-    """One entry of a state ``at:``: a coordinate (order 0), its rate dot(q) (1) or its
-    acceleration ddot(q) (2), and its constant value."""
-
-    coordinate: str
-    order: int
-    value: Expr
-
-
-@dataclass(frozen=True)
-class KinematicsOptions:
-    """A ``kinematics`` question: the points whose position, velocity and acceleration
-    are asked, the state, and distances between points."""
-
-    points: tuple[str, ...]  # the points whose position, velocity and acceleration are asked
-    at: tuple[StateValue, ...]  # the state; what it leaves out stays symbolic
-    distances: tuple[tuple[str, str], ...] = ()  # pairs of points: |r_B − r_A| and its rate
-
-
-@dataclass(frozen=True)
-class InertiaOptions:
-    """An ``inertia`` question: the body, the point and axes (or one axis) the inertia
-    tensor is asked about, at a configuration."""
-
-    body: str  # the body asked about
-    about: Expr | None  # a point (vector); None: the centre of mass only
-    axes: tuple[Expr, Expr, Expr] | None  # unit vectors of a rotated frame; None: scene axes
-    at: tuple[tuple[str, Expr], ...] = ()  # coordinate -> value: the configuration asked about
-    axis: Expr | None = None  # a direction (scene axes) through 'about' (or G): J = eᵀ J_P e
-
-
-@dataclass(frozen=True)
-class Particle:
-    """A particle that strikes the system: its mass, its velocity just before, and
-    (optionally) just after, which makes the impulse known."""
-
-    mass: Expr
-    velocity: Expr
-    after: Expr | None
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Collision:
-    """Point ``point`` of the system hits a fixed surface (no particle) or is hit by a
-    particle. The impulse on the system is along ``normal``; its size follows from
-    Newton's law of restitution with coefficient ``restitution``, or from the
-    particle's velocity ``after``."""
-
-    point: str
-    normal: Expr | None
-    restitution: Expr | None
-    particle: Particle | None
-    loc: Location
-    sticks: bool = False  # the particle embeds (or, without one, the point sticks): it moves with the point after
-    to: str | None = None  # a sticking point of a body sticks to this point of another body (None: a fixed point)
-
-
-@dataclass(frozen=True)
-class ImpactOptions:
-    """An ``impact`` question: the configuration and the rates just before, the impulses
-    and collisions, the points asked about after, and a centre of percussion to find."""
-
-    at: tuple[tuple[str, Expr], ...]  # the configuration at the instant (some coordinates)
-    before: tuple[tuple[str, Expr], ...]  # generalized velocities just before (default 0)
-    impulses: tuple[tuple[str, Expr], ...]  # known impulses: point -> vector
-    collisions: tuple[Collision, ...]
-    points: tuple[str, ...]  # points whose velocities after are asked for
-    centre_of_percussion: str | None  # a parameter to solve "no impulse on the supports" for
-    loc: Location
-
-
-@dataclass(frozen=True)
-class Reaction:
-    """An unknown contact force: its point of application and its vector, in which
-    declared unknowns (N, x_N) stand for what the balances must find."""
-
-    at: Expr
-    force: Expr
-
-
-@dataclass(frozen=True)
-class SteadyMotionOptions:
-    """A ``steady_motion`` question: the body, the triad the motion is steady in, the
-    point for angular momentum, rolling contacts, reactions and what to solve for."""
-
-    body: str
-    triad: str  # the turning triad the motion is steady in
-    about: Expr  # the point to take angular momentum about
-    contacts: tuple[Expr, ...]  # points where the body rolls without slipping on a fixed surface
-    reactions: tuple[Reaction, ...]  # contact forces stated with unknowns; then both balances count
-    solve_for: tuple[Expr, ...]  # constants to solve the relations for (omega0**2; or N, x_N)
-    reactions_loc: Location | None = None  # where 'reactions' is, for errors about them
-    for_parameter: str | None = None  # 'for: s': conditions solved for s first (docs/format.md)
-
-
-@dataclass(frozen=True)
-class PrecessionOptions:
-    """The free motion of an axisymmetric body, seen from space: ω's component along the
-    symmetry axis (``spin``) and either its component across it (``transverse``) or the
-    angle between ω and the axis (``angle``)."""
-
-    spin: Expr
-    transverse: Expr | None
-    angle: Expr | None
-
-
-@dataclass(frozen=True)
-class SteadySpinOptions:
-    """A ``steady_spin`` question: the free body, and its torque-free precession where
-    asked."""
-
-    body: str  # the free body asked about
-    precession: PrecessionOptions | None = None  # torque-free precession, asked with 'precession'
 
 
 @dataclass(frozen=True)
@@ -621,17 +303,6 @@ class ValueRange:
     def value(self, k: int) -> Value:
         """The k-th value (0-based) of the grid or of the choices, exactly."""
         return self.choices[k] if self.choices else self.low.step(k, self.step)
-
-
-@dataclass(frozen=True)
-class Assumption:
-    """``lhs op rhs`` between constant expressions, op one of < ≤ > ≥ (assumptions:)."""
-
-    lhs: Expr
-    op: str  # "<", "<=", ">" or ">="
-    rhs: Expr
-    text: str
-    loc: Location
 
 
 @dataclass(frozen=True)

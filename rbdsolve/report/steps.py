@@ -9,14 +9,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from enum import Enum
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 import sympy as sp
 
 from rbdsolve.form.display import Along, Relation, Terms
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import float_text, unicode_name
-from rbdsolve.report.numbers import Number
+
+if TYPE_CHECKING:
+    from rbdsolve.report.numbers import Number
 
 
 class StepKind(Enum):

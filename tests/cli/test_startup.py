@@ -17,7 +17,14 @@ COMMAND_MODULES = tuple(f"rbdsolve.cli.{name}" for name in COMMANDS)  # each imp
 # imported only for a scene or question that uses them: seed problem 1 has none
 FEATURES = ("rbdsolve.model.constraints.contacts", "rbdsolve.model.constraints.plane_rolling", "rbdsolve.solvers.modes.amplitude",
             "rbdsolve.solvers.conditions.monotone", "rbdsolve.model.energies.frames", "rbdsolve.model.summary.frame",
-            "rbdsolve.solvers.modes.gyroscopic", "rbdsolve.solvers.modes.routh", "rbdsolve.model.energies.gyroscopic")
+            "rbdsolve.solvers.modes.gyroscopic", "rbdsolve.solvers.modes.routh", "rbdsolve.model.energies.gyroscopic",
+            # a scene's contacts, springs, loads, frames (and their readers), the other questions' options
+            "rbdsolve.problem.scene", "rbdsolve.problem.options", "rbdsolve.problem.sections.contacts",
+            "rbdsolve.problem.sections.loads", "rbdsolve.problem.sections.impact",
+            # roots of degree ≥ 5 as certified decimals; where the numeric route would search
+            "rbdsolve.solvers.modes.certified", "rbdsolve.solvers.numeric.search_box",
+            # the units and the numeric block of answers with values (seed problem 1 has none)
+            "rbdsolve.model.values.units", "rbdsolve.model.values.numbers")
 TERMINAL = ("rich.console",)  # a solution written to a pipe or a file is laid out without it (render/text.py)
 WATCHED = HEAVY + COMMAND_MODULES + FEATURES + TERMINAL
 
@@ -49,7 +56,7 @@ def test_the_probe_sees_an_import() -> None:
     loaded = loaded_after("solve", "--quiet", "--format", "json", str(SEED / "p1-two-rods.yaml"))
     assert "sympy" in loaded
     assert loaded & set(COMMAND_MODULES) == {"rbdsolve.cli.solve"}  # no other command's module
-    assert not loaded & set(FEATURES)  # no contacts, no check_amplitudes, no θ = k sin θ, no frame, no spin
+    assert not loaded & set(FEATURES)  # no contacts, loads, check_amplitudes, θ = k sin θ, frame, spin
 
 
 def test_a_solution_to_a_pipe_loads_no_rich_console() -> None:

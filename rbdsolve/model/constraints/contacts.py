@@ -44,7 +44,9 @@ from rbdsolve.model.constraints.strings import hang
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.sections.contacts import NOT_PLANAR
-from rbdsolve.problem.schema import Assumption, Body, Contact, Measure, Problem, SurfaceKind
+from rbdsolve.problem.scene import Assumption, Contact
+from rbdsolve.problem.schema import Body, Problem
+from rbdsolve.problem.surfaces import Measure, SurfaceKind
 from rbdsolve.form.zero import simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])

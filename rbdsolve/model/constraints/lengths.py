@@ -17,7 +17,7 @@ positive (an implied assumption, model/assumptions.py), so that values given lat
 from __future__ import annotations
 
 import functools
-from typing import Mapping
+from typing import Mapping, TYPE_CHECKING
 
 import sympy as sp
 
@@ -25,7 +25,11 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.assumptions import assumed, substitutions
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem.expr import Expr
-from rbdsolve.problem.schema import Contact, Problem, SurfaceKind
+from rbdsolve.problem.schema import Problem
+from rbdsolve.problem.surfaces import SurfaceKind
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Contact
 
 
 def contact_lengths(c: Contact, problem: Problem, names: Symbols) -> tuple[tuple[sp.Expr, str], ...]:

@@ -37,7 +37,9 @@ from rbdsolve.model.constraints.contacts import implied
 from rbdsolve.model.constraints.edges import body_part, part_edge
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.schema import Contact, Problem, SurfaceKind
+from rbdsolve.problem.scene import Contact
+from rbdsolve.problem.schema import Problem
+from rbdsolve.problem.surfaces import SurfaceKind
 from rbdsolve.form.zero import simplifies_to_zero
 
 

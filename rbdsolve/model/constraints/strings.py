@@ -29,7 +29,8 @@ from rbdsolve.errors import InputError
 from rbdsolve.model.constraints.edges import Curved
 from rbdsolve.model.state import t, user_function
 from rbdsolve.model.symbols import Symbols
-from rbdsolve.problem.schema import Body, Contact
+from rbdsolve.problem.scene import Contact
+from rbdsolve.problem.schema import Body
 from rbdsolve.form.zero import simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])

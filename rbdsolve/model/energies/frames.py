@@ -36,7 +36,7 @@ from rbdsolve.model.rotation import axis_rotation
 from rbdsolve.model.energies.energy import EnergyTerm
 from rbdsolve.model.state import t
 from rbdsolve.form.tidy import tidy
-from rbdsolve.problem.schema import Frame
+from rbdsolve.problem.scene import Frame
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
@@ -38,7 +39,10 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.expr import Kind
-from rbdsolve.problem.schema import Couple, Force, Problem
+from rbdsolve.problem.schema import Problem
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Couple, Force
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -61,7 +65,7 @@ class Load:
 
     @property
     def kind(self) -> str:
-        return "force" if isinstance(self.source, Force) else "couple"
+        return self.source.kind
 
 
 def build_loads(problem: Problem, names: Symbols, bodies, decide) -> tuple[Load, ...]:
@@ -71,7 +75,7 @@ def build_loads(problem: Problem, names: Symbols, bodies, decide) -> tuple[Load,
     table = {b.name: b for b in bodies}
     for load in (*problem.forces, *problem.couples):
         if not table[load.on].placed or (getattr(load, "by", None) and not table[load.by].placed):
-            raise InputError(f"{'force' if isinstance(load, Force) else 'couple'} '{load.name}': body '{load.on}' "
+            raise InputError(f"{load.kind} '{load.name}': body '{load.on}' "
                              "is given by its velocities at one instant; a finite load does nothing in an impact "
                              "(give an impulse instead: 'impulses:' of the impact question)", load.loc)
     out = [_force(f, names, table[f.on], decide) for f in problem.forces]

@@ -34,7 +34,8 @@ from rbdsolve.model.state import State
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import Value
-from rbdsolve.problem.schema import Body, Problem, Spring
+from rbdsolve.problem.scene import Spring
+from rbdsolve.problem.schema import Body, Problem
 
 __all__ = ["FLOAT", "MP50", "Arithmetic", "NotNumeric", "NumericScene"]
 

@@ -8,13 +8,13 @@ answers down once and put what comes back on the Solution."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Iterable
+from typing import TYPE_CHECKING, Callable, Iterable
 
 from rbdsolve.model.build import Model
-from rbdsolve.model.values.numbers import numbers as numeric_lines
-from rbdsolve.model.values.units import answer_units
 from rbdsolve.model.values.values import not_finite, not_real, numbers
-from rbdsolve.report.numbers import Named, Number
+
+if TYPE_CHECKING:
+    from rbdsolve.report.numbers import Named, Number
 
 
 @dataclass(frozen=True)
@@ -39,6 +39,10 @@ def valued(answers: object, model: Model, kind: str, named: Callable[[], Iterabl
     found = numbers(answers, model.values) if model.values and answers else None
     if found is None or not found.tree:
         return NOTHING
+    # the units and the numeric block's lines, loaded where there are numbers
+    from rbdsolve.model.values.numbers import numbers as numeric_lines
+    from rbdsolve.model.values.units import answer_units
+
     said = (not_finite(answers, model.values), not_real(found))
     units = answer_units(answers, model, kind)
     lines = numeric_lines(named(), answers, found.tree, units) if named is not None else ()

@@ -7,11 +7,13 @@ units of the answers), and above: render/ (JSON), teaching/ (keys, variants, gra
 from __future__ import annotations
 
 import dataclasses
-from typing import Callable, Iterator, Mapping
+from typing import TYPE_CHECKING, Callable, Iterator, Mapping
 
 import sympy as sp
 
-from rbdsolve.report.numbers import Path
+if TYPE_CHECKING:
+    from rbdsolve.report.numbers import Path
+
 
 
 def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
@@ -58,7 +60,7 @@ def label(path: Path) -> str:
     return out
 
 
-Row = Callable[[Path, tuple], list]  # a tuple of floats at a path -> what ``leaf`` gives for each, as a list
+Row = Callable[["Path", tuple], list]  # a tuple of floats at a path -> what ``leaf`` gives for each, as a list
 
 
 def map_paths(value: object, leaf: Callable[[Path, object], object], path: Path = (), row: Row | None = None) -> object:

@@ -8,7 +8,7 @@ import dataclasses
 import math
 from dataclasses import dataclass
 from enum import Enum
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -16,8 +16,10 @@ from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanAtom, BooleanFunction
 
 from rbdsolve.form.tidy import tidy_fraction
-from rbdsolve.report.numbers import Path
 from rbdsolve.model.values.tree import label, leaves, map_paths
+
+if TYPE_CHECKING:
+    from rbdsolve.report.numbers import Path
 
 
 SAMPLE_POINTS = (1, sp.Rational(13, 10), sp.Rational(17, 7))  # each symbol without a value, in turn

@@ -23,10 +23,15 @@ check, and no unit is printed for the answers that hold it.
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import ACCELERATION, LENGTH, MASS, NUMBER, Dimension
-from rbdsolve.problem.schema import Body, Collision, Contact, Couple, Force, Spring
+from rbdsolve.problem.schema import Body
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.options import Collision
+    from rbdsolve.problem.scene import Contact, Couple, Force, Spring
 
 FORCE = Dimension(Fraction(1), Fraction(1), Fraction(-2))  # N = kg m/s²
 STIFFNESS = Dimension(Fraction(1), Fraction(0), Fraction(-2))  # N/m = kg/s²

@@ -29,7 +29,9 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.sections.bodies import refuse_negative
-from rbdsolve.problem.schema import Body, Contact, Measure, Part, Pulley, Surface, SurfaceKind
+from rbdsolve.problem.scene import Contact, Pulley, Surface
+from rbdsolve.problem.schema import Body, Part
+from rbdsolve.problem.surfaces import Measure, NOT_INTEGRABLE, SurfaceKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar
 
 SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": ("left", "right"),
@@ -40,9 +42,6 @@ SIDES = {"line": ("left", "right"), "circle": ("inside", "outside"), "string": (
 NOT_PLANAR = ("{what} is rolling in 3D, which a planar contact does not describe: a planar contact rolls in the "
               "xy-plane of the scene, where its rolling condition integrates; in 3D roll on a plane, "
               "'rolls_on: {{plane: {{normal: z}}}}', with the body placed by its own 'at' and 'orientation'")
-# why a rolling contact on a plane is a constraint kept, not a coordinate eliminated
-NOT_INTEGRABLE = ("rolling on a plane in 3D is not integrable (non-holonomic): v_C = 0 relates the rates but no "
-                  "coordinate can be eliminated")
 
 
 def contact_bodies(node: Node | None) -> dict[str, str]:

@@ -1,14 +1,10 @@
-"""What the force questions read: a state of the motion (``at:`` or ``from_rest:``),
-shared by ``eom``, ``reactions`` and ``energy``, the supports ``reactions`` asks about,
-and where ``energy`` gives the speed.
+"""What the force questions read: the supports ``reactions`` asks about, and where
+``energy`` gives the speed; both at a state of the motion (``at:`` or ``from_rest:``,
+problem/sections/states.py, as ``eom``).
 
-    eom: {from_rest: {theta: pi/2}}                        # q̈ just after release
-    eom: {at: {theta: pi/2, dot(theta): 0}}                # every coordinate and rate
     reactions: {forces: [O], from_rest: {theta: 0}}        # the force at O on the only body
     reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
 
-A rate is keyed as in expressions, ``dot(theta)``; the state is read by the one reader of
-a state (``context.Reading.state``), which ``kinematics`` and ``from_rest`` use too.
 Whether a point really holds the body (a pivot, a smooth guide, a joint) needs the
 kinematics, so the model checks it (solvers/reactions/supports.py).
 """
@@ -18,31 +14,11 @@ from __future__ import annotations
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, expect_scalar, read_bool
-from rbdsolve.problem.schema import Body, Contact, EnergyOptions, Instant, ReactionsOptions, Support, SupportKind
+from rbdsolve.problem.options import EnergyOptions, ReactionsOptions, Support, SupportKind
+from rbdsolve.problem.scene import Contact
+from rbdsolve.problem.schema import Body
+from rbdsolve.problem.sections.states import instant
 from rbdsolve.problem.yamlnodes import Map, Node, Seq
-
-def instant(reading: Reading, opts: Map | None) -> Instant | None:
-    """``at: {q: value, dot(q): value, …}`` (every one) or ``from_rest: {q: value, …}``."""
-    if opts is None:
-        return None
-    at, rest = opts.get("at"), opts.get("from_rest")
-    if at is not None and rest is not None:
-        raise InputError("give the state with 'at:' (coordinates and rates) or 'from_rest:' (coordinates; "
-                         "the rates zero), not both", rest.loc)
-    if rest is not None:
-        return Instant(reading.coordinate_values(rest, "a configuration released from rest", complete=True),
-                       (), True, rest.loc)
-    if at is None:
-        return None
-    return _state(reading, at)
-
-
-def _state(reading: Reading, node: Node) -> Instant:
-    """Every coordinate and every rate, read by the one reader of a state."""
-    values = reading.state(node, "a state", (0, 1), complete=True,
-                           hint=" (or give 'from_rest:' with the coordinates alone)")
-    return Instant(tuple((v.coordinate, v.value) for v in values if v.order == 0),
-                   tuple((v.coordinate, v.value) for v in values if v.order == 1), False, node.loc)
 
 
 def energy_options(reading: Reading, opts: Map | None, key, points: tuple[str, ...]) -> EnergyOptions:

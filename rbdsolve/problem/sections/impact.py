@@ -21,7 +21,8 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
-from rbdsolve.problem.schema import Collision, ImpactOptions, Particle, Point
+from rbdsolve.problem.options import Collision, ImpactOptions, Particle
+from rbdsolve.problem.schema import Point
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 

@@ -12,7 +12,9 @@ from __future__ import annotations
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import describe, expect_scalar
-from rbdsolve.problem.schema import KinematicsOptions, Point, StateValue
+from rbdsolve.problem.options import KinematicsOptions
+from rbdsolve.problem.instants import StateValue
+from rbdsolve.problem.schema import Point
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 class KinematicsReader:

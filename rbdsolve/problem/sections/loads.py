@@ -24,7 +24,8 @@ from rbdsolve.problem import expr as ex
 from rbdsolve.problem.sections.bodies import refuse_negative
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
-from rbdsolve.problem.schema import Body, Couple, Force, Wound
+from rbdsolve.problem.scene import Couple, Force, Wound
+from rbdsolve.problem.schema import Body
 from rbdsolve.problem.yamlnodes import Node, Scalar
 
 SIDES = ("below", "above", "left", "right")

@@ -8,34 +8,32 @@ knows about the scene: coordinates for ``modes``, bodies and points for ``inerti
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.sections.amplitudes import amplitudes
-from rbdsolve.problem.sections.forces import energy_options, instant, reactions_options
-from rbdsolve.problem.sections.impact import ImpactReader
-from rbdsolve.problem.sections.kinematics import KinematicsReader
+from rbdsolve.problem.sections.states import instant
 from rbdsolve.problem.schema import (
     Body,
-    Contact,
     Coordinate,
     EomOptions,
     EquilibriaOptions,
-    InertiaOptions,
     ModesOptions,
     Point,
-    PrecessionOptions,
     Question,
     QuestionKind,
-    Reaction,
-    SteadyMotionOptions,
-    SteadySpinOptions,
-    SurfaceKind,
 )
-from rbdsolve.problem.sections.contacts import NOT_INTEGRABLE
+from rbdsolve.problem.surfaces import NOT_INTEGRABLE, SurfaceKind
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
+
+if TYPE_CHECKING:
+    from rbdsolve.problem.options import (EnergyOptions, ImpactOptions, InertiaOptions, KinematicsOptions,
+                                          PrecessionOptions, Reaction, ReactionsOptions, SteadyMotionOptions,
+                                          SteadySpinOptions)
+    from rbdsolve.problem.scene import Contact
 
 OPTIONS = {
     QuestionKind.EOM: ("frames", "at", "from_rest"),
@@ -117,24 +115,37 @@ class QuestionReader:
                                                amplitudes(get("check_amplitudes"), get("frame")), equilibrium=number,
                                                each=each, loc=about.loc if about else None, steady=steady,
                                                for_parameter=self.parameter(get("for"))), key.loc)
+        return Question(kind, self.other_options(kind, opts, key), key.loc)
+
+    def other_options(self, kind: QuestionKind, opts: Map | None, key: Scalar) -> (
+            InertiaOptions | SteadySpinOptions | SteadyMotionOptions | ImpactOptions | KinematicsOptions
+            | ReactionsOptions | EnergyOptions):
+        """The options of a question beyond eom, equilibria and modes. Their classes
+        (problem/options.py) and the section modules that read some of them are imported
+        where a file asks such a question: a file that asks none creates none of those
+        classes (Python generates each frozen dataclass's methods at import)."""
         if kind is QuestionKind.INERTIA:
-            return Question(kind, self.inertia(opts, key), key.loc)
+            return self.inertia(opts, key)
         if kind is QuestionKind.STEADY_MOTION:
-            return Question(kind, self.steady_motion(opts, key), key.loc)
+            return self.steady_motion(opts, key)
         if kind is QuestionKind.STEADY_SPIN:
-            node = get("precession")
-            return Question(kind, SteadySpinOptions(self.body(opts, key, kind),
-                                                    self.precession(node) if node is not None else None), key.loc)
+            from rbdsolve.problem.options import SteadySpinOptions
+
+            node = opts.get("precession") if opts else None
+            return SteadySpinOptions(self.body(opts, key, kind), self.precession(node) if node is not None else None)
         if kind is QuestionKind.IMPACT:
-            return Question(kind, ImpactReader(self.reading, self.points).options(opts, key), key.loc)
+            from rbdsolve.problem.sections.impact import ImpactReader
+
+            return ImpactReader(self.reading, self.points).options(opts, key)
         if kind is QuestionKind.KINEMATICS:
-            return Question(kind, KinematicsReader(self.reading, self.points).options(opts, key), key.loc)
+            from rbdsolve.problem.sections.kinematics import KinematicsReader
+
+            return KinematicsReader(self.reading, self.points).options(opts, key)
+        from rbdsolve.problem.sections.forces import energy_options, reactions_options
+
         if kind is QuestionKind.REACTIONS:
-            return Question(kind, reactions_options(self.reading, opts, key, self.bodies, self.contacts), key.loc)
-        if kind is QuestionKind.ENERGY:
-            names = tuple(p.name for p in self.points)
-            return Question(kind, energy_options(self.reading, opts, key, names), key.loc)
-        return Question(kind, None, key.loc)
+            return reactions_options(self.reading, opts, key, self.bodies, self.contacts)
+        return energy_options(self.reading, opts, key, tuple(p.name for p in self.points))
 
     def frame(self, node: Node | None) -> str | None:
         if node is None:
@@ -218,6 +229,8 @@ class QuestionReader:
         return body
 
     def steady_motion(self, opts: Map | None, key: Scalar) -> SteadyMotionOptions:
+        from rbdsolve.problem.options import SteadyMotionOptions
+
         get = opts.get if opts else (lambda _: None)
         triads = self.reading.triad_names
         triad_node = get("triad")
@@ -273,6 +286,8 @@ class QuestionReader:
         """[{at: POINT, force: VECTOR}, ...]: contact forces with unknown magnitudes."""
         if node is None:
             return ()
+        from rbdsolve.problem.options import Reaction
+
         if not isinstance(node, Seq):
             raise InputError(f"expected a list of reactions [{{at: POINT, force: VECTOR}}, ...], found "
                              f"{describe(node)}", node.loc)
@@ -285,6 +300,8 @@ class QuestionReader:
         return tuple(found)
 
     def inertia(self, opts: Map | None, key: Scalar) -> InertiaOptions:
+        from rbdsolve.problem.options import InertiaOptions
+
         body = self.body(opts, key, QuestionKind.INERTIA)
         if next(b for b in self.bodies if b.name == body).velocity is not None:
             raise InputError(f"'inertia' needs the position of body '{body}' ('at'); it is given by its "
@@ -301,6 +318,8 @@ class QuestionReader:
 
     def precession(self, node: Node) -> PrecessionOptions:
         """{spin: ω₃, transverse: ω⊥} or {spin: ω₃, angle: α}: constants."""
+        from rbdsolve.problem.options import PrecessionOptions
+
         spec = expect_mapping(node, "the free motion {spin: RATE, transverse: RATE} (or angle: ANGLE)")
         check_keys(spec, ("spin",), ("transverse", "angle"), "precession")
         transverse, angle = spec.get("transverse"), spec.get("angle")

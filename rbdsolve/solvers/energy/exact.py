@@ -14,7 +14,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import EnergyOptions, Question
+from rbdsolve.problem.options import EnergyOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.energy.answers import EnergyAnswers, There
 from rbdsolve.solvers.energy.steps import exact_steps

@@ -8,7 +8,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import EnergyOptions
+from rbdsolve.problem.options import EnergyOptions
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.energy.answers import EnergyAnswers, NumericEnergyAnswers
 from rbdsolve.solvers.lagrange.accelerations import state_step

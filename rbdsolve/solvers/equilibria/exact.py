@@ -46,7 +46,6 @@ from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.numeric.search_box import search_rule
 from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, sign_of,
                                               symbolic_sign)
 from rbdsolve.model.values.values import sample
@@ -137,6 +136,8 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
     shown = "; ".join(f"{to_unicode(model.readable(e))} = 0" for e in equations)
     if len(shown) > SHOWN_CHARACTERS:  # written out in the steps already
         shown = "∂V/∂q = 0, as written above"
+    from rbdsolve.solvers.numeric.search_box import search_rule  # for this message only
+
     where = search_rule(model, angles)
     if not evident:
         raise UnsolvedError(f"{found.why_partial} ({shown}), and no evident root (0, π or ±π/2 in the angles, 0 in "

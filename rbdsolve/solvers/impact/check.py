@@ -13,7 +13,8 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import ImpactOptions, Question
+from rbdsolve.problem.options import ImpactOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.impact.equations import Instant, blows, instant
 from rbdsolve.solvers.routes.checks import Residual, Vanishes

@@ -39,7 +39,7 @@ from rbdsolve.model.constraints.plane_rolling import material_velocity, tangents
 from rbdsolve.model.state import t
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.sections.impact import restitution_message
-from rbdsolve.problem.schema import Collision, ImpactOptions
+from rbdsolve.problem.options import Collision, ImpactOptions
 from rbdsolve.solvers.impact.answers import ImpactAnswers
 from rbdsolve.solvers.configuration.singular import exact_reason
 

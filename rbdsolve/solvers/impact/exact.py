@@ -4,7 +4,8 @@ fraction field, answers as cancelled fractions, the worked solution from steps.p
 from __future__ import annotations
 
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import ImpactOptions, Question
+from rbdsolve.problem.options import ImpactOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.impact.equations import ImpactEquations, blows, instant, require_known
 from rbdsolve.solvers.impact.steps import exact_steps

@@ -15,7 +15,8 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import ImpactOptions, Question
+from rbdsolve.problem.options import ImpactOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.impact.equations import ImpactEquations, blows, instant
 from rbdsolve.solvers.impact.steps import numeric_steps

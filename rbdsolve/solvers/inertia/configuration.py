@@ -13,7 +13,7 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import InertiaOptions
+from rbdsolve.problem.options import InertiaOptions
 
 
 def substitution(opts: InertiaOptions, model: Model) -> dict[sp.Symbol, sp.Expr]:

@@ -30,7 +30,8 @@ from rbdsolve.form.stand_ins import stand_ins
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.inertia import parallel_axis
-from rbdsolve.problem.schema import InertiaOptions, Question
+from rbdsolve.problem.options import InertiaOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import InertiaAnswers, Principal

@@ -20,7 +20,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model
 from rbdsolve.model.inertia import parallel_axis
-from rbdsolve.problem.schema import InertiaOptions, Question
+from rbdsolve.problem.options import InertiaOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.inertia.answers import NumericInertiaAnswers
 from rbdsolve.solvers.inertia.configuration import about_point, at_configuration, substitution

@@ -13,7 +13,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import KinematicsOptions, Question
+from rbdsolve.problem.options import KinematicsOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.kinematics.answers import Distance, KinematicsAnswers, PointMotion
 from rbdsolve.solvers.kinematics.steps import exact_steps

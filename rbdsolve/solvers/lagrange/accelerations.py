@@ -18,10 +18,10 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.expansion import expanded
-from rbdsolve.form.tidy import cancelled, tidy, tidy_fraction_parts
+from rbdsolve.form.tidy import cancelled, has_denominator, tidy, tidy_fraction_parts
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.problem.schema import Instant
+from rbdsolve.problem.instants import Instant
 from rbdsolve.report import steps as st
 from rbdsolve.model.values.values import sample
 
@@ -53,17 +53,28 @@ def accelerations(equations: tuple[sp.Expr, ...], model: Model, at: dict | None 
     elif general and n > 1 and (sum(sp.count_ops(x) for x in h) > GENERAL_OPS or _radicals(h)):
         # (one coordinate: q̈ = −h/M, no determinant to swell, whatever h holds)
         return Accelerations(M, h, None, too_long=True)
-    det = tidy(expanded(M.det(method="berkowitz")))
+    det = tidy(expanded(_det(M)))
     if det == 0:
         return Accelerations(M, h, None)
     numerators = []
     for i in range(n):
         Mi = M.copy()
         Mi[:, i] = sp.Matrix([-x for x in h])
-        numerators.append(tidy(expanded(Mi.det(method="berkowitz"))))
+        numerators.append(tidy(expanded(_det(Mi))))
         if at is None and general and sp.count_ops(numerators[-1]) > NUMERATOR_OPS:
             return Accelerations(M, h, None, too_long=True)  # cancelling it would take minutes
     return Accelerations(M, h, tuple(_fraction(num, det) for num in numerators))
+
+
+def _det(M: sp.Matrix) -> sp.Expr:
+    """det M by Berkowitz's division-free algorithm; a 2 × 2 one whose entries have no sum
+    in a denominator directly, a d − b c: once expanded, term for term the polynomial
+    Berkowitz's gives (−b c + (−a)(−d), its Toeplitz product), at a fraction of the cost
+    (~1 ms a 2 × 2 of long entries). With a sum in a denominator the two expand to
+    different forms of the same value, so Berkowitz's is kept there."""
+    if M.shape == (2, 2) and not any(has_denominator(x) for x in M):
+        return M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0]
+    return M.det(method="berkowitz")
 
 
 def _radicals(h: tuple[sp.Expr, ...]) -> bool:

@@ -24,10 +24,11 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import Model, turning_holds_time
 from rbdsolve.model.state import t
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.problem.schema import Frame, Question
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Solution
 
 if TYPE_CHECKING:
+    from rbdsolve.problem.scene import Frame
     from rbdsolve.model.energies.frames import FrameMotion
 
 

@@ -27,6 +27,9 @@ class Form(Enum):
     CERTIFIED = "certified"
 
 
+CERTIFIED_DEGREE = 5  # an irreducible factor this long has its roots as certified decimals
+
+
 @dataclass(frozen=True)
 class MotionCase:
     """The kind of small motion (oscillation, growth) that holds when a condition on the

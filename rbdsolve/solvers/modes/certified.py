@@ -33,7 +33,6 @@ from fractions import Fraction
 import sympy as sp
 
 DIGITS = 15  # significant digits of every certified decimal (a binary64's worth)
-CERTIFIED_DEGREE = 5  # an irreducible factor this long has its roots as certified decimals
 START_BITS = 128
 MAX_BITS = 4096
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass, replace
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
@@ -45,9 +45,8 @@ from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.conditions.present_conditions import condition_relations
-from rbdsolve.solvers.modes.answers import (EachModesAnswers, Form, ModesAnswers, Motion, Skipped, none_answered,
-                                             with_amplitude_check)
-from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE, CertifiedRoot, certified_roots
+from rbdsolve.solvers.modes.answers import (CERTIFIED_DEGREE, EachModesAnswers, Form, ModesAnswers, Motion, Skipped,
+                                             none_answered, with_amplitude_check)
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
 from rbdsolve.solvers.conditions.conditions import asked, critical_values
@@ -55,6 +54,9 @@ from rbdsolve.solvers.lagrange.frames import require_static
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import exact_reason
 from rbdsolve.model.values.values import sample
+
+if TYPE_CHECKING:
+    from rbdsolve.solvers.modes.certified import CertifiedRoot
 
 LAMBDA = sp.Symbol("lamda")  # sympy's spelling: "lambda" is a Python keyword (the JSON's characteristic)
 MU = sp.Symbol("mu")
@@ -258,6 +260,16 @@ def _charpoly_rational(K_hat: sp.Matrix, M_hat: sp.Matrix) -> sp.Poly:
 MAX_ROOT_OPS = 60  # a longer closed form (Cardano, Ferrari) reads worse than CRootOf
 
 
+def _certified(factor: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[CertifiedRoot] | None:
+    """A factor's roots as certified decimals where its degree is ≥ CERTIFIED_DEGREE
+    (certified.py, imported only for such a factor), else None."""
+    if factor.degree() < CERTIFIED_DEGREE:
+        return None
+    from rbdsolve.solvers.modes.certified import certified_roots
+
+    return certified_roots(factor, K, M)
+
+
 def _rational_roots(poly: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[tuple]:
     """Every root of det(K − μM), a polynomial over QQ, with the irreducible factor it
     belongs to and, for a factor of degree ≥ 5, its certified decimals: closed forms for
@@ -266,7 +278,7 @@ def _rational_roots(poly: sp.Poly, K: sp.Matrix, M: sp.Matrix) -> list[tuple]:
     (certified.py); exact CRootOf(f, k) otherwise. No Ferrari quartics."""
     out = []
     for factor, multiplicity in poly.factor_list()[1]:
-        certified = certified_roots(factor, K, M) if factor.degree() >= CERTIFIED_DEGREE else None
+        certified = _certified(factor, K, M)
         if certified is not None:
             out += [(c.value, factor, c) for c in certified for _ in range(multiplicity)]
             continue

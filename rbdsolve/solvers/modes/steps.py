@@ -17,8 +17,7 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.conditions.present_conditions import condition_relation, critical_steps
-from rbdsolve.solvers.modes.answers import Form, ModesAnswers, Motion, NumericModesAnswers
-from rbdsolve.solvers.modes.certified import CERTIFIED_DEGREE
+from rbdsolve.solvers.modes.answers import CERTIFIED_DEGREE, Form, ModesAnswers, Motion, NumericModesAnswers
 from rbdsolve.solvers.routes.labels import MODES, labels_for
 
 

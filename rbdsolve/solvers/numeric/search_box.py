@@ -34,7 +34,8 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.quantities.quantity import LENGTH
-from rbdsolve.problem.schema import CoordinateKind, Measure, SurfaceKind
+from rbdsolve.problem.schema import CoordinateKind
+from rbdsolve.problem.surfaces import Measure, SurfaceKind
 
 SEARCH_SCALE = 10.0
 

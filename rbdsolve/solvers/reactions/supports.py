@@ -31,7 +31,7 @@ from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.state import t
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.problem.schema import Support, SupportKind
+from rbdsolve.problem.options import Support, SupportKind
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.form.zero import simplifies_to_zero
 

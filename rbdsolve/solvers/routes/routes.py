@@ -39,7 +39,6 @@ from rbdsolve.solvers.routes.options import Options, RouteChoice
 from rbdsolve.model.summary.scene import swing_warnings, unused_warnings
 from rbdsolve.model.summary.summary import coordinates_only, summarize_model
 from rbdsolve.model.values.answers import valued
-from rbdsolve.model.values.units import parameter_units
 from rbdsolve.solvers.routes.needed import missing_for, missing_values, with_irrelevant_filled
 
 Solver = Callable[[Question, Model, Options], Solution]  # a route, or a question's answer
@@ -279,10 +278,20 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
                       for i, q in enumerate(questions, start=1))
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
-    units = {k: u for k, u in parameter_units(model).items() if k in values}
+    units = _units(model, values)
     angles = frozenset(name for name, value in problem.values if value.angle and name in values)
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols, units, angles)
+
+
+def _units(model: Model, values: dict[str, float]) -> dict[str, str]:
+    """The SI unit of each parameter with a value; without values there are none to
+    give, and the units' machinery is not loaded (model/values/units.py)."""
+    if not values:
+        return {}
+    from rbdsolve.model.values.units import parameter_units
+
+    return {k: u for k, u in parameter_units(model).items() if k in values}
 
 
 def _numeric_may_follow(problem: Problem, options: Options) -> bool:

@@ -14,7 +14,7 @@ from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody
 from rbdsolve.model.rotation import sequence_rotation, vee
 from rbdsolve.model.state import t
-from rbdsolve.problem.schema import SteadyMotionOptions
+from rbdsolve.problem.options import SteadyMotionOptions
 
 
 @dataclass(frozen=True)

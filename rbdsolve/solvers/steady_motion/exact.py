@@ -35,7 +35,8 @@ from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import Question, SteadyMotionOptions
+from rbdsolve.problem.options import SteadyMotionOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots

@@ -37,7 +37,8 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import Question, SteadyMotionOptions
+from rbdsolve.problem.options import SteadyMotionOptions
+from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.routes.needed import require_values

@@ -10,7 +10,7 @@ from rbdsolve.form.arrange import in_basis
 from rbdsolve.form.display import Label, Product, Relation, Terms
 from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import SteadyMotionOptions
+from rbdsolve.problem.options import SteadyMotionOptions
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps

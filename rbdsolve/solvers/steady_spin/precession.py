@@ -23,7 +23,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.display import Label, Relation
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.problem.schema import PrecessionOptions
+from rbdsolve.problem.options import PrecessionOptions
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_spin.answers import FreePrecession
