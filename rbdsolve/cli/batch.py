@@ -160,13 +160,19 @@ def _quiet_worker() -> None:
 
 def _stop(pool: ProcessPoolExecutor) -> None:
     """End the workers at once and drop the files not yet started: the parent exits
-    within a second of Ctrl-C, not after the files under way are solved."""
+    within a second of Ctrl-C, not after the files under way are solved. The pool's
+    manager thread is waited for once its workers are gone: it closes the pipe that
+    Python's exit handler for process pools writes to, and racing it there printed
+    'Exception ignored … OSError: Bad file descriptor' under 'rbdsolve: terminated'."""
     processes = list((getattr(pool, "_processes", None) or {}).values())
+    manager = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=False, cancel_futures=True)
     for process in processes:
         process.terminate()
     for process in processes:
         process.join(timeout=1)
+    if manager is not None:
+        manager.join(timeout=5)
 
 
 def _solve_pickled(source: Source, settings: Settings) -> bytes:
