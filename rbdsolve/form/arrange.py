@@ -17,13 +17,12 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 import sympy as sp
-from sympy.core.function import AppliedUndef
 
 from rbdsolve.form.display import Along, Math, Product, Relation, Scaled, Terms
 from rbdsolve.form.expansion import expanded
 from rbdsolve.form.factor import factored
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import collect_in, common_factors, tidy
+from rbdsolve.form.tidy import collect_in, common_factors, terms_factored, tidy
 
 
 def _as_written(e: sp.Expr) -> sp.Expr:
@@ -96,7 +95,8 @@ def common_scale(exprs: list[sp.Expr], symbols: set[sp.Symbol]) -> sp.Expr:
     m r² [7/8 θ̇² + …] and a matrix as m r² [[7/4, 1/4], [1/4, 1/3]]. A common sign
     is included when every expression is negative.
     """
-    nonzero = [_common_factors(e) for e in dict.fromkeys(exprs) if e != 0]  # each distinct entry once
+    # each distinct entry once; a product of plain factors (a chain's M(q) entry) read as it stands
+    nonzero = [terms_factored(e) for e in dict.fromkeys(exprs) if e != 0]
     if not nonzero:
         return sp.Integer(1)
     powers: dict[sp.Symbol, sp.Expr] | None = None
@@ -114,29 +114,6 @@ def common_scale(exprs: list[sp.Expr], symbols: set[sp.Symbol]) -> sp.Expr:
     if all(sp.Mul.make_args(e)[0].is_negative for e in nonzero) and len(nonzero) > 0:
         scale = -scale
     return scale
-
-
-def _common_factors(e: sp.Expr) -> sp.Expr:
-    """``factor_terms(e)``, whose factors ``common_scale`` reads (the powers of symbols,
-    the leading number's sign): m l² + m a² → m (l² + a²). ``e`` itself where it is a
-    product of numbers, powers of symbols, coordinates (θ(t), θ̇) and cosines, as each
-    entry of a chain's M(q) is (3/2 l² m cos(θ₁ − θ₂)): factor_terms then rebuilds each
-    factor as it is, except that it may write a cosine's argument otherwise, and a
-    cosine stays a cosine (cos is even: no sign comes out of it), so the factors read
-    are the same, and sympy's factor_terms, which walks every argument, is not needed."""
-    if all(_kept_by_factor_terms(f) for f in sp.Mul.make_args(e)):
-        return e
-    return common_factors(e)
-
-
-def _kept_by_factor_terms(factor: sp.Expr) -> bool:
-    if factor.is_Number or factor.is_Symbol or isinstance(factor, sp.cos):
-        return True
-    if factor.is_Pow:
-        return factor.base.is_Symbol and factor.exp.is_Rational
-    if isinstance(factor, sp.Derivative):
-        return isinstance(factor.expr, AppliedUndef) and all(x.is_Symbol for x in factor.expr.args)
-    return isinstance(factor, AppliedUndef) and all(x.is_Symbol for x in factor.args)
 
 
 def scaled_sum(terms: list[tuple[sp.Expr, tuple[sp.Expr, ...]]], symbols: set[sp.Symbol]) -> Math:

@@ -343,6 +343,11 @@ class Problem:
     def value_map(self) -> dict[str, Value]:
         return dict(self.values)
 
+    def angle_values(self) -> frozenset[str]:
+        """The parameters whose values are given in angle units (30 deg): angles, shown
+        with their degrees."""
+        return frozenset(name for name, value in self.values if value.angle)
+
     def with_values(self, values: Mapping[str, Value]) -> Problem:
         """The same problem with these values, as if written under ``values:`` (``--set``,
         the API's ``values=``): each overrides the file's in its place, the others follow

@@ -1,6 +1,7 @@
 """common_scale reads each expression's factors without sympy's factor_terms where that
-would give the same factors (a product of numbers, powers of symbols, coordinates and
-cosines): the scale is the one factor_terms gives (the oracle) on both kinds."""
+gives the product back as it stands (form/tidy.py ``terms_factored``: numbers, powers of
+symbols, coordinates, sines and cosines of unit sums): the scale is the one factor_terms
+gives (the oracle) on both kinds."""
 
 from __future__ import annotations
 
@@ -9,7 +10,8 @@ import itertools
 import sympy as sp
 
 from rbdsolve.form import arrange
-from rbdsolve.form.arrange import _common_factors, common_scale
+from rbdsolve.form.arrange import common_scale
+from rbdsolve.form.tidy import terms_factored
 
 m, l, g = sp.symbols("m l g", positive=True)
 k = sp.Symbol("k")
@@ -25,12 +27,12 @@ ENTRIES = [sp.Rational(3, 2) * l**2 * m * sp.cos(th1 - th2), -sp.Rational(7, 3) 
 
 
 def _scale_by_factor_terms(exprs: list) -> sp.Expr:
-    original = arrange._common_factors
-    arrange._common_factors = sp.factor_terms
+    original = arrange.terms_factored
+    arrange.terms_factored = sp.factor_terms
     try:
         return common_scale(exprs, {m, l, g, k})
     finally:
-        arrange._common_factors = original
+        arrange.terms_factored = original
 
 
 def test_the_scale_is_factor_terms_scale() -> None:
@@ -41,6 +43,6 @@ def test_the_scale_is_factor_terms_scale() -> None:
 
 def test_a_product_is_read_as_it_stands_and_a_sum_is_factored() -> None:
     entry = sp.Rational(3, 2) * l**2 * m * sp.cos(th1 - th2)
-    assert _common_factors(entry) is entry
-    assert _common_factors(m * l**2 + m * a**2) == m * (l**2 + a**2)
-    assert _common_factors(m * sp.sin(a - b)) == sp.factor_terms(m * sp.sin(a - b))
+    assert terms_factored(entry) is entry
+    assert terms_factored(m * l**2 + m * a**2) == m * (l**2 + a**2)
+    assert terms_factored(m * sp.sin(a - b)) == sp.factor_terms(m * sp.sin(a - b))

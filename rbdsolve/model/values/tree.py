@@ -15,7 +15,6 @@ if TYPE_CHECKING:
     from rbdsolve.report.numbers import Path
 
 
-
 def map_leaves(value: object, leaf: Callable[[object], object]) -> object:
     """The same tree as plain JSON-like data, with ``leaf`` applied to each leaf:
     dataclasses and mappings become dicts, tuples and matrices (nested) lists."""

@@ -57,7 +57,7 @@ def answer_units(answers: object, model: Model, kind: str = "") -> object:
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
     numeric_unit, numeric_row = _memoized_numeric_unit(coordinates, angles, kind)
     # a parameter given in angle units (30 deg) is an angle: its critical values in rad, with their degrees
-    parameters = {**parameter_units(model), **{name: "rad" for name, value in model.problem.values if value.angle}}
+    parameters = {**parameter_units(model), **dict.fromkeys(model.problem.angle_values(), "rad")}
 
     zeros = []  # whether any entry is exactly 0 (its unit then comes from its list)
 

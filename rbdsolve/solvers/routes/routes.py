@@ -279,7 +279,7 @@ def report(problem: Problem, build: Callable[[], Model], answer: Solver, options
     values = {str(k): float(v) for k, v in model.values.items()}
     symbols = tuple(p.name for p in problem.parameters) + problem.unknowns
     units = _units(model, values)
-    angles = frozenset(name for name, value in problem.values if value.angle and name in values)
+    angles = problem.angle_values().intersection(values)
     return ProblemReport(problem.file, problem.title, problem.source, problem.statement,
                          summary, solutions, values, symbols, units, angles)
 

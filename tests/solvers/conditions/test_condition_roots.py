@@ -14,21 +14,23 @@ import sys
 
 import sympy as sp
 
-ROOTS = """
-import sympy as sp
-from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_text
-from rbdsolve.solvers.conditions.condition_roots import parameter_roots
-model = build_model(load_text('''
+SCENE = """
 parameters: {m: mass, a: length, b: length, c: length}
 coordinates: [x]
 points: {P: [x, 0]}
 bodies: {bob: {shape: particle, mass: m, at: P}}
 questions: [eom]
-'''))
+"""
+
+ROOTS = """
+import sympy as sp
+from rbdsolve.model.build import build_model
+from rbdsolve.problem import load_text
+from rbdsolve.solvers.conditions.condition_roots import parameter_roots
+model = build_model(load_text('''SCENE'''))
 a, b, c = (model.symbols.parameters[n] for n in "abc")
 print(parameter_roots((c - a - b) / (c - sp.sqrt(a**2 + 2*a*b + b**2)), c, {}, model))
-"""
+""".replace("SCENE", SCENE)
 
 
 def _roots_with_seed(seed: int) -> str:
@@ -85,15 +87,6 @@ def test_a_root_that_is_no_number_at_the_samples_leaves_the_parameter_undecided(
     for root in (conditional, stray):
         monkeypatch.setattr(condition_roots, "_roots_in", lambda factor, p, root=root: [root])
         assert condition_roots.parameter_roots(c - a, c, {}, model) is None
-
-
-SCENE = """
-parameters: {m: mass, a: length, b: length, c: length}
-coordinates: [x]
-points: {P: [x, 0]}
-bodies: {bob: {shape: particle, mass: m, at: P}}
-questions: [eom]
-"""
 
 
 def test_a_factor_with_the_parameter_inside_an_absolute_value_is_not_solved(monkeypatch) -> None:
