@@ -160,6 +160,8 @@ def compare_numbers(got, want, where: str) -> None:
         assert len(got) == len(want), f"{where}: {got} != {want}"
         for i, (g, w) in enumerate(zip(got, want)):
             compare_numbers(g, w, f"{where}[{i}]")
+    elif want is None:  # no number there (a push that never reaches zero)
+        assert got is None, f"{where}: {got} != None"
     else:
         assert got == pytest.approx(want, rel=1e-10), f"{where}: {got} != {want}"
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.solvers.conditions.conditions import CriticalValue
+from rbdsolve.solvers.reactions.first_zero import FirstZero
 
 
 @dataclass(frozen=True)
@@ -35,6 +36,8 @@ class ReactionsAnswers:
     # N or T -> where each of its zeros along the motion exists (|c| ≤ 1), as ``contact_lost``
     lost_exists_when: dict[str, tuple[sp.Basic, ...]] | None = None
     critical: tuple[CriticalValue, ...] = ()  # the critical values these conditions use
+    # with every parameter given a value: N or T -> where it first reaches 0 along the motion
+    first_zero: dict[str, FirstZero] | None = None
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
+from rbdsolve.solvers.reactions.first_zero import FirstZero, first_zero
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
@@ -24,6 +25,7 @@ from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, clean_fraction, state_values
 from rbdsolve.solvers.conditions.conditions import critical_values
 from rbdsolve.solvers.lagrange.energy_integral import energy_step
+from rbdsolve.solvers.routes.needed import missing_values
 from rbdsolve.solvers.routes.options import Options
 
 
@@ -100,6 +102,25 @@ def _timeless(r: Reaction, model: Model) -> Reaction:
                     tuple(model.to_time(x) for x in r.force), model.to_time(r.moment) if r.moment is not None else None)
 
 
+def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -> dict[str, FirstZero] | None:
+    """With every parameter given a value: where each push or tension first reaches zero
+    along the motion, or where the motion turns back before (first_zero.py)."""
+    if missing_values(model) or not _an_angle(model):
+        return None
+    q = model.q[0]
+    name = model.coordinate_names()[0]
+    found = {str(c.symbol): first_zero(values[c.symbol], rate_squared, q, table[q], name, dict(model.values))
+             for s in supports for c in s.components if c.one_sided}
+    return {k: v for k, v in found.items() if v is not None} or None
+
+
+def _an_angle(model: Model) -> bool:
+    from rbdsolve.model.values.units import known_dimensions  # loaded where there are values
+    from rbdsolve.problem.quantities.quantity import NUMBER
+
+    return known_dimensions(model).get(model.q[0]) == NUMBER
+
+
 def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
     return replace(answers, **changes)
 
@@ -129,7 +150,8 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     criticals = [c for found in reached.values() for h in found for c in h.criticals]
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu,
-                       lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()})
+                       lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()},
+                       first_zero=_first_zeros(model, supports, values, e.rate_squared, table))
     steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
     warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
                      f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "

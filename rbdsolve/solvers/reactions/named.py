@@ -9,7 +9,7 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.report.numbers import Named
-from rbdsolve.solvers.routes.naming import coordinate, criticals
+from rbdsolve.solvers.routes.naming import coordinate, criticals, state
 
 
 def named(question, answers, model: Model) -> tuple[Named, ...]:
@@ -25,6 +25,21 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
             continue  # the state asked names it already; a line is written only where its numbers are known
         out += [Named(("reactions", name, "components", c), sp.Symbol(c), "Forces") for c in r.components]
     out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
+    out += _first_zeros(getattr(answers, "first_zero", None) or {}, model)
     if hasattr(answers, "residual"):
         out.append(Named(("residual",), sp.Symbol("residual"), accuracy=True))
     return tuple(out + criticals(("critical",), getattr(answers, "critical", ())))
+
+
+def _first_zeros(found: dict, model: Model) -> list[Named]:
+    """Where each push or tension first reaches zero along the motion, or where the
+    motion turns back before it does (a heading each: 'N_C = 0 first at')."""
+    out = []
+    for name, where in found.items():
+        if where.lost_at:
+            out.append(Named(("first_zero", name, "lost_at"), state(model, where.lost_at),
+                             f"Along the motion, {name} = 0 first at"))
+        elif where.turns_at:
+            out.append(Named(("first_zero", name, "turns_at"), state(model, where.turns_at),
+                             f"Along the motion, {name} > 0 throughout: the motion turns back at"))
+    return out

@@ -1,0 +1,138 @@
+"""Where, at the parameter values, a push or a tension first reaches zero along the
+motion released from rest — the angle at which a disk leaves a drum.
+
+The exact route gives the zeros of N(q) as equations (cos q = c, limits.py) and when
+they are reached; with every parameter given a value, the reader wants the one place
+the motion meets first. Released from rest at q₀ (one coordinate, energy conserved),
+
+    q̇²(q) = 2 (V(q₀) − V(q)) / M(q),   dq̇²/dq = 2 q̈,
+
+so the motion sets off towards the sign s of q̈(q₀) (q̈(q₀) = 0: it stays at rest) and
+runs on while q̇² ≥ 0. The first zero of N on that way is found by stepping q from q₀
+in the direction s — at most one whole turn for an angle — and refining the step where
+N changes sign (a bracketing root finder, mpmath's Anderson–Björck); where q̇² turns
+negative first, the motion turns back at that point (q̇² = 0, refined the same way) and
+repeats between q₀ and it, so N never reaches zero.
+
+Only for an angle coordinate (a length has no natural span to step over), and only where
+the push holds at the release (N(q₀) > 0: ``holds`` says when it does not). A zero
+where N only touches 0 without changing sign between two steps (half a degree apart)
+is not seen: it is a double root, not a generic loss of contact.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import sympy as sp
+
+STEPS = 720  # a whole turn in steps of half a degree
+
+
+@dataclass(frozen=True)
+class FirstZero:
+    """Along the motion at the values: where the push first reaches zero (coordinate ->
+    value), or else where the motion first turns back; both None where it goes round a
+    whole turn with the push positive and repeats (a periodic motion), or stays at rest."""
+
+    lost_at: dict[str, float] | None
+    turns_at: dict[str, float] | None
+
+
+def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, name: str,
+               values: dict) -> FirstZero | None:
+    """``push`` N(q) and ``rate_squared`` q̇²(q) (plain symbols, the parameters' ``values``
+    put in here) from rest at q = ``start``; None where there is no answer to give (the
+    push does not hold at the release, a value is not a number, or a motion that is not
+    periodic in q goes a whole turn without either)."""
+    push, rate_squared = push.xreplace(values), rate_squared.xreplace(values)
+    N, v2 = _numeric(push, q), _numeric(rate_squared, q)
+    slope = sp.diff(rate_squared, q).xreplace({q: start.xreplace(values)})
+    q0, direction = _real(start.xreplace(values)), _real(slope)
+    if q0 is None or direction is None or not _positive(N(q0)):
+        return None
+    if direction == 0:
+        return FirstZero(None, None)  # released at an equilibrium: it stays there
+    step = math.copysign(2 * math.pi / STEPS, direction)
+    before = q0
+    for i in range(1, STEPS + 1):
+        x = q0 + i * step
+        speed, force = v2(x), N(x)
+        if speed is None or speed < 0:  # the motion turns back between ``before`` and x
+            turn = _root(v2, before, x)
+            if turn is None:
+                return None
+            if not _positive(N(turn)):
+                return _lost(N, before, turn, name)
+            return FirstZero(None, {name: turn})
+        if force is None:
+            return None
+        if force <= 0:
+            return _lost(N, before, x, name)
+        before = x
+    return FirstZero(None, None) if _periodic(push, q) and _periodic(rate_squared, q) else None
+
+
+def _lost(N, a: float, b: float, name: str) -> FirstZero | None:
+    root = _root(N, a, b)
+    return None if root is None else FirstZero({name: root}, None)
+
+
+def _numeric(expr: sp.Expr, q: sp.Symbol):
+    """x ↦ expr at q = x as a float; None where it is not a real number there."""
+    f = sp.lambdify(q, expr, modules="mpmath")
+
+    def value(x: float) -> float | None:
+        try:
+            return _real(f(x))
+        except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+            return None
+
+    return value
+
+
+def _real(x: object) -> float | None:
+    try:
+        z = complex(x)
+    except (TypeError, ValueError):
+        return None
+    if not math.isfinite(z.real) or abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+        return None
+    return z.real
+
+
+def _positive(x: float | None) -> bool:
+    return x is not None and x > 0
+
+
+def _root(f, a: float, b: float) -> float | None:
+    """The zero of f between a and b, where f changes sign there (f's value None
+    counts as not a root); None where it does not or the root finder fails."""
+    import mpmath
+
+    fa, fb = f(a), f(b)
+    if fa is None or fb is None or fa * fb > 0:
+        return None
+    if fb == 0:
+        return b
+    def known(x) -> float:
+        y = f(float(x))
+        if y is None:
+            raise ValueError("not a real number there")
+        return y
+
+    try:  # (findroot checks |f(root)| is small: a pole where f changes sign is no root)
+        root = float(mpmath.findroot(known, (a, b), solver="anderson"))
+    except (ValueError, ZeroDivisionError):
+        return None
+    return root if min(a, b) <= root <= max(a, b) else None
+
+
+def _periodic(expr: sp.Expr, q: sp.Symbol) -> bool:
+    """Does q enter only through sines and cosines of n q + b, n an integer (the same
+    after a whole turn; not θ³ sin θ, nor a half-disk's sin(r θ/(R + r)))?"""
+    inside = [f for f in expr.atoms(sp.sin, sp.cos) if f.has(q)]
+    if expr.xreplace({f: sp.Integer(0) for f in inside}).has(q):
+        return False
+    return all(sp.Poly(f.args[0], q).degree() == 1 and sp.diff(f.args[0], q).is_integer for f in inside)
