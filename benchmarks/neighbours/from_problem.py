@@ -74,6 +74,7 @@ PLACED = {
     # a circle of radius r rolling on the drum's top turned by θ: its centre at the angle
     # φ = r θ/(R + r) round the drum (arcs R φ = r (θ − φ))
     "half-disk-on-drum": {"half": ("(R + r)*[-sin(r*theta/(R + r)), cos(r*theta/(R + r))]", "theta")},
+    "disk-leaves-drum-spring": {"disk": ("(R + r)*[-sin(theta), cos(theta)]", "(R + r)*theta/r")},
 }
 SUPPORTS = {  # the contacts' supports, for reactions
     "wheel-on-incline": [Support("C", "wheel", "x*[cos(alpha), -sin(alpha)]", "rolling", normal="[sin(alpha), cos(alpha)]")],
@@ -83,6 +84,9 @@ SUPPORTS = {  # the contacts' supports, for reactions
     "slab-released": [Support("C", "slab", "R*[-sin(theta), cos(theta)]", "rolling", normal="[-sin(theta), cos(theta)]")],
     "particle-on-sphere": [Support("P", "particle", "P", "guide", normal="P/norm(P)")],
     "bead-in-loop-on-spring": [Support("P", "bead", "P", "guide", normal="-P/norm(P)")],  # the loop pushes inwards
+    "particle-inside-track-released": [Support("P", "particle", "P", "guide", normal="-P/norm(P)")],  # so does the track
+    "disk-leaves-drum-spring": [Support("C", "disk", "R*[-sin(theta), cos(theta)]", "rolling",
+                                        normal="[-sin(theta), cos(theta)]")],
     "rod-pivot-released": [Support("O", "rod", "O", "pivot")],
 }
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
@@ -134,7 +138,10 @@ def scene(path: Path) -> Scene:
     bodies = [_body(n, b, PLACED.get(name, {})) for n, b in (doc.get("bodies") or {}).items()]
     centres = {b["at"]: n for n, b in (doc.get("bodies") or {}).items() if isinstance(b, dict)
                and isinstance(b.get("at"), str)}
-    springs = [_spring(n, s, centres) for n, s in (doc.get("springs") or {}).items()]
+    # a spring's end may name a body (its centre): where the body is placed (``at``, or PLACED)
+    placed_at = {n: PLACED[name][n][0] for n in PLACED.get(name, {})} | {
+        n: _vec(b["at"]) for n, b in (doc.get("bodies") or {}).items() if isinstance(b, dict) and "at" in b}
+    springs = [_spring(n, s, centres, placed_at) for n, s in (doc.get("springs") or {}).items()]
     questions = [Question(*(next(iter(q.items())) if isinstance(q, dict) else (q, {}))) for q in doc["questions"]]
     planar = all(len(str(_vec(v)).split(",")) < 3 for v in (doc.get("points") or {}).values()) and "gravity" not in doc \
         or len(str(doc.get("gravity", "[0, -g]")).split(",")) < 3
@@ -193,11 +200,14 @@ def _body(name: str, b: dict, placed: dict) -> Body:
     return body
 
 
-def _spring(name: str, s: dict, centres: dict) -> Spring:
-    """A spring, each end on the body whose centre (``at``) it names, else on the ground
-    (the oracle's reactions apply its force to that body: oracle/reactions.py)."""
+def _spring(name: str, s: dict, centres: dict, placed_at: dict) -> Spring:
+    """A spring, each end on the body whose centre (``at``) it names, or the body it
+    names (at its centre, ``placed_at``), else on the ground (the oracle's reactions
+    apply its force to that body: oracle/reactions.py)."""
     if "angle" in s:
         return Spring(name, str(s["stiffness"]), angle=str(s["angle"]), rest=str(s.get("rest", 0)))
     a, b = s["between"]
-    return Spring(name, str(s["stiffness"]), ends=(_vec(a), _vec(b)), on=tuple(centres.get(e) if isinstance(e, str) else None for e in (a, b)),
+    ends = tuple(placed_at[e] if isinstance(e, str) and e in placed_at else _vec(e) for e in (a, b))
+    on = tuple((e if e in placed_at else centres.get(e)) if isinstance(e, str) else None for e in (a, b))
+    return Spring(name, str(s["stiffness"]), ends=ends, on=on,
                   natural_length=str(s.get("natural_length", 0)))

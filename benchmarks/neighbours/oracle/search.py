@@ -154,7 +154,7 @@ def stability(ms: System, q) -> tuple[str, list[float]]:
 def simulated_frequency(fs: System, q0: list[float], shape: list[float], periods: float = 3.0,
                         omega_guess: float = 1.0) -> float | None:
     """ω of the motion released at rest from q₀ + A a (A a thousandth of the coordinates'
-    scale, a the mode's shape), from the zero crossings of the modal coordinate of the
+    scale, at most of π; a the mode's shape), from the zero crossings of the modal coordinate of the
     oracle's own nonlinear equations (floats, RK45 at rtol 1e-8); None where it does not
     oscillate about q₀. A tighter tolerance only chases the rounding noise of the oracle's
     finite-difference accelerations: on the half ring with a particle, rtol 1e-9 took 25,000
@@ -163,7 +163,9 @@ def simulated_frequency(fs: System, q0: list[float], shape: list[float], periods
     n = fs.n
     a = np.array(shape, float)
     a = a / np.abs(a).max()
-    amp = 1e-3 * np.array(fs.scale)
+    # (a scale past π, an angle's range of ±24 rad, would make it a swing whose frequency
+    # is already off √λ by 2e-4: small means small against a turn too)
+    amp = 1e-3 * np.minimum(np.array(fs.scale, float), np.pi)
     y0 = np.concatenate([np.array(q0, float) + amp * a, np.zeros(n)])
 
     def rhs(_, y):

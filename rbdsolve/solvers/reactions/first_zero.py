@@ -116,14 +116,20 @@ def _root(f, a: float, b: float) -> float | None:
         return None
     if fb == 0:
         return b
+    scale = max(abs(fa), abs(fb))
+
     def known(x) -> float:
         y = f(float(x))
         if y is None:
             raise ValueError("not a real number there")
-        return y
+        return y / scale
 
-    try:  # (findroot checks |f(root)| is small: a pole where f changes sign is no root)
-        root = float(mpmath.findroot(known, (a, b), solver="anderson"))
+    # in double precision whatever mpmath's working precision is elsewhere; findroot then
+    # checks |f(root)| ≤ 1e-10 of f's size at the bracket's ends: a pole where f changes
+    # sign is no root
+    try:
+        with mpmath.workdps(15):
+            root = float(mpmath.findroot(known, (a, b), solver="anderson", tol=1e-20))
     except (ValueError, ZeroDivisionError):
         return None
     return root if min(a, b) <= root <= max(a, b) else None

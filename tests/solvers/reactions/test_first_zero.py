@@ -51,3 +51,14 @@ def test_a_motion_that_is_not_periodic_and_meets_nothing_in_a_turn_gives_no_answ
     push = 1 + q**2
     rate_squared = q  # from q = 0 it sets off forward and speeds up for ever
     assert first_zero(push, rate_squared, q, sp.Integer(0), "q", {}) is None
+
+
+def test_the_answer_does_not_depend_on_mpmath_s_working_precision_elsewhere():
+    import mpmath
+
+    push = g * (3 * sp.cos(q) - 2 * sp.cos(q0))
+    rate_squared = 2 * g * (sp.cos(q0) - sp.cos(q)) / R
+    values = {**VALUES, q0: sp.Rational(1, 10)}
+    with mpmath.workdps(40):  # as the oracle's tests leave it, for one
+        found = first_zero(push, rate_squared, q, q0, "q", values)
+    assert math.isclose(found.lost_at["q"], math.acos(2 / 3 * math.cos(0.1)), rel_tol=1e-12)
