@@ -19,7 +19,8 @@ from rbdsolve.model.energies.spring_length import held_sides
 from rbdsolve.solvers.equilibria.cases import existence_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
-from rbdsolve.solvers.conditions.conditions import changes, existing, partition, what_decides
+from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
+from rbdsolve.solvers.conditions.conditions import Piece, changes, existing, partition, sign_on, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
 from rbdsolve.solvers.conditions.signs import Inertia, Undecided, nonzero_where_defined, sign_of, sign_where_defined
 
@@ -76,10 +77,11 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
         if isinstance(sign, Undecided):
-            found = _cases(lam, model, where, first)
+            found = _cases(lam, model, where, first) or _cases_at_values(lam, model, where, first)
             if found is None:
                 raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
-                                    f"way rbdsolve cannot split into cases; {what_decides(lam)}")
+                                    f"way rbdsolve cannot split into cases; "
+                                    f"{what_decides(lam.xreplace(dict(model.values)))}")  # (names those without values)
             if len(found[0]) == 1:
                 motions.append(found[0][0].kind)
                 cases.append(())
@@ -109,6 +111,30 @@ def _decided_sign(lam: sp.Expr, model: Model, nonzero: Mapping[sp.Expr, sp.Dummy
         alone = sign_where_defined(lam, model.assumed, nonzero)
         return sign if isinstance(alone, Undecided) else alone
     return sign
+
+
+def _cases_at_values(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None = None):
+    """``_cases`` of λ with the parameters that have values put in, where that leaves
+    one or more free (k alone, M, g, l, m given: its critical values numbers, as the
+    equilibria's are); None where there are no values, or it still cannot be split."""
+    values = dict(model.values)
+    if not values or not lam.free_symbols - set(values):
+        return None
+    valued = lam.xreplace(values)
+    return _cases(valued, model, where.xreplace(values), first) or _one_sign(valued, model)
+
+
+def _one_sign(lam: sp.Expr, model: Model):
+    """λ of one parameter p with no root (nor pole) inside p's range: one sign over all
+    of it, a single case (the larger λ of two where the smaller's sign changes at k_c)."""
+    if len(lam.free_symbols) != 1:
+        return None
+    (p,) = lam.free_symbols
+    angles = angle_parameters(lam)
+    if parameter_roots(lam, p, angles, model) != []:  # roots inside, or not known: not one sign
+        return None
+    sign = sign_on(lam, Piece(p, None, None, 0, angles.get(p, (sp.Integer(0), sp.oo))), model, angles)
+    return None if sign is None else ((MotionCase(sp.true, KIND[sign]),), [])
 
 
 def _cases(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None = None):
