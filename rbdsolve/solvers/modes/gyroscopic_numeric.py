@@ -29,7 +29,7 @@ from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
-from rbdsolve.solvers.modes.routh import linearize
+from rbdsolve.solvers.modes.routh import linearize, radical_steady_state
 from rbdsolve.solvers.numeric.numeric_model import as_floats, to_floats
 
 DIGITS = 50
@@ -40,7 +40,7 @@ def solve(question: Question, model: Model) -> Solution:
     """The floating-point route's answer about the steady state the question names."""
     refuse_options(question)
     at, notes = _steady_state(question, model)
-    linear = linearize(question, model, at)
+    linear = linearize(question, model, at, model.values if radical_steady_state(question, model) else None)
     M, G, K = (to_floats(x, model.values) for x in (linear.M, linear.G, linear.K))
     s, bounds = quadratic_eigenvalues(M, G, K, [x.xreplace(dict(model.values)) for x in (linear.M, linear.G, linear.K)])
     growth = max(float(np.max(s.real - bounds)), 0.0)

@@ -63,13 +63,18 @@ def lagrangian(model: Model) -> sp.Expr:
     return T - potential_energy(model).total
 
 
-def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr]) -> Linear:
+def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr],
+              values: Mapping[sp.Symbol, sp.Expr] | None = None) -> Linear:
     """M, G and K about the configuration ``at`` of the coordinates kept, the cyclic
-    coordinates at the steady rates the question gives (Routh's reduction)."""
+    coordinates at the steady rates the question gives (Routh's reduction); with
+    ``values``, the parameters' values put in first (the floating-point route, where the
+    steady state holds a root of the parameters: ``radical_steady_state``)."""
     names = model.coordinate_names()
     _refuse_unknowns(model)
-    rates = {names.index(n): model.symbols.scalar(e) for n, e in question.options.steady}
-    L = lagrangian(model)
+    put = dict(values or {})
+    rates = {names.index(n): model.symbols.scalar(e).xreplace(put) for n, e in question.options.steady}
+    at = {q: v.xreplace(put) for q, v in at.items()}
+    L = lagrangian(model).xreplace(put)
     for k in rates:
         if L.has(model.q[k]):
             raise UnsolvedError(f"a steady rate dot({names[k]}) is for a cyclic coordinate (one L does not "
@@ -92,6 +97,17 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr])
     G, K = (sp.ImmutableMatrix(x.xreplace(at).applyfunc(tidy)) for x in (G, K))
     return Linear(tuple(names[k] for k in kept), functions, {names[k]: at[model.q[k]] for k in kept},
                   {names[k]: r for k, r in rates.items()}, momenta, M, G, K, steps)
+
+
+def radical_steady_state(question: Question, model: Model) -> bool:
+    """Does the steady state given hold a root of the parameters (a precession rate pasted
+    from steady_motion's quadratic, (r² s − √(r⁴ s² − …))/(…))? Then the check that it is
+    steady and det(K − ω²M + iωG)'s roots are nested radicals in the parameters: 30 s and
+    more each, where with the values put in first they are roots of numbers."""
+    given = [model.symbols.scalar(e) for _, e in (question.options.about or ())]
+    given += [model.symbols.scalar(e) for _, e in question.options.steady]
+    return any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
+               for x in given for p in x.atoms(sp.Pow))
 
 
 def _refuse_unknowns(model: Model) -> None:
@@ -161,7 +177,28 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
                                 "coordinates are singular there" + (_euler_hint({0: None}, names) if routh else ""))
         if residual != 0 and not simplifies_to_zero(residual):
             shown = to_unicode(model.readable(-residual)) if sp.count_ops(residual) <= 30 else "not zero"
-            raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there")
+            raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there"
+                                + _rounded_hint(derivative(R0, qi), at, model))
+
+
+def _rounded_hint(slope: sp.Expr, at, model: Model) -> str:
+    """At the parameter values, the residual's size against its terms', and what to do
+    where it is a rounding's (a steady rate pasted with six digits leaves ~1e-6)."""
+    if not model.values:
+        return ""
+    terms = sp.Add.make_args(sp.expand(slope))
+    try:
+        residual = float(sp.N(slope.xreplace(at).xreplace(dict(model.values)), 20))
+        size = sum(abs(float(sp.N(t.xreplace(at).xreplace(dict(model.values)), 20))) for t in terms)
+    except (TypeError, ValueError):
+        return ""
+    relative = abs(residual) / size if size else float("inf")
+    text = f": {-residual:.3g} at the parameter values"
+    if relative > 1e-4:
+        return text
+    return (f"{text}, {relative:.1g} of its terms — a rate or an angle rounded? Give it exactly, as the root a "
+            "steady_motion question prints (dot(psi): EXPRESSION under about:): a decimal, however many digits, "
+            "is never exactly steady")
 
 
 def _euler_hint(rates: dict, names: list[str]) -> str:
