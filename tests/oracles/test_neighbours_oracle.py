@@ -29,7 +29,7 @@ PROBLEMS = sorted(p for p in ROOT.glob("*/*.yaml") if not p.name.endswith(".expe
 UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-euler-angles", "p2-rod-impact",
               "p3-rolling-ring", "p5-accelerated-pendulum", "heavy-top", "rolling-coin", "rolling-cone",
               "rod-on-turning-shaft", "rod-on-turning-arm", "gyroscope-gimbal", "sleeping-top", "hanging-top", "rod-conical-pendulum",
-              "disk-on-tilted-axle-nutation",
+              "disk-on-tilted-axle-nutation", "plate-on-turning-shaft",
               # applied loads
               "cylinder-pulled", "disk-pulled-up-incline", "motor-on-pendulum", "rod-follower-force",
               "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled", "spool-pulled-off-top",

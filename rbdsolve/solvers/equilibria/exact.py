@@ -256,8 +256,18 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
     if sin_value.is_zero:
         return sp.Integer(0) if cos_value.is_positive else sp.pi
     if sp.expand(sin_value**2 - (1 - cos_value**2)) == 0:
-        return -sp.acos(cos_value) if sin_value.could_extract_minus_sign() else sp.acos(cos_value)
-    return sp.simplify(angle) if sp.count_ops(angle) < 40 else angle
+        return _acos(sin_value, cos_value)
+    if sp.count_ops(angle) < 40:
+        return sp.simplify(angle)  # atan(2 P/(g m)): shorter than acos(g m/√(4 P² + g² m²))
+    if sp.cancel(sp.together(sin_value**2 - (1 - cos_value**2))) == 0:
+        # s = ±√(1 − c²) once over one denominator (c = −6 g h/(Ω² b² − 4 Ω² h²)): a long atan2 of them,
+        # which simplify is not asked to read, is ±acos(c)
+        return _acos(sin_value, cos_value)
+    return angle
+
+
+def _acos(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
+    return -sp.acos(cos_value) if sin_value.could_extract_minus_sign() else sp.acos(cos_value)
 
 
 def _solve_general(equations, unknowns) -> list[dict]:
