@@ -40,8 +40,24 @@ def identifier(key: Scalar, what: str) -> str:
     if name.startswith("__"):
         raise InputError("names starting with '__' are not allowed", key.loc)
     if name in RESERVED:
-        raise InputError(f"'{name}' is reserved (a function, a constant or time t)", key.loc)
+        raise InputError(f"'{name}' is reserved ({_reserved_as(name)}); try '{_free_name(name)}'", key.loc)
     return name
+
+
+def _reserved_as(name: str) -> str:
+    if name == "t":
+        return "time t"
+    if name == "pi":
+        return "the constant π"
+    if name in ("E", "I"):
+        return f"sympy reads {name} back from the JSON answers as {'e' if name == 'E' else 'i'}"
+    return "a function"
+
+
+def _free_name(name: str) -> str:
+    """A name like it that is not reserved: E → E1, sin → sin_."""
+    candidate = f"{name}1" if len(name) == 1 else f"{name}_"
+    return candidate if candidate not in RESERVED else f"{name}_1"
 
 
 def _check_point_name(node: Scalar, scope: ex.Scope) -> None:
