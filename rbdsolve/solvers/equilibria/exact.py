@@ -38,7 +38,7 @@ from rbdsolve.solvers.equilibria.cases import existing_where, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
-from rbdsolve.solvers.equilibria.uniform import uniform_equilibrium
+from rbdsolve.solvers.equilibria.uniform import never_balanced, uniform_equilibrium
 from rbdsolve.solvers.equilibria import zero_length
 from rbdsolve.solvers.conditions.conditions import asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
@@ -493,7 +493,11 @@ def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -
     one under a condition on the parameters (uniform.py); else there is none."""
     found = uniform_equilibrium(model, grad, first)
     if found is None:
-        raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+        never = never_balanced(model, grad)
+        if never is None:
+            raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
+        answers = EquilibriaAnswers(())  # an answer, not a failure: the loads never balance here
+        return Solution("equilibria", Route.EXACT, answers, (*exact_steps(answers, grad, model, False), never))
     equilibrium, warning = found
     answers = EquilibriaAnswers((equilibrium,))
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))
