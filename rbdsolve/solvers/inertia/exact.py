@@ -328,8 +328,15 @@ def _unit_axes(J_hat: sp.Matrix, root: sp.Expr, multiplicity: int) -> list[sp.Ma
         for u in directions:
             v = v - (u.dot(v) / u.dot(u)) * u
         first = next(x for x in v if tidy(x) != 0)
-        directions.append(_first_positive(_polynomial_direction(_integral((v / first).applyfunc(tidy)))))
+        directions.append(_first_positive(_polynomial_direction(_integral((v / first).applyfunc(_rationalized)))))
     return directions
+
+
+def _rationalized(x: sp.Expr) -> sp.Expr:
+    """Tidied, and a surd's denominator made rational: (2√113 + 30)/(31 + 3√113) =
+    (√113 − 9)/2, so that the direction clears to (4, 4, √113 − 9)."""
+    x = tidy(x)
+    return sp.radsimp(x) if _surd(x) and not x.is_Rational else x
 
 
 def _unit(direction: sp.Matrix) -> tuple[sp.Expr, ...]:
@@ -374,9 +381,19 @@ def _polynomial_direction(v: sp.Matrix) -> sp.Matrix:
 
 def _integral(v: sp.Matrix) -> sp.Matrix:
     """The direction of v with its rational denominators cleared: (0, 1, (√145 − 1)/12)
-    becomes (0, 12, √145 − 1)."""
+    becomes (0, 12, √145 − 1); and its denominators in the parameters, the entries then
+    divided by their common factor: (126, 42 √3, 56 √3 h/b − 56 √3 b/h + 28 √3 √P/(b h))
+    becomes (9 b h, 3 √3 b h, 2 √3 (2 h² − 2 b² + √P))."""
     scale = sp.lcm([r.q for x in v for r in x.atoms(sp.Rational)] or [1])
-    return (v * scale).applyfunc(sp.expand)
+    v = (v * scale).applyfunc(sp.expand)
+    if not v.free_symbols or v.atoms(sp.Function):
+        return v
+    parts = [sp.fraction(sp.together(x)) for x in v]
+    denominator = sp.lcm([den for _, den in parts])
+    entries = [sp.expand(sp.cancel(num * denominator / den)) for num, den in parts]
+    nonzero = [e for e in entries if e != 0]
+    common = sp.gcd(nonzero) if nonzero else 1
+    return sp.Matrix([sp.expand(sp.cancel(e / common)) for e in entries])
 
 
 def _first_positive(v: sp.Matrix) -> sp.Matrix:
