@@ -40,7 +40,7 @@ from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, 
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import never_balanced, uniform_equilibrium
 from rbdsolve.solvers.equilibria import zero_length
-from rbdsolve.solvers.conditions.conditions import asked, critical_values, what_decides
+from rbdsolve.solvers.conditions.conditions import CriticalValue, asked, critical_values, what_decides
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
@@ -499,5 +499,15 @@ def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -
         answers = EquilibriaAnswers(())  # an answer, not a failure: the loads never balance here
         return Solution("equilibria", Route.EXACT, answers, (*exact_steps(answers, grad, model, False), never))
     equilibrium, warning = found
-    answers = EquilibriaAnswers((equilibrium,))
+    answers = EquilibriaAnswers((equilibrium,), critical=_balancing(equilibrium.exists_when, model))
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))
+
+
+def _balancing(where: sp.Basic, model: Model) -> tuple[CriticalValue, ...]:
+    """The parameter values where the loads balance (F = g m₂: the only F with an
+    equilibrium), as critical values where the other values make them numbers, so that
+    those are printed (F_c = 14.715 N); symbolic, the relation says it in place."""
+    relations = where.args if isinstance(where, sp.And) else (where,)
+    return tuple(CriticalValue(str(r.lhs), r.rhs) for r in relations
+                 if isinstance(r, sp.Eq) and isinstance(r.lhs, sp.Symbol) and model.values
+                 and r.rhs.xreplace(dict(model.values)).is_number)

@@ -43,3 +43,13 @@ def test_pulled_harder_than_the_hanging_weight_there_is_no_equilibrium():
 def test_pulled_with_the_hanging_weight_every_place_is_one():
     solution = _equilibria("14.715 N")  # F = m₂ g
     assert solution.solved and len(solution.answers.equilibria) == 1
+
+
+def test_with_the_pull_symbolic_the_balancing_pull_is_a_critical_value_with_its_number():
+    model = build_model(loads(SCENE.replace(", F: FORCE", "")))
+    solution = solve_question(model.problem.questions[0], model)
+    (critical,) = solution.answers.critical
+    assert critical.parameter == "F"  # F = m₂ g by hand: 1.5 · 9.81 = 14.715 N
+    assert abs(float(critical.value.xreplace(dict(model.values))) - 14.715) < 1e-12
+    lines = [n for n in solution.numbers if str(n.relation.lhs) == "F_c"]
+    assert lines and abs(float(lines[0].relation.rhs) - 14.715) < 1e-9 and lines[0].unit == "N"
