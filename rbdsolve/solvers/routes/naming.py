@@ -45,6 +45,9 @@ def criticals(path: Path, critical: Sequence, group: str = "") -> list[Named]:
     that is another parameter or a number (r < R, θ < π/2) is printed in its condition.
     Without a heading of their own they go under 'Critical values', not under the last
     equilibrium's."""
-    names = dict((id(c), name) for c, name in critical_names(critical))
+    named = critical_names(critical)
+    names = dict((id(c), name) for c, name in named)
     group = group or "Critical values"
-    return [Named((*path, i, "value"), names[id(c)], group) for i, c in enumerate(critical) if id(c) in names]
+    order = {id(c): k for k, (c, _) in enumerate(named)}  # the steps' order: k_c1 before k_c2
+    return [Named((*path, i, "value"), names[id(c)], group)
+            for i, c in sorted(enumerate(critical), key=lambda ic: order.get(id(ic[1]), 0)) if id(c) in names]

@@ -63,3 +63,17 @@ def test_a_critical_value_of_a_parameter_given_in_degrees_is_in_rad_with_its_deg
                                                         {"parameter": None, "value": "kg"}]
     found = valued(answers, model, "", lambda: tuple(criticals(("critical",), answers["critical"])))
     assert [number_text(n) for n in found.lines] == ["θ₀,c = 1.0472 rad (60°)", "m_c = 6 kg"]
+
+
+def test_the_numeric_block_lists_critical_values_in_the_steps_order() -> None:
+    """k_c1 before k_c2 (named in increasing order), whichever the answers found first."""
+    from rbdsolve.render.numbers import number_text
+    from rbdsolve.solvers.conditions.conditions import CriticalValue
+    from rbdsolve.solvers.routes.naming import criticals
+
+    model = _pendulum().with_values({"m": 2, "l": 3, "g": Fraction(981, 100)})
+    m, l, g = (model.symbols.parameters[n] for n in ("m", "l", "g"))
+    answers = {"critical": [CriticalValue("l", 3 * m * g), CriticalValue("l", m * g)]}  # found larger first
+    found = valued(answers, model, "", lambda: tuple(criticals(("critical",), answers["critical"])))
+    assert [number_text(n).split(" = ")[0] for n in found.lines] == ["l_c1", "l_c2"]
+    assert [float(n.relation.rhs) for n in found.lines] == [19.62, 58.86]
