@@ -32,6 +32,7 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     expr = expanded(expr)
     if expr.is_Rational:
         return expr
+    expr = _joined_roots(expr)
     if expr.has(sp.acos, sp.asin, sp.atan):
         expr = _of_inverses(expr)
     if _past_limit(expr):
@@ -43,6 +44,24 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     if has_denominator(expr):
         expr = _cancel(expr)
     return _leading_plus(terms_factored(expr))
+
+
+def _joined_roots(expr: sp.Expr) -> sp.Expr:
+    """Square roots of the parameters whose radicands share a factor once each is over
+    one denominator and factored, written so: sympy then joins their products,
+    √(4 g k l m − g² m² − 3 k² l²) √(4 g m/(k l) − g² m²/(k² l²) − 3) = (4 g k l m − g² m²
+    − 3 k² l²)/(k l) (positive k, l), and a tilted equilibrium's K₁₁ of four lines is
+    k l²/2. (sin(acos c) = √(1 − c²) leaves 1 − c² expanded beside the c it came from.)
+    Expressions whose roots share nothing are left as they are."""
+    roots = [p for p in expr.atoms(sp.Pow) if p.exp == sp.S.Half and p.base.is_Add and p.base.free_symbols]
+    if len(roots) < 2:
+        return expr
+    factored = {p: sp.factor(sp.together(p.base)) for p in roots}
+    kernels = [{f for f in sp.Mul.make_args(sp.fraction(b)[0]) if f.is_Add or (f.is_Pow and f.base.is_Add)}
+               for b in factored.values()]
+    if not any(a & b for i, a in enumerate(kernels) for b in kernels[i + 1:]):
+        return expr
+    return expanded(expr.xreplace({p: sp.sqrt(b) for p, b in factored.items()}))
 
 
 def terms_factored(expr: sp.Expr) -> sp.Expr:

@@ -55,7 +55,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_static(model, "the equilibria")
     found = find_numeric(model)
     if not found.equilibria:
-        raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
+        return _never_balanced(model, found)
     g, H = compiled_gradient(model)
     names = model.coordinate_names()
     kept, apart = numeric_listing(model, found.equilibria)
@@ -138,6 +138,21 @@ def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dic
         return at, {}, None
     exact = dict(SIMPLE)
     return {n: exact[recognized[n]] if n in recognized else v for n, v in at.items()}, recognized, bound
+
+
+def _never_balanced(model: Model, found) -> Solution:
+    """No equilibrium found: the answer where ∂V/∂q holds no coordinate and is a nonzero
+    number at the values (the loads never balance, as on the exact route: uniform.py),
+    else a failure that says where the search looked."""
+    from rbdsolve.solvers.equilibria.exact import gradient
+    from rbdsolve.solvers.equilibria.uniform import never_balanced
+
+    never = never_balanced(model, gradient(model))
+    if never is None:
+        raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
+    answers = NumericEquilibriaAnswers((), found.starts)
+    return Solution("equilibria", Route.NUMERIC, answers, (*numeric_steps(answers, model), never),
+                    error_estimate=0.0)  # (∂V/∂q is a number: nothing to estimate)
 
 
 def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:

@@ -149,6 +149,8 @@ def _point(model: Model, support: Support) -> Held:
     if support.by is not None:
         by = body(model, support.by)
         v, w = v - material_velocity(model, by, P), w - by.angular_velocity(model.state)
+    if support.by is None:
+        _require_material(model, support, on, P, v)
     columns = [v.diff(qd) for qd in model.qd]
     if not planar(model):
         if _rank(columns, model) != 0:
@@ -167,6 +169,24 @@ def _point(model: Model, support: Support) -> Held:
     what = f"body '{on.name}'" + (f" relative to body '{support.by}'" if support.by else "")
     raise InputError(f"'{support.point}' is not a support of {what}: its point there moves freely in the plane "
                      f"(v = {to_unicode(model.readable(v.T))}), so nothing holds it there", support.loc)
+
+
+def _require_material(model: Model, support: Support, on: RigidBody, P: sp.Matrix, v: sp.Matrix) -> None:
+    """A support at a point that moves holds the body's own point there: dP/dt must be
+    v_G + ω × (P − r_G). Where it is not, the body's angle and its points disagree (a
+    ladder's ends at L (sin θ, 0) and (0, L cos θ) with ``angle: -theta``: its ends would
+    turn the other way), and every moment about G, so every force, would be wrong. A
+    point fixed in space (a peg the body slides over) and a particle are not asked."""
+    moves = model.state.d_dt(P)
+    if on.inertia == sp.zeros(3, 3) or all(simplifies_to_zero(x) for x in moves):
+        return
+    if all(simplifies_to_zero(x) for x in moves - v):
+        return
+    angle = f" (its angle: {to_unicode(model.readable(on.angle))}; the other way round?)" if on.angle is not None else ""
+    raise InputError(f"'{support.point}' moves, but not with body '{on.name}'{angle}: dP/dt = "
+                     f"{to_unicode(model.readable(model.to_time(moves.T)))}, while the body's point there moves at v_G + ω × (P − r_G) "
+                     f"= {to_unicode(model.readable(model.to_time(v.T)))}; the body's angle and its points disagree, so its moments, and "
+                     "the forces, would be wrong ('rbdsolve draw' shows the body against its points)", support.loc)
 
 
 def _free(name: str, dims: int) -> tuple[Component, ...]:

@@ -304,12 +304,14 @@ def test_numeric_route_refuses_where_v_has_no_value() -> None:
 # A particle at height y under gravity: V = m g y, ∂V/∂y = m g ≠ 0, so no route can find
 # an equilibrium. A pendulum: V = −m g l cos θ, equilibria θ = 0 (stable) and θ = π.
 
+# ∂V/∂y = m g (3 y² + 1): no real root, and (unlike a falling particle's constant m g,
+# which the loads never balance: an answer, equilibria/uniform.py) one the routes search for
 FALLING = """\
 parameters: {m: mass, g: gravity}
 coordinates: [y]
 gravity: [0, -g]
 points:
-  P: [0, y]
+  P: [0, y**3 + y]
 bodies:
   b: {shape: particle, mass: m, at: P}
 questions:
