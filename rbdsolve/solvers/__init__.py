@@ -54,7 +54,7 @@ FAMILIES = {
                                        later_residuals("steady_motion.check"),
                                        named=later("steady_motion.named", "named")),
     QuestionKind.KINEMATICS: Family(later("kinematics.exact"), later("kinematics.numeric"),
-                                    named=later("kinematics.named", "named")),
+                                    partial=later_check("kinematics.exact"), named=later("kinematics.named", "named")),
     QuestionKind.REACTIONS: Family(later("reactions.exact"), later("reactions.numeric"),
                                    later_residuals("reactions.check"), named=later("reactions.named", "named")),
     QuestionKind.ENERGY: Family(later("energy.exact"), later("energy.numeric"), named=later("energy.named", "named")),

@@ -8,6 +8,8 @@ A distance between two points is d = |r_B − r_A| = √(Δr·Δr), its rate ḋ
 
 from __future__ import annotations
 
+from typing import Mapping
+
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
@@ -28,9 +30,14 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("kinematics", Route.EXACT, answers, exact_steps(answers, general, model))
 
 
-def kinematics(opts: KinematicsOptions, model: Model) -> tuple[KinematicsAnswers, dict]:
-    """The answers at the state, and each point's r, v, a in general (for the steps)."""
-    state = state_values(opts, model)
+def kinematics(opts: KinematicsOptions, model: Model,
+               values: Mapping[sp.Symbol, sp.Expr] | None = None) -> tuple[KinematicsAnswers, dict]:
+    """The answers at the state, and each point's r, v, a in general (for the steps);
+    with ``values`` (the floating-point route), the parameters' values put in with the
+    state, before anything is expanded or tidied: a four-bar's B, where two circles meet,
+    is a root of the lengths whose second derivative, written out in them, took minutes."""
+    put = dict(values or {})
+    state = {**{k: v.xreplace(put) for k, v in state_values(opts, model).items()}, **put}  # (θ = θ₁, θ₁ = π/2)
     named = dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)])
     general = {name: motion(name, model) for name in named}
     at = {RATE_NAMES[sv.order].format(sv.coordinate): value
@@ -38,6 +45,27 @@ def kinematics(opts: KinematicsOptions, model: Model) -> tuple[KinematicsAnswers
     points = tuple(_at_state(name, general[name], state, model) for name in opts.points)
     distances = tuple(_distance(a, b, general, state, model) for a, b in opts.distances)
     return KinematicsAnswers(at, points, distances), general
+
+
+ROOT_OPS = 40  # a point past this size with a root of the coordinates: its exact acceleration takes minutes
+
+
+def partial(question, model: Model) -> str | None:
+    """The route choice's check (solvers/routes/routes.py), from the structure: a point
+    asked whose position holds a root of the coordinates and is long (a four-bar's B,
+    where two circles meet, 144 operations: its second derivative written out in the
+    lengths took the whole budget), so the floating-point route answers, the values put
+    in first. A slider-crank's B (11 operations) stays exact."""
+    opts = question.options
+    for name in dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)]):
+        if not model.has_point(name):
+            continue
+        r = model.point(name)
+        roots = any(p.exp.is_Rational and not p.exp.is_Integer and p.base.has(*model.q) for p in r.atoms(sp.Pow))
+        if roots and sum(sp.count_ops(x) for x in r) > ROOT_OPS:
+            return (f"point '{name}' is placed by a root of the coordinates ({sum(sp.count_ops(x) for x in r)} "
+                    "operations long), so its exact acceleration would take minutes to write out")
+    return None
 
 
 def state_values(opts: KinematicsOptions, model: Model) -> dict[sp.Symbol, sp.Expr]:

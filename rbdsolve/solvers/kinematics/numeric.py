@@ -22,7 +22,7 @@ ROUNDING = 1e-15  # one rounding of each evaluated expression, relative
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
-    exact, _ = kinematics(question.options, model)
+    exact, _ = kinematics(question.options, model, dict(model.values))
 
     def f(x: sp.Expr) -> float | None:
         value = x.xreplace(model.values)
