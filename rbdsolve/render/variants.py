@@ -4,7 +4,11 @@ CSV and null in JSON (the warnings say why)."""
 
 from __future__ import annotations
 
+import math
+
 from rbdsolve.render import spreadsheet
+from rbdsolve.form.printers import latex_name
+from rbdsolve.render.numbers import unit_text
 from rbdsolve.render.json_text import strict_json
 from rbdsolve.render.latex import PREAMBLE, text
 from rbdsolve.report.variants import VariantTable
@@ -78,8 +82,17 @@ def render_latex(table: VariantTable) -> str:
 
 
 def _values_line(table: VariantTable, draw: tuple[Value, ...]) -> str:
+    """m = 3 kg, β = 20°: each value with its unit, an angle the file wrote in degrees in
+    degrees (its value in radians is what the answers use)."""
     given = [*zip(table.parameters, draw), *table.fixed]
-    return ", ".join(f"\\texttt{{{text(name)}}} $= {_parameter(value)}$" for name, value in given)
+    units = dict(table.units)
+    return ", ".join(f"${_given(name, value, units.get(name), name in table.angles)}" for name, value in given)
+
+
+def _given(name: str, value: Value, unit: str | None, angle: bool) -> str:
+    if angle:
+        return f"{latex_name(name)} = {NUMBER_FORMAT.format(math.degrees(float(value)))}^\\circ$"
+    return f"{latex_name(name)} = {_parameter(value)}$" + text(unit_text(unit))
 
 
 def _student_page(table: VariantTable, n: int, draw: tuple[Value, ...]) -> list[str]:

@@ -31,3 +31,5 @@ class VariantTable:
     verified: tuple[int, ...] = ()  # variant numbers (1-based) checked by a full solve
     kind_columns: tuple[str, ...] = ()  # answers that are kinds ('equilibria[1].stability')
     kinds: tuple[tuple[str | None, ...], ...] = ()  # per variant, per kind column (None: none claimed)
+    units: tuple[tuple[str, str], ...] = ()  # parameter -> its SI unit ('' for a pure number), where known
+    angles: frozenset[str] = frozenset()  # parameters written in angle units (30 deg): shown in degrees

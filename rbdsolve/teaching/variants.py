@@ -392,7 +392,15 @@ def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple
     notes = (f"not numbers, so not in the table: {', '.join(left_out)}",) if left_out else ()
     return VariantTable(problem.file, problem.title, problem.statement, tuple(labels), seed,
                         tuple(r.name for r in problem.ranges), problem.values, columns,
-                        tuple(draws), answers, notes, tuple(warnings))
+                        tuple(draws), answers, notes, tuple(warnings),
+                        units=tuple((name, d.unit) for name, d in problem.dimensions), angles=_angles(problem))
+
+
+def _angles(problem: Problem) -> frozenset[str]:
+    """The parameters a student sheet gives in degrees: those whose value, range or
+    choices the file wrote in angle units (20 deg, 45 deg)."""
+    ranged = {r.name for r in problem.ranges if r.low.angle or any(c.angle for c in r.choices)}
+    return problem.angle_values() | ranged
 
 
 def _unvalued(problem: Problem) -> list[str]:

@@ -251,3 +251,30 @@ def _ranges(grid: dict[str, tuple[int, int, int]]):
     text = (f"parameters: [{', '.join(grid)}]\nvalues:\n{lines}\n"
             f"bodies: {{ball: {{shape: particle, mass: {next(iter(grid))}, at: [0, 0]}}}}\nquestions: [inertia]\n")
     return load_text(text, "ranges.yaml").ranges
+
+
+def test_a_student_sheet_gives_each_value_with_its_unit_and_an_angle_in_degrees() -> None:
+    """An incline drawn from 20 deg and 45 deg: the sheet says β = 20° (or 45°), not
+    0.3490658504; a mass drawn in kg says kg."""
+    scene = """
+title: A block on an incline
+parameters: {m: mass, g: gravity, beta: angle of the incline}
+values: {m: {range: [1, 2], step: 1}, g: 9.81 m/s^2, beta: {choices: [20 deg, 45 deg]}}
+coordinates: [x]
+gravity: [0, -g]
+points:
+  P: x * [cos(beta), -sin(beta)]
+bodies:
+  block: {shape: particle, mass: m, at: P}
+questions:
+  - eom
+"""
+    table = variants(load_text(scene), count=4, seed=3)
+    tex = render_latex(table)
+    pages = [line for line in tex.splitlines() if line.startswith("\\textbf{Your values:}")]
+    assert len(pages) == 4
+    for page, draw in zip(pages, table.draws):
+        m, beta = (float(v) for v in draw)
+        assert f"$m = {m:.10g}$ kg" in page and "$g = 9.81$ m/s" in page
+        assert f"$\\beta = {math.degrees(beta):.10g}^\\circ$" in page
+    assert "0.349" not in tex and "0.785" not in tex
