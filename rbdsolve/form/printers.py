@@ -143,6 +143,8 @@ def _subscript(sub: str) -> str:
 
 
 def latex_name(name: str) -> str:
+    if len(name) > 2 and name.startswith("|") and name.endswith("|"):  # a norm's name, |v_B|
+        return f"\\left|{latex_name(name[1:-1])}\\right|"
     base, sub = split_name(name)
     base = "\\" + base if base in GREEK else (base if len(base) == 1 else f"\\mathrm{{{base}}}")
     base = {"\\phi": "\\varphi", "\\lamda": "\\lambda"}.get(base, base)

@@ -46,3 +46,11 @@ def test_latex_joins_a_term_whose_sign_moves_by_its_one_sign() -> None:
     text = to_latex(N * sp.cos(th) - g * m - k * (-R * sp.cos(th) - h))
     assert "- -" not in text and "+ -" not in text
     assert text.endswith("- g m + k \\left(R \\cos{\\left(\\theta \\right)} + h\\right)")
+
+
+def test_a_norm_s_name_is_typeset_between_bars() -> None:
+    from rbdsolve.form.printers import latex_name
+
+    # a speed's name |v_B| in the kinematics' numeric block; it was \mathrm{|v}_{\mathrm{B|}}
+    assert latex_name("|v_B|") == "\\left|v_{B}\\right|"
+    assert latex_name("|OB|") == "\\left|\\mathrm{OB}\\right|"
