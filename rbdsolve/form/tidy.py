@@ -18,6 +18,7 @@ from rbdsolve.form.expansion import expanded
 from rbdsolve.form.stand_ins import stand_ins
 
 MAX_OPS = 400  # larger coefficients are expanded but not rewritten
+JOINED_OPS = 40  # radicands up to this size are factored to find the roots that join (_joined_roots)
 
 
 @lru_cache(maxsize=4096)  # a coefficient recurs: T's in the equations, M's in q̈ and in the modes
@@ -54,6 +55,9 @@ def _joined_roots(expr: sp.Expr) -> sp.Expr:
     k l²/2. (sin(acos c) = √(1 − c²) leaves 1 − c² expanded beside the c it came from.)
     Expressions whose roots share nothing are left as they are."""
     roots = [p for p in expr.atoms(sp.Pow) if p.exp == sp.S.Half and p.base.is_Add and p.base.free_symbols]
+    if len(roots) < 2:
+        return expr
+    roots = [p for p in roots if sp.count_ops(p.base) <= JOINED_OPS]  # (factoring a long one costs 30 ms)
     if len(roots) < 2:
         return expr
     factored = {p: sp.factor(sp.together(p.base)) for p in roots}

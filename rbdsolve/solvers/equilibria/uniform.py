@@ -94,7 +94,7 @@ def _angle(f: sp.Expr, p: sp.Symbol) -> bool:
 def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
     """The step that says there is no equilibrium at the parameter values, where ∂V/∂q
     holds no coordinate and a component of it is a nonzero number there (the block is
-    pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −5.285); None otherwise."""
+    pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −0.6342); None otherwise."""
     from rbdsolve.report import steps as st  # (the report's step kinds, for this one note)
 
     if not model.values or any(g.has(*model.q) for g in grad):
@@ -104,7 +104,8 @@ def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
         value = g.xreplace(dict(model.values))
         if value.is_number and value != 0:
             every = ", ".join(unicode_name(x) for x in names)
+            number = f"{float(value):.6g}".replace("-", "−")
             return st.note(f"At the parameter values ∂V/∂{unicode_name(name)} = {to_unicode(model.readable(g))} = "
-                           f"{f'{float(value):.6g}'.replace('-', '−')}, not 0, and the same at every {every}: the loads never balance, so "
-                           "there is no equilibrium.")
+                           f"{number}, not 0, and the same at every {every}: the loads never balance, so there is no "
+                           "equilibrium.")
     return None

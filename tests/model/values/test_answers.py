@@ -72,7 +72,7 @@ def test_the_numeric_block_lists_critical_values_in_the_steps_order() -> None:
     from rbdsolve.solvers.routes.naming import criticals
 
     model = _pendulum().with_values({"m": 2, "l": 3, "g": Fraction(981, 100)})
-    m, l, g = (model.symbols.parameters[n] for n in ("m", "l", "g"))
+    m, g = (model.symbols.parameters[n] for n in ("m", "g"))
     answers = {"critical": [CriticalValue("l", 3 * m * g), CriticalValue("l", m * g)]}  # found larger first
     found = valued(answers, model, "", lambda: tuple(criticals(("critical",), answers["critical"])))
     assert [number_text(n).split(" = ")[0] for n in found.lines] == ["l_c1", "l_c2"]
