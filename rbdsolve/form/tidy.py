@@ -385,6 +385,14 @@ def _cancel(expr: sp.Expr) -> sp.Expr:
     return sp.cancel(sp.together(plain)).xreplace(back)
 
 
+def has_root(expr: sp.Basic, of: tuple = ()) -> bool:
+    """Does a fractional power of symbols occur (√(l² − 2 l r cos θ)), of ``of`` where
+    given (the coordinates): the mark of a form that swells when differentiated or
+    solved in general."""
+    return any(p.exp.is_Rational and not p.exp.is_Integer and (p.base.has(*of) if of else p.base.free_symbols)
+               for p in expr.atoms(sp.Pow))
+
+
 def has_denominator(expr: sp.Expr) -> bool:
     """Does a sum appear in a denominator (a rational function worth cancelling)?"""
     return any(p.exp.is_negative and p.base.is_Add for p in expr.atoms(sp.Pow))

@@ -46,6 +46,7 @@ from rbdsolve.model.values.tree import label, leaves
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.routes.options import Options, RouteChoice
+from rbdsolve.model.values.units import problem_units
 from rbdsolve.model.values.values import numeric
 from rbdsolve.teaching import variants_verify
 from rbdsolve.teaching.variants_verify import MATCHED, VERIFY_ATOL, VERIFY_RTOL, spread
@@ -393,7 +394,7 @@ def _table(problem: Problem, report: ProblemReport, seed: int, draws: list[tuple
     return VariantTable(problem.file, problem.title, problem.statement, tuple(labels), seed,
                         tuple(r.name for r in problem.ranges), problem.values, columns,
                         tuple(draws), answers, notes, tuple(warnings),
-                        units=tuple((name, d.unit) for name, d in problem.dimensions), angles=_angles(problem))
+                        units=tuple(problem_units(problem).items()), angles=_angles(problem))
 
 
 def _angles(problem: Problem) -> frozenset[str]:

@@ -220,8 +220,13 @@ def _valued(expr: sp.Expr, model: Model) -> bool:
 def parameter_units(model: Model) -> dict[str, str]:
     """The SI unit of each parameter whose dimension is known ('' for a pure number); a
     torsional spring's stiffness in N·m/rad."""
-    torsional = torsional_stiffnesses(model.problem)
-    return {name: TORSIONAL if name in torsional else d.unit for name, d in model.problem.dimensions}
+    return problem_units(model.problem)
+
+
+def problem_units(problem) -> dict[str, str]:
+    """``parameter_units`` read from the problem alone (a variants table has no model)."""
+    torsional = torsional_stiffnesses(problem)
+    return {name: TORSIONAL if name in torsional else d.unit for name, d in problem.dimensions}
 
 
 def known_dimensions(model: Model) -> dict[object, Dimension]:

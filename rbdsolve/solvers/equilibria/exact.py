@@ -255,11 +255,12 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
         return sp.nsimplify(angle) if angle.is_rational else angle
     if sin_value.is_zero:
         return sp.Integer(0) if cos_value.is_positive else sp.pi
-    if sp.expand(sin_value**2 - (1 - cos_value**2)) == 0:
+    pythagoras = sin_value**2 - (1 - cos_value**2)  # 0 where s = ±√(1 − c²)
+    if sp.expand(pythagoras) == 0:
         return _acos(sin_value, cos_value)
     if sp.count_ops(angle) < 40:
         return sp.simplify(angle)  # atan(2 P/(g m)): shorter than acos(g m/√(4 P² + g² m²))
-    if sp.cancel(sp.together(sin_value**2 - (1 - cos_value**2))) == 0:
+    if sp.cancel(sp.together(pythagoras)) == 0:
         # s = ±√(1 − c²) once over one denominator (c = −6 g h/(Ω² b² − 4 Ω² h²)): a long atan2 of them,
         # which simplify is not asked to read, is ±acos(c)
         return _acos(sin_value, cos_value)

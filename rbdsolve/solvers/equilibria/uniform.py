@@ -19,6 +19,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
+from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
 
 
@@ -95,8 +96,6 @@ def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
     """The step that says there is no equilibrium at the parameter values, where ∂V/∂q
     holds no coordinate and a component of it is a nonzero number there (the block is
     pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −0.6342); None otherwise."""
-    from rbdsolve.report import steps as st  # (the report's step kinds, for this one note)
-
     if not model.values or any(g.has(*model.q) for g in grad):
         return None
     names = model.coordinate_names()

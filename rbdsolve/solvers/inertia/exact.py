@@ -372,11 +372,18 @@ def _polynomial_direction(v: sp.Matrix) -> sp.Matrix:
     if not v.atoms(sp.Function):
         return v
     table, back = stand_ins(v.atoms(sp.Function))
-    parts = [sp.fraction(sp.cancel(sp.together(x.xreplace(table)))) for x in v]
+    return sp.Matrix([tidy(e.xreplace(back)) for e in _cleared([x.xreplace(table) for x in v])])
+
+
+def _cleared(entries: list[sp.Expr]) -> list[sp.Expr]:
+    """The entries times their common denominator, divided by their common factor: the
+    same direction with no denominator."""
+    parts = [sp.fraction(sp.cancel(sp.together(x))) for x in entries]
     denominator = sp.lcm([den for _, den in parts])
     entries = [sp.cancel(num * denominator / den) for num, den in parts]
-    common = sp.gcd([e for e in entries if e != 0]) if any(e != 0 for e in entries) else 1
-    return sp.Matrix([tidy(sp.cancel(e / common).xreplace(back)) for e in entries])
+    nonzero = [e for e in entries if e != 0]
+    common = sp.gcd(nonzero) if nonzero else 1
+    return [sp.cancel(e / common) for e in entries]
 
 
 def _integral(v: sp.Matrix) -> sp.Matrix:
@@ -388,12 +395,7 @@ def _integral(v: sp.Matrix) -> sp.Matrix:
     v = (v * scale).applyfunc(sp.expand)
     if not v.free_symbols or v.atoms(sp.Function):
         return v
-    parts = [sp.fraction(sp.together(x)) for x in v]
-    denominator = sp.lcm([den for _, den in parts])
-    entries = [sp.expand(sp.cancel(num * denominator / den)) for num, den in parts]
-    nonzero = [e for e in entries if e != 0]
-    common = sp.gcd(nonzero) if nonzero else 1
-    return sp.Matrix([sp.expand(sp.cancel(e / common)) for e in entries])
+    return sp.Matrix([sp.expand(e) for e in _cleared(list(v))])
 
 
 def _first_positive(v: sp.Matrix) -> sp.Matrix:

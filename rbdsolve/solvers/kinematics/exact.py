@@ -13,7 +13,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import has_root, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.options import KinematicsOptions
 from rbdsolve.problem.schema import Question
@@ -38,8 +38,7 @@ def kinematics(opts: KinematicsOptions, model: Model,
     is a root of the lengths whose second derivative, written out in them, took minutes."""
     put = dict(values or {})
     state = {**{k: v.xreplace(put) for k, v in state_values(opts, model).items()}, **put}  # (θ = θ₁, θ₁ = π/2)
-    named = dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)])
-    general = {name: motion(name, model) for name in named}
+    general = {name: motion(name, model) for name in asked_points(opts)}
     at = {RATE_NAMES[sv.order].format(sv.coordinate): value
           for sv, value in zip(opts.at, (model.symbols.scalar(sv.value) for sv in opts.at))}
     points = tuple(_at_state(name, general[name], state, model) for name in opts.points)
@@ -56,16 +55,19 @@ def partial(question, model: Model) -> str | None:
     where two circles meet, 144 operations: its second derivative written out in the
     lengths took the whole budget), so the floating-point route answers, the values put
     in first. A slider-crank's B (11 operations) stays exact."""
-    opts = question.options
-    for name in dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)]):
-        if not model.has_point(name):
+    for name in asked_points(question.options):
+        if not model.has_point(name) or not has_root(r := model.point(name), tuple(model.q)):
             continue
-        r = model.point(name)
-        roots = any(p.exp.is_Rational and not p.exp.is_Integer and p.base.has(*model.q) for p in r.atoms(sp.Pow))
-        if roots and sum(sp.count_ops(x) for x in r) > ROOT_OPS:
-            return (f"point '{name}' is placed by a root of the coordinates ({sum(sp.count_ops(x) for x in r)} "
-                    "operations long), so its exact acceleration would take minutes to write out")
+        size = sum(sp.count_ops(x) for x in r)
+        if size > ROOT_OPS:
+            return (f"point '{name}' is placed by a root of the coordinates ({size} operations long), so its "
+                    "exact acceleration would take minutes to write out")
     return None
+
+
+def asked_points(opts: KinematicsOptions) -> tuple[str, ...]:
+    """The points the question names, each once: those asked and the ends of the distances."""
+    return tuple(dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)]))
 
 
 def state_values(opts: KinematicsOptions, model: Model) -> dict[sp.Symbol, sp.Expr]:

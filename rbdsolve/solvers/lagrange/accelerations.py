@@ -18,7 +18,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.expansion import expanded
-from rbdsolve.form.tidy import cancelled, has_denominator, tidy, tidy_fraction_parts
+from rbdsolve.form.tidy import cancelled, has_denominator, has_root, tidy, tidy_fraction_parts
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.problem.instants import Instant
@@ -80,8 +80,7 @@ def _det(M: sp.Matrix) -> sp.Expr:
 def _radicals(h: tuple[sp.Expr, ...]) -> bool:
     """A square root of the coordinates (a spring's length): the general q̈ then swells
     past use, and tidying it costs seconds."""
-    return any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
-               for x in h for p in x.atoms(sp.Pow))
+    return any(has_root(x) for x in h)
 
 
 def _fraction(num: sp.Expr, den: sp.Expr) -> sp.Expr:

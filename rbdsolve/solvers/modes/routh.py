@@ -30,7 +30,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.form.tidy import collect_in, tidy
+from rbdsolve.form.tidy import collect_in, has_root, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
@@ -104,10 +104,8 @@ def radical_steady_state(question: Question, model: Model) -> bool:
     from steady_motion's quadratic, (r² s − √(r⁴ s² − …))/(…))? Then the check that it is
     steady and det(K − ω²M + iωG)'s roots are nested radicals in the parameters: 30 s and
     more each, where with the values put in first they are roots of numbers."""
-    given = [model.symbols.scalar(e) for _, e in (question.options.about or ())]
-    given += [model.symbols.scalar(e) for _, e in question.options.steady]
-    return any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
-               for x in given for p in x.atoms(sp.Pow))
+    given = [model.symbols.scalar(e) for _, e in (*(question.options.about or ()), *question.options.steady)]
+    return any(has_root(x) for x in given)
 
 
 def _refuse_unknowns(model: Model) -> None:
