@@ -33,14 +33,15 @@ REGISTRY: dict[str, tuple[str, ...]] = {
     "scaled_eigenvalue": ("mu", "kappa", "nu"),
     "frequency": ("omega", "nu", "varpi"),
     "growth_rate": ("gamma", "sigma"),
+    "exponent": ("s", "p", "z"),  # u = X e^(st): a root of the quadratic eigenproblem
     "amplitude": ("a", "X", "Y"),
     "total_mass": ("m", "M", "m_tot"),
     "angular_velocity": ("omega", "omega_b"),  # a body's ω beside a spin rate named omega
     "coordinate_index": ("a", "j", "k"),  # I_a, ∂T/∂q̇_a in the impact's prose
     "particle_mass": ("mu", "m_p"),  # u|i − P/μ: a sticking particle's mass
 }
-INDEXED = frozenset({"eigenvalue", "frequency", "growth_rate", "amplitude"})
-STRICT = frozenset({"amplitude", "eigenvalue"})  # indexed, yet a bare name of the letter moves them too:
+INDEXED = frozenset({"eigenvalue", "frequency", "growth_rate", "amplitude", "exponent"})
+STRICT = frozenset({"amplitude", "eigenvalue", "exponent"})  # indexed, yet a bare name of the letter moves them too:
 # a₁ beside a cart's a; λ is the variable of det(K − λM) = 0 as well
 LAST_RESORT = "'"  # appended to the last candidate until it is free: M_q'
 

@@ -52,3 +52,11 @@ def test_subscripted_names_and_their_rates() -> None:
     assert to_unicode(xB.diff(t)) == "ẋ_B"
     assert to_unicode(theta.diff(t)) == "θ̇₁,f" and to_unicode(theta.diff(t, 2)) == "θ̈₁,f"
     assert to_latex(xB.diff(t)) == "\\dot{x}_{B}"
+
+
+def test_the_exponent_of_u_equals_x_e_st_moves_off_a_spin_named_s() -> None:
+    # A top's spin rate s: the roots of (s²M + sG + K) X = 0 would read as the spin.
+    assert Labels.of(["m", "g"], ["exponent"]).name("exponent") == "s"
+    assert Labels.of(["s", "m"], ["exponent"]).name("exponent") == "p"
+    assert Labels.of(["s_1", "m"], ["exponent"]).name("exponent") == "p"  # s₁ would read as a root
+

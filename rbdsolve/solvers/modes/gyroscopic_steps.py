@@ -21,7 +21,7 @@ from rbdsolve.solvers.conditions.present_conditions import condition_relation, c
 from rbdsolve.solvers.conditions.signs import Inertia, matrix_inertia
 
 KEYS = ("mass_matrix", "stiffness_matrix", "gyroscopic_matrix", "displacement", "frequency", "growth_rate",
-        "amplitude", "eigenvalue")
+        "amplitude", "eigenvalue", "exponent")
 
 
 def gyroscopic_labels(model: Model) -> Labels:
@@ -134,21 +134,22 @@ def numeric_gyroscopic_steps(a, linear: Linear, model: Model) -> tuple[st.Step, 
     """The floating-point route's worked solution: the matrices, the roots s = iω, the
     verdict."""
     labels = gyroscopic_labels(model)
-    M, G, K, w = (labels.text(k) for k in ("mass_matrix", "gyroscopic_matrix", "stiffness_matrix", "frequency"))
+    M, G, K, w, u, X, s = (labels.text(k) for k in ("mass_matrix", "gyroscopic_matrix", "stiffness_matrix",
+                                                    "frequency", "displacement", "amplitude", "exponent"))
     rates = [Relation(sp.Derivative(f, t), sp.Float(a.steady[n], 15))
              for n, f in zip(model.coordinate_names(), model.state.functions()) if n in a.steady]
     floats = lambda rows: sp.ImmutableMatrix([[sp.Float(x, 15) for x in row] for row in rows])  # noqa: E731
     steps = [*linear.steps,
-             st.given("Small motions q = q₀ + u about the steady state",
+             st.given(f"Small motions q = q₀ + {u} about the steady state",
                       configuration(linear.functions, [sp.Float(v, 15) for v in a.about.values()]), *rates),
-             st.equation(f"Linearized equations {M} ü + {G} u̇ + {K} u = 0 at the parameter values (the exact "
-                         "linearization, rounded once):",
+             st.equation(f"Linearized equations {M} {u}\u0308 + {G} {u}\u0307 + {K} {u} = 0 at the parameter values "
+                         "(the exact linearization, rounded once):",
                          Relation(labels.symbol("mass_matrix"), floats(a.M)),
                          Relation(labels.symbol("gyroscopic_matrix"), floats(a.G)),
                          Relation(labels.symbol("stiffness_matrix"), floats(a.K))),
-             st.equation(f"u = X e^(st) gives (s²{M} + s{G} + {K}) X = 0, solved in its first-order form by the QZ "
-                         f"algorithm (scipy.linalg.eig); s = i{w} on the imaginary axis is an oscillation:",
-                         *[Relation(sp.Symbol(f"s_{i}"), sp.Float(re, 15) + sp.Symbol("i") * sp.Float(im, 15))
+             st.equation(f"{u} = {X} e^({s}t) gives ({s}²{M} + {s}{G} + {K}) {X} = 0, solved in its first-order form "
+                         f"by the QZ algorithm (scipy.linalg.eig); {s} = i{w} on the imaginary axis is an oscillation:",
+                         *[Relation(labels.symbol("exponent", i), sp.Float(re, 15) + sp.Symbol("i") * sp.Float(im, 15))
                            for i, (re, im) in enumerate(a.roots, 1)])]
     if a.frequencies:
         steps.append(st.result("Frequencies:", *[Relation(labels.symbol("frequency", i), sp.Float(x, 15))

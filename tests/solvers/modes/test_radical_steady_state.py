@@ -36,3 +36,12 @@ def test_the_numeric_route_with_the_values_put_in_first_gives_the_hand_s_nutatio
     solution = solve_question(question, model, Options(route=RouteChoice.NUMERIC))
     # ω² = U''(θ₀)/A from Routh's effective potential, by hand (the .expected.yaml)
     assert abs(solution.answers.frequencies[0] - 19.8616958953801) < 1e-9
+
+
+def test_the_numeric_route_names_its_exponent_apart_from_a_spin_named_s():
+    # The sleeping top's spin is the parameter s: u = X e^(st) would read as the spin.
+    question, model = _question_and_model("sleeping-top.yaml")
+    solution = solve_question(question, model, Options(route=RouteChoice.NUMERIC))
+    texts = [step.text for step in solution.steps]
+    assert any("e^(pt) gives (p²M + pG_q + K) X = 0" in text for text in texts)
+    assert not any("e^(st)" in text for text in texts)
