@@ -67,6 +67,14 @@ def solve_question(question: Question, model: Model, options: Options = Options(
     return routes.answer(FAMILIES[question.kind], question, model, options)
 
 
+def partial_by_structure(question: Question, model: Model, options: Options = Options()) -> str | None:
+    """Why the exact route would answer ``question`` only in part, read from the structure
+    of its equations (the check ``auto`` runs before choosing the numeric route); None
+    where the exact route answers in full, or the structure cannot say."""
+    family = FAMILIES[question.kind]
+    return None if family.partial is None else routes.partial_reason(family.partial, question, model, options)
+
+
 def solve_problem(model: Model, options: Options = Options()) -> ProblemReport:
     """Every question of a model already built, each within the budget."""
     return routes.report(model.problem, lambda: model, solve_question, options)
@@ -77,4 +85,5 @@ def solve_file(problem: Problem, options: Options = Options()) -> ProblemReport:
     return routes.report(problem, lambda: build_model(problem), solve_question, options)
 
 
-__all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "solve_file", "solve_problem", "solve_question"]
+__all__ = ["FAMILIES", "Family", "Options", "RouteChoice", "partial_by_structure", "solve_file", "solve_problem",
+           "solve_question"]

@@ -194,7 +194,7 @@ def _numeric_first(family: Family, numeric_route: Solver, question: Question, mo
         return None
     if missing_for(model, question, _solved_for(question)):
         return None
-    why = _partial(family.partial, question, model, options)
+    why = partial_reason(family.partial, question, model, options)
     if why is None:
         return None
     solution = _attempt(Route.NUMERIC, numeric_route, question, filled, options, " (numeric route)")
@@ -205,7 +205,7 @@ def _numeric_first(family: Family, numeric_route: Solver, question: Question, mo
     return replace(solution, warnings=(note, *solution.warnings))
 
 
-def _partial(check: Check, question: Question, model: Model, options: Options) -> str | None:
+def partial_reason(check: Check, question: Question, model: Model, options: Options) -> str | None:
     """The family's check, on the model as the question sees it (in its frame), within
     the budget; a check that cannot decide says nothing."""
     try:

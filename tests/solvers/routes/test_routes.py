@@ -35,7 +35,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.problem.schema import QuestionKind
-from rbdsolve.solvers import Options, RouteChoice, solve_file, solve_problem
+from rbdsolve.solvers import Options, RouteChoice, partial_by_structure, solve_file, solve_problem, solve_question
 from rbdsolve.solvers.routes.budget import OutOfTime, available
 
 from conftest import PROBLEMS, SIMPLE_PENDULUM, spin
@@ -73,9 +73,13 @@ def _with_values(problem):
 
 
 def _both(path):
+    """Both routes' solutions, question by question; None for the exact route where the
+    structure says it would answer only in part (``auto`` never runs it there: forced,
+    a nutation about a steady rate with nested radicals spends its whole budget)."""
     problem = load_file(path)
     model = _with_values(problem)
-    exact = solve_problem(model, Options(route=RouteChoice.EXACT))
+    exact = [None if partial_by_structure(q, model) else solve_question(q, model, Options(route=RouteChoice.EXACT))
+             for q in problem.questions]
     numeric = solve_problem(model, Options(route=RouteChoice.NUMERIC))
     return problem, model, exact, numeric
 
@@ -84,8 +88,8 @@ def _both(path):
 def test_numeric_route_agrees_with_exact(path) -> None:
     problem, model, exact, numeric = _both(path)
     compared = 0
-    for question, e, n in zip(problem.questions, exact.solutions, numeric.solutions):
-        if question.kind not in KINDS or e.error is not None:
+    for question, e, n in zip(problem.questions, exact, numeric.solutions):
+        if question.kind not in KINDS or e is None or e.error is not None:
             continue
         if e.values.get("branches") and not any(b["exists_when"] for b in e.values["branches"]):
             # no branch is real at these values (a top spinning below its least spin):
@@ -118,7 +122,7 @@ def test_numeric_route_agrees_with_exact(path) -> None:
         else:
             _same_numbers(sorted(e.values["moments"]), n.answers.moments, n.error_estimate)
         compared += 1
-    assert compared or all(s.error for s in exact.solutions), "nothing compared"
+    assert compared or all(s is None or s.error for s in exact), "nothing compared"
 
 
 def _same_modes(e, n) -> None:
