@@ -302,7 +302,8 @@ class _Loader:
             return self.bodies(bodies, {}), ()
         from rbdsolve.problem.sections.contacts import ContactReader, contact_bodies, hanging_bodies
 
-        read = self.bodies(bodies, contact_bodies(contacts), hanging_bodies(contacts))
+        names = [k.text for k, _ in bodies.entries] if isinstance(bodies, Map) else None
+        read = self.bodies(bodies, contact_bodies(contacts, names), hanging_bodies(contacts))
         return read, ContactReader(self.reading).contacts(contacts, read)
 
     def loads(self, forces: Node | None, couples: Node | None,

@@ -44,8 +44,10 @@ NOT_PLANAR = ("{what} is rolling in 3D, which a planar contact does not describe
               "'rolls_on: {{plane: {{normal: z}}}}', with the body placed by its own 'at' and 'orientation'")
 
 
-def contact_bodies(node: Node | None) -> dict[str, str]:
-    """body name -> contact name, read before the bodies so they know they are placed."""
+def contact_bodies(node: Node | None, names: list[str] | None = None) -> dict[str, str]:
+    """body name -> contact name, read before the bodies so they know they are placed;
+    a name not among the bodies' ``names`` is refused here, at the contact, before the
+    body it was meant for is read as placed by nothing ("body 'wheel' needs 'at'")."""
     if node is None or (isinstance(node, Scalar) and node.null):
         return {}
     table = expect_mapping(node, "contacts: name -> contact")
@@ -55,6 +57,8 @@ def contact_bodies(node: Node | None) -> dict[str, str]:
         if _on_plane(value):  # in 3D: the body is placed by its own 'at' and 'orientation'
             continue
         if isinstance(body, Scalar) and not body.null:
+            if names is not None and body.text not in names:
+                raise InputError(f"no body '{body.text}'{did_you_mean(body.text, names)}", body.loc)
             if body.text in out:
                 raise InputError(f"body '{body.text}' has two contacts ('{out[body.text]}' and '{key.text}'): "
                                  "that over-constrains it (one rolling contact or string per body)", body.loc)
