@@ -53,10 +53,13 @@ def normal(text: str) -> str:
     return "".join(text.split()).translate(_SUBSCRIPTS)
 
 
-def resolve(text: str, labels: Sequence[str], loc: Location, printed: Mapping[str, tuple[str, ...]] = {}) -> str:
+def resolve(text: str, labels: Sequence[str], loc: Location, printed: Mapping[str, tuple[str, ...]] = {},
+            answers: Mapping[str, object] = {}) -> str:
     """The label among ``labels`` that ``text`` addresses (itself, an alias, a path whose
     question is left out, or a name as the solution prints it: ``printed``,
-    teaching/printed.py); an InputError at ``loc`` naming the closest otherwise."""
+    teaching/printed.py); an InputError at ``loc`` naming the closest otherwise. A name
+    that several labels hold with one and the same answer (Ω_c, the critical rate of the
+    equilibria and of the modes) addresses the first of them."""
     address = normal(text)
     if not address:
         raise InputError("expected the name of an answer before '=', found nothing", loc)
@@ -76,6 +79,8 @@ def resolve(text: str, labels: Sequence[str], loc: Location, printed: Mapping[st
         address = found[0]
         found = []
     if len(found) == 1:
+        return found[0]
+    if len(found) > 1 and _one_answer(found, answers):
         return found[0]
     if len(found) > 1:
         raise InputError(f"'{clipped(address)}' could be any of {', '.join(found)}: give the whole path", loc)
@@ -117,3 +122,10 @@ def _hint(address: str, labels: Sequence[str]) -> str:
     kinds = sorted({label.split(".", 1)[0] for label in labels})
     shown = ", ".join(kinds) if kinds else "none"
     return f" (the questions are {shown}; e.g. {labels[0]})" if labels else " (this file has no answers to check)"
+
+
+def _one_answer(found: list[str], answers: Mapping[str, object]) -> bool:
+    """Do the labels all hold the same expression (sympy's structural equality: the
+    same value written the same way, as one solver family's answer repeated in another)?"""
+    held = [answers.get(label) for label in found]
+    return held[0] is not None and all(h == held[0] for h in held[1:])

@@ -145,7 +145,7 @@ def _check_one(entry: Entry, model: Model, answers: dict, unsolved: dict, sample
         return Checked(head, entry.text.strip(), Undecided(f"rbdsolve has no exact answer to '{head}' "
                                                            f"({unsolved[head]})"), "", entry.loc)
     start = Location(entry.loc.file, entry.loc.line, 1)
-    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start, names)
+    address = resolve(_by_place(entry.address, answers, model, start), list(answers), start, names, answers)
     right = answers[address]
     if isinstance(right, Enum):
         return _check_word(entry, address, right)
@@ -336,6 +336,12 @@ def _sampler(model: Model) -> Sampler:
     # drawn inside it: a point outside says nothing of the exam's answer.
     ranged = {model.symbols.parameters[r.name]: (_exact(r.low), _exact(r.high)) for r in model.problem.ranges
               if r.name in model.symbols.parameters}
+    # A parameter the file gives in degrees (a release angle φ₀ = 30 deg) is drawn in the
+    # quadrant of its value: at φ₀ = 4 rad the key's |cos φ₀| is −cos φ₀, and a right
+    # answer was marked wrong at a release no exam means.
+    values = dict(model.values)
+    ranged = {s: _quadrant(values[s]) for n in model.problem.angle_values()
+              if (s := model.symbols.parameters.get(n)) is not None and s in values} | ranged
 
     def draw(symbols, rng: random.Random, nice: bool) -> dict | None:
         wanted = list(dict.fromkeys([*symbols, *assumed]))
@@ -362,6 +368,17 @@ def _nice(s: sp.Symbol, rng: random.Random, span: tuple | None, turning: bool) -
         return sp.Integer(rng.choice(whole)) if whole else (low + high) / 2
     size = sp.Integer(rng.randint(1, 3 if turning else 9))
     return size if s.is_positive or rng.random() < 0.5 else -size
+
+
+def _quadrant(value: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """The open quarter turn (kπ/2, (k + 1)π/2) that holds an angle's value; one centred
+    on it where it is a whole number of quarter turns (0°, 90°)."""
+    quarter = sp.pi / 2
+    k = sp.floor(sp.nsimplify(value) / quarter)
+    low = k * quarter
+    if sp.simplify(value - low) == 0:
+        return value - quarter / 2, value + quarter / 2
+    return low, low + quarter
 
 
 def _exact(value) -> sp.Expr:

@@ -246,3 +246,27 @@ def test_abs_and_its_argument_agree_where_the_assumptions_fix_the_sign() -> None
         args += ["--answer", line]
     body = json.loads(CliRunner().invoke(main, args).stdout)
     assert [outcome(a) for a in body["answers"]] == ["right", "right", "sign"]
+
+
+def test_an_angle_given_in_degrees_is_drawn_in_its_quarter_turn() -> None:
+    """The ladder released at φ₀ = 30° from the floor: N_B = ¾ m g sin φ₀ cos φ₀ just after
+    release (by hand: problems/forces/ladder-angle-from-floor.expected.yaml). Written with
+    |cos φ₀| it is the same answer for every release an exam means (0 < φ₀ < 90°); it was
+    'wrong' at φ₀ = 4 rad. A wrong sin² φ₀ is still wrong."""
+    problem = str(PROBLEMS / "forces" / "ladder-angle-from-floor.yaml")
+    args = ["grade", problem, "--format", "json"]
+    for line in ["reactions.at.B.components.N_B = 3*m*g*sin(phi0)*abs(cos(phi0))/4",
+                 "reactions.at.B.components.N_B = 3*m*g*sin(phi0)**2/4"]:
+        args += ["--answer", line]
+    body = json.loads(CliRunner().invoke(main, args).stdout)
+    assert [a["right"] for a in body["answers"]] == [True, False]
+
+
+def test_a_name_two_answers_hold_with_one_value_is_graded() -> None:
+    """Ω_c = √(g/R) is the critical rate of the bead on a turning hoop's equilibria and of
+    its modes (by hand: g/R − Ω² changes sign there): one answer, not an ambiguous name."""
+    args = ["grade", str(PROBLEMS / "conditions" / "bead-on-turning-hoop.yaml"), "--format", "json",
+            "--answer", "Omega_c = sqrt(g/R)", "--answer", "Omega_c = sqrt(2*g/R)"]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 1, result.output
+    assert [a["right"] for a in json.loads(result.stdout)["answers"]] == [True, False]
