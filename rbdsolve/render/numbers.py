@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, point_text, relation_text
+from rbdsolve.form.printers import NOISE, float_latex, float_text, latex_name, point_text, relation_text, unicode_name
 from rbdsolve.report.numbers import Beside, Note, Number
 from rbdsolve.report.numbers import Path
 from rbdsolve.model.values.tree import label
@@ -62,13 +62,20 @@ def number_text(n: Number) -> str:
 
 
 def tail_text(n: Number) -> str:
-    """' rad/s (period 1.44778 s)': what follows a number's math, its unit and note."""
+    """' rad/s (period 1.44778 s)': what follows a number's math, its unit and note; a
+    tuple's degrees after an equals sign, ' rad = (0°, 180°)', not in a second pair of
+    brackets."""
     note = note_text(n.note)
+    if n.note is not None and n.note.kind is Beside.OPEN:
+        # the unit inside the note: after a sum, "+ 58.86 1/s²" would read as the last term's
+        return f" (in {unit_text(n.unit).strip()}, {note})" if n.unit else f" ({note})"
+    if note.startswith("("):
+        return unit_text(n.unit) + f" = {note}"
     return unit_text(n.unit) + (f" ({note})" if note else "")
 
 
 def note_text(note: Note | None) -> str:
-    """'period 1.44778 s', '60°', '(0°, 180°)', '20 %', 'an energy gained': a note beside
+    """'period 1.44778 s', '60°', '(0°, 180°)', '20 %', 'an energy gained', 'in 1/s², k in m': a note beside
     a number, its numbers to the significant digits asked (form.printers.digits), as the
     number itself is printed."""
     if note is None:
@@ -80,6 +87,11 @@ def note_text(note: Note | None) -> str:
         return f"{shown[0]} %"
     if note.kind is Beside.GAINED:
         return "an energy gained"
+    if note.kind is Beside.OPEN:
+        name, unit = note.open
+        if unit is None:  # its dimension not known: it is read in SI units all the same
+            return f"{unicode_name(name)} in SI units"
+        return f"{unicode_name(name)} in {unit}" if unit else f"{unicode_name(name)} a number"
     degrees = [f"{x}°" for x in shown]
     return degrees[0] if len(degrees) == 1 else "(" + ", ".join(degrees) + ")"
 

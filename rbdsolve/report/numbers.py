@@ -51,6 +51,7 @@ class Beside(Enum):
     DEGREES = "degrees"  # angles in rad, also in degrees
     PERCENT = "percent"  # a fraction as a percentage
     GAINED = "gained"  # an energy lost that is negative, printed as the energy gained
+    OPEN = "open"  # a value with one parameter left without one: the units ('in 1/s², k in m')
 
 
 @dataclass(frozen=True)
@@ -60,6 +61,7 @@ class Note:
 
     kind: Beside
     values: tuple[float, ...] = ()
+    open: tuple[str, str | None] = ()  # Beside.OPEN: the parameter left without a value, its SI unit (None: not known)
 
 
 @dataclass(frozen=True)

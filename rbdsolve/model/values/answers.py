@@ -41,9 +41,22 @@ def valued(answers: object, model: Model, kind: str, named: Callable[[], Iterabl
         return NOTHING
     # the units and the numeric block's lines, loaded where there are numbers
     from rbdsolve.model.values.numbers import numbers as numeric_lines
-    from rbdsolve.model.values.units import answer_units
+    from rbdsolve.model.values.units import answer_units, parameter_units
 
     said = (not_finite(answers, model.values), not_real(found))
     units = answer_units(answers, model, kind)
-    lines = numeric_lines(named(), answers, found.tree, units) if named is not None else ()
+    lines = ()
+    if named is not None:
+        left = _open(model, parameter_units(model))
+        line_units = answer_units(answers, model, kind, frozenset(left)) if left else units
+        lines = numeric_lines(named(), answers, found.tree, line_units, model.values, left)
     return Valued(found.tree, tuple(x for x in said if x), units, lines)
+
+
+def _open(model: Model, units: dict[str, str]) -> dict:
+    """The parameters left without a value (an unknown a question solves for is not one),
+    each with its SI unit ('' for a pure number, None where its dimension is not known)."""
+    given = set(model.values)
+    unknowns = set(getattr(model.problem, "unknowns", ()) or ())
+    return {s: units.get(name) for name, s in model.symbols.parameters.items()
+            if s not in given and name not in unknowns}

@@ -18,18 +18,23 @@ question solved for, has no number, and no dash stands in for one. Beside the va
 from __future__ import annotations
 
 import math
-from typing import Iterable
+from typing import Iterable, Mapping
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from rbdsolve.form.display import Relation
 from rbdsolve.report.numbers import Beside, Meaning, Named, Note, Number, Path
 
 
-def numbers(named: Iterable[Named], answers: object, values: object, units: object) -> tuple[Number, ...]:
-    """The lines of the numeric block, in the order the names come."""
+def numbers(named: Iterable[Named], answers: object, values: object, units: object,
+            given: Mapping[sp.Symbol, sp.Expr] = {}, open_units: Mapping[sp.Symbol, str] = {}) -> tuple[Number, ...]:
+    """The lines of the numeric block, in the order the names come. ``given``: the
+    parameters' values; ``open_units``: the parameters without one, with their SI units
+    (a value that holds one of them alone is written with the others put in:
+    ``_partial``)."""
     return tuple(line for n in named for line in _lines(n, at(answers, n.path), at(values, n.path),
-                                                            at(units, n.path)))
+                                                            at(units, n.path), given, open_units))
 
 
 _MISSING = object()
@@ -52,7 +57,10 @@ def at(tree: object, path: Path) -> object:
     return tree
 
 
-def _lines(n: Named, answer: object, value: object, unit: object) -> list[Number]:
+def _lines(n: Named, answer: object, value: object, unit: object, given: Mapping = {},
+           open_units: Mapping = {}) -> list[Number]:
+    if value is None:
+        return _partial(n, answer, unit, given, open_units)
     if isinstance(value, dict):  # a state: coordinate -> value, printed as its name's tuple
         units = [unit.get(k) for k in value] if isinstance(unit, dict) else _as_list(unit, len(value))
         return _state(n, list(value.values()), units)
@@ -67,6 +75,27 @@ def _lines(n: Named, answer: object, value: object, unit: object) -> list[Number
     if all(isinstance(v, list) and v and all(_number(x) for x in v) for v in value):  # a matrix
         return _matrix(n, value, unit)
     return []
+
+
+def _partial(n: Named, answer: object, unit: object, given: Mapping, open_units: Mapping) -> list[Number]:
+    """A scalar answer that holds, once the values are put in, one parameter left without
+    a value and nothing else (no coordinate, no time): written with the numbers in,
+    λ₁ = 24.525/(100 k² + 1) (in 1/s², k in m) — an exam that leaves k open still wants the
+    rest as numbers. Roots keep their exponent (√, not ^0.5). Only where the value's
+    unit is known ('' for a pure number)."""
+    if not given or not isinstance(answer, sp.Expr) or isinstance(answer, sp.MatrixBase) or answer.is_number:
+        return []
+    if unit is None:  # its dimension not known (g with no value has none): a bare 0.3196 g is not written
+        return []
+    if answer.atoms(AppliedUndef):
+        return []
+    expr = answer.xreplace(dict(given))
+    free = expr.free_symbols
+    if len(free) != 1 or next(iter(free)) not in open_units:
+        return []
+    (p,) = free
+    number = sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float, lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
+    return [_line(n, n.name, number, _text(unit), Note(Beside.OPEN, open=(p.name, open_units[p])))]
 
 
 def _number(value: object) -> bool:

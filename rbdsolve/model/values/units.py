@@ -46,12 +46,14 @@ from rbdsolve.model.values.values import CONDITIONS
 TIME = Dimension(time=Fraction(1))
 
 
-def answer_units(answers: object, model: Model, kind: str = "") -> object:
+def answer_units(answers: object, model: Model, kind: str = "", open_ones: frozenset = frozenset()) -> object:
     """The answers tree of a ``kind`` question with each numeric leaf's SI unit ('rad/s',
     'kg·m²', '' for a pure number, 'rad' for an angle coordinate's value), None where
-    it is unknown or the leaf is not a number at the values. A unit that the answer's
-    meaning fixes comes first (fixed_units.py: N·m/rad for K over angles, N·m for a
-    moment), then a critical value takes its parameter's unit."""
+    it is unknown or the leaf is not a number at the values (``open_ones``: parameters
+    without a value a leaf may hold all the same — the numeric block's lines written
+    with one parameter left open). A unit that the answer's meaning fixes comes first
+    (fixed_units.py: N·m/rad for K over angles, N·m for a moment), then a critical
+    value takes its parameter's unit."""
     dimensions = known_dimensions(model)
     angles = {c.name for c, q in zip(model.problem.coordinates, model.q) if dimensions.get(q) == NUMBER}
     coordinates = {c.name: dimensions.get(q) for c, q in zip(model.problem.coordinates, model.q)}
@@ -65,7 +67,7 @@ def answer_units(answers: object, model: Model, kind: str = "") -> object:
         if isinstance(leaf, float):  # a numeric route's answer
             return numeric_unit(path)
         named = [p for p in path if isinstance(p, str)]
-        if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model):
+        if not isinstance(leaf, sp.Expr) or isinstance(leaf, CONDITIONS) or not _valued(leaf, model, open_ones):
             return None
         fixed = fixed_unit(kind, path, coordinates) or _critical_unit(answers, path, parameters)
         if fixed is not None:
@@ -213,8 +215,8 @@ def _filled(tree: list, shared: str | None) -> list:
             for x in tree]
 
 
-def _valued(expr: sp.Expr, model: Model) -> bool:
-    return expr.free_symbols <= set(model.values) | set(model.q) | {t}
+def _valued(expr: sp.Expr, model: Model, open_ones: frozenset = frozenset()) -> bool:
+    return expr.free_symbols <= set(model.values) | set(model.q) | {t} | open_ones
 
 
 def parameter_units(model: Model) -> dict[str, str]:

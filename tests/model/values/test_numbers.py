@@ -75,3 +75,22 @@ def test_a_state_is_printed_as_its_names_tuple() -> None:
     (line,) = numbers([Named(("at",), sp.Tuple(theta, phi))], {"at": {}}, {"at": {"theta": 0.0, "phi": math.pi}},
                       {"at": {"theta": "rad", "phi": "rad"}})
     assert line.relation.lhs == sp.Tuple(theta, phi) and line.unit == "rad" and note_text(line.note) == "(0°, 180°)"
+    assert tail_text(line) == " rad = (0°, 180°)"  # not "rad ((0°, 180°))"
+
+
+def test_a_value_with_one_parameter_left_open_is_written_with_the_others_put_in() -> None:
+    """ω = √(k/m) with m = 2 kg and k left open: ω = 0.707107 √k (1/√2 = 0.7071067811…),
+    its unit and k's beside it; with two left open, or a coordinate in it, no line."""
+    k, m, x = sp.symbols("k m x", positive=True)
+    omega = sp.Symbol("omega")
+    (line,) = numbers([Named(("w",), omega)], {"w": sp.sqrt(k / m)}, {"w": None}, {"w": "rad/s"},
+                      {m: sp.Integer(2)}, {k: "N/m"})
+    coefficient, root = line.relation.rhs.as_coeff_Mul()
+    assert math.isclose(float(coefficient), 1 / math.sqrt(2), rel_tol=1e-12) and root == sp.sqrt(k)
+    assert line.unit == "rad/s" and note_text(line.note) == "k in N/m"
+    assert tail_text(line) == " (in rad/s, k in N/m)"  # the unit in the note: after a sum it would read as a term's
+    assert numbers([Named(("w",), omega)], {"w": sp.sqrt(k / m)}, {"w": None}, {"w": None}, {}, {k: "N/m", m: "kg"}) == ()
+    assert numbers([Named(("w",), omega)], {"w": sp.sqrt(k * x / m)}, {"w": None}, {"w": "rad/s"},
+                   {m: sp.Integer(2)}, {k: "N/m"}) == ()
+    assert numbers([Named(("w",), omega)], {"w": sp.sqrt(k / m)}, {"w": None}, {"w": None},
+                   {m: sp.Integer(2)}, {k: "N/m"}) == ()  # its unit not known: no line
