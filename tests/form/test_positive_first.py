@@ -32,3 +32,19 @@ def test_an_even_power_of_a_difference_reads_positive_first() -> None:
     r = sp.Symbol("r", positive=True)
     assert to_unicode((r - R) ** 2) == "(R − r)²"
     assert to_latex((r - R) ** 2) == r"\left(R - r\right)^{2}"
+
+
+def test_a_sign_goes_into_a_difference_below_the_line() -> None:
+    b, h = sp.symbols("b h", positive=True)
+    # a critical rate Ω_c² = 6gh/(4h² − b²), not −6gh/(b² − 4h²)
+    assert to_unicode(-6 * g * h / (b**2 - 4 * h**2)) == "6 g h/(4 h² − b²)"
+    assert to_unicode(-6 * g * h / (W**2 * b**2 - 4 * W**2 * h**2)) == "6 g h/(Ω² (4 h² − b²))"
+    assert to_latex(-6 * g * h / (b**2 - 4 * h**2)) == r"\frac{6 g h}{4 h^{2} - b^{2}}"
+    assert to_unicode(-g * R * (a - b)) == "−R g (a − b)"  # above the line: as written
+
+
+def test_two_differences_turn_together_where_the_product_keeps_its_sign() -> None:
+    r, t = sp.symbols("r theta0", positive=True)
+    # a disk released at θ₀ inside a cylinder: θ̇² = 4 g (1 − cos θ₀)/(3 (R − r)) at the bottom
+    assert to_unicode(4 * g * (sp.cos(t) - 1) / (3 * r - 3 * R)) == "4 g (1 − cos(θ₀))/(3 (R − r))"
+    assert to_unicode(g * (r - R)) == "g (r − R)"  # one difference alone keeps its sign as written

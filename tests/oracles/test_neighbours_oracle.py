@@ -35,7 +35,7 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "rod-pushed-sideways", "spool-pulled-at-angle", "spool-radius-of-gyration-pulled", "spool-pulled-off-top",
               "wheel-driven-by-couple",
               # bodies placed by a contact, no placement by hand yet
-              "disk-in-turning-ring", "slab-on-drum-angle",
+              "disk-in-turning-ring", "slab-on-drum-angle", "half-disk-on-incline",
               "spool-radius-of-gyration", "atwood-massive-pulley",
               "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
               "incline-block-massive-pulley", "double-incline-massive-pulley", "stepped-pulley",
@@ -44,13 +44,21 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "inverted-rod-spring-at-point"}
 
 
+# Files whose exact answers are partial by design, and say so (a warning): the oracle finds
+# what they leave out (strict expected failures, as ORACLE_GAPS).
+PARTIAL = {
+    "double-pendulum-hinge-spring": "the hinge spring makes the equilibrium equations transcendental: the exact "
+                                    "route lists the evident roots (0, 0), (π, π) and warns that others may exist; "
+                                    "for a soft spring (c = 0.69 N·m/rad) the oracle finds one at (−2.90, 0.82)",
+}
+
+
 # Files the oracle models but cannot judge yet: its own gaps, not rbdsolve's (each an
 # expected failure, strict, so the entry goes the day the oracle learns it).
 ORACLE_GAPS = {
     "collar-on-horizontal-turning-rod": "the oracle takes the kink of V at r = 0 (the spring at zero length, the edge of "
                                         "the declared range, where ∂V/∂r jumps from k L to −k L) for an equilibrium: its "
                                         "central differences see ∂V/∂r = 0 there",
-    "ladder-released": "the guides' supports are not written for the oracle's reactions (SUPPORTS)",
     "cylinder-precession": "the oracle's steady-spin check reads no 'steady_spins' answer of this form",
     "ball-sticks-to-turntable": "the oracle's impact matrix is singular for a particle sticking to a turning body",
     "pendulum-light-rod-torsion": "the oracle's guide (SUPPORTS) pushes along the light rod only; the rod also carries "
@@ -84,9 +92,10 @@ def test_the_oracle_agrees_with_the_expected_answers(path):
     assert path.stem not in UNMODELLED
     out = judge(sc, _as_results(path))
     bad = [(q.kind, q.status, q.reason) for q in out.questions if q.status != "answered"]
-    if path.stem in ORACLE_GAPS:
-        assert bad, f"{path.stem}: the oracle judges it now: take it out of ORACLE_GAPS"
-        pytest.xfail(ORACLE_GAPS[path.stem])
+    for known in (ORACLE_GAPS, PARTIAL):
+        if path.stem in known:
+            assert bad, f"{path.stem}: the oracle agrees with it now: take it out of its list"
+            pytest.xfail(known[path.stem])
     assert not bad, bad
 
 

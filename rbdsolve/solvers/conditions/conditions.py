@@ -190,11 +190,11 @@ def within(piece: Piece, condition: sp.Basic, model) -> bool | None:
         return True
     held = [x for x in (condition, piece.low, piece.high) if x is not None]
     angles = {p: span for x in held for p, span in angle_parameters(x).items()}
-    values = at_samples(piece, condition, model, 23, angles)
     try:
+        values = at_samples(piece, condition, model, 23, angles)
         seen = {bool(v) for v in values} if values is not None else set()
-    except TypeError:  # not decided at some point (a value that is not real)
-        return None
+    except TypeError:  # not decided at some point (a value that is not real: sympy refuses
+        return None    # to build the comparison itself, or to say whether it holds)
     return seen.pop() if len(seen) == 1 else None
 
 
@@ -289,7 +289,44 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
                 for piece in found.pieces if piece.sign > 0]
         exists = sp.And(exists, sp.Or(*held))
         criticals += found.criticals
-    return Existence(exists, tuple(criticals))
+    exists, implied = _tightest_bounds(exists, model)
+    return Existence(exists, tuple(c for c in criticals if c.value not in implied))
+
+
+_UPPER, _LOWER = (sp.LessThan, sp.StrictLessThan), (sp.GreaterThan, sp.StrictGreaterThan)
+
+
+def _tightest_bounds(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]:
+    """The conjunction with a bound that another on the same side implies left out
+    (Ω ≤ √(k/m) and Ω ≤ √(k (L + d)/(d m)): the second follows from the first, for every
+    value the assumptions allow), and the values of the bounds left out."""
+    parts = list(sp.And.make_args(exists))
+    dropped = set()
+    for side in (_UPPER, _LOWER):
+        bounds = [r for r in parts if isinstance(r, side) and r.lhs.is_Symbol]
+        for a in bounds:
+            for b in bounds:
+                if a is b or a in dropped or b in dropped or a.lhs != b.lhs:
+                    continue
+                order = _compared(a.rhs, b.rhs, model)
+                if order is not None and (order < 0 if side is _UPPER else order > 0):
+                    dropped.add(b)  # a is the tighter bound: b follows from it
+    if not dropped:
+        return exists, frozenset()
+    return sp.And(*[r for r in parts if r not in dropped]), frozenset(r.rhs for r in dropped)
+
+
+def _compared(a: sp.Expr, b: sp.Expr, model) -> int | None:
+    """The sign of a − b for every value the assumptions allow, where it is decided (two
+    roots compared by their squares); None where it is not, or where they are equal."""
+    for x, y in ((a, b), (a**2, b**2)):
+        sign = sign_of(sp.factor(sp.cancel(sp.together(x - y))), model.assumed)
+        if isinstance(sign, int):
+            return sign or None
+        if not (isinstance(sign_of(a, model.assumed), int) and sign_of(a, model.assumed) >= 0
+                and isinstance(sign_of(b, model.assumed), int) and sign_of(b, model.assumed) >= 0):
+            return None
+    return None
 
 
 def constant_sign(f: sp.Expr, model, first: sp.Symbol | None = None) -> int | None:

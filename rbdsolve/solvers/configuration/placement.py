@@ -338,7 +338,16 @@ def numeric_listing(model: Model, roots) -> tuple[list, list]:
             kept.append((r, []))
         else:
             kept[same][1].append(r)
-    return kept, apart
+    return [_nearest_zero_first(r, equivalent) for r, equivalent in kept], apart
+
+
+def _nearest_zero_first(root, equivalent: list) -> tuple:
+    """One configuration's roots with the one nearest q = 0 as it is written (the hanging
+    double pendulum at (0, 0), not at (−10π, −10π) where the search met it first; of two
+    as near, the one with fewer negative coordinates, else the first met), the others in
+    order of their distance from it."""
+    ordered = sorted([root, *equivalent], key=lambda r: (round(sum(x * x for x in r.at), 9), sum(x < 0 for x in r.at)))
+    return ordered[0], ordered[1:]
 
 
 def numeric_same_placement(model: Model, a: Mapping[sp.Symbol, float], b: Mapping[sp.Symbol, float],

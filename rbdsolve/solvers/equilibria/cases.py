@@ -35,7 +35,55 @@ def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
     """What must be ≥ 0 for the solution ``at`` of ∂V/∂q = 0 to be an equilibrium of the
     scene: its radicands, 1 − c² under acos (its values real), and each spring's signed
     length s·u there (the spring on the side it is drawn on: model/energies/spring_length.py)."""
-    return [*real_where(at.values()), *held_sides(model.springs, at)]
+    return [*real_where(at.values()), *held_sides(model.springs, at), *unsquared_where(at, model)]
+
+
+def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
+    """What must be ≥ 0 for a root found through a squared form of ∂V/∂q = 0 to solve
+    the equations themselves. Solving clears the roots of the coordinates by squaring:
+    a bead on a turning rod held to the axis by a spring, k (1 − L/√(d² + s²)) = m Ω²,
+    gives s² = k² L²/(k − m Ω²)² − d², real for Ω past √(k/m) too, where √(d² + s²) =
+    k L/|k − m Ω²| is not k L/(k − m Ω²). Each root whose radicand is a square there is
+    |F|; where ∂V/∂q vanishes with |F| = F only (or −F only), F ≥ 0 (−F ≥ 0) is the
+    condition."""
+    from rbdsolve.solvers.equilibria.exact import gradient  # exact.py reads this module
+
+    grad = gradient(model)
+    if not any(_root_of(p, model.q) for g in grad for p in g.atoms(sp.Pow)):
+        return []
+    residual = [_roots_as_absolute(g.xreplace(dict(at))) for g in grad]
+    out = []
+    for a in sorted({a for r in residual for a in r.atoms(sp.Abs)}, key=sp.default_sort_key):
+        holds = [sign for sign in (1, -1) if all(_vanishes(r.xreplace({a: sign * a.args[0]})) for r in residual)]
+        if len(holds) == 1:
+            out.append(holds[0] * a.args[0])
+    return out
+
+
+def unsquared(expr: sp.Expr, at: Mapping, model: Model) -> sp.Expr:
+    """``expr`` at the root ``at`` with its square roots of squares written as the
+    unsquared equations have them (``unsquared_where``): √(d² + s²) = k L/(k − m Ω²) at
+    the bead's off-centre equilibrium, not a nest of radicals; as it is elsewhere."""
+    signs = unsquared_where(at, model)
+    if not signs:
+        return expr
+    found = _roots_as_absolute(expr)
+    return found.xreplace({a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))})
+
+
+def _root_of(p: sp.Expr, q) -> bool:
+    return p.exp.is_Rational and p.exp.q == 2 and p.base.has(*q)
+
+
+def _roots_as_absolute(expr: sp.Expr) -> sp.Expr:
+    """Each square root √X with X a square F² once factored written |F| (sympy's own
+    √(F²) = |F| for a real F)."""
+    return expr.replace(lambda p: p.is_Pow and p.exp.is_Rational and p.exp.q == 2 and bool(p.base.free_symbols),
+                        lambda p: sp.sqrt(sp.factor(sp.cancel(sp.together(p.base)))) ** (2 * p.exp))
+
+
+def _vanishes(expr: sp.Expr) -> bool:
+    return sp.cancel(sp.together(expr)) == 0
 
 
 def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> Existence | None:
@@ -68,7 +116,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
     if len(cases) == 1:
-        reason = found.reason if decided else "the Hessian of V keeps one sign wherever the equilibrium exists"
+        reason = found.reason if decided else _one_verdict(cases[0].stability, existence.condition)
         return replace(found, stability=found.stability if decided else cases[0].stability,
                        reason=reason), (*criticals, *changed)
     if decided:  # the values decide; the cases say where that holds
@@ -79,6 +127,17 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     at = "its critical value" if len(changed) == 1 else "its critical values"
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
                     reason=f"{what} as {p} passes {at}"), (*criticals, *changed))
+
+
+def _one_verdict(stability: Stability, exists: sp.Basic) -> str:
+    """Why one stability holds on every piece of the parameters' range (a double
+    pendulum's (π, π) with a hinge spring c: a maximum for small c, a saddle past
+    det K = 0, unstable either way)."""
+    where = "for every value of the parameters" if exists is sp.true else "wherever the equilibrium exists"
+    what = {Stability.STABLE: "the Hessian of V is positive definite",
+            Stability.UNSTABLE: "the Hessian of V has a negative eigenvalue"}.get(
+        stability, "the same verdict holds")
+    return f"{what} {where}"
 
 
 def _stability_pieces(H: sp.Matrix, exists: sp.Basic, model: Model,

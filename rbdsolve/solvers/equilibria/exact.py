@@ -34,7 +34,7 @@ from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
-from rbdsolve.solvers.equilibria.cases import existing_where, with_cases
+from rbdsolve.solvers.equilibria.cases import existing_where, unsquared, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
@@ -46,7 +46,8 @@ from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, sign_of,
+from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, roots_where_defined,
+                                             sign_of,
                                               symbolic_sign)
 from rbdsolve.model.values.values import sample
 
@@ -125,7 +126,7 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
         return [{}], []
     if found.why_partial is None:
         if found.shape is Shape.POLYNOMIAL:
-            return _solve_polynomial(found.system), []
+            return _solve_polynomial(found.system, model.assumed), []
         if found.shape is Shape.ALGEBRAIC:
             return _solve_general(equations, unknowns), [
                 "the equilibrium equations are not polynomial in sin, cos and the coordinates; sympy's solve "
@@ -211,8 +212,9 @@ def _order(value: sp.Expr) -> tuple:
     return (number.real if number.imag == 0 else 0.0, sp.default_sort_key(value))
 
 
-def _solve_polynomial(system: PolySystem) -> list[dict]:
-    """Every root of the polynomial form, angles recovered as atan2(s, c)."""
+def _solve_polynomial(system: PolySystem, assumed: Mapping) -> list[dict]:
+    """Every root of the polynomial form, angles recovered as atan2(s, c) (``assumed``:
+    the assumptions' substitutions, which may decide the signs of s and c)."""
     symbols = system.symbols
     if not symbols:
         return [{}]
@@ -223,7 +225,7 @@ def _solve_polynomial(system: PolySystem) -> list[dict]:
             continue
         if len(root) < len(symbols):  # a family of solutions: not isolated points
             raise _continuum()
-        sol = {q: _angle(root[system.sines[q]], root[system.cosines[q]]) for q in system.sines}
+        sol = {q: _angle(root[system.sines[q]], root[system.cosines[q]], assumed) for q in system.sines}
         sol |= {q: tidy(root[q]) for q in system.plain}
         out.append(sol)
     return out
@@ -248,8 +250,9 @@ def _numeric(expr: sp.Expr, model: Model) -> bool:
     return not expr.xreplace(model.values).free_symbols
 
 
-def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
-    """The angle in (−π, π] with this sine and cosine; ±acos(c) when s = ±√(1 − c²)."""
+def _angle(sin_value: sp.Expr, cos_value: sp.Expr, assumed: Mapping) -> sp.Expr:
+    """The angle in (−π, π] with this sine and cosine; ±acos(c) or asin(s) when
+    s = ±√(1 − c²) and the signs allow (``_by_sign``)."""
     angle = sp.atan2(sin_value, cos_value)
     if angle.is_number:
         return sp.nsimplify(angle) if angle.is_rational else angle
@@ -257,18 +260,34 @@ def _angle(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
         return sp.Integer(0) if cos_value.is_positive else sp.pi
     pythagoras = sin_value**2 - (1 - cos_value**2)  # 0 where s = ±√(1 − c²)
     if sp.expand(pythagoras) == 0:
-        return _acos(sin_value, cos_value)
+        return _by_sign(sin_value, cos_value, assumed)
     if sp.count_ops(angle) < 40:
         return sp.simplify(angle)  # atan(2 P/(g m)): shorter than acos(g m/√(4 P² + g² m²))
     if sp.cancel(sp.together(pythagoras)) == 0:
         # s = ±√(1 − c²) once over one denominator (c = −6 g h/(Ω² b² − 4 Ω² h²)): a long atan2 of them,
         # which simplify is not asked to read, is ±acos(c)
-        return _acos(sin_value, cos_value)
+        return _by_sign(sin_value, cos_value, assumed)
     return angle
 
 
-def _acos(sin_value: sp.Expr, cos_value: sp.Expr) -> sp.Expr:
-    return -sp.acos(cos_value) if sin_value.could_extract_minus_sign() else sp.acos(cos_value)
+def _by_sign(sin_value: sp.Expr, cos_value: sp.Expr, assumed: Mapping) -> sp.Expr:
+    """atan2(s, c) where s = ±√(1 − c²): ±acos(c) where the sign of s is decided (by the
+    parameters' signs and the assumptions, each root in it real where the equilibrium
+    exists), asin(s) where c > 0 is, else atan2(s, c) as it is. (The sign as written was
+    taken before: −(3π/4) sin β read as negative gave −acos(c) for an incline tilted the
+    other way, β < 0, where the half-disk rests at +acos(c); it rests at −asin(3π sin β/4)
+    either way.)"""
+    sign = _decided_sign(sin_value, assumed)
+    if sign is not None:
+        return -sp.acos(cos_value) if sign < 0 else sp.acos(cos_value)
+    if _decided_sign(cos_value, assumed) == 1:
+        return sp.asin(sin_value)
+    return sp.atan2(sin_value, cos_value)
+
+
+def _decided_sign(value: sp.Expr, assumed: Mapping) -> int | None:
+    found = sign_of(value.xreplace(roots_where_defined(sp.Matrix([value]))), assumed)
+    return None if isinstance(found, Undecided) else found
 
 
 def _solve_general(equations, unknowns) -> list[dict]:
@@ -322,7 +341,8 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
 
 def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
-    H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(tidy))
+    H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(
+        lambda e: tidy(unsquared(e, at, model))))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
     inertia = decided_inertia(H, model, at)
@@ -346,11 +366,13 @@ def decided_inertia(H: sp.Matrix, model: Model, at: Mapping[sp.Expr, sp.Expr] | 
     assumptions alone: a value given for R drops the substitution R = r + δ (R is a
     number there), which still decides that g m (R − r) > 0 under R > r. At an
     equilibrium ``at``, each factor of its coordinates' denominators is ≠ 0 where it is
-    defined (``nonzero_where_defined``): K = −m Ω² sin² α < 0 at s = g cos α/(Ω² sin² α)."""
+    defined (``nonzero_where_defined``): K = −m Ω² sin² α < 0 at s = g cos α/(Ω² sin² α);
+    and each root in H is real, so positive, where the equilibrium exists
+    (``roots_where_defined``)."""
     found = _inertia(H, model)
-    nonzero = nonzero_where_defined(at.values()) if at else {}
-    if isinstance(found, Undecided) and nonzero:
-        defined = _inertia(H.xreplace(nonzero), model)
+    defined_there = ({**nonzero_where_defined(at.values()), **roots_where_defined(H)}) if at else {}
+    if isinstance(found, Undecided) and defined_there:
+        defined = _inertia(H.xreplace(defined_there), model)
         return found if isinstance(defined, Undecided) else defined
     return found
 
@@ -431,7 +453,21 @@ def listing(model: Model) -> Listing:
             kept.append(Listed(sol, (), singular))
         else:
             kept[same] = replace(kept[same], equivalent=(*kept[same].equivalent, sol))
-    return Listing(tuple(kept), tuple(apart), tuple(warnings))
+    return Listing(tuple(_plain_first(model, k) for k in kept), tuple(apart), tuple(warnings))
+
+
+def _plain_first(model: Model, listed: Listed) -> Listed:
+    """One configuration written with the fewest negative coordinates first ((π, π), the
+    double pendulum upright, and (−π, −π) as the same configuration), where that one is
+    a regular point of the coordinates as the first found is."""
+    negatives = lambda at: sum(sp.sympify(v).could_extract_minus_sign() for v in at.values())  # noqa: E731
+    if listed.singular is not None or not listed.equivalent:
+        return listed
+    plain = min(listed.equivalent, key=negatives)
+    if negatives(plain) >= negatives(listed.at) or singularity(model, plain) is not None:
+        return listed
+    others = tuple(e for e in (listed.at, *listed.equivalent) if e is not plain)
+    return replace(listed, at=plain, equivalent=others)
 
 
 def classify_listed(model: Model, listed: Listed) -> Equilibrium:

@@ -4,6 +4,8 @@ route's search and the eigenvalues of K at each root found."""
 
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 
 from rbdsolve.form.arrange import configuration, scaled_matrix
@@ -99,7 +101,28 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, .
             steps.append(st.accuracy(f"Equilibrium {i} is within the error bound {eq.bound:.2g} of a simple exact "
                                      f"value: {exact}."))
         if eq.equivalent:
-            steps.append(st.note("The same configuration is also written",
-                                 *[configuration(model.state.functions(), [sp.Float(v, 15) for v in e.values()])
-                                   for e in eq.equivalent]))
+            steps.append(_written_also(eq, model))
     return tuple(steps) + singular_steps(a.singular_points, model)
+
+
+def _written_also(eq, model: Model) -> st.Step:
+    """The other coordinate values of one configuration the search met: listed, or, where
+    they are whole turns of every angle together (a double pendulum whose hinge spring
+    holds θ₂ − θ₁: (θ₁, θ₂) + 2πk (1, 1)), said in one line with the turns' range."""
+    at = list(eq.at.values())
+    turns = [[(float(x) - float(a)) / (2 * math.pi) for x, a in zip(e.values(), at)] for e in eq.equivalent]
+    whole = all(abs(k - round(k)) < 1e-6 for ks in turns for k in ks)
+    counts = sorted({round(ks[0]) for ks in turns})
+    joint = whole and all(len({round(k) for k in ks}) == 1 for ks in turns)
+    if joint and len(turns) > 2:
+        names = ", ".join(unicode_name(n) for n in eq.at)
+        return st.note(f"The same configuration is also written with whole turns added to every angle, "
+                       f"({names}) + 2πk for k = {_signed(counts[0])}, …, {_signed(counts[-1])} (k ≠ 0; {len(turns)} more roots in "
+                       "the search box)")
+    return st.note("The same configuration is also written",
+                   *[configuration(model.state.functions(), [sp.Float(v, 15) for v in e.values()])
+                     for e in eq.equivalent])
+
+
+def _signed(k: int) -> str:
+    return f"−{-k}" if k < 0 else str(k)

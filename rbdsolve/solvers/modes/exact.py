@@ -43,6 +43,7 @@ from rbdsolve.solvers.modes import gyroscopic_terms
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
+from rbdsolve.solvers.equilibria.cases import unsquared
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.conditions.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import (CERTIFIED_DEGREE, EachModesAnswers, Form, ModesAnswers, Motion, Skipped,
@@ -166,7 +167,8 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
     the cases are written in where they can be (a question's ``for:``)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
-    K = sp.ImmutableMatrix(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)))
+    K = sp.ImmutableMatrix(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)).applyfunc(
+        lambda e: unsquared(e, at, model)))  # √(d² + s²) at a root found by squaring: as the equations have it
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
     if singular:
         raise UnsolvedError(singular)
