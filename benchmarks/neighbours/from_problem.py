@@ -88,7 +88,11 @@ SUPPORTS = {  # the contacts' supports, for reactions
     "disk-leaves-drum-spring": [Support("C", "disk", "R*[-sin(theta), cos(theta)]", "rolling",
                                         normal="[-sin(theta), cos(theta)]")],
     "rod-pivot-released": [Support("O", "rod", "O", "pivot")],
+    "rod-hinge-force-at-the-bottom": [Support("O", "rod", "O", "pivot")],
 }
+SUPPORTS.update({name: [Support("A", "ladder", "A", "guide", normal="[0, 1]"),  # the floor pushes up,
+                        Support("B", "ladder", "B", "guide", normal="[1, 0]")]   # the wall at x = 0 to the right
+                 for name in ("ladder-released", "ladder-angle-from-floor")})
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
                  for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
 SUPPORTS["plate-struck-by-ball"] = [Support("O", "plate", "[0, 0]", "pivot")]

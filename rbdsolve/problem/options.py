@@ -51,6 +51,7 @@ class ReactionsOptions:
     supports: tuple[Support, ...]
     instant: Instant | None  # None: the forces as functions of the state
     loc: Location
+    to: tuple[tuple[str, Expr], ...] = ()  # from rest: the configuration the forces are asked at too
 
 
 @dataclass(frozen=True)

@@ -3,6 +3,7 @@
 problem/sections/states.py, as ``eom``).
 
     reactions: {forces: [O], from_rest: {theta: 0}}        # the force at O on the only body
+    reactions: {forces: [O], from_rest: {theta: 0}, to: {theta: pi}}   # and where it gets to
     reactions: {forces: [{at: J, on: rod2, by: rod1}, C]}  # a joint; contact C (its body)
 
 Whether a point really holds the body (a pivot, a smooth guide, a joint) needs the
@@ -61,7 +62,13 @@ def reactions_options(reading: Reading, opts: Map | None, key, bodies: tuple[Bod
             raise InputError("'forces' lists at least one point or contact", forces.loc)
         supports = tuple(_Supports(reading, bodies, contacts).support(item) for item in items)
     _no_twice(supports)
-    return ReactionsOptions(supports, instant(reading, opts), key.loc)
+    start = instant(reading, opts)
+    to = opts.get("to") if opts else None
+    if to is not None and (start is None or not start.from_rest):
+        raise InputError("'to' asks for the forces where the motion released from rest gets to: give "
+                         "'from_rest: {q: VALUE}' with it", to.loc)
+    configuration = reading.coordinate_values(to, "the configuration 'to'", complete=True) if to is not None else ()
+    return ReactionsOptions(supports, start, key.loc, configuration)
 
 
 def _contact(c: Contact, loc) -> Support:

@@ -44,7 +44,7 @@ OPTIONS = {
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for", "for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
     QuestionKind.KINEMATICS: ("points", "at", "distance"),
-    QuestionKind.REACTIONS: ("forces", "at", "from_rest"),
+    QuestionKind.REACTIONS: ("forces", "at", "from_rest", "to"),
     QuestionKind.ENERGY: ("from_rest", "at", "to", "points"),
 }
 

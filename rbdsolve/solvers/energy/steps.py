@@ -1,5 +1,5 @@
 """The worked solution of an energy question, as an exam writes it: the start state, the
-integral ("T + V is constant: T + V = V(q₀)"), q̇² solved from it, each point's v², and
+integral ("T + V = h is constant, h = V(q₀)"), q̇² solved from it, each point's v², and
 the configuration asked: q̇² there and the rate |q̇|, each point's speed."""
 
 from __future__ import annotations

@@ -75,12 +75,13 @@ def energy_integral(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyInte
 
 
 def energy_step(model: Model, e: EnergyIntegral, from_rest: bool):
-    """The integral as the exam says it: "T + V is constant: T + V = V(q₀)", then q̇²."""
+    """The integral as the exam says it: "T + V = h is constant, h = V(q₀)", then q̇² (h is the
+    name the numbers block gives its value)."""
     if e.plain:
         which = "gravity, springs, the applied loads (V_F)" if model.loads else "gravity, springs"
         said = (f"Energy is conserved (the forces that do work have a potential: {which}; the "
-                "supports do none): T + V is constant, " + ("T + V = V(q₀) at release from rest" if from_rest
-                                          else "T + V = its value at the state given"))
+                "supports do none): T + V = h is constant, " + ("h = V(q₀) at release from rest" if from_rest
+                                              else "h = its value at the state given"))
     else:
         said = ("The Lagrangian holds no t, so Jacobi's integral h = T₂ − T₀ + V (T₂, T₀ the parts of T of "
                 "degree 2 and 0 in the rates) is constant, h = its value at the start")

@@ -38,6 +38,9 @@ class ReactionsAnswers:
     critical: tuple[CriticalValue, ...] = ()  # the critical values these conditions use
     # with every parameter given a value: N or T -> where it first reaches 0 along the motion
     first_zero: dict[str, FirstZero] | None = None
+    to: dict[str, sp.Expr] | None = None  # the configuration asked ('to'), where the motion gets to
+    there: dict[str, Reaction] | None = None  # the forces there (None where the motion does not get there)
+    there_reached: bool | None = None  # q̇² ≥ 0 there: decided (True, False), or None where the parameters decide
 
 
 @dataclass(frozen=True)

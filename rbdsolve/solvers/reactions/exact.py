@@ -10,7 +10,8 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -24,6 +25,7 @@ from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, clean_fraction, state_values
 from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 from rbdsolve.solvers.lagrange.energy_integral import energy_step
 from rbdsolve.solvers.routes.needed import missing_values
 from rbdsolve.solvers.routes.options import Options
@@ -53,17 +55,19 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     criticals: list = []
     warnings: tuple[str, ...] = ()
     if question.options.instant is not None:
-        answers, more, criticals, warnings = _at_the_state(model, question.options.instant, supports, forces, answers)
+        to = {n: model.symbols.scalar(v) for n, v in question.options.to} or None
+        answers, more, criticals, warnings = _at_the_state(model, question.options.instant, supports, forces, answers,
+                                                           to)
         steps += more
     answers = _replace(answers, reactions={k: _timeless(r, model) for k, r in answers.reactions.items()},
                        critical=critical_values(criticals))
     return Solution("reactions", Route.EXACT, answers, tuple(steps), warnings=warnings)
 
 
-def _at_the_state(model: Model, instant, supports, forces, answers):
+def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | None):
     """The forces at the state, when each support holds there; released from rest, along
-    the motion too. Returns the answers, the steps, the critical values used and the
-    warnings."""
+    the motion too (and where it gets to, ``to``). Returns the answers, the steps, the
+    critical values used and the warnings."""
     table = state_values(model, instant)
     there = {x: at_state(v, table) for x, v in forces.items()}  # once, not once per support
     at = {s.name: _reaction(s, there, table) for s in supports}
@@ -74,7 +78,7 @@ def _at_the_state(model: Model, instant, supports, forces, answers):
     steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
     warnings: tuple[str, ...] = ()
     if instant.from_rest:
-        answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers)
+        answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers, to)
         steps, criticals = steps + more, criticals + found
     return answers, steps, criticals, warnings
 
@@ -111,7 +115,24 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
     name = model.coordinate_names()[0]
     found = {str(c.symbol): first_zero(values[c.symbol], rate_squared, q, table[q], name, dict(model.values))
              for s in supports for c in s.components if c.one_sided}
-    return {k: v for k, v in found.items() if v is not None} or None
+    found = {k: v for k, v in found.items() if v is not None}
+    return _before_first_loss(found, name, float(table[q].xreplace(dict(model.values)))) or None
+
+
+def _before_first_loss(found: dict[str, FirstZero], name: str, start: float) -> dict[str, FirstZero]:
+    """The motion assumed ends where the first contact is lost (a ladder's top leaving
+    the wall): what another push would meet past that place (its own loss, the turning
+    back) is left out."""
+    losses = [abs(z.lost_at[name] - start) for z in found.values() if z.lost_at]
+    if not losses:
+        return found
+    first = min(losses)
+
+    def reached(z: FirstZero) -> bool:
+        where = z.lost_at or z.turns_at
+        return where is None or abs(where[name] - start) <= first
+
+    return {k: z for k, z in found.items() if reached(z)}
 
 
 def _an_angle(model: Model) -> bool:
@@ -125,16 +146,20 @@ def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
     return replace(answers, **changes)
 
 
-def _along_the_motion(model: Model, supports, forces, table, answers):
-    """q̇²(q) by energy, the forces along the motion, their zeros and the least μ; and a
-    warning for each push or tension whose zeros have no closed form (not listed, and not
-    said to hold throughout)."""
+def _along_the_motion(model: Model, supports, forces, table, answers, to: dict | None):
+    """q̇²(q) by energy, the forces along the motion, their zeros and the least μ, and
+    the forces where the motion gets to (``to``); a warning for each push or tension
+    whose zeros have no closed form (not listed, and not said to hold throughout)."""
     e = energy(model, table)
     if e is None:
+        if to:
+            raise UnsolvedError("'to' needs q̇ where the motion gets to, from the energy integral, and there is "
+                                "none here (more than one coordinate, or a force without a potential)")
         return answers, [rs.no_energy_note(model)], [], ()
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
-        return answers, [energy_step(model, e, True)], [], ()
+        said = ("the forces along the motion are too long to write out, so none is given where it gets to ('to')",)
+        return answers, [energy_step(model, e, True)], [], said if to else ()
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
     found = {str(c.symbol): zeros(values[c.symbol], model) for s in supports for c in s.components if c.one_sided}
@@ -156,4 +181,41 @@ def _along_the_motion(model: Model, supports, forces, table, answers):
     warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
                      f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
                      "reached, if it is, is not given" for k in unsolved)
+    if to:
+        answers, more = _there(model, supports, values, e.rate_squared, to[name], answers)
+        passed = _lost_before(model, answers.first_zero, table[model.q[0]], to[name])
+        steps, warnings = steps + more, warnings + passed
     return answers, steps, criticals, warnings
+
+
+def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, to: sp.Expr, answers):
+    """The forces where the motion released from rest gets to, q = ``to``: the forces
+    along the motion there, with q̇² there; where q̇² < 0 there, the motion does not get
+    there and no force is given (``there_reached`` false; None where the parameters
+    decide it, the forces then given for where it does). With every value given, a
+    contact lost on the way (``first_zero``) is said: past it the forces are not the
+    motion's."""
+    table = {model.q[0]: to}
+    w2 = at_state(rate_squared, table)
+    sign = sign_of(w2, model.decided_by)
+    reached = None if isinstance(sign, Undecided) else sign != -1
+    there = None if reached is False else {
+        s.name: _reaction(s, {c.symbol: tidy(at_state(values[c.symbol], table)) for c in s.components}, table)
+        for s in supports}
+    answers = _replace(answers, to={model.coordinate_names()[0]: to}, there=there and
+                       {k: _timeless(r, model) for k, r in there.items()}, there_reached=reached)
+    return answers, rs.there_steps(model, to, w2, supports, there)
+
+
+def _lost_before(model: Model, first: dict | None, start: sp.Expr, to: sp.Expr) -> tuple[str, ...]:
+    """A warning for each push the motion loses (at the values: ``first``, its
+    first_zero) on its way from ``start`` to ``to``."""
+    name = model.coordinate_names()[0]
+    try:
+        q0, end = (float(x.xreplace(dict(model.values))) for x in (start, to))
+    except (TypeError, ValueError):
+        return ()
+    return tuple(f"{k} = 0 at {unicode_name(name)} = {z.lost_at[name]:.6g}, before the motion gets to "
+                 f"{unicode_name(name)} = {end:.6g}: past it that contact is lost, so the forces given there are not "
+                 "the motion's" for k, z in (first or {}).items()
+                 if z.lost_at and min(q0, end) < z.lost_at[name] < max(q0, end))

@@ -1,6 +1,6 @@
 """The names the reactions' worked solution prints its answers by (report/numbers.py):
 each q̈, q̇² from the energy integral, each reaction's components at the state asked
-(R_Ox, N_C, F_C, T_S, M_O), or as functions of the state where those hold no
+(R_Ox, N_C, F_C, T_S, M_O) and where the motion gets to (`to`), or as functions of the state where those hold no
 coordinate (an Atwood machine's tensions), the least friction coefficients μ_C and the critical values."""
 
 from __future__ import annotations
@@ -25,6 +25,8 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
             continue  # the state asked names it already; a line is written only where its numbers are known
         out += [Named(("reactions", name, "components", c), sp.Symbol(c), "Forces") for c in r.components]
     out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
+    out += [Named(("there", name, "components", c), sp.Symbol(c), "Where the motion gets to")
+            for name, r in (getattr(answers, "there", None) or {}).items() for c in r.components]
     out += _first_zeros(getattr(answers, "first_zero", None) or {}, model)
     if hasattr(answers, "residual"):
         out.append(Named(("residual",), sp.Symbol("residual"), accuracy=True))

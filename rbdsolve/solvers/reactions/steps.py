@@ -89,6 +89,18 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
     return [state_step(model, instant), st.result(f"{when}, the forces are:", *math)]
 
 
+def there_steps(model: Model, to: sp.Expr, w2: sp.Expr, supports: tuple[Held, ...], there: dict | None
+                ) -> list[st.Step]:
+    """Where the motion gets to: q̇² there, then the forces along the motion there (or
+    that it does not get there, q̇² < 0)."""
+    q, qd = model.to_time(model.q[0]), model.to_time(model.qd[0])
+    steps = [st.given("Where the motion gets to:", Relation(q, to), Relation(qd**2, model.to_time(w2)))]
+    if there is None:
+        return steps + [st.note("There q̇² < 0: the motion from rest does not get there, so no force is given.")]
+    math = [Relation(sp.Symbol(k), model.to_time(v)) for s in supports for k, v in there[s.name].components.items()]
+    return steps + [st.result("There, the forces are:", *math)]
+
+
 def holds_steps(model: Model, supports: tuple[Held, ...], limits: dict, criticals) -> list[st.Step]:
     """Each support holds while its push or tension is ≥ 0 (and rolls while |F| ≤ μ N):
     said where that is a condition, with the critical values by name."""

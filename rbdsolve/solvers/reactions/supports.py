@@ -219,14 +219,21 @@ def _rank(columns: list[sp.Matrix], model: Model) -> int:
 
 def _normal(model: Model, support: Support, column: sp.Matrix) -> sp.Matrix:
     """The unit normal e_z × c/|c|, turned to the given ``normal`` or against gravity at
-    the reference configuration (q = 0)."""
+    the reference configuration (q = 0).
+
+    Where e_z × c is parallel to that direction everywhere (a floor, a wall, an incline
+    given its normal), the normal is that direction itself: e_z × c/|c| would hold the
+    sign of c (a foot at L (cos φ, 0) slides along −sin φ e_x), which flips where the
+    guide's velocity vanishes — at q = 0 for an angle measured from the floor, where no
+    sign can be read off."""
+    toward = (model.symbols.vector(support.normal) if support.normal is not None
+              else -model.gravity if model.gravity is not None else None)
+    across = _Z.cross(column)
+    if toward is not None and simplifies_to_zero(across.cross(toward).dot(_Z)):
+        return _unit(toward)
     c = column.applyfunc(sp.simplify)
     n = (_Z.cross(c) / sp.sqrt(sp.simplify(c.dot(c)))).applyfunc(lambda x: sp.simplify(sp.factor_terms(x)))
-    if support.normal is not None:
-        toward = model.symbols.vector(support.normal)
-    elif model.gravity is not None:
-        toward = -model.gravity
-    else:
+    if toward is None:
         return n
     at_zero = {q: 0 for q in model.q}
     sign = sp.sign(sp.simplify(n.dot(toward).xreplace(at_zero)).xreplace(model.decided_by or {}))

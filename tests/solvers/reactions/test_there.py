@@ -1,0 +1,54 @@
+"""The forces where the motion released from rest gets to (``reactions: {…, to: …}``):
+a rod hinged at one end, from rest at φ₀, asked at φ. By hand (I_O = m l²/3): φ̇² =
+3 g (cos φ − cos φ₀)/l, and R_Oy = (m g/4)(1 + 9 cos² φ) − (3/2) m g cos φ₀ cos φ …
+at the vertical from the horizontal, 5 m g/2; a motion released at 30° never gets to
+60° (φ̇² < 0 there), so no force is given there."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from rbdsolve.cli import main
+
+ROD = """\
+parameters: {m: mass, l: length, g: gravity}
+coordinates: [phi]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  G: l/2 * [sin(phi), -cos(phi)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: phi, axis: y}
+questions:
+  - reactions: {forces: [O], %s}
+"""
+
+
+def _result(tmp_path, question: str) -> dict:
+    path = tmp_path / "rod.yaml"
+    path.write_text(ROD % question, encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    body = json.loads(result.stdout) if result.stdout.startswith("{") else {}
+    return result, (body.get("results") or [None])[0]
+
+
+def test_from_the_horizontal_the_hinge_carries_five_halves_of_the_weight_at_the_vertical(tmp_path) -> None:
+    _, found = _result(tmp_path, "from_rest: {phi: pi/2}, to: {phi: 0}")
+    assert found["answers"]["there"]["O"]["components"] == {"R_Ox": "0", "R_Oy": "5*g*m/2"}
+    assert found["answers"]["there_reached"] is True
+
+
+def test_a_configuration_the_motion_does_not_get_to_has_no_forces(tmp_path) -> None:
+    # from rest at 30°: φ̇² = 3 g (cos φ − cos φ₀)/l < 0 at 60°
+    _, found = _result(tmp_path, "from_rest: {phi: pi/6}, to: {phi: pi/3}")
+    assert found["ok"] and found["answers"]["there"] is None and found["answers"]["there_reached"] is False
+    assert any("does not get there" in s["text"] for s in found["steps"])
+
+
+@pytest.mark.parametrize("question", ["to: {phi: 0}", "at: {phi: 0, dot(phi): 1}, to: {phi: 0}"])
+def test_to_without_a_release_from_rest_is_bad_input(tmp_path, question) -> None:
+    result, _ = _result(tmp_path, question)
+    assert result.exit_code == 2 and "give 'from_rest: {q: VALUE}' with it" in result.output, result.output
