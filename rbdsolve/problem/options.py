@@ -73,6 +73,8 @@ class KinematicsOptions:
     points: tuple[str, ...]  # the points whose position, velocity and acceleration are asked
     at: tuple[StateValue, ...]  # the state; what it leaves out stays symbolic
     distances: tuple[tuple[str, str], ...] = ()  # pairs of points: |r_B − r_A| and its rate
+    bodies: tuple[str, ...] = ()  # bodies whose angular velocity and acceleration are asked
+    lines: tuple[tuple[str, str], ...] = ()  # lines through two points: their rate and acceleration of turning
 
 
 @dataclass(frozen=True)

@@ -82,6 +82,10 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return _pair(key, indices, list(coordinates.values()))
     if key == "growth_rates":  # γ = √(−λ): a rate of growth, e^(γt), not of turning
         return "1/s"
+    if kind == "kinematics" and named[:1] == ["bodies"] and key in ("angular_velocity", "angular_acceleration"):
+        return "rad/s" if key == "angular_velocity" else "rad/s²"
+    if kind == "kinematics" and named[:1] == ["lines"] and key in ("rate", "acceleration"):
+        return "rad/s" if key == "rate" else "rad/s²"
     if kind == "modes" and key == "eigenvalues":
         return "1/s²"
     if kind == "modes" and key == "frequencies":  # ω = √λ, whatever units the parameters were given in

@@ -43,7 +43,7 @@ OPTIONS = {
     QuestionKind.STEADY_SPIN: ("body", "precession"),
     QuestionKind.STEADY_MOTION: ("body", "triad", "about", "rolling_at", "reactions", "solve_for", "for"),
     QuestionKind.IMPACT: ("at", "before", "impulses", "collisions", "points", "centre_of_percussion"),
-    QuestionKind.KINEMATICS: ("points", "at", "distance"),
+    QuestionKind.KINEMATICS: ("points", "at", "distance", "bodies", "lines"),
     QuestionKind.REACTIONS: ("forces", "at", "from_rest", "to"),
     QuestionKind.ENERGY: ("from_rest", "at", "to", "points"),
 }
@@ -140,7 +140,7 @@ class QuestionReader:
         if kind is QuestionKind.KINEMATICS:
             from rbdsolve.problem.sections.kinematics import KinematicsReader
 
-            return KinematicsReader(self.reading, self.points).options(opts, key)
+            return KinematicsReader(self.reading, self.points, self.bodies).options(opts, key)
         from rbdsolve.problem.sections.forces import energy_options, reactions_options
 
         if kind is QuestionKind.REACTIONS:

@@ -32,10 +32,32 @@ class Distance:
 
 
 @dataclass(frozen=True)
+class BodyMotion:
+    """A body at the state: its angular velocity ω and angular acceleration α = dω/dt
+    (scene axes; a planar body's (0, 0, α̇) and (0, 0, α̈), α its angle)."""
+
+    body: str
+    angular_velocity: Vector
+    angular_acceleration: Vector
+
+
+@dataclass(frozen=True)
+class LineTurning:
+    """The line from A to B in the plane: its rate of turning φ̇ and its angular
+    acceleration φ̈ (about z, counterclockwise), φ the angle of r_B − r_A."""
+
+    through: tuple[str, str]
+    rate: sp.Expr
+    acceleration: sp.Expr
+
+
+@dataclass(frozen=True)
 class KinematicsAnswers:
     at: Mapping[str, sp.Expr]  # the state used: 'theta', 'dot(theta)', 'ddot(theta)' -> value
     points: tuple[PointMotion, ...]
     distances: tuple[Distance, ...]
+    bodies: tuple[BodyMotion, ...] = ()
+    lines: tuple[LineTurning, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -55,7 +77,23 @@ class NumericDistance:
 
 
 @dataclass(frozen=True)
+class NumericBodyMotion:
+    body: str
+    angular_velocity: Floats
+    angular_acceleration: Floats
+
+
+@dataclass(frozen=True)
+class NumericLineTurning:
+    through: tuple[str, str]
+    rate: float | None
+    acceleration: float | None
+
+
+@dataclass(frozen=True)
 class NumericKinematicsAnswers:
     at: Mapping[str, float | None]
     points: tuple[NumericPointMotion, ...]
     distances: tuple[NumericDistance, ...]
+    bodies: tuple[NumericBodyMotion, ...] = ()
+    lines: tuple[NumericLineTurning, ...] = ()

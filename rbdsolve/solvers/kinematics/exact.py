@@ -4,6 +4,10 @@
 
 then the state of the question put in (q, q̇, q̈ as given; the rest stays symbolic).
 A distance between two points is d = |r_B − r_A| = √(Δr·Δr), its rate ḋ = (Δr·Δv)/d.
+A body's angular velocity is ω = α̇ e_z for a planar body turned by its angle α(q, t)
+(in 3D, from its rotation: model/build.py), its angular acceleration dω/dt. The line
+through A and B turns at φ̇ = (Δr × Δv)_z/(Δr·Δr) (φ the angle of Δr = r_B − r_A), and
+φ̈ = [(Δr × Δa)_z (Δr·Δr) − 2 (Δr × Δv)_z (Δr·Δv)]/(Δr·Δr)².
 """
 
 from __future__ import annotations
@@ -14,11 +18,12 @@ import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import has_root, tidy
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
 from rbdsolve.problem.options import KinematicsOptions
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.kinematics.answers import Distance, KinematicsAnswers, PointMotion
+from rbdsolve.solvers.kinematics.answers import BodyMotion, Distance, KinematicsAnswers, LineTurning, PointMotion
 from rbdsolve.solvers.kinematics.steps import exact_steps
 from rbdsolve.solvers.routes.options import Options
 
@@ -43,7 +48,9 @@ def kinematics(opts: KinematicsOptions, model: Model,
           for sv, value in zip(opts.at, (model.symbols.scalar(sv.value) for sv in opts.at))}
     points = tuple(_at_state(name, general[name], state, model) for name in opts.points)
     distances = tuple(_distance(a, b, general, state, model) for a, b in opts.distances)
-    return KinematicsAnswers(at, points, distances), general
+    bodies = tuple(_turning(name, state, model) for name in opts.bodies)
+    lines = tuple(_line(a, b, general, state, model) for a, b in opts.lines)
+    return KinematicsAnswers(at, points, distances, bodies, lines), general
 
 
 ROOT_OPS = 40  # a point past this size with a root of the coordinates: its exact acceleration takes minutes
@@ -66,8 +73,9 @@ def partial(question, model: Model) -> str | None:
 
 
 def asked_points(opts: KinematicsOptions) -> tuple[str, ...]:
-    """The points the question names, each once: those asked and the ends of the distances."""
-    return tuple(dict.fromkeys([*opts.points, *(p for pair in opts.distances for p in pair)]))
+    """The points the question names, each once: those asked, the ends of the distances
+    and the points the lines go through."""
+    return tuple(dict.fromkeys([*opts.points, *(p for pair in (*opts.distances, *opts.lines) for p in pair)]))
 
 
 def state_values(opts: KinematicsOptions, model: Model) -> dict[sp.Symbol, sp.Expr]:
@@ -100,6 +108,26 @@ def _at_state(name: str, rva, state: dict, model: Model) -> PointMotion:
     r, v, a = rva
     return PointMotion(name, _vector(r, state, model), _vector(v, state, model), _vector(a, state, model),
                        model.to_time(tidy(_norm(v, state))))
+
+
+def _turning(name: str, state: dict, model: Model) -> BodyMotion:
+    """ω and α = dω/dt of a body, at the state."""
+    w = next(b for b in model.bodies if b.name == name).angular_velocity(model.state)
+    return BodyMotion(name, _vector(w, state, model), _vector(model.state.d_dt(w), state, model))
+
+
+def _line(a: str, b: str, general: dict, state: dict, model: Model) -> LineTurning:
+    """φ̇ and φ̈ of the line from A to B (the module's formulas), at the state; in the
+    x-y plane only (a line in space turns about no one axis)."""
+    if not all(simplifies_to_zero(general[p][0][2]) for p in (a, b)):
+        raise UnsolvedError(f"the line {a}{b} leaves the x-y plane: its turning is answered for points in the plane "
+                            "(a line in space turns about no one axis; ask a body's angular velocity, 'bodies:')")
+    dr, dv, da = (general[b][k] - general[a][k] for k in range(3))
+    cross = lambda u, w: u[0] * w[1] - u[1] * w[0]  # noqa: E731
+    square, turn = dr.dot(dr), cross(dr, dv)
+    rate = turn / square
+    acceleration = (cross(dr, da) * square - 2 * turn * dr.dot(dv)) / square**2
+    return LineTurning((a, b), *(model.to_time(tidy(sp.cancel(sp.expand(x.xreplace(state))))) for x in (rate, acceleration)))
 
 
 def _distance(a: str, b: str, general: dict, state: dict, model: Model) -> Distance:

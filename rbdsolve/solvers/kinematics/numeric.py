@@ -11,7 +11,8 @@ import sympy as sp
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.kinematics.answers import NumericDistance, NumericKinematicsAnswers, NumericPointMotion
+from rbdsolve.solvers.kinematics.answers import (NumericBodyMotion, NumericDistance, NumericKinematicsAnswers,
+                                                 NumericLineTurning, NumericPointMotion)
 from rbdsolve.solvers.kinematics.exact import kinematics
 from rbdsolve.solvers.kinematics.steps import numeric_steps
 from rbdsolve.solvers.routes.options import Options
@@ -37,5 +38,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     points = tuple(NumericPointMotion(p.point, fs(p.position), fs(p.velocity), fs(p.acceleration), f(p.speed))
                    for p in exact.points)
     distances = tuple(NumericDistance(d.between, f(d.distance), f(d.rate)) for d in exact.distances)
-    answers = NumericKinematicsAnswers({k: f(v) for k, v in exact.at.items()}, points, distances)
+    bodies = tuple(NumericBodyMotion(b.body, fs(b.angular_velocity), fs(b.angular_acceleration)) for b in exact.bodies)
+    lines = tuple(NumericLineTurning(x.through, f(x.rate), f(x.acceleration)) for x in exact.lines)
+    answers = NumericKinematicsAnswers({k: f(v) for k, v in exact.at.items()}, points, distances, bodies, lines)
     return Solution("kinematics", Route.NUMERIC, answers, numeric_steps(answers), error_estimate=ROUNDING)

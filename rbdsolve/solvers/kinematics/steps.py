@@ -1,5 +1,6 @@
 """The worked solution of a kinematics question: each point's position in the scene,
-its velocity and acceleration by the chain rule, then the state put in."""
+its velocity and acceleration by the chain rule, then the state put in; each body's
+angular velocity and acceleration."""
 
 from __future__ import annotations
 
@@ -57,6 +58,17 @@ def exact_steps(answers: KinematicsAnswers, general: dict, model: Model) -> tupl
         steps.append(st.result(f"The distance {a}{b} = |r_{b} − r_{a}|, and its rate (Δr·Δv)/|Δr|:",
                                Relation(sp.Symbol(f"|{a}{b}|"), d.distance),
                                Relation(sp.Symbol(f"d|{a}{b}|/dt"), d.rate)))
+    for b in answers.bodies:
+        steps.append(st.result(f"Body {b.body}" + (" at the state" if answers.at else "") + ": its angular velocity "
+                               "ω (α̇ e_z for a body turned by its angle α) and angular acceleration α = dω/dt:",
+                               Relation(sp.Symbol(f"omega_{b.body}"), _row(b.angular_velocity)),
+                               Relation(sp.Symbol(f"alpha_{b.body}"), _row(b.angular_acceleration))))
+    for x in answers.lines:
+        a, b = x.through
+        steps.append(st.result(f"The line {a}{b} turns at φ̇ = (Δr × Δv)_z/|Δr|² (Δr = r_{b} − r_{a}, φ its angle), "
+                               "with angular acceleration φ̈ = dφ̇/dt:",
+                               Relation(sp.Symbol(f"omega_{a}{b}"), x.rate),
+                               Relation(sp.Symbol(f"alpha_{a}{b}"), x.acceleration)))
     return tuple(steps)
 
 
@@ -72,4 +84,12 @@ def numeric_steps(answers: NumericKinematicsAnswers) -> tuple[st.Step, ...]:
     steps += [st.result(f"The distance {d.between[0]}{d.between[1]}:",
                         Relation(sp.Symbol(f"|{d.between[0]}{d.between[1]}|"), show(d.distance)))
               for d in answers.distances]
+    steps += [st.result(f"Body {b.body} at the parameter values (floating point):",
+                        Relation(sp.Symbol(f"omega_{b.body}"), _row(map(show, b.angular_velocity))),
+                        Relation(sp.Symbol(f"alpha_{b.body}"), _row(map(show, b.angular_acceleration))))
+              for b in answers.bodies]
+    steps += [st.result(f"The line {x.through[0]}{x.through[1]} at the parameter values (floating point):",
+                        Relation(sp.Symbol(f"omega_{x.through[0]}{x.through[1]}"), show(x.rate)),
+                        Relation(sp.Symbol(f"alpha_{x.through[0]}{x.through[1]}"), show(x.acceleration)))
+              for x in answers.lines]
     return tuple(steps)
