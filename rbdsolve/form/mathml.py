@@ -19,8 +19,8 @@ import sympy as sp
 from sympy.printing.mathml import MathMLPresentationPrinter
 
 from rbdsolve.form.display import Along, Label, Math, Product, Relation, Scaled, Terms
-from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, float_text, \
-    signs_placed, split_name
+from rbdsolve.form.printers import GREEK, _coordinate_name, _derivative, _rational_lead, float_text, split_name
+from rbdsolve.form.sign_placement import signs_placed
 from rbdsolve.form.term_order import exam_order, readable_cosine
 
 # ˙ ¨ ⃛ : spacing accents over the base letter. Set over it as an ordinary script, not

@@ -393,6 +393,11 @@ def has_root(expr: sp.Basic, of: tuple = ()) -> bool:
                for p in expr.atoms(sp.Pow))
 
 
+def square_root(p: sp.Basic) -> bool:
+    """Is p a power whose exponent is an odd number of halves (√X, 1/√X, X^(3/2))?"""
+    return p.is_Pow and p.exp.is_Rational and p.exp.q == 2
+
+
 def has_denominator(expr: sp.Expr) -> bool:
     """Does a sum appear in a denominator (a rational function worth cancelling)?"""
     return any(p.exp.is_negative and p.base.is_Add for p in expr.atoms(sp.Pow))

@@ -61,7 +61,7 @@ class Note:
 
     kind: Beside
     values: tuple[float, ...] = ()
-    open: tuple[str, str | None] = ()  # Beside.OPEN: the parameter left without a value, its SI unit (None: not known)
+    open: tuple[str, str | None] | None = None  # Beside.OPEN: the parameter left open, its SI unit (None: not known)
 
 
 @dataclass(frozen=True)

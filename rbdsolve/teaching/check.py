@@ -371,14 +371,13 @@ def _nice(s: sp.Symbol, rng: random.Random, span: tuple | None, turning: bool) -
 
 
 def _quadrant(value: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
-    """The open quarter turn (kπ/2, (k + 1)π/2) that holds an angle's value; one centred
-    on it where it is a whole number of quarter turns (0°, 90°)."""
+    """The quarter turn (kπ/2, (k + 1)π/2) that holds an angle's value, a hundredth of it
+    in from each end (the draws are closed intervals: 0 is no release angle of (0°, 90°));
+    where the value is a whole number of quarter turns (0°, 90°), the one that begins
+    there (its sines and cosines keep their signs on it)."""
     quarter = sp.pi / 2
-    k = sp.floor(sp.nsimplify(value) / quarter)
-    low = k * quarter
-    if sp.simplify(value - low) == 0:
-        return value - quarter / 2, value + quarter / 2
-    return low, low + quarter
+    low = sp.floor(sp.nsimplify(value) / quarter) * quarter
+    return low + quarter / 100, low + quarter * 99 / 100
 
 
 def _exact(value) -> sp.Expr:

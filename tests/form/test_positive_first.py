@@ -48,3 +48,10 @@ def test_two_differences_turn_together_where_the_product_keeps_its_sign() -> Non
     # a disk released at θ₀ inside a cylinder: θ̇² = 4 g (1 − cos θ₀)/(3 (R − r)) at the bottom
     assert to_unicode(4 * g * (sp.cos(t) - 1) / (3 * r - 3 * R)) == "4 g (1 − cos(θ₀))/(3 (R − r))"
     assert to_unicode(g * (r - R)) == "g (r − R)"  # one difference alone keeps its sign as written
+
+
+def test_a_number_taken_out_of_a_turned_difference_joins_the_coefficient() -> None:
+    x, y = sp.symbols("x y", positive=True)
+    assert to_unicode(g * (2 * x - 2) / (3 * y - 3)) == "2 g (1 − x)/(3 (1 − y))"  # not g 2 (1 − x)/…
+    assert to_latex(g * (2 * x - 2) / (3 * y - 3)) == r"\frac{2 g \left(1 - x\right)}{3 \left(1 - y\right)}"
+    assert to_unicode((x / 2 - sp.Rational(1, 2)) * (y - 1)) == "1/2 (1 − x) (1 − y)"

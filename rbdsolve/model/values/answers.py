@@ -57,6 +57,6 @@ def _open(model: Model, units: dict[str, str]) -> dict:
     """The parameters left without a value (an unknown a question solves for is not one),
     each with its SI unit ('' for a pure number, None where its dimension is not known)."""
     given = set(model.values)
-    unknowns = set(getattr(model.problem, "unknowns", ()) or ())
+    unknowns = set(model.problem.unknowns)
     return {s: units.get(name) for name, s in model.symbols.parameters.items()
             if s not in given and name not in unknowns}

@@ -16,7 +16,7 @@ import random
 
 import sympy as sp
 
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
 
@@ -195,7 +195,7 @@ def _one_root(value: sp.Expr) -> sp.Expr:
     square = sp.factor(value**2)
     if square.could_extract_minus_sign():  # −g (−2 + √2)/l: a sign taken into the sum, (2 − √2) g/l
         square = sp.factor_terms(sp.expand(value**2))
-    rooted = any(p.exp.is_Rational and p.exp.q == 2 for p in value.atoms(sp.Pow))  # 5 g m/R stays
+    rooted = any(square_root(p) for p in value.atoms(sp.Pow))  # 5 g m/R stays
     if rooted and not square.has(sp.sqrt) and not square.is_Pow:
         return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
     return value

@@ -39,7 +39,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
 from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
-from rbdsolve.form.tidy import tidy, tidy_fraction
+from rbdsolve.form.tidy import square_root, tidy, tidy_fraction
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
 from rbdsolve.model.energies.energy import memoized
@@ -243,7 +243,7 @@ def real_where(values: Iterable[sp.Expr]) -> list[sp.Expr]:
     """What must be ≥ 0 for the values to be real: radicands, 1 − c² under acos and asin."""
     needed = set()
     for value in values:
-        needed |= {p.base for p in value.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2}
+        needed |= {p.base for p in value.atoms(sp.Pow) if square_root(p)}
         needed |= {1 - f.args[0] ** 2 for f in value.atoms(sp.acos, sp.asin)}
     return sorted(needed, key=sp.default_sort_key)
 
@@ -253,7 +253,7 @@ def divided_radicands(values: Iterable[sp.Expr]) -> list[sp.Expr]:
     infinite where c = 0, so it is real only where c > 0, not c ≥ 0 (a rod as a conical
     pendulum: Ω = √(3 g/(2 l cos α)) needs α < π/2)."""
     found = {p.base for value in values for p in value.atoms(sp.Pow)
-             if p.exp.is_Rational and p.exp.q == 2 and p.exp < 0}
+             if square_root(p) and p.exp < 0}
     return sorted(found, key=sp.default_sort_key)
 
 
@@ -318,15 +318,19 @@ def _tightest_bounds(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]:
 
 def _compared(a: sp.Expr, b: sp.Expr, model) -> int | None:
     """The sign of a − b for every value the assumptions allow, where it is decided (two
-    roots compared by their squares); None where it is not, or where they are equal."""
-    for x, y in ((a, b), (a**2, b**2)):
-        sign = sign_of(sp.factor(sp.cancel(sp.together(x - y))), model.assumed)
-        if isinstance(sign, int):
-            return sign or None
-        if not (isinstance(sign_of(a, model.assumed), int) and sign_of(a, model.assumed) >= 0
-                and isinstance(sign_of(b, model.assumed), int) and sign_of(b, model.assumed) >= 0):
-            return None
-    return None
+    bounds that are not negative compared by their squares, √(k/m) against
+    √(k (L + d)/(d m))); None where it is not, or where they are equal."""
+    sign = _sign(a - b, model)
+    if sign is None and all(_sign(x, model) in (0, 1) for x in (a, b)):
+        sign = _sign(a**2 - b**2, model)
+    return sign or None
+
+
+def _sign(x: sp.Expr, model) -> int | None:
+    """x's sign under the assumptions alone, x over one denominator (``symbolic_sign``
+    factors it where it is short enough)."""
+    found = sign_of(sp.cancel(sp.together(x)), model.assumed)
+    return found if isinstance(found, int) else None
 
 
 def constant_sign(f: sp.Expr, model, first: sp.Symbol | None = None) -> int | None:

@@ -11,7 +11,7 @@ from typing import Iterable, Mapping
 
 import sympy as sp
 
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import square_root, tidy
 
 
 @dataclass(frozen=True)
@@ -98,14 +98,14 @@ def nonzero_where_defined(values: Iterable[sp.Expr]) -> dict[sp.Expr, sp.Dummy]:
     return found
 
 
-def roots_where_defined(H: sp.Matrix) -> dict[sp.Expr, sp.Dummy]:
+def roots_where_defined(H: sp.Basic) -> dict[sp.Expr, sp.Dummy]:
     """Each square root √X (X^(k/2)) in H whose sign the parameters leave open, as a
     positive stand-in: H is a Hessian at an equilibrium that is real only where it
     exists, so every root in it is real there, and positive off the boundary X = 0 (a
     half-disk on an incline at sin θ₀ = −(3π/4) sin β: K = R g m √(16 − 9π² sin² β)/(3π)
     > 0 wherever the equilibrium exists)."""
     return {p: sp.Dummy("r", positive=True) for p in H.atoms(sp.Pow)
-            if p.exp.is_Rational and p.exp.q == 2 and p.base.free_symbols and symbolic_sign(p.base) is None}
+            if square_root(p) and p.base.free_symbols and symbolic_sign(p.base) is None}
 
 
 def sign_where_defined(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr],

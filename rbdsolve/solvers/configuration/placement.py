@@ -345,7 +345,7 @@ def _nearest_zero_first(root, equivalent: list) -> tuple:
     """One configuration's roots with the one nearest q = 0 as it is written (the hanging
     double pendulum at (0, 0), not at (−10π, −10π) where the search met it first; of two
     as near, the one with fewer negative coordinates, else the first met), the others in
-    order of their distance from it."""
+    order of their distance from q = 0."""
     ordered = sorted([root, *equivalent], key=lambda r: (round(sum(x * x for x in r.at), 9), sum(x < 0 for x in r.at)))
     return ordered[0], ordered[1:]
 

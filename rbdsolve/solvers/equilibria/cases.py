@@ -21,14 +21,23 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.model.build import Model
+from rbdsolve.model.derivative import derivative
+from rbdsolve.model.energies.energy import memoized, potential_energy
 from rbdsolve.model.energies.spring_length import crushed_sides, held_sides
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
 from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import tidy
-from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia
+from rbdsolve.form.tidy import square_root, tidy
+from rbdsolve.solvers.conditions.signs import FACTOR_OPS, Undecided, matrix_inertia
+
+
+@memoized
+def gradient(model: Model) -> tuple[sp.Expr, ...]:
+    """∂V/∂q, each component tidied."""
+    V = potential_energy(model).total
+    return tuple(tidy(derivative(V, q)) for q in model.q)
 
 
 def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
@@ -46,10 +55,8 @@ def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
     k L/|k − m Ω²| is not k L/(k − m Ω²). Each root whose radicand is a square there is
     |F|; where ∂V/∂q vanishes with |F| = F only (or −F only), F ≥ 0 (−F ≥ 0) is the
     condition."""
-    from rbdsolve.solvers.equilibria.exact import gradient  # exact.py reads this module
-
     grad = gradient(model)
-    if not any(_root_of(p, model.q) for g in grad for p in g.atoms(sp.Pow)):
+    if not any(square_root(p) and p.base.has(*model.q) for g in grad for p in g.atoms(sp.Pow)):
         return []
     residual = [_roots_as_absolute(g.xreplace(dict(at))) for g in grad]
     out = []
@@ -60,25 +67,22 @@ def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
     return out
 
 
-def unsquared(expr: sp.Expr, at: Mapping, model: Model) -> sp.Expr:
-    """``expr`` at the root ``at`` with its square roots of squares written as the
-    unsquared equations have them (``unsquared_where``): √(d² + s²) = k L/(k − m Ω²) at
-    the bead's off-centre equilibrium, not a nest of radicals; as it is elsewhere."""
+def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
+    """H (a Hessian, a stiffness matrix) at the root ``at``, its square roots of squares
+    written as the unsquared equations have them (``unsquared_where``) and each entry
+    tidied: √(d² + s²) = k L/(k − m Ω²) at the bead's off-centre equilibrium, not a nest
+    of radicals."""
     signs = unsquared_where(at, model)
     if not signs:
-        return expr
-    found = _roots_as_absolute(expr)
-    return found.xreplace({a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))})
-
-
-def _root_of(p: sp.Expr, q) -> bool:
-    return p.exp.is_Rational and p.exp.q == 2 and p.base.has(*q)
+        return H.applyfunc(tidy)
+    known = {a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))}
+    return H.applyfunc(lambda e: tidy(_roots_as_absolute(e).xreplace(known)))
 
 
 def _roots_as_absolute(expr: sp.Expr) -> sp.Expr:
     """Each square root √X with X a square F² once factored written |F| (sympy's own
     √(F²) = |F| for a real F)."""
-    return expr.replace(lambda p: p.is_Pow and p.exp.is_Rational and p.exp.q == 2 and bool(p.base.free_symbols),
+    return expr.replace(lambda p: square_root(p) and bool(p.base.free_symbols) and sp.count_ops(p.base) <= FACTOR_OPS,
                         lambda p: sp.sqrt(sp.factor(sp.cancel(sp.together(p.base)))) ** (2 * p.exp))
 
 
@@ -90,7 +94,9 @@ def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -
     """Where the solution ``at`` of ∂V/∂q = 0 is an equilibrium (``existing_where`` ≥ 0,
     and > 0 where zero would put a spring with a natural length at zero length:
     ``crushed_sides``), solved for ``first`` where it can; None where it cannot be split."""
-    return exists_when((), model, existing_where(at, model), first=first, positive=crushed_sides(model.springs, at))
+    # F = 0 in an unsquared condition is no root (√(d² + s²) = k L/F): strict, as a crushed spring is
+    return exists_when((), model, existing_where(at, model), first=first,
+                       positive=[*crushed_sides(model.springs, at), *unsquared_where(at, model)])
 
 
 def with_cases(found: Equilibrium, model: Model, at: Mapping,
@@ -133,7 +139,8 @@ def _one_verdict(stability: Stability, exists: sp.Basic) -> str:
     """Why one stability holds on every piece of the parameters' range (a double
     pendulum's (π, π) with a hinge spring c: a maximum for small c, a saddle past
     det K = 0, unstable either way)."""
-    where = "for every value of the parameters" if exists is sp.true else "wherever the equilibrium exists"
+    where = ("for every value of the parameters" if exists is sp.true
+             else "wherever the equilibrium exists, off its boundary")  # K = 0 at a closed boundary
     what = {Stability.STABLE: "the Hessian of V is positive definite",
             Stability.UNSTABLE: "the Hessian of V has a negative eigenvalue"}.get(
         stability, "the same verdict holds")

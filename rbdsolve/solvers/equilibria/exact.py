@@ -28,13 +28,13 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
-from rbdsolve.solvers.equilibria.cases import existing_where, unsquared, with_cases
+from rbdsolve.solvers.equilibria.angles import angle_of
+from rbdsolve.solvers.equilibria.cases import existing_where, gradient, unsquared, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
@@ -46,18 +46,12 @@ from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.placement import SUGGESTION, Singularity, Verdict, exact_kernel, same_placement, singularity
-from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, roots_where_defined,
-                                             sign_of,
-                                              symbolic_sign)
+from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined,
+                                              roots_where_defined, sign_of, symbolic_sign)
 from rbdsolve.model.values.values import sample
 
 
 @memoized
-def gradient(model: Model) -> tuple[sp.Expr, ...]:
-    V = potential_energy(model).total
-    return tuple(tidy(derivative(V, q)) for q in model.q)
-
-
 def equations_and_unknowns(model: Model) -> tuple[list, list, frozenset]:
     """The equations ∂V/∂q = 0 that are not 0 = 0, the coordinates they hold (the
     others are free: every value is an equilibrium), and the coordinates solved as
@@ -225,7 +219,7 @@ def _solve_polynomial(system: PolySystem, assumed: Mapping) -> list[dict]:
             continue
         if len(root) < len(symbols):  # a family of solutions: not isolated points
             raise _continuum()
-        sol = {q: _angle(root[system.sines[q]], root[system.cosines[q]], assumed) for q in system.sines}
+        sol = {q: angle_of(root[system.sines[q]], root[system.cosines[q]], assumed) for q in system.sines}
         sol |= {q: tidy(root[q]) for q in system.plain}
         out.append(sol)
     return out
@@ -248,46 +242,6 @@ def existence(at: Mapping, model: Model) -> tuple[sp.Expr, ...] | None:
 def _numeric(expr: sp.Expr, model: Model) -> bool:
     """Does the expression become a number once the given values are put in?"""
     return not expr.xreplace(model.values).free_symbols
-
-
-def _angle(sin_value: sp.Expr, cos_value: sp.Expr, assumed: Mapping) -> sp.Expr:
-    """The angle in (−π, π] with this sine and cosine; ±acos(c) or asin(s) when
-    s = ±√(1 − c²) and the signs allow (``_by_sign``)."""
-    angle = sp.atan2(sin_value, cos_value)
-    if angle.is_number:
-        return sp.nsimplify(angle) if angle.is_rational else angle
-    if sin_value.is_zero:
-        return sp.Integer(0) if cos_value.is_positive else sp.pi
-    pythagoras = sin_value**2 - (1 - cos_value**2)  # 0 where s = ±√(1 − c²)
-    if sp.expand(pythagoras) == 0:
-        return _by_sign(sin_value, cos_value, assumed)
-    if sp.count_ops(angle) < 40:
-        return sp.simplify(angle)  # atan(2 P/(g m)): shorter than acos(g m/√(4 P² + g² m²))
-    if sp.cancel(sp.together(pythagoras)) == 0:
-        # s = ±√(1 − c²) once over one denominator (c = −6 g h/(Ω² b² − 4 Ω² h²)): a long atan2 of them,
-        # which simplify is not asked to read, is ±acos(c)
-        return _by_sign(sin_value, cos_value, assumed)
-    return angle
-
-
-def _by_sign(sin_value: sp.Expr, cos_value: sp.Expr, assumed: Mapping) -> sp.Expr:
-    """atan2(s, c) where s = ±√(1 − c²): ±acos(c) where the sign of s is decided (by the
-    parameters' signs and the assumptions, each root in it real where the equilibrium
-    exists), asin(s) where c > 0 is, else atan2(s, c) as it is. (The sign as written was
-    taken before: −(3π/4) sin β read as negative gave −acos(c) for an incline tilted the
-    other way, β < 0, where the half-disk rests at +acos(c); it rests at −asin(3π sin β/4)
-    either way.)"""
-    sign = _decided_sign(sin_value, assumed)
-    if sign is not None:
-        return -sp.acos(cos_value) if sign < 0 else sp.acos(cos_value)
-    if _decided_sign(cos_value, assumed) == 1:
-        return sp.asin(sin_value)
-    return sp.atan2(sin_value, cos_value)
-
-
-def _decided_sign(value: sp.Expr, assumed: Mapping) -> int | None:
-    found = sign_of(value.xreplace(roots_where_defined(sp.Matrix([value]))), assumed)
-    return None if isinstance(found, Undecided) else found
 
 
 def _solve_general(equations, unknowns) -> list[dict]:
@@ -341,8 +295,7 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
 
 def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     V = potential_energy(model).total
-    H = sp.ImmutableMatrix(without_deltas(hessian(V, model.q).xreplace(at)).applyfunc(
-        lambda e: tidy(unsquared(e, at, model))))
+    H = sp.ImmutableMatrix(unsquared(without_deltas(hessian(V, model.q).xreplace(at)), at, model))
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
     inertia = decided_inertia(H, model, at)
@@ -460,14 +413,18 @@ def _plain_first(model: Model, listed: Listed) -> Listed:
     """One configuration written with the fewest negative coordinates first ((π, π), the
     double pendulum upright, and (−π, −π) as the same configuration), where that one is
     a regular point of the coordinates as the first found is."""
-    negatives = lambda at: sum(sp.sympify(v).could_extract_minus_sign() for v in at.values())  # noqa: E731
     if listed.singular is not None or not listed.equivalent:
         return listed
-    plain = min(listed.equivalent, key=negatives)
-    if negatives(plain) >= negatives(listed.at) or singularity(model, plain) is not None:
+    plain = min(listed.equivalent, key=_negatives)
+    if _negatives(plain) >= _negatives(listed.at) or singularity(model, plain) is not None:
         return listed
     others = tuple(e for e in (listed.at, *listed.equivalent) if e is not plain)
     return replace(listed, at=plain, equivalent=others)
+
+
+def _negatives(at: Mapping) -> int:
+    """How many coordinates of a root are written with a minus sign."""
+    return sum(sp.sympify(v).could_extract_minus_sign() for v in at.values())
 
 
 def classify_listed(model: Model, listed: Listed) -> Equilibrium:

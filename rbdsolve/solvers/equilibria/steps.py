@@ -116,9 +116,10 @@ def _written_also(eq, model: Model) -> st.Step:
     joint = whole and all(len({round(k) for k in ks}) == 1 for ks in turns)
     if joint and len(turns) > 2:
         names = ", ".join(unicode_name(n) for n in eq.at)
+        run = counts == [k for k in range(counts[0], counts[-1] + 1) if k != 0]
+        ks = f"{_signed(counts[0])}, …, {_signed(counts[-1])} (k ≠ 0" if run else ", ".join(map(_signed, counts)) + " ("
         return st.note(f"The same configuration is also written with whole turns added to every angle, "
-                       f"({names}) + 2πk for k = {_signed(counts[0])}, …, {_signed(counts[-1])} (k ≠ 0; {len(turns)} more roots in "
-                       "the search box)")
+                       f"({names}) + 2πk for k = {ks}; {len(turns)} more roots in the search box)")
     return st.note("The same configuration is also written",
                    *[configuration(model.state.functions(), [sp.Float(v, 15) for v in e.values()])
                      for e in eq.equivalent])

@@ -167,8 +167,9 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
     the cases are written in where they can be (a question's ``for:``)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
-    K = sp.ImmutableMatrix(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)).applyfunc(
-        lambda e: unsquared(e, at, model)))  # √(d² + s²) at a root found by squaring: as the equations have it
+    # √(d² + s²) at a root found by squaring: as the unsquared equations have it
+    K = sp.ImmutableMatrix(unsquared(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)),
+                                     at, model))
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
     if singular:
         raise UnsolvedError(singular)

@@ -5,6 +5,7 @@ or a tension reaches zero, and the least μ for rolling (motion.py)."""
 
 from __future__ import annotations
 
+import random
 from dataclasses import replace
 
 import sympy as sp
@@ -18,14 +19,15 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.first_zero import FirstZero, first_zero
+from rbdsolve.solvers.reactions.first_zero import FirstZero, first_zero, reaches
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, clean_fraction, state_values
 from rbdsolve.solvers.conditions.conditions import critical_values
-from rbdsolve.solvers.conditions.signs import Undecided, sign_of
+from rbdsolve.solvers.conditions.condition_roots import admissible
+from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.lagrange.energy_integral import energy_step
 from rbdsolve.solvers.routes.needed import missing_values
 from rbdsolve.solvers.routes.options import Options
@@ -182,29 +184,47 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
                      f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
                      "reached, if it is, is not given" for k in unsolved)
     if to:
-        answers, more = _there(model, supports, values, e.rate_squared, to[name], answers)
+        answers, more = _there(model, supports, values, e.rate_squared, table[model.q[0]], to[name], answers)
         passed = _lost_before(model, answers.first_zero, table[model.q[0]], to[name])
         steps, warnings = steps + more, warnings + passed
     return answers, steps, criticals, warnings
 
 
-def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, to: sp.Expr, answers):
+def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, start: sp.Expr, to: sp.Expr, answers):
     """The forces where the motion released from rest gets to, q = ``to``: the forces
-    along the motion there, with q̇² there; where q̇² < 0 there, the motion does not get
-    there and no force is given (``there_reached`` false; None where the parameters
-    decide it, the forces then given for where it does). With every value given, a
+    along the motion there, with q̇² there; where the motion does not get there
+    (``_gets_there``: q̇² < 0 there, or on the way) no force is given (``there_reached``
+    false; None where the parameters decide it, the forces then given for where it does). With every value given, a
     contact lost on the way (``first_zero``) is said: past it the forces are not the
     motion's."""
     table = {model.q[0]: to}
     w2 = at_state(rate_squared, table)
-    sign = sign_of(w2, model.decided_by)
-    reached = None if isinstance(sign, Undecided) else sign != -1
+    reached = _gets_there(model, rate_squared, start, to, w2)
     there = None if reached is False else {
         s.name: _reaction(s, {c.symbol: tidy(at_state(values[c.symbol], table)) for c in s.components}, table)
         for s in supports}
     answers = _replace(answers, to={model.coordinate_names()[0]: to}, there=there and
                        {k: _timeless(r, model) for k, r in there.items()}, there_reached=reached)
     return answers, rs.there_steps(model, to, w2, supports, there)
+
+
+SAMPLES = 6  # parameter points at which, without values, whether the motion gets there is judged
+
+
+def _gets_there(model: Model, rate_squared: sp.Expr, start: sp.Expr, to: sp.Expr, w2: sp.Expr) -> bool | None:
+    """Whether the motion from rest at ``start`` gets to ``to``: not where q̇² < 0 there
+    by the parameters' signs; else along the way (``first_zero.reaches``: it sets off
+    towards it and q̇² ≥ 0 all the way), at the values, or, without them, at admissible
+    samples of the parameters — true or false where they all agree, None where they do
+    not (the parameters decide it)."""
+    if sign_of(w2, model.decided_by) == -1:
+        return False
+    q = model.q[0]
+    if not missing_values(model):
+        return reaches(rate_squared, q, start, to, dict(model.values))
+    found = {reaches(rate_squared, q, start, to, point) for k in range(SAMPLES)
+             if (point := admissible(model, random.Random(31 + k))) is not None}
+    return found.pop() if len(found) == 1 else None
 
 
 def _lost_before(model: Model, first: dict | None, start: sp.Expr, to: sp.Expr) -> tuple[str, ...]:

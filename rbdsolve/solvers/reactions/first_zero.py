@@ -74,6 +74,30 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
     return FirstZero(None, None) if _periodic(push, q) and _periodic(rate_squared, q) else None
 
 
+def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, values: dict) -> bool | None:
+    """Does the motion released from rest at ``start`` get to q = ``to`` (the parameters'
+    ``values`` put in)? It sets off towards the sign of dq̇²/dq at the start and runs on
+    while q̇² ≥ 0: so only if ``to`` lies that way and q̇² ≥ 0 at every step of half a
+    degree (of the way, for a length) up to it — a barrier in between (an inverted rod
+    on a torsion spring cannot cross the top) turns it back before. None where a value
+    is not a number."""
+    v2 = _numeric(rate_squared.xreplace(values), q)
+    slope = _real(sp.diff(rate_squared, q).xreplace(values).xreplace({q: start.xreplace(values)}))
+    q0, end = _real(start.xreplace(values)), _real(to.xreplace(values))
+    if q0 is None or end is None or slope is None:
+        return None
+    if end == q0:
+        return True
+    if slope * (end - q0) <= 0:
+        return False  # it sets off the other way (or stays): it comes back to the start, never past it
+    steps = max(8, min(STEPS, int(abs(end - q0) / (2 * math.pi / STEPS)) + 1))
+    speeds = [v2(q0 + (end - q0) * i / steps) for i in range(1, steps + 1)]
+    if any(v is None for v in speeds):
+        return None
+    scale = max(abs(v) for v in speeds) or 1.0
+    return all(v >= -1e-12 * scale for v in speeds)
+
+
 def _lost(N, a: float, b: float, name: str) -> FirstZero | None:
     root = _root(N, a, b)
     return None if root is None else FirstZero({name: root}, None)

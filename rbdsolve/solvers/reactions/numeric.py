@@ -29,6 +29,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     instant = question.options.instant
     if instant is None:
         raise UnsolvedError("the numeric route answers at a state: give 'at:' or 'from_rest:'")
+    if question.options.to:  # the energy integral along the way is the exact route's (exact.py, _there)
+        raise UnsolvedError("the forces where the motion gets to ('to') are answered on the exact route only")
     supports, solved, rows = setup(question, model)
     # sp.N, not sp.Float: a value may be exact and irrational (30 deg is pi/6)
     point = {**{k: sp.N(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}

@@ -96,7 +96,8 @@ def there_steps(model: Model, to: sp.Expr, w2: sp.Expr, supports: tuple[Held, ..
     q, qd = model.to_time(model.q[0]), model.to_time(model.qd[0])
     steps = [st.given("Where the motion gets to:", Relation(q, to), Relation(qd**2, model.to_time(w2)))]
     if there is None:
-        return steps + [st.note("There q̇² < 0: the motion from rest does not get there, so no force is given.")]
+        return steps + [st.note("The motion from rest does not get there (q̇² < 0 there, or on the way: it turns "
+                                "back before), so no force is given.")]
     math = [Relation(sp.Symbol(k), model.to_time(v)) for s in supports for k, v in there[s.name].components.items()]
     return steps + [st.result("There, the forces are:", *math)]
 

@@ -52,3 +52,29 @@ def test_a_configuration_the_motion_does_not_get_to_has_no_forces(tmp_path) -> N
 def test_to_without_a_release_from_rest_is_bad_input(tmp_path, question) -> None:
     result, _ = _result(tmp_path, question)
     assert result.exit_code == 2 and "give 'from_rest: {q: VALUE}' with it" in result.output, result.output
+
+
+def test_a_barrier_on_the_way_is_not_crossed(tmp_path) -> None:
+    """An inverted rod on a torsion spring c = 4 N·m/rad (m = 1 kg, l = 1 m), released at
+    θ = 1.4 rad: V(θ) = ½ m g l cos θ + ½ c θ², V(0) = 4.905 J > V(1.4) = 4.754 J, so it
+    never crosses the top to θ = −1, though q̇² > 0 there (by hand)."""
+    path = tmp_path / "barrier.yaml"
+    path.write_text("""\
+parameters: {m: mass, l: length, g: gravity, c: torsional stiffness}
+values: {m: 1 kg, l: 1 m, g: 9.81 m/s^2, c: 4 N*m/rad}
+coordinates:
+  theta: {kind: angle, periodic: false}
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  G: l/2 * [-sin(theta), cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+springs:
+  pivot: {stiffness: c, angle: theta}
+questions:
+  - reactions: {forces: [O], from_rest: {theta: 1.4}, to: {theta: -1}}
+""", encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    answers = json.loads(result.stdout)["results"][0]["answers"]
+    assert answers["there_reached"] is False and answers["there"] is None
