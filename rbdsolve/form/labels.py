@@ -34,6 +34,7 @@ REGISTRY: dict[str, tuple[str, ...]] = {
     "frequency": ("omega", "nu", "varpi"),
     "growth_rate": ("gamma", "sigma"),
     "exponent": ("s", "p", "z"),  # u = X e^(st): a root of the quadratic eigenproblem
+    "energy_constant": ("h", "H", "h_E"),  # T + V = h, Jacobi's h: beside a hump of height h, H
     "amplitude": ("a", "X", "Y"),
     "total_mass": ("m", "M", "m_tot"),
     "angular_velocity": ("omega", "omega_b"),  # a body's ω beside a spin rate named omega

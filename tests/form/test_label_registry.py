@@ -60,3 +60,9 @@ def test_the_exponent_of_u_equals_x_e_st_moves_off_a_spin_named_s() -> None:
     assert Labels.of(["s", "m"], ["exponent"]).name("exponent") == "p"
     assert Labels.of(["s_1", "m"], ["exponent"]).name("exponent") == "p"  # s₁ would read as a root
 
+
+
+def test_the_energy_constant_moves_off_a_parameter_named_h() -> None:
+    # a bead on a wire with a hump of height h: T + V = H, not T + V = h
+    assert Labels.of(["m", "g"], ["energy_constant"]).name("energy_constant") == "h"
+    assert Labels.of(["h", "m"], ["energy_constant"]).name("energy_constant") == "H"

@@ -22,12 +22,14 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rbdsolve.form.display import Relation
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
 from rbdsolve.model.state import t
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
+from rbdsolve.solvers.routes.labels import labels_for
 
 
 @dataclass(frozen=True)
@@ -74,17 +76,23 @@ def energy_integral(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyInte
     return EnergyIntegral(T, V, h, plain, h0, rate_squared)
 
 
+def energy_constant(model: Model) -> sp.Symbol:
+    """The integral's name, h (H beside a parameter h: a hump's height)."""
+    return labels_for(model, "energy_constant").symbol("energy_constant")
+
+
 def energy_step(model: Model, e: EnergyIntegral, from_rest: bool):
     """The integral as the exam says it: "T + V = h is constant, h = V(q₀)", then q̇² (h is the
-    name the numbers block gives its value)."""
+    name the numbers block gives its value: ``energy_constant``)."""
+    h = unicode_name(energy_constant(model).name)
     if e.plain:
         which = "gravity, springs, the applied loads (V_F)" if model.loads else "gravity, springs"
         said = (f"Energy is conserved (the forces that do work have a potential: {which}; the "
-                "supports do none): T + V = h is constant, " + ("h = V(q₀) at release from rest" if from_rest
-                                              else "h = its value at the state given"))
+                f"supports do none): T + V = {h} is constant, " + (f"{h} = V(q₀) at release from rest" if from_rest
+                                                                   else f"{h} = its value at the state given"))
     else:
-        said = ("The Lagrangian holds no t, so Jacobi's integral h = T₂ − T₀ + V (T₂, T₀ the parts of T of "
-                "degree 2 and 0 in the rates) is constant, h = its value at the start")
+        said = (f"The Lagrangian holds no t, so Jacobi's integral {h} = T₂ − T₀ + V (T₂, T₀ the parts of T of "
+                f"degree 2 and 0 in the rates) is constant, {h} = its value at the start")
     math = [Relation(model.to_time(e.h), model.to_time(e.start))]
     if e.rate_squared is not None:
         math.append(Relation(model.to_time(model.qd[0]) ** 2, model.to_time(e.rate_squared)))

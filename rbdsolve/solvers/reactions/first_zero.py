@@ -79,8 +79,10 @@ def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, va
     ``values`` put in)? It sets off towards the sign of dq̇²/dq at the start and runs on
     while q̇² ≥ 0: so only if ``to`` lies that way and q̇² ≥ 0 at every step of half a
     degree (of the way, for a length) up to it — a barrier in between (an inverted rod
-    on a torsion spring cannot cross the top) turns it back before. None where a value
-    is not a number."""
+    on a torsion spring cannot cross the top) turns it back before. Where q̇² repeats
+    after a turn (q an angle only in sines and cosines of it), ``to`` is the same place a
+    whole number of turns on, so it is met the first time the motion comes round to it
+    (3π/2 reached going down from 2π/3 at −π/2). None where a value is not a number."""
     v2 = _numeric(rate_squared.xreplace(values), q)
     slope = _real(sp.diff(rate_squared, q).xreplace(values).xreplace({q: start.xreplace(values)}))
     q0, end = _real(start.xreplace(values)), _real(to.xreplace(values))
@@ -88,6 +90,9 @@ def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, va
         return None
     if end == q0:
         return True
+    if slope != 0 and _periodic(rate_squared, q):
+        way = math.copysign(1.0, slope)
+        end = q0 + way * ((way * (end - q0)) % (2 * math.pi))  # the first time round it is met
     if slope * (end - q0) <= 0:
         return False  # it sets off the other way (or stays): it comes back to the start, never past it
     steps = max(8, min(STEPS, int(abs(end - q0) / (2 * math.pi / STEPS)) + 1))

@@ -17,6 +17,7 @@ from rbdsolve.solvers.reactions.balances import Balance
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import state_step
 from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.conditions.present_conditions import condition_relations, critical_steps
 
 
@@ -92,12 +93,14 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
 def there_steps(model: Model, to: sp.Expr, w2: sp.Expr, supports: tuple[Held, ...], there: dict | None
                 ) -> list[st.Step]:
     """Where the motion gets to: q̇² there, then the forces along the motion there (or
-    that it does not get there, q̇² < 0)."""
+    that it does not get there, and why: q̇² < 0 there, or a turning back on the way)."""
     q, qd = model.to_time(model.q[0]), model.to_time(model.qd[0])
     steps = [st.given("Where the motion gets to:", Relation(q, to), Relation(qd**2, model.to_time(w2)))]
     if there is None:
-        return steps + [st.note("The motion from rest does not get there (q̇² < 0 there, or on the way: it turns "
-                                "back before), so no force is given.")]
+        negative = sign_of(w2, model.decided_by) == -1
+        why = ("q̇² < 0 there" if negative else
+               "q̇² reaches 0 on the way, or it sets off the other way: it turns back before")
+        return steps + [st.note(f"The motion from rest does not get there ({why}), so no force is given.")]
     math = [Relation(sp.Symbol(k), model.to_time(v)) for s in supports for k, v in there[s.name].components.items()]
     return steps + [st.result("There, the forces are:", *math)]
 

@@ -78,3 +78,10 @@ questions:
     result = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
     answers = json.loads(result.stdout)["results"][0]["answers"]
     assert answers["there_reached"] is False and answers["there"] is None
+
+
+def test_an_angle_a_whole_turn_on_is_the_same_place(tmp_path) -> None:
+    # from the horizontal, φ = 2π is the bottom met the first time round (φ = 0): 5 m g/2
+    _, found = _result(tmp_path, "from_rest: {phi: pi/2}, to: {phi: 2*pi}")
+    assert found["answers"]["there_reached"] is True
+    assert found["answers"]["there"]["O"]["components"] == {"R_Ox": "0", "R_Oy": "5*g*m/2"}
