@@ -16,6 +16,7 @@ be split stays as before: undetermined, with the conditions as they were.
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import lru_cache
 from typing import Mapping
 
 import sympy as sp
@@ -83,7 +84,12 @@ def _roots_as_absolute(expr: sp.Expr) -> sp.Expr:
     """Each square root √X with X a square F² once factored written |F| (sympy's own
     √(F²) = |F| for a real F)."""
     return expr.replace(lambda p: square_root(p) and bool(p.base.free_symbols) and sp.count_ops(p.base) <= FACTOR_OPS,
-                        lambda p: sp.sqrt(sp.factor(sp.cancel(sp.together(p.base)))) ** (2 * p.exp))
+                        lambda p: _absolute_root(p.base) ** (2 * p.exp))
+
+
+@lru_cache(maxsize=1024)  # one radicand recurs in every entry of a Hessian, and in each residual
+def _absolute_root(base: sp.Expr) -> sp.Expr:
+    return sp.sqrt(sp.factor(sp.cancel(sp.together(base))))
 
 
 def _vanishes(expr: sp.Expr) -> bool:

@@ -22,7 +22,8 @@ from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.conditions import Piece, changes, existing, partition, sign_on, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
-from rbdsolve.solvers.conditions.signs import Inertia, Undecided, nonzero_where_defined, sign_of, sign_where_defined
+from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined,
+                                              roots_where_defined, sign_of, sign_where_defined)
 
 
 def existence(at: dict, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
@@ -55,6 +56,14 @@ def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
     return None
 
 
+def _for_every_value(K: sp.Matrix, model: Model, nonzero: Mapping) -> bool:
+    """Is K definite (all its eigenvalues of one sign) for every value the assumptions
+    allow, where the equilibrium is defined (its roots real, its denominators ≠ 0), not
+    only at the values given?"""
+    found = matrix_inertia(K.xreplace({**roots_where_defined(K), **nonzero}), model.assumed)
+    return isinstance(found, Inertia) and K.rows in (found.positive, found.negative)
+
+
 def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
           first: sp.Symbol | None = None, at: Mapping[sp.Expr, sp.Expr] | None = None):
     """Oscillation, growth or neutral for each λ, and the cases of a λ whose sign the
@@ -73,9 +82,11 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
     motions, cases, criticals = [], [], []
     for lam in eigenvalues:
         sign = _decided_sign(lam, model, nonzero)
+        by_inertia = False  # decided by K's inertia, which holds for every value allowed: no cases to say
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
             sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
+            by_inertia = not isinstance(sign, Undecided) and _for_every_value(K, model, nonzero)
         if isinstance(sign, Undecided):
             found = _cases(lam, model, where, first) or _cases_at_values(lam, model, where, first)
             if found is None:
@@ -92,7 +103,7 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
             continue
         motions.append(KIND[sign])
         # decided by the values: the cases still say where that holds, as for equilibria
-        open_ = model.values and isinstance(sign_of(lam, model.assumed), Undecided)
+        open_ = model.values and not by_inertia and isinstance(sign_of(lam, model.assumed), Undecided)
         found = _cases(lam, model, where, first) if open_ else None
         kept = found if found and len(found[0]) > 1 else None
         cases.append(kept[0] if kept else ())
