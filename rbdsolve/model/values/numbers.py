@@ -94,7 +94,8 @@ def _partial(n: Named, answer: object, unit: object, given: Mapping, open_units:
     if len(free) != 1 or next(iter(free)) not in open_units:
         return []
     (p,) = free
-    number = sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float, lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
+    number = sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float,  # √, not ^0.5
+                                    lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
     return [_line(n, n.name, number, _text(unit), Note(Beside.OPEN, open=(p.name, open_units[p])))]
 
 

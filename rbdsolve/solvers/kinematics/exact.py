@@ -123,11 +123,11 @@ def _line(a: str, b: str, general: dict, state: dict, model: Model) -> LineTurni
         raise UnsolvedError(f"the line {a}{b} leaves the x-y plane: its turning is answered for points in the plane "
                             "(a line in space turns about no one axis; ask a body's angular velocity, 'bodies:')")
     dr, dv, da = (general[b][k] - general[a][k] for k in range(3))
-    cross = lambda u, w: u[0] * w[1] - u[1] * w[0]  # noqa: E731
-    square, turn = dr.dot(dr), cross(dr, dv)
+    square, turn = dr.dot(dr), dr.cross(dv)[2]  # the points are 3-vectors with z = 0
     rate = turn / square
-    acceleration = (cross(dr, da) * square - 2 * turn * dr.dot(dv)) / square**2
-    return LineTurning((a, b), *(model.to_time(tidy(sp.cancel(sp.expand(x.xreplace(state))))) for x in (rate, acceleration)))
+    acceleration = (dr.cross(da)[2] * square - 2 * turn * dr.dot(dv)) / square**2
+    return LineTurning((a, b), *(model.to_time(tidy(sp.cancel(sp.expand(x.xreplace(state)))))
+                                 for x in (rate, acceleration)))
 
 
 def _distance(a: str, b: str, general: dict, state: dict, model: Model) -> Distance:

@@ -194,9 +194,8 @@ def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, start: s
     """The forces where the motion released from rest gets to, q = ``to``: the forces
     along the motion there, with q̇² there; where the motion does not get there
     (``_gets_there``: q̇² < 0 there, or on the way) no force is given (``there_reached``
-    false; None where the parameters decide it, the forces then given for where it does). With every value given, a
-    contact lost on the way (``first_zero``) is said: past it the forces are not the
-    motion's."""
+    false; None where the parameters decide it, the forces then given for where it
+    does)."""
     table = {model.q[0]: to}
     w2 = at_state(rate_squared, table)
     reached = _gets_there(model, rate_squared, start, to, w2)
