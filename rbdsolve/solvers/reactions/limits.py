@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import mpmath
 import sympy as sp
 
 from rbdsolve.form.tidy import tidy_fraction
@@ -32,8 +33,12 @@ from rbdsolve.form.zero import simplifies_to_zero
 
 
 def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
-    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c; None
-    where that has no closed form.
+    """Where a force of q alone vanishes: cos q = c (|c| ≤ 1), sin q = c, or q = c; a
+    factor of the numerator of degree 3 or more in sin q (or cos q, once cos² q =
+    1 − sin² q is put in where cos q enters in even powers) left as its equation,
+    P(sin q) = 0: its closed forms (Cardano's) hold i where its roots are real, and
+    dropping them dropped the root (a ladder with a load at its top leaving the wall);
+    None where that has no closed form.
 
     |u| vanishes where u does, and |u|/u (a push along a normal that turns, ±1) nowhere:
     each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
@@ -45,15 +50,60 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
     top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
         return []
+    if trig_transcendental(top, q):
+        return None
+    read = [(f, _implicit(f, q, model)) for f, _ in sp.factor_list(top)[1] if f.has(q)]
+    implicit = [w for _, w in read if w is not None]
+    rest = sp.Mul(*(f for f, w in read if w is None))
+    return [*_closed_zeros(rest, q, model), *implicit] if rest.has(q) else implicit
+
+
+IMPLICIT_DEGREE = 3  # a factor of this degree in sin q (cos q) is left as its equation
+
+
+def _closed_zeros(top: sp.Expr, q: sp.Symbol, model: Model) -> list[sp.Relational]:
+    """cos q = c where top is a polynomial in cos q alone, sin q = c in sin q alone,
+    else sympy's roots in q (each of degree < 3 in sin q and cos q: ``_implicit``)."""
     c = sp.Dummy("c", real=True)
     for f in (sp.cos, sp.sin):
         swapped = top.xreplace({f(q): c})
         if not swapped.has(q):
             roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
-    if trig_transcendental(top, q):
-        return None
     return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
+
+
+def _implicit(factor: sp.Expr, q: sp.Symbol, model: Model) -> sp.Relational | None:
+    """P(sin q) = 0 (P(cos q) = 0), its highest coefficient positive, for a factor that
+    is a polynomial of degree 3 or more in one of them, the other in even powers only."""
+    c = sp.Dummy("c", real=True)
+    for f, other in ((sp.sin, sp.cos), (sp.cos, sp.sin)):
+        swapped = _even_powers_swapped(factor, q, other, f).xreplace({f(q): c})
+        if swapped.has(q) or sp.degree(swapped, c) < IMPLICIT_DEGREE:
+            continue
+        side = sp.expand(-swapped if sp.Poly(swapped, c).LC().could_extract_minus_sign() else swapped)
+        return sp.Eq(side.xreplace({c: f(model.to_time(q))}), 0)
+    return None
+
+
+def _even_powers_swapped(expr: sp.Expr, q: sp.Symbol, other, f) -> sp.Expr:
+    """expr with other(q)² = 1 − f(q)² put in, where other(q) enters in even powers only."""
+    x = sp.Dummy("x")
+    swapped = sp.expand(expr).xreplace({other(q): x})
+    if not swapped.has(x):
+        return expr
+    try:
+        poly = sp.Poly(swapped, x)
+    except sp.PolynomialError:
+        return expr
+    if any(k % 2 for (k,) in poly.monoms()):
+        return expr
+    return sp.expand(swapped.xreplace({x: sp.sqrt(1 - f(q) ** 2)}))
+
+
+def is_implicit(where: sp.Relational) -> bool:
+    """A zero left as its equation, P(sin q) = 0 (``zeros``): not cos q = c nor q = c."""
+    return where.rhs == 0 and not isinstance(where.lhs, (sp.sin, sp.cos)) and not where.lhs.is_Function
 
 
 def _real_roots(expr: sp.Expr, x: sp.Symbol) -> list[sp.Expr]:
@@ -162,8 +212,11 @@ def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
 
 def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
     """q̇² ≥ 0 at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
-    sin q = c), or q = c; kept (true) where q̇² holds q otherwise."""
+    sin q = c), or q = c; kept (true) where q̇² holds q otherwise, or the zero is left as
+    its equation (``is_implicit``)."""
     q = model.q[0]
+    if is_implicit(where):
+        return Holds(sp.false if _no_root_within_one(where.lhs, model) else sp.true, ())
     side = where.lhs.xreplace({model.to_time(q): q})
     c = where.rhs
     if side == q:
@@ -174,6 +227,28 @@ def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds
     if value.has(q):
         return Holds(sp.true, ())
     return _nonnegative(clean_fraction(value), model)
+
+
+def implicit_variable(where: sp.Relational, model: Model) -> sp.Expr:
+    """sin q(t) (cos q(t)) of a zero left as its equation, P(sin q) = 0."""
+    q = model.to_time(model.q[0])
+    return next(a for a in where.lhs.atoms(sp.sin, sp.cos) if a.args[0] == q)
+
+
+def _no_root_within_one(P: sp.Expr, model: Model) -> bool:
+    """P(sin q) (P(cos q)) has no real root of modulus ≤ 1 where the parameters' values
+    make its coefficients numbers (the roots to 30 digits, mpmath's polyroots); False
+    where they do not decide it."""
+    f = implicit_variable(sp.Eq(P, 0, evaluate=False), model)
+    P = P.xreplace(model.decided_by) if model.decided_by else P
+    x = sp.Dummy("x")
+    poly = sp.Poly(P.xreplace({f: x}), x)
+    if any(not c.is_number for c in poly.all_coeffs()):
+        return False
+    with mpmath.workdps(30):
+        roots = mpmath.polyroots([mpmath.mpmathify(sp.N(c, 30)) for c in poly.all_coeffs()], maxsteps=200,
+                                 extraprec=60)
+        return not any(abs(mpmath.im(r)) <= 1e-20 and abs(mpmath.re(r)) <= 1 + 1e-20 for r in roots)
 
 
 def _within(c: sp.Expr) -> bool:

@@ -8,12 +8,14 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.arrange import descending
 from rbdsolve.form.display import Relation
 from rbdsolve.model.build import Model
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.reactions.applied import Applied, applied
 from rbdsolve.solvers.reactions.balances import Balance
+from rbdsolve.solvers.reactions.limits import implicit_variable, is_implicit
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import state_step
 from rbdsolve.solvers.conditions.conditions import critical_values
@@ -133,6 +135,21 @@ def no_energy_note(model: Model) -> st.Step:
                    "the forces are given at release only.")
 
 
+def _zero(where: sp.Relational, model: Model) -> Relation:
+    """cos q = c as it is; P(sin q) = 0 highest power first, its coefficients factored."""
+    if not is_implicit(where):
+        return Relation(where.lhs, where.rhs)
+    return Relation(descending(sp.Poly(where.lhs, implicit_variable(where, model))), sp.Integer(0))
+
+
+def _implicit_note(where: sp.Relational, model: Model) -> str:
+    f = implicit_variable(where, model)
+    degree = sp.Poly(where.lhs, f).degree()
+    return (f"That equation is of degree {degree} in {to_unicode(f)}: its roots are not written in closed form "
+            "(Cardano's and Ferrari's forms hold i where the roots are real); where the parameters have values, "
+            "the numeric values give the one the motion reaches first.")
+
+
 def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict,
                 unsolved: tuple[str, ...] = ()) -> list[st.Step]:
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
@@ -145,7 +162,10 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
             lost_how = "the string goes slack" if name in strings else "the contact is lost" + (
                 " (it can only push, N ≥ 0; a bead threaded on its wire, held both ways, is 'two_sided: true')"
                 if name in guides else "")
-            steps.append(st.result(f"{name} = 0, so {lost_how}, where:", *[Relation(eq.lhs, eq.rhs) for eq in where]))
+            steps.append(st.result(f"{name} = 0, so {lost_how}, where:", *[_zero(eq, model) for eq in where]))
+            implicit = [eq for eq in where if is_implicit(eq)]
+            if implicit:
+                steps.append(st.note(_implicit_note(implicit[0], model)))
             for eq, h in zip(where, reached[name]):
                 if h.condition is not sp.true:
                     named = critical_values(h.criticals)
