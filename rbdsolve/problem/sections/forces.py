@@ -76,12 +76,24 @@ def _contact(c: Contact, loc) -> Support:
 
 
 def _no_twice(supports: tuple[Support, ...]) -> None:
-    seen = set()
+    """Each force asked once, and at a point of its own: the answers (N_P, R_Px, the
+    JSON's ``at.P``) are named after the point, so two supports at one point would
+    answer under one name, one of them lost."""
+    seen: dict[str, Support] = {}
     for s in supports:
-        key = (s.point, frozenset({s.on, s.by}))
-        if key in seen:
+        first = seen.get(s.point)
+        if first is not None and frozenset({first.on, first.by}) == frozenset({s.on, s.by}):
             raise InputError(f"the force at '{s.point}' on '{s.on}' is asked twice", s.loc)
-        seen.add(key)
+        if first is not None:
+            raise InputError(f"two forces are asked at point '{s.point}' ({_between(first)}, and {_between(s)}): "
+                             f"the answers are named after their point, so one would hide the other; give the "
+                             f"second a point of its own at the same place (points: {{{s.point}2: {s.point}}}, then "
+                             f"{{at: {s.point}2, on: {s.on}, …}})", s.loc)
+        seen[s.point] = s
+
+
+def _between(s: Support) -> str:
+    return f"on '{s.on}'" + (f" by '{s.by}'" if s.by else "")
 
 
 class _Supports:
