@@ -6,7 +6,8 @@ equilibrium, λ = 0). The solvers warn of it (``model/summary/summary.py``).
 Used means named by an expression anywhere but ``parameters:`` themselves, ``values:``
 (a value uses nothing) and ``assumptions:`` (a bound on a parameter that nothing else
 holds decides nothing): points, bodies, springs, gravity, frames, prescribed motions,
-contacts, coordinate ranges and every question's options.
+contacts, coordinate ranges and every question's options; and `Omega` where a steady spin's
+answers are written in it.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.schema import Parameter, Problem
+from rbdsolve.problem.schema import Parameter, Problem, QuestionKind
 
 NOT_USES = frozenset({"parameters", "values", "ranges", "assumptions", "dimensions"})
 
@@ -26,7 +27,12 @@ def unused_parameters(problem: Problem) -> tuple[Parameter, ...]:
     for field in dataclasses.fields(problem):
         if field.name not in NOT_USES:
             _collect(getattr(problem, field.name), used)
+    if any(q.kind is QuestionKind.STEADY_SPIN for q in problem.questions):
+        used.add(SPIN_SIZE)
     return tuple(p for p in problem.parameters if p.name not in used)
+
+
+SPIN_SIZE = "Omega"  # a steady spin's size Ω in its answers (solvers/steady_spin), named by no expression
 
 
 def _collect(value: object, used: set[str]) -> None:

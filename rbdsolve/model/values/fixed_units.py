@@ -138,3 +138,9 @@ def torsional_stiffnesses(problem) -> frozenset[str]:
     of a spring with an ``angle``), in N·m/rad."""
     return frozenset(spring.stiffness.tree.id for spring in problem.springs
                      if spring.ends is None and isinstance(spring.stiffness.tree, ex.Name))
+
+
+def couple_moments(problem) -> frozenset[str]:
+    """The parameters a couple's moment is written in (``moment: C0``, ``C0*[0, 0, 1]``):
+    M L² T⁻², a torque, in N·m, not J (an energy has the same dimension)."""
+    return frozenset(name for couple in problem.couples for name in couple.moment.names())

@@ -39,7 +39,8 @@ from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.report.numbers import Path
 from rbdsolve.model.values.tree import map_paths
-from rbdsolve.model.values.fixed_units import TORSIONAL, fixed_unit, torsional_stiffnesses
+from rbdsolve.model.values.fixed_units import (TORSIONAL, couple_moments, fixed_unit,
+                                                torsional_stiffnesses)
 from rbdsolve.model.values.numbers import at
 from rbdsolve.model.values.values import CONDITIONS
 
@@ -221,14 +222,15 @@ def _valued(expr: sp.Expr, model: Model, open_ones: frozenset = frozenset()) -> 
 
 def parameter_units(model: Model) -> dict[str, str]:
     """The SI unit of each parameter whose dimension is known ('' for a pure number); a
-    torsional spring's stiffness in N·m/rad."""
+    torsional spring's stiffness in N·m/rad, a couple's moment in N·m."""
     return problem_units(model.problem)
 
 
 def problem_units(problem) -> dict[str, str]:
     """``parameter_units`` read from the problem alone (a variants table has no model)."""
-    torsional = torsional_stiffnesses(problem)
-    return {name: TORSIONAL if name in torsional else d.unit for name, d in problem.dimensions}
+    torsional, torques = torsional_stiffnesses(problem), couple_moments(problem)
+    return {name: TORSIONAL if name in torsional else "N·m" if name in torques and d == ENERGY else d.unit
+            for name, d in problem.dimensions}
 
 
 def known_dimensions(model: Model) -> dict[object, Dimension]:

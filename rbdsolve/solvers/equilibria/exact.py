@@ -31,6 +31,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
+from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.angles import angle_of
@@ -487,7 +488,7 @@ def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -
     one under a condition on the parameters (uniform.py); else there is none."""
     found = uniform_equilibrium(model, grad, first)
     if found is None:
-        never = never_balanced(model, grad)
+        never = never_balanced(model, grad) or _no_real_root(model)
         if never is None:
             raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
         answers = EquilibriaAnswers(())  # an answer, not a failure: the loads never balance here
@@ -495,6 +496,22 @@ def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -
     equilibrium, warning = found
     answers = EquilibriaAnswers((equilibrium,), critical=_balancing(equilibrium.exists_when, model))
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False), warnings=(warning,))
+
+
+def _no_real_root(model: Model):
+    """The step that says there is no equilibrium at the parameter values, where ∂V/∂q =
+    0 is polynomial in the coordinates, their sines and cosines, so that its roots are
+    all found (a Gröbner basis), and none is real there (a disk held by a couple past
+    m g R: sin θ = C₀/(m g R) > 1); None otherwise (a list that may be partial proves
+    nothing)."""
+    found = structure(model)
+    if not model.values or found.shape is not Shape.POLYNOMIAL or found.why_partial is not None:
+        return None
+    if find_equilibria(model)[0]:  # roots there, set aside for another reason (a contact off its edge)
+        return None
+    return st.note("At the parameter values, ∂V/∂q = 0 (polynomial in the coordinates, their sines and cosines, "
+                   "so every root is found) has no real root: the loads never balance, so there is no "
+                   "equilibrium (with other values, or one left open, the roots and where they exist are given).")
 
 
 def _balancing(where: sp.Basic, model: Model) -> tuple[CriticalValue, ...]:

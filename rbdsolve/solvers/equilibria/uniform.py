@@ -93,18 +93,23 @@ def _angle(f: sp.Expr, p: sp.Symbol) -> bool:
 
 
 def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
-    """The step that says there is no equilibrium at the parameter values, where ∂V/∂q
-    holds no coordinate and a component of it is a nonzero number there (the block is
-    pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −0.6342); None otherwise."""
-    if not model.values or any(g.has(*model.q) for g in grad):
-        return None
+    """The step that says there is no equilibrium, where a component of ∂V/∂q holds no
+    coordinate and is not 0: a nonzero number at the parameter values (the block is
+    pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −0.6342), or of one
+    sign for every value allowed (a cart pulled by F > 0: ∂V/∂x = −F, whatever the
+    pendulum on it does); None otherwise."""
     names = model.coordinate_names()
+    every = ", ".join(unicode_name(x) for x in names)
     for name, g in zip(names, grad):
-        value = g.xreplace(dict(model.values))
+        if g == 0 or g.has(*model.q):
+            continue
+        shown = f"∂V/∂{unicode_name(name)} = {to_unicode(model.readable(g))}"
+        value = g.xreplace(dict(model.values)) if model.values else g
         if value.is_number and value != 0:
-            every = ", ".join(unicode_name(x) for x in names)
             number = f"{float(value):.6g}".replace("-", "−")
-            return st.note(f"At the parameter values ∂V/∂{unicode_name(name)} = {to_unicode(model.readable(g))} = "
-                           f"{number}, not 0, and the same at every {every}: the loads never balance, so there is no "
-                           "equilibrium.")
+            return st.note(f"At the parameter values {shown} = {number}, not 0, and the same at every {every}: the "
+                           "loads never balance, so there is no equilibrium.")
+        if _signed(g, model):
+            return st.note(f"{shown} is not 0 for any value the parameters may take, and the same at every {every}: "
+                           "the loads never balance, so there is no equilibrium.")
     return None

@@ -87,6 +87,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if missing:
         raise UnsolvedError(missing)
     answers, steps = modes_at(at, model, where, first)
+    answers = replace(answers, exists_when=where)  # a script reads where it holds, as the text says
     if where is not sp.true:  # a case outside it is left out: say so
         steps = (st.note("The equilibrium exists only where the following holds; its small motions are "
                          "answered there:", *condition_relations(where)), *steps)

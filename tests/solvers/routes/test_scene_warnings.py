@@ -86,3 +86,52 @@ def test_a_parameter_used_nowhere_is_warned_about() -> None:
     for solution in _report(text).solutions:
         assert any(w.startswith("parameter 'c' is declared but used nowhere") and "gravity:" not in w
                    for w in solution.warnings)
+
+
+SPINNING = """
+title: A box spinning freely about a principal axis, its spin named Omega
+parameters: {m: mass, a: length, Omega: spin rate}
+values: {m: 1 kg, a: 10 cm, Omega: 10 rad/s}
+bodies:
+  box: {shape: box, mass: m, width: a, depth: 2*a, height: 3*a, at: [0, 0, 0]}
+questions:
+  - steady_spin
+"""
+
+
+def test_omega_is_a_steady_spins_size_so_it_is_not_unused() -> None:
+    # docs/format.md: a parameter named Omega is the spin's size in the answers (a trial was told otherwise)
+    (solution,) = _report(SPINNING).solutions
+    assert not any("used nowhere" in w for w in solution.warnings)
+    (solution,) = _report(SPINNING.replace("Omega", "W")).solutions  # any other name is unused here
+    assert any(w.startswith("parameter 'W' is declared but used nowhere") for w in solution.warnings)
+
+
+COUPLED = """
+title: A disk on a fixed axle turned by a couple C against a rim weight
+parameters: {M: mass, m: mass, R: length, C: the applied couple, g: gravity}
+values: {M: 2 kg, m: 0.5 kg, R: 20 cm, g: 9.81 m/s^2}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  P: R*[sin(theta), -cos(theta)]
+bodies:
+  wheel: {shape: disk, mass: M, radius: R, at: [0, 0], angle: theta}
+  bob: {shape: particle, mass: m, at: P}
+couples:
+  drive: {on: wheel, moment: C}
+questions:
+  - modes: {about: {theta: asin(C/(m*g*R))}}
+"""
+
+
+def test_a_couple_is_in_newton_metres_and_the_modes_json_says_where_the_equilibrium_exists() -> None:
+    from rbdsolve.model.values.units import parameter_units
+
+    model = build_model(load_text(COUPLED, "c.yaml"))
+    assert parameter_units(model)["C"] == "N·m"  # a torque, not an energy (J)
+    (solution,) = solve_problem(model).solutions
+    # sin θ₀ = C/(m g R) needs C ≤ m g R, by hand; the text says so, and the answers too
+    assert solution.answers.exists_when == sp.Le(sp.Symbol("C", positive=True),
+                                                 sp.Symbol("R", positive=True) * sp.Symbol("g", positive=True)
+                                                 * sp.Symbol("m", positive=True))
