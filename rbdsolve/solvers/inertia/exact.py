@@ -142,7 +142,7 @@ def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: s
     d = (body.position - P).applyfunc(tidy)
     term = parallel_axis(body.mass, d).applyfunc(tidy)
     J = (J_G + term).applyfunc(tidy)
-    return J, shift_steps(label, d, J_G, term, J, symbols)
+    return J, shift_steps(label, d, J_G, term, J, symbols, body.mass)
 
 
 def frame_matrix(opts: InertiaOptions, model: Model) -> sp.Matrix:

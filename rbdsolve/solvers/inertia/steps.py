@@ -9,13 +9,13 @@ import sympy as sp
 from rbdsolve.form.arrange import descending, scaled_matrix
 from rbdsolve.form.display import Label, Relation, Scaled, Terms
 from rbdsolve.form.factor import factored
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model, RigidBody, part_properties
 from rbdsolve.model.inertia import parallel_axis
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.routes.labels import labels_for
 
-STEINER = Label("m (|d|² 1 − d dᵀ)", r"m\,(|d|^2 \mathbf{1} - d\,d^{T})")
 
 
 CONVENTION = ("Products of inertia are the tensor's off-diagonal entries, J_xy = −∫ x y dm "
@@ -79,12 +79,17 @@ def scene_axes_step(J_G: sp.Matrix, symbols: set) -> st.Step:
 
 
 def shift_steps(label: str, d: sp.Matrix, J_G: sp.Matrix, term: sp.Matrix, J: sp.Matrix,
-                symbols: set) -> list[st.Step]:
-    """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P, as the exam writes it."""
+                symbols: set, mass: sp.Expr) -> list[st.Step]:
+    """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P, as the exam writes it, m the body's
+    own mass as the problem writes it (3 m for a composite: a bare m would read as the
+    problem's parameter m)."""
+    m, tex = to_unicode(mass), sp.latex(mass)
+    m, tex = (f"({m})", rf"\left({tex}\right)") if isinstance(mass, sp.Add) else (m, tex)
+    steiner = Label(f"{m} (|d|² 1 − d dᵀ)", tex + r"\,(|d|^2 \mathbf{1} - d\,d^{T})")
     return [
         st.given(f"The centre of mass G relative to {label}:", Relation(sp.Symbol("d"), sp.ImmutableMatrix(d).T)),
-        st.equation(f"Parallel axis theorem, J_{label} = J_G + m (|d|² 1 − d dᵀ), with",
-                    Relation(STEINER, scaled_matrix(term, symbols))),
+        st.equation(f"Parallel axis theorem, J_{label} = J_G + {m} (|d|² 1 − d dᵀ), with",
+                    Relation(steiner, scaled_matrix(term, symbols))),
         st.result(f"About {label}:", Relation(sp.Symbol(f"J_{label}"), _sum(J_G, term, symbols),
                                                more=(scaled_matrix(J, symbols),))),
     ]
