@@ -74,10 +74,15 @@ def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
     tidied: √(d² + s²) = k L/(k − m Ω²) at the bead's off-centre equilibrium, not a nest
     of radicals."""
     signs = unsquared_where(at, model)
-    if not signs:
-        return H.applyfunc(tidy)
+    if not signs:  # √((h + l)²) at θ = 0 is h + l, |d − L| where the signs do not decide it
+        return H.applyfunc(lambda e: tidy(_roots_as_absolute(e)) if _radical(e, model) else tidy(e))
     known = {a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))}
     return H.applyfunc(lambda e: tidy(_roots_as_absolute(e).xreplace(known)))
+
+
+def _radical(expr: sp.Expr, model: Model) -> bool:
+    """Does expr hold a square root of parameters alone (a radicand the root put in)?"""
+    return any(square_root(p) and p.base.free_symbols and not p.base.has(*model.q) for p in expr.atoms(sp.Pow))
 
 
 def _roots_as_absolute(expr: sp.Expr) -> sp.Expr:

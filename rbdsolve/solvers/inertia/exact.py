@@ -50,6 +50,7 @@ from rbdsolve.solvers.inertia.steps import (
     scene_axes_step,
     shift_steps,
 )
+from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.model.values.values import sample
 from rbdsolve.form.zero import simplifies_to_zero
@@ -73,7 +74,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if opts.about is not None:
         about = about_point(opts, model, at)
         label = point_label(opts)
-        J, shift_steps = _shift(body, J_G, about, label, symbols)
+        J, shift_steps = _shift(body, J_G, about, label, symbols, _mass_shown(body, model))
         steps += shift_steps
     e, J_axis = axis_moment(opts, model, J)
     if e is not None:
@@ -137,12 +138,21 @@ def _undefined_axes(found: Principal, model: Model) -> tuple[str, ...]:
             "where that is zero; ask at that configuration (values for the coordinates) instead",)
 
 
-def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: set):
+def _mass_shown(body: RigidBody, model: Model) -> sp.Expr:
+    """The body's mass as its steps name it: M (the label the sum of its parts was given,
+    M = 3 m) for a body of parts, else its mass (m)."""
+    parts = body.source.parts
+    if len(parts) == 1 and not parts[0].hole:
+        return body.mass
+    return labels_for(model, "total_mass").symbol("total_mass")
+
+
+def _shift(body: RigidBody, J_G: sp.Matrix, P: sp.Matrix, label: str, symbols: set, mass: sp.Expr):
     """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P."""
     d = (body.position - P).applyfunc(tidy)
     term = parallel_axis(body.mass, d).applyfunc(tidy)
     J = (J_G + term).applyfunc(tidy)
-    return J, shift_steps(label, d, J_G, term, J, symbols, body.mass)
+    return J, shift_steps(label, d, J_G, term, J, symbols, mass)
 
 
 def frame_matrix(opts: InertiaOptions, model: Model) -> sp.Matrix:

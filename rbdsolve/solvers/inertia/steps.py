@@ -81,8 +81,8 @@ def scene_axes_step(J_G: sp.Matrix, symbols: set) -> st.Step:
 def shift_steps(label: str, d: sp.Matrix, J_G: sp.Matrix, term: sp.Matrix, J: sp.Matrix,
                 symbols: set, mass: sp.Expr) -> list[st.Step]:
     """J_P = J_G + m (|d|² 1 − d dᵀ), d = r_G − r_P, as the exam writes it, m the body's
-    own mass as the problem writes it (3 m for a composite: a bare m would read as the
-    problem's parameter m)."""
+    own mass as its steps name it (M for a body of parts, M = 3 m: a bare m would read as
+    the problem's parameter m)."""
     m, tex = to_unicode(mass), sp.latex(mass)
     m, tex = (f"({m})", rf"\left({tex}\right)") if isinstance(mass, sp.Add) else (m, tex)
     steiner = Label(f"{m} (|d|² 1 − d dᵀ)", tex + r"\,(|d|^2 \mathbf{1} - d\,d^{T})")

@@ -60,3 +60,37 @@ def test_an_angle_whose_sine_sign_is_open_is_asin_where_its_cosine_is_positive()
         theta = float(found.subs(beta, b))
         assert math.isclose(math.sin(theta), -3 * math.pi * math.sin(b) / 4, rel_tol=1e-12) and math.cos(theta) > 0
     assert angle_of(s, -c, {}).func is sp.atan2  # the other root: no closed sign for either, atan2 kept
+
+
+PENDULUM_SPRING = """
+title: A rod hanging from O, its end A tied by a spring (natural length h) to C, h above O
+parameters: {m: mass, l: length, h: length, k: stiffness, g: gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  C: [0, h]
+  G: l/2*[sin(theta), -cos(theta)]
+  A: l*[sin(theta), -cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: theta, axis: y}
+springs:
+  s: {stiffness: k, between: [A, C], natural_length: h}
+questions:
+  - equilibria: {for: k}
+"""
+
+
+def test_a_root_of_a_perfect_square_is_taken_at_the_hanging_position() -> None:
+    """By hand: |AC| = ρ(θ) = √(h² + 2 h l cos θ + l²), V = −½ m g l cos θ + ½ k (ρ − h)²;
+    at θ = 0, ρ = h + l, ρ' = 0, ρ'' = −h l/(h + l), so K = ½ m g l − k h l²/(h + l):
+    no √(h² + 2 h l + l²) left in it (a new user's trial printed one)."""
+    from rbdsolve.api import loads
+    from rbdsolve.solvers import solve_question
+
+    model = build_model(loads(PENDULUM_SPRING))
+    solution = solve_question(model.problem.questions[0], model)
+    m, l, h, k, g = (sp.Symbol(n, positive=True) for n in "mlhkg")
+    hanging = next(e for e in solution.answers.equilibria if list(e.at.values()) == [0])
+    (K,) = hanging.hessian
+    assert sp.simplify(K - (m * g * l / 2 - k * h * l**2 / (h + l))) == 0
+    assert not K.atoms(sp.Pow) & {p for p in K.atoms(sp.Pow) if p.exp == sp.Rational(1, 2)}
