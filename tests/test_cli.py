@@ -115,8 +115,9 @@ def test_json_keeps_one_line_per_file_even_for_bad_input(tmp_path) -> None:
 
 def test_unanswerable_question_exits_1(tmp_path) -> None:
     sliding = tmp_path / "slide.yaml"
-    sliding.write_text("parameters: {m: mass, g: gravity}\ncoordinates: [x]\ngravity: [0, -g]\n"
-                       "bodies:\n  b: {shape: particle, mass: m, at: [x, x]}\nquestions: [equilibria]\n")
+    sliding.write_text("parameters: {m: mass, g: gravity}\ncoordinates: [x]\ngravity: [0, -g]\n"  # ∂V/∂x > 0,
+                       "bodies:\n  b: {shape: particle, mass: m, at: [x, sqrt(x**2 + 1) + 2*x]}\n"  # no route
+                       "questions: [equilibria]\n")  # proves it: sympy's solve of a radical may miss roots
     result = run("solve", str(sliding))
     assert result.exit_code == 1
     assert "could not answer" in result.output and "no equilibrium" in result.output

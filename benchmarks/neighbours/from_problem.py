@@ -92,7 +92,7 @@ SUPPORTS = {  # the contacts' supports, for reactions
 }
 SUPPORTS.update({name: [Support("A", "ladder", "A", "guide", normal="[0, 1]"),  # the floor pushes up,
                         Support("B", "ladder", "B", "guide", normal="[1, 0]")]   # the wall at x = 0 to the right
-                 for name in ("ladder-released", "ladder-angle-from-floor")})
+                 for name in ("ladder-released", "ladder-angle-from-floor", "ladder-load-at-top")})
 SUPPORTS.update({name: [Support("O", "rod", "[0, 0]", "pivot")]
                  for name in ("ball-hits-pinned-rod", "bullet-embeds-in-hanging-rod", "pendulum-struck")})
 SUPPORTS["plate-struck-by-ball"] = [Support("O", "plate", "[0, 0]", "pivot")]

@@ -170,7 +170,7 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
-    reached = {k: tuple(exists(eq, model, e.rate_squared) for eq in where) for k, where in lost.items()}
+    reached = {k: tuple(exists(eq, model, e.rate_squared, table[model.q[0]]) for eq in where) for k, where in lost.items()}
     lost = {k: tuple(eq for eq, h in zip(where, reached[k]) if h.condition is not sp.false)
             for k, where in lost.items()}
     reached = {k: tuple(h for h in found if h.condition is not sp.false) for k, found in reached.items()}

@@ -16,6 +16,7 @@ while the friction it needs is within reach, |F| ≤ μ N. So
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mpmath
@@ -198,25 +199,26 @@ def _nonnegative(value: sp.Expr, model: Model) -> Holds:
     return Holds(found.condition, found.criticals)
 
 
-def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: sp.Expr | None = None) -> Holds:
     """Where the motion from rest reaches a zero cos q = c (sin q = c, q = c): |c| ≤ 1, and
     q̇² ≥ 0 there (the motion turns back before a zero where q̇² < 0 — a cylinder released
     inside a cylinder below the horizontal never leaves it); each solved for one parameter
-    where the parameters' signs do not decide it."""
-    parts = [_reached(where, model, rate_squared)]
+    where the parameters' signs do not decide it. A zero left as its equation (``is_implicit``)
+    is reached where, at the values, one of its roots lies on the way from ``start``."""
+    parts = [_reached(where, model, rate_squared, start)]
     c = where.rhs
     if isinstance(where.lhs, (sp.cos, sp.sin)) and c.free_symbols and not _within(c):
         parts += [_nonnegative(1 - c, model), _nonnegative(1 + c, model)]
     return Holds(sp.And(*(h.condition for h in parts)), tuple(c for h in parts for c in h.criticals))
 
 
-def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> Holds:
+def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: sp.Expr | None) -> Holds:
     """q̇² ≥ 0 at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
     sin q = c), or q = c; kept (true) where q̇² holds q otherwise, or the zero is left as
     its equation (``is_implicit``)."""
     q = model.q[0]
     if is_implicit(where):
-        return Holds(sp.false if _no_root_within_one(where.lhs, model) else sp.true, ())
+        return Holds(sp.false if _never_reached(where.lhs, model, rate_squared, start) else sp.true, ())
     side = where.lhs.xreplace({model.to_time(q): q})
     c = where.rhs
     if side == q:
@@ -235,20 +237,28 @@ def implicit_variable(where: sp.Relational, model: Model) -> sp.Expr:
     return next(a for a in where.lhs.atoms(sp.sin, sp.cos) if a.args[0] == q)
 
 
-def _no_root_within_one(P: sp.Expr, model: Model) -> bool:
-    """P(sin q) (P(cos q)) has no real root of modulus ≤ 1 where the parameters' values
-    make its coefficients numbers (the roots to 30 digits, mpmath's polyroots); False
-    where they do not decide it."""
+def _never_reached(P: sp.Expr, model: Model, rate_squared: sp.Expr, start: sp.Expr | None) -> bool:
+    """At the parameters' values, P(sin q) = 0 (P(cos q) = 0) has no real root x with
+    |x| ≤ 1 whose angles (asin x and π − asin x; ± acos x) the motion released from rest
+    at ``start`` gets to (``first_zero.reaches``); the roots to 30 digits (mpmath's
+    polyroots). False where the values do not decide it."""
+    from rbdsolve.solvers.reactions.first_zero import reaches
+
     f = implicit_variable(sp.Eq(P, 0, evaluate=False), model)
-    P = P.xreplace(model.decided_by) if model.decided_by else P
-    x = sp.Dummy("x")
-    poly = sp.Poly(P.xreplace({f: x}), x)
-    if any(not c.is_number for c in poly.all_coeffs()):
+    values, x = dict(model.values), sp.Dummy("x")
+    poly = sp.Poly(P.xreplace(values).xreplace({f: x}), x)
+    if start is None or any(not c.is_number for c in poly.all_coeffs()):
         return False
     with mpmath.workdps(30):
         roots = mpmath.polyroots([mpmath.mpmathify(sp.N(c, 30)) for c in poly.all_coeffs()], maxsteps=200,
                                  extraprec=60)
-        return not any(abs(mpmath.im(r)) <= 1e-20 and abs(mpmath.re(r)) <= 1 + 1e-20 for r in roots)
+    real = [float(mpmath.re(r)) for r in roots if abs(mpmath.im(r)) <= 1e-20 and abs(mpmath.re(r)) <= 1 + 1e-20]
+    q = model.q[0]
+    for c in (max(min(c, 1.0), -1.0) for c in real):
+        angles = (math.asin(c), math.pi - math.asin(c)) if isinstance(f, sp.sin) else (math.acos(c), -math.acos(c))
+        if any(reaches(rate_squared, q, start, sp.Float(a, 17), values) is not False for a in angles):
+            return False
+    return True
 
 
 def _within(c: sp.Expr) -> bool:
