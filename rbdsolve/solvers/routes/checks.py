@@ -158,6 +158,9 @@ def _inside(residual: Residual, points: list[Point], model, angles: dict, states
     return inside
 
 
+NOISE = mpmath.mpf(10) ** (6 - DIGITS)  # terms this small in DIGITS digits are roundings of zero
+
+
 def _failure(residual: Residual, point: Point) -> str | None:
     """What fails at the point ('∂V/∂θ at equilibrium 1 = 0.25, its terms of size 3.1'),
     or None where it holds or cannot be evaluated there."""
@@ -168,6 +171,8 @@ def _failure(residual: Residual, point: Point) -> str | None:
         except (_NotEvaluated, ZeroDivisionError, ValueError, TypeError, OverflowError):
             return None
         for what, value, size in found:
+            if size <= NOISE:  # every term a rounding of zero (sin π in 30 digits): 0 = 0, nothing to weigh
+                continue
             if mpmath.isfinite(value) and mpmath.isfinite(size) and abs(value) > TOLERANCE * size:
                 return (f"{what} = {mpmath.nstr(value, 6)}, not 0 (its terms are of size "
                         f"{mpmath.nstr(size, 6)}, tolerance {TOLERANCE:g} of that)")

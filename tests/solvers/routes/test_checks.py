@@ -147,3 +147,17 @@ def test_a_refused_answer_exits_1_and_says_whose_fault_it_is(monkeypatch) -> Non
     (equilibria,) = [r for r in json.loads(result.stdout)["results"] if r["question"] == "equilibria"]
     assert equilibria["ok"] is False and equilibria["route"] == "exact" and equilibria["answers"] is None
     assert "bug in rbdsolve" in equilibria["error"]
+
+
+def test_a_balance_whose_every_term_is_a_rounding_of_zero_passes() -> None:
+    """A ring on a drum at θ = π with R/r in sin(π R/r): each term of the x balance is
+    sin(3π) in 30 digits, ~1e-30, and their sum as large as they are (a trial's 'bug in
+    rbdsolve', exit 1); a term of ordinary size off by as much still fails."""
+    from rbdsolve.solvers.routes.checks import Point, _failure
+
+    model = _model()
+    a, b = (model.symbols.parameters[n] for n in ("a", "b"))
+    point = Point.of({a: sp.Integer(3), b: sp.Integer(1)})
+    rounding = a * sp.sin(sp.pi * a * b) + b * sp.sin(sp.pi * a) ** 2 + 2 * b * sp.sin(sp.pi * (a + b) / 2)
+    assert _failure(Vanishes("x balance", rounding), point) is None
+    assert "not 0" in _failure(Vanishes("x balance", a * b + sp.Rational(1, 10**6) - 3), point)
