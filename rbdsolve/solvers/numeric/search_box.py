@@ -77,7 +77,7 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
     if name is None:
         return Interval(-SEARCH_SCALE, SEARCH_SCALE, f"±{SEARCH_SCALE:g}: no length of the scene has a value")
     reach = SEARCH_SCALE * length
-    return Interval(-reach, reach, f"±{SEARCH_SCALE:g} × {name} = ±{length:g}, the scene's largest length")
+    return Interval(-reach, reach, f"±{SEARCH_SCALE:g} {name}; {name} = {length:g}, the scene's largest length")
 
 
 def _contact_span(model: Model, q: sp.Symbol) -> Interval | None:

@@ -48,7 +48,7 @@ def test_a_length_box_comes_from_the_scene_lengths_not_the_mass() -> None:
     assert (box.low, box.high) == pytest.approx((-3.0, 3.0))  # ±10 × a, not ±10 × 1000
     solution = equilibria_numeric.solve(None, model, Options())
     assert [eq.at["x"] for eq in solution.answers.equilibria] == pytest.approx([0.0], abs=1e-12)
-    assert any("x in [-3, 3] (±10 × a = ±0.3, the scene's largest length)" in w for w in solution.warnings)
+    assert any("x in [-3, 3] (±10 a; a = 0.3, the scene's largest length)" in w for w in solution.warnings)
 
 
 def test_a_declared_range_is_the_box() -> None:
@@ -76,7 +76,7 @@ def test_a_rolling_wheel_s_declared_range_and_its_default(tmp_path) -> None:
     plain = tmp_path / "w.yaml"
     plain.write_text(text.replace("x: {kind: length, range: [-m*g*e/(k*r), m*g*e/(k*r)]}", "x: length"))
     for file, box in ((path, "x in [-0.73575, 0.73575] (declared)"),
-                      (plain, "x in [-2, 2] (±10 × r = ±0.2, the scene's largest length)")):
+                      (plain, "x in [-2, 2] (±10 r; r = 0.2, the scene's largest length)")):
         solution = equilibria_numeric.solve(None, build_model(load_file(file)), Options())
         assert [eq.at["x"] for eq in solution.answers.equilibria] == pytest.approx(
             [-0.48453720205778310, 0.0, 0.48453720205778310], abs=1e-12)
