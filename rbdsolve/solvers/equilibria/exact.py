@@ -488,7 +488,7 @@ def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -
     one under a condition on the parameters (uniform.py); else there is none."""
     found = uniform_equilibrium(model, grad, first)
     if found is None:
-        never = never_balanced(model, grad) or _no_real_root(model)
+        never = never_balanced(model, grad, first) or _no_real_root(model)
         if never is None:
             raise UnsolvedError("∂V/∂q = 0 has no real solution: the system has no equilibrium")
         answers = EquilibriaAnswers(())  # an answer, not a failure: the loads never balance here

@@ -92,7 +92,7 @@ def _angle(f: sp.Expr, p: sp.Symbol) -> bool:
     return bool(trig) and not f.xreplace({x: sp.Dummy() for x in trig if x.args[0] == p}).has(p)
 
 
-def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
+def never_balanced(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None = None):
     """The step that says there is no equilibrium, where a component of ∂V/∂q holds no
     coordinate and is not 0: a nonzero number at the parameter values (the block is
     pulled harder than the hanging weight: ∂V/∂θ = R (g m₂ − F) = −0.6342), or of one
@@ -108,8 +108,21 @@ def never_balanced(model: Model, grad: tuple[sp.Expr, ...]):
         if value.is_number and value != 0:
             number = f"{float(value):.6g}".replace("-", "−")
             return st.note(f"At the parameter values {shown} = {number}, not 0, and the same at every {every}: the "
-                           "loads never balance, so there is no equilibrium.")
+                           f"loads never balance, so there is no equilibrium{_balancing(g, model, first)}.")
         if _signed(g, model):
             return st.note(f"{shown} is not 0 for any value the parameters may take, and the same at every {every}: "
                            "the loads never balance, so there is no equilibrium.")
     return None
+
+
+def _balancing(g: sp.Expr, model: Model, first: sp.Symbol | None) -> str:
+    """'; they would balance where cos(α) = r/R (= 0.5 here)': the relation g = 0 solved
+    for one parameter (the question's ``for:`` first), its side in numbers; '' where g = 0
+    is solved for none."""
+    relation = _vanishes(g, model, first)
+    if relation is None:
+        return ""
+    side = relation.rhs.xreplace(dict(model.values))
+    number = f" (= {float(side):.6g} here)".replace("-", "−") if side.is_number and relation.rhs.free_symbols else ""
+    return f"; they would balance where {to_unicode(model.readable(relation.lhs))} = " \
+           f"{to_unicode(model.readable(relation.rhs))}{number}"

@@ -38,6 +38,10 @@ def test_pulled_harder_than_the_hanging_weight_there_is_no_equilibrium():
     assert solution.solved and solution.answers.equilibria == ()
     note = solution.steps[-1].text
     assert "∂V/∂θ" in note and "−0.6342" in note and "no equilibrium" in note  # 0.12 (14.715 − 20)
+    assert note.endswith("they would balance where m₂ = F/g (= 2.03874 here).")  # 20/9.81, by hand
+    model = build_model(loads(SCENE.replace("FORCE", "20 N").replace("  - equilibria", "  - equilibria: {for: F}")))
+    note = solve_question(model.problem.questions[0], model).steps[-1].text
+    assert note.endswith("they would balance where F = g m₂ (= 14.715 here).")  # asked for F: m₂ g
 
 
 def test_pulled_with_the_hanging_weight_every_place_is_one():
