@@ -28,6 +28,7 @@ class Meaning(Enum):
     FREQUENCY = "frequency"  # an angular frequency ω: its period 2π/ω beside it
     ENERGY_LOST = "energy_lost"  # Tᵢ − T_f: negative reads as an energy gained
     FRACTION = "fraction"  # a ratio shown also as a percentage
+    LEAST = "least"  # a least value asked (the friction a contact needs): written μ_C ≥ 0.145588
 
 
 @dataclass(frozen=True)

@@ -145,6 +145,8 @@ def _scalar(n: Named, name: sp.Basic, x: float, unit: object) -> Number:
         note = Note(Beside.PERCENT, (100 * x,))
     elif unit == "rad":
         note = _degrees([x])
+    if n.meaning is Meaning.LEAST:
+        return Number(Relation(name, sp.Float(x), op="≥"), unit, note, n.group, n.accuracy, n.path)
     return _line(n, name, sp.Float(x), unit, note)
 
 

@@ -31,6 +31,7 @@ class ReactionsAnswers:
     along: dict[str, dict[str, sp.Expr]] | None = None  # name -> component -> value, a function of q
     contact_lost: dict[str, tuple[sp.Basic, ...]] | None = None  # N or T -> where it is zero (Eq's)
     least_friction: dict[str, sp.Expr] | None = None  # rolling contact -> least μ = |F|/N
+    least_friction_at: dict[str, sp.Expr] | None = None  # at the state asked: rolling contact -> least μ there
     # at the state: support -> when it holds (N ≥ 0, T ≥ 0, μ_C ≥ |F|/N), solved for one parameter
     holds_when: dict[str, sp.Basic] | None = None
     # N or T -> where each of its zeros along the motion exists (|c| ≤ 1), as ``contact_lost``

@@ -13,6 +13,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -75,7 +76,8 @@ def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | N
     at = {s.name: _reaction(s, there, table) for s in supports}
     limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
     answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()},
-                       holds_when={k: model.to_time(h.condition) for k, h in limits.items()})
+                       holds_when={k: model.to_time(h.condition) for k, h in limits.items()},
+                       least_friction_at=_least_friction_at(model, supports, at, limits))
     criticals = [c for h in limits.values() for c in h.criticals]
     steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
     warnings: tuple[str, ...] = ()
@@ -83,6 +85,20 @@ def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | N
         answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers, to)
         steps, criticals = steps + more, criticals + found
     return answers, steps, criticals, warnings
+
+
+def _least_friction_at(model: Model, supports, at: dict[str, Reaction], limits: dict) -> dict[str, sp.Expr] | None:
+    """μ ≥ |F|/N at the state asked, per rolling contact that pushes there (``least_mu``):
+    the number an exam asks for ("the least coefficient of friction at release"), which
+    ``holds_when`` holds only inside a condition."""
+    found = {}
+    for s in supports:
+        if s.how is not How.ROLLING or limits[s.name].condition is sp.false:
+            continue
+        N, F = (at[s.name].components[str(c.symbol)] for c in s.components)
+        if not simplifies_to_zero(N):
+            found[s.name] = model.to_time(least_mu(F, N, model))
+    return found or None
 
 
 def _reaction(s: Held, values: dict[sp.Symbol, sp.Expr], table: dict | None = None) -> Reaction:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import Model
-from rbdsolve.report.numbers import Named
+from rbdsolve.report.numbers import Meaning, Named
 from rbdsolve.solvers.routes.naming import coordinate, criticals, state
 
 
@@ -24,6 +24,8 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
         if name in at or not hasattr(r, "components"):
             continue  # the state asked names it already; a line is written only where its numbers are known
         out += [Named(("reactions", name, "components", c), sp.Symbol(c), "Forces") for c in r.components]
+    out += [Named(("least_friction_at", c), sp.Symbol(f"mu_{c}"), "At the state asked", Meaning.LEAST)
+            for c in (getattr(answers, "least_friction_at", None) or {})]
     out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
     out += [Named(("there", name, "components", c), sp.Symbol(c), "Where the motion gets to")
             for name, r in (getattr(answers, "there", None) or {}).items() for c in r.components]
