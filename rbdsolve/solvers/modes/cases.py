@@ -56,12 +56,12 @@ def absent(at: dict, where: sp.Basic, model: Model) -> str | None:
     return None
 
 
-def _for_every_value(K: sp.Matrix, model: Model, nonzero: Mapping) -> bool:
-    """Is K definite (all its eigenvalues of one sign) for every value the assumptions
-    allow, where the equilibrium is defined (its roots real, its denominators ≠ 0), not
-    only at the values given?"""
+def _for_every_value(K: sp.Matrix, model: Model, nonzero: Mapping, counts: Inertia) -> bool:
+    """Is K definite (all its eigenvalues of one sign), or of the inertia ``counts``, for
+    every value the assumptions allow, where the equilibrium is defined (its roots real,
+    its denominators ≠ 0), not only at the values given?"""
     found = matrix_inertia(K.xreplace({**roots_where_defined(K), **nonzero}), model.assumed)
-    return isinstance(found, Inertia) and K.rows in (found.positive, found.negative)
+    return isinstance(found, Inertia) and (K.rows in (found.positive, found.negative) or found == counts)
 
 
 def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basic = sp.true,
@@ -79,14 +79,15 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
     denominators is ≠ 0 (``nonzero_where_defined``: λ = −Ω² sin² α < 0 where s = g cos α/(Ω² sin² α))."""
     counts = decided_inertia(K, model, at)
     nonzero = nonzero_where_defined(at.values()) if at else {}
+    zeros = sum(1 for lam in eigenvalues if lam == 0)
     motions, cases, criticals = [], [], []
     for lam in eigenvalues:
         sign = _decided_sign(lam, model, nonzero)
         by_inertia = False  # decided by K's inertia, which holds for every value allowed: no cases to say
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
-            sign = 1 if counts.positive == len(eigenvalues) else -1 if counts.negative == len(eigenvalues) else sign
-            by_inertia = not isinstance(sign, Undecided) and _for_every_value(K, model, nonzero)
+            sign = _sign_by_inertia(counts, len(eigenvalues), zeros, sign)
+            by_inertia = not isinstance(sign, Undecided) and _for_every_value(K, model, nonzero, counts)
         if isinstance(sign, Undecided):
             found = _cases(lam, model, where, first) or _cases_at_values(lam, model, where, first)
             if found is None:
@@ -112,6 +113,18 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
 
 
 KIND = {1: Motion.OSCILLATION, 0: Motion.NEUTRAL, -1: Motion.GROWTH}
+
+
+def _sign_by_inertia(counts: Inertia, n: int, zeros: int, sign: int | Undecided) -> int | Undecided:
+    """A λ not 0 itself, by K's inertia (M positive definite: as many λ of each sign as K
+    has eigenvalues): all of one sign, or K semidefinite with its zero eigenvalues each
+    a λ written 0 (two carts and a pendulum, free along the track: K ≥ 0, one λ = 0,
+    the other two positive)."""
+    if counts.positive == n or (counts.negative == 0 and counts.zero == zeros):
+        return 1
+    if counts.negative == n or (counts.positive == 0 and counts.zero == zeros):
+        return -1
+    return sign
 
 
 def _decided_sign(lam: sp.Expr, model: Model, nonzero: Mapping[sp.Expr, sp.Dummy]) -> int | Undecided:

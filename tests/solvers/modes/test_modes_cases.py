@@ -253,3 +253,42 @@ def test_modes_about_an_equilibrium_that_exists_somewhere_say_where():
             assert bool(exists_when.subs(at)) is exists
             side = (a + x0).subs(at)  # the bead's distance from the axis, on the spring's side
             assert bool(side > 0) is exists
+
+
+CARTS = """
+title: Three carts on a smooth track joined by two springs, no walls
+parameters: {m1: mass, m2: mass, m3: mass, k1: stiffness, k2: stiffness, L: length}
+coordinates: [x1, x2, x3]
+points:
+  P1: [x1, 0]
+  P2: [x2 + L, 0]
+  P3: [x3 + 2*L, 0]
+bodies:
+  c1: {shape: particle, mass: m1, at: P1}
+  c2: {shape: particle, mass: m2, at: P2}
+  c3: {shape: particle, mass: m3, at: P3}
+springs:
+  s1: {stiffness: k1, between: [P1, P2], natural_length: L}
+  s2: {stiffness: k2, between: [P2, P3], natural_length: L}
+questions:
+  - modes: {about: {x1: 0, x2: 0, x3: 0}}
+"""
+
+
+def test_a_semidefinite_k_makes_every_nonzero_eigenvalue_positive() -> None:
+    """K = [[k1, −k1, 0], [−k1, k1 + k2, −k2], [0, −k2, k2]] ≥ 0 with one zero eigenvalue
+    (the carts move together), M > 0: by Sylvester's law the other two λ are positive,
+    though λ = (A − √(A² − 4B))/2 has no sign by itself (a trial's two carts and a
+    pendulum were refused). By hand, the nonzero λ solve m1 m2 m3 λ² − (k1 m3 (m1 + m2) +
+    k2 m1 (m2 + m3)) λ + k1 k2 (m1 + m2 + m3) = 0."""
+    from rbdsolve.api import loads
+    from rbdsolve.model.build import build_model
+    from rbdsolve.solvers import solve_question
+
+    model = build_model(loads(CARTS))
+    solution = solve_question(model.problem.questions[0], model)
+    assert [m.value for m in solution.answers.motions] == ["neutral", "oscillation", "oscillation"]
+    m1, m2, m3, k1, k2 = (model.symbols.parameters[n] for n in ("m1", "m2", "m3", "k1", "k2"))
+    _, a, b = solution.answers.eigenvalues
+    assert sp.simplify(a + b - (k1 * m3 * (m1 + m2) + k2 * m1 * (m2 + m3)) / (m1 * m2 * m3)) == 0
+    assert sp.simplify(sp.expand(a * b) - k1 * k2 * (m1 + m2 + m3) / (m1 * m2 * m3)) == 0
