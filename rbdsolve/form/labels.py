@@ -37,6 +37,7 @@ REGISTRY: dict[str, tuple[str, ...]] = {
     "energy_constant": ("h", "H", "h_E"),  # T + V = h, Jacobi's h: beside a hump of height h, H
     "amplitude": ("a", "X", "Y"),
     "total_mass": ("m", "M", "m_tot"),
+    "angular_momentum": ("L", "H", "L_ang"),  # L_O = J_G ω + r_OG × m v_G; H_O beside an axle of length L
     "angular_velocity": ("omega", "omega_b"),  # a body's ω beside a spin rate named omega
     "coordinate_index": ("a", "j", "k"),  # I_a, ∂T/∂q̇_a in the impact's prose
     "particle_mass": ("mu", "m_p"),  # u|i − P/μ: a sticking particle's mass

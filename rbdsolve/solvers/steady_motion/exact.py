@@ -38,6 +38,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.options import SteadyMotionOptions
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots
 from rbdsolve.model.values.values import parameter_sample
@@ -80,7 +81,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
                                   several, critical, _reactions(opts, k, names, targets, solved, along, held),
                                   _at_solutions(opts, targets, real, rates, tuple(b.omega)))
     loaded = any(opts.body in (x.body, x.by) for x in model.loads)
-    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w, loaded)
+    steps += balance_steps(answers, b.dL, b.v_P, opts, targets, b.a_G, w, loaded,
+                           labels_for(model, "angular_momentum").name("angular_momentum"))
     return Solution("steady_motion", Route.EXACT, answers, tuple(steps),
                     warnings=absent_at_values(several, critical, model))
 

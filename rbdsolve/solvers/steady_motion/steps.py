@@ -30,7 +30,10 @@ def omega_label(model: Model) -> sp.Symbol:
 
 
 def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptions, targets=(),
-                   a_G: sp.Matrix | None = None, w: sp.Symbol = OMEGA, loaded: bool = False) -> list[st.Step]:
+                   a_G: sp.Matrix | None = None, w: sp.Symbol = OMEGA, loaded: bool = False,
+                   L: str = "L") -> list[st.Step]:
+    """The angular momentum (named ``L``, H beside a parameter L: form/labels.py), its rate,
+    the moment and the balances, then what they are solved for."""
     e = answers.triad
     about = opts.about.text if opts.about.text.isidentifier() else "P"
     target = targets[0] if len(targets) == 1 else None
@@ -40,13 +43,13 @@ def balance_steps(answers: SteadyMotionAnswers, dL, v_P, opts: SteadyMotionOptio
     newton = ([st.equation("The acceleration of G (constant components, so a_G = Ω_T × v_G):",
                            Relation(sp.Symbol("a_G"), show(a_G, e)))] if a_G is not None else [])
     balances = ("Newton's law for G, m a_G = m g + Σ R, and the angular momentum balance "
-                f"dL/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
-                f"Angular momentum balance dL/dt + v_{about} × m v_G = M_{about}, component by component:")
+                f"d{L}/dt + v_{about} × m v_G = M_{about}, component by component:" if a_G is not None else
+                f"Angular momentum balance d{L}/dt + v_{about} × m v_G = M_{about}, component by component:")
     return [
-        st.definition(f"Angular momentum about {about}, L = J_G {to_unicode(w)} + r_{about}G × m v_G:",
-                      Relation(sp.Symbol(f"L_{about}"), show(answers.angular_momentum, e))),
-        st.equation("In a steady motion its components in the triad are constant, so dL/dt = Ω_T × L:",
-                    Relation(Label(f"dL_{about}/dt", f"\\dot{{L}}_{{{about}}}"), show(dL, e))),
+        st.definition(f"Angular momentum about {about}, {L} = J_G {to_unicode(w)} + r_{about}G × m v_G:",
+                      Relation(sp.Symbol(f"{L}_{about}"), show(answers.angular_momentum, e))),
+        st.equation(f"In a steady motion its components in the triad are constant, so d{L}/dt = Ω_T × {L}:",
+                    Relation(Label(f"d{L}_{about}/dt", f"\\dot{{{L}}}_{{{about}}}"), show(dL, e))),
         st.definition(f"The moment of {forces} about {about}, and the velocity of {about}:",
                       Relation(sp.Symbol(f"M_{about}"), show(answers.moment, e)),
                       Relation(sp.Symbol(f"v_{about}"), show(v_P, e))),
