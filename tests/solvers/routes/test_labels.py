@@ -98,3 +98,10 @@ def test_a_bodys_angular_velocity_beside_an_unknown_rate_named_omega() -> None:
     lines = [line.plain if hasattr(line, "plain") else line.text for s in solution.steps for line in step_lines(s)]
     assert any(line.startswith("ω_b = ") for line in lines) and not any(line.startswith("ω = (") for line in lines)
     assert any("v_G + ω_b × (r_C − r_G) = 0" in line for line in lines)
+
+
+def test_the_angular_momentum_moves_off_a_parameter_named_l() -> None:
+    from rbdsolve.form.labels import Labels
+
+    assert Labels.of(("m", "r"), ("angular_momentum",)).name("angular_momentum") == "L"
+    assert Labels.of(("m", "L", "r"), ("angular_momentum",)).name("angular_momentum") == "H"
