@@ -26,6 +26,7 @@ from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
+from rbdsolve.solvers.reactions.first_zero import reaches
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
@@ -242,8 +243,6 @@ def _never_reached(P: sp.Expr, model: Model, rate_squared: sp.Expr, start: sp.Ex
     |x| ≤ 1 whose angles (asin x and π − asin x; ± acos x) the motion released from rest
     at ``start`` gets to (``first_zero.reaches``); the roots to 30 digits (mpmath's
     polyroots). False where the values do not decide it."""
-    from rbdsolve.solvers.reactions.first_zero import reaches
-
     f = implicit_variable(sp.Eq(P, 0, evaluate=False), model)
     values, x = dict(model.values), sp.Dummy("x")
     poly = sp.Poly(P.xreplace(values).xreplace({f: x}), x)
