@@ -35,6 +35,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.angles import angle_of
+from rbdsolve.solvers.equilibria.contact_push import pulling
 from rbdsolve.solvers.equilibria.cases import existing_where, gradient, unsquared, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
@@ -473,7 +474,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     classified = [with_cases(classify_listed(model, x), model, x.at, first) for x in listed.equilibria]
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
-    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model)]
+    warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model),
+                *(w for x in listed.equilibria for w in pulling(model, x.at, _shown(model, x.at)))]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
@@ -481,6 +483,12 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _shown(model: Model, at: Mapping) -> str:
+    """θ = π, φ = 0: an equilibrium's place as the solution writes it."""
+    return ", ".join(f"{unicode_name(n)} = {to_unicode(model.readable(at[q]))}"
+                     for n, q in zip(model.coordinate_names(), model.q))
 
 
 def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -> Solution:

@@ -20,9 +20,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import unicode_name
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -33,6 +34,7 @@ from rbdsolve.solvers.equilibria.answers import (
     Stability,
 )
 from rbdsolve.solvers.equilibria.steps import numeric_steps
+from rbdsolve.solvers.equilibria.contact_push import pulling
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.numeric.numeric_model import (
     CURVATURE_TOL,
@@ -72,7 +74,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names),
-                *contact_span.warnings(list(found.off_edge)), *found.kinks, *spin_warnings(model))
+                *contact_span.warnings(list(found.off_edge)), *found.kinks, *spin_warnings(model),
+                *(w for e in equilibria for w in _pulling(model, e, names)))
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
                      "not equilibria of the scene (listed apart); " + SUGGESTION,)
@@ -125,6 +128,16 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
 
 
 SIMPLE = (("0", 0.0), ("pi/2", math.pi / 2), ("-pi/2", -math.pi / 2), ("pi", math.pi), ("-pi", -math.pi))
+EXACT = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
+
+
+def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str, ...]:
+    """``contact_push.pulling`` at an equilibrium each of whose coordinates is recognized
+    as a simple exact value (θ = π: the balances at rest then hold exactly); () else."""
+    if set(e.recognized) != set(names):
+        return ()
+    at = {q: EXACT[e.recognized[n]] for n, q in zip(names, model.q)}
+    return pulling(model, at, ", ".join(f"{unicode_name(n)} = {to_unicode(at[q])}" for n, q in zip(names, model.q)))
 
 
 def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dict[str, str], float | None]:

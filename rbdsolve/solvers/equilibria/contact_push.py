@@ -1,0 +1,47 @@
+"""Equilibria where a contact would have to pull: a ring "resting on top of" a drum is in
+equilibrium hanging under it at θ = π by ∂V/∂q = 0 alone, which holds the contact both
+ways; the drum there would pull, N = −(M + m) g. Newton–Euler at rest (q̇ = q̈ = 0, at the
+equilibrium) with every contact and string of the scene as its only supports
+(solvers/reactions/balances.py) gives each push N and tension T; where the parameters
+decide N < 0 (T < 0), the equilibrium's warning says so. Where those supports do not hold
+the bodies at rest by themselves (a pivot too, unlisted), nothing is said."""
+
+from __future__ import annotations
+
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.tidy import tidy
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.conditions.signs import sign_of
+from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
+from rbdsolve.solvers.reactions.supports import contact_support, planar
+
+
+def pulling(model: Model, at: Mapping[sp.Expr, sp.Expr], shown: str) -> tuple[str, ...]:
+    """A warning per push or tension that would be negative at the equilibrium ``at``
+    ({q: value}; ``shown``: how the solution writes it)."""
+    contacts = [c for c in model.contacts if c.source.pulley is None]
+    if not contacts or not planar(model):
+        return ()
+    rest = {**dict(at), **{qd: sp.Integer(0) for qd in model.qd}, **{qdd: sp.Integer(0) for qdd in model.qdd}}
+    try:
+        supports = with_strings(model, tuple(contact_support(model, c) for c in contacts), None)
+        forces = solve_forces(model, balances(model, supports, 2), supports, rest)
+    except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
+        return ()
+    out = []
+    for s in supports:
+        for c in (c for c in s.components if c.one_sided and c.symbol in forces):
+            value = tidy(forces[c.symbol].xreplace(rest))
+            if sign_of(value, model.decided_by) == -1:
+                what = "string" if c.symbol.name.startswith("T_") else "contact"
+                out.append(f"at {shown} the {what} at {s.name} would have to "
+                           f"{'push' if what == 'string' else 'pull'} ({c.symbol.name} = "
+                           f"{to_unicode(model.readable(value))} < 0 at rest there): an equilibrium of ∂V/∂q = 0, which "
+                           f"holds the {what} both ways, but not of a body that only "
+                           f"{'hangs from' if what == 'string' else 'rests on'} it")
+    return tuple(out)
