@@ -35,7 +35,6 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.angles import angle_of
-from rbdsolve.solvers.equilibria.contact_push import pulling
 from rbdsolve.solvers.equilibria.cases import existing_where, gradient, unsquared, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
@@ -475,7 +474,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model),
-                *(w for x in listed.equilibria for w in pulling(model, x.at, _shown(model, x.at)))]
+                *_pulling(model, [x.at for x in listed.equilibria])]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
@@ -483,6 +482,16 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _pulling(model: Model, places: list[Mapping]) -> list[str]:
+    """``contact_push.pulling`` at each equilibrium, for a scene with contacts (loaded
+    only there: it brings the reactions' balances, not needed for the seed's rods)."""
+    if not model.contacts:
+        return []
+    from rbdsolve.solvers.equilibria.contact_push import pulling
+
+    return [w for at in places for w in pulling(model, at, _shown(model, at))]
 
 
 def _shown(model: Model, at: Mapping) -> str:

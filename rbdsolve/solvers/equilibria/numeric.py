@@ -34,7 +34,6 @@ from rbdsolve.solvers.equilibria.answers import (
     Stability,
 )
 from rbdsolve.solvers.equilibria.steps import numeric_steps
-from rbdsolve.solvers.equilibria.contact_push import pulling
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.numeric.numeric_model import (
     CURVATURE_TOL,
@@ -134,8 +133,9 @@ EXACT = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi
 def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str, ...]:
     """``contact_push.pulling`` at an equilibrium each of whose coordinates is recognized
     as a simple exact value (θ = π: the balances at rest then hold exactly); () else."""
-    if set(e.recognized) != set(names):
+    if set(e.recognized) != set(names) or not model.contacts:
         return ()
+    from rbdsolve.solvers.equilibria.contact_push import pulling  # with contacts only: the reactions' balances
     at = {q: EXACT[e.recognized[n]] for n, q in zip(names, model.q)}
     return pulling(model, at, ", ".join(f"{unicode_name(n)} = {to_unicode(at[q])}" for n, q in zip(names, model.q)))
 
