@@ -24,9 +24,11 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
         if name in at or not hasattr(r, "components"):
             continue  # the state asked names it already; a line is written only where its numbers are known
         out += [Named(("reactions", name, "components", c), sp.Symbol(c), "Forces") for c in r.components]
+    along = getattr(answers, "least_friction", None) or {}
+    same = {c for c, v in along.items() if not v.has(*(model.to_time(q) for q in model.q))}  # one number all along
     out += [Named(("least_friction_at", c), sp.Symbol(f"mu_{c}"), "At the state asked", Meaning.LEAST)
-            for c in (getattr(answers, "least_friction_at", None) or {})]
-    out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}")) for c in (getattr(answers, "least_friction", None) or {})]
+            for c in (getattr(answers, "least_friction_at", None) or {}) if c not in same]
+    out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}"), meaning=Meaning.LEAST) for c in along]
     out += [Named(("there", name, "components", c), sp.Symbol(c), "Where the motion gets to")
             for name, r in (getattr(answers, "there", None) or {}).items() for c in r.components]
     out += _first_zeros(getattr(answers, "first_zero", None) or {}, model)
