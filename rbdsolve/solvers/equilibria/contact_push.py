@@ -13,17 +13,17 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import InputError, UnsolvedError
-from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
-from rbdsolve.solvers.reactions.supports import contact_support, planar
+from rbdsolve.solvers.reactions.supports import How, contact_support, planar
 
 
-def pulling(model: Model, at: Mapping[sp.Expr, sp.Expr], shown: str) -> tuple[str, ...]:
+def pulling(model: Model, at: Mapping[sp.Expr, sp.Expr]) -> tuple[str, ...]:
     """A warning per push or tension that would be negative at the equilibrium ``at``
-    ({q: value}; ``shown``: how the solution writes it)."""
+    ({q: value})."""
     contacts = [c for c in model.contacts if c.source.pulley is None]
     if not contacts or not planar(model):
         return ()
@@ -33,15 +33,15 @@ def pulling(model: Model, at: Mapping[sp.Expr, sp.Expr], shown: str) -> tuple[st
         forces = solve_forces(model, balances(model, supports, 2), supports, rest)
     except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
         return ()
+    shown = ", ".join(f"{unicode_name(n)} = {to_unicode(model.readable(at[q]))}"
+                      for n, q in zip(model.coordinate_names(), model.q))
     out = []
     for s in supports:
+        what, would, only = ("string", "push", "hangs from") if s.how is How.STRING else ("contact", "pull", "rests on")
         for c in (c for c in s.components if c.one_sided and c.symbol in forces):
-            value = tidy(forces[c.symbol].xreplace(rest))
+            value = tidy(forces[c.symbol])  # the state at rest is in already
             if sign_of(value, model.decided_by) == -1:
-                what = "string" if c.symbol.name.startswith("T_") else "contact"
-                out.append(f"at {shown} the {what} at {s.name} would have to "
-                           f"{'push' if what == 'string' else 'pull'} ({c.symbol.name} = "
+                out.append(f"at {shown} the {what} at {s.name} would have to {would} ({c.symbol.name} = "
                            f"{to_unicode(model.readable(value))} < 0 at rest there): an equilibrium of ∂V/∂q = 0, which "
-                           f"holds the {what} both ways, but not of a body that only "
-                           f"{'hangs from' if what == 'string' else 'rests on'} it")
+                           f"holds the {what} both ways, but not of a body that only {only} it")
     return tuple(out)

@@ -491,13 +491,7 @@ def _pulling(model: Model, places: list[Mapping]) -> list[str]:
         return []
     from rbdsolve.solvers.equilibria.contact_push import pulling
 
-    return [w for at in places for w in pulling(model, at, _shown(model, at))]
-
-
-def _shown(model: Model, at: Mapping) -> str:
-    """θ = π, φ = 0: an equilibrium's place as the solution writes it."""
-    return ", ".join(f"{unicode_name(n)} = {to_unicode(model.readable(at[q]))}"
-                     for n, q in zip(model.coordinate_names(), model.q))
+    return [w for at in places for w in pulling(model, at)]
 
 
 def _uniform(model: Model, grad: tuple[sp.Expr, ...], first: sp.Symbol | None) -> Solution:

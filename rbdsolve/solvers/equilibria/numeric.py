@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -126,8 +126,8 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
     return lines
 
 
-SIMPLE = (("0", 0.0), ("pi/2", math.pi / 2), ("-pi/2", -math.pi / 2), ("pi", math.pi), ("-pi", -math.pi))
 EXACT = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
+SIMPLE = tuple((text, float(value)) for text, value in EXACT.items())
 
 
 def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str, ...]:
@@ -136,8 +136,7 @@ def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str
     if set(e.recognized) != set(names) or not model.contacts:
         return ()
     from rbdsolve.solvers.equilibria.contact_push import pulling  # with contacts only: the reactions' balances
-    at = {q: EXACT[e.recognized[n]] for n, q in zip(names, model.q)}
-    return pulling(model, at, ", ".join(f"{unicode_name(n)} = {to_unicode(at[q])}" for n, q in zip(names, model.q)))
+    return pulling(model, {q: EXACT[e.recognized[n]] for n, q in zip(names, model.q)})
 
 
 def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dict[str, str], float | None]:

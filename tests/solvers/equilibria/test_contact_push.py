@@ -17,14 +17,14 @@ def test_a_cylinder_at_the_top_inside_a_cylinder_would_need_the_track_to_pull() 
     the bottom (θ = 0) N = m g > 0, nothing to say."""
     model = build_model(load_file(PROBLEMS / "contacts" / "cylinder-in-cylinder.yaml"))
     (q,) = model.q
-    (top,) = pulling(model, {q: sp.pi}, "θ = π")
+    (top,) = pulling(model, {q: sp.pi})
     assert "contact at C would have to pull" in top and "N_C = −g m < 0" in top
-    assert pulling(model, {q: sp.Integer(0)}, "θ = 0") == ()
+    assert pulling(model, {q: sp.Integer(0)}) == ()
 
 
 def test_a_weighted_disk_at_the_top_of_its_track_too() -> None:
     """By hand: disk m and its weight m₀ at rest at the top, N_C = −(m + m₀) g."""
     model = build_model(load_file(PROBLEMS / "contacts" / "weighted-disk-in-track.yaml"))
     (q,) = model.q
-    (top,) = pulling(model, {q: sp.pi}, "φ = π")
+    (top,) = pulling(model, {q: sp.pi})
     assert "N_C = −g (m + m₀) < 0" in top
