@@ -36,7 +36,7 @@ PACKAGE_FILES = {"__main__": {"cli"}, "__init__": {"api"}}  # __init__: the API,
 # The solvers' machinery: folders of solvers/ that are no family. They import no family;
 # a family imports them and the layers below, and only the families FAMILY_USES names.
 MACHINERY = {"conditions", "configuration", "lagrange", "numeric", "routes"}
-FAMILY_USES = {"modes": {"equilibria"}, "steady_spin": {"inertia"}, "reactions": {"eom"},
+FAMILY_USES = {"modes": {"equilibria"}, "steady_spin": {"inertia"}, "reactions": {"eom"}, "energy": {"reactions"},
                "equilibria": {"reactions"}}  # where a contact would pull at an equilibrium: Newton–Euler at rest
 TERMINAL_LIBRARIES = {"click", "rich"}
 MAY_PRINT = {"cli", "render"}

@@ -28,7 +28,20 @@ from rbdsolve.solvers.conditions.signs import sign_of
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     answers, e = energy(question.options, model)
-    return Solution("energy", Route.EXACT, answers, exact_steps(answers, e, question.options, model))
+    return Solution("energy", Route.EXACT, answers, exact_steps(answers, e, question.options, model),
+                    warnings=lost_contacts(question.options, model, answers, e))
+
+
+def lost_contacts(opts: EnergyOptions, model: Model, answers: EnergyAnswers, e: EnergyIntegral) -> tuple[str, ...]:
+    """Where the scene has contacts or strings and the rates are given at ``to``, a
+    warning for each push or tension that reaches zero on the way there
+    (solvers/reactions/on_the_way.py: loaded only for such a scene)."""
+    if not model.contacts or answers.there is None or answers.there.reached is False:
+        return ()
+    from rbdsolve.solvers.reactions.on_the_way import lost_on_the_way
+
+    to = model.symbols.scalar(dict(opts.to)[model.coordinate_names()[0]])
+    return lost_on_the_way(model, state_values(model, opts.start), to, e)
 
 
 def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyIntegral]:

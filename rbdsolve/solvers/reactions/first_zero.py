@@ -103,6 +103,27 @@ def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, va
     return all(v >= -1e-12 * scale for v in speeds)
 
 
+def first_loss(push: sp.Expr, q: sp.Symbol, a: float, b: float) -> float | None:
+    """The first q on the way from ``a`` to ``b`` where ``push`` N(q) (the values put in)
+    is no longer positive, refined between steps of half a degree (of the way, for a
+    length) where N changes sign; ``a`` itself where N ≤ 0 there already; None where N
+    stays positive all the way, or is not a real number on it."""
+    N = _numeric(push, q)
+    if not _positive(N(a)):
+        return a if N(a) is not None else None
+    steps = max(8, min(STEPS, int(abs(b - a) / (2 * math.pi / STEPS)) + 1))
+    before = a
+    for i in range(1, steps + 1):
+        x = a + (b - a) * i / steps
+        force = N(x)
+        if force is None:
+            return None
+        if force <= 0:
+            return _root(N, before, x)
+        before = x
+    return None
+
+
 def _lost(N, a: float, b: float, name: str) -> FirstZero | None:
     root = _root(N, a, b)
     return None if root is None else FirstZero({name: root}, None)
