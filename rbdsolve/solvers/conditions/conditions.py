@@ -140,6 +140,13 @@ def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | 
 
 @memoized
 def _partition(model, f: sp.Expr, first: sp.Symbol | None) -> Partition | None:
+    """The first candidate that splits f's sign where the assumptions allow it (a shell
+    inside a pipe, R > r: its condition in θ₀, not "r > R"), else the first that splits
+    it at all (a coin whose contact implies cos θ > 0 keeps "θ < π/2")."""
+    return _split(model, f, first, True) or _split(model, f, first, False)
+
+
+def _split(model, f: sp.Expr, first: sp.Symbol | None, allowed_only: bool) -> Partition | None:
     angles = angle_parameters(f)
     for p in candidates(f, model, angles, first):
         roots = parameter_roots(f, p, angles, model)
@@ -151,6 +158,10 @@ def _partition(model, f: sp.Expr, first: sp.Symbol | None) -> Partition | None:
         signs = [sign_on(f, piece, model, angles) for piece in pieces]
         if None in signs:
             continue
+        kept = [(piece, sign) for piece, sign in zip(pieces, signs) if not allowed_only or allowed(piece, model)]
+        if not kept:
+            continue
+        pieces, signs = (list(x) for x in zip(*kept))  # a piece the assumptions rule out (r > R under R > r) splits nothing
         merged = [replace(pieces[0], sign=signs[0])]
         for piece, sign in zip(pieces[1:], signs[1:]):
             if sign == merged[-1].sign:
@@ -299,7 +310,9 @@ _UPPER, _LOWER = (sp.LessThan, sp.StrictLessThan), (sp.GreaterThan, sp.StrictGre
 def _tightest_bounds(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]:
     """The conjunction with a bound that another on the same side implies left out
     (Ω ≤ √(k/m) and Ω ≤ √(k (L + d)/(d m)): the second follows from the first, for every
-    value the assumptions allow), and the values of the bounds left out."""
+    value the assumptions allow), and the values of the bounds left out; first, each
+    alternative a bound of the conjunction rules out (``_without_contradicted``)."""
+    exists, ruled_out = _without_contradicted(exists, model)
     parts = list(sp.And.make_args(exists))
     dropped = set()
     for side in (_UPPER, _LOWER):
@@ -312,8 +325,40 @@ def _tightest_bounds(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]:
                 if order is not None and (order < 0 if side is _UPPER else order > 0):
                     dropped.add(b)  # a is the tighter bound: b follows from it
     if not dropped:
-        return exists, frozenset()
-    return sp.And(*[r for r in parts if r not in dropped]), frozenset(r.rhs for r in dropped)
+        return exists, ruled_out
+    return sp.And(*[r for r in parts if r not in dropped]), ruled_out | frozenset(r.rhs for r in dropped)
+
+
+def _without_contradicted(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]:
+    """Each alternative of an "either … or" that a plain bound beside it rules out, left
+    out: k > g m/(4 a) and (k ≥ g m/(3 a) or k ≤ g m/(5 a)) is k > g m/(4 a) and k ≥ g m/(3 a),
+    since g m/(5 a) < g m/(4 a) for every value allowed (a rod on a wall spring, its pair of
+    equilibria); and the values of the alternatives left out."""
+    parts = list(sp.And.make_args(exists))
+    bounds = [r for r in parts if isinstance(r, (*_UPPER, *_LOWER)) and r.lhs.is_Symbol]
+    ruled_out, out = set(), []
+    for part in parts:
+        if not isinstance(part, sp.Or):
+            out.append(part)
+            continue
+        kept = [b for b in part.args if not any(_contradicts(a, b, model) for a in bounds)]
+        ruled_out |= {b.rhs for b in part.args if b not in kept}
+        out.append(sp.Or(*kept))
+    return (sp.And(*out), frozenset(ruled_out)) if ruled_out else (exists, frozenset())
+
+
+def _contradicts(bound: sp.Relational, other: sp.Basic, model) -> bool:
+    """Whether no value satisfies both: p > a beside p ≤ c with c < a (or the mirror),
+    the order of a and c decided for every value the assumptions allow."""
+    if not isinstance(other, (*_UPPER, *_LOWER)) or other.lhs != bound.lhs:
+        return False
+    if isinstance(bound, _LOWER) and isinstance(other, _UPPER):
+        order = _compared(other.rhs, bound.rhs, model)
+        return order is not None and order < 0
+    if isinstance(bound, _UPPER) and isinstance(other, _LOWER):
+        order = _compared(other.rhs, bound.rhs, model)
+        return order is not None and order > 0
+    return False
 
 
 def _compared(a: sp.Expr, b: sp.Expr, model) -> int | None:
@@ -384,14 +429,16 @@ def asked(model, question) -> sp.Symbol | None:
 def candidates(f: sp.Expr, model, angles: dict, first: sp.Symbol | None = None) -> list[sp.Symbol]:
     """The positive parameters and the angles in f, the one the question is about
     first: ``first`` (a question's ``for:``), then the problem's only parameter without
-    a value, then by kind (``_kind``), each kind in the file's order."""
+    a value, then those without a value before those with one (a coin rolling round a
+    circle of radius a left open: a > a_c, not r < r_c with r given), then by kind
+    (``_kind``), each kind in the file's order."""
     order = [model.symbols.parameters[p.name] for p in model.problem.parameters]
     held = [p for p in order if p in f.free_symbols and (p.is_positive or p in angles)]
     open_ = [p for p in order if p not in model.values]
     lone = open_[0] if len(open_) == 1 else None
     kinds = {model.symbols.parameters[p.name]: _kind(p, model.problem.dimension_map())
              for p in model.problem.parameters}
-    return sorted(held, key=lambda p: (p != first, p != lone, kinds[p]))
+    return sorted(held, key=lambda p: (p != first, p != lone, p in model.values, kinds[p]))
 
 
 def _kind(parameter, dimensions: dict) -> int:

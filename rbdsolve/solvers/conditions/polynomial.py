@@ -56,9 +56,32 @@ def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int |
     eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
     if eliminant.free_symbols & set(symbols) != {last}:
         return None  # not zero-dimensional, or nothing to eliminate: solve decides
-    degrees = [sp.degree(f, last) for f, _ in sp.factor_list(eliminant, last)[1]]
+    degrees = [sp.degree(f, last) for f in _factors(eliminant, last)]
     worst = max(degrees, default=0)
     return worst if worst in (3, 4) else None
+
+
+def _factors(eliminant: sp.Expr, last: sp.Symbol) -> list[sp.Expr]:
+    """The eliminant's irreducible factors, over the rationals extended by the roots of
+    numbers in it: a square plate hung by a corner, its centre a/√2 from it, has
+    (c² − 1)(Ω² a c − √2 g), which factor_list over the rationals leaves whole, a "cubic"."""
+    over_q = [f for f, _ in sp.factor_list(eliminant, last)[1]]
+    surds = sorted({p for p in eliminant.atoms(sp.Pow) if p.is_number and not p.exp.is_integer},
+                   key=sp.default_sort_key)
+    if not surds or max(sp.degree(f, last) for f in over_q) < 3:
+        return over_q
+    # each root of a number as a symbol first (factors over ℚ[σ] are factors at σ = √2: milliseconds),
+    # over the field ℚ(√2) only where a cubic or quartic is left (seconds, with many parameters)
+    symbols = {p: sp.Dummy() for p in surds}
+    by_symbols = [f.xreplace({v: k for k, v in symbols.items()})
+                  for f, _ in sp.factor_list(eliminant.xreplace(symbols), last)[1]]
+    if max(sp.degree(f, last) for f in by_symbols) < 3:
+        return by_symbols
+    try:
+        top = sp.fraction(sp.together(eliminant))[0]  # over the extension, every symbol a generator
+        return [f for f, _ in sp.factor_list(top, extension=surds)[1]]
+    except (PolynomialError, NotImplementedError, ValueError):
+        return over_q  # the roots of numbers do not make a field sympy factors over: as over the rationals
 
 
 def trig_mixed(expr: sp.Expr, q: sp.Symbol) -> bool:

@@ -75,9 +75,22 @@ def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
     of radicals."""
     signs = unsquared_where(at, model)
     if not signs:  # √((h + l)²) at θ = 0 is h + l, |d − L| where the signs do not decide it
-        return H.applyfunc(lambda e: tidy(_roots_as_absolute(e)) if _radical(e, model) else tidy(e))
+        return H.applyfunc(lambda e: _compact(tidy(_roots_as_absolute(e)) if _radical(e, model) else tidy(e)))
     known = {a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))}
-    return H.applyfunc(lambda e: tidy(_roots_as_absolute(e).xreplace(known)))
+    return H.applyfunc(lambda e: _compact(tidy(_roots_as_absolute(e).xreplace(known))))
+
+
+COMPACT_OPS = 120  # an entry longer than this is put over one denominator and factored, where that is shorter
+
+
+def _compact(entry: sp.Expr) -> sp.Expr:
+    """A long entry as one factored fraction where that is shorter: a rod on a wall spring
+    at sin(θ₀/2) = a k/(4 a k − g m) has K = a (3 a k − g m)(5 a k − g m)/(4 a k − g m),
+    which cos(θ₀) and sin(θ₀) put in wrote as 800 operations of nested fractions."""
+    if sp.count_ops(entry) <= COMPACT_OPS:
+        return entry
+    short = sp.factor(sp.together(entry))  # (cancel first is 3 times slower for the same form)
+    return short if sp.count_ops(short) < sp.count_ops(entry) else entry
 
 
 def _radical(expr: sp.Expr, model: Model) -> bool:

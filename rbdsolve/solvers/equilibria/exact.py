@@ -24,6 +24,7 @@ from typing import Mapping
 
 import sympy as sp
 
+from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
@@ -146,9 +147,12 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
 
 
 def _shown_roots(model: Model, unknowns, roots: list[dict]) -> str:
-    """θ = 0, π; or (ψ, θ) = (0, 0), (π, π)."""
+    """θ = 0, π; or (ψ, θ) = (0, 0), (π, π): each angle in (−π, π], so −π is not said
+    beside π."""
     names = dict(zip(model.q, model.coordinate_names()))
-    values = [", ".join(to_unicode(r[q]) for q in unknowns) for r in roots]
+    angles = periodic_angles(model) | repeating(model)
+    values = list(dict.fromkeys(", ".join(to_unicode(_turn(r[q]) if q in angles else r[q]) for q in unknowns)
+                                for r in roots))
     if len(unknowns) == 1:
         return f"{unicode_name(names[unknowns[0]])} = {', '.join(values)}"
     return f"({', '.join(unicode_name(names[q]) for q in unknowns)}) = " + ", ".join(f"({v})" for v in values)
@@ -202,9 +206,16 @@ def _turn(angle: sp.Expr) -> sp.Expr:
 
 
 def _order(value: sp.Expr) -> tuple:
-    """Sort key: by numeric value (parameters set to 1), then by the expression."""
-    number = sample(value, {})
-    return (number.real if number.imag == 0 else 0.0, sp.default_sort_key(value))
+    """Sort key: by numeric value (parameters set to 1), a number before an expression
+    that ties with it (θ = 0 before acos(g/(Ω² R))), then at the parameters set apart (a
+    wheel held by a couple, sin θ₀ = C/(m g R), has both its equilibria at π/2 where every
+    parameter is 1: asin(…) before π − asin(…)), then by the expression."""
+    apart = {s: 1 + sp.Rational(i + 1, 7) for i, s in enumerate(sorted(value.free_symbols, key=str))}
+    return (_real(sample(value, {})), not value.is_number, _real(sample(value, apart)), sp.default_sort_key(value))
+
+
+def _real(number: complex) -> float:
+    return number.real if number.imag == 0 else 0.0
 
 
 def _solve_polynomial(system: PolySystem, assumed: Mapping) -> list[dict]:
@@ -220,6 +231,8 @@ def _solve_polynomial(system: PolySystem, assumed: Mapping) -> list[dict]:
             continue
         if len(root) < len(symbols):  # a family of solutions: not isolated points
             raise _continuum()
+        if any(simplifies_to_zero(d.xreplace(root)) for d in system.denominators):
+            continue  # the equation is not defined there (a spring of zero length: ∂V/∂q has √B = 0 below)
         sol = {q: angle_of(root[system.sines[q]], root[system.cosines[q]], assumed) for q in system.sines}
         sol |= {q: tidy(root[q]) for q in system.plain}
         out.append(sol)

@@ -2,7 +2,10 @@
 and so whether the exact route can list every solution before it tries.
 
 * **Polynomial** in the sines and cosines of the angles and in the other coordinates
-  (s = sin q, c = cos q, s² + c² = 1): a Gröbner basis lists every root, and does so
+  (s = sin q, c = cos q, s² + c² = 1), and in up to ROOTS square roots of polynomials in
+  them, each an unknown w = √B with w² = B (a spring of natural length from a rod's end
+  to a wall, 2√2 a √(1 − cos θ); a spring to an axis a rod misses, √(d² + s²)): a
+  Gröbner basis lists every root, and does so
   in seconds while the system is small. Its size is measured by the Bézout number of
   each block of equations that share unknowns, the product of their total degrees
   (Cox, Little, O'Shea, *Ideals, Varieties, and Algorithms*, §8.7: a bound on the
@@ -13,13 +16,13 @@ and so whether the exact route can list every solution before it tries.
   coupled by a zero-length spring to a point off the axis, 16, with five symbolic
   parameters: past 120 s, and as long with every value given (the basis is symbolic);
   three coupled angles, 64: past 120 s.
-* **Algebraic**: radicals of the coordinates but no function of them (a spring of
-  natural length L between two free points, √(x² + y²)): sympy's ``solve`` answers
-  small ones (at most ALGEBRAIC_UNKNOWNS unknowns, ALGEBRAIC_OPS operations).
+* **Algebraic**: radicals of the coordinates past those (more than ROOTS of them, a
+  cube root) but no function of them: sympy's ``solve`` answers small ones (at most
+  ALGEBRAIC_UNKNOWNS unknowns, ALGEBRAIC_OPS operations).
 * **Transcendental**: anything else — q both inside and outside sin and cos (a rolling
   slab's R θ cos θ, a torsion spring's c θ), sin of a fraction of q (a half-disk on a
-  drum, sin(r θ/(R + r))), a radical of sines (a spring of natural length on a turning
-  rod). No closed form lists every root; one equation proved monotone has one root
+  drum, sin(r θ/(R + r))), a radical of a sine past ROOTS. No closed form lists every
+  root; one equation proved monotone has one root
   (``monotone``), and otherwise the exact route lists the **evident roots**
   (``evident.py``): the combinations of 0, π, ±π/2 (0 for a length) that make every
   equation vanish exactly.
@@ -59,10 +62,12 @@ class PolySystem:
     sines: dict
     cosines: dict
     plain: tuple[sp.Symbol, ...]
+    roots: tuple[sp.Symbol, ...] = ()  # w = √B for each square root of the unknowns, with w² − B among the polynomials
+    denominators: tuple[sp.Expr, ...] = ()  # where one vanishes at a root, the equation is not defined there
 
     @property
     def symbols(self) -> list[sp.Symbol]:
-        return [*self.sines.values(), *self.cosines.values(), *self.plain]
+        return [*self.sines.values(), *self.cosines.values(), *self.plain, *self.roots]
 
 
 @dataclass(frozen=True)
@@ -81,18 +86,59 @@ def trig_polynomial(equations, unknowns, angles) -> PolySystem | None:
     s = {q: sp.Dummy(f"s_{q.name}", real=True) for q in unknowns if q in angles}
     c = {q: sp.Dummy(f"c_{q.name}", real=True) for q in unknowns if q in angles}
     plain = tuple(q for q in unknowns if q not in angles)
-    system = []
+    unknown = (*s.values(), *c.values(), *plain)
+    written = []
     for e in equations:
         poly = sp.expand_trig(sp.expand(e))
         poly = poly.xreplace({sp.sin(q): s[q] for q in s} | {sp.cos(q): c[q] for q in c})
         if any(poly.has(q) for q in s):
             return None
-        numerator = sp.numer(sp.together(poly))
-        if not numerator.is_polynomial(*s.values(), *c.values(), *plain):
+        written.append(poly)
+    roots = _square_roots(written, unknown)
+    if roots is None:
+        return None
+    system, denominators = [], []
+    for poly in written:
+        numerator, denominator = sp.fraction(sp.together(_with_roots(poly, roots)))
+        if not numerator.is_polynomial(*unknown, *roots.values()):
             return None
         system.append(numerator)
+        if denominator.has(*unknown, *roots.values()):
+            denominators.append(denominator)
     system += [s[q] ** 2 + c[q] ** 2 - 1 for q in s]
-    return PolySystem(tuple(system), s, c, plain)
+    system += [w**2 - radicand for radicand, w in roots.items()]
+    return PolySystem(tuple(system), s, c, plain, tuple(roots.values()), tuple(denominators))
+
+
+ROOTS = 2  # square roots of the unknowns a polynomial form takes in, each as an unknown w, w² = B
+
+
+def _square_roots(equations, unknown) -> dict[sp.Expr, sp.Symbol] | None:
+    """Each square root √B (or its powers, B^(k/2)) of the unknowns in the equations,
+    B a polynomial in them, as an unknown w ≥ 0 with w² = B: a rod hinged on a wall,
+    a spring of natural length a from its end to the wall 2a above the hinge, has the
+    length 2√2 a √(1 − cos θ), and ∂V/∂θ = 0 is polynomial in sin θ, cos θ and w. The
+    sign w ≥ 0 is the root's own: a solution with w < 0 solves the squared form only,
+    which the existence conditions find (``cases.unsquared_where``). None where a root
+    is of another kind (a cube root, a root of a non-polynomial) or past ROOTS."""
+    found = {}
+    for e in equations:
+        for p in e.atoms(sp.Pow):
+            if not p.base.has(*unknown) or p.exp.is_integer:
+                continue
+            if not (p.exp.is_Rational and p.exp.q == 2) or not p.base.is_polynomial(*unknown):
+                return None
+            base = sp.expand(p.base)
+            found.setdefault(base, sp.Dummy(f"w{len(found)}", nonnegative=True))
+    return found if len(found) <= ROOTS else None
+
+
+def _with_roots(expr: sp.Expr, roots: dict[sp.Expr, sp.Symbol]) -> sp.Expr:
+    """B^(k/2) written w^k, w = √B (``_square_roots``)."""
+    if not roots:
+        return expr
+    return expr.replace(lambda p: isinstance(p, sp.Pow) and sp.expand(p.base) in roots and p.exp.is_Rational
+                        and p.exp.q == 2, lambda p: roots[sp.expand(p.base)] ** (p.exp * 2))
 
 
 def bezout(system: PolySystem) -> int:

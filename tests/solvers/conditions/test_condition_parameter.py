@@ -207,3 +207,14 @@ def test_for_names_the_parameter_a_steady_motion_exists_in() -> None:
             * math.cos(v["theta"])
         for branch in answers.branches:
             assert bool(_read(branch.exists_when, s).subs({s[n]: x for n, x in v.items()})) == (D >= 0)
+
+
+def test_a_parameter_left_open_comes_before_one_given_a_value() -> None:
+    """a, l and g given values, the masses M and m left open (two of them, so neither is
+    'the only one without a value'): the condition is in the first open one, M < M_c =
+    m l/(2 a), not in the length a that has a value (which a length's kind put first)."""
+    s = _symbols("M m a l g")
+    answers = _answers(BALANCE.replace("coordinates:", "values: {a: 0.2, l: 1, g: 9.81}\ncoordinates:"))
+    _critical(answers, "M", s["m"] * s["l"] / (2 * s["a"]), s)
+    _sampled(answers, s, _balance_point,
+             lambda v: "oscillation" if v["m"] * v["l"] / 2 - v["M"] * v["a"] > 0 else "growth")

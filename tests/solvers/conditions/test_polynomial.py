@@ -49,3 +49,17 @@ def test_a_system_that_factors_into_small_pieces_is_still_solved():
     roots = polynomial_roots([eq, s**2 + c**2 - 1], [s, c], "the equations")
     assert sorted((r[s], r[c]) for r in roots if r[s] == 0) == [(0, -1), (0, 1)]
     assert {r[c] for r in roots if r[s] != 0} == {sp.Rational(3, 4)}
+
+
+def test_a_root_of_two_in_the_coefficients_does_not_make_a_cubic():
+    """A square plate of side a hung by a corner on a shaft turning at Ω: ∂V/∂θ ∝
+    s (√2 g − Ω² a c), s² + c² = 1, eliminates to (c² − 1)(Ω² a c − √2 g), which
+    factor_list over the rationals left whole ("an irreducible factor of degree 3"). Over
+    ℚ(√2) it splits: c = ±1 (s = 0) and c = √2 g/(Ω² a), s = ±√(1 − c²)."""
+    g, a, w = sp.symbols("g a Omega", positive=True)
+    eq = s * (sp.sqrt(2) * g - w**2 * a * c)
+    roots = polynomial_roots([eq, s**2 + c**2 - 1], [s, c], "the equations")
+    assert {r[c] for r in roots if r[s] == 0} == {-1, 1}
+    off = [r for r in roots if r[s] != 0]
+    assert len(off) == 2 and all(sp.simplify(r[c] - sp.sqrt(2) * g / (w**2 * a)) == 0 for r in off)
+    assert all(sp.simplify(r[s] ** 2 + r[c] ** 2 - 1) == 0 for r in off)

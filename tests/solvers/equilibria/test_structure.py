@@ -5,6 +5,7 @@ each test; printed conditions are sampled on both sides."""
 
 from __future__ import annotations
 
+import math
 import random
 
 import pytest
@@ -26,10 +27,14 @@ a, b, c = sp.symbols("a b c", positive=True)
 @pytest.mark.parametrize("equations, unknowns, angles, shape", [
     ([a * sp.sin(t)], [t], {t}, Shape.POLYNOMIAL),
     ([a * sp.sin(t) * sp.cos(p) + b, sp.sin(p) - c], [t, p], {t, p}, Shape.POLYNOMIAL),
-    ([x * (sp.sqrt(x**2 + y**2) - a) / sp.sqrt(x**2 + y**2), y], [x, y], set(), Shape.ALGEBRAIC),
+    ([x * (sp.sqrt(x**2 + y**2) - a) / sp.sqrt(x**2 + y**2), y], [x, y], set(), Shape.POLYNOMIAL),  # w = √(x² + y²)
+    ([x * sp.cbrt(x**2 + y**2) - a, y], [x, y], set(), Shape.ALGEBRAIC),  # a cube root: no w² = B
+    ([sp.sqrt(x**2 + 1) + sp.sqrt(x**2 + 2) + sp.sqrt(x**2 + 3) - a], [x], set(), Shape.ALGEBRAIC),  # past ROOTS
     ([a * t * sp.cos(t) - b * sp.sin(t)], [t], {t}, Shape.TRANSCENDENTAL),  # a slab on a drum
     ([sp.sin(t) - a * sp.sin(b * t)], [t], {t}, Shape.TRANSCENDENTAL),  # a half-disk on a drum
-    ([sp.sqrt(a - sp.cos(t)) * sp.sin(t) - b], [t], {t}, Shape.TRANSCENDENTAL),  # a radical of cos θ
+    ([sp.sqrt(a - sp.cos(t)) * sp.sin(t) - b], [t], {t}, Shape.POLYNOMIAL),  # a radical of cos θ: w² = a − c
+    ([sp.sqrt(1 - sp.cos(t)) * sp.sin(t) + sp.sqrt(2 + sp.cos(t)) + sp.sqrt(3 + sp.sin(t)) - b], [t], {t},
+     Shape.TRANSCENDENTAL),  # three radicals of sines: past ROOTS
 ])
 def test_the_shape_of_the_equations(equations, unknowns, angles, shape) -> None:
     assert shape_of(equations, unknowns, angles)[0] is shape
@@ -134,3 +139,69 @@ def test_the_numeric_route_on_reactions_takes_an_angle_in_degrees() -> None:
     at = solution.answers.at["C"]
     assert at["N_C"] == pytest.approx(2 * 9.81 * math.cos(math.pi / 6), rel=1e-12)
     assert at["F_C"] == pytest.approx(2 * 9.81 * 0.5 / 3, rel=1e-12)
+
+
+WALL_SPRING = """title: a rod hinged on a wall, a spring from its end to the wall 2a above the hinge
+parameters: {m: mass, a: half length, k: stiffness, g: acceleration of gravity}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  B: 2*a*[sin(theta), cos(theta)]
+  C: [0, 2*a]
+bodies:
+  rod: {shape: rod, mass: m, length: 2*a, at: B/2, angle: theta, axis: y}
+springs:
+  s: {stiffness: k, between: [B, C], natural_length: a}
+questions:
+  - equilibria: {for: k}
+"""
+
+
+def _wall_spring_roots(k: float, m: float = 2.0, a: float = 0.5, g: float = 9.81) -> list[float]:
+    """The zeros of ∂V/∂θ in (−π, π] away from θ = 0 (where the spring has no length), by
+    sign changes on a fine grid, refined by bisection: V = m g a cos θ + ½ k (|BC| − a)²,
+    |BC| = 2√2 a √(1 − cos θ) (an independent numeric scan, not rbdsolve's)."""
+    def dV(t: float) -> float:
+        root = math.sqrt(1 - math.cos(t))
+        length = 2 * math.sqrt(2) * a * root  # and d|BC|/dθ = √2 a sin θ/√(1 − cos θ)
+        return -m * g * a * math.sin(t) + k * (length - a) * math.sqrt(2) * a * math.sin(t) / root
+    grid = [-math.pi + 1e-6 + i * (2 * math.pi - 2e-6) / 4000 for i in range(4001)]
+    roots = []
+    for lo, hi in zip(grid, grid[1:]):
+        if abs(lo) < 1e-3 or abs(hi) < 1e-3 or dV(lo) * dV(hi) > 0:
+            continue
+        for _ in range(60):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if dV(lo) * dV(mid) > 0 else (lo, mid)
+        roots.append((lo + hi) / 2)
+    if abs(dV(math.pi)) < 1e-9:  # at the end of the span: no sign change inside it
+        roots.append(math.pi)
+    return roots
+
+
+def test_a_square_root_of_the_cosine_is_an_unknown_of_the_polynomial_form() -> None:
+    """|BC|² = 4 a² (sin² θ + (cos θ − 1)²) = 8 a² (1 − cos θ) = 16 a² sin²(θ/2), so V = m g a
+    cos θ + ½ k a² (4 sin(θ/2) − 1)² and ∂V/∂θ = 2 a cos(θ/2) (k a (4 sin(θ/2) − 1) − m g
+    sin(θ/2)) (newuser20): θ = π, and sin(θ/2) = k a/(4 k a − m g), which is ≤ 1 and > 0
+    only where k ≥ k_c = m g/(3 a): cos θ₀ = 1 − 2 sin²(θ₀/2) = (14 a² k² − 8 a g k m + g² m²)/
+    (4 a k − g m)², V'' there a (3 a k − g m)(5 a k − g m)/(4 a k − g m) > 0. The exact
+    route listed only θ = π ("transcendental"); each listed equilibrium that exists at a
+    sampled k is a root of the numeric scan, and every root of the scan is listed."""
+    model = build_model(load_text(WALL_SPRING, "wall.yaml"))
+    (solution,) = solve_problem(model).solutions
+    assert solution.solved and not solution.warnings, solution.warnings
+    a_, g_, k_, m_ = (model.symbols.parameters[n] for n in "agkm")
+    equilibria = solution.answers.equilibria
+    assert len(equilibria) == 3
+    pair = [e for e in equilibria if e.at["theta"] != sp.pi]
+    cos0 = (14 * a_**2 * k_**2 - 8 * a_ * g_ * k_ * m_ + g_**2 * m_**2) / (4 * a_ * k_ - g_ * m_) ** 2
+    assert all(sp.simplify(sp.cos(e.at["theta"]) - cos0) == 0 for e in pair)
+    want_K = a_ * (3 * a_ * k_ - g_ * m_) * (5 * a_ * k_ - g_ * m_) / (4 * a_ * k_ - g_ * m_)
+    assert all(sp.simplify(e.hessian[0] - want_K) == 0 and e.stability.value == "stable" for e in pair)
+    values = {m_: 2, a_: sp.Rational(1, 2), g_: sp.Rational(981, 100)}
+    for k in (5.0, 10.0, 12.5, 13.5, 20.0, 60.0):  # k_c = 13.08 at these values
+        at = {**values, k_: sp.Float(k)}
+        listed = sorted(float(sp.N(e.at["theta"].xreplace(at))) for e in equilibria
+                        if bool(e.exists_when.xreplace(at)))
+        scanned = sorted(_wall_spring_roots(k))
+        assert len(listed) == len(scanned) and all(abs(x - y) < 1e-6 for x, y in zip(listed, scanned)), (k, listed, scanned)

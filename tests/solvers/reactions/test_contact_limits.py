@@ -151,3 +151,31 @@ questions:
         sides.add(hand)
         assert bool(printed.subs(values)) is hand, values
     assert sides == {True, False}
+
+
+SHELL_IN_PIPE = """title: a spherical shell released inside a pipe
+parameters: {m: mass, r: radius, R: pipe radius, theta0: angle of release, g: acceleration}
+values: {m: 400 g, r: 5 cm, R: 60 cm, theta0: 50 deg, g: 9.81 m/s^2}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  ball: {shape: spherical_shell, mass: m, radius: r}
+contacts:
+  C: {body: ball, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+questions:
+  - reactions: {forces: [C], from_rest: {theta: theta0}}
+"""
+
+
+def test_a_condition_the_assumptions_rule_out_is_written_in_the_next_parameter() -> None:
+    """A shell (J = ⅔ m r²) inside a pipe, R > r by its contact (newuser20): T = (5/6) m
+    (R − r)² θ̇², so θ̇² = 6 g (cos θ − cos θ₀)/(5 (R − r)), and N = m g (11 cos θ −
+    6 cos θ₀)/5 vanishes at cos θ = 6 cos θ₀/11, where θ̇² ∝ −(5/11) cos θ₀/(R − r): reached
+    only when θ₀ ≥ π/2. It was written "only when r > R", which the contact's R > r rules
+    out; at θ₀ = 50° it is not reached."""
+    theta0 = sp.Symbol("theta0", positive=True)
+    report = solve_problem(build_model(load_text(SHELL_IN_PIPE, "p.yaml")))
+    result = json.loads(json.dumps(report_object(report)))["results"][0]
+    (where,) = result["answers"]["lost_exists_when"]["N_C"]
+    assert sp.sympify(where, locals={"theta0": theta0}) == sp.Ge(theta0, sp.pi / 2)
+    assert result["values"]["lost_exists_when"]["N_C"] == [False]

@@ -316,16 +316,17 @@ def test_numeric_route_refuses_where_v_has_no_value() -> None:
 # A particle at height y under gravity: V = m g y, ∂V/∂y = m g ≠ 0, so no route can find
 # an equilibrium. A pendulum: V = −m g l cos θ, equilibria θ = 0 (stable) and θ = π.
 
-# ∂V/∂y = m g (y/√(y² + 1) + 2) > 0: no real root, and (unlike a falling particle's constant
-# m g, which the loads never balance, or a polynomial's roots all found, none real: answers,
-# equilibria/uniform.py and exact.py) one neither route can prove absent: sympy's solve of a
-# radical may miss roots, and a numeric search covers a box
+# ∂V/∂y = m g (tanh y + 2) > 0 (V = m g (log cosh y + 2 y)): no real root, and (unlike a falling
+# particle's constant m g, which the loads never balance, or a polynomial's roots all found,
+# none real — a square root of y too, now a polynomial unknown: answers, equilibria/uniform.py
+# and exact.py) one neither route can prove absent: tanh y is transcendental, and a numeric
+# search covers a box
 FALLING = """\
 parameters: {m: mass, g: gravity}
 coordinates: [y]
 gravity: [0, -g]
 points:
-  P: [0, sqrt(y**2 + 1) + 2*y]
+  P: [0, log(cosh(y)) + 2*y]
 bodies:
   b: {shape: particle, mass: m, at: P}
 questions:
@@ -356,7 +357,7 @@ def _replace_exact(monkeypatch, exact) -> None:
 def test_when_both_routes_fail_both_reasons_are_kept_and_the_route_is_the_last() -> None:
     (solution,) = solve_problem(build_model(_problem(FALLING)), Options(route=RouteChoice.AUTO)).solutions
     assert solution.route.value == "numeric"
-    assert solution.error.startswith("the exact route could not answer (∂V/∂q = 0 has no real solution")
+    assert solution.error.startswith("the exact route could not answer (the equilibrium equations are transcendental")
     assert "nor could the numeric route (a sign-change scan of ∂V/∂q at" in solution.error
     assert solution.error.endswith("found no equilibrium)")
 
