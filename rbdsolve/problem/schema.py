@@ -357,4 +357,8 @@ class Problem:
             return self
         table = dict(self.values)
         table.update(values)
-        return replace(self, values=tuple(table.items()))
+        # a unit given with the value makes the parameter's dimension known, as under 'values:'
+        # (--set b="10 cm" on a file that says nothing of b: Ω = 2 g (L m − M b)/(m r² s) in rad/s)
+        dimensions = dict(self.dimensions)
+        dimensions.update({n: v.dimension for n, v in values.items() if n not in dimensions and v.dimension is not None})
+        return replace(self, values=tuple(table.items()), dimensions=tuple(sorted(dimensions.items())))

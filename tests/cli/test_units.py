@@ -175,3 +175,36 @@ def test_a_value_given_with_set_decides_what_the_same_value_in_the_file_would(tm
     components = reactions["values"]["reactions"]["C"]["components"]
     assert components["N_C"] == pytest.approx(m * g - F * math.sin(alpha), rel=1e-12)
     assert components["F_C"] == pytest.approx(F * math.cos(alpha) - m * a, rel=1e-12)
+
+
+
+GYROSCOPE = """title: a gyroscope on a horizontal axle with a counterweight
+parameters: {m: mass, r: radius, L: length, M: mass, b: distance, g: gravity, s: spin}
+values: {m: 2 kg, r: 6 cm, L: 12 cm, M: 0.5 kg, g: 9.81 m/s^2, s: 3000 rev/min}
+unknowns: [Omega]
+gravity: [0, 0, -g]
+triads:
+  T: {turns: [[z, Omega*t], [x, pi/2]], vectors: [e1, e2, e3]}
+bodies:
+  gyro:
+    at: [0, 0, 0]
+    orientation: [T, [z, s*t]]
+    parts:
+      disk: {shape: disk, mass: m, radius: r, at: [0, 0, L]}
+      weight: {shape: particle, mass: M, at: [0, 0, -b]}
+questions:
+  - steady_motion: {about: [0, 0, 0], solve_for: Omega}
+"""
+
+
+def test_a_unit_given_with_set_makes_the_answer_s_unit_known(tmp_path) -> None:
+    """b, the counterweight's distance, has a dimension only from its value: --set
+    b="10 cm" gives it one as 'values: {b: 10 cm}' does, so the steady precession
+    Ω = 2 g (L m − M b)/(m r² s) (the moment balance about O, by hand) = 2·9.81·(0.24 −
+    0.05)/(2·0.0036·100π) = 1.64805 prints in rad/s (it printed a bare number)."""
+    path = tmp_path / "gyro.yaml"
+    path.write_text(GYROSCOPE)
+    out = CliRunner().invoke(main, ["solve", str(path), "--set", "b=10 cm"])
+    assert out.exit_code == 0, out.output
+    omega = 2 * 9.81 * (0.24 - 0.05) / (2 * 0.0036 * 100 * math.pi)
+    assert f"Ω = {omega:.6g} rad/s" in out.output

@@ -84,15 +84,24 @@ def _two_sided(model: Model) -> list[st.Step]:
             if length.sign is not None:
                 continue
             u = model.readable(length.inside)
-            shown, minus = to_unicode(u), to_unicode(tidy(-u))
+            shown = to_unicode(u)
+            term = _term_of(model.readable(spring.stretch), sp.Abs(u))  # 4 a |sin(u)|, not |sin(u)| alone
+            whole, plus, minus = (to_unicode(tidy(term.xreplace({sp.Abs(u): x}))) for x in (sp.Abs(u), u, -u))
             here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
             why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
                    f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
                    f"'assumptions:', such as {_positive(here)}, to take one side)")
-            out.append(st.note(f"Spring '{spring.name}': its length is |{shown}|, which is {shown} where {shown} > 0 "
+            out.append(st.note(f"Spring '{spring.name}': its length is {whole}, which is {plus} where {shown} > 0 "
                                f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
                                "keep |…| and sign(…)"))
     return out
+
+
+def _term_of(stretch: sp.Expr, absolute: sp.Expr) -> sp.Expr:
+    """The term of the stretch (the length less l₀) that holds |u|: the length's part
+    written with it; |u| itself where no single term holds it."""
+    held = [t for t in sp.Add.make_args(sp.expand(stretch)) if t.has(absolute)]
+    return held[0] if len(held) == 1 else absolute
 
 
 def _positive(value: sp.Expr) -> str:

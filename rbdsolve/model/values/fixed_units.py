@@ -80,7 +80,7 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
     key = named[-1]
     if key in _PER_COORDINATE_PAIR:
         return _pair(key, indices, list(coordinates.values()))
-    if key == "growth_rates":  # γ = √(−λ): a rate of growth, e^(γt), not of turning
+    if key in ("growth_rates", "growth_rate"):  # γ = √(−λ): a rate of growth, e^(γt), not of turning
         return "1/s"
     if kind == "kinematics" and named[:1] == ["bodies"] and key in ("angular_velocity", "angular_acceleration"):
         return "rad/s" if key == "angular_velocity" else "rad/s²"

@@ -108,9 +108,13 @@ def not_real(found: Numbers) -> str | None:
 
 
 def _absent_record(tree: object, path: Path) -> bool:
-    """Whether a record on the way to ``path`` has ``exists_when`` or ``when`` false."""
+    """Whether a record on the way to ``path`` has ``exists_when`` or ``when`` false, or
+    is the frequencies of a motion unstable at the values (a gyroscopic one's roots ω
+    are real only where it is stable; its growth rate is given instead)."""
     for part in path:
         if isinstance(tree, dict) and (tree.get("exists_when") is False or tree.get("when") is False):
+            return True
+        if isinstance(tree, dict) and part == "frequencies" and tree.get("stability") == "unstable":
             return True
         try:
             tree = tree[part]

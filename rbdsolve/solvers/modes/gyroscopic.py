@@ -357,7 +357,7 @@ def squares_out(value: sp.Expr) -> sp.Expr:
     if inside == 1:
         return outside
     top, bottom = sp.fraction(outside)  # kept apart, so that the root of a product stays one root
-    return sp.Mul(*sp.Mul.make_args(top), sp.Pow(inside, sp.S.Half, evaluate=False),
+    return sp.Mul(*[x for x in sp.Mul.make_args(top) if x != 1], sp.Pow(inside, sp.S.Half, evaluate=False),
                   *[sp.Pow(x, -1) for x in sp.Mul.make_args(bottom) if x != 1], evaluate=False)
 
 

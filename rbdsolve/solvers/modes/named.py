@@ -50,4 +50,16 @@ def _modes(a, model: Model, path: Path = (), group: str = "") -> list[Named]:
             out.append(Named((*path, "growth_rates", i), labels.symbol("growth_rate", i + 1), group))
         if i < len(shapes):
             out.append(Named((*path, "shapes", i), labels.symbol("amplitude", i + 1), group))
+    out += _growth_where_it_holds(a, model, labels, path, group)
     return out + criticals((*path, "critical"), getattr(a, "critical", ()), group)
+
+
+def _growth_where_it_holds(a, model: Model, labels, path: Path, group: str) -> list[Named]:
+    """γ of the gyroscopic case that holds at the parameter values (a rotor on a sprung
+    joint spun below its critical spin: γ = 1.81252 1/s), printed as its case is."""
+    out = []
+    for j, case in enumerate(getattr(a, "stability_cases", ())):
+        when = case.when.xreplace(dict(model.values)) if model.values else case.when
+        if case.growth_rate is not None and when is sp.true:
+            out.append(Named((*path, "stability_cases", j, "growth_rate"), labels.symbol("growth_rate"), group))
+    return out

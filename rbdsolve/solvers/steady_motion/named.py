@@ -18,7 +18,8 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
     if hasattr(answers, "solutions"):  # the numeric route: each solution's unknowns and values
         return tuple(n for k, s in enumerate(answers.solutions) for n in _solution(
             ("solutions", k), s, targets, model, "" if len(answers.solutions) == 1 else f"Solution {k + 1}"))
-    out = [Named(("rates", a), sp.Symbol(a)) for a in answers.rates]
+    again = {x for a in answers.at_solutions for x in a.rates}  # given at each solution: not twice (spin = −6.67 Ω, then −29.9 rad/s)
+    out = [Named(("rates", a), sp.Symbol(a)) for a in answers.rates if a not in again]
     out += [Named(("angular_velocity",), omega_label(model))]
     out += _solved(("solved",), answers.solved, targets)
     out += [Named(("found_along", u), sp.Symbol(u)) for u in answers.found_along]

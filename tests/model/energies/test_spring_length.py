@@ -212,3 +212,27 @@ questions: [eom]
     r = model.q[0]
     L = model.symbols.parameters["L"]
     assert sp.expand(model.springs[0].stretch - (r - L)) == 0
+
+
+HALF_ANGLE = """title: a rod hinged on a wall, a spring from its end to the wall 2a above the hinge
+parameters: {m: mass, a: half length, k: stiffness, g: acceleration of gravity}
+coordinates: [u]
+gravity: [0, -g]
+points:
+  B: 2*a*[sin(2*u), cos(2*u)]
+  C: [0, 2*a]
+bodies:
+  rod: {shape: rod, mass: m, length: 2*a, at: B/2, angle: 2*u, axis: y}
+springs:
+  s: {stiffness: k, between: [B, C], natural_length: a}
+questions:
+  - eom
+"""
+
+
+def test_the_note_gives_the_whole_length_not_only_what_is_under_the_bars() -> None:
+    """|B − C|² = 4 a² (sin² 2u + (cos 2u − 1)²) = 8 a² (1 − cos 2u) = 16 a² sin² u: the
+    length is 4 a |sin(u)|, zero at u = 0 (it was said to be |sin(u)|)."""
+    report = solve_problem(_model(HALF_ANGLE))
+    (note,) = [step for step in report.model.steps if "its length is" in step.text]
+    assert "its length is 4 a |sin(u)|, which is 4 a sin(u) where sin(u) > 0 and −4 a sin(u) where" in note.text

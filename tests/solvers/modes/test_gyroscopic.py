@@ -4,6 +4,8 @@ the exact one, and the refusals that name the form that works."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 import sympy as sp
 
@@ -145,6 +147,9 @@ def test_squares_out_of_a_root() -> None:
     assert str(squares_out(value)) == "2*sqrt(A*g*h*m)/C"
     plain = sp.Pow(g / r, sp.S.Half, evaluate=False)
     assert squares_out(plain) is plain
+    # nothing left over the line: √(A (g − k)/(3 m² r⁴)) is √(A (g − k)/3)/(m r²), no "1 √…"
+    below = squares_out(sp.Pow(A * (g - k) / (3 * m**2 * r**4), sp.S.Half, evaluate=False))
+    assert str(below) == "sqrt(A*(g - k)/3)/(m*r**2)"
 
 
 def test_gimbals_without_springs_have_a_neutral_direction() -> None:
@@ -223,3 +228,45 @@ questions:
     model = build_model(load_text(text, "slot.yaml"))
     with pytest.raises(UnsolvedError, match="whirls, not normal modes"):
         mode_shapes(model, model.problem.questions[0])
+
+
+SPRUNG_ROTOR = """
+parameters: {M: mass, L: length, m: mass, r: radius, k: stiffness, g: gravity, s: spin rate}
+values: {M: 200 g, L: 30 cm, m: 1 kg, r: 10 cm, k: 2 N*m/rad, g: 9.81 m/s^2, s: 120}
+coordinates: [a, b]
+gravity: [0, 0, -g]
+triads:
+  T: {turns: [[x, a], [y, b]], vectors: [e1, e2, e3]}
+points:
+  G: L/2*e3
+  D: L*e3
+bodies:
+  rod: {shape: rod, mass: M, length: L, at: G, axis: z, orientation: [T]}
+  rotor: {shape: disk, mass: m, radius: r, at: D, orientation: [T, [z, s*t]]}
+springs:
+  tilt_a: {stiffness: k, angle: a}
+  tilt_b: {stiffness: k, angle: b}
+questions:
+  - modes: {about: {a: 0, b: 0}}
+"""
+
+
+def test_the_growth_rate_below_the_critical_spin_is_a_number(tmp_path) -> None:
+    """A rod upright on a sprung Cardan joint with a rotor on top (newuser21): A = M L²/3 +
+    m L² + m r²/4 = 0.0985, C = m r²/2 = 0.005, K = k − (M/2 + m) g L = −1.2373, so
+    A σ² ± i C s σ + K = 0 has Re σ = √(−4 A K − C² s²)/(2 A) = 1.81252 1/s at s = 120
+    (below s_c = 2 √(−A K)/C = 139.642). The numeric block printed no γ, and warned that
+    the frequencies were not real, which is what an unstable motion's are."""
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    path = tmp_path / "rotor.yaml"
+    path.write_text("title: a rotor on a sprung joint" + SPRUNG_ROTOR, encoding="utf-8")
+    out = CliRunner().invoke(main, ["solve", str(path)])
+    assert out.exit_code == 0, out.output
+    A, C, K = 0.0985, 0.005, 2 - (0.1 + 1) * 9.81 * 0.3
+    gamma = math.sqrt(-4 * A * K - (C * 120) ** 2) / (2 * A)
+    (line,) = [x for x in out.output.splitlines() if x.strip().startswith("γ = ") and "1/s" in x]
+    assert abs(float(line.split("=")[1].split()[0]) - gamma) < 1e-5 * gamma
+    assert "no numeric value for frequencies" not in out.output
