@@ -18,10 +18,8 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, by_file, solved_file
 from rbdsolve.errors import InputError
-from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file
 from rbdsolve.model.values.tree import leaves
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.conditions.condition_roots import admissible
@@ -79,10 +77,9 @@ def _sides(model, critical: CriticalValue) -> list[dict[str, Fraction]]:
     return [{**given, critical.parameter: at * side} for side in SIDES if (at * side > 0 or not p.is_positive)]
 
 
-@pytest.mark.parametrize("path", FILES, ids=lambda p: str(p.relative_to(PROBLEMS)))
+@pytest.mark.parametrize("path", by_file(FILES), ids=lambda p: str(p.relative_to(PROBLEMS)))
 def test_no_printed_value_fails_its_own_check(path) -> None:
-    model = build_model(load_file(path))
-    report = solve_problem(model)
+    model, report = solved_file(path)
     assert not _refusals(report)
     criticals = {(c.parameter, c.value): c for s in report.solutions if s.solved for c in _criticals(s.answers)}
     for critical in criticals.values():  # each once (equilibria and modes print the same Ω_c)

@@ -17,13 +17,10 @@ import pytest
 import yaml
 
 from rbdsolve.cli.writing import Look, rendered_text
-from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file
 from rbdsolve.render.json import report_object
 from rbdsolve.render.numbers import number_text
-from rbdsolve.solvers import solve_problem
 
-from conftest import PROBLEMS, same
+from conftest import PROBLEMS, by_file, same, solved_file
 
 CASES = sorted(PROBLEMS.rglob("*.expected.yaml"))
 
@@ -32,10 +29,10 @@ def _problem_for(expected: Path) -> Path:
     return expected.with_name(expected.name.replace(".expected.yaml", ".yaml"))
 
 
-@pytest.mark.parametrize("expected_file", CASES, ids=lambda p: str(p.relative_to(PROBLEMS)))
+@pytest.mark.parametrize("expected_file", by_file(CASES, _problem_for), ids=lambda p: str(p.relative_to(PROBLEMS)))
 def test_golden(expected_file: Path) -> None:
     expected = yaml.safe_load(expected_file.read_text(encoding="utf-8"))
-    report = solve_problem(build_model(load_file(_problem_for(expected_file))))
+    _, report = solved_file(_problem_for(expected_file))
     got = json.loads(json.dumps(report_object(report)))  # exactly what scripts see
     for key, value in expected.get("model", {}).items():
         assert same(got["model"][key], value), f"model.{key}: {got['model'][key]} != {value}"

@@ -7,12 +7,9 @@ import json
 import pytest
 import sympy as sp
 
-from rbdsolve.model.build import build_model
-from rbdsolve.problem import load_file
 from rbdsolve.render.json import render_report
-from rbdsolve.solvers import solve_problem
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, by_file, solved_file
 
 FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
 
@@ -32,9 +29,9 @@ def strings(tree):
             yield from strings(value)
 
 
-@pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", by_file(FILES), ids=lambda p: p.name)
 def test_answers_read_back(path) -> None:
-    line = json.loads(render_report(solve_problem(build_model(load_file(path)))))
+    line = json.loads(render_report(solved_file(path)[1]))
     names = {n: sp.Symbol(n, positive=True) for n in line["symbols"]}
     for text in [line["model"]["T"], line["model"]["V"]]:
         if text is not None:
