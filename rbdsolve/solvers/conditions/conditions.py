@@ -142,12 +142,10 @@ def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | 
 def _partition(model, f: sp.Expr, first: sp.Symbol | None) -> Partition | None:
     """The first candidate that splits f's sign where the assumptions allow it (a shell
     inside a pipe, R > r: its condition in θ₀, not "r > R"), else the first that splits
-    it at all (a coin whose contact implies cos θ > 0 keeps "θ < π/2")."""
-    return _split(model, f, first, True) or _split(model, f, first, False)
-
-
-def _split(model, f: sp.Expr, first: sp.Symbol | None, allowed_only: bool) -> Partition | None:
+    it at all (a coin whose contact implies cos θ > 0 keeps "θ < π/2"); each candidate's
+    roots and signs found once."""
     angles = angle_parameters(f)
+    anywhere = None
     for p in candidates(f, model, angles, first):
         roots = parameter_roots(f, p, angles, model)
         if not roots:
@@ -158,19 +156,26 @@ def _split(model, f: sp.Expr, first: sp.Symbol | None, allowed_only: bool) -> Pa
         signs = [sign_on(f, piece, model, angles) for piece in pieces]
         if None in signs:
             continue
-        kept = [(piece, sign) for piece, sign in zip(pieces, signs) if not allowed_only or allowed(piece, model)]
-        if not kept:
-            continue
-        pieces, signs = (list(x) for x in zip(*kept))  # a piece the assumptions rule out (r > R under R > r) splits nothing
-        merged = [replace(pieces[0], sign=signs[0])]
-        for piece, sign in zip(pieces[1:], signs[1:]):
-            if sign == merged[-1].sign:
-                merged[-1] = merged[-1].joined(piece)
-            else:
-                merged.append(replace(piece, sign=sign))
-        if len(merged) > 1:
-            return Partition(p, tuple(merged))
-    return None
+        # a piece the assumptions rule out (r > R under R > r) splits nothing
+        allowed_ones = [(piece, sign) for piece, sign in zip(pieces, signs) if allowed(piece, model)]
+        found = _merged(p, allowed_ones)
+        if found is not None:
+            return found
+        anywhere = anywhere or _merged(p, list(zip(pieces, signs)))
+    return anywhere
+
+
+def _merged(p: sp.Symbol, signed: list) -> Partition | None:
+    """Neighbouring pieces of one sign joined; a partition where at least two are left."""
+    if not signed:
+        return None
+    merged = [replace(signed[0][0], sign=signed[0][1])]
+    for piece, sign in signed[1:]:
+        if sign == merged[-1].sign:
+            merged[-1] = merged[-1].joined(piece)
+        else:
+            merged.append(replace(piece, sign=sign))
+    return Partition(p, tuple(merged)) if len(merged) > 1 else None
 
 
 def allowed(piece: Piece, model) -> bool:
