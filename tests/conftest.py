@@ -21,23 +21,17 @@ SEED = PROBLEMS / "sg2150-2015-10-29"
 @functools.lru_cache(maxsize=None)
 def solved_file(path: Path):
     """(model, report) of a problem file, solved once per test process: the golden
-    answers, the JSON read-back and the audit each check every file in problems/, and
-    solving the corpus three times was a third of the suite. The tests that use it are
-    grouped by file (``by_file``), so that pytest-xdist runs a file's checks in one
-    process; the report is read, never changed (frozen dataclasses)."""
+    answers, the JSON read-back and the audit each check every file in problems/, and a
+    process that runs two of them for one file solves it once. (Grouping a file's checks
+    in one process, pytest-xdist's --dist loadgroup, made the whole suite slower on 2
+    cores, 17 min against 13: the groups balance worse than single tests.) The report is
+    read, never changed (frozen dataclasses)."""
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_file
     from rbdsolve.solvers import solve_problem
 
     model = build_model(load_file(path))
     return model, solve_problem(model)
-
-
-def by_file(paths, problem=lambda p: p):
-    """``paths`` as pytest params, each in the xdist group of its problem file (``problem``
-    maps a path to it: an expected file to its problem), for ``solved_file``'s cache."""
-    return [pytest.param(p, marks=pytest.mark.xdist_group(name=str(problem(p).relative_to(PROBLEMS))))
-            for p in paths]
 
 
 def needs_tex() -> None:

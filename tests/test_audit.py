@@ -18,7 +18,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from conftest import PROBLEMS, by_file, solved_file
+from conftest import PROBLEMS, solved_file
 from rbdsolve.errors import InputError
 from rbdsolve.model.values.tree import leaves
 from rbdsolve.solvers import solve_problem
@@ -77,7 +77,7 @@ def _sides(model, critical: CriticalValue) -> list[dict[str, Fraction]]:
     return [{**given, critical.parameter: at * side} for side in SIDES if (at * side > 0 or not p.is_positive)]
 
 
-@pytest.mark.parametrize("path", by_file(FILES), ids=lambda p: str(p.relative_to(PROBLEMS)))
+@pytest.mark.parametrize("path", FILES, ids=lambda p: str(p.relative_to(PROBLEMS)))
 def test_no_printed_value_fails_its_own_check(path) -> None:
     model, report = solved_file(path)
     assert not _refusals(report)

@@ -20,7 +20,7 @@ from rbdsolve.cli.writing import Look, rendered_text
 from rbdsolve.render.json import report_object
 from rbdsolve.render.numbers import number_text
 
-from conftest import PROBLEMS, by_file, same, solved_file
+from conftest import PROBLEMS, same, solved_file
 
 CASES = sorted(PROBLEMS.rglob("*.expected.yaml"))
 
@@ -29,7 +29,7 @@ def _problem_for(expected: Path) -> Path:
     return expected.with_name(expected.name.replace(".expected.yaml", ".yaml"))
 
 
-@pytest.mark.parametrize("expected_file", by_file(CASES, _problem_for), ids=lambda p: str(p.relative_to(PROBLEMS)))
+@pytest.mark.parametrize("expected_file", CASES, ids=lambda p: str(p.relative_to(PROBLEMS)))
 def test_golden(expected_file: Path) -> None:
     expected = yaml.safe_load(expected_file.read_text(encoding="utf-8"))
     _, report = solved_file(_problem_for(expected_file))

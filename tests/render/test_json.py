@@ -9,7 +9,7 @@ import sympy as sp
 
 from rbdsolve.render.json import render_report
 
-from conftest import PROBLEMS, by_file, solved_file
+from conftest import PROBLEMS, solved_file
 
 FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
 
@@ -29,7 +29,7 @@ def strings(tree):
             yield from strings(value)
 
 
-@pytest.mark.parametrize("path", by_file(FILES), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
 def test_answers_read_back(path) -> None:
     line = json.loads(render_report(solved_file(path)[1]))
     names = {n: sp.Symbol(n, positive=True) for n in line["symbols"]}
