@@ -152,9 +152,13 @@ def test_the_whole_process_ends_within_its_budget(tmp_path: Path) -> None:
     done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(path), "--budget", "0.5", "-f", "json"],
                           capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 1, done.stderr
-    result = json.loads(done.stdout)["results"][0]
-    assert re.fullmatch(r"'modes' ran out of its (share \([\d.]+ s\) of the )?0\.5 s budget \(--budget to "
-                        r"change it\)", result["error"]), result["error"]
+    # which stage the half second ends in depends on the machine's speed, not on rbdsolve: the
+    # model (T and V) takes 0.3–0.6 s of processor time on a 2-core machine of 2026, the
+    # modes question the rest (a run where the model alone spent it failed here once)
+    line = json.loads(done.stdout)
+    message = line["results"][0]["error"] if "results" in line else line["error"]["message"]
+    assert re.search(r"(^'modes'|the model \(T and V\)) ran out of its (share \([\d.]+ s\) of the )?0\.5 s "
+                     r"budget \(--budget to change it\)$", message), message
     assert "Traceback" not in done.stderr
 
 
