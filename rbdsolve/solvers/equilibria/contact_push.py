@@ -12,27 +12,22 @@ from typing import Mapping
 
 import sympy as sp
 
-from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.conditions.signs import sign_of
-from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
-from rbdsolve.solvers.reactions.supports import How, contact_support, planar
+from rbdsolve.solvers.reactions.balances import contact_forces
+from rbdsolve.solvers.reactions.supports import How
 
 
 def pulling(model: Model, at: Mapping[sp.Expr, sp.Expr]) -> tuple[str, ...]:
     """A warning per push or tension that would be negative at the equilibrium ``at``
     ({q: value})."""
-    contacts = [c for c in model.contacts if c.source.pulley is None]
-    if not contacts or not planar(model):
-        return ()
     rest = {**dict(at), **{qd: sp.Integer(0) for qd in model.qd}, **{qdd: sp.Integer(0) for qdd in model.qdd}}
-    try:
-        supports = with_strings(model, tuple(contact_support(model, c) for c in contacts), None)
-        forces = solve_forces(model, balances(model, supports, 2), supports, rest)
-    except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
+    solved = contact_forces(model, rest)
+    if solved is None:
         return ()
+    supports, forces = solved
     shown = ", ".join(f"{unicode_name(n)} = {to_unicode(model.readable(at[q]))}"
                       for n, q in zip(model.coordinate_names(), model.q))
     out = []

@@ -23,7 +23,7 @@ from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.reactions.applied import applied
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
-from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point
+from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point, planar
 
 
 _Z = sp.Matrix([0, 0, 1])
@@ -200,3 +200,21 @@ def _holds(residual: sp.Expr, model: Model) -> bool:
         if value > 1e-15 * size:
             return False
     return True
+
+
+def contact_forces(model: Model, table) -> tuple[tuple[Held, ...], dict[sp.Symbol, sp.Expr]] | None:
+    """Newton–Euler with the scene's contacts and strings (a body hanging over a pulley
+    aside) as the only supports, ``table`` put in (q̈ from Lagrange's equations, or the
+    state at rest): the supports and their forces; None where the scene has none, is
+    not planar, or they do not hold its bodies by themselves (a pivot too). Where a
+    contact would have to pull at an equilibrium (equilibria/contact_push.py), where one
+    is lost on the way to a configuration (on_the_way.py)."""
+    contacts = [c for c in model.contacts if c.source.pulley is None]
+    if not contacts or not planar(model):
+        return None
+    try:
+        supports = with_strings(model, tuple(contact_support(model, c) for c in contacts), None)
+        return supports, solve_forces(model, balances(model, supports, 2), supports, dict(table))
+    except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
+        return None
+

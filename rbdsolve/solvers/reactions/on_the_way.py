@@ -22,16 +22,16 @@ from typing import Mapping
 
 import sympy as sp
 
-from rbdsolve.errors import InputError, UnsolvedError
+from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.eom.exact import lagrange_equations
 from rbdsolve.solvers.lagrange.accelerations import accelerations
 from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral
-from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
+from rbdsolve.solvers.reactions.balances import contact_forces
 from rbdsolve.solvers.reactions.first_zero import first_loss
 from rbdsolve.solvers.reactions.motion import along
-from rbdsolve.solvers.reactions.supports import How, contact_support, planar
+from rbdsolve.solvers.reactions.supports import How
 from rbdsolve.solvers.routes.needed import missing_values
 
 
@@ -64,17 +64,18 @@ def lost_on_the_way(model: Model, start: Mapping[sp.Symbol, sp.Expr], to: sp.Exp
 def _pushes(model: Model, e: EnergyIntegral) -> dict[sp.Symbol, tuple[sp.Expr, How]]:
     """Each contact's push and each string's tension as a function of q alone; empty
     where the scene has none, a value is missing, or they do not hold it by themselves."""
-    contacts = [c for c in model.contacts if c.source.pulley is None]
-    if not contacts or len(model.q) != 1 or not planar(model) or missing_values(model):
+    if not model.contacts or len(model.q) != 1 or missing_values(model):
         return {}
     try:
-        supports = with_strings(model, tuple(contact_support(model, c) for c in contacts), None)
         found = accelerations(lagrange_equations(model), model)
-        if found.solved is None or found.too_long:
-            return {}
-        forces = solve_forces(model, balances(model, supports, 2), supports, dict(zip(model.qdd, found.solved)))
-    except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
+    except (UnsolvedError, ValueError, TypeError, ZeroDivisionError):
         return {}
+    if found.solved is None or found.too_long:
+        return {}
+    solved = contact_forces(model, zip(model.qdd, found.solved))
+    if solved is None:
+        return {}
+    supports, forces = solved
     out = {}
     for s in supports:
         for c in s.components:
