@@ -55,7 +55,7 @@ def test_count_ops_is_at_most_nine_per_node() -> None:
     assert all(sp.count_ops(e) <= OPS_PER_NODE * _nodes(e) for e in DENSE)
     rng = random.Random(37)
     worst = 0.0
-    for _ in range(1500):
+    for _ in range(400):  # each count_ops of a depth-5 tree is slow; the dense forms above are the sharp cases
         e = _random_expr(rng, 5)
         ops = sp.count_ops(e)
         assert ops <= OPS_PER_NODE * _nodes(e), e
@@ -66,7 +66,7 @@ def test_count_ops_is_at_most_nine_per_node() -> None:
 def test_past_limit_is_count_ops_past_max_ops() -> None:
     rng = random.Random(5)
     sizes = set()
-    for _ in range(300):
+    for _ in range(100):
         terms = rng.randrange(1, 120)
         e = sp.Add(*[_random_expr(rng, 3) * sp.Symbol(f"a{i}") for i in range(terms)])
         assert _past_limit(e) == (sp.count_ops(e) > MAX_OPS), e

@@ -8,8 +8,8 @@ Invariants of every case: exit code 0, 1 or 2 (never 3); no traceback and no
 naming the file; JSON is strict (no NaN, no Infinity), and a numeric value left null
 where the exact answer is a plain number comes with a warning that says so.
 
-The normal run is 150 cases (RBDSOLVE_MUTATION_CASES), about 20 s on a quiet two-core
-machine; the cases are the same on every machine, quiet or loaded, for a seed
+The normal run is 90 cases (RBDSOLVE_MUTATION_CASES), about 25 s on a two-core machine
+twice as slow as a laptop; the cases are the same on every machine, quiet or loaded, for a seed
 (RBDSOLVE_MUTATION_SEED, default 28). A long run, before a release or after touching
 the loader (about two minutes per 1000 cases):
 
@@ -40,7 +40,7 @@ from rbdsolve.cli import main
 from conftest import PROBLEMS
 
 SEED = int(os.environ.get("RBDSOLVE_MUTATION_SEED", "28"))
-CASES = int(os.environ.get("RBDSOLVE_MUTATION_CASES", "150"))
+CASES = int(os.environ.get("RBDSOLVE_MUTATION_CASES", "90"))
 BUDGET = "1"  # seconds per question and for the model: a case costs a few seconds at most
 HANG = 120  # seconds: a case still running then is a hang
 

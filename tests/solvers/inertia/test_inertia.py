@@ -42,7 +42,7 @@ def bodies(draw):
     ])
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=6, deadline=None)
 @given(bodies())
 def test_principal_axes_are_orthonormal_eigenvectors(text: str) -> None:
     result = solve_problem(build_model(load_text(text, "b.yaml"))).solutions[0]
