@@ -20,6 +20,7 @@ from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.readers import expect_mapping, expect_scalar
 from rbdsolve.problem.instants import StateValue
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
 
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
@@ -226,13 +227,59 @@ class Reading:
                 keys = [_state_name(k, n) for k in orders for n in names]  # dot(thta): dot(theta)
                 raise InputError(f"'{key.text}' is not a coordinate{_ORDER_WORDS[orders]}"
                                  f"{did_you_mean(key.text.strip(), keys)}", key.loc)
-            given[(order, name)] = self.constant(value, f"{_WHAT[order]} in {what}")
+            given[(order, name)] = self._state_value(value, order, f"{_WHAT[order]} in {what}")
         wanted = [(k, n) for k in orders for n in names]
         missing = [_state_name(k, n) for k, n in wanted if (k, n) not in given]
         if complete and missing:
             every = "every coordinate" + (" and rate" if 1 in orders else "")
             raise InputError(f"give a value for {every}; missing {', '.join(missing)}{hint}", table.loc)
         return tuple(StateValue(n, k, given[(k, n)]) for k, n in wanted if (k, n) in given)
+
+
+    def _state_value(self, node: Node, order: int, what: str) -> ex.Expr:
+        """A state's value: parameters and numbers, or a quantity with a unit of its
+        order's kind, read in SI as exams write it: ``10 deg`` (π/18) or ``30 cm`` for a
+        coordinate, ``120 rev/min`` or ``2 m/s`` for a rate, ``3 rad/s^2`` for an
+        acceleration. Whether the coordinate is an angle or a length the scene does not
+        say: either kind is taken for either coordinate, as a bare number is."""
+        try:
+            return self.constant(node, what)
+        except InputError as exc:
+            value = _quantity(node)
+            if value is None:
+                raise exc from None
+        kinds = _STATE_KINDS[order]
+        if value.dimension not in kinds:
+            raise InputError(f"'{ex._clip(node.text.strip())}' is {_kind_of(value.dimension)}, not {what} "
+                             f"(write {_KIND_EXAMPLES[order]})", node.loc)
+        return ex.Expr(value.tree, ex.Kind.SCALAR, node.text.strip(), node.loc)
+
+
+def _quantity(node: Node):
+    """The node as a quantity with a unit (``10 deg``), or None: no unit, or no quantity."""
+    if not isinstance(node, Scalar):
+        return None
+    from rbdsolve.problem.quantities.quantity import parse_value  # pint only for a file that has a unit
+
+    try:
+        value = parse_value(node.text, node.loc, node.plain)
+    except InputError:
+        return None
+    return value if value.dimension is not None else None
+
+
+_PER_SECOND = Dimension(time=Fraction(-1))
+# a coordinate is an angle (no dimension) or a length; its rate and acceleration per s and s²
+_STATE_KINDS = {0: (NUMBER, LENGTH), 1: (_PER_SECOND, LENGTH * _PER_SECOND),
+                2: (_PER_SECOND ** 2, LENGTH * _PER_SECOND ** 2)}
+_KIND_EXAMPLES = {0: "an angle such as 30 deg, or a length such as 20 cm",
+                  1: "a rate such as 120 rev/min, or a speed such as 2 m/s",
+                  2: "an angular acceleration such as 3 rad/s^2, or an acceleration such as 9.81 m/s^2"}
+
+
+def _kind_of(dimension: Dimension) -> str:
+    unit = dimension.unit
+    return f"a quantity in {unit}" if unit else "a pure number"
 
 
 _STATE_KEY = re.compile(r"^\s*(dot|ddot)\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)\s*$")
@@ -253,8 +300,8 @@ def _state_name(order: int, name: str) -> str:
 
 
 def _unit_hint(error: InputError, node: Node) -> InputError:
-    """A quantity with a unit (``30 deg``) where an expression is read: units are read in
-    'values:' (and --set), so say how to write it here, rather than 'invalid syntax'."""
+    """A quantity with a unit (``10 rad/s``) where an expression is read: units are read in
+    'values:', --set and a state, so say how to write it here, rather than 'invalid syntax'."""
     if not (isinstance(node, Scalar) and error.message.startswith("cannot read expression")):
         return error
     from rbdsolve.problem.quantities.quantity import parse_value  # pint only for a file that has a unit
@@ -266,6 +313,7 @@ def _unit_hint(error: InputError, node: Node) -> InputError:
     if value.dimension is None:
         return error
     text = ex._clip(node.text.strip())
-    return InputError(f"'{text}' has a unit, and units are read only in 'values:' (and --set): write the "
-                      f"value here in SI without one (an angle in radians: 30° is pi/6), or name it, "
-                      f"with a parameter whose value is '{text}'", node.loc)
+    return InputError(f"'{text}' has a unit, and units are read in 'values:', --set and a question's states "
+                      f"(at:, from_rest:, about:, to:), not here: write the value here in SI without one (an "
+                      f"angle in radians: 30° is pi/6), or name it, with a parameter whose value is '{text}'",
+                      node.loc)
