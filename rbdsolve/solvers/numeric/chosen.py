@@ -70,7 +70,8 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     """Newton from the given point; the refined point if it is within REFINE_TOL."""
     import numpy as np
 
-    from rbdsolve.solvers.numeric.numeric_model import ROOT_TOL, compiled_gradient, difference, gradient_scale, newton
+    from rbdsolve.solvers.numeric.newton import newton
+    from rbdsolve.solvers.numeric.numeric_model import ROOT_TOL, compiled_gradient, difference, gradient_scale
 
     about = question.options.about
     contact_span.require_on_edges(question, model)

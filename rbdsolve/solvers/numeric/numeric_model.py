@@ -21,7 +21,7 @@ turns) is searched as a length.
   even multiplicity). Complete, to round-off, under the assumption stated there (|g'|
   within twice its sampled size on each cell; roots more than the smallest cell, box
   width / 2**20, apart); intervals left when its evaluations run out are reported.
-* More coordinates: Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H)
+* More coordinates: Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H: newton.py)
   from every point of a grid over the box, GRID_POINTS per coordinate (fewer in higher
   dimension, at most MAX_STARTS starts; where even 2 per coordinate would exceed
   MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead). No
@@ -57,6 +57,7 @@ from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exac
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
 from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS
+from rbdsolve.solvers.numeric.newton import from_starts
 from rbdsolve.solvers.numeric.scan import scan
 from rbdsolve.solvers.numeric.search_box import round_a_circle, search_box
 
@@ -66,7 +67,6 @@ SAMPLE_SEED = 20151029  # fixed: the same starts, and the same answers, every ru
 SCALE_SAMPLES = 16
 ROOT_TOL = 1e-10  # |∂V/∂q| relative to the scale of V's gradient
 MERGE_TOL = 1e-6
-EPS_STEP = 4 * float(np.finfo(float).eps)
 PERIODIC_SAMPLES = 3
 PERIODIC_TOL = 1e-8
 CURVATURE_TOL = 1e-7  # a Hessian eigenvalue this small relative to hessian_scale counts as zero
@@ -234,7 +234,7 @@ def find_numeric(model: Model) -> NumericEquilibria:
         candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
     else:
         starts, sampling = _starts(model, GRID_POINTS)
-        candidates, unresolved = (newton(x, g, H) for x in starts), ()
+        candidates, unresolved = from_starts(starts, g, H, lambda x, y: difference(model, x, y)), ()
     roots: list[Root] = []
     for x in candidates:
         try:
@@ -290,16 +290,6 @@ def _on_edges(model: Model, roots: list[Root]) -> tuple[list[Root], tuple]:
         outside = contact_span.outside(model, at)
         (kept.append(r) if outside is None else off.append(outside))
     return kept, tuple(off)
-
-
-def newton(start: np.ndarray, g, H) -> np.ndarray | None:
-    """Newton's method (hybr) from a start, polished; None where V has no value."""
-    from scipy.optimize import root
-
-    try:
-        return _polished(root(g, start, jac=H, method="hybr").x, g, H)
-    except UnsolvedError:
-        return None
 
 
 def _scanned(model: Model, g, H, tol: float):
@@ -371,20 +361,6 @@ def _as_root(model: Model, x: np.ndarray, g, H, tol: float, curvature: float) ->
     if kind == "singular":
         kind = "neutral" if across else "undetermined"
     return Root(tuple(float(v) for v in x), kind, free, across)
-
-
-def _polished(x: np.ndarray, g, H, steps: int = 3) -> np.ndarray:
-    """A few plain Newton steps: hybr stops at a relative step of 1.5e-8, Newton's
-    quadratic convergence takes the root on to round-off."""
-    for _ in range(steps):
-        try:
-            step = np.linalg.solve(np.asarray(H(x), dtype=float), np.asarray(g(x), dtype=float))
-        except np.linalg.LinAlgError:
-            break
-        x = x - step
-        if np.max(np.abs(step)) <= EPS_STEP * max(np.max(np.abs(x)), 1.0):
-            break
-    return x
 
 
 def _kind(H: np.ndarray, curvature: float) -> str:
