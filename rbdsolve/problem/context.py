@@ -235,7 +235,6 @@ class Reading:
             raise InputError(f"give a value for {every}; missing {', '.join(missing)}{hint}", table.loc)
         return tuple(StateValue(n, k, given[(k, n)]) for k, n in wanted if (k, n) in given)
 
-
     def _state_value(self, node: Node, order: int, what: str) -> ex.Expr:
         """A state's value: parameters and numbers, or a quantity with a unit of its
         order's kind, read in SI as exams write it: ``10 deg`` (π/18) or ``30 cm`` for a

@@ -56,8 +56,8 @@ from rbdsolve.model.energies.energy import hessian, mass_matrix, memoized, poten
 from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
-from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.numeric.newton import from_starts
+from rbdsolve.solvers.numeric.scan import CELLS as SCAN_CELLS
 from rbdsolve.solvers.numeric.scan import scan
 from rbdsolve.solvers.numeric.search_box import round_a_circle, search_box
 
