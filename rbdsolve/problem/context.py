@@ -18,9 +18,9 @@ from fractions import Fraction
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.readers import expect_mapping, expect_scalar
 from rbdsolve.problem.instants import StateValue
-from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension, parse_value
+from rbdsolve.problem.readers import expect_mapping, expect_scalar
 from rbdsolve.problem.yamlnodes import Node, Scalar, Seq
 
 # t is time; pi the constant; E and I are what sympy reads back from JSON answers as e and i.
@@ -258,8 +258,6 @@ def _quantity(node: Node):
     """The node as a quantity with a unit (``10 deg``), or None: no unit, or no quantity."""
     if not isinstance(node, Scalar):
         return None
-    from rbdsolve.problem.quantities.quantity import parse_value  # pint only for a file that has a unit
-
     try:
         value = parse_value(node.text, node.loc, node.plain)
     except InputError:
@@ -301,15 +299,7 @@ def _state_name(order: int, name: str) -> str:
 def _unit_hint(error: InputError, node: Node) -> InputError:
     """A quantity with a unit (``10 rad/s``) where an expression is read: units are read in
     'values:', --set and a state, so say how to write it here, rather than 'invalid syntax'."""
-    if not (isinstance(node, Scalar) and error.message.startswith("cannot read expression")):
-        return error
-    from rbdsolve.problem.quantities.quantity import parse_value  # pint only for a file that has a unit
-
-    try:
-        value = parse_value(node.text, node.loc, node.plain)
-    except InputError:
-        return error
-    if value.dimension is None:
+    if not error.message.startswith("cannot read expression") or _quantity(node) is None:
         return error
     text = ex._clip(node.text.strip())
     return InputError(f"'{text}' has a unit, and units are read in 'values:', --set and a question's states "

@@ -217,4 +217,3 @@ def contact_forces(model: Model, table) -> tuple[tuple[Held, ...], dict[sp.Symbo
         return supports, solve_forces(model, balances(model, supports, 2), supports, dict(table))
     except (InputError, UnsolvedError, ValueError, TypeError, ZeroDivisionError):
         return None
-
