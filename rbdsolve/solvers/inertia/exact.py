@@ -42,9 +42,12 @@ from rbdsolve.solvers.inertia.steps import (
     _centre_steps,
     axis_steps,
     configuration_step,
-    characteristic_step, diagonal_step,
+    characteristic_step,
+    decoupled_step,
+    diagonal_step,
     frame_step,
     normal_step,
+    numeric_characteristic_step,
     numeric_principal_steps,
     principal_steps,
     scene_axes_step,
@@ -171,10 +174,13 @@ MAX_ROOT_OPS = 40  # a closed form longer than this is no help to a reader
 def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     """Principal moments (ascending) and unit principal axes of a symmetric tensor:
     closed forms when they are compact; for a tensor that is numeric apart from its
-    scale, numpy's symmetric eigensolver otherwise (and a warning says so)."""
+    scale, numpy's symmetric eigensolver otherwise (and a warning says so). Numbers
+    with π in them go that way at once, unless an axis decouples (``_in_numbers``)."""
     scale = common_scale(list(J), symbols)
     scale = -scale if scale.could_extract_minus_sign() else scale
     J_hat = (J / scale).applyfunc(tidy)
+    if _beyond_radicals(J_hat) and not J_hat.is_diagonal():
+        return _in_numbers(J_hat, scale, model)
     poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
     poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
     steps = [diagonal_step() if J_hat.is_diagonal() else characteristic_step(scale, poly)]
@@ -192,6 +198,12 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
             raise UnsolvedError("the principal moments have no compact closed form here; give "
                                 "parameter values for numeric ones")
         return _numeric_principal(J_hat, scale, steps)
+    return _from_roots(J_hat, scale, found, steps, model)
+
+
+def _from_roots(J_hat: sp.Matrix, scale: sp.Expr, found: dict[sp.Expr, int], steps: list[st.Step],
+                model: Model) -> Principal:
+    """Each moment J₀ κ, ascending, with its unit axes from the null space of Ĵ − κ1."""
     roots = sorted(((tidy(r), k) for r, k in found.items()), key=lambda rk: _size(rk[0], model))
     moments, axes, repeated = [], [], []
     for root, multiplicity in roots:
@@ -217,7 +229,7 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     coordinates (a disk circling O: its axes along OG and across it, from the null space)."""
     if not J_hat.free_symbols & set(model.q):
         return None
-    k = next((k for k in range(3) if all(tidy(J_hat[k, i]) == 0 for i in range(3) if i != k)), None)
+    k = _decoupled_axis(J_hat)
     if k is None:
         return None
     i, j = (x for x in range(3) if x != k)
@@ -278,11 +290,29 @@ def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
             found[J_hat[i, i]] = found.get(J_hat[i, i], 0) + 1
         return found
     found = _decoupled(J_hat) or sp.roots(poly, LAMBDA, trig=True)
-    if sum(found.values()) != 3:
-        return None
-    if any(r.has(sp.I) or sp.count_ops(r) > MAX_ROOT_OPS for r in found):
-        return None
-    return found
+    return found if _compact(found) else None
+
+
+def _compact(found: dict[sp.Expr, int]) -> bool:
+    """Three real roots, each short enough to help a reader."""
+    return sum(found.values()) == 3 and not any(r.has(sp.I) or sp.count_ops(r) > MAX_ROOT_OPS for r in found)
+
+
+def _beyond_radicals(J_hat: sp.Matrix) -> bool:
+    """Is Ĵ a matrix of numbers with π (or another number no radical writes: e, sin 1)
+    in them? Then its cubic's coefficients are rational functions of π (a segment's
+    centroid, 4 r sin³α/(3 (2α − sin 2α)), puts (4π − 3√3)⁵ in a denominator) and,
+    unless an axis decouples, Cardano's roots are pages long: decided from the entries
+    alone, before the determinant (seconds) and the roots (minutes) are tried."""
+    if J_hat.free_symbols:
+        return False
+    return bool(J_hat.atoms(sp.NumberSymbol)) or any(f.is_number for f in J_hat.atoms(sp.Function))
+
+
+def _numbers(J_hat: sp.Matrix):
+    import numpy as np
+
+    return np.array(J_hat.evalf(20).tolist(), dtype=float)
 
 
 def _decoupled(J_hat: sp.Matrix) -> dict[sp.Expr, int] | None:
@@ -290,24 +320,52 @@ def _decoupled(J_hat: sp.Matrix) -> dict[sp.Expr, int] | None:
     moving in the xy-plane, about a point of that plane: J_xz = J_yz = 0): J_kk is one,
     and the other two are the 2×2 block's, λ = (a + b)/2 ± √(((a − b)/2)² + c²), where
     the cubic as a whole may have no compact form (a half disk about its contact point)."""
-    for k in range(3):
-        rest = [i for i in range(3) if i != k]
-        if all(tidy(J_hat[k, i]) == 0 for i in rest):
-            block = J_hat.extract(rest, rest)
-            quadratic = sp.Poly((LAMBDA * sp.eye(2) - block).det(), LAMBDA)
-            found: dict[sp.Expr, int] = {}
-            for root, multiplicity in [(J_hat[k, k], 1), *sp.roots(quadratic, LAMBDA).items()]:
-                same = next((r for r in found if tidy(r - root) == 0), root)
-                found[same] = found.get(same, 0) + multiplicity
-            return found
-    return None
+    k = _decoupled_axis(J_hat)
+    if k is None:
+        return None
+    rest = [i for i in range(3) if i != k]
+    quadratic = sp.Poly((LAMBDA * sp.eye(2) - J_hat.extract(rest, rest)).det(), LAMBDA)
+    return _merged([(J_hat[k, k], 1), *sp.roots(quadratic, LAMBDA).items()])
+
+
+def _decoupled_axis(J_hat: sp.Matrix) -> int | None:
+    """k with J_ki = 0 for i ≠ k: e_k is a principal axis."""
+    return next((k for k in range(3) if all(tidy(J_hat[k, i]) == 0 for i in range(3) if i != k)), None)
+
+
+def _merged(roots: list[tuple[sp.Expr, int]]) -> dict[sp.Expr, int]:
+    """{root: multiplicity}, equal roots (after tidying their difference) merged."""
+    found: dict[sp.Expr, int] = {}
+    for root, multiplicity in roots:
+        same = next((r for r in found if tidy(r - root) == 0), root)
+        found[same] = found.get(same, 0) + multiplicity
+    return found
+
+
+def _in_numbers(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal:
+    """The principal moments of a tensor of numbers with π in them. With an axis e_k no
+    product couples, J_kk and the 2×2 block's roots, exact where they are compact (a ± |c|
+    when a = b, a symmetric body turned about its axis: the quadratic formula would
+    square a − b unsimplified, hundreds of operations), the cubic not expanded (its
+    coefficients run to pages); otherwise numpy's moments, the cubic written in numbers."""
+    k = _decoupled_axis(J_hat)
+    if k is not None:
+        i, j = (x for x in range(3) if x != k)
+        a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
+        if tidy(a - b) == 0:
+            found = _merged([(J_hat[k, k], 1), (tidy(a + sp.Abs(c)), 1), (tidy(a - sp.Abs(c)), 1)])
+        else:
+            found = _decoupled(J_hat)
+        if _compact(found):
+            return _from_roots(J_hat, scale, found, [decoupled_step("xyz"[k])], model)
+    return _numeric_principal(J_hat, scale, [numeric_characteristic_step(scale, _numbers(J_hat))])
 
 
 def _numeric_principal(J_hat: sp.Matrix, scale: sp.Expr, steps: list[st.Step]) -> Principal:
     """numpy.linalg.eigh on Ĵ: ascending moments, orthonormal axes, to about 1e-15."""
     import numpy as np
 
-    values, vectors = np.linalg.eigh(np.array(J_hat.evalf(20).tolist(), dtype=float))
+    values, vectors = np.linalg.eigh(_numbers(J_hat))
     moments = tuple(scale * sp.Float(v, 15) for v in values)
     axes = []
     for k in range(3):

@@ -105,6 +105,27 @@ def characteristic_step(scale: sp.Expr, poly: sp.Poly) -> st.Step:
                        Relation(sp.Symbol("J_0"), scale), Relation(_cubic(poly), sp.Integer(0)))
 
 
+def numeric_characteristic_step(scale: sp.Expr, J_hat) -> st.Step:
+    """det(κ1 − Ĵ) = κ³ − (tr Ĵ) κ² + … in numbers (numpy.poly of Ĵ's floats): the
+    cubic of a tensor whose exact coefficients no reader would follow."""
+    import numpy as np
+
+    kappa = sp.Symbol("kappa")
+    monic, *rest = np.poly(J_hat)  # 1.0: printed κ³, not 1 κ³
+    cubic = sp.Poly([sp.Integer(round(monic)), *(sp.Float(c, 15) for c in rest)], kappa, domain="EX")
+    return st.equation("Principal moments: det(λ1 − J) = 0; with λ = J₀ κ, J₀ the common scale, in numbers "
+                       "(its exact coefficients are long rational functions of π):",
+                       Relation(sp.Symbol("J_0"), scale), Relation(descending(cubic), sp.Integer(0)))
+
+
+def decoupled_step(axis: str) -> st.Step:
+    """An axis no product of inertia couples, the other two from the 2×2 block."""
+    x, y = (n for n in "xyz" if n != axis)
+    return st.note(f"No product of inertia couples the {axis} axis (J_{x}{axis} = J_{y}{axis} = 0): it is a principal "
+                   f"axis, with J_{axis}{axis}; the other two moments are the block [[a, c], [c, b]] = [[J_{x}{x}, "
+                   f"J_{x}{y}], [J_{x}{y}, J_{y}{y}]]'s, λ = (a + b)/2 ± √(((a − b)/2)² + c²).")
+
+
 def diagonal_step() -> st.Step:
     """A diagonal tensor: no characteristic equation, the moments are read off."""
     return st.note("The tensor is diagonal in these axes: they are principal axes, and the principal "
