@@ -106,6 +106,26 @@ def test_ctrl_c_is_one_line_and_exit_code_130(tmp_path: Path, jobs: str) -> None
     assert code == 130 and stderr == "rbdsolve: interrupted\n", stderr
 
 
+def test_an_interrupt_caught_out_of_an_exec_still_exits_130(tmp_path: Path) -> None:
+    """CPython marks a KeyboardInterrupt that ends an exec of a string as unhandled even
+    once it is caught, and ``python -m`` then exits by SIGINT (returncode −2), not 130: a
+    Ctrl-C landing while a dataclass is made (they exec their methods' source). Made
+    certain here, not left to timing: a site hook raises it from an exec where the
+    parent takes in a worker's file (a process pool: the path that exits through
+    Python's own finalization)."""
+    hook = tmp_path / "hook"
+    hook.mkdir()
+    (hook / "sitecustomize.py").write_text(
+        "import rbdsolve.cli.batch as batch\n"
+        "def _advanced(*args):\n"
+        "    exec('raise KeyboardInterrupt', {})\n"
+        "batch._advanced = _advanced\n")
+    env = {**os.environ, "PYTHONPATH": f"{hook}{os.pathsep}{ROOT}"}
+    done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(PROBLEMS / "examples"), "--jobs", "2"],
+                          env=env, cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert (done.returncode, done.stderr) == (130, "rbdsolve: interrupted\n")
+
+
 @pytest.mark.parametrize("jobs", ["1", "2"])
 def test_sigterm_exits_143(tmp_path: Path, jobs: str) -> None:
     process = start(["solve", str(folder(tmp_path)), "--jobs", jobs], tmp_path)
