@@ -22,10 +22,10 @@ SEED = PROBLEMS / "sg2150-2015-10-29"
 def solved_file(path: Path):
     """(model, report) of a problem file, solved once per test process: the golden
     answers, the JSON read-back and the audit each check every file in problems/, and a
-    process that runs two of them for one file solves it once. (Grouping a file's checks
-    in one process, pytest-xdist's --dist loadgroup, made the whole suite slower on 2
-    cores, 17 min against 13: the groups balance worse than single tests.) The report is
-    read, never changed (frozen dataclasses)."""
+    process that runs two of them for one file solves it once (they are collected side
+    by side, ``pytest_collection_modifyitems``, and pytest-xdist's worksteal hands each
+    process a run of neighbouring tests). The report is read, never changed (frozen
+    dataclasses)."""
     from rbdsolve.model.build import build_model
     from rbdsolve.problem import load_file
     from rbdsolve.solvers import solve_problem
@@ -236,3 +236,29 @@ questions:
   - equilibria: {frame: rod}
   - modes: {frame: rod, about: each}
 """
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    """Each problem file's checks side by side (its golden answers, JSON read-back and
+    audit, each in its own module), at the place of the first: pytest-xdist's worksteal
+    (pyproject.toml) gives each process a contiguous run of tests and takes from the end
+    of one only when another runs dry, so a file is solved once in the suite, not once
+    in each process its checks happen to reach (``solved_file``: 2 × 110 processor
+    seconds on 2 cores, with tests dealt one by one). Grouping them with --dist loadgroup
+    instead made the suite slower (17 min against 13): whole groups balance worse."""
+    anchor: dict[Path, int] = {}
+    keys = []
+    for index, item in enumerate(items):
+        problem = _problem_file(item)
+        keys.append((anchor.setdefault(problem, index) if problem else index, index))
+    items[:] = [item for _, item in sorted(zip(keys, items), key=lambda pair: pair[0])]
+
+
+def _problem_file(item) -> Path | None:
+    """The problem file a parametrized test checks, if it checks one of problems/."""
+    params = getattr(getattr(item, "callspec", None), "params", {})
+    for name in ("path", "expected_file"):
+        value = params.get(name)
+        if isinstance(value, Path) and PROBLEMS in value.parents:
+            return value.with_name(value.name.replace(".expected.yaml", ".yaml"))
+    return None
