@@ -120,8 +120,12 @@ def test_an_interrupt_caught_out_of_an_exec_still_exits_130(tmp_path: Path) -> N
         "def _advanced(*args):\n"
         "    exec('raise KeyboardInterrupt', {})\n"
         "batch._advanced = _advanced\n")
+    exam = tmp_path / "exam"
+    exam.mkdir()
+    for n in (1, 2):
+        (exam / f"pendulum-{n}.yaml").write_text((PROBLEMS / "examples" / "pendulum.yaml").read_text())
     env = {**os.environ, "PYTHONPATH": f"{hook}{os.pathsep}{ROOT}"}
-    done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(PROBLEMS / "examples"), "--jobs", "2"],
+    done = subprocess.run([sys.executable, "-m", "rbdsolve", "solve", str(exam), "--jobs", "2"],
                           env=env, cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert (done.returncode, done.stderr) == (130, "rbdsolve: interrupted\n")
 
