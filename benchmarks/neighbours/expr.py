@@ -78,6 +78,9 @@ class Namespace:
     def __init__(self, lib):
         self.lib = lib
         self.pi = lib.pi if lib is math else mpmath.pi
+        # numpy's own float64 arrays for floats (the same IEEE doubles, computed in C), an
+        # array of Python objects for mpmath's 40 digits
+        self.dtype = float if lib is math else object
         self.table: dict[str, Any] = {name: getattr(lib, name) for name in
                                       ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt",
                                        "exp", "log", "sinh", "cosh", "tanh")}

@@ -33,13 +33,14 @@ _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1), "-x": (-1, 0, 0), "-y":
 def _rot(axis: str, a, ns: Namespace):
     """The rotation by ``a`` about a coordinate axis (Rodrigues for ±x, ±y, ±z)."""
     c, s = ns.table["cos"](a), ns.table["sin"](a)
+    dtype = ns.dtype
     if axis == "z":
         z, o = 0 * c, 0 * c + 1
-        return np.array([[c, -s, z], [s, c, z], [z, z, o]], dtype=object)
+        return np.array([[c, -s, z], [s, c, z], [z, z, o]], dtype=dtype)
     u = _AXES[axis]
     one = c * 0 + 1
-    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]], dtype=object) * one
-    return np.eye(3, dtype=object) * one + s * K + (1 - c) * K.dot(K)
+    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]], dtype=dtype) * one
+    return np.eye(3, dtype=dtype) * one + s * K + (1 - c) * K.dot(K)
 
 
 @dataclass
@@ -103,11 +104,11 @@ class System:
         self.bodies = [mass_body(b, self.fp) for b in scene.bodies]
         self.zero = conv(0)
         self.one = conv(1)
-        self.centres = [np.array([conv(float(x)) for x in mb.centre], dtype=object) for mb in self.bodies]
-        self.inertias = [np.array([[conv(float(x)) for x in row] for row in mb.inertia], dtype=object)
+        self.centres = [np.array([conv(float(x)) for x in mb.centre], dtype=ns.dtype) for mb in self.bodies]
+        self.inertias = [np.array([[conv(float(x)) for x in row] for row in mb.inertia], dtype=ns.dtype)
                          for mb in self.bodies]
         g = evaluate(scene.gravity, self.env([0] * self.n, 0)) if scene.gravity else Vec(0, 0, 0)
-        self.g = np.array([self.one * x for x in g], dtype=object)
+        self.g = np.array([self.one * x for x in g], dtype=ns.dtype)
         self.h1 = conv("1e-9") if ns is MP else 1e-4   # first derivatives (4th order)
         self.h2 = conv("1e-7") if ns is MP else 1e-3   # path: first and second derivatives
         lengths = [self.fp[q.name] for q in scene.params if q.kind == "length" and q.name in self.fp]
@@ -127,11 +128,11 @@ class System:
 
     def vector(self, text: str, q, t=0) -> np.ndarray:
         v = self.value(text, q, t)
-        return np.array([self.one * x for x in v], dtype=object)
+        return np.array([self.one * x for x in v], dtype=self.ns.dtype)
 
     def rotation(self, body: Body, env: Env):
         if body.turns:
-            R = np.eye(3, dtype=object) * self.one
+            R = np.eye(3, dtype=self.ns.dtype) * self.one
             for axis, angle in body.turns:
                 R = R.dot(_rot(axis, evaluate(angle, env), self.ns))
             return R
@@ -145,10 +146,10 @@ class System:
         for mb, c in zip(self.bodies, self.centres):
             R = self.rotation(mb.spec, env)
             o = evaluate(mb.spec.origin, env)
-            r = np.array([self.one * x for x in o], dtype=object) + R.dot(c)
+            r = np.array([self.one * x for x in o], dtype=self.ns.dtype) + R.dot(c)
             out.append(r)
             out.append(R.reshape(9))
-        return np.concatenate(out) if out else np.zeros(0, dtype=object)
+        return np.concatenate(out) if out else np.zeros(0, dtype=self.ns.dtype)
 
     # --- derivatives ------------------------------------------------------------------
     def _d1(self, f, k: int, q, t):
