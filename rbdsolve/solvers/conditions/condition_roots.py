@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import random
+from functools import lru_cache
 
 import sympy as sp
 
@@ -57,13 +58,13 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = sp.fraction(sp.together(f))
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
-    if any(_under_long_radical(factor, p) or trig_transcendental(factor, p) or _in_absolute_value(factor, p)
-           for factor in factors):
+    if any(_under_long_radical(factor, p) or _under_two_radicals(factor, p) or trig_transcendental(factor, p)
+           or _in_absolute_value(factor, p) for factor in factors):
         # sympy's solve squares the radicals away, searches a transcendental one, or splits |…| into
         # cases: minutes (issue 37), and roots under conditions of their own; decided by the structure
         return None
     try:
-        found = {tidy(r) for factor in factors for r in _roots_in(factor, p)}
+        found = {tidy(r): factor for factor in factors for r in _roots_in(factor, p)}
     except (NotImplementedError, ValueError):
         return None
     points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
@@ -85,6 +86,11 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
             continue  # never real inside the range
         if len(turns) != 1 or None in turns:
             return None
+        roots_of_it = {_vanishes_at(found[r], p, r, point) for point in points}
+        if roots_of_it == {False}:
+            continue  # a root of the equation squared only (the radical's other sign)
+        if roots_of_it != {True}:
+            return None  # a root only where its own condition holds
         turned = tidy(r + 2 * sp.pi * turns.pop()) if p in angles else _one_root(r)
         if not any(simplifies_to_zero(turned - x) for x in inside):
             inside[turned] = [float(sp.N(turned.xreplace(point), 20)) for point in points]
@@ -94,21 +100,95 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     return order
 
 
-def _roots_in(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
+@lru_cache(maxsize=512)  # a condition's partition and its test of one sign ask for the same factor's roots
+def _roots_in(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, ...]:
+    """``_solved``, once per factor and parameter."""
+    return tuple(_solved(factor, p))
+
+
+def _vanishes_at(factor: sp.Expr, p: sp.Symbol, root: sp.Expr, point: dict) -> bool:
+    """Is the factor zero at the root, at one sample point (to 20 digits of its expanded
+    terms' size)? Squaring keeps every root and adds the radical's other sign's."""
+    value = root.xreplace(point)
+    terms = [sp.N(t.xreplace(point).xreplace({p: value}), 30) for t in sp.Add.make_args(sp.expand(factor))]
+    size = max(abs(complex(t)) for t in terms)
+    return abs(complex(sp.Add(*terms))) <= 1e-20 * max(size, 1e-300)
+
+
+def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
     """The roots of ``factor`` in p: a polynomial of degree ≤ 2 in p by sympy's roots
     (the formula: a discriminant's I₃² s² − 4 (I₁ − I₃) m g h cos θ has ±s_c),
     without solve's checks of each root, which cost a third of a second there and
     which the samples below make again; one of higher degree factor by factor
-    (``_factor_by_factor``); anything else by sympy's solve."""
+    (``_factor_by_factor``); a polynomial in sin p or cos p the same way in them
+    (``_in_sine_or_cosine``); anything else by sympy's solve."""
     if factor.is_polynomial(p):
         polynomial = sp.Poly(factor, p)
-        if polynomial.degree() <= 2:
-            found = sp.roots(polynomial)
-            if sum(found.values()) == polynomial.degree():
-                return list(found)
-        else:
+        if polynomial.degree() > 2:
             return _factor_by_factor(polynomial)
-    return sp.solve(factor, p)
+        found = sp.roots(polynomial)
+        return list(found) if sum(found.values()) == polynomial.degree() else sp.solve(factor, p)
+    squared = _squared_once(factor, p)
+    if squared is not None:
+        try:
+            return _solved(squared, p)  # its extra roots are dropped where the factor is not zero (the samples)
+        except NotImplementedError:
+            return sp.solve(factor, p)
+    in_sine_or_cosine = _in_sine_or_cosine(factor, p)
+    if in_sine_or_cosine is None:
+        return sp.solve(factor, p)
+    polynomial, x = in_sine_or_cosine
+    try:
+        roots = _roots_in(polynomial, x)
+    except NotImplementedError:
+        return sp.solve(factor, p)  # a cubic or quartic in sin p or cos p: solve's own way, as before
+    if x is _SINE:
+        return [angle for r in roots for angle in (sp.asin(r), sp.pi - sp.asin(r))]
+    return [sign * sp.acos(r) for r in roots for sign in (1, -1)]
+
+
+_COSINE, _SINE, _ROOT = sp.Dummy("c"), sp.Dummy("s"), sp.Dummy("r")
+
+
+def _squared_once(factor: sp.Expr, p: sp.Symbol) -> sp.Expr | None:
+    """A + B √X = 0 with A, B, X polynomials in p, squared: A² − B² X, a polynomial
+    whose roots hold the factor's (and the radical's other sign's, which the samples
+    drop). A spring of natural length put at a configuration: 12 L₀ k (h + l) − 12 L₀ k
+    √(h² + h l + l²) + 3 g l m − 6 h k l, which sympy's solve took 2 s to solve for l.
+    None where p stands under no radical, or under more than one, or not so."""
+    radicals = {w for w in factor.atoms(sp.Pow) if w.exp == sp.S.Half and w.base.has(p)}
+    if len(radicals) != 1:
+        return None
+    (radical,) = radicals
+    plain = sp.expand(factor.xreplace({radical: _ROOT}))
+    if not (plain.is_polynomial(_ROOT, p) and radical.base.is_polynomial(p)):
+        return None
+    linear = sp.Poly(plain, _ROOT)
+    if linear.degree() != 1:
+        return None
+    B, A = linear.all_coeffs()
+    return sp.expand(A**2 - B**2 * radical.base)
+
+
+def _in_sine_or_cosine(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, sp.Dummy] | None:
+    """``factor`` as a polynomial in s = sin p where cos p is absent (p = asin s or
+    π − asin s), or in c = cos p where sin p stands only in even powers (a release
+    angle's condition, (3072 π² − 5184) sin²θ₀ + (6480 − 3840 π²) cos θ₀ + …: sin² p =
+    1 − c², p = ±acos c); whole turns are the caller's. The roots sympy's solve finds
+    after trying its rewrites for a second or more, in its forms. None where p stands
+    elsewhere, in a multiple angle, or in an odd power of sin p beside cos p."""
+    trig = factor.atoms(*TRIG)
+    if any(f.has(p) and (f.func not in (sp.sin, sp.cos) or f.args[0] != p) for f in trig):
+        return None
+    plain = sp.expand(factor.xreplace({sp.cos(p): _COSINE, sp.sin(p): _SINE}))
+    if plain.has(p) or not plain.is_polynomial(_SINE, _COSINE):
+        return None
+    if not plain.has(_COSINE):
+        return plain, _SINE
+    sines = sp.Poly(plain, _SINE)
+    if any(k % 2 for (k,) in sines.monoms()):
+        return None
+    return sp.expand(sum(c * (1 - _COSINE**2) ** (k // 2) for (k,), c in sines.terms())), _COSINE
 
 
 def _factor_by_factor(polynomial: sp.Poly) -> list[sp.Expr]:
@@ -152,6 +232,17 @@ def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
     √(4a² + d²) beside a² k: solving that for a ran for minutes."""
     radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
     return radical and sp.count_ops(expr) > RADICAL_OPS
+
+
+def _under_two_radicals(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand under two different radicals? Squaring them away twice gives a
+    quartic with roots of its own that are no roots of expr: a rod hinged at O with a
+    spring of natural length L₀ from its end to a point h above O, released at 60°, has
+    θ̇² ∝ 3 g l m − 6 h k l + 12 L₀ k (√(h² + 2hl + l²) − √(h² + hl + l²)) at the bottom,
+    which sympy's solve took 5–7 s to solve for l and again for h (the energy question
+    ran out of its 27 s share); no exam writes such a root as a condition."""
+    bases = {w.base for w in expr.atoms(sp.Pow) if w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p)}
+    return len(bases) >= 2
 
 
 def _in_absolute_value(expr: sp.Expr, p: sp.Symbol) -> bool:

@@ -16,7 +16,6 @@ be split stays as before: undetermined, with the conditions as they were.
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import lru_cache
 from typing import Mapping
 
 import sympy as sp
@@ -30,8 +29,9 @@ from rbdsolve.solvers.conditions.condition_roots import angle_parameters
 from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.roots import roots_as_absolute
 from rbdsolve.form.tidy import square_root, tidy
-from rbdsolve.solvers.conditions.signs import FACTOR_OPS, Undecided, matrix_inertia
+from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia
 
 
 @memoized
@@ -59,7 +59,7 @@ def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
     grad = gradient(model)
     if not any(square_root(p) and p.base.has(*model.q) for g in grad for p in g.atoms(sp.Pow)):
         return []
-    residual = [_roots_as_absolute(g.xreplace(dict(at))) for g in grad]
+    residual = [roots_as_absolute(g.xreplace(dict(at))) for g in grad]
     out = []
     for a in sorted({a for r in residual for a in r.atoms(sp.Abs)}, key=sp.default_sort_key):
         holds = [sign for sign in (1, -1) if all(_vanishes(r.xreplace({a: sign * a.args[0]})) for r in residual)]
@@ -75,9 +75,9 @@ def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
     of radicals."""
     signs = unsquared_where(at, model)
     if not signs:  # √((h + l)²) at θ = 0 is h + l, |d − L| where the signs do not decide it
-        return H.applyfunc(lambda e: _compact(tidy(_roots_as_absolute(e)) if _radical(e, model) else tidy(e)))
+        return H.applyfunc(lambda e: _compact(tidy(roots_as_absolute(e)) if _radical(e, model) else tidy(e)))
     known = {a: f for f in signs for a in (sp.Abs(f), sp.Abs(-f))}
-    return H.applyfunc(lambda e: _compact(tidy(_roots_as_absolute(e).xreplace(known))))
+    return H.applyfunc(lambda e: _compact(tidy(roots_as_absolute(e).xreplace(known))))
 
 
 COMPACT_OPS = 120  # an entry longer than this is put over one denominator and factored, where that is shorter
@@ -96,18 +96,6 @@ def _compact(entry: sp.Expr) -> sp.Expr:
 def _radical(expr: sp.Expr, model: Model) -> bool:
     """Does expr hold a square root of parameters alone (a radicand the root put in)?"""
     return any(square_root(p) and p.base.free_symbols and not p.base.has(*model.q) for p in expr.atoms(sp.Pow))
-
-
-def _roots_as_absolute(expr: sp.Expr) -> sp.Expr:
-    """Each square root √X with X a square F² once factored written |F| (sympy's own
-    √(F²) = |F| for a real F)."""
-    return expr.replace(lambda p: square_root(p) and bool(p.base.free_symbols) and sp.count_ops(p.base) <= FACTOR_OPS,
-                        lambda p: _absolute_root(p.base) ** (2 * p.exp))
-
-
-@lru_cache(maxsize=1024)  # one radicand recurs in every entry of a Hessian, and in each residual
-def _absolute_root(base: sp.Expr) -> sp.Expr:
-    return sp.sqrt(sp.factor(sp.cancel(sp.together(base))))
 
 
 def _vanishes(expr: sp.Expr) -> bool:

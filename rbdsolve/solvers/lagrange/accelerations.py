@@ -18,6 +18,7 @@ import sympy as sp
 
 from rbdsolve.form.display import Relation
 from rbdsolve.form.expansion import expanded
+from rbdsolve.form.roots import roots_as_absolute
 from rbdsolve.form.tidy import cancelled, has_denominator, has_root, tidy, tidy_fraction_parts
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
@@ -114,8 +115,9 @@ def state_values(model: Model, instant: Instant) -> dict[sp.Symbol, sp.Expr]:
 
 
 def at_state(expr: sp.Expr, table: dict) -> sp.Expr:
-    """An expression of the state put at the state, simplified (a few terms: cheap)."""
-    return sp.radsimp(sp.simplify(sp.sympify(expr).xreplace(table)))
+    """An expression of the state put at the state, simplified (a few terms: cheap), its
+    roots of squares taken (a spring's length √(h² + 2 h l cos θ + l²) at θ = 0 is h + l)."""
+    return sp.radsimp(roots_as_absolute(sp.simplify(sp.sympify(expr).xreplace(table))))
 
 
 def state_relations(model: Model, instant: Instant) -> tuple[Relation, ...]:

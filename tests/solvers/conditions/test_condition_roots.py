@@ -8,11 +8,17 @@ first: for (c − a − b)/(c − √(a² + 2ab + b²)), PYTHONHASHSEED 0 listed
 
 from __future__ import annotations
 
+import math
 import os
 import subprocess
 import sys
 
+import numpy as np
+import pytest
 import sympy as sp
+
+from rbdsolve.solvers.conditions.condition_roots import (_in_sine_or_cosine, _roots_in, _squared_once,
+                                                          _under_two_radicals, _vanishes_at)
 
 SCENE = """
 parameters: {m: mass, a: length, b: length, c: length}
@@ -106,3 +112,92 @@ def test_a_factor_with_the_parameter_inside_an_absolute_value_is_not_solved(monk
     f = 12 * sp.pi * sp.sin(c) * sp.Abs(sp.sin(c)) - 4 * sp.sqrt(16 - 9 * sp.pi**2 * sp.sin(c)**2) * sp.cos(c) \
         - 9 * sp.pi
     assert condition_roots.parameter_roots(f, c, {}, model) is None
+
+
+def _scanned_roots(f, low: float = -math.pi, high: float = math.pi) -> list[float]:
+    """The roots of f(θ) on (low, high], by its sign changes on a fine grid and brentq:
+    the independent count for the trigonometric cases below."""
+    from scipy.optimize import brentq
+
+    grid = np.linspace(low, high, 20001)
+    values = np.array([f(x) for x in grid])
+    found = [float(brentq(f, a, b, xtol=1e-14)) for a, b, u, v in zip(grid, grid[1:], values, values[1:]) if u * v < 0]
+    found += [float(x) for x, v in zip(grid, values) if v == 0]
+    return sorted(found)
+
+
+def _in_the_turn(roots) -> list[float]:
+    """Each root's value as a real number in (−π, π] (complex ones dropped)."""
+    out = []
+    for r in roots:
+        z = complex(sp.N(r, 30))
+        if abs(z.imag) < 1e-12:
+            out.append(math.remainder(z.real, 2 * math.pi))
+    return sorted(set(round(x, 12) for x in out))
+
+
+@pytest.mark.parametrize("text", [
+    "9*pi**2*sin(b)**2 - 16",                  # sin alone: asin s and π − asin s (a half-disk on an incline)
+    "3*sin(b)**2 + 2*cos(b) - 2",              # cos with sin²: c = 1, −1/3
+    "(3072*pi**2 - 5184)*sin(b)**2 + (6480 - 3840*pi**2)*cos(b) - 6000*pi**2 + 7209 + 1024*pi**4",  # no real root
+    "4*cos(b)**2 - 1",
+])
+def test_a_polynomial_in_sine_or_cosine_has_the_roots_a_scan_finds(text: str) -> None:
+    """Solved by the formula in s = sin θ or c = cos θ (sympy's solve took 1.2 s on the
+    third, a release angle's condition, to find no root): the same real roots as a scan
+    of the function's sign changes."""
+    b = sp.Symbol("b")
+    expr = sp.sympify(text, locals={"b": b})
+    f = sp.lambdify(b, expr, "math")
+    assert _in_sine_or_cosine(expr, b) is not None
+    assert _in_the_turn(_roots_in(expr, b)) == pytest.approx(_scanned_roots(f), abs=1e-9)
+
+
+@pytest.mark.parametrize("text", ["sin(b) + cos(b) - 1", "cos(2*b) - sin(b)", "b*cos(b) - 1"])
+def test_an_odd_sine_beside_a_cosine_or_another_angle_is_left_to_solve(text: str) -> None:
+    b = sp.Symbol("b")
+    assert _in_sine_or_cosine(sp.sympify(text, locals={"b": b}), b) is None
+
+
+def test_a_cosine_with_parameters_has_the_exam_form() -> None:
+    """g cos θ − h: θ = ±acos(h/g), the form solve wrote."""
+    b, g, h = sp.symbols("b g h", positive=True)
+    assert set(_roots_in(g * sp.cos(b) - h, b)) == {sp.acos(h / g), -sp.acos(h / g)}
+
+
+@pytest.mark.parametrize("h, L0, k, m, has_false_root", [
+    ("1/2", "3/5", "200", "1", False), ("1", "2", "10", "1", False), ("1", "1/2", "10", "3", True)])
+def test_one_radical_is_squared_away_and_its_other_sign_dropped(h, L0, k, m, has_false_root) -> None:
+    """A rod hinged at O, a spring of natural length L₀ from its end to h above O,
+    released at 60°: θ̇² at the bottom ∝ 12 L₀ k (h + l) − 12 L₀ k √(h² + h l + l²) +
+    3 g l m − 6 h k l. Squared once it is a quadratic in l; its roots where the factor
+    itself vanishes are the scan's (sign changes on a fine grid, and l = 0, where
+    12 L₀ k h − 12 L₀ k h = 0), and the other one (the radical's other sign) is dropped."""
+    l = sp.Symbol("l", positive=True)
+    h, L0, k, m, g = (sp.Rational(x) for x in (h, L0, k, m, "981/100"))
+    F = 12 * L0 * k * (h + l) - 12 * L0 * k * sp.sqrt(h**2 + h * l + l**2) + 3 * g * l * m - 6 * h * k * l
+    assert _squared_once(F, l) is not None
+    roots = _roots_in(F, l)
+    kept = sorted(float(r) for r in roots if _vanishes_at(F, l, r, {}))
+    dropped = [r for r in roots if not _vanishes_at(F, l, r, {})]
+    f = sp.lambdify(l, F, "math")
+    grid = np.linspace(1e-9, 50, 50001)
+    values = [f(x) for x in grid]
+    scanned = [0.0] + [float(brentq_root(f, a, b)) for a, b, u, v in zip(grid, grid[1:], values, values[1:]) if u * v < 0]
+    assert kept == pytest.approx(scanned, abs=1e-9)
+    assert bool(dropped) is has_false_root
+
+
+def brentq_root(f, a: float, b: float) -> float:
+    from scipy.optimize import brentq
+
+    return brentq(f, a, b, xtol=1e-14)
+
+
+def test_two_radicals_in_the_parameter_are_not_solved() -> None:
+    """Squared twice they give a quartic of false roots: the parameter is left undecided,
+    decided by the structure (sympy's solve took 5–7 s on such a factor)."""
+    l, h = sp.symbols("l h", positive=True)
+    F = sp.sqrt(h**2 + 2 * h * l + l**2 - l) - sp.sqrt(h**2 + h * l + l**2) + l
+    assert _under_two_radicals(F, l) and _under_two_radicals(F, h)
+    assert not _under_two_radicals(sp.sqrt(h**2 + h * l + l**2) + l, l)

@@ -201,3 +201,33 @@ questions:
     there = _answers(tmp_path, text)["there"]
     assert there["reached"] is False and there["rate"]["theta"] is None
     assert same(there["rate_squared"]["theta"], "3*(g*m*(cos(theta0) - 1) - 2*h*k*sin(theta0))/(l*m)")
+
+
+ROD_SPRING = """
+parameters: {m: mass, l: length of the rod, g: gravity, k: stiffness, h: height of A above O, L0: natural length}
+values: {k: 200 N/m, h: 0.5, L0: 60 cm}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  B: l * [sin(theta), -cos(theta)]
+  A: [0, h]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: B/2, angle: theta, axis: y}
+springs:
+  s: {stiffness: k, between: [B, A], natural_length: L0}
+questions:
+  - energy: {from_rest: {theta: pi/3}, to: {theta: 0}, points: [B]}
+"""
+
+
+def test_a_rod_on_a_spring_of_natural_length_reaches_the_bottom(tmp_path) -> None:
+    """By hand: V = −m g (l/2) cos θ + ½ k (√(l² + h² + 2 l h cos θ) − L₀)², T = ⅙ m l² θ̇²,
+    so at θ = 0 from rest at 60°, θ̇² = 6 (V(π/3) − V(0))/(m l²) = (3 g l m − 6 h k l +
+    12 L₀ k (h + l) − 12 L₀ k √(h² + h l + l²))/(2 l² m), the spring's length there h + l,
+    not √(h² + 2 h l + l²). Its condition q̇² ≥ 0 has the rod's length under two radicals
+    before the length at θ = 0 is taken: the question ran out of its 27 s share, and
+    now answers (the structure decides what is solved, not a budget)."""
+    got = _answers(tmp_path, ROD_SPRING)
+    expected = "(3*g*l*m - 6*h*k*l + 12*L0*k*(h + l) - 12*L0*k*sqrt(h**2 + h*l + l**2))/(2*l**2*m)"
+    assert same(got["there"]["rate_squared"]["theta"], expected)
+    assert "(h + l)" in got["there"]["rate_squared"]["theta"]
