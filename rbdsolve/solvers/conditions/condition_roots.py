@@ -86,7 +86,8 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
             continue  # never real inside the range
         if len(turns) != 1 or None in turns:
             return None
-        roots_of_it = {_vanishes_at(found[r], p, r, point) for point in points}
+        terms = sp.Add.make_args(sp.expand(found[r]))
+        roots_of_it = {_vanishes_at(terms, p, r, point) for point in points}
         if roots_of_it == {False}:
             continue  # a root of the equation squared only (the radical's other sign)
         if roots_of_it != {True}:
@@ -106,13 +107,14 @@ def _roots_in(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, ...]:
     return tuple(_solved(factor, p))
 
 
-def _vanishes_at(factor: sp.Expr, p: sp.Symbol, root: sp.Expr, point: dict) -> bool:
-    """Is the factor zero at the root, at one sample point (to 20 digits of its expanded
-    terms' size)? Squaring keeps every root and adds the radical's other sign's."""
+def _vanishes_at(terms: tuple[sp.Expr, ...], p: sp.Symbol, root: sp.Expr, point: dict) -> bool:
+    """Is the factor, the sum of ``terms`` (expanded), zero at the root, at one sample
+    point, to 20 digits of its terms' size? Squaring keeps every root and adds the
+    radical's other sign's."""
     value = root.xreplace(point)
-    terms = [sp.N(t.xreplace(point).xreplace({p: value}), 30) for t in sp.Add.make_args(sp.expand(factor))]
-    size = max(abs(complex(t)) for t in terms)
-    return abs(complex(sp.Add(*terms))) <= 1e-20 * max(size, 1e-300)
+    numbers = [sp.N(t.xreplace(point).xreplace({p: value}), 30) for t in terms]
+    size = max(abs(complex(x)) for x in numbers)
+    return abs(complex(sp.Add(*numbers))) <= 1e-20 * max(size, 1e-300)
 
 
 def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:

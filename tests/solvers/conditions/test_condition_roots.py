@@ -178,8 +178,9 @@ def test_one_radical_is_squared_away_and_its_other_sign_dropped(h, L0, k, m, has
     F = 12 * L0 * k * (h + l) - 12 * L0 * k * sp.sqrt(h**2 + h * l + l**2) + 3 * g * l * m - 6 * h * k * l
     assert _squared_once(F, l) is not None
     roots = _roots_in(F, l)
-    kept = sorted(float(r) for r in roots if _vanishes_at(F, l, r, {}))
-    dropped = [r for r in roots if not _vanishes_at(F, l, r, {})]
+    terms = sp.Add.make_args(sp.expand(F))
+    kept = sorted(float(r) for r in roots if _vanishes_at(terms, l, r, {}))
+    dropped = [r for r in roots if not _vanishes_at(terms, l, r, {})]
     f = sp.lambdify(l, F, "math")
     grid = np.linspace(1e-9, 50, 50001)
     values = [f(x) for x in grid]
