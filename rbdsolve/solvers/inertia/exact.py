@@ -321,8 +321,11 @@ def _decoupled(J_hat: sp.Matrix) -> dict[sp.Expr, int] | None:
     and the other two are the 2×2 block's, λ = (a + b)/2 ± √(((a − b)/2)² + c²), where
     the cubic as a whole may have no compact form (a half disk about its contact point)."""
     k = _decoupled_axis(J_hat)
-    if k is None:
-        return None
+    return None if k is None else _block_roots(J_hat, k)
+
+
+def _block_roots(J_hat: sp.Matrix, k: int) -> dict[sp.Expr, int]:
+    """J_kk and the roots of the 2×2 block left when e_k decouples (sympy's roots)."""
     rest = [i for i in range(3) if i != k]
     quadratic = sp.Poly((LAMBDA * sp.eye(2) - J_hat.extract(rest, rest)).det(), LAMBDA)
     return _merged([(J_hat[k, k], 1), *sp.roots(quadratic, LAMBDA).items()])
@@ -355,7 +358,7 @@ def _in_numbers(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal:
         if tidy(a - b) == 0:
             found = _merged([(J_hat[k, k], 1), (tidy(a + sp.Abs(c)), 1), (tidy(a - sp.Abs(c)), 1)])
         else:
-            found = _decoupled(J_hat)
+            found = _block_roots(J_hat, k)
         if _compact(found):
             return _from_roots(J_hat, scale, found, [decoupled_step("xyz"[k])], model)
     return _numeric_principal(J_hat, scale, [numeric_characteristic_step(scale, _numbers(J_hat))])
