@@ -241,16 +241,21 @@ class Reading:
         coordinate, ``120 rev/min`` or ``2 m/s`` for a rate, ``3 rad/s^2`` for an
         acceleration. Whether the coordinate is an angle or a length the scene does not
         say: either kind is taken for either coordinate, as a bare number is."""
+        return self.measured(node, what, _STATE_KINDS[order], _KIND_EXAMPLES[order])
+
+    def measured(self, node: Node, what: str, kinds: tuple[Dimension, ...], example: str) -> ex.Expr:
+        """A constant (parameters and numbers, in SI as the rest of the file), or one
+        quantity with a unit of one of ``kinds``, read in SI: ``60 deg`` is π/3 and
+        ``20 cm`` is 1/5, as a student copies them from the statement."""
         try:
             return self.constant(node, what)
         except InputError as exc:
             value = _quantity(node)
             if value is None:
                 raise exc from None
-        kinds = _STATE_KINDS[order]
         if value.dimension not in kinds:
             raise InputError(f"'{ex._clip(node.text.strip())}' is {_kind_of(value.dimension)}, not {what} "
-                             f"(write {_KIND_EXAMPLES[order]})", node.loc)
+                             f"(write {example})", node.loc)
         return ex.Expr(value.tree, ex.Kind.SCALAR, node.text.strip(), node.loc)
 
 
@@ -298,11 +303,13 @@ def _state_name(order: int, name: str) -> str:
 
 def _unit_hint(error: InputError, node: Node) -> InputError:
     """A quantity with a unit (``10 rad/s``) where an expression is read: units are read in
-    'values:', --set and a state, so say how to write it here, rather than 'invalid syntax'."""
+    'values:', --set, a body's mass and sizes and a state, so say how to write it here,
+    rather than 'invalid syntax'."""
     if not error.message.startswith("cannot read expression") or _quantity(node) is None:
         return error
     text = ex._clip(node.text.strip())
-    return InputError(f"'{text}' has a unit, and units are read in 'values:', --set and a question's states "
-                      f"(at:, from_rest:, about:, to:), not here: write the value here in SI without one (an "
+    return InputError(f"'{text}' has a unit, and units are read in 'values:', --set, a body's mass and sizes, "
+                      f"and a question's states (at:, from_rest:, about:, to:), not here: write the value here in "
+                      f"SI without one (an "
                       f"angle in radians: 30° is pi/6), or name it, with a parameter whose value is '{text}'",
                       node.loc)

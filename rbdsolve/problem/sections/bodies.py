@@ -8,11 +8,12 @@ mass) and ``angular_velocity``. A body that does not turn at the instant
 
 from __future__ import annotations
 
-from fractions import Fraction
+import math
 
 from rbdsolve.errors import InputError, did_you_mean
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.context import Reading
+from rbdsolve.problem.quantities.quantity import LENGTH, MASS, NUMBER, approximate
 from rbdsolve.problem.readers import check_keys, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.sections.orientation import OrientationReader
 from rbdsolve.problem.schema import SHAPE_ALIASES, Body, Inertia, Part, Shape
@@ -20,6 +21,9 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
 # Shape dimensions that are positions, not sizes: any sign is fine.
 POSITIONS = {"apex"}
+# the unit a shape's dimension may be given in, read in SI (half_angle: 60 deg is π/3)
+_A_LENGTH = ((LENGTH,), "a length such as 20 cm")
+_DIMENSION_KINDS = {"half_angle": ((NUMBER,), "an angle such as 60 deg")}
 MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 
 
@@ -130,12 +134,12 @@ class BodyReader:
         _check_dimensions(spec, shape, what)
         required = ("mass", *dims)
         check_keys(spec, required, ("shape", "axis", "inertia", "at", *extra, *(() if simple else ("hole",))), what)
-        constant = self.reading.constant
-        mass = constant(spec.get("mass"), "a mass")
+        measured = self.reading.measured
+        mass = measured(spec.get("mass"), "a mass", (MASS,), "a mass such as 2 kg")
         refuse_negative(mass, "mass")
         dimensions = []
         for dim in dims:
-            value = constant(spec.get(dim), f"a {dim}")
+            value = measured(spec.get(dim), f"a {dim}", *_DIMENSION_KINDS.get(dim, _A_LENGTH))
             if dim not in POSITIONS:
                 refuse_negative(value, dim)
             if dim == "half_angle":
@@ -241,11 +245,11 @@ def _check_dimensions(spec: Map, shape: Shape | None, what: str) -> None:
 
 def _half_angle(value: ex.Expr) -> None:
     """A cylinder segment's half angle α: 0 < α ≤ π (α = π the whole cylinder), where a
-    number decides it (π itself is a name: checked where it is a plain number)."""
-    number = ex.constant_value(value.tree)
-    if number is not None and not 0 < number <= Fraction(355, 113):
-        raise InputError(f"a half_angle is an angle in radians between 0 and π (the segment's arc spans twice it), "
-                         f"found {value.text}", value.loc)
+    constant decides it (pi/3, 60 deg; a parameter is left to its value)."""
+    number = approximate(value.tree)
+    if number is not None and not 0 < number <= math.pi * (1 + 1e-12):
+        raise InputError(f"a half_angle is an angle between 0 and π, or 0 and 180 deg (the segment's arc spans "
+                         f"twice it), found {value.text}", value.loc)
 
 
 def refuse_negative(value: ex.Expr, what: str) -> None:
