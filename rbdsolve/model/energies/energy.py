@@ -171,12 +171,35 @@ def _split(velocity: sp.Matrix, state: State) -> tuple[sp.Matrix, sp.Matrix]:
     return velocity.jacobian(state.qd), velocity.xreplace({qd: 0 for qd in state.qd})
 
 
+LONG_ENTRY = 300  # operations: a half-disk's M at −asin(…) is 30 and reads better as it stands
+
+
 def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Matrix:
     """M(q) = Σ (m J_vᵀ J_v + J_ωᵀ J_G J_ω), optionally evaluated at a configuration.
 
     Substituting the configuration into the Jacobians first keeps the work small: a
-    modes question never builds M(q) for general q.
+    modes question never builds M(q) for general q. Except at an angle written as
+    acos(c) or asin(s) of the parameters: there cos² + sin² = c² + (1 − c²) is no longer
+    seen as 1 (a rod's m l²/3 about its pivot came out as 2000 operations of c, which
+    then cost the eigenvalues a minute); where an entry is that long, M(q) tidied for
+    every q is put there instead, entry by entry where it is the shorter.
     """
+    there = _assembled(model, at)
+    if not at or not any(v.has(sp.acos, sp.asin) for v in at.values()) or \
+            all(sp.count_ops(x) <= LONG_ENTRY for x in there):
+        return there
+    general = _general_mass_matrix(model).xreplace(at)
+    return sp.Matrix(there.rows, there.cols,
+                     lambda i, j: min((there[i, j], tidy(general[i, j])), key=sp.count_ops))
+
+
+@memoized
+def _general_mass_matrix(model: Model) -> sp.Matrix:
+    return _assembled(model, None)
+
+
+def _assembled(model: Model, at: dict[sp.Expr, sp.Expr] | None) -> sp.Matrix:
+    """M from the bodies' Jacobians, the configuration ``at`` put in them first."""
     n = len(model.q)
     terms: dict[tuple[int, int], list[sp.Expr]] = {(i, j): [] for i in range(n) for j in range(i, n)}
     for b in jacobians(model):

@@ -119,6 +119,36 @@ def sign_where_defined(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr],
     return sign if isinstance(found, Undecided) else found
 
 
+def over_sines(value: sp.Expr, values: Iterable[sp.Expr]) -> sp.Expr:
+    """``value`` divided by each 1 − c and 1 + c that divides it exactly, for every
+    acos(c) and asin(c) in the ``values`` (an equilibrium's coordinates): a quantity of
+    the same sign wherever that equilibrium exists, since −1 ≤ c ≤ 1 there (and c = ±1
+    is where it meets θ = 0 or π). K = k l² h² L₀ sin²θ₀/s³ at cos θ₀ = c, written as
+    four factors of six parameters, is (1 − c)(1 + c) times a sign the cases can split:
+    a rod on a spring of natural length whose stiffness was left undecided."""
+    for c in sorted({f.args[0] for v in values for f in v.atoms(sp.acos, sp.asin)}, key=sp.default_sort_key):
+        for side in (1 - c, 1 + c):
+            value = _divided(value, side)
+    return value
+
+
+def _divided(value: sp.Expr, side: sp.Expr) -> sp.Expr:
+    """value / side where side's numerator divides value's exactly (as polynomials in
+    the parameters), else value as it is."""
+    top, bottom = sp.fraction(sp.together(value))
+    n, d = sp.fraction(sp.together(side))
+    gens = sorted(top.free_symbols | n.free_symbols, key=sp.default_sort_key)
+    if not n.free_symbols or not gens:
+        return value
+    try:
+        quotient, rest = sp.div(sp.Poly(top, *gens), sp.Poly(n, *gens))
+    except sp.PolynomialError:  # a root or a function of the parameters: not a polynomial
+        return value
+    if not rest.is_zero:
+        return value
+    return sp.factor(quotient.as_expr() * d / bottom)
+
+
 FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes
 
 

@@ -22,8 +22,8 @@ import sympy as sp
 
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
-from rbdsolve.model.energies.energy import memoized, potential_energy
-from rbdsolve.model.energies.spring_length import crushed_sides, held_sides
+from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
+from rbdsolve.model.energies.spring_length import crushed_sides, held_sides, without_deltas
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
 from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing, exists_when, partition,
@@ -68,6 +68,20 @@ def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
     return out
 
 
+def stiffness_at(model: Model, at: Mapping) -> sp.ImmutableMatrix:
+    """K = ∂²V/∂q∂q at the root ``at``, as ``unsquared`` writes it: once per model and
+    root (the equilibria classify it and the modes about them take it again; at
+    θ₀ = acos(…) of six parameters its factoring takes seconds)."""
+    return _stiffness_at(model, tuple(at.items()))
+
+
+@memoized
+def _stiffness_at(model: Model, at: tuple) -> sp.ImmutableMatrix:
+    V = potential_energy(model).total
+    root = dict(at)
+    return sp.ImmutableMatrix(unsquared(without_deltas(hessian(V, model.q).xreplace(root)), root, model))
+
+
 def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
     """H (a Hessian, a stiffness matrix) at the root ``at``, its square roots of squares
     written as the unsquared equations have them (``unsquared_where``) and each entry
@@ -109,6 +123,25 @@ def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -
     # F = 0 in an unsquared condition is no root (√(d² + s²) = k L/F): strict, as a crushed spring is
     return exists_when((), model, existing_where(at, model), first=first,
                        positive=[*crushed_sides(model.springs, at), *unsquared_where(at, model)])
+
+
+def necessary_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
+    """Where the equilibrium ``at`` can exist: ``existence_where``'s condition, or where
+    that cannot be split, the conjunction of those of its conditions that can, each
+    alone (each is needed, so a case outside one lies where there is no equilibrium;
+    a spring's length 2 h k L₀/(2 h k − g m) > 0 splits where −1 ≤ cos θ₀ ≤ 1 of six
+    parameters does not); true where none can."""
+    found = existence_where(at, model, first)
+    if found is not None:
+        return found.condition
+    strict = [*crushed_sides(model.springs, at), *unsquared_where(at, model)]
+    held = []
+    for condition in [*existing_where(at, model), *strict]:
+        alone = exists_when((), model, [] if condition in strict else [condition], first=first,
+                            positive=[condition] if condition in strict else [])
+        if alone is not None:
+            held.append(alone.condition)
+    return sp.And(*held)
 
 
 def with_cases(found: Equilibrium, model: Model, at: Mapping,

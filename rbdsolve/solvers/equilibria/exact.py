@@ -29,14 +29,13 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
-from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
-from rbdsolve.model.energies.spring_length import without_deltas
+from rbdsolve.model.energies.energy import memoized, potential_energy
 from rbdsolve.problem.schema import Question
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, SingularPoint, Stability
 from rbdsolve.solvers.equilibria.angles import angle_of
-from rbdsolve.solvers.equilibria.cases import existing_where, gradient, unsquared, with_cases
+from rbdsolve.solvers.equilibria.cases import existing_where, gradient, stiffness_at, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
@@ -308,8 +307,7 @@ def classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
 
 
 def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
-    V = potential_energy(model).total
-    H = sp.ImmutableMatrix(unsquared(without_deltas(hessian(V, model.q).xreplace(at)), at, model))
+    H = stiffness_at(model, at)
     names = {q: n for q, n in zip(model.q, model.coordinate_names())}
     where = {names[q]: v for q, v in at.items()}
     inertia = decided_inertia(H, model, at)
@@ -319,7 +317,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     if inertia.negative:
         return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
     if inertia.zero:
-        flat = [q for q in model.q if not V.has(q)]
+        flat = [q for q in model.q if not potential_energy(model).total.has(q)]
         if len(flat) == inertia.zero:
             return Equilibrium(where, Stability.NEUTRAL, H,
                                "V does not depend on " + ", ".join(unicode_name(names[q]) for q in flat))

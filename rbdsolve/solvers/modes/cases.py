@@ -22,7 +22,7 @@ from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
 from rbdsolve.solvers.conditions.conditions import Piece, changes, existing, partition, sign_on, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
-from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined,
+from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, over_sines,
                                               roots_where_defined, sign_of, sign_where_defined)
 
 
@@ -76,13 +76,17 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
     positive definite, K a = λ M a has as many positive, zero and negative λ as K has
     eigenvalues of each sign, so a positive definite K (a stable equilibrium) makes
     every λ positive. At the equilibrium ``at``, a factor of its coordinates'
-    denominators is ≠ 0 (``nonzero_where_defined``: λ = −Ω² sin² α < 0 where s = g cos α/(Ω² sin² α))."""
+    denominators is ≠ 0 (``nonzero_where_defined``: λ = −Ω² sin² α < 0 where s = g cos α/(Ω² sin² α)),
+    and a factor sin²θ₀ = (1 − c)(1 + c) at θ₀ = acos(c) is > 0 (``over_sines``)."""
     counts = decided_inertia(K, model, at)
     nonzero = nonzero_where_defined(at.values()) if at else {}
     zeros = sum(1 for lam in eigenvalues if lam == 0)
     motions, cases, criticals = [], [], []
-    for lam in eigenvalues:
-        sign = _decided_sign(lam, model, nonzero)
+    for written in eigenvalues:
+        lam, sign = written, _decided_sign(written, model, nonzero)
+        if isinstance(sign, Undecided) and at:  # judged by λ/sin²θ₀, of λ's sign where it exists
+            lam = over_sines(written, at.values())
+            sign = _decided_sign(lam, model, nonzero) if lam is not written else sign
         by_inertia = False  # decided by K's inertia, which holds for every value allowed: no cases to say
         if isinstance(sign, Undecided) and isinstance(counts, Inertia) \
                 and counts.positive + counts.zero + counts.negative == len(eigenvalues):
@@ -91,7 +95,7 @@ def kinds(eigenvalues: list[sp.Expr], K: sp.Matrix, model: Model, where: sp.Basi
         if isinstance(sign, Undecided):
             found = _cases(lam, model, where, first) or _cases_at_values(lam, model, where, first)
             if found is None:
-                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(lam)} depends on the parameters in a "
+                raise UnsolvedError(f"the sign of the eigenvalue {to_unicode(written)} depends on the parameters in a "
                                     f"way rbdsolve cannot split into cases; "
                                     f"{what_decides(lam.xreplace(dict(model.values)))}")  # (names those without values)
             if len(found[0]) == 1:
@@ -167,6 +171,15 @@ def _cases(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None 
     None where it cannot be split (or a piece lies partly where it exists)."""
     found = partition(lam, model, first)
     kept = existing(found.pieces, where, model) if found else None
+    if found and kept is None and found.pieces:
+        kept = existing(found.pieces, _bounds_on(found.pieces[0].parameter, where), model)
     if not kept:
         return None
     return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))
+
+
+def _bounds_on(p: sp.Symbol, where: sp.Basic) -> sp.Basic:
+    """The bounds of ``where`` (an And of conditions, each needed for the equilibrium
+    to exist) on the parameter p itself: a case outside one of them has no equilibrium;
+    the others (another parameter's range) the existence says beside the cases."""
+    return sp.And(*[c for c in sp.And.make_args(where) if isinstance(c, sp.core.relational.Relational) and c.lhs == p])
