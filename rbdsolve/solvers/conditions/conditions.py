@@ -228,6 +228,19 @@ def existing(pieces, where: sp.Basic, model) -> list[Piece] | None:
     return kept
 
 
+def existing_within_bounds(pieces, where: sp.Basic, model) -> list[Piece] | None:
+    """``existing``, or, where a piece lies partly inside ``where`` (an And of conditions
+    each needed for an equilibrium to exist), the pieces inside its bounds on the pieces'
+    own parameter: a piece outside one of them has no equilibrium; the other bounds
+    (another parameter's range) are the existence's to say, beside the cases."""
+    kept = existing(pieces, where, model)
+    if kept is None and pieces:
+        p = pieces[0].parameter
+        bounds = [c for c in sp.And.make_args(where) if isinstance(c, sp.core.relational.Relational) and c.lhs == p]
+        kept = existing(pieces, sp.And(*bounds), model)
+    return kept
+
+
 def changes(pieces) -> tuple[Critical, ...]:
     """The critical values between neighbouring pieces (where one ends and the next
     begins): where what the pieces carry changes."""

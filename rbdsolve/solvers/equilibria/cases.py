@@ -26,12 +26,12 @@ from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import crushed_sides, held_sides, without_deltas
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
-from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing, exists_when, partition,
-                                                 real_where)
+from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing,
+                                                 existing_within_bounds, exists_when, partition, real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.roots import roots_as_absolute
 from rbdsolve.form.tidy import square_root, tidy
-from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia
+from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia, over_sines
 
 
 @memoized
@@ -153,7 +153,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     is decided by them, and the cases say where that holds."""
     existence = existence_where(at, model, first)
     if existence is None:
-        return found, ()
+        return _where_needed(found, model, at, first), ()
     found = replace(found, exists_when=existence.condition)
     criticals = existence.criticals
     inertia = matrix_inertia(found.hessian, model.assumed)
@@ -167,7 +167,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     # with values for what decides it, the values decide (at the boundary itself: undetermined)
     decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
     if len(cases) == 1:
-        reason = found.reason if decided else _one_verdict(cases[0].stability, existence.condition)
+        reason = found.reason if decided else _one_verdict(cases[0].stability, existence.condition is sp.true)
         return replace(found, stability=found.stability if decided else cases[0].stability,
                        reason=reason), (*criticals, *changed)
     if decided:  # the values decide; the cases say where that holds
@@ -180,11 +180,31 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
                     reason=f"{what} as {p} passes {at}"), (*criticals, *changed))
 
 
-def _one_verdict(stability: Stability, exists: sp.Basic) -> str:
+def _where_needed(found: Equilibrium, model: Model, at: Mapping, first: sp.Symbol | None) -> Equilibrium:
+    """An undetermined equilibrium of one coordinate whose existence does not split
+    whole (−1 ≤ cos θ₀ ≤ 1 of six parameters), decided where K/sin²θ₀ (``over_sines``)
+    has one sign inside the bounds the equilibrium needs (``necessary_where``): a rod on
+    a spring of natural length, K = k l² h² L₀ sin²θ₀/s³ with s = 2 h k L₀/(2 h k − g m),
+    stable wherever it exists. Otherwise as found."""
+    if found.stability is not Stability.UNDETERMINED or found.hessian.rows != 1:
+        return found
+    judged = over_sines(found.hessian[0, 0], at.values())
+    if judged == found.hessian[0, 0]:
+        return found
+    part = partition(judged, model, first)
+    kept = existing_within_bounds(part.pieces, necessary_where(at, model, first), model) if part else None
+    verdicts = {_stability_on(sp.Matrix([[judged]]), piece, model) for piece in kept or ()}
+    if len(verdicts) != 1 or verdicts & {Stability.UNDETERMINED, Stability.NEUTRAL}:
+        return found
+    (stability,) = verdicts
+    return replace(found, stability=stability, reason=_one_verdict(stability, False))
+
+
+def _one_verdict(stability: Stability, everywhere: bool) -> str:
     """Why one stability holds on every piece of the parameters' range (a double
     pendulum's (π, π) with a hinge spring c: a maximum for small c, a saddle past
     det K = 0, unstable either way)."""
-    where = ("for every value of the parameters" if exists is sp.true
+    where = ("for every value of the parameters" if everywhere
              else "wherever the equilibrium exists, off its boundary")  # K = 0 at a closed boundary
     what = {Stability.STABLE: "the Hessian of V is positive definite",
             Stability.UNSTABLE: "the Hessian of V has a negative eigenvalue"}.get(

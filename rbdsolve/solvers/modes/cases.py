@@ -20,7 +20,7 @@ from rbdsolve.solvers.equilibria.cases import existence_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
-from rbdsolve.solvers.conditions.conditions import Piece, changes, existing, partition, sign_on, what_decides
+from rbdsolve.solvers.conditions.conditions import Piece, changes, existing_within_bounds, partition, sign_on, what_decides
 from rbdsolve.solvers.conditions.present_conditions import condition_text
 from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, over_sines,
                                               roots_where_defined, sign_of, sign_where_defined)
@@ -170,16 +170,8 @@ def _cases(lam: sp.Expr, model: Model, where: sp.Basic, first: sp.Symbol | None 
     pieces where the equilibrium does not exist (or the assumptions rule out) left out;
     None where it cannot be split (or a piece lies partly where it exists)."""
     found = partition(lam, model, first)
-    kept = existing(found.pieces, where, model) if found else None
-    if found and kept is None and found.pieces:
-        kept = existing(found.pieces, _bounds_on(found.pieces[0].parameter, where), model)
+    kept = existing_within_bounds(found.pieces, where, model) if found else None
     if not kept:
         return None
     return tuple(MotionCase(piece.when(), KIND[piece.sign]) for piece in kept), list(changes(kept))
 
-
-def _bounds_on(p: sp.Symbol, where: sp.Basic) -> sp.Basic:
-    """The bounds of ``where`` (an And of conditions, each needed for the equilibrium
-    to exist) on the parameter p itself: a case outside one of them has no equilibrium;
-    the others (another parameter's range) the existence says beside the cases."""
-    return sp.And(*[c for c in sp.And.make_args(where) if isinstance(c, sp.core.relational.Relational) and c.lhs == p])

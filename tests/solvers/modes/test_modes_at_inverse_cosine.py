@@ -38,6 +38,7 @@ bodies:
 springs:
   s: {stiffness: k, between: [B, A], natural_length: L0}
 questions:
+  - equilibria
   - modes: {about: each}
 """
 
@@ -53,12 +54,17 @@ def _by_hand(m: float, l: float, g: float) -> tuple[float, float]:
 
 
 @pytest.fixture(scope="module")
-def each(tmp_path_factory):
+def solved(tmp_path_factory):
     import rbdsolve
 
     path = Path(tmp_path_factory.mktemp("rod")) / "rod.yaml"
     path.write_text(SCENE)
-    return rbdsolve.solve(path)["modes"].answers
+    return rbdsolve.solve(path)
+
+
+@pytest.fixture(scope="module")
+def each(solved):
+    return solved["modes"].answers
 
 
 def _off_axis(each):
@@ -84,6 +90,14 @@ def test_both_off_axis_equilibria_oscillate_with_the_hand_eigenvalue(each):
             assert lam > 0
             checked += 1
     assert checked == 6  # three of the four samples have the equilibrium, for each of ±acos
+
+
+def test_the_equilibria_call_both_off_axis_equilibria_stable(solved):
+    """K > 0 wherever they exist (the derivation above): stable, not undetermined."""
+    found = solved["equilibria"].answers.equilibria
+    off = [e for e in found if any(isinstance(v, sp.Expr) and v.has(sp.acos) for v in e.at.values())]
+    assert len(off) == 2
+    assert {e.stability.value for e in off} == {"stable"}
 
 
 def _given(expr: sp.Expr) -> dict:
