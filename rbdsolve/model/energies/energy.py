@@ -185,7 +185,7 @@ def mass_matrix(model: Model, at: dict[sp.Expr, sp.Expr] | None = None) -> sp.Ma
     every q is put there instead, entry by entry where it is the shorter.
     """
     there = _assembled(model, at)
-    if not at or not any(v.has(sp.acos, sp.asin) for v in at.values()) or \
+    if not at or not any(sp.sympify(v).has(sp.acos, sp.asin) for v in at.values()) or \
             all(sp.count_ops(x) <= LONG_ENTRY for x in there):
         return there
     general = _general_mass_matrix(model).xreplace(at)

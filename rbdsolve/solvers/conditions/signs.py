@@ -126,7 +126,7 @@ def over_sines(value: sp.Expr, values: Iterable[sp.Expr]) -> sp.Expr:
     is where it meets θ = 0 or π). K = k l² h² L₀ sin²θ₀/s³ at cos θ₀ = c, written as
     four factors of six parameters, is (1 − c)(1 + c) times a sign the cases can split:
     a rod on a spring of natural length whose stiffness was left undecided."""
-    for c in sorted({f.args[0] for v in values for f in v.atoms(sp.acos, sp.asin)}, key=sp.default_sort_key):
+    for c in sorted({f.args[0] for v in values for f in sp.sympify(v).atoms(sp.acos, sp.asin)}, key=sp.default_sort_key):
         for side in (1 - c, 1 + c):
             value = _divided(value, side)
     return value

@@ -201,7 +201,7 @@ def _stiffness(model: Model, at: dict) -> sp.ImmutableMatrix:
     equilibria's own K there (``stiffness_at``: made once per root, and not tidied before
     it is factored; at θ₀ = acos(…) of six parameters, tidying first made 333 operations
     18 848, six seconds to factor)."""
-    if any(v.has(sp.acos, sp.asin) for v in at.values()):
+    if any(sp.sympify(v).has(sp.acos, sp.asin) for v in at.values()):
         return stiffness_at(model, at)
     return sp.ImmutableMatrix(unsquared(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)),
                                         at, model))
