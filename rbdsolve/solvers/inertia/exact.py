@@ -181,9 +181,12 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
     J_hat = (J / scale).applyfunc(tidy)
     if _beyond_radicals(J_hat) and not J_hat.is_diagonal():
         return _in_numbers(J_hat, scale, model)
-    poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
-    poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
-    steps = [diagonal_step() if J_hat.is_diagonal() else characteristic_step(scale, poly)]
+    if J_hat.is_diagonal():  # its moments are its entries: no cubic to build (of π and √3, seconds)
+        poly, steps = None, [diagonal_step()]
+    else:
+        poly = sp.Poly((LAMBDA * sp.eye(3) - J_hat).det(method="berkowitz"), LAMBDA)
+        poly = sp.Poly(sum(tidy(c) * LAMBDA**k for (k,), c in poly.terms()), LAMBDA)  # sin² + cos² = 1
+        steps = [characteristic_step(scale, poly)]
     turning = _turning_plane(J_hat, scale, model)
     if turning is not None:
         return replace(turning, steps=(*steps, *turning.steps))
@@ -281,7 +284,7 @@ def _principal_turned(J: sp.Matrix, Q: sp.Matrix, symbols: set, model: Model) ->
     return replace(found, axes=tuple(axes), steps=tuple(steps))
 
 
-def _closed_form(J_hat: sp.Matrix, poly: sp.Poly) -> dict[sp.Expr, int] | None:
+def _closed_form(J_hat: sp.Matrix, poly: sp.Poly | None) -> dict[sp.Expr, int] | None:
     """{root: multiplicity} in closed form, or None when no compact real form is found
     (an irreducible cubic with irrational coefficients gives Cardano's formula in i)."""
     if J_hat.is_diagonal():
