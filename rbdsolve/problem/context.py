@@ -310,6 +310,5 @@ def _unit_hint(error: InputError, node: Node) -> InputError:
     text = ex._clip(node.text.strip())
     return InputError(f"'{text}' has a unit, and units are read in 'values:', --set, a body's mass and sizes, "
                       f"and a question's states (at:, from_rest:, about:, to:), not here: write the value here in "
-                      f"SI without one (an "
-                      f"angle in radians: 30° is pi/6), or name it, with a parameter whose value is '{text}'",
-                      node.loc)
+                      f"SI without one (an angle in radians: 30° is pi/6), or name it, with a parameter whose value "
+                      f"is '{text}'", node.loc)
