@@ -119,10 +119,18 @@ def _vanishes(expr: sp.Expr) -> bool:
 def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> Existence | None:
     """Where the solution ``at`` of ∂V/∂q = 0 is an equilibrium (``existing_where`` ≥ 0,
     and > 0 where zero would put a spring with a natural length at zero length:
-    ``crushed_sides``), solved for ``first`` where it can; None where it cannot be split."""
+    ``crushed_sides``), solved for ``first`` where it can; None where it cannot be split.
+    Once per model, root and ``first``: the equilibria, their stability cases and the
+    modes about each root ask for it again."""
+    return _existence_where(model, tuple(at.items()), first)
+
+
+@memoized
+def _existence_where(model: Model, at: tuple, first: sp.Symbol | None) -> Existence | None:
+    root = dict(at)
     # F = 0 in an unsquared condition is no root (√(d² + s²) = k L/F): strict, as a crushed spring is
-    return exists_when((), model, existing_where(at, model), first=first,
-                       positive=[*crushed_sides(model.springs, at), *unsquared_where(at, model)])
+    return exists_when((), model, existing_where(root, model), first=first,
+                       positive=[*crushed_sides(model.springs, root), *unsquared_where(root, model)])
 
 
 def necessary_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
