@@ -236,7 +236,7 @@ def existing_within_bounds(pieces, where: sp.Basic, model) -> list[Piece] | None
     kept = existing(pieces, where, model)
     if kept is None and pieces:
         p = pieces[0].parameter
-        bounds = [c for c in sp.And.make_args(where) if isinstance(c, sp.core.relational.Relational) and c.lhs == p]
+        bounds = [c for c in sp.And.make_args(where) if isinstance(c, sp.Rel) and c.lhs == p]
         kept = existing(pieces, sp.And(*bounds), model)
     return kept
 

@@ -127,10 +127,14 @@ def existence_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -
 
 @memoized
 def _existence_where(model: Model, at: tuple, first: sp.Symbol | None) -> Existence | None:
-    root = dict(at)
+    nonnegative, positive = _conditions(dict(at), model)
+    return exists_when((), model, nonnegative, first=first, positive=positive)
+
+
+def _conditions(at: Mapping, model: Model) -> tuple[list[sp.Expr], list[sp.Expr]]:
+    """What must be ≥ 0 and what must be > 0 for ``at`` to be an equilibrium."""
     # F = 0 in an unsquared condition is no root (√(d² + s²) = k L/F): strict, as a crushed spring is
-    return exists_when((), model, existing_where(root, model), first=first,
-                       positive=[*crushed_sides(model.springs, root), *unsquared_where(root, model)])
+    return existing_where(at, model), [*crushed_sides(model.springs, at), *unsquared_where(at, model)]
 
 
 def necessary_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -> sp.Basic:
@@ -142,14 +146,10 @@ def necessary_where(at: Mapping, model: Model, first: sp.Symbol | None = None) -
     found = existence_where(at, model, first)
     if found is not None:
         return found.condition
-    strict = [*crushed_sides(model.springs, at), *unsquared_where(at, model)]
-    held = []
-    for condition in [*existing_where(at, model), *strict]:
-        alone = exists_when((), model, [] if condition in strict else [condition], first=first,
-                            positive=[condition] if condition in strict else [])
-        if alone is not None:
-            held.append(alone.condition)
-    return sp.And(*held)
+    nonnegative, positive = _conditions(at, model)
+    alone = [exists_when((), model, [c], first=first) for c in nonnegative]
+    alone += [exists_when((), model, (), first=first, positive=[c]) for c in positive]
+    return sp.And(*[a.condition for a in alone if a is not None])
 
 
 def with_cases(found: Equilibrium, model: Model, at: Mapping,

@@ -151,8 +151,7 @@ def _at_each(model: Model, first: sp.Symbol | None) -> Solution:
         try:
             # a case outside a condition the equilibrium needs is dropped, even where the
             # whole condition cannot be split (the text and the JSON say only what can)
-            cases_where = where if where is not sp.true else necessary_where(listed.at, model, first)
-            answers, more = modes_at(listed.at, model, cases_where, first)
+            answers, more = modes_at(listed.at, model, necessary_where(listed.at, model, first), first)
         except UnsolvedError as exc:
             skipped.append(Skipped(about, str(exc)))
             steps.append(st.note(f"Not answered here: {exc}."))
