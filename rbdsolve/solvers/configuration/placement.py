@@ -42,6 +42,7 @@ from rbdsolve.solvers.configuration.placement_screen import clearly_different, c
 from rbdsolve.model.values.values import parameter_sample
 
 DIGITS = 30
+APART = 1e-15  # a relative gap no 30-digit evaluation of equal values leaves
 RANK_TOL = mp.mpf(10) ** -20
 FIBRE_STEPS = (mp.mpf("0.37"), mp.mpf("1.3"), mp.mpf("-2.2"))
 
@@ -281,6 +282,8 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     left = phi.xreplace(dict(a))
     fixed = {q: v for q, v in b.items() if q not in free}
     right = phi.xreplace(fixed)
+    if _apart_off_the_reals(model, left, right, free):
+        return False
     difference = [tidy_fraction(sp.expand_trig(x)) for x in (left - right)]
     if not free:
         return all(x == 0 for x in difference)
@@ -299,6 +302,24 @@ def _clearly_apart(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     if left is None or right is None:
         return False
     return clearly_different(entries, model.q, left, right, _float_sample(model))
+
+
+def _apart_off_the_reals(model: Model, left: sp.Matrix, right: sp.Matrix, free: tuple[sp.Symbol, ...]) -> bool:
+    """An entry of φ(a) and φ(b) without a free coordinate clearly differs at the sampled
+    parameters, each evaluated to 30 digits: the screen where ``_clearly_apart`` has no
+    real point (acos(c) of a c past ±1 there). The roots are put in as written before
+    evaluating (sin(acos(c)) is √(1 − c²) already), so each number is its expression's
+    value at the sample, complex or not; they differ by far more than 30 digits' rounding
+    only where the expressions differ too."""
+    sample = _sample(model)
+    for x, y in zip(left, right):
+        if x.has(*free) or y.has(*free):
+            continue
+        u, v = (complex(z) if z.is_number and z.is_finite else None
+                for z in (sp.N(e.xreplace(sample), DIGITS) for e in (x, y)))
+        if u is not None and v is not None and abs(u - v) > APART * max(1.0, abs(u), abs(v)):
+            return True
+    return False
 
 
 def _solvable(equations: list[sp.Expr], free: tuple[sp.Symbol, ...], model: Model) -> bool:
