@@ -79,9 +79,44 @@ def sign_of(value: sp.Expr, values: Mapping[sp.Symbol, sp.Expr]) -> int | Undeci
                 return Undecided(value)  # not real at these values
             return 0 if z.real == 0 else (1 if z.real > 0 else -1)
         sign = symbolic_sign(number)  # an assumption's substitution, R = r + δ with δ > 0
+        if sign is None:
+            sign = coefficient_sign(number)  # the parameters left open, in numbers
         if sign is not None:
             return sign
     return Undecided(value)
+
+
+def coefficient_sign(value: sp.Expr) -> int | None:
+    """1 (−1) where value = P/Q, P and Q polynomials in positive symbols whose
+    coefficients are numbers, each of P's and each of Q's of one sign (or zero): a sum
+    of positive monomials is positive. The values given and one stiffness k left open:
+    K = (3 − 2√2) √2 k/8 + 981/100 at an inverted rod's hanging position, whose terms
+    sympy's assumptions see with mixed signs (3 k and −2√2 k). Each coefficient's sign
+    from 30 digits, one within 10⁻²⁰ of zero deciding nothing."""
+    symbols = value.free_symbols
+    if not symbols or not all(x.is_positive for x in symbols):
+        return None
+    signs = [_coefficients_sign(part, sorted(symbols, key=sp.default_sort_key))
+             for part in sp.fraction(sp.together(value))]
+    if None in signs:
+        return None
+    return signs[0] * signs[1]
+
+
+def _coefficients_sign(part: sp.Expr, symbols: list[sp.Symbol]) -> int | None:
+    try:
+        coefficients = sp.Poly(sp.expand(part), *symbols).coeffs()
+    except sp.PolynomialError:  # a root or a function of the open parameters
+        return None
+    seen = set()
+    for c in coefficients:
+        if not c.is_number:
+            return None
+        z = complex(sp.N(c, 30))
+        if abs(z.imag) > 1e-20 * max(1.0, abs(z.real)) or abs(z.real) < 1e-20:
+            return None
+        seen.add(1 if z.real > 0 else -1)
+    return seen.pop() if len(seen) == 1 else None
 
 
 def nonzero_where_defined(values: Iterable[sp.Expr]) -> dict[sp.Expr, sp.Dummy]:
