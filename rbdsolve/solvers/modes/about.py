@@ -20,8 +20,10 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
-from rbdsolve.solvers.equilibria.answers import Stability
-from rbdsolve.solvers.equilibria.exact import classify_listed, gradient, incomplete, listing
+from rbdsolve.solvers.conditions.conditions import asked
+from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
+from rbdsolve.solvers.equilibria.cases import with_cases
+from rbdsolve.solvers.equilibria.exact import Listed, classify_listed, gradient, incomplete, listing
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.numeric.chosen import REFINE_TOL, several_stable
 from rbdsolve.solvers.routes.needed import missing_for
@@ -39,14 +41,46 @@ def exact_equilibrium(question: Question, model: Model) -> tuple[dict, tuple[str
             raise UnsolvedError(f"{options.loc}: there is no equilibrium {options.equilibrium}: 'equilibria' "
                                 f"lists {len(listed)} here")
         return listed[options.equilibrium - 1].at, ()
-    stable = [k for k, x in enumerate(listed, 1) if classify_listed(model, x).stability is Stability.STABLE]
+    first = asked(model, question)
+    verdicts = [_stability(model, x, first) for x in listed]
+    stable = [k for k, found in enumerate(verdicts, 1) if found.stability is Stability.STABLE]
     if not stable:
-        raise UnsolvedError("no stable equilibrium found; choose one with 'modes: {about: {...}}'")
+        raise UnsolvedError(_none_stable(verdicts, model))
     notes = ()
     if len(stable) > 1:
         others = [(k, _shown(model, listed[k - 1].at)) for k in stable[1:]]
         notes = (several_stable(stable[0], others),)
     return listed[stable[0] - 1].at, notes
+
+
+def _stability(model: Model, listed: Listed, first: sp.Symbol | None) -> Equilibrium:
+    """The listed equilibrium classified as the equilibria question does: by the values,
+    or where they leave it undecided, over the parameters' range where it exists
+    (``with_cases``: a rod on a spring of natural length, stable at ±acos(c) wherever
+    that exists), so that 'modes' takes the one 'equilibria' calls stable."""
+    found = classify_listed(model, listed)
+    if found.stability in (Stability.STABLE, Stability.UNSTABLE):
+        return found
+    return with_cases(found, model, listed.at, first)[0]
+
+
+def _none_stable(verdicts: list[Equilibrium], model: Model) -> str:
+    """Why no equilibrium was taken: none is stable, or some only for some values of the
+    parameters (those equilibria and the parameters without a value named, to be chosen
+    or given)."""
+    depends = [(k, found) for k, found in enumerate(verdicts, 1) if found.stability is Stability.DEPENDS]
+    choose = "choose one with 'modes: {about: {...}}'"
+    if not depends:
+        return f"no stable equilibrium found; {choose}"
+    which = ", ".join(str(k) for k, _ in depends)
+    given = dict(model.values)
+    names = sorted({to_unicode(s) for _, found in depends for case in found.stability_cases
+                    for s in case.when.free_symbols if s not in given})
+    on = ", ".join(names) or "the parameters"
+    return (f"no equilibrium is stable for every value of the parameters: the stability of equilibri"
+            f"{'um' if len(depends) == 1 else 'a'} {which} depends on {on} ('equilibria' gives where); give "
+            f"{'a value' if len(names) == 1 else 'values'} for {on}, or {choose} (such as "
+            f"{{equilibrium: {depends[0][0]}}})")
 
 
 def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:

@@ -86,7 +86,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     missing = absent(at, where, model)
     if missing:
         raise UnsolvedError(missing)
-    answers, steps = modes_at(at, model, where, first)
+    # as about each: a case outside a condition the equilibrium needs is dropped
+    answers, steps = modes_at(at, model, necessary_where(at, model, first), first)
     answers = replace(answers, exists_when=where)  # a script reads where it holds, as the text says
     if where is not sp.true:  # a case outside it is left out: say so
         steps = (st.note("The equilibrium exists only where the following holds; its small motions are "

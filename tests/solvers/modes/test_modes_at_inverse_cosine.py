@@ -40,6 +40,7 @@ springs:
 questions:
   - equilibria
   - modes: {about: each}
+  - modes
 """
 
 K_, H_, L0_ = 200.0, 0.5, 0.6
@@ -66,7 +67,7 @@ def solved(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def each(solved):
-    return solved["modes"].answers
+    return solved[1].answers
 
 
 def _off_axis(each):
@@ -100,6 +101,25 @@ def test_the_equilibria_call_both_off_axis_equilibria_stable(solved):
     off = [e for e in found if any(isinstance(v, sp.Expr) and v.has(sp.acos) for v in e.at.values())]
     assert len(off) == 2
     assert {e.stability.value for e in off} == {"stable"}
+
+
+def test_modes_without_about_take_an_equilibrium_the_equilibria_call_stable(solved):
+    """Plain 'modes' takes the first stable equilibrium: θ = 0 and π depend on the
+    parameters, ±acos(c) are stable wherever they exist (above), so it is one of those,
+    an oscillation with the hand eigenvalue and no case past 2 k h = m g, where the
+    equilibrium does not exist (it said "no stable equilibrium found")."""
+    answer = solved[2]
+    assert answer.error is None, answer.error
+    modes = answer.answers
+    (theta,) = modes.about.values()
+    assert theta.has(sp.acos)
+    assert [m.value for m in modes.motions] == ["oscillation"] and not modes.cases
+    names = {s.name: s for s in modes.eigenvalues[0].free_symbols}
+    for m, l, g in [(1.0, 1.0, 9.81), (0.5, 1.7, 1.62)]:
+        _, lam = _by_hand(m, l, g)
+        at = {names["m"]: m, names["l"]: l, names["g"]: g, **_given(modes.eigenvalues[0])}
+        assert math.isclose(float(modes.eigenvalues[0].xreplace(at)), lam, rel_tol=1e-10)
+    assert any("2 equilibria are stable" in w for w in answer.solution.warnings)
 
 
 def _given(expr: sp.Expr) -> dict:
