@@ -49,6 +49,13 @@ def existing_where(at: Mapping, model: Model) -> list[sp.Expr]:
 
 
 def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
+    """``_unsquared_where``, once per model and root (the existence and the stiffness
+    there each ask: seconds at θ₀ = acos(c) of six parameters)."""
+    return list(_unsquared_where(model, tuple(at.items())))
+
+
+@memoized
+def _unsquared_where(model: Model, root: tuple) -> tuple[sp.Expr, ...]:
     """What must be ≥ 0 for a root found through a squared form of ∂V/∂q = 0 to solve
     the equations themselves. Solving clears the roots of the coordinates by squaring:
     a bead on a turning rod held to the axis by a spring, k (1 − L/√(d² + s²)) = m Ω²,
@@ -58,14 +65,14 @@ def unsquared_where(at: Mapping, model: Model) -> list[sp.Expr]:
     condition."""
     grad = gradient(model)
     if not any(square_root(p) and p.base.has(*model.q) for g in grad for p in g.atoms(sp.Pow)):
-        return []
-    residual = [roots_as_absolute(g.xreplace(dict(at))) for g in grad]
+        return ()
+    residual = [roots_as_absolute(g.xreplace(dict(root))) for g in grad]
     out = []
     for a in sorted({a for r in residual for a in r.atoms(sp.Abs)}, key=sp.default_sort_key):
         holds = [sign for sign in (1, -1) if all(_vanishes(r.xreplace({a: sign * a.args[0]})) for r in residual)]
         if len(holds) == 1:
             out.append(holds[0] * a.args[0])
-    return out
+    return tuple(out)
 
 
 def stiffness_at(model: Model, at: Mapping) -> sp.ImmutableMatrix:
