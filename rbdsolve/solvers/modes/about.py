@@ -5,8 +5,10 @@ values for the parameters, the listed exact equilibrium (``equilibria.exact.list
 within REFINE_TOL of it in every coordinate (angles modulo 2π), so that a root copied
 with 6 digits is taken as the root itself, and a note says so. Farther away, refused,
 with the residual as a number. ``about: {equilibrium: N}``: the N-th listed
-equilibrium. Neither: the first stable one; when several are stable, a note names the
-others (the numeric route does the same, ``solvers/numeric/chosen.py``).
+equilibrium. Neither: the first stable one, as ``equilibria`` classifies it (by the
+values, else wherever it exists: ``with_cases``); when several are stable, a note names
+the others (the numeric route does the same, ``solvers/numeric/chosen.py``); where none
+is, and some are stable for some values only, the refusal names them and what decides.
 """
 
 from __future__ import annotations
@@ -77,9 +79,10 @@ def _none_stable(verdicts: list[Equilibrium], model: Model) -> str:
     names = sorted({to_unicode(s) for _, found in depends for case in found.stability_cases
                     for s in case.when.free_symbols if s not in given})
     on = ", ".join(names) or "the parameters"
-    return (f"no equilibrium is stable for every value of the parameters: the stability of equilibri"
-            f"{'um' if len(depends) == 1 else 'a'} {which} depends on {on} ('equilibria' gives where); give "
-            f"{'a value' if len(names) == 1 else 'values'} for {on}, or {choose} (such as "
+    noun = "equilibrium" if len(depends) == 1 else "equilibria"
+    value = "a value" if len(names) == 1 else "values"
+    return (f"no equilibrium is stable for every value of the parameters: the stability of {noun} {which} "
+            f"depends on {on} ('equilibria' gives where); give {value} for {on}, or {choose} (such as "
             f"{{equilibrium: {depends[0][0]}}})")
 
 
