@@ -1,7 +1,7 @@
 """The oracle's reading of the expression language: scalar and vector expressions as
 the generator writes them (the same grammar as a problem file: numbers, names, + − * /
 **, sin cos … sqrt, [x, y] vectors), compiled to Python functions that evaluate in
-floats (``math``) or in many digits (``mpmath``).
+floats (``math``), in many digits (``mpmath``) or in floats on arrays of points (``numpy``).
 
 The strings are the generator's own (never a user's file), so compiling them is safe;
 the parse is still checked node by node against the grammar, so a typo in a family
@@ -15,6 +15,7 @@ from functools import lru_cache
 from typing import Any, Callable
 
 import mpmath
+import numpy as np
 
 FUNCTIONS = ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp", "log",
              "sinh", "cosh", "tanh", "abs", "norm", "inner", "cross")
@@ -26,6 +27,9 @@ class Vec:
     """A 3-vector of floats or mpf: [x, y] gets z = 0; + − with vectors, * / by scalars."""
 
     __slots__ = ("c",)
+    # numpy's operators give way to the vector's own (an array of points times a vector
+    # is a vector of arrays, not an array of vectors)
+    __array_ufunc__ = None
 
     def __init__(self, *c):
         if len(c) == 2:
@@ -77,10 +81,10 @@ class Namespace:
 
     def __init__(self, lib):
         self.lib = lib
-        self.pi = lib.pi if lib is math else mpmath.pi
+        self.pi = mpmath.pi if lib is mpmath.mp else lib.pi
         # numpy's own float64 arrays for floats (the same IEEE doubles, computed in C), an
         # array of Python objects for mpmath's 40 digits
-        self.dtype = float if lib is math else object
+        self.dtype = object if lib is mpmath.mp else float
         self.table: dict[str, Any] = {name: getattr(lib, name) for name in
                                       ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt",
                                        "exp", "log", "sinh", "cosh", "tanh")}
@@ -97,6 +101,9 @@ class Namespace:
 
 FLOAT = Namespace(math)
 MP = Namespace(mpmath.mp)
+# floats on numpy arrays, one element per point: an expression evaluated at many points at
+# once (numpy's sin, cos … in place of math's, the same doubles to an ulp or so)
+ARRAYS = Namespace(np)
 mpmath.mp.dps = 40
 
 

@@ -13,7 +13,8 @@ m a − m g − F and J ω̇ + ω × J ω − M, projected on the motions the su
 which is d/dt ∂L/∂q̇_k − ∂L/∂q_k for the same scene (so it is compared with rbdsolve's
 equations term for term) but is formed without T, V or Lagrange's equations.
 Derivatives are finite differences of fourth order, in 40 digits (mpmath) for the
-answers and in floats for searches and simulation."""
+answers and in floats for searches and simulation; in floats the points of one
+derivative are evaluated together, on arrays (oracle/poses.py)."""
 
 from __future__ import annotations
 
@@ -23,7 +24,8 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from benchmarks.neighbours.expr import FLOAT, MP, Env, Namespace, Vec, evaluate, names_in
+from benchmarks.neighbours.expr import ARRAYS, FLOAT, MP, Env, Namespace, Vec, evaluate, names_in
+from benchmarks.neighbours.oracle.poses import at_points, poses
 from benchmarks.neighbours.oracle.shapes import Cloud, cloud
 from benchmarks.neighbours.scene import Body, Scene
 
@@ -118,10 +120,11 @@ class System:
 
     # --- evaluation -------------------------------------------------------------------
     def env(self, q, t) -> Env:
+        """The values at (q, t); with t an array, at many points at once (floats on arrays)."""
         values = dict(self.p)
         values.update(zip(self.coords, q))
         values["t"] = t
-        return Env(self.ns, values, self.scene.points)
+        return Env(ARRAYS if isinstance(t, np.ndarray) else self.ns, values, self.scene.points)
 
     def value(self, text: str, q, t=0):
         return evaluate(text, self.env(q, t))
@@ -140,8 +143,11 @@ class System:
         return _rot("z", angle, self.ns)
 
     def pose(self, q, t) -> np.ndarray:
-        """Every body's centre and turn, flattened: [r (3), R (9)] per body."""
+        """Every body's centre and turn, flattened: [r (3), R (9)] per body (with t an
+        array: one column per point)."""
         env = self.env(q, t)
+        if isinstance(t, np.ndarray):
+            return poses(self, env, len(t))
         out = []
         for mb, c in zip(self.bodies, self.centres):
             R = self.rotation(mb.spec, env)
@@ -152,23 +158,43 @@ class System:
         return np.concatenate(out) if out else np.zeros(0, dtype=self.ns.dtype)
 
     # --- derivatives ------------------------------------------------------------------
-    def _d1(self, f, k: int, q, t):
-        h = self.h1 * self.scale[k]
-        def at(s):
-            qq = list(q)
-            qq[k] = qq[k] + s
-            return f(qq, t)
-        return (at(-2 * h) - 8 * at(-h) + 8 * at(h) - at(2 * h)) / (12 * h)
+    def at(self, f, points: list, arrays: bool) -> list:
+        """f at each (q, t) of ``points``; in floats, where f takes arrays (the pose, the
+        potential, the springs' energy), in one evaluation for all (``poses.at_points``)."""
+        if arrays and self.ns is FLOAT:
+            return at_points(f, self.n, points)
+        return [f(q, t) for q, t in points]
 
-    def partials(self, f, q, t) -> list:
-        return [self._d1(f, k, q, t) for k in range(self.n)]
+    def stencil(self, q, t) -> list:
+        """The points of the differences in every coordinate: q + s e_k, s = −2h, −h, h, 2h."""
+        out = []
+        for k in range(self.n):
+            h = self.h1 * self.scale[k]
+            for s in (-2 * h, -h, h, 2 * h):
+                qq = list(q)
+                qq[k] = qq[k] + s
+                out.append((qq, t))
+        return out
 
-    def path(self, f, q, qd, qdd, t):
+    def differences(self, values: list) -> list:
+        """∂f/∂q_k = (f(−2h) − 8 f(−h) + 8 f(h) − f(2h)) / 12h, the central difference of
+        fourth order, from f at the ``stencil``."""
+        out = []
+        for k in range(self.n):
+            fm2, fm1, fp1, fp2 = values[4 * k:4 * k + 4]
+            out.append((fm2 - 8 * fm1 + 8 * fp1 - fp2) / (12 * (self.h1 * self.scale[k])))
+        return out
+
+    def partials(self, f, q, t, arrays: bool = False) -> list:
+        """∂f/∂q_k for every k (``arrays``: f takes arrays of points, see ``at``)."""
+        return self.differences(self.at(f, self.stencil(q, t), arrays))
+
+    def path(self, f, q, qd, qdd, t, arrays: bool = False):
         """f and its first and second derivatives along q + s q̇ + s²/2 q̈, t + s."""
         h = self.h2
         def at(s):
-            return f([a + s * b + s * s / 2 * c for a, b, c in zip(q, qd, qdd)], t + s)
-        fm2, fm1, f0, fp1, fp2 = at(-2 * h), at(-h), at(0 * h), at(h), at(2 * h)
+            return [a + s * b + s * s / 2 * c for a, b, c in zip(q, qd, qdd)], t + s
+        fm2, fm1, f0, fp1, fp2 = self.at(f, [at(-2 * h), at(-h), at(0 * h), at(h), at(2 * h)], arrays)
         d1 = (fm2 - 8 * fm1 + 8 * fp1 - fp2) / (12 * h)
         d2 = (-fm2 + 16 * fm1 - 30 * f0 + 16 * fp1 - fp2) / (12 * h * h)
         return f0, d1, d2
@@ -176,7 +202,7 @@ class System:
     # --- kinematics of the bodies -------------------------------------------------------
     def motion(self, q, qd, qdd, t):
         """Per body: r, v, a, R, ω, ω̇ (scene axes)."""
-        P, dP, ddP = self.path(self.pose, q, qd, qdd, t)
+        P, dP, ddP = self.path(self.pose, q, qd, qdd, t, arrays=True)
         out = []
         for i, _ in enumerate(self.bodies):
             r, v, a = P[12 * i:12 * i + 3], dP[12 * i:12 * i + 3], ddP[12 * i:12 * i + 3]
@@ -191,7 +217,7 @@ class System:
     def partial_velocities(self, q, t):
         """Per coordinate k, per body: (∂r/∂q_k, W_k)."""
         P = self.pose(q, t)
-        dPs = self.partials(self.pose, q, t)
+        dPs = self.partials(self.pose, q, t, arrays=True)
         out = []
         for dP in dPs:
             row = []
@@ -208,6 +234,7 @@ class System:
     def spring_energy(self, q, t=0):
         env = self.env(q, t)
         V = self.zero
+        sqrt = env.ns.table["sqrt"]  # env's: numpy's on arrays of points
         for s in self.scene.springs:
             k = evaluate(s.stiffness, env)
             if s.angle is not None:
@@ -215,7 +242,7 @@ class System:
             else:
                 a, b = evaluate(s.ends[0], env), evaluate(s.ends[1], env)
                 d = a - b
-                x = self.ns.table["sqrt"](sum(c * c for c in d)) - evaluate(s.natural_length, env)
+                x = sqrt(sum(c * c for c in d)) - evaluate(s.natural_length, env)
             V = V + k * x * x / 2
         return V
 
@@ -314,7 +341,7 @@ class System:
             return self._static_residual(q, t, sizes)
         mot = self.motion(q, qd, qdd, t)
         pv = self.partial_velocities(q, t)
-        dV = self.partials(lambda qq, tt: self.spring_energy(qq, tt), q, t) if self.scene.springs else [self.zero] * self.n
+        dV = self.partials(self.spring_energy, q, t, arrays=True) if self.scene.springs else [self.zero] * self.n
         Qa = self.applied(q, qd, t) if self.scene.forces else [self.zero] * self.n
         E, S = [], []
         for k in range(self.n):
@@ -333,7 +360,7 @@ class System:
 
     def _static_residual(self, q, t, sizes):
         """At rest in a still scene E = ∂V/∂q (gravity and springs): a gradient of V."""
-        E = self.partials(lambda qq, tt: self.potential(qq, tt), q, t)
+        E = self.partials(self.potential, q, t, arrays=True)
         if not sizes:
             return E
         S = []
