@@ -16,6 +16,7 @@ from scipy import optimize
 
 from benchmarks.neighbours.expr import FLOAT, MP, constant
 from benchmarks.neighbours.oracle.mechanics import System
+from benchmarks.neighbours.oracle.newton import newton_runs
 
 
 def box(system: System) -> list[tuple[float, float, bool]]:
@@ -35,6 +36,17 @@ def _force(fs: System, q) -> np.ndarray:
     return np.array([float(x) for x in fs.generalized_force(list(map(float, q)))])
 
 
+def _forces(fs: System, qs: list) -> list[np.ndarray]:
+    """_force at each of ``qs``. In a still scene Q = −∂V/∂q (System._static_residual): V
+    at the stencils of all of them in one evaluation on arrays, the same differences."""
+    if not fs.static or fs.scene.forces:
+        return [_force(fs, q) for q in qs]
+    points = [p for q in qs for p in fs.stencil(list(map(float, q)), 0)]
+    V = fs.at(fs.potential, points, arrays=True)
+    m = 4 * fs.n
+    return [np.array([float(-e) for e in fs.differences(V[m * j:m * j + m])]) for j in range(len(qs))]
+
+
 def equilibria(ms: System, fs: System, starts: int | None = None) -> list[list]:
     """The roots of Q in the box, each polished in 40 digits (a list of mpf)."""
     b = box(ms)
@@ -43,7 +55,7 @@ def equilibria(ms: System, fs: System, starts: int | None = None) -> list[list]:
     if n == 1:
         lo, hi, per = b[0]
         xs = np.linspace(lo, hi, 721)
-        fv = np.array([_force(fs, [x])[0] for x in xs])
+        fv = np.array([Q[0] for Q in _forces(fs, [[x] for x in xs])])
         scale = np.max(np.abs(fv)) + 1e-300
         for i in range(len(xs) - 1):
             if fv[i] == 0:
@@ -57,8 +69,8 @@ def equilibria(ms: System, fs: System, starts: int | None = None) -> list[list]:
     else:
         per_axis = starts or {2: 10, 3: 5}.get(n, 3)
         grids = [np.linspace(lo, hi, per_axis + (0 if per else 1), endpoint=not per) for lo, hi, per in b]
-        for start in itertools.product(*grids):
-            sol = optimize.root(lambda q: _force(fs, q), np.array(start), method="hybr", options={"xtol": 1e-12})
+        starts = [np.array(start) for start in itertools.product(*grids)]
+        for sol in newton_runs(lambda q: _force(fs, q), lambda qs: _forces(fs, qs), starts):
             if sol.success:
                 cands.append(sol.x)
     unique: list[np.ndarray] = []
