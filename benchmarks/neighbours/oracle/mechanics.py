@@ -215,7 +215,19 @@ class System:
         return out
 
     def partial_velocities(self, q, t):
-        """Per coordinate k, per body: (∂r/∂q_k, W_k)."""
+        """Per coordinate k, per body: (∂r/∂q_k, W_k). In floats the last state's are kept:
+        the accelerations ask at one state for M and for the residual (a simulation's
+        right-hand side, twice the same differences)."""
+        key = (tuple(q), t)
+        last = self.__dict__.get("_last_partial_velocities")
+        if self.ns is FLOAT and last is not None and last[0] == key:
+            return last[1]
+        out = self._partial_velocities(q, t)
+        if self.ns is FLOAT:
+            self._last_partial_velocities = (key, out)
+        return out
+
+    def _partial_velocities(self, q, t):
         P = self.pose(q, t)
         dPs = self.partials(self.pose, q, t, arrays=True)
         out = []
