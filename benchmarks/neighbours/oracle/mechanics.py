@@ -406,7 +406,16 @@ class System:
         return list(np.linalg.solve(np.array(M, float), -np.array(bias, float)))
 
     def stiffness(self, q, t=0, gyroscopic: bool = True):
-        """K_kj = ∂E_k/∂q_j at rest; G_kj = ∂E_k/∂q̇_j at rest (gyroscopic and damping)."""
+        """K_kj = ∂E_k/∂q_j at rest; G_kj = ∂E_k/∂q̇_j at rest (gyroscopic and damping).
+        Kept per state (the callers read them): an equilibrium's Hessian and its stability
+        ask at the same q, each at 16 n² potentials in 40 digits."""
+        memo = self.__dict__.setdefault("_stiffness_memo", {})
+        key = (tuple(q), t, gyroscopic)
+        if key not in memo:
+            memo[key] = self._stiffness(q, t, gyroscopic)
+        return memo[key]
+
+    def _stiffness(self, q, t, gyroscopic: bool):
         zero = [self.zero] * self.n
         cols = self.partials(lambda qq, tt: np.array(self.residual(qq, zero, zero, tt), dtype=object), q, t)
         K = [[cols[j][k] for j in range(self.n)] for k in range(self.n)]
