@@ -12,10 +12,22 @@ import threading
 from collections.abc import Callable
 
 import numpy as np
+import scipy
 from scipy import optimize
 
 _OPTIONS = {"xtol": 1e-12}
 _AT_ONCE = 128  # runs per gathering: a thread each (a larger grid goes in several)
+
+
+def _reentrant() -> bool:
+    """Whether scipy's hybrd can run in several threads at once: from scipy 1.15 MINPACK
+    is C code with its state per call; the Fortran wrapper before it kept the Python
+    callback in a global, so threads would answer each other's calls (one by one there)."""
+    major, minor = (int(x) for x in scipy.__version__.split(".")[:2])
+    return (major, minor) >= (1, 15)
+
+
+_THREADS = _reentrant()
 
 
 class _Abandoned(Exception):
@@ -89,7 +101,7 @@ def newton_runs(force: Callable, forces: Callable[[list], list], starts: list) -
     out: list = []
     for k in range(0, len(starts), _AT_ONCE):
         chunk = starts[k:k + _AT_ONCE]
-        got = _together(forces, chunk)
+        got = _together(forces, chunk) if _THREADS else None
         if got is None:
             got = [optimize.root(force, s, method="hybr", options=_OPTIONS) for s in chunk]
         out += got
