@@ -28,7 +28,7 @@ PROBLEMS = sorted(p for p in ROOT.glob("*/*.yaml") if not p.name.endswith(".expe
 # by a contact whose placement has not been written by hand in from_problem.PLACED.
 UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-euler-angles", "p2-rod-impact",
               "p3-rolling-ring", "p5-accelerated-pendulum", "heavy-top", "rolling-coin", "rolling-cone",
-              "rod-on-turning-shaft", "rod-on-turning-arm", "gyroscope-gimbal", "sleeping-top", "hanging-top", "rod-conical-pendulum",
+              "rod-on-turning-shaft", "disk-pinned-on-shaft", "rod-on-turning-arm", "gyroscope-gimbal", "sleeping-top", "hanging-top", "rod-conical-pendulum",
               "disk-on-tilted-axle-nutation", "plate-on-turning-shaft",
               # applied loads
               "cylinder-pulled", "disk-pulled-up-incline", "motor-on-pendulum", "rod-follower-force",
