@@ -177,7 +177,18 @@ def descending(poly: sp.Poly, variable: sp.Symbol | None = None) -> Terms:
     exam writes a characteristic equation: 25/48 μ² − 37/24 μ + 1, −3/2 m (R − r)² λ +
     g m (R − r); in ``variable`` (κ) where the polynomial's own is a stand-in."""
     x = variable if variable is not None else poly.gens[0]
-    return Terms(tuple(Product(factored(c, bracketed=k > 0), (x**k,) if k else ()) for (k,), c in poly.terms()))
+    return Terms(tuple(Product(factored(_over_one_denominator(c), bracketed=k > 0), (x**k,) if k else ())
+                       for (k,), c in poly.terms()))
+
+
+def _over_one_denominator(coefficient: sp.Expr) -> sp.Expr:
+    """A coefficient whose terms share a denominator (the polynomial's expansion divides
+    each term of K by 2 (4a² + d²)^(3/2) written out) as one fraction, where that is
+    shorter; as it is otherwise."""
+    if not coefficient.is_Add:
+        return coefficient
+    joined = sp.together(coefficient)
+    return joined if sp.count_ops(joined) < sp.count_ops(coefficient) else coefficient
 
 
 SCENE_BASIS = (sp.Symbol("e_x"), sp.Symbol("e_y"), sp.Symbol("e_z"))  # the scene's axes, eₓ, e_y, e_z
