@@ -282,7 +282,7 @@ def same_placement(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     left = phi.xreplace(dict(a))
     fixed = {q: v for q, v in b.items() if q not in free}
     right = phi.xreplace(fixed)
-    if _apart_off_the_reals(model, left, right, free):
+    if not _real_points(model, a, b) and _apart_off_the_reals(model, left, right, free):
         return False
     difference = [tidy_fraction(sp.expand_trig(x)) for x in (left - right)]
     if not free:
@@ -302,6 +302,12 @@ def _clearly_apart(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.S
     if left is None or right is None:
         return False
     return clearly_different(entries, model.q, left, right, _float_sample(model))
+
+
+def _real_points(model: Model, a: Mapping[sp.Symbol, sp.Expr], b: Mapping[sp.Symbol, sp.Expr]) -> bool:
+    """Are both roots real points at the sampled parameters (``_clearly_apart`` has
+    screened them in floats already)?"""
+    return _float_point(model, a) is not None and _float_point(model, b) is not None
 
 
 def _apart_off_the_reals(model: Model, left: sp.Matrix, right: sp.Matrix, free: tuple[sp.Symbol, ...]) -> bool:
