@@ -21,7 +21,8 @@ SEED = PROBLEMS / "sg2150-2015-10-29"
 @functools.lru_cache(maxsize=None)
 def solved_file(path: Path):
     """(model, report) of a problem file, solved once per test process: the golden
-    answers, the JSON read-back and the audit each check every file in problems/, and a
+    answers, the JSON read-back, the audit and the LaTeX compile each check every file
+    in problems/, and a
     process that runs two of them for one file solves it once (they are collected side
     by side, ``pytest_collection_modifyitems``, and pytest-xdist's worksteal hands each
     process a run of neighbouring tests). The report is read, never changed (frozen
@@ -239,8 +240,8 @@ questions:
 
 
 def pytest_collection_modifyitems(config, items) -> None:
-    """Each problem file's checks side by side (its golden answers, JSON read-back and
-    audit, each in its own module), at the place of the first: pytest-xdist's worksteal
+    """Each problem file's checks side by side (its golden answers, JSON read-back, audit
+    and LaTeX compile, each in its own module), at the place of the first: pytest-xdist's worksteal
     (pyproject.toml) gives each process a contiguous run of tests and takes from the end
     of one only when another runs dry, so a file is solved once in the suite, not once
     in each process its checks happen to reach (``solved_file``: 2 × 110 processor
