@@ -223,10 +223,13 @@ class NumericEquilibria:
     kinks: tuple[str, ...] = ()  # roots dropped where a spring has zero length: why, one line each
 
 
+@memoized
 def find_numeric(model: Model) -> NumericEquilibria:
     """In one coordinate, the sign-change scan (``scan``); in more, Newton from every
     start (see the module's docstring). Each root is wrapped, replaced by its continuum's
-    representative if it lies on one, classified against the Hessian's scale, and merged."""
+    representative if it lies on one, classified against the Hessian's scale, and merged.
+    Once per model: the equilibria question and the modes about the stable one ask for
+    the same search (a particle on a spring on an incline: 5 s each)."""
     g, H = compiled_gradient(model)
     scale = gradient_scale(model, g)
     tol, curvature = ROOT_TOL * scale, hessian_scale(model, H)
