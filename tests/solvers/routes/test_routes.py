@@ -35,10 +35,11 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
 from rbdsolve.problem.schema import QuestionKind
+from rbdsolve.report.steps import Route
 from rbdsolve.solvers import Options, RouteChoice, partial_by_structure, solve_file, solve_problem, solve_question
 from rbdsolve.solvers.routes.budget import OutOfTime, available
 
-from conftest import PROBLEMS, SIMPLE_PENDULUM, spin
+from conftest import PROBLEMS, SIMPLE_PENDULUM, solved_file, spin
 
 SAMPLES = [Fraction(13, 10), Fraction(7, 10), Fraction(17, 10), Fraction(11, 10), Fraction(9, 10), Fraction(23, 10)]
 KINDS = {QuestionKind.MODES, QuestionKind.EQUILIBRIA, QuestionKind.INERTIA, QuestionKind.STEADY_SPIN,
@@ -75,11 +76,20 @@ def _with_values(problem):
 def _both(path):
     """Both routes' solutions, question by question; None for the exact route where the
     structure says it would answer only in part (``auto`` never runs it there: forced,
-    a nutation about a steady rate with nested radicals spends its whole budget)."""
+    a nutation about a steady rate with nested radicals spends its whole budget). Where
+    the file gives every value, the model and its exact answers are the golden test's
+    (``solved_file``, the same values: solved once in the process, not twice)."""
     problem = load_file(path)
-    model = _with_values(problem)
-    exact = [None if partial_by_structure(q, model) else solve_question(q, model, Options(route=RouteChoice.EXACT))
-             for q in problem.questions]
+    if all(p.name in dict(problem.values) for p in problem.parameters):
+        model, report = solved_file(path)
+        known = list(report.solutions)
+        assert len(known) == len(problem.questions)
+    else:
+        model, known = _with_values(problem), [None] * len(problem.questions)
+    exact = [None if partial_by_structure(q, model) else
+             s if s is not None and s.route is Route.EXACT and s.error is None else
+             solve_question(q, model, Options(route=RouteChoice.EXACT))
+             for q, s in zip(problem.questions, known)]
     numeric = solve_problem(model, Options(route=RouteChoice.NUMERIC))
     return problem, model, exact, numeric
 
