@@ -135,6 +135,11 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
         try:
             return _solved(squared, p)  # its extra roots are dropped where the factor is not zero (the samples)
         except NotImplementedError:
+            if sp.degree(squared, p) > 2:
+                # the roots are a cubic's or quartic's, the radical's or the square's alike: no
+                # condition a reader can use, and sympy's solve spent minutes finding it (a plate
+                # on a spring of natural length, its anchor's height h: 51 s and on)
+                raise
             return sp.solve(factor, p)
     in_sine_or_cosine = _in_sine_or_cosine(factor, p)
     if in_sine_or_cosine is None:

@@ -114,6 +114,31 @@ def test_a_factor_with_the_parameter_inside_an_absolute_value_is_not_solved(monk
     assert condition_roots.parameter_roots(f, c, {}, model) is None
 
 
+def test_a_radical_whose_square_is_a_quartic_is_left_undecided_without_solve(monkeypatch) -> None:
+    """A plate pendulum on a spring of natural length L₀ from a point at height h above
+    the pivot, its stiffness at the hanging position ∝ 2 L₀ h k + (g m − 2 h k) √X with
+    X = 2a² + 2√2 a h + h²: squared, (2 L₀ h k)² − (g m − 2 h k)² X is a quartic in h
+    (degree 2 from each factor, by hand), whose roots need Ferrari's formula, the
+    radical's as the square's. Undecided (None), and sympy's solve, which took minutes
+    on it, is never called."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+    from rbdsolve.solvers.conditions import condition_roots
+
+    def never(*args, **kwargs):
+        raise AssertionError(f"sympy's solve called on {args}")
+
+    model = build_model(load_text(SCENE.replace("{m: mass, a: length, b: length, c: length}",
+                                                "{m: mass, a: length, b: length, c: length, g: gravity, "
+                                                "k: stiffness, h: length}")))
+    m, a, b, g, k, h = (model.symbols.parameters[n] for n in "mabgkh")
+    X = 2 * a**2 + 2 * sp.sqrt(2) * a * h + h**2
+    f = sp.sqrt(2) * a * (2 * b * h * k + g * m * sp.sqrt(X) - 2 * h * k * sp.sqrt(X))
+    assert sp.degree(_squared_once(f, h), h) == 4
+    monkeypatch.setattr(condition_roots.sp, "solve", never)
+    assert condition_roots.parameter_roots(f, h, {}, model) is None
+
+
 def _scanned_roots(f, low: float = -math.pi, high: float = math.pi) -> list[float]:
     """The roots of f(θ) on (low, high], by its sign changes on a fine grid and brentq:
     the independent count for the trigonometric cases below."""
