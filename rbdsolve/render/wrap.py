@@ -9,6 +9,7 @@ from __future__ import annotations
 
 OPERATORS = (" + ", " − ", " = ", " ⇒ ", " < ", " > ", " ≤ ", " ≥ ")
 OPEN, CLOSE = "([{", ")]}"
+_LONGEST_OPERATOR = max(map(len, OPERATORS))
 
 
 def break_points(text: str, entries: bool = False) -> list[tuple[int, int]]:
@@ -99,15 +100,18 @@ def _cut(rest: str, room: int, next_room: int, entries: bool) -> int | None:
     Where no operator break fills half the line and what follows it would not fit the
     next line either, after a comma too (a long vector's entries); the first break
     there is if none fits; None if there is none."""
-    points = break_points(rest, entries)
-    fitting = [(p, d) for p, d in points if 0 < p <= room]
+    # the breaks that fit are read from the line's room alone (and an operator's length
+    # past it): reading the whole rest for every line made a long expression's wrapping
+    # quadratic (a four-rod chain's accelerations: a quarter of its run in printing)
+    head = rest[:room + _LONGEST_OPERATOR]
+    fitting = [(p, d) for p, d in break_points(head, entries) if 0 < p <= room]
     best = _best(fitting, room)
     if not entries and not any(p >= room // 2 for p, _ in fitting) and len(rest) - (best or 0) > next_room:
-        fitting += [(p, d) for p, d in break_points(rest, entries=True) if 0 < p <= room and rest[p - 1] == ","]
+        fitting += [(p, d) for p, d in break_points(head, entries=True) if 0 < p <= room and rest[p - 1] == ","]
         best = _best(fitting, room)
     if best is not None:
         return best
-    later = [p for p, _ in points if p > 0]
+    later = [p for p, _ in break_points(rest, entries) if p > 0]
     return later[0] if later else None
 
 

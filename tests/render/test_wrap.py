@@ -86,3 +86,22 @@ def test_a_long_matrix_after_much_else_starts_its_own_line() -> None:
     assert [line.index("[") for line in lines[2:] if line.lstrip().startswith("[")] == [column] * 4
     assert all(len(line) <= 90 for line in lines)
     assert " ".join(line.strip() for line in lines) == text
+
+
+def test_each_line_reads_only_its_own_room(monkeypatch) -> None:
+    """A long sum wraps in time linear in its length: each line's breaks are read from
+    the line's room (and an operator's length past it), not from the whole rest, which
+    made a four-rod chain's accelerations quadratic. The lines are those of the whole
+    rest's breaks: every cut is the outermost break that fits, so each line but the last
+    ends just before an operator and fits the width."""
+    from rbdsolve.render import wrap
+
+    read: list[int] = []
+    real = wrap.break_points
+    monkeypatch.setattr(wrap, "break_points", lambda text, entries=False: read.append(len(text)) or real(text, entries))
+    text = "x = " + " + ".join(f"a{i} (b{i} − c{i})" for i in range(2000))
+    lines = wrap_math(text, 80)
+    assert sum(read) <= 4 * len(text)  # the whole rest each time: ~len(text)²/(2 · 80)
+    assert all(len(line) <= 80 for line in lines)
+    assert all(nxt.lstrip().startswith("+ ") for nxt in lines[1:])
+    assert "".join(line.strip() + " " for line in lines).strip() == text
