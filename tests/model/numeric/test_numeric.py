@@ -3,7 +3,8 @@
 * Every problem in problems/ with coordinates: M(q), ∂V/∂q and ∂²V/∂q² at random
   configurations against the symbolic model (build_model: M = Σ m J_vᵀ J_v + J_ωᵀ J_G J_ω
   from its bodies' Jacobians, and its V differentiated by mpmath.diff at 90 digits),
-  evaluated to 60 digits: a code path independent of the jets. Float64 to 1e-12, MP50 to 1e-40 (norm-wise relative).
+  evaluated to 60 digits: a code path independent of the jets. Float64 to 1e-12, MP50
+  to 1e-40 (norm-wise relative).
 * A scene that uses every allowed function, vector function, power, spring and shape
   feature, against the same symbolic model.
 * An n-link chain against hand formulas at q = 0 (point masses and rods).
