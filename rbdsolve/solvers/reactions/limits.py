@@ -16,6 +16,7 @@ while the friction it needs is within reach, |F| ≤ μ N. So
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -138,7 +139,7 @@ def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     pushes only for α ≤ π/2, where tan α ≥ 0, so μ ≥ tan(α)/3)."""
     ratio = clean_fraction(F / N)
     if sp.count_ops(ratio) <= SIMPLIFY_OPS:  # a longer one (a slab rolling on a drum): minutes of trigsimp
-        ratio = sp.simplify(ratio)
+        ratio = _simplified(ratio)
     sign = sign_of(ratio, model.decided_by)
     if isinstance(sign, Undecided):
         pushes = _nonnegative(N, model).condition if not N.has(*model.q) else sp.true
@@ -148,6 +149,13 @@ def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
             return -ratio
         return sp.Abs(ratio)
     return ratio if sign >= 0 else -ratio
+
+
+@functools.lru_cache(maxsize=256)
+def _simplified(ratio: sp.Expr) -> sp.Expr:
+    """sympy's simplify, once per ratio: a rolling contact's least μ is asked at the
+    state and again by its check (a quarter disk released from rest: 0.3 s each time)."""
+    return sp.simplify(ratio)
 
 
 def _on(where: sp.Basic, relation: sp.Basic) -> bool:
