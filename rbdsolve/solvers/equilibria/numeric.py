@@ -73,7 +73,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)
     answers = NumericEquilibriaAnswers(tuple(equilibria), found.starts, singular)
     warnings = (search_claim(model, found), *_range_warnings(model, found), *_continuum_warnings(found, names),
-                *contact_span.warnings(list(found.off_edge)), *found.kinks, *spin_warnings(model),
+                *contact_span.warnings(list(found.off_edge)), *found.dropped, *spin_warnings(model),
                 *(w for e in equilibria for w in _pulling(model, e, names)))
     if singular:
         warnings += (f"{len(singular)} solution(s) of ∂V/∂q = 0 lie at singular points of the coordinates and are "
@@ -161,7 +161,8 @@ def _never_balanced(model: Model, found) -> Solution:
 
     never = never_balanced(model, gradient(model))
     if never is None:
-        raise UnsolvedError(f"{searched(model, found)} found no equilibrium")
+        why = "".join(f"; {d}" for d in found.dropped)  # a root past a spring's zero length, say
+        raise UnsolvedError(f"{searched(model, found)} found no equilibrium{why}")
     answers = NumericEquilibriaAnswers((), found.starts)
     return Solution("equilibria", Route.NUMERIC, answers, (*numeric_steps(answers, model), never),
                     error_estimate=0.0)  # (∂V/∂q is a number: nothing to estimate)

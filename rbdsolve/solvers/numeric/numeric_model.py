@@ -50,7 +50,7 @@ import numpy as np
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import unicode_name
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
 from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
@@ -220,7 +220,7 @@ class NumericEquilibria:
     sampling: str  # how the starts were placed: a grid, a fixed pseudo-random sample, or the scan
     unresolved: tuple[tuple[float, float], ...] = ()  # intervals the scan could not settle
     off_edge: tuple = ()  # contact_span.OffEdge's: roots where a contact point would leave its edge
-    kinks: tuple[str, ...] = ()  # roots dropped where a spring has zero length: why, one line each
+    dropped: tuple[str, ...] = ()  # roots dropped where a spring's V is not its own (zero length, past it): why
 
 
 @memoized
@@ -248,7 +248,9 @@ def find_numeric(model: Model) -> NumericEquilibria:
             roots.append(found)
     kept, off = _on_edges(model, roots)
     kept, kinks = _off_kinks(model, kept)
-    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off, kinks)
+    kept, past = _on_drawn_sides(model, kept)
+    return NumericEquilibria(tuple(sorted(kept, key=lambda r: r.at)), len(starts), sampling, unresolved, off,
+                             kinks + past)
 
 
 KINK_TOL = 1e-9  # |u| at a root, relative to its terms' size, that counts as a spring of zero length
@@ -275,6 +277,39 @@ def _off_kinks(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[str, 
         else:
             kept.append(r)
     return kept, tuple(dropped)
+
+
+def _on_drawn_sides(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[str, ...]]:
+    """Where ∂V/∂q is compiled from the symbolic V (no numeric scene: a turning frame,
+    applied loads), the roots where every spring length |u| written s·u has s·u ≥ 0
+    (``held_sides``, as the exact route's existence asks), and why each other one is
+    not an equilibrium: there V, written for s·u ≥ 0, is not the spring's. A bead on a
+    turning rod, its spring's length |a + x| written a + x, with m Ω² > k: x = m Ω² a/
+    (k − m Ω²) solves the compiled ∂V/∂q = 0 with a + x < 0, the bead past the axis,
+    and was given as an equilibrium (the numeric scene keeps |u| itself)."""
+    held = [(s.name, x.sign * x.inside) for s in model.springs for x in s.lengths if x.sign is not None]
+    if not held or numeric_scene(model) is not None:
+        return roots, ()
+    kept, dropped = [], []
+    for r in roots:
+        at = dict(zip(model.q, r.at))
+        past = [(name, u) for name, u in held if _negative_at(u.xreplace(dict(model.values)), at)]
+        if past:
+            where = ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), r.at))
+            name, u = past[0]
+            dropped.append(f"{where} solves ∂V/∂q = 0 only with spring '{name}' past zero length "
+                           f"({to_unicode(model.readable(u))} < 0 there, where V, written for it ≥ 0, is not the "
+                           "spring's); it is not listed")
+        else:
+            kept.append(r)
+    return kept, tuple(dropped)
+
+
+def _negative_at(u: sp.Expr, at: dict) -> bool:
+    """u < 0 at ``at``, beyond rounding relative to its terms' size."""
+    terms = [complex(sp.N(t.xreplace(at), 20)) for t in sp.Add.make_args(sp.expand(u))]
+    value = sum(terms)
+    return value.real < -KINK_TOL * max(sum(abs(t) for t in terms), 1e-300)
 
 
 def _vanishes_at(u: sp.Expr, at: dict) -> bool:
