@@ -14,7 +14,8 @@ with the reason it is what it is (the report prints them):
   travel round a circle is one where ∂V/∂q repeats after a turn (numeric_model.periodic_angles);
 * an angle that is not periodic (declared ``periodic: false``, in the angle of a
   torsional spring, or a contact's travel round a circle, ``along`` it), without a
-  range: ±SEARCH_SCALE π (five turns each way);
+  range: ±SEARCH_SCALE π (five turns each way), or wider where a torsional spring holds
+  the one coordinate and the bound of its equilibria is beyond (``_held_by_torsion``);
 * anything else (a length, or a coordinate whose kind is not known): ±SEARCH_SCALE
   times the scene's largest length (the largest value of a parameter whose dimension
   is a length), ±SEARCH_SCALE when no length has a value. A mass of 1000 kg does not
@@ -71,13 +72,51 @@ def _interval(c, q: sp.Symbol, periodic: bool, model: Model) -> Interval:
     if periodic:
         return Interval(-math.pi, math.pi, "one turn")
     if c.kind is CoordinateKind.ANGLE or q in _torsion_angles(model) or c.name in _round_a_circle(model):
-        return Interval(-SEARCH_SCALE * math.pi, SEARCH_SCALE * math.pi,
-                        f"±{SEARCH_SCALE:g}π: an angle that winds up, with no declared range")
+        reach = SEARCH_SCALE * math.pi
+        held = _held_by_torsion(model, q)
+        if held is not None and (held[0] < -reach or held[1] > reach):
+            low, high = held
+            return Interval(low, high, "wide enough for every equilibrium: only there can the torsional springs' "
+                                       "moment balance the other loads at their largest")
+        return Interval(-reach, reach, f"±{SEARCH_SCALE:g}π: an angle that winds up, with no declared range")
     name, length = _largest_length(model)
     if name is None:
         return Interval(-SEARCH_SCALE, SEARCH_SCALE, f"±{SEARCH_SCALE:g}: no length of the scene has a value")
     reach = SEARCH_SCALE * length
     return Interval(-reach, reach, f"±{SEARCH_SCALE:g} {name}; {name} = {length:g}, the scene's largest length")
+
+
+def _held_by_torsion(model: Model, q: sp.Symbol) -> tuple[float, float] | None:
+    """Where every equilibrium of a one-coordinate scene without frames lies, when
+    ∂V/∂q = c q + b + Σ aᵢ Tᵢ(q) with c > 0 (torsional springs) and each Tᵢ a product of
+    sines and cosines (|Tᵢ| ≤ 1): there c q + b = −Σ aᵢ Tᵢ, so |q + b/c| ≤ Σ |aᵢ|/c.
+    A weak spring on a heavy pendulum (c = 0.5 N m/rad, m g d = 39 N m) has equilibria
+    out to 78 rad, past the ±10π a winding angle is searched over; None where ∂V/∂q is
+    not of that form."""
+    from rbdsolve.model.energies.energy import potential_energy
+
+    if len(model.q) != 1 or model.problem.frames:
+        return None
+    gradient = sp.expand(sp.diff(potential_energy(model).total.xreplace(dict(model.values)), q))
+    c = b = bound = 0.0
+    for term in sp.Add.make_args(gradient):
+        factor, rest = term.as_independent(q, as_Add=False)
+        if factor.free_symbols:
+            return None
+        if rest == 1:
+            b += float(factor)
+        elif rest == q:
+            c += float(factor)
+        elif all(isinstance(p, (sp.sin, sp.cos)) or (p.is_Pow and isinstance(p.base, (sp.sin, sp.cos))
+                                                        and p.exp.is_positive and p.exp.is_integer)
+                 for p in sp.Mul.make_args(rest)):
+            bound += abs(float(factor))
+        else:
+            return None
+    if c <= 0:
+        return None
+    centre, half = -b / c, bound / c
+    return centre - 1.01 * half - 1.0, centre + 1.01 * half + 1.0  # a margin past the bound, for the scan's cells
 
 
 def _contact_span(model: Model, q: sp.Symbol) -> Interval | None:
