@@ -177,7 +177,10 @@ def test_one_budget_caps_the_whole_run(monkeypatch) -> None:
     start = time.process_time()
     report = solve_file(load_text(text, "slow.yaml"), Options(budget=2.0))
     spent = time.process_time() - start
-    assert 1.9 <= spent < 2.0 + 0.4, spent  # the rings' latency, far below a second stage's 2 s
+    # below one more stage's whole 2 s (4 s and more), and far from the work after the
+    # budget (the rings' latency, the report: 0.1–0.3 s quiet, 0.64 s once with both cores
+    # busy with two other test runs, where processor time stretches too)
+    assert 1.9 <= spent < 2.0 + 1.5, spent
     assert [s.error.split(" of the ")[-1] for s in report.solutions] == ["2 s budget (--budget to change it)"] * 3
 
 
