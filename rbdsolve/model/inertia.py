@@ -103,18 +103,18 @@ def _segment(m: sp.Expr, r: sp.Expr, h: sp.Expr, alpha: sp.Expr) -> MassProperti
     (∫ sec⁴ψ dψ = tan ψ + tan³ψ/3; checked against sympy's integration in
     tests/model/test_shape_library.py). So G is ȳ = 2 r sin³α/(3(α − sin α cos α)) from O,
     J_O = m diag(⟨y²⟩ + h²/12, ⟨x²⟩ + h²/12, ⟨x²⟩ + ⟨y²⟩) with ⟨·⟩ = ∫ · dA/A, and
-    J_G = J_O − m(|d|² 1 − d dᵀ) = J_O − m ȳ² diag(1, 0, 1) (d = ȳ e_y). Each moment
-    over one denominator with the area's power kept whole; not simplified: sympy's simplify took 0.5 s at α = π/3
-    and 3 s with α left open, in every model with the shape."""
+    J_G = J_O − m(|d|² 1 − d dᵀ), each moment over one denominator with the area's
+    power kept whole; not simplified: sympy's simplify took 0.5 s at α = π/3 and 3 s with
+    α left open, in every model with the shape."""
     s, c = sp.sin(alpha), sp.cos(alpha)
     area = sp.Dummy("A", positive=True)  # A/r² = α − sin α cos α, kept whole until the end
     xx = r**2 * (alpha - s * c - sp.Rational(2, 3) * s**3 * c) / (4 * area)
     rr = r**2 * (alpha - s * c**3 - s**3 * c / 3) / (2 * area)
     yy = rr - xx
-    y_bar = 2 * r * s**3 / (3 * area)
-    moments = (m * (yy + h**2 / 12 - y_bar**2), m * (xx + h**2 / 12), m * (rr - y_bar**2))
+    d = sp.Matrix([0, 2 * r * s**3 / (3 * area), 0])
+    J_O = sp.diag(m * (yy + h**2 / 12), m * (xx + h**2 / 12), m * rr)
     at = {area: sp.together(alpha - s * c)}
-    return MassProperties(m, sp.Matrix([0, y_bar.xreplace(at), 0]), sp.diag(*(_over_area(J, at) for J in moments)))
+    return MassProperties(m, d.xreplace(at), (J_O - parallel_axis(m, d)).applyfunc(lambda J: _over_area(J, at)))
 
 
 def _over_area(J: sp.Expr, at: dict) -> sp.Expr:

@@ -271,8 +271,7 @@ def _off_kinks(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[str, 
         at = dict(zip(model.q, r.at))
         zero = [name for name, u in held if _vanishes_at(u, at)]
         if zero:
-            where = ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), r.at))
-            dropped.append(f"{where} solves ∂V/∂q = 0 only through sign(0) = 0: spring '{zero[0]}' has zero "
+            dropped.append(f"{_shown_at(model, r)} solves ∂V/∂q = 0 only through sign(0) = 0: spring '{zero[0]}' has zero "
                            "length there, where V has a kink and no derivative; it is not listed")
         else:
             kept.append(r)
@@ -295,9 +294,8 @@ def _on_drawn_sides(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[
         at = dict(zip(model.q, r.at))
         past = [(name, u) for name, u in held if _negative_at(u.xreplace(dict(model.values)), at)]
         if past:
-            where = ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), r.at))
             name, u = past[0]
-            dropped.append(f"{where} solves ∂V/∂q = 0 only with spring '{name}' past zero length "
+            dropped.append(f"{_shown_at(model, r)} solves ∂V/∂q = 0 only with spring '{name}' past zero length "
                            f"({to_unicode(model.readable(u))} < 0 there, where V, written for it ≥ 0, is not the "
                            "spring's); it is not listed")
         else:
@@ -305,16 +303,26 @@ def _on_drawn_sides(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[
     return kept, tuple(dropped)
 
 
+def _shown_at(model: Model, root: Root) -> str:
+    """'θ = 0.5, x = -1.2': where a dropped root lies, for its reason."""
+    return ", ".join(f"{unicode_name(n)} = {float(v):.6g}" for n, v in zip(model.coordinate_names(), root.at))
+
+
 def _negative_at(u: sp.Expr, at: dict) -> bool:
     """u < 0 at ``at``, beyond rounding relative to its terms' size."""
-    terms = [complex(sp.N(t.xreplace(at), 20)) for t in sp.Add.make_args(sp.expand(u))]
-    value = sum(terms)
-    return value.real < -KINK_TOL * max(sum(abs(t) for t in terms), 1e-300)
+    value, size = _summed_at(u, at)
+    return value.real < -KINK_TOL * size
 
 
 def _vanishes_at(u: sp.Expr, at: dict) -> bool:
+    value, size = _summed_at(u, at)
+    return abs(value) <= KINK_TOL * size
+
+
+def _summed_at(u: sp.Expr, at: dict) -> tuple[complex, float]:
+    """u at ``at`` (20 digits, term by term) and the size of its terms (their |·| summed)."""
     terms = [complex(sp.N(t.xreplace(at), 20)) for t in sp.Add.make_args(sp.expand(u))]
-    return abs(sum(terms)) <= KINK_TOL * max(sum(abs(t) for t in terms), 1e-300)
+    return sum(terms), max(sum(abs(t) for t in terms), 1e-300)
 
 
 def _on_edges(model: Model, roots: list[Root]) -> tuple[list[Root], tuple]:

@@ -34,6 +34,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import potential_energy
 from rbdsolve.problem.quantities.quantity import LENGTH
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.problem.surfaces import Measure, SurfaceKind
@@ -93,8 +94,6 @@ def _held_by_torsion(model: Model, q: sp.Symbol) -> tuple[float, float] | None:
     A weak spring on a heavy pendulum (c = 0.5 N m/rad, m g d = 39 N m) has equilibria
     out to 78 rad, past the ±10π a winding angle is searched over; None where ∂V/∂q is
     not of that form."""
-    from rbdsolve.model.energies.energy import potential_energy
-
     if len(model.q) != 1 or model.problem.frames:
         return None
     gradient = sp.expand(sp.diff(potential_energy(model).total.xreplace(dict(model.values)), q))
