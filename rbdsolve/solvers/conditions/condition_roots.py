@@ -123,7 +123,12 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
     without solve's checks of each root, which cost a third of a second there and
     which the samples below make again; one of higher degree factor by factor
     (``_factor_by_factor``); a polynomial in sin p or cos p the same way in them
-    (``_in_sine_or_cosine``); anything else by sympy's solve."""
+    (``_in_sine_or_cosine``); a radical √X, times factors free of p, by X's (a
+    half-disk's push on an incline, R g m √(16 − 9π² sin²β): sympy's solve took a quarter
+    of a second for what sin β = ±4/(3π) gives); anything else by sympy's solve."""
+    radicand = _lone_radicand(factor, p)
+    if radicand is not None:
+        return _solved(radicand, p)
     if factor.is_polynomial(p):
         polynomial = sp.Poly(factor, p)
         if polynomial.degree() > 2:
@@ -155,6 +160,14 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
 
 
 _COSINE, _SINE, _ROOT = sp.Dummy("c"), sp.Dummy("s"), sp.Dummy("r")
+
+
+def _lone_radicand(factor: sp.Expr, p: sp.Symbol) -> sp.Expr | None:
+    """X where ``factor`` is c·√X with c free of p (√X = 0 exactly where X = 0); else None."""
+    parts = [f for f in sp.Mul.make_args(factor) if f.has(p)]
+    if len(parts) == 1 and isinstance(parts[0], sp.Pow) and parts[0].exp == sp.S.Half:
+        return parts[0].base
+    return None
 
 
 def _squared_once(factor: sp.Expr, p: sp.Symbol) -> sp.Expr | None:

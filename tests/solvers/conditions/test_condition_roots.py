@@ -227,3 +227,23 @@ def test_two_radicals_in_the_parameter_are_not_solved() -> None:
     F = sp.sqrt(h**2 + 2 * h * l + l**2 - l) - sp.sqrt(h**2 + h * l + l**2) + l
     assert _under_two_radicals(F, l) and _under_two_radicals(F, h)
     assert not _under_two_radicals(sp.sqrt(h**2 + h * l + l**2) + l, l)
+
+
+def test_a_radical_times_constants_has_its_radicands_roots_without_solve(monkeypatch) -> None:
+    """R g m √(16 − 9π² sin²β) (a half-disk's push on an incline, problems/contacts/
+    half-disk-on-incline.yaml) vanishes where 16 − 9π² sin²β does: sin β = ±4/(3π), by
+    hand, i.e. β = ±0.43760 and π ∓ 0.43760 in (−π, π]; the scan of the radicand finds
+    the same. Found from the radicand, without sympy's solve."""
+    from rbdsolve.solvers.conditions import condition_roots
+
+    def never(*args, **kwargs):
+        raise AssertionError(f"sympy's solve called on {args}")
+
+    monkeypatch.setattr(condition_roots.sp, "solve", never)
+    R, g, m, beta = sp.symbols("R g m beta", positive=True)
+    factor = R * g * m * sp.sqrt(16 - 9 * sp.pi**2 * sp.sin(beta) ** 2)
+    _roots_in.cache_clear()
+    found = _in_the_turn(condition_roots._solved(factor, beta))
+    s = math.asin(4 / (3 * math.pi))
+    assert found == pytest.approx(sorted([s, -s, math.pi - s, -(math.pi - s)]), abs=1e-12)
+    assert found == pytest.approx(_scanned_roots(lambda b: 16 - 9 * math.pi**2 * math.sin(b) ** 2), abs=1e-9)
