@@ -29,26 +29,21 @@ are turned into it by whole turns (θ < π/2 for a coin's tilt).
 
 from __future__ import annotations
 
+import cmath
 import random
 from dataclasses import dataclass, replace
-from fractions import Fraction
 from typing import Iterable
 
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.problem.quantities.dimensions import STIFFNESS, TORQUE
-from rbdsolve.problem.quantities.quantity import LENGTH, MASS, Dimension
 from rbdsolve.form.tidy import square_root, tidy, tidy_fraction
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
 from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters, parameter_roots
+from rbdsolve.solvers.conditions.parameter_order import candidates
 from rbdsolve.solvers.conditions.signs import sign_of, symbolic_sign
-
-RATE_WORDS = ("omega", "spin", "rate", "speed", "angular")  # exams ask "above which rate"
-STIFFNESS_WORDS = ("stiff", "spring", "torsion")  # then "how stiff a spring"
-RATE = Dimension(time=Fraction(-1))
 
 
 @dataclass(frozen=True)
@@ -437,41 +432,6 @@ def _finite_at(f: sp.Expr, critical: Critical) -> bool:
     return not simplifies_to_zero(denominator.xreplace({critical.parameter: critical.value}))
 
 
-def asked(model, question) -> sp.Symbol | None:
-    """The parameter a question's ``for:`` names, as a symbol (None: none named, or no
-    question)."""
-    name = getattr(getattr(question, "options", None), "for_parameter", None)
-    return model.symbols.parameters[name] if name is not None else None
-
-
-def candidates(f: sp.Expr, model, angles: dict, first: sp.Symbol | None = None) -> list[sp.Symbol]:
-    """The positive parameters and the angles in f, the one the question is about
-    first: ``first`` (a question's ``for:``), then the problem's only parameter without
-    a value, then those without a value before those with one (a coin rolling round a
-    circle of radius a left open: a > a_c, not r < r_c with r given), then by kind
-    (``_kind``), each kind in the file's order."""
-    order = [model.symbols.parameters[p.name] for p in model.problem.parameters]
-    held = [p for p in order if p in f.free_symbols and (p.is_positive or p in angles)]
-    open_ = [p for p in order if p not in model.values]
-    lone = open_[0] if len(open_) == 1 else None
-    kinds = {model.symbols.parameters[p.name]: _kind(p, model.problem.dimension_map())
-             for p in model.problem.parameters}
-    return sorted(held, key=lambda p: (p != first, p != lone, p in model.values, kinds[p]))
-
-
-def _kind(parameter, dimensions: dict) -> int:
-    """0 a rate or a spin, 1 a stiffness, 2 a length, 3 a mass, 4 any other (an
-    acceleration, an angle): by its dimension where the file makes it known, else by
-    its name and description (docs/format.md, "Conditions")."""
-    dimension = dimensions.get(parameter.name)
-    words = f"{parameter.name} {parameter.description}".lower()
-    if dimension == RATE or any(w in words for w in RATE_WORDS):
-        return 0
-    if dimension in (STIFFNESS, TORQUE) or any(w in words for w in STIFFNESS_WORDS):
-        return 1
-    return {LENGTH: 2, MASS: 3}.get(dimension, 4)
-
-
 def sign_on(f: sp.Expr, piece: Piece, model, angles: dict, seed: int = 20) -> int | None:
     """f's sign on a piece: exactly (δ positive), else by agreeing samples (drawn from
     ``seed``).
@@ -499,7 +459,7 @@ def _number(v: sp.Expr) -> complex | None:
         z = complex(sp.N(v, 30))
     except TypeError:
         return None
-    return None if z != z else z
+    return None if cmath.isnan(z) else z
 
 
 def _off_the_reals(z: complex) -> bool:

@@ -41,7 +41,8 @@ from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, 
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import never_balanced, uniform_equilibrium
 from rbdsolve.solvers.equilibria import zero_length
-from rbdsolve.solvers.conditions.conditions import CriticalValue, asked, critical_values, what_decides
+from rbdsolve.solvers.conditions.conditions import CriticalValue, critical_values, what_decides
+from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.equilibria.steps import exact_steps
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings

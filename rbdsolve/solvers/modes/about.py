@@ -22,7 +22,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
-from rbdsolve.solvers.conditions.conditions import asked
+from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.equilibria.exact import Listed, classify_listed, gradient, incomplete, listing

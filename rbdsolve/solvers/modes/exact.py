@@ -50,7 +50,8 @@ from rbdsolve.solvers.modes.answers import (CERTIFIED_DEGREE, EachModesAnswers, 
                                              none_answered, with_amplitude_check)
 from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
-from rbdsolve.solvers.conditions.conditions import asked, critical_values
+from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.lagrange.frames import require_static
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import exact_reason

@@ -42,7 +42,7 @@ from rbdsolve.solvers.routes.labels import labels_for
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots
 from rbdsolve.model.values.values import parameter_sample
-from rbdsolve.solvers.conditions.conditions import asked
+from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.steady_motion.answers import AtSolution, SteadyMotionAnswers, SupportForce
 from rbdsolve.solvers.steady_motion.existence import absent_at_values, with_existence
 from rbdsolve.solvers.steady_motion.balances import (

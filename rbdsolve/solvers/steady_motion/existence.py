@@ -35,8 +35,9 @@ from rbdsolve.form.printers import float_text, to_unicode
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.solvers.conditions.condition_roots import admissible, angle_parameters
-from rbdsolve.solvers.conditions.conditions import (RATE_WORDS, Critical, CriticalValue, critical_values,
-                                                divided_radicands, exists_when, real_where)
+from rbdsolve.solvers.conditions.conditions import (Critical, CriticalValue, critical_values, divided_radicands,
+                                                exists_when, real_where)
+from rbdsolve.solvers.conditions.parameter_order import RATE_WORDS
 from rbdsolve.solvers.conditions.present_conditions import critical_names
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.steady_motion.answers import Branch
@@ -87,7 +88,7 @@ def _where_nonnegative(c: sp.Expr, model: Model, first: sp.Symbol | None = None,
 
 def least_rate(c: sp.Expr, model: Model, first: sp.Symbol | None = None
                ) -> tuple[sp.Basic, tuple[Critical, ...]] | None:
-    """c = A p² + C in a rate p ≥ 0 (a spin, a speed: conditions.RATE_WORDS), A > 0: the
+    """c = A p² + C in a rate p ≥ 0 (a spin, a speed: parameter_order.RATE_WORDS), A > 0: the
     discriminant of a top's precession rates, I₃² s² − 4 (I₁ − I₃) m g h cos θ. Then
 
         c ≥ 0  ⟺  p ≥ p_c = √(−C/A)   where C < 0 (the least spin),
