@@ -167,6 +167,7 @@ def over_sines(value: sp.Expr, values: Iterable[sp.Expr]) -> sp.Expr:
     return value
 
 
+@lru_cache(maxsize=1024)  # each equilibrium's K and each λ about it divide by the same sides
 def _divided(value: sp.Expr, side: sp.Expr) -> sp.Expr:
     """value / side where side's numerator divides value's exactly (as polynomials in
     the parameters), else value as it is."""

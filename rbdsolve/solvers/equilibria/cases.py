@@ -16,6 +16,7 @@ be split stays as before: undetermined, with the conditions as they were.
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import lru_cache
 from typing import Mapping
 
 import sympy as sp
@@ -104,6 +105,7 @@ def unsquared(H: sp.Matrix, at: Mapping, model: Model) -> sp.Matrix:
 COMPACT_OPS = 120  # an entry longer than this is put over one denominator and factored, where that is shorter
 
 
+@lru_cache(maxsize=256)  # θ₀ = ±acos(c) give one K entry: factored once (0.7 s each for a rod on a spring of natural length)
 def _compact(entry: sp.Expr) -> sp.Expr:
     """A long entry as one factored fraction where that is shorter: a rod on a wall spring
     at sin(θ₀/2) = a k/(4 a k − g m) has K = a (3 a k − g m)(5 a k − g m)/(4 a k − g m),

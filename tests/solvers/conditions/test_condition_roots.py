@@ -247,3 +247,30 @@ def test_a_radical_times_constants_has_its_radicands_roots_without_solve(monkeyp
     s = math.asin(4 / (3 * math.pi))
     assert found == pytest.approx(sorted([s, -s, math.pi - s, -(math.pi - s)]), abs=1e-12)
     assert found == pytest.approx(_scanned_roots(lambda b: 16 - 9 * math.pi**2 * math.sin(b) ** 2), abs=1e-9)
+
+
+def test_a_condition_of_several_parameters_is_factored_once(monkeypatch) -> None:
+    """(a − b)(a + b − c)(a b − c²), cubic in each of a, b and c, has by hand the roots
+    a = b, c − b, c²/b; b = a, c − a, c²/a; c = a + b, ±√(a b). Each parameter's roots
+    come from one factorization of the whole polynomial (a rod on a spring of natural
+    length factored one condition of six parameters six times)."""
+    from rbdsolve.solvers.conditions import condition_roots
+
+    a, b, c = sp.symbols("a b c", positive=True)
+    f = sp.expand((a - b) * (a + b - c) * (a * b - c**2))
+    calls = []
+    real = sp.factor_list
+
+    def counted(*args, **kwargs):
+        calls.append(args)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(condition_roots.sp, "factor_list", counted)
+    _roots_in.cache_clear()
+    condition_roots._factors_of.cache_clear()
+    found = {p: set(_roots_in(f, p)) for p in (a, b, c)}
+    assert len(calls) == 1
+    assert found[a] == {b, c - b, c**2 / b}
+    assert found[b] == {a, c - a, c**2 / a}
+    assert {sp.simplify(r**2 - a * b) == 0 or sp.expand(r - a - b) == 0 for r in found[c]} == {True}
+    assert len(found[c]) == 3
