@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Mapping, Sequence
+from typing import Callable, Mapping, Sequence
 
 import mpmath
 import numpy as np
@@ -273,6 +273,9 @@ def _number(x: sp.Expr, arithmetic: Arithmetic):
 # --- evaluation on jets ---------------------------------------------------------------
 
 
+_METHODS: dict[type, Callable] = {}  # a tree node's kind -> its _Evaluator method
+
+
 class _Evaluator:
     """The scene at one configuration: every name bound to a number, a jet (a
     coordinate) or a vector (a point, a tuple of 3)."""
@@ -311,7 +314,11 @@ class _Evaluator:
         return power(apply("sqrt", _dot(d, d), self.arithmetic) - rest, 2, self.arithmetic)
 
     def eval(self, tree: ex.Tree):
-        return getattr(self, "_" + type(tree).__name__)(tree)
+        """The node by its kind's method (``_BinOp`` for a BinOp), looked up once per kind."""
+        method = _METHODS.get(type(tree))
+        if method is None:
+            method = _METHODS[type(tree)] = getattr(_Evaluator, "_" + type(tree).__name__)
+        return method(self, tree)
 
     def _Num(self, tree: ex.Num):
         return self.arithmetic.number(tree.value)
