@@ -227,3 +227,20 @@ def test_simulation_at_small_amplitude_confirms_the_linearization():
     fs = System(sc, {k: mpmath.mpf(v) for k, v in P.items()}, FLOAT)
     w = simulated_frequency(fs, [0.0], [1.0], omega_guess=3.0)
     assert w == pytest.approx(np.sqrt(3 * 9.81 / (2 * 1.5)), rel=1e-5)
+
+
+def test_an_equilibrium_is_judged_only_where_its_conditions_hold() -> None:
+    """docs/json.md: an equilibrium exists only where each of its ``conditions`` is ≥ 0.
+    With 1 − c² and c = 2k/m: at k = 1, m = 4 (c = 1/2) it holds (1 − 1/4 ≥ 0), at k = 3,
+    m = 4 (c = 3/2) it does not (1 − 9/4 < 0): there the entry is no equilibrium to judge
+    (seed 2037's scene 81, whose acos was judged at a point outside them)."""
+    from types import SimpleNamespace
+
+    from benchmarks.neighbours.check.equilibria import _conditions_hold
+    from benchmarks.neighbours.read import Reader
+
+    ctx = SimpleNamespace(reader=Reader(["k", "m"], ["theta"]))
+    entry = {"conditions": ["1 - 4*k**2/m**2", "m"]}
+    assert _conditions_hold(ctx, entry, {"k": 1, "m": 4})
+    assert not _conditions_hold(ctx, entry, {"k": 3, "m": 4})
+    assert _conditions_hold(ctx, {"conditions": []}, {"k": 3, "m": 4})

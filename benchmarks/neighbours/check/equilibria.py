@@ -1,7 +1,8 @@
 """equilibria: at each parameter point, every equilibrium rbdsolve lists that exists
-there (its ``exists_when``) must zero the oracle's generalized force and have the
-oracle's stability (K = −∂Q/∂q on M); every equilibrium the oracle finds in its box
-must be listed (or be one of the listed ones' ``equivalent`` forms)."""
+there (its ``exists_when``, and each of its ``conditions`` ≥ 0) must zero the oracle's
+generalized force and have the oracle's stability (K = −∂Q/∂q on M); every equilibrium
+the oracle finds in its box must be listed (or be one of the listed ones' ``equivalent``
+forms)."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ import mpmath
 
 from benchmarks.neighbours.check.context import Context, Mismatch, Partial, boundary_points, fmt, points_for
 from benchmarks.neighbours.expr import FLOAT
+from benchmarks.neighbours.read import NotANumber
 from benchmarks.neighbours.oracle.search import box, equilibria, regular, same, stability, wrap
 
 
@@ -19,6 +21,8 @@ def listed(ctx: Context, answers: dict, i: int):
     out = []
     for e in answers.get("equilibria") or []:
         exists = ctx.reader.truth(e.get("exists_when", "True"), p)
+        if exists is not False and not _conditions_hold(ctx, e, p):
+            exists = False
         if exists is False:
             continue
         q = [ctx.reader.value(e["at"][c], p) for c in coords]
@@ -36,6 +40,25 @@ def listed(ctx: Context, answers: dict, i: int):
         equivalents = [[ctx.reader.value(alt[c], p) for c in coords] for alt in e.get("equivalent", [])]
         out.append((q, stab, equivalents, e, exists))
     return out
+
+
+def _conditions_hold(ctx: Context, entry: dict, p) -> bool:
+    """Each of the equilibrium's ``conditions`` ≥ 0 at the point (docs/json.md: it exists
+    only where each is): False where one is negative beyond rounding, or not real."""
+    for text in entry.get("conditions") or []:
+        try:
+            value = ctx.reader.value(text, p)
+        except NotANumber:  # infinite at the point: it decides nothing there
+            continue
+        if value is None:
+            continue
+        if isinstance(value, mpmath.mpc):
+            if abs(value.imag) > mpmath.mpf("1e-20") * (1 + abs(value.real)):
+                return False
+            value = value.real
+        if value < -mpmath.mpf("1e-20") * (1 + abs(value)):
+            return False
+    return True
 
 
 def _hessian(ctx, ms, q, entry, i):

@@ -244,9 +244,9 @@ def _irreducible(polynomial: sp.Poly) -> list[sp.Poly]:
     once per parameter, six times 0.2–0.3 s."""
     p, domain = polynomial.gen, polynomial.domain
     if domain.is_ZZ or domain.is_QQ or (domain.is_PolynomialRing and (domain.domain.is_ZZ or domain.domain.is_QQ)):
-        expr = polynomial.as_expr()
-        whole = sp.Poly(expr, *sorted(expr.free_symbols, key=sp.default_sort_key))  # the same whichever p
-        return [sp.Poly(factor, p) for factor in _factors_of(whole) if factor.has(p)]
+        # in p and the ring's own generators (cos α is one, beside the symbols), in one order whichever p
+        gens = sorted({p, *(domain.symbols if domain.is_PolynomialRing else ())}, key=sp.default_sort_key)
+        return [sp.Poly(factor, p) for factor in _factors_of(sp.Poly(polynomial.as_expr(), *gens)) if factor.has(p)]
     return [factor for factor, _ in sp.factor_list(polynomial)[1]]
 
 

@@ -274,3 +274,15 @@ def test_a_condition_of_several_parameters_is_factored_once(monkeypatch) -> None
     assert found[b] == {a, c - a, c**2 / a}
     assert {sp.simplify(r**2 - a * b) == 0 or sp.expand(r - a - b) == 0 for r in found[c]} == {True}
     assert len(found[c]) == 3
+
+
+def test_a_condition_with_a_cosine_among_its_coefficients_is_factored_whole() -> None:
+    """(k − m cos α)(k² − 3m)(k + 1), quartic in k with cos α in its coefficients: by hand
+    k = m cos α, ±√(3m), −1; and with a factor m² − k, quartic in m: m = k/cos α, k²/3, ±√k.
+    (The whole polynomial is factored in cos α as one of its generators, not in α.)"""
+    a, k, m = sp.symbols("alpha k m", positive=True)
+    _roots_in.cache_clear()
+    f = sp.expand((k - m * sp.cos(a)) * (k**2 - 3 * m) * (k + 1))
+    assert set(_roots_in(f, k)) == {m * sp.cos(a), -1, sp.sqrt(3 * m), -sp.sqrt(3 * m)}
+    g = sp.expand(f * (m**2 - k))
+    assert set(_roots_in(g, m)) == {k / sp.cos(a), k**2 / 3, sp.sqrt(k), -sp.sqrt(k)}
