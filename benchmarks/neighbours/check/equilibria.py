@@ -10,8 +10,8 @@ import mpmath
 
 from benchmarks.neighbours.check.context import Context, Mismatch, Partial, boundary_points, fmt, points_for
 from benchmarks.neighbours.expr import FLOAT
-from benchmarks.neighbours.read import NotANumber
 from benchmarks.neighbours.oracle.search import box, equilibria, regular, same, stability, wrap
+from benchmarks.neighbours.read import NotANumber
 
 
 def listed(ctx: Context, answers: dict, i: int):
