@@ -146,9 +146,7 @@ def test_an_interrupted_key_leaves_the_previous_key_and_no_scratch(tmp_path: Pat
     a staging folder and published with the key)."""
     exam = folder(tmp_path)
     (tmp_path / "key.md").write_text("the previous key\n")
-    # the budget only cuts the slow files short (whether a file hits it is not what is
-    # tested): the signal comes once the scratch folder or a picture is there, after them
-    process = start(["key", str(exam), "-o", "key.md", "--budget", "1"], tmp_path)
+    process = start(["key", str(exam), "-o", "key.md", "--budget", "2"], tmp_path)
     deadline = time.monotonic() + 120
     while not (list((tmp_path / "tmp").glob("rbdsolve-key-*")) if when == "scratch" else
                list(tmp_path.glob(".key.md.*.part/key-figures/*.png"))):
