@@ -289,10 +289,11 @@ def _on_drawn_sides(model: Model, roots: list[Root]) -> tuple[list[Root], tuple[
     held = [(s.name, x.sign * x.inside) for s in model.springs for x in s.lengths if x.sign is not None]
     if not held or numeric_scene(model) is not None:
         return roots, ()
+    valued = [(name, u, u.xreplace(dict(model.values))) for name, u in held]  # u written, u with the values in
     kept, dropped = [], []
     for r in roots:
         at = dict(zip(model.q, r.at))
-        past = [(name, u) for name, u in held if _negative_at(u.xreplace(dict(model.values)), at)]
+        past = [(name, u) for name, u, number in valued if _negative_at(number, at)]
         if past:
             name, u = past[0]
             dropped.append(f"{_shown_at(model, r)} solves ∂V/∂q = 0 only with spring '{name}' past zero length "
