@@ -35,6 +35,20 @@ def solved_file(path: Path):
     return model, solve_problem(model)
 
 
+def counted_calls(monkeypatch, owner, name: str) -> list[tuple]:
+    """The arguments of every call of ``owner.name`` from here on (it still does its
+    work): a test that some work is done once counts its calls."""
+    calls: list[tuple] = []
+    real = getattr(owner, name)
+
+    def counted(*args, **kwargs):
+        calls.append(args)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(owner, name, counted)
+    return calls
+
+
 def needs_tex() -> None:
     """Skip without a TeX engine, except in CI, which installs TeX Live (.ci/run): there
     a missing pdflatex is a failure, so the key's LaTeX is compiled on every change."""

@@ -17,6 +17,7 @@ from functools import lru_cache
 
 import sympy as sp
 
+from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
@@ -56,7 +57,7 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     ((0, ∞), or an angle's, turned into it by whole turns), in increasing order; None
     where a root is inside at some samples and not at others, or the order changes."""
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
-    numerator, denominator = sp.fraction(sp.together(f))
+    numerator, denominator = quotient(f)
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
     if any(_under_long_radical(factor, p) or _under_two_radicals(factor, p) or trig_transcendental(factor, p)
            or _in_absolute_value(factor, p) for factor in factors):

@@ -37,6 +37,7 @@ from typing import Iterable
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
+from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy, tidy_fraction
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.assumptions import implies
@@ -428,7 +429,7 @@ def nonnegative_where(value: sp.Expr, model, first: sp.Symbol | None = None) -> 
 def _finite_at(f: sp.Expr, critical: Critical) -> bool:
     """Whether f is finite at the critical value (its numerator vanishes there, not its
     denominator): a boundary where the condition holds with equality."""
-    _, denominator = sp.fraction(sp.together(f))
+    _, denominator = quotient(f)
     return not simplifies_to_zero(denominator.xreplace({critical.parameter: critical.value}))
 
 

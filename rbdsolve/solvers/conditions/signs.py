@@ -11,6 +11,7 @@ from typing import Iterable, Mapping
 
 import sympy as sp
 
+from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 
 
@@ -97,7 +98,7 @@ def coefficient_sign(value: sp.Expr) -> int | None:
     if not symbols or not all(x.is_positive for x in symbols):
         return None
     signs = [_coefficients_sign(part, sorted(symbols, key=sp.default_sort_key))
-             for part in sp.fraction(sp.together(value))]
+             for part in quotient(value)]
     if None in signs:
         return None
     return signs[0] * signs[1]
@@ -171,18 +172,18 @@ def over_sines(value: sp.Expr, values: Iterable[sp.Expr]) -> sp.Expr:
 def _divided(value: sp.Expr, side: sp.Expr) -> sp.Expr:
     """value / side where side's numerator divides value's exactly (as polynomials in
     the parameters), else value as it is."""
-    top, bottom = sp.fraction(sp.together(value))
-    n, d = sp.fraction(sp.together(side))
+    top, bottom = quotient(value)
+    n, d = quotient(side)
     gens = sorted(top.free_symbols | n.free_symbols, key=sp.default_sort_key)
     if not n.free_symbols or not gens:
         return value
     try:
-        quotient, rest = sp.div(sp.Poly(top, *gens), sp.Poly(n, *gens))
+        whole, rest = sp.div(sp.Poly(top, *gens), sp.Poly(n, *gens))
     except sp.PolynomialError:  # a root or a function of the parameters: not a polynomial
         return value
     if not rest.is_zero:
         return value
-    return sp.factor(quotient.as_expr() * d / bottom)
+    return sp.factor(whole.as_expr() * d / bottom)
 
 
 FACTOR_OPS = 200  # a longer expression is judged as written only: factoring it can take minutes

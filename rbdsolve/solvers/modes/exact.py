@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass, replace
+from functools import lru_cache
 from typing import TYPE_CHECKING, Mapping
 
 import sympy as sp
@@ -351,13 +352,14 @@ def _agree(closed: list[sp.Expr], factor: sp.Poly) -> bool:
     return all(abs(a - b) <= tolerance * max(abs(b), 1) for a, b in zip(values, exact))
 
 
-def _roots(poly: sp.Poly, x: sp.Symbol) -> list[sp.Expr]:
+@lru_cache(maxsize=256)  # equilibria ±θ₀ share one K, and a second question asks about the same ones
+def _roots(poly: sp.Poly, x: sp.Symbol) -> tuple[sp.Expr, ...]:
     """All roots with multiplicity, in closed form where one exists (else CRootOf)."""
     found = sp.roots(poly, x)
     if sum(found.values()) == poly.degree():
-        return [r for r, k in found.items() for _ in range(k)]
+        return tuple(r for r, k in found.items() for _ in range(k))
     if all(c.is_Rational for c in poly.all_coeffs()):
-        return list(sp.Poly(poly, x).all_roots())  # exact CRootOf for the rest
+        return tuple(sp.Poly(poly, x).all_roots())  # exact CRootOf for the rest
     raise UnsolvedError(f"no closed form for the roots of the degree-{poly.degree()} "
                         "characteristic polynomial")
 

@@ -20,6 +20,8 @@ import sympy as sp
 from rbdsolve.solvers.conditions.condition_roots import (_in_sine_or_cosine, _roots_in, _squared_once,
                                                           _under_two_radicals, _vanishes_at)
 
+from conftest import counted_calls
+
 SCENE = """
 parameters: {m: mass, a: length, b: length, c: length}
 coordinates: [x]
@@ -258,14 +260,7 @@ def test_a_condition_of_several_parameters_is_factored_once(monkeypatch) -> None
 
     a, b, c = sp.symbols("a b c", positive=True)
     f = sp.expand((a - b) * (a + b - c) * (a * b - c**2))
-    calls = []
-    real = sp.factor_list
-
-    def counted(*args, **kwargs):
-        calls.append(args)
-        return real(*args, **kwargs)
-
-    monkeypatch.setattr(condition_roots.sp, "factor_list", counted)
+    calls = counted_calls(monkeypatch, condition_roots.sp, "factor_list")
     _roots_in.cache_clear()
     condition_roots._factors_of.cache_clear()
     found = {p: set(_roots_in(f, p)) for p in (a, b, c)}
@@ -286,3 +281,26 @@ def test_a_condition_with_a_cosine_among_its_coefficients_is_factored_whole() ->
     assert set(_roots_in(f, k)) == {m * sp.cos(a), -1, sp.sqrt(3 * m), -sp.sqrt(3 * m)}
     g = sp.expand(f * (m**2 - k))
     assert set(_roots_in(g, m)) == {k / sp.cos(a), k**2 / 3, sp.sqrt(k), -sp.sqrt(k)}
+
+
+def test_a_value_followed_along_each_parameter_is_put_over_one_denominator_once(monkeypatch) -> None:
+    """(c − a − b)/(a b) + 1/c = (c² − (a + b) c + a b)/(a b c) = (c − a)(c − b)/(a b c), by
+    hand: along c its roots are a and b (in the order of the samples, a < b or not: the
+    order changes, so None), along a its root is c (the denominator's a = 0 is the
+    range's end), along b its root c. One ``together`` for the three parameters (a
+    plate on a spring of natural length split one K six times, 0.1 s each)."""
+    from rbdsolve.form import quotient as quotient_module
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+    from rbdsolve.solvers.conditions import condition_roots
+
+    model = build_model(load_text(SCENE))
+    a, b, c = (model.symbols.parameters[n] for n in "abc")
+    value = (c - a - b) / (a * b) + 1 / c
+    calls = counted_calls(monkeypatch, quotient_module.sp, "together")
+    quotient_module.quotient.cache_clear()
+    _roots_in.cache_clear()
+    along = {p: condition_roots.parameter_roots(value, p, {}, model) for p in (a, b, c)}
+    assert len([x for x in calls if x[0] == value]) == 1
+    assert along[a] == [c] and along[b] == [c]
+    assert along[c] is None
