@@ -25,7 +25,7 @@ from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.answers import EomAnswers, FrameAnswers
 from rbdsolve.solvers.eom.steps import frame_steps, instant_steps, lagrange_step, singular_step, solved_step
-from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, state_values
+from rbdsolve.solvers.lagrange.accelerations import Accelerations, accelerations, at_state, state_values
 from rbdsolve.solvers.lagrange.frames import refuse_loads_in_frame
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import eom_warnings
@@ -42,6 +42,13 @@ def lagrange_equations(model: Model, L: sp.Expr | None = None) -> tuple[sp.Expr,
 @memoized  # the reactions' route and their check before printing both ask
 def _own_equations(model: Model) -> tuple[sp.Expr, ...]:
     return _equations(model, kinetic_energy(model).total - potential_energy(model).total)
+
+
+@memoized  # the equations of motion, the reactions and the energy's check on the way each need q̈
+def general_accelerations(model: Model) -> Accelerations:
+    """q̈ = −M⁻¹ h from the model's own Lagrange equations, no state put in
+    (``accelerations``), once per model."""
+    return accelerations(lagrange_equations(model), model)
 
 
 def _equations(model: Model, L: sp.Expr) -> tuple[sp.Expr, ...]:
@@ -78,8 +85,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
 
 def _accelerations(question: Question, model: Model, equations):
     """q̈ = −M⁻¹ h, and at the state asked for (``at:``, ``from_rest:``), with its steps;
-    and M(q) = ∂E/∂q̈."""
-    found = accelerations(equations, model)
+    and M(q) = ∂E/∂q̈. ``equations`` are the model's own (``lagrange_equations``)."""
+    found = general_accelerations(model)
     names = model.coordinate_names()
     steps = [solved_step(found.solved, model)] if found.solved is not None else [singular_step(found)]
     solved = {n: model.to_time(a) for n, a in zip(names, found.solved)} if found.solved is not None else None

@@ -21,10 +21,10 @@ import sympy as sp
 from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.form.tidy import collect_in, tidy, tidy_fraction
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.reactions.applied import applied
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
+from rbdsolve.solvers.reactions.applied import applied
 from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point, planar
-
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -117,8 +117,23 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
     """x from A x = b, the accelerations put in; the rows not used must hold too. Where
     one does not, the question lists a point that holds nothing or leaves a support out:
     bad input, located at the first force asked for on that body."""
-    unknowns = [c.symbol for s in supports for c in s.components]
-    exprs = [sp.expand((r.lhs - r.rhs).xreplace(qdd)) for r in rows]
+    unknowns = tuple(c.symbol for s in supports for c in s.components)
+    exprs = tuple(sp.expand((r.lhs - r.rhs).xreplace(qdd)) for r in rows)
+    solution, unused = _solution(model, exprs, unknowns)
+    solution = dict(solution)
+    for i in unused:
+        if not _holds(exprs[i].xreplace(solution), model):
+            row = rows[i]
+            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports)
+                             + _on_drum(row.body, supports),
+                             located(supports, row.body))
+    return solution
+
+
+@memoized  # a reactions question and the energy question's check on the way (on_the_way.py) solve the same rows
+def _solution(model: Model, exprs: tuple[sp.Expr, ...], unknowns: tuple[sp.Symbol, ...]
+              ) -> tuple[tuple[tuple[sp.Symbol, sp.Expr], ...], tuple[int, ...]]:
+    """x from A x = b (Cramer's rule on independent rows), and the rows not used."""
     A = sp.Matrix([[sp.diff(e, x) for x in unknowns] for e in exprs])
     b = sp.Matrix([-e.xreplace({x: 0 for x in unknowns}) for e in exprs])
     chosen = _independent_rows(A, model, len(unknowns))
@@ -127,17 +142,12 @@ def solve_forces(model: Model, rows: list[Balance], supports: tuple[Held, ...],
                             f"unknowns than independent balances among {', '.join(map(str, unknowns))})")
     A_s, b_s = A.extract(chosen, list(range(len(unknowns)))), b.extract(chosen, [0])
     det = tidy_fraction(A_s.det(method="berkowitz"))
-    solution = {}
+    solution = []
     for j, x in enumerate(unknowns):
         Aj = A_s.copy()
         Aj[:, j] = b_s
-        solution[x] = clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)
-    for i, row in enumerate(rows):
-        if i not in chosen and not _holds(exprs[i].xreplace(solution), model):
-            raise InputError(unheld(row.body, f"its {row.label} balance") + _on_strings(row.body, supports)
-                             + _on_drum(row.body, supports),
-                             located(supports, row.body))
-    return solution
+        solution.append((x, clean_fraction(sp.expand(Aj.det(method="berkowitz")) / det)))
+    return tuple(solution), tuple(i for i in range(len(exprs)) if i not in chosen)
 
 
 def unheld(name: str, what: str) -> str:

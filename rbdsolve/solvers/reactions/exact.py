@@ -17,7 +17,7 @@ from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
-from rbdsolve.solvers.eom.exact import lagrange_equations
+from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.first_zero import FirstZero, first_zero, reaches
@@ -25,7 +25,7 @@ from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_str
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
-from rbdsolve.solvers.lagrange.accelerations import accelerations, at_state, clean_fraction, state_values
+from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
 from rbdsolve.solvers.conditions.conditions import critical_values
 from rbdsolve.solvers.conditions.condition_roots import admissible
 from rbdsolve.solvers.conditions.signs import sign_of
@@ -37,7 +37,7 @@ from rbdsolve.solvers.routes.options import Options
 def setup(question: Question, model: Model):
     """The supports, the accelerations and the free body rows, shared by both routes."""
     supports = with_strings(model, tuple(held(model, s) for s in question.options.supports), question.options.loc)
-    found = accelerations(lagrange_equations(model), model)
+    found = general_accelerations(model)
     if found.too_long:
         raise UnsolvedError("the general accelerations are too long to write out, and Newton–Euler needs them")
     if found.solved is None:

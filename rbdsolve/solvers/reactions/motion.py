@@ -16,6 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral, energy_integral, not_conserved
 
@@ -31,6 +32,11 @@ def energy(model: Model, start: dict[sp.Symbol, sp.Expr]) -> EnergyIntegral | No
 
 def along(value: sp.Expr, model: Model, e: EnergyIntegral) -> sp.Expr | None:
     """A force of q and q̇ as a function of q alone, q̇² from the energy (None: q̇ left)."""
+    return _along(model, value, e)
+
+
+@memoized  # a reactions question and the energy question's check on the way follow the same push
+def _along(model: Model, value: sp.Expr, e: EnergyIntegral) -> sp.Expr | None:
     qd = model.qd[0]
     w = sp.Dummy("w")
     replaced = sp.expand(value).subs(qd**2, w)

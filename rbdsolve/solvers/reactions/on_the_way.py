@@ -25,8 +25,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
 from rbdsolve.model.build import Model
-from rbdsolve.solvers.eom.exact import lagrange_equations
-from rbdsolve.solvers.lagrange.accelerations import accelerations
+from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral
 from rbdsolve.solvers.reactions.balances import contact_forces
 from rbdsolve.solvers.reactions.first_zero import first_loss
@@ -67,7 +66,7 @@ def _pushes(model: Model, e: EnergyIntegral) -> dict[sp.Symbol, tuple[sp.Expr, H
     if not model.contacts or len(model.q) != 1 or missing_values(model):
         return {}
     try:
-        found = accelerations(lagrange_equations(model), model)
+        found = general_accelerations(model)
     except (UnsolvedError, ValueError, TypeError, ZeroDivisionError):
         return {}
     if found.solved is None or found.too_long:

@@ -8,9 +8,13 @@ from __future__ import annotations
 import json
 import math
 
+import pytest
+import sympy as sp
 from click.testing import CliRunner
 
 from rbdsolve.cli import main
+
+from conftest import counted_calls
 
 DISK_ON_DRUM = """title: a disk rolling off a drum
 parameters: {m: mass, r: radius, R: drum radius, g: acceleration of gravity}
@@ -75,3 +79,33 @@ def test_a_ring_falling_off_the_top_of_a_loop(tmp_path) -> None:
     (warning,) = _result(tmp_path, RING_IN_LOOP.replace("W0", "4.669047"))["warnings"]
     assert abs(_place(warning) - 2 * math.pi / 3) < 1e-4
     assert _result(tmp_path, RING_IN_LOOP.replace("W0", "6"))["warnings"] == []
+
+
+def test_the_reactions_and_the_energy_on_the_way_solve_the_balances_once(tmp_path, monkeypatch) -> None:
+    """Asked together, the reactions from rest and the energy's check on the way follow
+    one push: N = m g (7 cos θ − 4 cos θ₀)/3 by hand (above), which the reactions give
+    along the motion, and the balances for N and F are solved once, the general q̈ found
+    once (a rocking cylinder segment spent 2 s of its energy question doing both again)."""
+    from rbdsolve.solvers.lagrange import accelerations as accelerations_module
+    from rbdsolve.solvers.reactions import balances
+
+    rows = counted_calls(monkeypatch, balances, "_independent_rows")
+    solved = counted_calls(monkeypatch, accelerations_module, "_det")
+    text = DISK_ON_DRUM.replace("  - energy: {from_rest: {theta: pi/36}, to: {theta: TO}}",
+                                "  - reactions: {forces: [C], from_rest: {theta: pi/36}}\n"
+                                "  - energy: {from_rest: {theta: pi/36}, to: {theta: 5*pi/18}}")
+    path = tmp_path / "p.yaml"
+    path.write_text(text, encoding="utf-8")
+    out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    assert out.exit_code == 0, out.output
+    reactions, energy = json.loads(out.stdout)["results"]
+    assert len(rows) == 1
+    assert len(solved) == 2  # det M and Cramer's numerator det M₁ (M with −h), for q̈ = −M⁻¹ h
+    theta0 = math.pi / 36
+    assert reactions["values"]["first_zero"]["N_C"]["lost_at"]["theta"] == pytest.approx(
+        math.acos(4 * math.cos(theta0) / 7), rel=1e-9)
+    g, m, t = sp.symbols("g m t", positive=True)
+    N = sp.sympify(reactions["answers"]["along"]["C"]["N_C"], locals={"g": g, "m": m, "t": t})
+    theta = sp.Function("theta")(t)
+    assert sp.simplify(N - g * m * (7 * sp.cos(theta) - 4 * sp.cos(sp.pi / 36)) / 3) == 0
+    assert not energy["warnings"]  # 50° is before the place where N = 0 (θ = 0.965198)
