@@ -20,7 +20,9 @@ import sympy as sp
 from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental
+from rbdsolve.solvers.conditions.signs import symbolic_sign
 
 SAMPLES = 8
 TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -93,6 +95,8 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
             continue  # a root of the equation squared only (the radical's other sign)
         if roots_of_it != {True}:
             return None  # a root only where its own condition holds
+        if p not in angles and not _inside_everywhere(r, p, low, high, model, angles):
+            return None  # inside at the samples, but not where the other parameters are otherwise
         turned = tidy(r + 2 * sp.pi * turns.pop()) if p in angles else _one_root(r)
         if not any(simplifies_to_zero(turned - x) for x in inside):
             inside[turned] = [float(sp.N(turned.xreplace(point), 20)) for point in points]
@@ -100,6 +104,36 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     if any(sorted(inside, key=lambda r: inside[r][k]) != order for k in range(len(points))):
         return None
     return order
+
+
+MORE_SAMPLES = 64
+
+
+def _inside_everywhere(root: sp.Expr, p: sp.Symbol, low, high, model, angles: dict) -> bool:
+    """Is a root found inside p's range at the SAMPLES points inside it wherever the
+    assumptions allow? Proved where sympy's assumptions give it a sign (√(g/R) > 0),
+    else judged at MORE_SAMPLES further admissible points: a root that leaves the range
+    where the other parameters are otherwise is no critical value of every case. A rod
+    on a spring of natural length L₀ hanging from h above its pivot, modes about θ = π
+    with |4h − 3l| = D: k_c = g m D/(3h (D − 4L₀)) is positive only where D > 4L₀, which
+    all eight samples happened to draw; where D < 4L₀ the mode grows for every k, and
+    "oscillation when k > k_c" was printed for it (seed 2039, scene 61)."""
+    if high == sp.oo and low == 0 and symbolic_sign(root) == 1:
+        return True
+    for point in _more_points(model, p, tuple(sorted(angles.items(), key=str))):
+        try:
+            if _turns_at(root.xreplace(point), low, high, False) is None:
+                return False
+        except TypeError:  # no number at a point: not decided there
+            return False
+    return True
+
+
+@memoized
+def _more_points(model, p: sp.Symbol, angles: tuple) -> tuple[dict, ...]:
+    """MORE_SAMPLES admissible points with p left out (``admissible``), once per parameter."""
+    found = (admissible(model, random.Random(1000 + k), (p,), dict(angles)) for k in range(MORE_SAMPLES))
+    return tuple(point for point in found if point is not None)
 
 
 @lru_cache(maxsize=512)  # a condition's partition and its test of one sign ask for the same factor's roots
