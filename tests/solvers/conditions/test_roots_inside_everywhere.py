@@ -70,7 +70,7 @@ def test_a_root_positive_for_every_value_is_still_a_critical_value() -> None:
     assert condition_roots.parameter_roots(k * l - h * g, k, {}, model) == [g * h / l]
 
 
-def test_the_modes_about_the_top_are_not_split_at_a_wrong_critical_stiffness(tmp_path: Path) -> None:
+def test_the_modes_about_the_top_are_not_split_at_a_wrong_stiffness(tmp_path: Path) -> None:
     path = tmp_path / "rod.yaml"
     path.write_text(SCENE)
     out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])

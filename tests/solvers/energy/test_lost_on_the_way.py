@@ -81,7 +81,7 @@ def test_a_ring_falling_off_the_top_of_a_loop(tmp_path) -> None:
     assert _result(tmp_path, RING_IN_LOOP.replace("W0", "6"))["warnings"] == []
 
 
-def test_the_reactions_and_the_energy_on_the_way_solve_the_balances_once(tmp_path, monkeypatch) -> None:
+def test_reactions_and_the_energy_on_the_way_solve_the_balances_once(tmp_path, monkeypatch) -> None:
     """Asked together, the reactions from rest and the energy's check on the way follow
     one push: N = m g (7 cos θ − 4 cos θ₀)/3 by hand (above), which the reactions give
     along the motion, and the balances for N and F are solved once, the general q̈ found

@@ -29,5 +29,6 @@ def test_a_quadratic_gives_both_roots_with_multiplicity() -> None:
     """m² λ² − 5 k m λ + 4 k² = (m λ − k)(m λ − 4 k): λ = k/m and 4k/m; (λ − k/m)² twice."""
     m, k = sp.symbols("m k", positive=True)
     lam = exact.LAMBDA
-    assert set(exact._roots(sp.Poly(m**2 * lam**2 - 5 * k * m * lam + 4 * k**2, lam), lam)) == {k / m, 4 * k / m}
+    quadratic = sp.Poly(m**2 * lam**2 - 5 * k * m * lam + 4 * k**2, lam)
+    assert set(exact._roots(quadratic, lam)) == {k / m, 4 * k / m}
     assert exact._roots(sp.Poly((m * lam - k) ** 2, lam), lam) == (k / m, k / m)
