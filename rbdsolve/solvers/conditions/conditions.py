@@ -32,7 +32,7 @@ from __future__ import annotations
 import cmath
 import random
 from dataclasses import dataclass, replace
-from typing import Iterable
+from typing import Iterable, Mapping
 
 import sympy as sp
 
@@ -244,10 +244,11 @@ def changes(pieces) -> tuple[Critical, ...]:
                  if a.high is not None and a.high == b.low)
 
 
-def what_decides(f: sp.Expr) -> str:
-    """What a user can give to decide the sign of f, for a message: its parameters'
-    values, or an assumption."""
-    names = ", ".join(sorted(str(s) for s in f.free_symbols))
+def what_decides(f: sp.Expr, values: Mapping = {}) -> str:
+    """What a user can give to decide the sign of f, for a message: the values of its
+    parameters that have none (``values``: those given), or an assumption."""
+    names = ", ".join(sorted(str(s) for s in f.free_symbols if s not in values) or
+                      sorted(str(s) for s in f.free_symbols))
     return (f"give values for {names}, or state the sign of {to_unicode(f)} under 'assumptions:'"
             + _assumption_example(f))
 

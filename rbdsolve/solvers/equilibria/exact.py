@@ -314,7 +314,7 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
     inertia = decided_inertia(H, model, at)
     if isinstance(inertia, Undecided):
         return Equilibrium(where, Stability.UNDETERMINED, H,
-                           f"the sign of {to_unicode(inertia.expr)} depends on the parameters ({what_decides(inertia.expr)})")
+                           f"the sign of {to_unicode(inertia.expr)} depends on the parameters ({what_decides(inertia.expr, model.values)})")
     if inertia.negative:
         return Equilibrium(where, Stability.UNSTABLE, H, "the Hessian of V has a negative eigenvalue")
     if inertia.zero:

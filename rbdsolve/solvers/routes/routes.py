@@ -171,11 +171,12 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
     if chosen is not None:
         return chosen
     share = Allowance(options.budget)
-    fallback = options.route is RouteChoice.AUTO and not missing_for(model, question, _solved_for(question))
+    missing = missing_for(model, question, _solved_for(question))
+    fallback = options.route is RouteChoice.AUTO and not missing
     exact = _attempt(Route.EXACT, exact_route, question, model,
                      replace(options, budget=share.share(2)) if fallback else options)
     if not fallback or exact.solved:
-        return exact
+        return _naming(exact, missing)
     solution = _attempt(Route.NUMERIC, numeric_route, question, filled, replace(options, budget=share.left()),
                         " (numeric route)")
     if not solution.solved:
@@ -183,6 +184,16 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
     reason = exact.error.removesuffix(f"; {NUMERIC_REMEDY}")  # the values are given: the numeric route has answered
     note = f"the exact route could not answer ({reason}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
+
+
+def _naming(exact: Solution, missing: tuple[str, ...]) -> Solution:
+    """The exact route's failure, its remedy ("give values for the parameters to solve
+    it numerically") naming the parameters that lack one: a rod on a side spring with
+    only m open was told to give values for the parameters it had."""
+    if exact.solved or not missing or not (exact.error or "").endswith(NUMERIC_REMEDY):
+        return exact
+    named = f"give {', '.join(missing)} a value ('values:' in the file, or --set NAME=VALUE) to solve it numerically"
+    return replace(exact, error=exact.error.removesuffix(NUMERIC_REMEDY) + named)
 
 
 def _numeric_first(family: Family, numeric_route: Solver, question: Question, model: Model, filled: Model,

@@ -141,6 +141,8 @@ def test_what_decides_names_the_expressions_own_parameters() -> None:
     text = what_decides(-m * W**2 * sp.sin(alpha) ** 2)
     assert "R > r" not in text  # the hint of another scene (issue 43)
     assert "give values for Omega, alpha, m" in text
+    # with values given for m and alpha (kept as symbols in the expression), only Omega is asked for
+    assert "give values for Omega, or" in what_decides(-m * W**2 * sp.sin(alpha) ** 2, {m: 2, alpha: sp.pi / 6})
     assert text.endswith("(an inequality between its parameters that is linear in one of them)")  # none of either sign
 
 

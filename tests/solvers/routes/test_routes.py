@@ -496,3 +496,19 @@ def test_the_numeric_routes_note_does_not_ask_for_values_it_was_given() -> None:
     exact = solve_file(load_file(path), Options(route=RouteChoice.EXACT))
     (refused,) = [s for s in exact.solutions if s.question == "equilibria"]
     assert not refused.solved and refused.error.endswith(f"; {NUMERIC_REMEDY}")
+
+
+def test_the_exact_routes_refusal_names_the_parameter_without_a_value() -> None:
+    """The same rod with m left open: the exact route's remedy names m, the one the
+    numeric route would need, not "the parameters" (a new user's rod on a side spring
+    with only m open was told to give values it had); the reason before it unchanged."""
+    from rbdsolve.errors import NUMERIC_REMEDY
+    from rbdsolve.problem import load_text
+
+    path = PROBLEMS / "frames" / "rod-on-turning-arm.yaml"
+    text = path.read_text().replace("values: {m: 1 kg, ", "values: {")
+    report = solve_file(load_text(text, "rod.yaml"))
+    (refused,) = [s for s in report.solutions if s.question == "equilibria"]
+    assert not refused.solved and NUMERIC_REMEDY not in refused.error
+    assert "degree 4" in refused.error
+    assert refused.error.endswith("give m a value ('values:' in the file, or --set NAME=VALUE) to solve it numerically")
