@@ -15,13 +15,14 @@ import math
 import random
 from functools import lru_cache
 
+import mpmath
 import sympy as sp
 
 from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.solvers.conditions.polynomial import trig_transcendental
+from rbdsolve.solvers.conditions.polynomial import plain_linear_root, trig_transcendental
 from rbdsolve.solvers.conditions.signs import symbolic_sign
 
 SAMPLES = 8
@@ -62,7 +63,7 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     numerator, denominator = quotient(f)
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
     if any(_under_long_radical(factor, p) or _under_two_radicals(factor, p) or trig_transcendental(factor, p)
-           or _in_absolute_value(factor, p) for factor in factors):
+           or _in_absolute_value(factor, p) or _under_an_inverse(factor, p) for factor in factors):
         # sympy's solve squares the radicals away, searches a transcendental one, or splits |…| into
         # cases: minutes (issue 37), and roots under conditions of their own; decided by the structure
         return None
@@ -120,12 +121,22 @@ def _inside_everywhere(root: sp.Expr, p: sp.Symbol, low, high, model, angles: di
     "oscillation when k > k_c" was printed for it (seed 2039, scene 61)."""
     if high == sp.oo and low == 0 and symbolic_sign(root) == 1:
         return True
-    for point in _more_points(model, p, tuple(sorted(angles.items(), key=str))):
-        try:
-            if _turns_at(root.xreplace(point), low, high, False) is None:
+    points = _more_points(model, p, tuple(sorted(angles.items(), key=str)))
+    names = sorted(root.free_symbols, key=str)
+    if not points or not set(names) <= set(points[0]):
+        return False  # a name the points do not set: no number
+    at = sp.lambdify(names, root, modules="mpmath")  # one compile for all the points (a long root: 0.1 s each by evalf)
+    with mpmath.workdps(20):
+        for point in points:
+            try:
+                z = complex(at(*(mpmath.mpf(sp.N(point[n], 25)._mpf_) for n in names)))
+            except (TypeError, ValueError, ZeroDivisionError):  # no number at a point: not decided there
                 return False
-        except TypeError:  # no number at a point: not decided there
-            return False
+            # within rounding of the range's lower end 0: exactly, as at the first samples (``_turns_at``)
+            near_zero = low == 0 and abs(z) <= 1e-10
+            if (_turns_at(root.xreplace(point), low, high, False) if near_zero
+                    else _turns_into(z, low, high, False)) is None:
+                return False
     return True
 
 
@@ -166,6 +177,9 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
         return _solved(radicand, p)
     if factor.is_polynomial(p):
         polynomial = sp.Poly(factor, p)
+        plain = plain_linear_root(polynomial)
+        if plain is not None:
+            return [plain]
         if polynomial.degree() > 2:
             return _factor_by_factor(polynomial)
         found = sp.roots(polynomial)
@@ -319,6 +333,18 @@ def _under_two_radicals(expr: sp.Expr, p: sp.Symbol) -> bool:
     ran out of its 27 s share); no exam writes such a root as a condition."""
     bases = {w.base for w in expr.atoms(sp.Pow) if w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p)}
     return len(bases) >= 2
+
+
+INVERSES = (sp.atan2, sp.atan, sp.acot, sp.asin, sp.acos, sp.exp, sp.log)
+
+
+def _under_an_inverse(expr: sp.Expr, p: sp.Symbol) -> bool:
+    """Does p stand inside an inverse trigonometric function, an exponential or a
+    logarithm? A hoop rolling in a track on an elastic cord to the track's point at β,
+    m and k open, rests at θ* = atan2(R k sin β, m g + R k cos β), and its λ holds
+    cos(β − θ*): sympy's solve for k ran past the minute's budget (a new user's trial);
+    no exam writes such a root as a critical value."""
+    return any(f.has(p) for f in expr.atoms(*INVERSES))
 
 
 def _in_absolute_value(expr: sp.Expr, p: sp.Symbol) -> bool:

@@ -104,3 +104,19 @@ def trig_transcendental(expr: sp.Expr, x: sp.Symbol) -> bool:
     incommensurate = any(not sp.cancel(a / arguments[0]).is_Rational for a in arguments[1:])
     return incommensurate or trig_mixed(expr, x)
 
+
+LONG_LINEAR_OPS = 200  # a longer linear polynomial over sympy's EX domain: its root is not simplified
+
+
+def plain_linear_root(polynomial: sp.Poly) -> sp.Expr | None:
+    """−b/a for a x + b = 0 with long coefficients over sympy's EX domain (radicals,
+    atan2 of the parameters), else None (sympy's roots then, whose form the answers keep).
+    sympy's roots runs ``simplify`` on such a root, which did not end within a minute
+    for a hoop rolling in a track on an elastic cord with m and k open, once for its λ
+    and once for a condition's root in r (a new user's trial); −b/a is no less exact."""
+    if polynomial.degree() != 1 or not polynomial.get_domain().is_EX:
+        return None
+    if sp.count_ops(polynomial.as_expr()) <= LONG_LINEAR_OPS:
+        return None
+    a, b = polynomial.all_coeffs()
+    return -b / a

@@ -53,6 +53,7 @@ from rbdsolve.form.arrange import descending
 from rbdsolve.solvers.modes.steps import exact_steps, mode_labels
 from rbdsolve.solvers.conditions.conditions import critical_values
 from rbdsolve.solvers.conditions.parameter_order import asked
+from rbdsolve.solvers.conditions.polynomial import plain_linear_root
 from rbdsolve.solvers.lagrange.frames import require_static
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import exact_reason
@@ -354,7 +355,12 @@ def _agree(closed: list[sp.Expr], factor: sp.Poly) -> bool:
 
 @lru_cache(maxsize=256)  # equilibria ±θ₀ share one K, and a second question asks about the same ones
 def _roots(poly: sp.Poly, x: sp.Symbol) -> tuple[sp.Expr, ...]:
-    """All roots with multiplicity, in closed form where one exists (else CRootOf)."""
+    """All roots with multiplicity, in closed form where one exists (else CRootOf); one
+    coordinate's λ = K/M as it stands where K and M are long over sympy's EX domain
+    (``plain_linear_root``: the caller tidies it)."""
+    plain = plain_linear_root(poly)
+    if plain is not None:
+        return (plain,)
     found = sp.roots(poly, x)
     if sum(found.values()) == poly.degree():
         return tuple(r for r, k in found.items() for _ in range(k))

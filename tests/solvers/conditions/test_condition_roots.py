@@ -304,3 +304,22 @@ def test_a_value_followed_along_each_parameter_is_put_over_one_denominator_once(
     assert len([x for x in calls if x[0] == value]) == 1
     assert along[a] == [c] and along[b] == [c]
     assert along[c] is None
+
+
+def test_a_parameter_inside_an_atan2_is_left_undecided_without_solve(monkeypatch) -> None:
+    """cos(β − atan2(R k sin β, m g + R k cos β)) − c (a hoop in a track on a cord: its
+    rest angle is that atan2): no root in k is looked for (sympy's solve ran past the
+    minute's budget), the parameter is left undecided (None) at once."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+    from rbdsolve.solvers.conditions import condition_roots
+
+    def never(*args, **kwargs):
+        raise AssertionError(f"sympy's solve called on {args}")
+
+    monkeypatch.setattr(condition_roots.sp, "solve", never)
+    model = build_model(load_text(SCENE))
+    a, b, c = (model.symbols.parameters[n] for n in "abc")
+    beta = sp.pi / 5
+    f = sp.cos(beta - sp.atan2(a * c * sp.sin(beta), b + a * c * sp.cos(beta))) - sp.Rational(1, 2)
+    assert condition_roots.parameter_roots(f, c, {}, model) is None

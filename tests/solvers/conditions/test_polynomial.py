@@ -63,3 +63,28 @@ def test_a_root_of_two_in_the_coefficients_does_not_make_a_cubic():
     off = [r for r in roots if r[s] != 0]
     assert len(off) == 2 and all(sp.simplify(r[c] - sp.sqrt(2) * g / (w**2 * a)) == 0 for r in off)
     assert all(sp.simplify(r[s] ** 2 + r[c] ** 2 - 1) == 0 for r in off)
+
+
+def test_a_long_linear_polynomial_over_ex_has_its_root_without_simplify(monkeypatch) -> None:
+    """a x + b with a, b long over sympy's EX domain (a radical and an atan2 of the
+    parameters, as a hoop tied by a cord in a track has): x = −b/a, by hand, and sympy's
+    simplify is not run on it (it ran past a minute there); a short one is left to
+    sympy's roots (None), whose form the answers keep."""
+    import importlib
+
+    from rbdsolve.solvers.conditions.polynomial import plain_linear_root
+
+    from conftest import counted_calls
+
+    R, k, m, g, beta, x = sp.symbols("R k m g beta x", positive=True)
+    rho = sp.sqrt(R**2 * k**2 + 2 * R * g * k * m * sp.cos(beta) + g**2 * m**2)
+    a = sum((R * k) ** j * rho + (g * m) ** j for j in range(1, 16))
+    b = sp.cos(beta - sp.atan2(R * k * sp.sin(beta), g * m + R * k * sp.cos(beta))) * rho * R * k - g * m
+    calls = counted_calls(monkeypatch, importlib.import_module("sympy.simplify.simplify"), "simplify")
+    polynomial = sp.Poly(a * x + b, x)
+    assert polynomial.get_domain().is_EX and sp.count_ops(polynomial.as_expr()) > 200
+    root = plain_linear_root(polynomial)
+    assert not calls
+    assert sp.expand(root * a + b) == 0
+    assert plain_linear_root(sp.Poly(rho * x - g, x)) is None  # short: sympy's roots
+    assert plain_linear_root(sp.Poly(x**2 - g, x)) is None  # not linear
