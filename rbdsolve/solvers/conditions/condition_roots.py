@@ -125,7 +125,7 @@ def _inside_everywhere(root: sp.Expr, p: sp.Symbol, low, high, model, angles: di
     names = sorted(root.free_symbols, key=str)
     if not points or not set(names) <= set(points[0]):
         return False  # a name the points do not set: no number
-    at = sp.lambdify(names, root, modules="mpmath")  # one compile for all the points (a long root: 0.1 s each by evalf)
+    at = sp.lambdify(names, root, modules="mpmath")  # compiled once: evalf took 0.1 s a point on a long root
     with mpmath.workdps(20):
         for point in points:
             try:
