@@ -96,7 +96,7 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
             continue  # a root of the equation squared only (the radical's other sign)
         if roots_of_it != {True}:
             return None  # a root only where its own condition holds
-        if p not in angles and not _inside_everywhere(r, p, low, high, model, angles):
+        if p not in angles and not _positive_everywhere(r, p, model, angles):
             return None  # inside at the samples, but not where the other parameters are otherwise
         turned = tidy(r + 2 * sp.pi * turns.pop()) if p in angles else _one_root(r)
         if not any(simplifies_to_zero(turned - x) for x in inside):
@@ -110,32 +110,32 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
 MORE_SAMPLES = 64
 
 
-def _inside_everywhere(root: sp.Expr, p: sp.Symbol, low, high, model, angles: dict) -> bool:
-    """Is a root found inside p's range at the SAMPLES points inside it wherever the
-    assumptions allow? Proved where sympy's assumptions give it a sign (√(g/R) > 0),
-    else judged at MORE_SAMPLES further admissible points: a root that leaves the range
-    where the other parameters are otherwise is no critical value of every case. A rod
+def _positive_everywhere(root: sp.Expr, p: sp.Symbol, model, angles: dict) -> bool:
+    """Is a root of a parameter p that is no angle, found inside p's range (0, ∞) at the
+    SAMPLES points, inside it wherever the assumptions allow? Proved where sympy's
+    assumptions give it a sign (√(g/R) > 0), else judged at MORE_SAMPLES further
+    admissible points: a root that leaves the range where the other parameters are
+    otherwise is no critical value of every case. A rod
     on a spring of natural length L₀ hanging from h above its pivot, modes about θ = π
     with |4h − 3l| = D: k_c = g m D/(3h (D − 4L₀)) is positive only where D > 4L₀, which
     all eight samples happened to draw; where D < 4L₀ the mode grows for every k, and
     "oscillation when k > k_c" was printed for it (seed 2039, scene 61)."""
-    if high == sp.oo and low == 0 and symbolic_sign(root) == 1:
+    if symbolic_sign(root) == 1:
         return True
     points = _more_points(model, p, tuple(sorted(angles.items(), key=str)))
     names = sorted(root.free_symbols, key=str)
     if not points or not set(names) <= set(points[0]):
         return False  # a name the points do not set: no number
-    at = sp.lambdify(names, root, modules="mpmath")  # compiled once: evalf took 0.1 s a point on a long root
+    at = sp.lambdify(names, root, modules="mpmath")  # once: evalf took 0.1 s a point on a long root
     with mpmath.workdps(20):
         for point in points:
             try:
                 z = complex(at(*(mpmath.mpf(sp.N(point[n], 25)._mpf_) for n in names)))
-            except (TypeError, ValueError, ZeroDivisionError):  # no number at a point: not decided there
+            except (TypeError, ValueError, ZeroDivisionError):  # no number at a point: undecided
                 return False
-            # within rounding of the range's lower end 0: exactly, as at the first samples (``_turns_at``)
-            near_zero = low == 0 and abs(z) <= 1e-10
-            if (_turns_at(root.xreplace(point), low, high, False) if near_zero
-                    else _turns_into(z, low, high, False)) is None:
+            # within rounding of 0: exactly, as at the first samples (``_turns_at``)
+            if (_turns_at(root.xreplace(point), 0, sp.oo, False) if abs(z) <= 1e-10
+                    else _turns_into(z, 0, sp.oo, False)) is None:
                 return False
     return True
 
@@ -143,7 +143,8 @@ def _inside_everywhere(root: sp.Expr, p: sp.Symbol, low, high, model, angles: di
 @memoized
 def _more_points(model, p: sp.Symbol, angles: tuple) -> tuple[dict, ...]:
     """MORE_SAMPLES admissible points with p left out (``admissible``), once per parameter."""
-    found = (admissible(model, random.Random(1000 + k), (p,), dict(angles)) for k in range(MORE_SAMPLES))
+    seeds = (random.Random(1000 + k) for k in range(MORE_SAMPLES))
+    found = (admissible(model, rng, (p,), dict(angles)) for rng in seeds)
     return tuple(point for point in found if point is not None)
 
 

@@ -1,5 +1,5 @@
 """A critical value counts only where it lies inside its parameter's range for every
-value of the others the assumptions allow (condition_roots._inside_everywhere).
+value of the others the assumptions allow (condition_roots._positive_everywhere).
 
 A rod of length l and mass m pivoted at O, its point B at 3l/4 from O joined by a
 spring of stiffness k and natural length L₀ to A = (0, h) above O (seed 2039's scene
