@@ -130,8 +130,27 @@ def partition(f: sp.Expr, model, first: sp.Symbol | None = None) -> Partition | 
     a question names, before all) whose roots cut its range into pieces of known sign,
     at least one change of sign among them; None where no parameter does. Found once
     per model (its samples are seeded: the same f gives the same pieces): the equilibria
-    and the modes about them ask for one stability condition each."""
-    return _partition(model, f, first)
+    and the modes about them ask for one stability condition each: f is taken without
+    its positive factors (``sign_part``), so det K = k − m Ω² and λ = (k − m Ω²)/m are
+    split once)."""
+    return _partition(model, sign_part(f), first)
+
+
+def sign_part(f: sp.Expr) -> sp.Expr:
+    """f without the factors that are positive wherever f is defined: positive numbers
+    and powers of positive parameters (λ = K/m has K's roots and sign). A negative
+    coefficient is kept as −1."""
+    if not isinstance(f, sp.Mul):
+        return f
+    kept = [x for x in f.args if not (x.is_Number or _positive_power(x))]
+    coefficient = f.as_coeff_Mul()[0]
+    return sp.Mul(*([-1] if coefficient.is_negative else []), *kept)
+
+
+def _positive_power(x: sp.Expr) -> bool:
+    """A positive parameter, or a real power of one: m, 1/d, k²."""
+    base, exponent = x.as_base_exp()
+    return isinstance(base, sp.Symbol) and base.is_positive is True and exponent.is_real is True
 
 
 @memoized
