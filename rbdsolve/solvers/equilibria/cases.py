@@ -181,8 +181,11 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
         return found, criticals
     cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
     changed = changes([piece for piece, _ in pieces])
-    # with values for what decides it, the values decide (at the boundary itself: undetermined)
-    decided = bool(model.values) and not inertia.expr.xreplace(dict(model.values)).free_symbols
+    # with values for what decides it, the values decide (at the boundary itself: undetermined);
+    # so do values that leave a parameter open but decide the sign for each of its values
+    # (k given below k_c = m (Ω² + g/R) for every Ω: unstable, not "depends on k")
+    decided = bool(model.values) and (not inertia.expr.xreplace(dict(model.values)).free_symbols
+                                      or found.stability in _DECIDED)
     if len(cases) == 1:
         reason = found.reason if decided else _one_verdict(cases[0].stability, existence.condition is sp.true)
         return replace(found, stability=found.stability if decided else cases[0].stability,
@@ -195,6 +198,9 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     at = "its critical value" if len(changed) == 1 else "its critical values"
     return (replace(found, stability=Stability.DEPENDS, stability_cases=cases,
                     reason=f"{what} as {p} passes {at}"), (*criticals, *changed))
+
+
+_DECIDED = (Stability.STABLE, Stability.UNSTABLE, Stability.NEUTRAL)  # found with the values (``classify``)
 
 
 def _where_needed(found: Equilibrium, model: Model, at: Mapping, first: sp.Symbol | None) -> Equilibrium:
