@@ -93,11 +93,15 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     residual = [tidy(g.xreplace(at)) for g in gradient(model)]
     if all(simplifies_to_zero(r) for r in residual):
         return at, ()
-    if missing_for(model, question):
+    if model.values and all(simplifies_to_zero(r.xreplace(dict(model.values))) for r in residual):
+        return at, (_at_the_values(about, residual, model),)
+    missing = missing_for(model, question)
+    if missing:
         (name, expr), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
         shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
-        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {shown} there (give values for "
-                            "the parameters to have a nearby equilibrium found)")
+        give = "values for the parameters" if not model.values else f"a value for {', '.join(missing)}"
+        raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {shown} there (give {give} "
+                            "to have a nearby equilibrium found)")
     try:
         listing(model)
     except UnsolvedError as exc:
@@ -117,6 +121,16 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
     raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {_number(r, model):.6g} there, and no "
                         f"equilibrium lies within {REFINE_TOL:g} of it")
+
+
+def _at_the_values(about, residual: list[sp.Expr], model: Model) -> str:
+    """The note for a point that is an equilibrium at the values given only: a bob on a
+    spring of natural length L₀ to a point d to the side, ∂V/∂θ = k l (L₀ − d) at θ = 0,
+    zero with d = L₀ given (the answers are written for any d and L₀, and hold there)."""
+    (name, _), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
+    shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero for every value"
+    return (f"about: an equilibrium at the values given, not for every value of the parameters: "
+            f"∂V/∂{unicode_name(name)} = {shown} there, 0 with the values given")
 
 
 def _nearest_listed(model: Model, at: dict) -> tuple[int, float] | None:
