@@ -88,3 +88,52 @@ def test_a_long_linear_polynomial_over_ex_has_its_root_without_simplify(monkeypa
     assert sp.expand(root * a + b) == 0
     assert plain_linear_root(sp.Poly(rho * x - g, x)) is None  # short: sympy's roots
     assert plain_linear_root(sp.Poly(x**2 - g, x)) is None  # not linear
+
+
+p_, q_ = sp.symbols("p q", positive=True)
+
+
+@pytest.mark.parametrize("system, symbols, expected", [
+    ([x**3 - p_ * x - 1], [x], 3),  # irreducible over ℚ(p): at a rational point too
+    ([x**2 - p_], [x], None),  # a quadratic: solved
+    ([x**6 - p_], [x], None),  # a binomial: x = p^(1/6), readable, left to sympy
+    ([p_ * s - q_ * c, s**2 + c**2 - 1], [s, c], None),  # eliminates to a quadratic in c
+    ([x], [x], None),  # no parameter: the basis over ℚ is already quick
+])
+def test_the_eliminants_degree_is_found_at_a_point(system, symbols, expected):
+    from rbdsolve.solvers.conditions.polynomial import _specialized_degree
+
+    assert _specialized_degree(system, symbols) == expected
+
+
+def test_a_rod_on_a_spring_to_the_side_is_refused_at_once_as_a_sextic(monkeypatch):
+    """A rod OA (length 2l, mass m) on a pivot, its end A on a spring of natural length
+    L₀ to W = (d, −2l) (a new user's trial, k open): with w the spring's length,
+    w² = d² − 4 d l s + 8 l² − 8 l² c, and w ∂V/∂θ = 0 is
+    l (−2 c w d k + 2 c L₀ d k + s w g m + 4 s w k l − 4 s L₀ k l) = 0 with s² + c² = 1.
+    Its eliminant in w is an irreducible sextic (checked here at a second point): no
+    radicals list its roots. sympy's lexicographic basis with the six parameters as
+    symbols ran past 2 minutes; the refusal is found at a point."""
+    import random
+
+    from rbdsolve.solvers.conditions import polynomial
+
+    m, l, d, L0, k, g = sp.symbols("m l d L0 k g", positive=True)
+    w = sp.Symbol("w")
+    system = [l * (-2 * c * w * d * k + 2 * c * L0 * d * k + s * w * g * m + 4 * s * w * k * l - 4 * s * L0 * k * l),
+              c**2 + s**2 - 1, 8 * c * l**2 + 4 * s * d * l + w**2 - d**2 - 8 * l**2]
+    rng = random.Random(2)  # another point than the solver's
+    point = {v: sp.Rational(rng.randint(2, 50), rng.randint(2, 50)) for v in (m, l, d, L0, k, g)}
+    eliminant = sp.groebner([e.xreplace(point) for e in system], s, c, w, order="lex").exprs[-1]
+    assert [sp.degree(f, w) for f, _ in sp.factor_list(eliminant, w)[1]] == [6]
+    symbolic = []
+    real = polynomial.sp.groebner
+
+    def groebner(polys, *gens, **options):
+        symbolic.append(any(set(p.free_symbols) - set(gens) for p in polys))
+        return real(polys, *gens, **options)
+
+    monkeypatch.setattr(polynomial.sp, "groebner", groebner)
+    with pytest.raises(UnsolvedError, match="irreducible factor of degree 6, whose roots have no closed form"):
+        polynomial_roots(system, [s, c, w], "the equilibrium equations")
+    assert symbolic == [False]  # one basis, at a point; none with the parameters as symbols
