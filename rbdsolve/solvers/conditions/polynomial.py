@@ -89,10 +89,9 @@ def _specialized_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int 
     eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
     if eliminant.free_symbols != {last}:
         return None
-    worst = max(_factors(eliminant, last), key=lambda f: sp.degree(f, last))
-    degree = sp.degree(worst, last)
-    binomial = len(sp.Poly(worst, last).terms()) == 2 and sp.Poly(worst, last).TC() != 0
-    return degree if degree >= 3 and not (degree >= 5 and binomial) else None
+    worst = sp.Poly(max(_factors(eliminant, last), key=lambda f: sp.degree(f, last)), last)
+    binomial = len(worst.terms()) == 2 and worst.TC() != 0
+    return worst.degree() if worst.degree() >= 3 and not (worst.degree() >= 5 and binomial) else None
 
 
 def _factors(eliminant: sp.Expr, last: sp.Symbol) -> list[sp.Expr]:

@@ -94,12 +94,14 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     if all(simplifies_to_zero(r) for r in residual):
         return at, ()
     if model.values and all(simplifies_to_zero(r.xreplace(dict(model.values))) for r in residual):
-        return at, (_at_the_values(about, residual, model),)
+        name, _, shown = _off(about, residual, model)
+        return at, (f"about: an equilibrium at the values given, not for every value of the parameters: "
+                    f"∂V/∂{unicode_name(name)} = {shown} there, 0 with the values given",)
     missing = missing_for(model, question)
     if missing:
-        (name, expr), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
-        shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
-        give = "values for the parameters" if not model.values else f"a value for {', '.join(missing)}"
+        name, expr, shown = _off(about, residual, model)
+        give = ("values for the parameters" if not model.values else
+                f"{'a value' if len(missing) == 1 else 'values'} for {', '.join(missing)}")
         raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {shown} there (give {give} "
                             "to have a nearby equilibrium found)")
     try:
@@ -123,14 +125,12 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
                         f"equilibrium lies within {REFINE_TOL:g} of it")
 
 
-def _at_the_values(about, residual: list[sp.Expr], model: Model) -> str:
-    """The note for a point that is an equilibrium at the values given only: a bob on a
-    spring of natural length L₀ to a point d to the side, ∂V/∂θ = k l (L₀ − d) at θ = 0,
-    zero with d = L₀ given (the answers are written for any d and L₀, and hold there)."""
-    (name, _), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
-    shown = to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero for every value"
-    return (f"about: an equilibrium at the values given, not for every value of the parameters: "
-            f"∂V/∂{unicode_name(name)} = {shown} there, 0 with the values given")
+def _off(about, residual: list[sp.Expr], model: Model) -> tuple[str, object, str]:
+    """The first coordinate whose ∂V/∂q is not zero for every value at the point given,
+    its expression in the file, and that ∂V/∂q as the message shows it: k l (L₀ − d) for
+    a bob on a spring of natural length L₀ to a point d to the side, at θ = 0."""
+    (name, expr), r = next((a, r) for a, r in zip(about, residual) if not simplifies_to_zero(r))
+    return name, expr, to_unicode(model.readable(r)) if sp.count_ops(r) <= 20 else "not zero"
 
 
 def _nearest_listed(model: Model, at: dict) -> tuple[int, float] | None:
