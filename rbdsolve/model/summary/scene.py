@@ -18,6 +18,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energies.spring_length import polar_distances
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.problem.quantities.quantity import ACCELERATION
+from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.problem.usage import unused_parameters
 from rbdsolve.report import steps as st
 
@@ -88,13 +89,28 @@ def _two_sided(model: Model) -> list[st.Step]:
             term = _term_of(model.readable(spring.stretch), sp.Abs(u))  # 4 a |sin(u)|, not |sin(u)| alone
             whole, plus, minus = (to_unicode(tidy(term.xreplace({sp.Abs(u): x}))) for x in (sp.Abs(u), u, -u))
             here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
-            why = (f"it is zero at {at}, where the spring passes through zero length" if here == 0 else
+            why = (f"it is zero at {at}, where the spring passes through zero length{_one_side(length.inside, model)}"
+                   if here == 0 else
                    f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
                    f"'assumptions:', such as {_positive(here)}, to take one side)")
             out.append(st.note(f"Spring '{spring.name}': its length is {whole}, which is {plus} where {shown} > 0 "
                                f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
                                "keep |…| and sign(…)"))
     return out
+
+
+def _one_side(u: sp.Expr, model: Model) -> str:
+    """How to take one side of u = 0 where u is a multiple of one coordinate (a bead on
+    a rod through the axis, on a spring from the axis: its length |s|): a range for the
+    coordinate on one side of 0 (model/energies/spring_length.py, ``_sign_over``)."""
+    held = [(q, n) for q, n in zip(model.q, model.coordinate_names()) if u.has(q)]
+    if len(held) != 1 or not (u / held[0][0]).is_constant():
+        return ""
+    name = held[0][1]
+    (declared,) = [c for c in model.problem.coordinates if c.name == name]
+    kind = "angle, periodic: false" if declared.kind is CoordinateKind.ANGLE else "length"
+    return (f" (give {name} a range on one side of 0 to take that side, such as "
+            f"'{name}: {{kind: {kind}, range: [0, …]}}')")
 
 
 def _term_of(stretch: sp.Expr, absolute: sp.Expr) -> sp.Expr:

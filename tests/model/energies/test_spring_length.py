@@ -86,6 +86,8 @@ def test_a_spring_through_zero_length_is_refused_by_modes_with_a_reason() -> Non
     report = solve_problem(_model(text))
     (note,) = [step for step in report.model.steps if "its length is |" in step.text]
     assert "zero at x = 0" in note.text
+    assert "give x a range on one side of 0 to take that side, such as 'x: {kind: length, range: [0, …]}'" \
+        in note.text
     modes = report.solutions[1]
     assert not modes.solved and "does not exist at this configuration" in modes.error
 
@@ -236,3 +238,19 @@ def test_the_note_gives_the_whole_length_not_only_what_is_under_the_bars() -> No
     report = solve_problem(_model(HALF_ANGLE))
     (note,) = [step for step in report.model.steps if "its length is" in step.text]
     assert "its length is 4 a |sin(u)|, which is 4 a sin(u) where sin(u) > 0 and −4 a sin(u) where" in note.text
+
+
+def test_the_range_the_note_suggests_takes_one_side() -> None:
+    """The note's own remedy, x in [0, 10 l0]: the length |x| is x, V = ½ k (x − l₀)², and
+    the equilibrium x = l₀ with K = k (by hand)."""
+    text = OFFSET.replace("A: [h, 0]", "A: [0, 0]").replace("P: [l + x, 0]", "P: [x, 0]")
+    text = text.replace("coordinates: [x]", "coordinates: {x: {kind: length, range: [0, 10*l0]}}")
+    text = text.replace("  - eom\n", "  - equilibria\n")
+    model = _model(text)
+    k, l0 = _symbols(model, "k l0")
+    (x,) = model.q
+    assert sp.expand(potential_energy(model).total - k * (x - l0) ** 2 / 2) == 0
+    report = solve_problem(model)
+    assert not any("its length is |" in step.text for step in report.model.steps)
+    (equilibrium,) = report.solutions[0].answers.equilibria
+    assert equilibrium.at["x"] == l0 and equilibrium.hessian == sp.Matrix([[k]])
