@@ -26,7 +26,7 @@ from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
-from rbdsolve.solvers.conditions.conditions import critical_values
+from rbdsolve.solvers.conditions.conditions import critical_values, sign_part
 from rbdsolve.solvers.conditions.condition_roots import admissible
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.lagrange.energy_integral import energy_step
@@ -126,15 +126,29 @@ def _timeless(r: Reaction, model: Model) -> Reaction:
 
 def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -> dict[str, FirstZero] | None:
     """With every parameter given a value: where each push or tension first reaches zero
-    along the motion, or where the motion turns back before (first_zero.py)."""
-    if missing_values(model) or not _an_angle(model):
+    along the motion, or where the motion turns back before (first_zero.py). Parameters
+    left open may only scale each push and q̇² (positive factors, ``sign_part``): their
+    signs along the way, so the places, are then the same for every value of them (a
+    ladder released at φ₀ = 60° leaves the wall at sin φ = ⅔ sin φ₀ whatever m, L, g)."""
+    if not _an_angle(model):
         return None
     q = model.q[0]
     name = model.coordinate_names()[0]
-    found = {str(c.symbol): first_zero(values[c.symbol], rate_squared, q, table[q], name, dict(model.values))
-             for s in supports for c in s.components if c.one_sided}
+    given = dict(model.values)
+    pushes = {str(c.symbol): values[c.symbol] for s in supports for c in s.components if c.one_sided}
+    if missing_values(model):
+        pushes, rate_squared = {k: _unscaled(v, given, q) for k, v in pushes.items()}, _unscaled(rate_squared, given, q)
+        if rate_squared is None or table[q].xreplace(given).free_symbols:
+            return None
+    found = {k: first_zero(v, rate_squared, q, table[q], name, given) for k, v in pushes.items() if v is not None}
     found = {k: v for k, v in found.items() if v is not None}
-    return _before_first_loss(found, name, float(table[q].xreplace(dict(model.values)))) or None
+    return _before_first_loss(found, name, float(table[q].xreplace(given))) or None
+
+
+def _unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:
+    """expr at the values, without its positive factors, where that leaves q alone."""
+    found = sign_part(sp.factor_terms(expr.xreplace(given)))
+    return found if found.free_symbols <= {q} else None
 
 
 def _before_first_loss(found: dict[str, FirstZero], name: str, start: float) -> dict[str, FirstZero]:
