@@ -25,7 +25,10 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     """Every root {symbol: value} of the polynomial ``system``; UnsolvedError naming
     ``what`` where some root has no closed form, or none an exam writes
     (``_unreadable_degree``)."""
-    degree = _specialized_degree(system, symbols) or _unreadable_degree(system, symbols)
+    degree = _eliminant_degree(system, symbols)
+    other = _readable_order(system, symbols) if degree else None
+    if other is not None:
+        symbols, degree = other, None
     if degree and degree >= 5:
         raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}, whose "
                             "roots have no closed form (in radicals) in general: an exact list would leave solutions "
@@ -41,6 +44,24 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]
+
+
+def _eliminant_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
+    """The degree of the eliminant's largest irreducible factor in the last of ``symbols``
+    where no exam writes its roots (3 or more), found at a point of the parameters first."""
+    return _specialized_degree(system, symbols) or _unreadable_degree(system, symbols)
+
+
+def _readable_order(system: list[sp.Expr], symbols: list[sp.Symbol]) -> list[sp.Symbol] | None:
+    """The symbols with another one last, the first whose eliminant is readable, where the
+    last one's is not: ∂V/∂φ ∝ 2 sin²φ + 2 sin φ − 1 eliminates to cos⁴φ = 3/4 in cos φ
+    (irreducible, degree 4) but to a quadratic in sin φ, sin φ = (√3 − 1)/2; None where
+    none is."""
+    for last in symbols[:-1]:
+        order = [x for x in symbols if x != last] + [last]
+        if not _eliminant_degree(system, order):
+            return order
+    return None
 
 
 def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
