@@ -253,6 +253,21 @@ questions:
 """
 
 
+# A bob of mass m at P = (l φ, y(φ)) in gravity: V = m g y, so ∂V/∂φ and its higher
+# derivatives are y's, times m g (equilibria tests write y; ``.replace("{HEIGHT}", …)``).
+BOB_AT_HEIGHT = """\
+parameters: [m, l, g]
+coordinates: [phi]
+gravity: [0, -g]
+points:
+  P: "[l*phi, {HEIGHT}]"
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - equilibria
+"""
+
+
 def pytest_collection_modifyitems(config, items) -> None:
     """Each problem file's checks side by side (its golden answers, JSON read-back, audit
     and LaTeX compile, each in its own module), at the place of the first: pytest-xdist's worksteal

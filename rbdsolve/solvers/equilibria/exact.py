@@ -37,6 +37,7 @@ from rbdsolve.solvers.equilibria.answers import EquilibriaAnswers, Equilibrium, 
 from rbdsolve.solvers.equilibria.angles import angle_of
 from rbdsolve.solvers.equilibria.cases import existing_where, gradient, stiffness_at, with_cases
 from rbdsolve.solvers.equilibria.evident import evident_roots
+from rbdsolve.solvers.equilibria.higher_order import higher_order
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import never_balanced, uniform_equilibrium
@@ -322,6 +323,9 @@ def _classify(model: Model, at: dict[sp.Expr, sp.Expr]) -> Equilibrium:
         if len(flat) == inertia.zero:
             return Equilibrium(where, Stability.NEUTRAL, H,
                                "V does not depend on " + ", ".join(unicode_name(names[q]) for q in flat))
+        decided = higher_order(model, at)
+        if decided is not None:
+            return Equilibrium(where, decided[0], H, decided[1])
         return Equilibrium(where, Stability.UNDETERMINED, H,
                            "the Hessian of V is singular: higher-order terms decide")
     return Equilibrium(where, Stability.STABLE, H, "the Hessian of V is positive definite")

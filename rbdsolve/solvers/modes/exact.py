@@ -46,6 +46,7 @@ from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
 from rbdsolve.solvers.equilibria.cases import necessary_where, stiffness_at, unsquared
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
+from rbdsolve.solvers.equilibria.higher_order import degenerate_minimum_note
 from rbdsolve.solvers.conditions.present_conditions import condition_relations
 from rbdsolve.solvers.modes.answers import (CERTIFIED_DEGREE, EachModesAnswers, Form, ModesAnswers, Motion, Skipped,
                                              none_answered, with_amplitude_check)
@@ -91,6 +92,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         raise UnsolvedError(missing)
     # as about each: a case outside a condition the equilibrium needs is dropped
     answers, steps = modes_at(at, model, necessary_where(at, model, first), first)
+    notes += degenerate_minimum_note(model, at, stiffness_at(model, at))
     answers = replace(answers, exists_when=where)  # a script reads where it holds, as the text says
     if where is not sp.true:  # a case outside it is left out: say so
         steps = (st.note("The equilibrium exists only where the following holds; its small motions are "

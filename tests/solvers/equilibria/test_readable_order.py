@@ -17,18 +17,9 @@ import sympy as sp
 
 import rbdsolve
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots
+from tests.conftest import BOB_AT_HEIGHT
 
-SCENE = """\
-parameters: [m, l, g]
-coordinates: [phi]
-gravity: [0, -g]
-points:
-  P: "l*[phi, -4*cos(phi) - sin(2*phi)]"
-bodies:
-  bob: {shape: particle, mass: m, at: P}
-questions:
-  - equilibria
-"""
+SCENE = BOB_AT_HEIGHT.replace("{HEIGHT}", "l*(-4*cos(phi) - sin(2*phi))")
 
 
 def test_the_quadratic_in_the_sine_is_solved_with_the_sine_last() -> None:
