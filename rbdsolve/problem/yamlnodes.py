@@ -242,7 +242,7 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputEr
         problem = f"YAML syntax error: {printable(problem)}"
         if exc.context:
             problem += f" ({printable(exc.context)})"
-        problem += _bracket_hint(text, loc.line - 1)
+        problem += _bracket_hint(text, loc.line - 1) or _colon_hint(exc, text, loc.line - 1)
     return InputError(problem, loc)
 
 
@@ -298,6 +298,18 @@ def _bracket_hint(text: str, line: int) -> str:
         if value.startswith("[") and "]" in value and value[value.index("]") + 1:].strip():
             return f'; an expression that starts with \'[\' must be quoted: "{printable(value)}"'
     return ""
+
+
+def _colon_hint(exc: yaml.MarkedYAMLError, text: str, line: int) -> str:
+    """YAML reads ': ' inside a plain value as a second key (title: a rod: released):
+    say to quote the value."""
+    if "mapping values are not allowed" not in (exc.problem or ""):
+        return ""
+    lines = Lines.split(text)
+    key, _, value = lines[line].partition(":") if 0 <= line < len(lines) else ("", "", "")
+    if ": " not in value.strip() or value.strip()[:1] in "\"'[{":
+        return ""
+    return f'; a value holding ": " must be quoted: {key.strip()}: "{printable(value.strip())}"'
 
 
 def _reader_error(exc: yaml.reader.ReaderError, text: str, path: str) -> InputError:
