@@ -146,6 +146,16 @@ def same(a, b, bx, tol: float = 1e-7) -> bool:
     return True
 
 
+def _zero_stiffness(ms: System, K: np.ndarray) -> bool:
+    """K has an eigenvalue that is zero within the rounding of its 40-digit differences:
+    with each coordinate at its scale (K_ij s_i s_j, an energy), one below 10⁻¹⁸ of the
+    scene's energy scale. The λ themselves have no scale of their own: a bead on a hoop
+    at the critical rate has the one λ = −3.8e-25, all rounding, which their relative
+    test called negative."""
+    scaled = K * np.outer([float(s) for s in ms.scale], [float(s) for s in ms.scale])
+    return bool(np.abs(np.linalg.eigvalsh(scaled)).min() <= 1e-18 * float(ms.force_scale()))
+
+
 def stability(ms: System, q) -> tuple[str, list[float]]:
     """stable (K positive definite on M), unstable (a negative eigenvalue) or singular,
     with the eigenvalues λ of K a = λ M a (K symmetrized: conservative at rest)."""
@@ -156,6 +166,8 @@ def stability(ms: System, q) -> tuple[str, list[float]]:
     K = (K + K.T) / 2
     lam = eigh(K, (M + M.T) / 2, eigvals_only=True)
     top = max(abs(lam).max(), 1e-300)
+    if _zero_stiffness(ms, K):
+        return "singular", list(lam)
     if lam.min() > 1e-9 * top:
         return "stable", list(lam)
     if lam.min() < -1e-9 * top:
