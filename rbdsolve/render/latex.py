@@ -29,7 +29,7 @@ _MATH_CHARS = {
     "√": r"\surd", "∈": r"\in", "≤": r"\le", "≥": r"\ge", "×": r"\times",
     "²": "^2", "³": "^3", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3", "ᵀ": "^T",
     "∫": r"\int", "±": r"\pm", "∓": r"\mp", "≈": r"\approx", "≠": r"\neq", "∝": r"\propto",
-    "°": r"^\circ", "→": r"\to", "∞": r"\infty", "⁴": "^4",
+    "°": r"^\circ", "→": r"\to", "∞": r"\infty", "⁴": "^4", "⁵": "^5", "⁶": "^6",
 }  # fmt: skip
 _GREEK_CHARS = {v: "\\" + ("varphi" if k == "phi" else k) for k, v in GREEK.items()
                 if k not in ("lamda", "varphi")}

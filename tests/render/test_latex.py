@@ -22,6 +22,8 @@ def test_prose_becomes_latex_text() -> None:
     assert text("θ̇ and φ̈") == "\\ensuremath{\\dot{\\theta}} and \\ensuremath{\\ddot{\\varphi}}"
     assert text("50% & #1") == "50\\% \\& \\#1"
     assert text("☃") == "[U+2603]"
+    # a stability decided past K = 0 names V's derivative of order 3 to 6 (equilibria/higher_order.py)
+    assert text("∂⁶V/∂x⁶") == "\\ensuremath{\\partial^6}V/\\ensuremath{\\partial}x\\ensuremath{^6}"
 
 
 FILES = sorted(p for p in PROBLEMS.rglob("*.yaml") if not p.name.endswith(".expected.yaml"))
