@@ -103,14 +103,13 @@ def _one_side(u: sp.Expr, model: Model) -> str:
     """How to take one side of u = 0 where u is a multiple of one coordinate (a bead on
     a rod through the axis, on a spring from the axis: its length |s|): a range for the
     coordinate on one side of 0 (model/energies/spring_length.py, ``_sign_over``)."""
-    held = [(q, n) for q, n in zip(model.q, model.coordinate_names()) if u.has(q)]
+    held = [(q, c) for q, c in zip(model.q, model.problem.coordinates) if u.has(q)]  # q in the file's order
     if len(held) != 1 or not (u / held[0][0]).is_constant():
         return ""
-    name = held[0][1]
-    (declared,) = [c for c in model.problem.coordinates if c.name == name]
+    declared = held[0][1]
     kind = "angle, periodic: false" if declared.kind is CoordinateKind.ANGLE else "length"
-    return (f" (give {name} a range on one side of 0 to take that side, such as "
-            f"'{name}: {{kind: {kind}, range: [0, …]}}')")
+    return (f" (give {declared.name} a range on one side of 0 to take that side, such as "
+            f"'{declared.name}: {{kind: {kind}, range: [0, …]}}')")
 
 
 def _term_of(stretch: sp.Expr, absolute: sp.Expr) -> sp.Expr:

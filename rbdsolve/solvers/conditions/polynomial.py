@@ -73,6 +73,15 @@ def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int |
     roots) and then spends minutes testing and tidying (a rod on a turning arm: a
     quartic in cos θ, past 150 s). A factor of degree 5 or more is refused by solve's
     own strict mode."""
+    factors = _eliminant_factors(system, symbols)
+    worst = max((sp.degree(f, symbols[-1]) for f in factors), default=0) if factors else 0
+    return worst if worst in (3, 4) else None
+
+
+def _eliminant_factors(system: list[sp.Expr], symbols: list[sp.Symbol]) -> list[sp.Expr] | None:
+    """The irreducible factors (``_factors``) of the last polynomial of the system's
+    lexicographic Gröbner basis, where that is univariate in the last symbol; None where
+    the system is not zero-dimensional, or there is nothing to eliminate (solve decides)."""
     if not symbols:
         return None
     try:
@@ -82,10 +91,8 @@ def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int |
     last = symbols[-1]
     eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
     if eliminant.free_symbols & set(symbols) != {last}:
-        return None  # not zero-dimensional, or nothing to eliminate: solve decides
-    degrees = [sp.degree(f, last) for f in _factors(eliminant, last)]
-    worst = max(degrees, default=0)
-    return worst if worst in (3, 4) else None
+        return None
+    return _factors(eliminant, last)
 
 
 def _specialized_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
@@ -102,15 +109,11 @@ def _specialized_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int 
         return None
     rng = random.Random(37)
     point = {p: sp.Rational(rng.randint(101, 997), rng.randint(101, 997)) for p in parameters}
-    try:
-        basis = sp.groebner([e.xreplace(point) for e in system], *symbols, order="lex")
-    except (PolynomialError, NotImplementedError):
+    factors = _eliminant_factors([e.xreplace(point) for e in system], symbols)
+    if not factors:
         return None
     last = symbols[-1]
-    eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
-    if eliminant.free_symbols != {last}:
-        return None
-    worst = sp.Poly(max(_factors(eliminant, last), key=lambda f: sp.degree(f, last)), last)
+    worst = sp.Poly(max(factors, key=lambda f: sp.degree(f, last)), last)
     binomial = len(worst.terms()) == 2 and worst.TC() != 0
     return worst.degree() if worst.degree() >= 3 and not (worst.degree() >= 5 and binomial) else None
 

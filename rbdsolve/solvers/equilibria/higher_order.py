@@ -25,7 +25,7 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
-from rbdsolve.model.energies.energy import potential_energy
+from rbdsolve.model.energies.energy import memoized, potential_energy
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 from rbdsolve.solvers.equilibria.answers import Stability
 
@@ -36,7 +36,13 @@ def higher_order(model: Model, at: Mapping[sp.Expr, sp.Expr]) -> tuple[Stability
     """(stability, reason) from the first derivative of V past the second that is not
     zero at ``at``, where its sign is decided (the parameters' signs, the values, the
     assumptions); None with more than one coordinate, or where none up to the sixth is
-    known not to vanish."""
+    known not to vanish. Once per model and point (the equilibria classify it, the modes
+    about it ask again)."""
+    return _higher_order(model, tuple(at.items()))
+
+
+@memoized
+def _higher_order(model: Model, at: tuple) -> tuple[Stability, str] | None:
     if len(model.q) != 1:
         return None
     (q,) = model.q
