@@ -476,6 +476,12 @@ def tidy_matrix(matrix: sp.Matrix) -> sp.Matrix:
     return matrix.applyfunc(tidy)
 
 
+def by_monomials(expr: sp.Expr, generators: list[sp.Symbol]) -> sp.Expr:
+    """Written as Σ (coefficient) × (monomial in ``generators``), each coefficient tidied:
+    pₓ = (M + m) ẋ + m (R − r) cos θ θ̇, not its terms expanded."""
+    return sp.Add(*[mono * coefficient for mono, coefficient in collect_in(tidy(expr), generators).items()])
+
+
 def collect_in(expr: sp.Expr, generators: list[sp.Symbol], tidied: bool = False) -> dict[sp.Expr, sp.Expr]:
     """Split ``expr`` into monomials in the symbols ``generators`` (q̇, q̈), each with its
     coefficient tidied (skipped when ``expr`` was built from tidied coefficients already).

@@ -20,6 +20,8 @@ class EnergyAnswers:
     there: There | None  # the rates and speeds there, or None
     work: dict[str, sp.Expr] | None = None  # applied load -> its work from the start, V_F(q₀) − V_F(q)
     critical: tuple[CriticalValue, ...] = ()  # the critical values of ``there.reached_when``
+    momenta: dict[str, sp.Expr] | None = None  # cyclic coordinate -> its constant momentum p = ∂L/∂q̇ (several coordinates)
+    rates: dict[str, sp.Expr] | None = None  # cyclic coordinate -> its rate in q and the other's rate, from p
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     if not question.options.to:
         raise UnsolvedError("the numeric route answers at a configuration: give 'to: {q: VALUE}'")
-    exact, e = energy(question.options, model)
+    exact, e, _ = energy(question.options, model)
     there = exact.there
     values = numeric((exact.start, there.rate_squared, there.rate, there.speed), model.values)
     answers = NumericEnergyAnswers(*values)

@@ -40,6 +40,7 @@ class EnergyIntegral:
     plain: bool  # h is T + V (T quadratic in the rates)
     start: sp.Expr  # h at the start state
     rate_squared: sp.Expr | None  # q̇² as a function of q (one coordinate), else None
+    kept: int = 0  # the coordinate rate_squared is of (several: the one left by the momentum integrals)
 
 
 def not_conserved(model: Model) -> str | None:
@@ -95,5 +96,6 @@ def energy_step(model: Model, e: EnergyIntegral, from_rest: bool):
                 f"degree 2 and 0 in the rates) is constant, {h} = its value at the start")
     math = [Relation(model.to_time(e.h), model.to_time(e.start))]
     if e.rate_squared is not None:
-        math.append(Relation(model.to_time(model.qd[0]) ** 2, model.to_time(e.rate_squared)))
-    return st.result(said + (", so" if e.rate_squared is not None else ":"), *math)
+        math.append(Relation(model.to_time(model.qd[e.kept]) ** 2, model.to_time(e.rate_squared)))
+    so = ", and with the cyclic rates above put in, so" if len(model.q) > 1 else ", so"
+    return st.result(said + (so if e.rate_squared is not None else ":"), *math)

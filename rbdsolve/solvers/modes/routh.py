@@ -30,7 +30,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.display import Relation
 from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.form.tidy import collect_in, has_root, tidy
+from rbdsolve.form.tidy import by_monomials, has_root, tidy
 from rbdsolve.model.build import Model
 from rbdsolve.model.derivative import derivative
 from rbdsolve.model.energies.energy import kinetic_energy, potential_energy
@@ -145,7 +145,7 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
                  for k, x in zip(cyclic, solved)]
     one = len(cyclic) == 1
     which = ", ".join(unicode_name(names[k]) for k in cyclic)
-    written = _by_rates(routhian, [model.qd[k] for k in kept])
+    written = by_monomials(routhian, [model.qd[k] for k in kept])
     rows = [Relation(sp.Symbol("R"), model.to_time(written))] if sp.count_ops(written) <= MAX_SHOWN_OPS else []
     steps = (
         st.equation(f"{which} {'is' if one else 'are'} cyclic (L holds {'its rate' if one else 'their rates'}, "
@@ -158,11 +158,6 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
 
 
 MAX_SHOWN_OPS = 80  # a longer Routhian is left out of the steps (its M, G and K follow)
-
-
-def _by_rates(expr: sp.Expr, rates: list) -> sp.Expr:
-    """Written as Σ (coefficient) × (monomial in the rates), each coefficient tidied."""
-    return sp.Add(*[mono * coefficient for mono, coefficient in collect_in(tidy(expr), rates).items()])
 
 
 def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], routh: bool) -> None:
