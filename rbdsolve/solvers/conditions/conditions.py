@@ -328,7 +328,14 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
             continue
         found = partition(condition, model, first)
         if found is None:
-            return None
+            # no change of sign in any parameter: where it keeps one throughout (an incline's
+            # g m sin α + 6 k r over α in (0, π)) that sign decides, else nothing is split
+            sign = constant_sign(condition, model, first)
+            if sign is None:
+                return None
+            if sign < 0 or (sign == 0 and condition in strict):
+                return Existence(sp.false, ())
+            continue
         closed = {c.value: condition not in strict and _finite_at(condition, c) for c in found.criticals}
         held = [piece.when(closed.get(piece.low, False), closed.get(piece.high, False))
                 for piece in found.pieces if piece.sign > 0]

@@ -27,8 +27,9 @@ from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import crushed_sides, held_sides, without_deltas
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
-from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, existing,
-                                                 existing_within_bounds, exists_when, partition, real_where)
+from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, constant_sign,
+                                                 existing, existing_within_bounds, exists_when, partition,
+                                                 real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.roots import roots_as_absolute
 from rbdsolve.form.tidy import square_root, tidy
@@ -178,7 +179,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
         return found, criticals
     pieces = _stability_pieces(found.hessian, existence.condition, model, first)
     if pieces is None:
-        return found, criticals
+        return _kept_sign(found, model, first, existence.condition is sp.true), criticals
     cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
     changed = changes([piece for piece, _ in pieces])
     # with values for what decides it, the values decide (at the boundary itself: undetermined);
@@ -201,6 +202,25 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
 
 
 _DECIDED = (Stability.STABLE, Stability.UNSTABLE, Stability.NEUTRAL)  # found with the values (``classify``)
+
+
+def _kept_sign(found: Equilibrium, model: Model, first: sp.Symbol | None, everywhere: bool) -> Equilibrium:
+    """An undetermined equilibrium whose K keeps one sign over every value the
+    parameters' ranges allow (``constant_sign``: no root in any parameter's range, an
+    angle parameter's (0, π) included), decided by it: a diagonal entry negative
+    throughout, unstable; every leading minor positive throughout, stable (Sylvester). A
+    disk on a spring, on an incline of angle α: K = −r (g m sin α + 18 k r/5) < 0 at its
+    top, though sin α alone has no sign."""
+    if found.stability is not Stability.UNDETERMINED:
+        return found
+    H = found.hessian
+    if any(constant_sign(H[i, i], model, first) == -1 for i in range(H.rows)):
+        stability = Stability.UNSTABLE
+    elif all(constant_sign(tidy(H[:k, :k].det()), model, first) == 1 for k in range(1, H.rows + 1)):
+        stability = Stability.STABLE
+    else:
+        return found
+    return replace(found, stability=stability, reason=_one_verdict(stability, everywhere))
 
 
 def _where_needed(found: Equilibrium, model: Model, at: Mapping, first: sp.Symbol | None) -> Equilibrium:
