@@ -54,6 +54,8 @@ def implies(assumptions: tuple[Assumed, ...], condition: sp.Basic) -> bool:
     """Whether the assumptions make a condition on one parameter hold for every value
     they allow: the interval the assumptions on that parameter leave lies within the
     condition's set (α ≤ π/2 under 0 < α < π/2). False where that is not decided so."""
+    if _stated(assumptions, condition):
+        return True
     free = condition.free_symbols
     if len(free) != 1 or condition in (sp.true, sp.false):
         return False
@@ -67,6 +69,22 @@ def implies(assumptions: tuple[Assumed, ...], condition: sp.Basic) -> bool:
         return allowed.is_subset(holds) is True
     except (NotImplementedError, TypeError, ValueError):
         return False
+
+
+def _stated(assumptions: tuple[Assumed, ...], condition: sp.Basic) -> bool:
+    """Whether the condition, x > 0 (or ≥ 0), is an assumption itself up to a positive
+    number: cos(a + b) > 0 under [cos(a + b) > 0], which the one-parameter test above
+    cannot read (two parameters) though the file says it in as many words."""
+    if not isinstance(condition, (sp.StrictGreaterThan, sp.GreaterThan)):
+        return False
+    x = sp.expand(condition.lhs - condition.rhs)
+    for a in assumptions:
+        if a.difference == 0 or (isinstance(condition, sp.StrictGreaterThan) and not a.strict):
+            continue
+        ratio = sp.cancel(x / a.difference)
+        if ratio.is_number and ratio.is_positive:
+            return True
+    return False
 
 
 def assumed(problem: Problem, names: Symbols) -> tuple[Assumed, ...]:

@@ -63,6 +63,23 @@ def test_a_wound_side_the_signs_do_not_decide_is_refused_with_the_way_out() -> N
         build_model(load_text(renamed, "s.yaml"))
 
 
+def test_the_assumption_the_way_out_suggests_is_taken() -> None:
+    """A pull at a sum of two angles, a + b: the message asks for [cos(a + b) > 0], and
+    given, it decides (it was refused the same way again: the test of what an assumption
+    implies read one-parameter conditions only). Q_x = F (cos(a + b) − r/R), as the
+    spool's by hand above with α = a + b."""
+    text = SPOOL.read_text(encoding="utf-8").replace("assumptions: [r < R, alpha < pi/2]", "assumptions: [r < R]")
+    text = text.replace("  alpha: angle of the string above the horizontal", "  a: slope\n  b: string to the slope")
+    text = text.replace("F*[cos(alpha), sin(alpha)]", "F*[cos(a + b), sin(a + b)]")
+    with pytest.raises(InputError, match=re.escape("such as 'assumptions: [cos(a + b) > 0]'")):
+        build_model(load_text(text, "s.yaml"))
+    model = build_model(load_text(text.replace("assumptions: [r < R]", "assumptions: [r < R, cos(a + b) > 0]"),
+                                  "s.yaml"))
+    s = _symbols(model)
+    angle = sp.cos(s["a"] + s["b"])
+    assert _zero(model.loads[0].generalized[0] - s["F"] * (angle - s["r"] / s["R"]))
+
+
 ROD = """\
 parameters: {m: mass, l: length, h: height, W: weight, g: gravity, F0: force, w: rate, M0: couple}
 coordinates: [theta]
