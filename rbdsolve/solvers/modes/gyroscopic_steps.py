@@ -96,8 +96,10 @@ def _stability_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]
     steps = [st.equation(f"In {lam} = {w}² the equation has degree {len(a.frequencies)}; the motion is stable to first "
                          f"order when its roots {lam} are all real, positive and distinct (every {w} real), "
                          + which, *conditions)]
-    held = "" if _positive_definite(a) else " (the gyroscopic terms hold it where K alone would not)"
-    verdict = {Stability.STABLE: f"Every condition holds: the motion is stable{held}.",
+    held = " (the gyroscopic terms hold it where K alone would not)" if _not_held_by_K(a) else ""
+    free = (", in every direction but the neutral one (along it nothing restores a disturbance: it drifts at a "
+            "constant rate)") if a.neutral else ""
+    verdict = {Stability.STABLE: f"Every condition holds: the motion is stable{free}{held}.",
                Stability.UNSTABLE: "A condition fails: the motion is unstable.",
                Stability.UNDETERMINED: "Whether they hold depends on the parameters in a way not split here: give "
                                        "values, or state the signs under 'assumptions:'."}
@@ -111,10 +113,13 @@ def _stability_steps(a: GyroscopicModesAnswers, labels: Labels) -> list[st.Step]
     return steps
 
 
-def _positive_definite(a: GyroscopicModesAnswers) -> bool:
-    """Is K positive definite by the parameters' signs (then stable without G too)?"""
+def _not_held_by_K(a: GyroscopicModesAnswers) -> bool:
+    """Does K have a negative eigenvalue by the parameters' signs (a K positive
+    definite holds the motion without G; one positive semidefinite leaves its zero
+    directions to the neutral note, not to G; one whose signs are not decided is not
+    said to need G)?"""
     found = matrix_inertia(sp.Matrix(a.K), {})
-    return isinstance(found, Inertia) and found.positive == a.K.rows
+    return isinstance(found, Inertia) and found.negative > 0
 
 
 def _case(case, a: GyroscopicModesAnswers, labels: Labels) -> list[Relation]:

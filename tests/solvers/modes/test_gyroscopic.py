@@ -152,11 +152,7 @@ def test_squares_out_of_a_root() -> None:
     assert str(below) == "sqrt(A*(g - k)/3)/(m*r**2)"
 
 
-def test_gimbals_without_springs_have_a_neutral_direction() -> None:
-    """A free gyroscope in gimbals (no springs): K = 0, det = A²ω⁴ − C²s²ω², so ω = 0
-    (neutral: a steady turn of the gimbals) and the nutation ω = C s/A = 2 s (by hand,
-    A = m r²/4, C = m r²/2)."""
-    text = """
+GIMBALS = """
 parameters: {m: mass, r: radius, s: spin rate}
 coordinates: [psi, theta]
 triads:
@@ -168,10 +164,27 @@ bodies:
 questions:
   - modes: {about: {psi: 0, theta: 0}}
 """
-    (modes,) = solutions(text)
+
+
+def test_gimbals_without_springs_have_a_neutral_direction() -> None:
+    """A free gyroscope in gimbals (no springs): K = 0, det = A²ω⁴ − C²s²ω², so ω = 0
+    (neutral: a steady turn of the gimbals) and the nutation ω = C s/A = 2 s (by hand,
+    A = m r²/4, C = m r²/2)."""
+    (modes,) = solutions(GIMBALS)
     assert modes.error is None, modes.error
     assert modes.answers.neutral == 1
     assert [sp.simplify(w - 2 * s) for w in modes.answers.frequencies] == [0]
+
+
+def test_the_verdict_names_the_neutral_direction() -> None:
+    """With K = 0 nothing restores a turn of the gimbals: the verdict says so, and does
+    not credit the gyroscopic terms with holding what K alone would not (K has no
+    negative eigenvalue; a new user's conical pendulum read "stable (the gyroscopic
+    terms hold it …)" with a direction that drifts)."""
+    (modes,) = solutions(GIMBALS)
+    text = " ".join(step.text for step in modes.steps)
+    assert "in every direction but the neutral one" in text
+    assert "hold it where K alone would not" not in text
 
 
 def test_both_routes_write_strict_json() -> None:
