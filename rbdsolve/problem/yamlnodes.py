@@ -242,7 +242,8 @@ def _yaml_error(exc: yaml.MarkedYAMLError, path: str, text: str = "") -> InputEr
         problem = f"YAML syntax error: {printable(problem)}"
         if exc.context:
             problem += f" ({printable(exc.context)})"
-        problem += _bracket_hint(text, loc.line - 1) or _colon_hint(exc, text, loc.line - 1)
+        problem += (_bracket_hint(text, loc.line - 1) or _colon_hint(exc, text, loc.line - 1)
+                    or _flow_bracket_hint(exc, text, loc))
     return InputError(problem, loc)
 
 
@@ -298,6 +299,28 @@ def _bracket_hint(text: str, line: int) -> str:
         if value.startswith("[") and "]" in value and value[value.index("]") + 1:].strip():
             return f'; an expression that starts with \'[\' must be quoted: "{printable(value)}"'
     return ""
+
+
+def _flow_bracket_hint(exc: yaml.MarkedYAMLError, text: str, loc: Location) -> str:
+    """Inside { }, YAML ends a plain value at '[' (at: r*[cos(phi), sin(phi)]): say to
+    quote the value, from its key's ': ' to the ',' or '}' after its brackets close."""
+    if "got '['" not in (exc.problem or "") or "flow mapping" not in (exc.context or ""):
+        return ""
+    lines = Lines.split(text)
+    row = lines[loc.line - 1] if 0 < loc.line <= len(lines) else ""
+    start, at = row.rfind(": ", 0, loc.column - 1), loc.column - 1
+    if start < 0 or row[at:at + 1] != "[":
+        return ""
+    depth, end = 0, at
+    for end in range(at, len(row)):
+        depth += {"[": 1, "(": 1, "]": -1, ")": -1}.get(row[end], 0)
+        if depth == 0 and row[end] in ",}":
+            break
+    else:
+        end = len(row)
+    key = row[:start].split("{")[-1].split(",")[-1].strip()
+    value = row[start + 2:end].strip()
+    return f'; inside {{ }} an expression holding \'[\' must be quoted: {key}: "{printable(value)}"'
 
 
 def _colon_hint(exc: yaml.MarkedYAMLError, text: str, line: int) -> str:
