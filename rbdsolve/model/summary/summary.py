@@ -7,7 +7,7 @@ import sympy as sp
 
 from rbdsolve.form.arrange import arranged, subscript
 from rbdsolve.form.display import Relation
-from rbdsolve.form.printers import unicode_name
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.model.energies.energy import Energy, kinetic_energy, mass_matrix, potential_energy
@@ -103,8 +103,7 @@ def rolling_steps(model: Model) -> list[st.Step]:
             out += _implied_notes(c)
             continue
         surface = source.surface
-        on = ("its string" if source.string else f"{surface.body}'s {surface.edge}" if surface.body
-              else f"the {surface.kind.value}")
+        on = ("its string" if source.string else _edge(surface, model) if surface.body else f"the {surface.kind.value}")
         rest = (f"v_{c.name} equals the velocity of the surface's point at {c.name}" if c.moving_surface
                 else f"v_{c.name} = 0")
         out.append(st.equation(f"Rolling without slipping at {c.name} ({c.body} on {on}): {rest} ⇒",
@@ -152,3 +151,13 @@ def _energy_steps(text: str, name: str, energy: Energy, model: Model) -> list[st
         st.definition(f"{text}; {legend}.", *parts),
         st.equation("", Relation(sp.Symbol(name), sum_name, more=(total,))),
     ]
+
+
+def _edge(surface, model: Model) -> str:
+    """A body's edge as read: "cart's rim", or for a circle at a radius given on it (edge
+    ``axle``), which side: "the inside of cart's circle of radius R" (a track cut in a
+    cart read as "cart's axle")."""
+    if surface.edge != "axle" or surface.radius is None:
+        return f"{surface.body}'s {surface.edge}"
+    side = "the inside of " if surface.inside else ""
+    return f"{side}{surface.body}'s circle of radius {to_unicode(model.symbols.scalar(surface.radius))}"

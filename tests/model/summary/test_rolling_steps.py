@@ -61,3 +61,19 @@ def test_the_solution_prints_the_rolling_condition() -> None:
     assert result.exit_code == 0, result.output
     assert "Rolling without slipping at C (wheel on the line): v_C = 0 ⇒" in result.output
     assert "r φ̇_wheel = −ẋ" in result.output and "⇒ φ_wheel = −x/r" in result.output
+
+
+def test_a_track_cut_in_a_body_is_named_as_a_circle() -> None:
+    """A cylinder rolling inside a circle of radius R cut in a cart (rolls_on: {body: cart,
+    radius: R, side: inside}) rolls on that circle's inside, not on "cart's axle" (a new
+    user's cart with a track)."""
+    text = (PROBLEMS / "forces" / "pendulum-on-sliding-cart.yaml").read_text(encoding="utf-8").split("points:")[0]
+    text = text.replace("parameters:", "parameters:\n  R: track\n  r: radius")
+    text += ("points:\n  O: [x, R]\nbodies:\n  cart: {mass: M, inertia: M*R**2, at: O}\n"
+             "  cylinder: {shape: cylinder, mass: m, radius: r, height: r}\ncontacts:\n"
+             "  C: {body: cylinder, rolls_on: {body: cart, radius: R, side: inside}, along: theta}\n"
+             "questions:\n  - eom\n")
+    from rbdsolve.problem import load_text
+
+    (step,) = [s for s in rolling_steps(build_model(load_text(text, "p.yaml"))) if s.math]
+    assert "(cylinder on the inside of cart's circle of radius R)" in step.text
