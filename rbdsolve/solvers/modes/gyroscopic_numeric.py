@@ -39,8 +39,7 @@ SAFETY = 10.0  # the bound is this many times the distance to the 50-digit eigen
 def solve(question: Question, model: Model) -> Solution:
     """The floating-point route's answer about the steady state the question names."""
     refuse_options(question)
-    at, notes = _steady_state(question, model)
-    linear = linearize(question, model, at, model.values if radical_steady_state(question, model) else None)
+    linear, notes = _linearized(question, model)
     M, G, K = (to_floats(x, model.values) for x in (linear.M, linear.G, linear.K))
     s, bounds = quadratic_eigenvalues(M, G, K, [x.xreplace(dict(model.values)) for x in (linear.M, linear.G, linear.K)])
     growth = max(float(np.max(s.real - bounds)), 0.0)
@@ -59,16 +58,26 @@ def solve(question: Question, model: Model) -> Solution:
                     warnings=notes, error_estimate=estimate)
 
 
-def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
-    """As the exact route, the numeric equilibria where 'about' names none."""
-    if question.options.about is not None:
-        values = dict(question.options.about)
-        return {q: model.symbols.scalar(values[n]) for q, n in zip(model.q, model.coordinate_names())
-                if n in values}, ()
+def _linearized(question: Question, model: Model):
+    """M, G and K about the steady state: the one 'about' gives, as the exact route takes
+    it; where it gives none, or a configuration that is steady only to its rounding
+    (decimals typed from a listing), the numeric equilibria's, refined there — a
+    floating-point root, steady to its rounding (``linearize``'s ``rounded``)."""
+    options = question.options
+    values = model.values if radical_steady_state(question, model) else None
+    if options.about is not None:
+        given = dict(options.about)
+        at = {q: model.symbols.scalar(given[n]) for q, n in zip(model.q, model.coordinate_names()) if n in given}
+        try:
+            return linearize(question, model, at, values), ()
+        except UnsolvedError:
+            if options.steady:  # a steady spin's rate: no equilibrium search finds it
+                raise
     from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
 
     found, notes = equilibrium_for_modes(question, model)
-    return {q: found[n] for q, n in zip(model.q, model.coordinate_names())}, notes
+    at = {q: found[n] for q, n in zip(model.q, model.coordinate_names())}
+    return linearize(question, model, at, values, rounded=True), notes
 
 
 def quadratic_eigenvalues(M: np.ndarray, G: np.ndarray, K: np.ndarray, exact) -> tuple[np.ndarray, np.ndarray]:

@@ -64,11 +64,13 @@ def lagrangian(model: Model) -> sp.Expr:
 
 
 def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr],
-              values: Mapping[sp.Symbol, sp.Expr] | None = None) -> Linear:
+              values: Mapping[sp.Symbol, sp.Expr] | None = None, rounded: bool = False) -> Linear:
     """M, G and K about the configuration ``at`` of the coordinates kept, the cyclic
     coordinates at the steady rates the question gives (Routh's reduction); with
     ``values``, the parameters' values put in first (the floating-point route, where the
-    steady state holds a root of the parameters: ``radical_steady_state``)."""
+    steady state holds a root of the parameters: ``radical_steady_state``). ``rounded``:
+    ``at`` is a floating-point root found at the values (the numeric equilibria's), steady
+    where ∂R₀/∂q is zero to its rounding there (``STEADY_TO``), not exactly."""
     names = model.coordinate_names()
     _refuse_unknowns(model)
     put = dict(values or {})
@@ -85,7 +87,7 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr],
     q, qd = [model.q[k] for k in kept], [model.qd[k] for k in kept]
     rest = {x: 0 for x in qd}
     R0 = R.xreplace(rest)
-    _require_steady(R0, q, at, model, [names[k] for k in kept], bool(rates))
+    _require_steady(R0, q, at, model, [names[k] for k in kept], bool(rates), rounded)
     M = sp.Matrix(len(q), len(q), lambda i, j: derivative(derivative(R, qd[i]), qd[j])).xreplace(rest)
     M = sp.ImmutableMatrix(M.xreplace(at).applyfunc(tidy))
     if singular := exact_reason(M, [names[k] for k in kept], "at this configuration"):
@@ -160,10 +162,17 @@ def _routhian(L: sp.Expr, model: Model, rates: dict, kept: list[int], at) -> tup
 MAX_SHOWN_OPS = 80  # a longer Routhian is left out of the steps (its M, G and K follow)
 
 
-def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], routh: bool) -> None:
-    """q₀ is a steady state: ∂R₀/∂q = 0 there (R₀ = T₀ − V, or Routh's R₀)."""
+STEADY_TO = 1e-9  # a floating-point root's ∂R₀/∂q, relative to its terms, that counts as zero
+
+
+def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], routh: bool,
+                    rounded: bool = False) -> None:
+    """q₀ is a steady state: ∂R₀/∂q = 0 there (R₀ = T₀ − V, or Routh's R₀); for a
+    floating-point root (``rounded``), zero to within STEADY_TO of its terms at the values."""
     what = "−R₀ (Routh's function without rates)" if routh else "V − T₀"
     for name, qi in zip(names, q):
+        if rounded and _relative_residual(derivative(R0, qi), at, model) <= STEADY_TO:
+            continue
         residual = tidy(derivative(R0, qi).xreplace(at))
         if residual.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
             raise UnsolvedError(f"∂({what})/∂{unicode_name(name)} has no value at this configuration: the "
@@ -174,17 +183,35 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
                                 + _rounded_hint(derivative(R0, qi), at, model))
 
 
+def _relative_residual(slope: sp.Expr, at, model: Model) -> float:
+    """|∂R₀/∂q| at ``at`` and the values over the sum of its terms' sizes there (inf
+    where it has no value, or without values)."""
+    found = _residual_and_size(slope, at, model)
+    if found is None:
+        return float("inf")
+    residual, size = found
+    return abs(residual) / size if size else (0.0 if residual == 0 else float("inf"))
+
+
+def _residual_and_size(slope: sp.Expr, at, model: Model) -> tuple[float, float] | None:
+    if not model.values:
+        return None
+    values = dict(model.values)
+    try:
+        residual = float(sp.N(slope.xreplace(at).xreplace(values), 20))
+        size = sum(abs(float(sp.N(t.xreplace(at).xreplace(values), 20))) for t in sp.Add.make_args(sp.expand(slope)))
+    except (TypeError, ValueError):
+        return None
+    return residual, size
+
+
 def _rounded_hint(slope: sp.Expr, at, model: Model) -> str:
     """At the parameter values, the residual's size against its terms', and what to do
     where it is a rounding's (a steady rate pasted with six digits leaves ~1e-6)."""
-    if not model.values:
+    found = _residual_and_size(slope, at, model)
+    if found is None:
         return ""
-    terms = sp.Add.make_args(sp.expand(slope))
-    try:
-        residual = float(sp.N(slope.xreplace(at).xreplace(dict(model.values)), 20))
-        size = sum(abs(float(sp.N(t.xreplace(at).xreplace(dict(model.values)), 20))) for t in terms)
-    except (TypeError, ValueError):
-        return ""
+    residual, size = found
     relative = abs(residual) / size if size else float("inf")
     text = f": {-residual:.3g} at the parameter values"
     if relative > 1e-4:

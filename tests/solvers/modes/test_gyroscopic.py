@@ -283,3 +283,66 @@ def test_the_growth_rate_below_the_critical_spin_is_a_number(tmp_path) -> None:
     (line,) = [x for x in out.output.splitlines() if x.strip().startswith("γ = ") and "1/s" in x]
     assert abs(float(line.split("=")[1].split()[0]) - gamma) < 1e-5 * gamma
     assert "no numeric value for frequencies" not in out.output
+
+
+ARM = """
+parameters: {m: mass, l: length of the rod, a: length of the arm, g: gravity, Omega: rate of the shaft}
+values: {m: 0.5, l: 0.4, a: 0.3, g: 9.81, Omega: 4}
+coordinates: [alpha, beta]
+gravity: [0, 0, -g]
+frames:
+  arm: {axis: z, rate: Omega}
+triads:
+  A: {turns: [[z, Omega*t]], vectors: [er, et, ez]}
+points:
+  P: (a + l*sin(beta))*er - l*sin(alpha)*cos(beta)*et - l*cos(alpha)*cos(beta)*ez
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - modes: {frame: arm, about: {equilibrium: 2}}
+"""
+
+
+def _arm_by_hand() -> list[float]:
+    """A spherical pendulum hung from the end of an arm turning at Ω (a new user's): its
+    position in fixed axes, turned by Ω t, T = ½ m |ṙ|², V = m g z, Lagrange's equations
+    linearized by hand about α = 0 and the β₀ where the arm's plane holds it,
+    g sin β₀ = Ω² cos β₀ (a + l sin β₀); M ü + G u̇ + K u = 0 solved as its first-order
+    eigenproblem by numpy."""
+    import numpy as np
+    from scipy.optimize import brentq
+
+    t = sp.Symbol("t")
+    al, be = sp.Function("al")(t), sp.Function("be")(t)
+    mm, ll, aa, gg, W = 0.5, 0.4, 0.3, 9.81, 4.0
+    body = sp.Matrix([aa + ll * sp.sin(be), -ll * sp.sin(al) * sp.cos(be), -ll * sp.cos(al) * sp.cos(be)])
+    turn = sp.Matrix([[sp.cos(W * t), -sp.sin(W * t), 0], [sp.sin(W * t), sp.cos(W * t), 0], [0, 0, 1]])
+    r = turn * body
+    v = r.diff(t)
+    L = sp.simplify(mm * v.dot(v) / 2) - mm * gg * r[2]
+    q = [al, be]
+    x = sp.symbols("x0 x1")
+    xd = sp.symbols("v0 v1")
+    rep = {q[0].diff(t): xd[0], q[1].diff(t): xd[1]}
+    Lp = L.subs(rep).subs({q[0]: x[0], q[1]: x[1]})
+    beta0 = brentq(lambda b: gg * math.sin(b) - W**2 * math.cos(b) * (aa + ll * math.sin(b)), 0.1, 1.5)
+    at = {x[0]: 0, x[1]: beta0, xd[0]: 0, xd[1]: 0}
+    M = np.array([[float(Lp.diff(xd[i], xd[j]).subs(at)) for j in range(2)] for i in range(2)])
+    C = [[float(Lp.diff(xd[i], x[j]).subs(at)) for j in range(2)] for i in range(2)]
+    G = np.array([[C[i][j] - C[j][i] for j in range(2)] for i in range(2)])
+    K = np.array([[-float(Lp.diff(x[i], x[j]).subs(at)) for j in range(2)] for i in range(2)])
+    A = np.block([[np.zeros((2, 2)), np.eye(2)], [-np.linalg.solve(M, K), -np.linalg.solve(M, G)]])
+    s = np.linalg.eigvals(A)
+    return sorted(abs(z.imag) for z in s if z.imag > 0)
+
+
+def test_a_frame_s_equilibrium_found_numerically_has_its_modes() -> None:
+    """'modes: {frame: arm, about: {equilibrium: 2}}' (the stable one of the two the
+    numeric equilibria list: the other, β₀ past π/2, is a maximum) where it has no closed
+    form: the numeric route takes the numeric equilibria's root, steady to its rounding
+    (it was refused: 'not a steady state … a decimal … is never exactly steady')."""
+    (modes,) = solutions(ARM)
+    assert modes.error is None, modes.error
+    got = list(modes.answers.frequencies)
+    want = _arm_by_hand()
+    assert len(got) == 2 and all(abs(a - b) < 1e-8 * b for a, b in zip(got, want)), (got, want)
