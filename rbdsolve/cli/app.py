@@ -268,10 +268,17 @@ def _forget_caught_interrupts() -> None:
 def process_settings() -> None:
     """What the ``rbdsolve`` process sets for itself before it solves anything (the
     benchmarks' in-process measurements set the same, to time the command as it runs):
-    the cycle collector less often, BLAS on one thread, and sympy's integers Python's own."""
+    the cycle collector less often and BLAS on one thread. sympy's integers are its own
+    choice (SYMPY_GROUND_TYPES decides): python-flint's, installed for the certified roots
+    (solvers/modes/certified.py). Importing them costs ~16 ms of every process, and they
+    factor multivariate polynomials 2–2.5 times faster than Python's integers: a new
+    user's disk on a spring on an incline (a stiffness K of five parameters put over one
+    denominator and factored) took 5.4 s on Python's integers and 2.2 s on flint's; the
+    files of problems/ and 10–24-link chains take the same or less (docs/performance.md),
+    with the same answers, byte for byte. SYMPY_GROUND_TYPES=python rbdsolve solve …
+    still asks for Python's."""
     _collect_less_often()
     _one_blas_thread()
-    _python_ground_types()
 
 
 BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
@@ -286,19 +293,6 @@ def _one_blas_thread() -> None:
     OPENBLAS_NUM_THREADS=4 rbdsolve solve …"""
     for name in BLAS_THREADS:
         os.environ.setdefault(name, "1")
-
-
-def _python_ground_types() -> None:
-    """sympy's polynomial domains (ZZ, QQ) on Python's own integers unless the
-    environment says otherwise (SYMPY_GROUND_TYPES, read when sympy is first imported,
-    which is later). With python-flint installed (rbdsolve's certified roots use its
-    ball arithmetic directly, solvers/modes/certified.py) sympy would take flint's
-    integers: importing them is ~18 ms of every process, and on rbdsolve's polynomials
-    (small coefficients, degree up to a few tens) Python's integers are as fast — seed
-    problem 1 ~4 % less processor time, the slowest files of problems/ and 10–24-link
-    chains the same or less (paired runs, docs/performance.md) — with the same answers,
-    byte for byte. SYMPY_GROUND_TYPES=flint rbdsolve solve … still asks for flint's."""
-    os.environ.setdefault("SYMPY_GROUND_TYPES", "python")
 
 
 GC_YOUNG = 200_000  # net allocations between collections of the youngest generation (Python's: 700)
