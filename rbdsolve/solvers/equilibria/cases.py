@@ -27,13 +27,13 @@ from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import crushed_sides, held_sides, without_deltas
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
-from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes, constant_sign,
+from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, angle_sign, at_samples, changes,
                                                  existing, existing_within_bounds, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.roots import roots_as_absolute
 from rbdsolve.form.tidy import square_root, tidy
-from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia, over_sines
+from rbdsolve.solvers.conditions.signs import Undecided, matrix_inertia, over_sines, sign_of
 
 
 @memoized
@@ -171,7 +171,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
     is decided by them, and the cases say where that holds."""
     existence = existence_where(at, model, first)
     if existence is None:
-        return _where_needed(found, model, at, first), ()
+        return _unsplit(_by_existence(_where_needed(found, model, at, first), model)), ()
     found = replace(found, exists_when=existence.condition)
     criticals = existence.criticals
     inertia = matrix_inertia(found.hessian, model.assumed)
@@ -206,17 +206,17 @@ _DECIDED = (Stability.STABLE, Stability.UNSTABLE, Stability.NEUTRAL)  # found wi
 
 def _kept_sign(found: Equilibrium, model: Model, first: sp.Symbol | None, everywhere: bool) -> Equilibrium:
     """An undetermined equilibrium whose K keeps one sign over every value the
-    parameters' ranges allow (``constant_sign``: no root in any parameter's range, an
-    angle parameter's (0, π) included), decided by it: a diagonal entry negative
+    parameters' ranges allow, proved with each angle parameter in (0, π) (``angle_sign``:
+    sin α > 0 there), decided by it: a diagonal entry negative
     throughout, unstable; every leading minor positive throughout, stable (Sylvester). A
     disk on a spring, on an incline of angle α: K = −r (g m sin α + 18 k r/5) < 0 at its
     top, though sin α alone has no sign."""
     if found.stability is not Stability.UNDETERMINED:
         return found
     H = found.hessian
-    if any(constant_sign(H[i, i], model, first) == -1 for i in range(H.rows)):
+    if any(angle_sign(H[i, i], model) == -1 for i in range(H.rows)):
         stability = Stability.UNSTABLE
-    elif all(constant_sign(tidy(H[:k, :k].det()), model, first) == 1 for k in range(1, H.rows + 1)):
+    elif all(angle_sign(tidy(H[:k, :k].det()), model) == 1 for k in range(1, H.rows + 1)):
         stability = Stability.STABLE
     else:
         return found
@@ -241,6 +241,35 @@ def _where_needed(found: Equilibrium, model: Model, at: Mapping, first: sp.Symbo
         return found
     (stability,) = verdicts
     return replace(found, stability=stability, reason=_one_verdict(stability, False))
+
+
+def _by_existence(found: Equilibrium, model: Model) -> Equilibrium:
+    """An undetermined equilibrium of one coordinate whose K is a condition of its own
+    existence (≥ 0 where it exists) times a factor of one sign: stable (or unstable)
+    wherever it exists, off its boundary. A bead on a hoop tilted at α and turned at Ω:
+    K = m (Ω⁴ R² cos²α − g²)/Ω², and it exists only where Ω⁴ R² cos²α − g² ≥ 0."""
+    if found.stability is not Stability.UNDETERMINED or found.hessian.rows != 1:
+        return found
+    K = found.hessian[0, 0]
+    for condition in found.conditions:
+        ratio = sp.cancel(sp.together(K / condition))
+        sign = sign_of(ratio, model.assumed)
+        if not isinstance(sign, int):
+            sign = angle_sign(ratio, model)
+        if sign in (1, -1):
+            stability = Stability.STABLE if sign == 1 else Stability.UNSTABLE
+            return replace(found, stability=stability, reason=_one_verdict(stability, False))
+    return found
+
+
+def _unsplit(found: Equilibrium) -> Equilibrium:
+    """An equilibrium whose existence no parameter splits keeps its conditions as they
+    are, each ≥ 0, for ``exists_when``: not "True", which says it always exists (a bead
+    on a hoop tilted at α and turned at Ω exists only where Ω⁴ R² cos²α ≥ g², which
+    splits in neither)."""
+    if not found.conditions or found.exists_when is not sp.true:
+        return found
+    return replace(found, exists_when=sp.And(*(sp.GreaterThan(c, 0) for c in found.conditions)))
 
 
 def _one_verdict(stability: Stability, everywhere: bool) -> str:

@@ -20,7 +20,8 @@ from rbdsolve.solvers.equilibria.cases import existence_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
-from rbdsolve.solvers.conditions.conditions import Piece, changes, existing_within_bounds, partition, sign_on, what_decides
+from rbdsolve.solvers.conditions.conditions import (Piece, angle_sign, changes, existing_within_bounds, partition, sign_on,
+                                                 what_decides)
 from rbdsolve.solvers.conditions.present_conditions import condition_text
 from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, over_sines,
                                               roots_where_defined, sign_of, sign_where_defined)
@@ -137,7 +138,10 @@ def _decided_sign(lam: sp.Expr, model: Model, nonzero: Mapping[sp.Expr, sp.Dummy
     sign = sign_where_defined(lam, model.decided_by, nonzero)
     if isinstance(sign, Undecided) and model.assumed:
         alone = sign_where_defined(lam, model.assumed, nonzero)
-        return sign if isinstance(alone, Undecided) else alone
+        sign = sign if isinstance(alone, Undecided) else alone
+    if isinstance(sign, Undecided):  # with each angle parameter in (0, π): λ = 3 (2 L k + g m sin α)/(2 L m) > 0
+        angled = angle_sign(lam, model)
+        return sign if angled is None else angled
     return sign
 
 
