@@ -128,9 +128,25 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     named = None if family.named is None else lambda: family.named(question, solution.answers, model)
     found = valued(solution.answers, model, question.kind.value, named)
     swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
-    warnings = (*solution.warnings, *swing, *unused_warnings(model), *found.warnings, *unsure)
+    warnings = (*solution.warnings, *swing, *unused_warnings(model), *found.warnings, *unsure,
+                *_not_for(question, solution.answers))
     return replace(solution, warnings=warnings, error_estimate=estimate, values=found.values, units=found.units,
                    numbers=found.lines, seconds=time.perf_counter() - start)
+
+
+def _not_for(question: Question, answers: object) -> tuple[str, ...]:
+    """A warning where the question names the parameter its conditions are to be written
+    in (``for: M``) and none of its critical values is in it: that parameter splits none
+    of them over its whole range (a critical value there not positive for every value of
+    the others: M_c = k L/(g sin α) − m/2), so another was taken; never silently."""
+    name = getattr(question.options, "for_parameter", None)
+    critical = getattr(answers, "critical", None)
+    if name is None or not critical or any(c.parameter == name for c in critical):
+        return ()
+    others = ", ".join(dict.fromkeys(c.parameter for c in critical))
+    return (f"for: {name}: no condition here is written in {name} (it is not in them, or it splits none of them "
+            f"over its whole range for every value of the others: an assumption that keeps its critical value "
+            f"positive, or values for the others, may let it); they are written in {others}",)
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, QuestionKind.ENERGY,

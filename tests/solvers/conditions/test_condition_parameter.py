@@ -218,3 +218,40 @@ def test_a_parameter_left_open_comes_before_one_given_a_value() -> None:
     _critical(answers, "M", s["m"] * s["l"] / (2 * s["a"]), s)
     _sampled(answers, s, _balance_point,
              lambda v: "oscillation" if v["m"] * v["l"] / 2 - v["M"] * v["a"] > 0 else "growth")
+
+
+LOADED_ROD = """title: a rod with a load at its tip on an incline, held by a horizontal spring
+parameters: {m: mass of the rod, M: mass of the load, L: length, k: stiffness, g: gravity, alpha: incline}
+coordinates: [theta]
+gravity: [0, -g*sin(alpha)]
+points:
+  A: L*[sin(theta), cos(theta)]
+  S: [0, L*cos(theta)]
+  G: L/2*[sin(theta), cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: L, at: G, angle: -theta, axis: y}
+  load: {shape: particle, mass: M, at: A}
+springs:
+  s: {stiffness: k, between: [A, S]}
+questions:
+  - modes: {about: {theta: 0}, for: M}
+"""
+
+
+def test_for_a_parameter_that_splits_nothing_is_said() -> None:
+    """By hand, V = (M + m/2) g L sin α cos θ + ½ k L² sin²θ: at θ = 0, K = k L² − (M +
+    m/2) g L sin α, so k_c = (M + m/2) g sin α/L, while in M the critical value
+    k L/(g sin α) − m/2 is positive only where 2 k L > m g sin α. For: M then writes the
+    case in k, and a warning says so (a new user's `for: M` was dropped silently); under
+    [2*k*L > g*m] (so 2 k L > g m sin α) it is written in M."""
+    s = _symbols("m M L k g alpha")
+    report = solve_problem(build_model(load_text(LOADED_ROD, "scene.yaml")))
+    (solution,) = report.solutions
+    assert solution.solved, solution.error
+    _critical(solution.answers, "k", (s["M"] + s["m"] / 2) * s["g"] * sp.sin(s["alpha"]) / s["L"], s)
+    assert any(w.startswith("for: M: no condition here is written in M") for w in solution.warnings)
+    held = LOADED_ROD.replace("coordinates:", "assumptions: [2*k*L > g*m]\ncoordinates:")
+    report = solve_problem(build_model(load_text(held, "scene.yaml")))
+    (solution,) = report.solutions
+    _critical(solution.answers, "M", s["k"] * s["L"] / (s["g"] * sp.sin(s["alpha"])) - s["m"] / 2, s)
+    assert not any(w.startswith("for: M") for w in solution.warnings)
