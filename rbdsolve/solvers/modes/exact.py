@@ -56,6 +56,7 @@ from rbdsolve.solvers.conditions.conditions import critical_values
 from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.conditions.polynomial import plain_linear_root
 from rbdsolve.solvers.lagrange.frames import require_static
+from rbdsolve.solvers.routes.needed import missing_values
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.solvers.configuration.singular import exact_reason
 from rbdsolve.model.values.values import sample
@@ -184,6 +185,13 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
         raise UnsolvedError("K = ∂²V/∂q∂q does not exist at this configuration: a spring's length |…| is zero "
                             "there, where V is not twice differentiable")
     spectrum = _spectrum(K, M, set(model.symbols.parameters.values()), model)
+    note = ""
+    if _unreadable(spectrum) and model.values and not missing_values(model):
+        values = dict(model.values)
+        spectrum = _spectrum(sp.ImmutableMatrix(K.xreplace(values)), sp.ImmutableMatrix(M.xreplace(values)),
+                             set(model.symbols.parameters.values()), model)
+        note = (f"With every value given, the eigenvalues in the parameters run to more than {READABLE_OPS} "
+                "operations each: they are solved at the values, exactly.")
     eigenvalues = [pair.lam for pair in spectrum.pairs]
     motions, cases, criticals = kinds(eigenvalues, K, model, where, first, at)
     frequencies = tuple(_rate(pair, spectrum.scale, 1) if mo in (Motion.OSCILLATION, Motion.DEPENDS) else None
@@ -197,7 +205,17 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
                            cases if any(cases) else (), critical_values(criticals),
                            tuple(Form.EXACT if c is None else Form.CERTIFIED for c in certified),
                            next((c.digits for c in certified if c is not None), None))
-    return answers, exact_steps(answers, model, spectrum.steps)
+    return answers, exact_steps(answers, model, spectrum.steps, note)
+
+
+READABLE_OPS = 200  # an eigenvalue longer than this is no answer to read (a rod and a disk coupled by a spring: 676)
+
+
+def _unreadable(spectrum: _Spectrum) -> bool:
+    """Is any eigenvalue in the parameters too long to read (``READABLE_OPS``)? Then,
+    with every value given, it is solved at the values: its shapes and kinds in the
+    parameters cost seconds more for an answer nobody reads."""
+    return any(sp.count_ops(pair.lam) > READABLE_OPS for pair in spectrum.pairs)
 
 
 def _stiffness(model: Model, at: dict) -> sp.ImmutableMatrix:

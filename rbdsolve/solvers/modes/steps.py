@@ -82,7 +82,9 @@ def _motion_text(i: int, motion: Motion, labels: Labels) -> str:
     return f"Mode {i}: {t['lam']} = 0, neutral (no restoring force along this mode):"
 
 
-def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...]) -> tuple:
+def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...], note: str = "") -> tuple:
+    """The worked solution; ``note``: why the eigenvalue problem is solved at the values
+    (said before it), or nothing."""
     symbols = set(model.symbols.parameters.values())
     labels = mode_labels(model)
     t = _texts(labels)
@@ -96,6 +98,8 @@ def exact_steps(a: ModesAnswers, model: Model, char_steps: tuple[Relation, ...])
             Relation(labels.symbol("stiffness_matrix"), scaled_matrix(a.K, symbols)),
         ),
     ]
+    if note:
+        steps.append(st.note(note))
     wt = f"{t['w']}t" if len(t["w"]) == 1 else f"{t['w']} t"  # cos(ωt), cos(ωₖ t)
     steps.append(st.equation(f"{t['u']} = {t['a']} cos({wt}) gives the eigenvalue problem "
                              f"({t['K']} − {t['lam']}{t['M']}) {t['a']} = 0, {t['lam']} = {t['w']}², solvable when",
