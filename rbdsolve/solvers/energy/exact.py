@@ -15,12 +15,12 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.factor import factored
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.options import EnergyOptions
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
+from rbdsolve.solvers.energy import cyclic
 from rbdsolve.solvers.energy.answers import EnergyAnswers, There
 from rbdsolve.solvers.energy.steps import exact_steps
 from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
@@ -34,7 +34,21 @@ from rbdsolve.solvers.conditions.signs import sign_of
 def solve(question: Question, model: Model, options: Options) -> Solution:
     answers, e, reduction = energy(question.options, model)
     return Solution("energy", Route.EXACT, answers, exact_steps(answers, e, reduction, question.options, model),
-                    warnings=lost_contacts(question.options, model, answers, e))
+                    warnings=(*lost_contacts(question.options, model, answers, e),
+                              *undirected(question.options, model, answers, e)))
+
+
+def undirected(opts: EnergyOptions, model: Model, answers: EnergyAnswers, e: EnergyIntegral) -> tuple[str, ...]:
+    """With cyclic rates at ``to``, a warning where the way the motion gets there (the
+    sign of the kept rate) is not decided: they are then given for that rate positive."""
+    if not answers.rates or answers.there is None or answers.there.reached is False:
+        return ()
+    start = state_values(model, opts.start)
+    if cyclic.direction(model, e.kept, start, answers.to) is not None:
+        return ()
+    name = model.coordinate_names()[e.kept]
+    return (f"which way {name} moves as the motion gets to the configuration asked is not decided by the parameters' "
+            f"signs (nor does it start moving): the cyclic rates and the speeds there are given for dot({name}) > 0",)
 
 
 def lost_contacts(opts: EnergyOptions, model: Model, answers: EnergyAnswers, e: EnergyIntegral) -> tuple[str, ...]:
@@ -69,9 +83,12 @@ def energy(opts: EnergyOptions, model: Model) -> tuple[EnergyAnswers, EnergyInte
     name = names[e.kept]
     one = e.rate_squared is not None
     rates = _rates(model, reduction)
-    speeds = {p: _speed_squared(model, p, rates, e) for p in opts.points} if one else None
     to = {n: model.symbols.scalar(v) for n, v in opts.to} if opts.to else None
-    there, criticals = _there(model, to, e, rates, speeds) if to else (None, ())
+    sign = cyclic.direction(model, e.kept, start, to) if rates else 1
+    parts = {p: cyclic.speed_parts(model, p, rates, model.qd[e.kept]) for p in opts.points} if rates else {}
+    speeds = ({p: cyclic.along(x, e.rate_squared, sign, model.qd[e.kept]) for p, x in parts.items()} if rates else
+              {p: _speed_squared(model, p, e) for p in opts.points} if one else None)
+    there, criticals = _there(model, to, e, rates, speeds, parts, sign) if to else (None, ())
     work = _work(model, start)
     if there is not None and work:
         table = {q: to[n] for q, n in zip(model.q, names)}
@@ -116,24 +133,10 @@ def _work(model: Model, start: dict) -> dict[str, sp.Expr]:
             if x.potential is not None}
 
 
-def _speed_squared(model: Model, point: str, rates: dict, e: EnergyIntegral) -> sp.Expr:
-    """v² = |∂r/∂q|² q̇² (one coordinate, no t in the scene); with cyclic coordinates,
-    v = Σ ∂r/∂qᵢ q̇ᵢ with their rates put in, v² = a₂ q̇² + a₁ q̇ + a₀, q̇ the kept
-    coordinate's rate taken positive (a₁ = a₀ = 0 where their momenta start at 0)."""
-    if not rates:
-        dr = model.point(point).diff(model.q[0])
-        return clean_fraction(tidy(sp.expand(dr.dot(dr))) * e.rate_squared)
-    r, s = model.point(point), model.qd[e.kept]
-    v = sum((r.diff(q) * rates.get(qd, qd) for q, qd in zip(model.q, model.qd)), sp.zeros(*r.shape))
-    v = v.applyfunc(lambda x: sp.expand(x))
-    a2, a1, a0 = (_readable(sp.expand(v.dot(v)).coeff(s, n)) for n in (2, 1, 0))
-    return a2 * e.rate_squared + a1 * sp.sqrt(e.rate_squared) + a0
-
-
-def _readable(expr: sp.Expr) -> sp.Expr:
-    """One fraction, its top tidied and factored for reading: (R − r)² (M² + m (2 M + m) sin²θ)/(M + m)²."""
-    top, bottom = sp.fraction(sp.factor(sp.together(expr)))
-    return factored(tidy(sp.expand(top))) / bottom
+def _speed_squared(model: Model, point: str, e: EnergyIntegral) -> sp.Expr:
+    """v² = |∂r/∂q|² q̇² (one coordinate, no t in the scene)."""
+    dr = model.point(point).diff(model.q[0])
+    return clean_fraction(tidy(sp.expand(dr.dot(dr))) * e.rate_squared)
 
 
 def _root(value: sp.Expr) -> sp.Expr:
@@ -143,14 +146,15 @@ def _root(value: sp.Expr) -> sp.Expr:
     return sp.Pow(sp.factor(value), sp.Rational(1, 2), evaluate=False)
 
 
-def _there(model: Model, to: dict[str, sp.Expr], e: EnergyIntegral, rates: dict, speeds: dict
-           ) -> tuple[There, tuple[Critical, ...]]:
+def _there(model: Model, to: dict[str, sp.Expr], e: EnergyIntegral, rates: dict, speeds: dict, parts: dict,
+           sign: int | None) -> tuple[There, tuple[Critical, ...]]:
     """q̇² at ``to``, and whether the motion gets there, q̇² ≥ 0: decided by the signs,
     the assumptions or the values (``reached`` True or False), else None with where it
     is (``reached_when``, solved for one parameter: a block between springs from x = 0
     at ẋ = 1 reaches x = 1/10 only where k₁ + k₂ ≤ 100 m); the rates and speeds where it
-    is reached (a cyclic coordinate's with the kept one's taken positive), with the
-    critical values of that condition."""
+    is reached, with the critical values of that condition. With cyclic coordinates
+    (``rates``, the speeds' ``parts``), their rates and the speeds are those of the
+    motion getting there, the kept rate's ``sign`` (solvers/energy/cyclic.py)."""
     names = model.coordinate_names()
     table = {q: to[n] for q, n in zip(model.q, names)}
     w2 = at_state(e.rate_squared, table)
@@ -158,20 +162,21 @@ def _there(model: Model, to: dict[str, sp.Expr], e: EnergyIntegral, rates: dict,
     where = nonnegative_where(w2, model)
     reached = _decided(w2, where.condition, model)
     root = (lambda x: None if reached is False else _root(x))
-    v2 = {p: at_state(v, table) for p, v in (speeds or {}).items()}
     rate = {name: root(w2)}
-    for qd, x in rates.items():
-        rate[names[model.qd.index(qd)]] = None if reached is False else _times(at_state(x, table), model.qd[e.kept],
-                                                                               rate[name])
-    there = There({name: w2}, rate, {p: root(v) for p, v in v2.items()}, reached, reached_when=where.condition)
+    if rates:
+        way = 1 if sign is None else sign
+        v2 = {p: cyclic.there(x, table, w2, rate[name], way) for p, x in parts.items()} if reached is not False else {}
+        for qd, x in rates.items():
+            rate[names[model.qd.index(qd)]] = (None if reached is False else
+                                               cyclic.cyclic_rate(at_state(x, table), model.qd[e.kept], rate[name], way))
+    else:
+        v2 = {p: at_state(v, table) for p, v in (speeds or {}).items()}
+    # a speed whose square holds the rate itself (the momenta not 0) is left under one root as it reads
+    whole = {p for p, x in parts.items() if x[1] != 0}
+    speed = {p: (sp.Pow(v2[p], sp.S.Half, evaluate=False) if p in whole else root(v2[p])) if p in v2 else None
+             for p in (speeds or {})}
+    there = There({name: w2}, rate, speed, reached, reached_when=where.condition)
     return there, where.criticals
-
-
-def _times(rate: sp.Expr, kept: sp.Symbol, root: sp.Expr) -> sp.Expr:
-    """A cyclic rate a q̇ + b at the kept rate q̇ = ``root``, the root kept whole: m (r −
-    R)/(M + m) √(…), not its factors' roots spread through the product."""
-    a, b = (clean_fraction(sp.expand(rate).coeff(kept, n)) for n in (1, 0))
-    return (sp.Mul(*sp.Mul.make_args(a), root, evaluate=False) if a != 0 else sp.Integer(0)) + b
 
 
 def _decided(w2: sp.Expr, where: sp.Basic, model: Model) -> bool | None:

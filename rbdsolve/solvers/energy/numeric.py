@@ -8,7 +8,7 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.energy.answers import NumericEnergyAnswers
-from rbdsolve.solvers.energy.exact import energy, lost_contacts
+from rbdsolve.solvers.energy.exact import energy, lost_contacts, undirected
 from rbdsolve.solvers.energy.steps import numeric_steps
 from rbdsolve.solvers.routes.options import Options
 from rbdsolve.model.values.values import numeric
@@ -26,4 +26,5 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     values = numeric((exact.start, there.rate_squared, there.rate, there.speed), model.values)
     answers = NumericEnergyAnswers(*values)
     return Solution("energy", Route.NUMERIC, answers, numeric_steps(answers, model), error_estimate=ROUNDING,
-                    warnings=lost_contacts(question.options, model, exact, e))
+                    warnings=(*lost_contacts(question.options, model, exact, e),
+                              *undirected(question.options, model, exact, e)))

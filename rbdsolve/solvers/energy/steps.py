@@ -47,7 +47,9 @@ def exact_steps(answers: EnergyAnswers, e: EnergyIntegral, reduction: Reduction 
                       st.result("The motion from the start state reaches it only where q̇² ≥ 0 there, that is "
                                 "when:", *condition_relations(there.reached_when, answers.critical)),
                       *critical_steps(answers.critical, "where it stops being reached")]
-        lead = "There (the rate taken positive):" if there.reached else "Where it is reached (the rate taken positive):"
+        taken = ("its rate taken positive; the cyclic rates and the speeds those of the motion getting there, "
+                 "moving from the start towards it" if answers.rates else "the rate taken positive")
+        lead = f"There ({taken}):" if there.reached else f"Where it is reached ({taken}):"
         steps.append(st.result(lead, *(squared if there.reached else ()),
                                *[Relation(model.to_time(rates[n]), v) for n, v in there.rate.items()],
                                *[Relation(sp.Symbol(f"v_{p}"), v) for p, v in there.speed.items()],

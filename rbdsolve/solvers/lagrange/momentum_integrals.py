@@ -68,6 +68,8 @@ def reduce(model: Model, e: EnergyIntegral, start: dict[sp.Symbol, sp.Expr]) -> 
     kept = [k for k in range(len(model.q)) if k not in cyclic]
     if len(kept) != 1:
         names = model.coordinate_names()
+        if not cyclic:
+            return f"no coordinate is cyclic (L holds each of {', '.join(names)}), so no momentum is constant"
         return (f"{len(kept)} coordinates ({', '.join(names[k] for k in kept)}) are not cyclic (L holds them), "
                 "so the momentum integrals of the others do not fix every rate")
     s, cd = model.qd[kept[0]], [model.qd[k] for k in cyclic]

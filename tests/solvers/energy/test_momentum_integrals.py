@@ -92,8 +92,8 @@ def test_a_pendulum_on_a_cart_against_a_simulation(tmp_path) -> None:
     got = _result(tmp_path, CART + "questions:\n  - energy: {from_rest: {x: 0, theta: theta0}, to: {x: 0, theta: 0}, "
                                    "points: [B]}\n", "--route", "numeric")["answers"]
     assert abs(got["rate"]["theta"] - abs(thd)) < 1e-8
-    # θ̇ is taken positive there; ẋ ∝ θ̇ (p_x = 0), so it flips with it
-    assert abs(got["rate"]["x"] - math.copysign(1, thd) * xd) < 1e-8
+    # |θ̇| is given; ẋ is the motion's own there, θ falling from θ₀ to 0 (θ̇ < 0, ẋ > 0)
+    assert thd < 0 < xd and abs(got["rate"]["x"] - xd) < 1e-8
     assert abs(got["speed"]["B"] - abs(xd + l * thd)) < 1e-8  # at θ = 0 the bob moves along x only
 
 
@@ -114,4 +114,29 @@ def test_two_coordinates_neither_cyclic_are_still_refused(tmp_path) -> None:
     path.write_text(text + "questions:\n  - energy: {from_rest: {x: 0, theta: theta0}, to: {x: 0, theta: 0}}\n",
                     encoding="utf-8")
     out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
-    assert out.exit_code == 1 and "are not cyclic" in out.output
+    assert out.exit_code == 1 and "no coordinate is cyclic (L holds each of x, theta)" in out.output
+
+
+def test_a_cart_pushed_as_its_pendulum_is_released_against_a_simulation(tmp_path) -> None:
+    """The same cart given ẋ = v₀ = 1.5 m/s at release: p_x = (M + m) v₀ ≠ 0, so the way
+    θ passes 0 matters. Swinging down from θ₀ = 40°, θ̇ < 0 there and ẋ = v₀ + m l |θ̇|/(M
+    + m); the bob's speed is |ẋ + l θ̇|. Against the simulation to 1e-8 (they were those
+    of θ̇ > 0: ẋ = 0.88152, v_B = 2.73696, where the motion gives 2.11848 and 0.26304)."""
+    M, m, l, g, th0, v0 = 2.0, 1.0, 0.5, 9.81, math.radians(40), 1.5
+
+    def rates(_, y):
+        x, th, xd, thd = y
+        A = np.array([[M + m, m * l * math.cos(th)], [math.cos(th), l]])
+        b = np.array([m * l * math.sin(th) * thd**2, -g * math.sin(th)])
+        xdd, thdd = np.linalg.solve(A, b)
+        return [xd, thd, xdd, thdd]
+
+    bottom = lambda _, y: y[1]  # noqa: E731
+    bottom.terminal = True
+    run = solve_ivp(rates, (0, 5), [0, th0, v0, 0], events=bottom, rtol=1e-12, atol=1e-12)
+    _, _, xd, thd = run.y_events[0][0]
+    text = CART.replace("parameters:", "parameters:\n  v0: push").replace("values: {", "values: {v0: 1.5 m/s, ")
+    got = _result(tmp_path, text + "questions:\n  - energy: {at: {x: 0, theta: theta0, dot(x): v0, dot(theta): 0}, "
+                                    "to: {x: 0, theta: 0}, points: [A, B]}\n")["values"]["there"]
+    assert abs(got["rate"]["x"] - xd) < 1e-8
+    assert abs(got["speed"]["A"] - abs(xd)) < 1e-8 and abs(got["speed"]["B"] - abs(xd + l * thd)) < 1e-8
