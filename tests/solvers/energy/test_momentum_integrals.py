@@ -54,6 +54,27 @@ def _result(tmp_path, text: str, *more: str) -> dict:
     return result
 
 
+def _cart_at_the_bottom(v0: float) -> tuple[float, float]:
+    """ẋ and θ̇ of the cart (M = 2) and bob (m = 1, l = 0.5) as θ first reaches 0, released
+    at θ₀ = 40° with ẋ = v0: Lagrange's equations by hand, T = ½ (M + m) ẋ² + m l cos θ ẋ θ̇
+    + ½ m l² θ̇², V = −m g l cos θ, so (M + m) ẍ + m l (cos θ θ̈ − sin θ θ̇²) = 0 and
+    l θ̈ + cos θ ẍ + g sin θ = 0, integrated by solve_ivp to the event θ = 0."""
+    M, m, l, g = 2.0, 1.0, 0.5, 9.81
+
+    def rates(_, y):
+        _, th, xd, thd = y
+        A = np.array([[M + m, m * l * math.cos(th)], [math.cos(th), l]])
+        b = np.array([m * l * math.sin(th) * thd**2, -g * math.sin(th)])
+        xdd, thdd = np.linalg.solve(A, b)
+        return [xd, thd, xdd, thdd]
+
+    bottom = lambda _, y: y[1]  # noqa: E731
+    bottom.terminal = True
+    run = solve_ivp(rates, (0, 5), [0, math.radians(40), v0, 0], events=bottom, rtol=1e-12, atol=1e-12)
+    _, _, xd, thd = run.y_events[0][0]
+    return xd, thd
+
+
 def test_a_turntable_keeps_its_angular_momentum(tmp_path) -> None:
     """J = M R²/2, T = ½ (J + m r²) φ̇² + ½ m ṙ²: φ is cyclic, p_φ = (J + m r²) φ̇ =
     (J + m a²) ω₀ (not 0: the rates at 'to' hold it as well as the energy's root).
@@ -76,19 +97,8 @@ def test_a_pendulum_on_a_cart_against_a_simulation(tmp_path) -> None:
         (M + m) ẍ + m l (cos θ θ̈ − sin θ θ̇²) = 0,   l θ̈ + cos θ ẍ + g sin θ = 0,
     integrated from rest at θ₀ = 40° until θ = 0: the rates there agree with the
     numeric route's to 1e-8."""
-    M, m, l, g, th0 = 2.0, 1.0, 0.5, 9.81, math.radians(40)
-
-    def rates(_, y):
-        x, th, xd, thd = y
-        A = np.array([[M + m, m * l * math.cos(th)], [math.cos(th), l]])
-        b = np.array([m * l * math.sin(th) * thd**2, -g * math.sin(th)])
-        xdd, thdd = np.linalg.solve(A, b)
-        return [xd, thd, xdd, thdd]
-
-    bottom = lambda _, y: y[1]  # noqa: E731
-    bottom.terminal = True
-    run = solve_ivp(rates, (0, 5), [0, th0, 0, 0], events=bottom, rtol=1e-12, atol=1e-12)
-    _, _, xd, thd = run.y_events[0][0]
+    l = 0.5
+    xd, thd = _cart_at_the_bottom(0.0)
     got = _result(tmp_path, CART + "questions:\n  - energy: {from_rest: {x: 0, theta: theta0}, to: {x: 0, theta: 0}, "
                                    "points: [B]}\n", "--route", "numeric")["answers"]
     assert abs(got["rate"]["theta"] - abs(thd)) < 1e-8
@@ -122,19 +132,8 @@ def test_a_cart_pushed_as_its_pendulum_is_released_against_a_simulation(tmp_path
     θ passes 0 matters. Swinging down from θ₀ = 40°, θ̇ < 0 there and ẋ = v₀ + m l |θ̇|/(M
     + m); the bob's speed is |ẋ + l θ̇|. Against the simulation to 1e-8 (they were those
     of θ̇ > 0: ẋ = 0.88152, v_B = 2.73696, where the motion gives 2.11848 and 0.26304)."""
-    M, m, l, g, th0, v0 = 2.0, 1.0, 0.5, 9.81, math.radians(40), 1.5
-
-    def rates(_, y):
-        x, th, xd, thd = y
-        A = np.array([[M + m, m * l * math.cos(th)], [math.cos(th), l]])
-        b = np.array([m * l * math.sin(th) * thd**2, -g * math.sin(th)])
-        xdd, thdd = np.linalg.solve(A, b)
-        return [xd, thd, xdd, thdd]
-
-    bottom = lambda _, y: y[1]  # noqa: E731
-    bottom.terminal = True
-    run = solve_ivp(rates, (0, 5), [0, th0, v0, 0], events=bottom, rtol=1e-12, atol=1e-12)
-    _, _, xd, thd = run.y_events[0][0]
+    l = 0.5
+    xd, thd = _cart_at_the_bottom(1.5)
     text = CART.replace("parameters:", "parameters:\n  v0: push").replace("values: {", "values: {v0: 1.5 m/s, ")
     got = _result(tmp_path, text + "questions:\n  - energy: {at: {x: 0, theta: theta0, dot(x): v0, dot(theta): 0}, "
                                     "to: {x: 0, theta: 0}, points: [A, B]}\n")["values"]["there"]
