@@ -198,7 +198,8 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
             return sp.solve(factor, p)
     in_sine_or_cosine = _in_sine_or_cosine(factor, p)
     if in_sine_or_cosine is None:
-        return sp.solve(factor, p)
+        half = _half_angle(factor, p)
+        return half if half is not None else sp.solve(factor, p)
     polynomial, x = in_sine_or_cosine
     try:
         roots = _roots_in(polynomial, x)
@@ -259,6 +260,28 @@ def _in_sine_or_cosine(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, sp.Dummy
     if any(k % 2 for (k,) in sines.monoms()):
         return None
     return sp.expand(sum(c * (1 - _COSINE**2) ** (k // 2) for (k,), c in sines.terms())), _COSINE
+
+
+def _half_angle(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr] | None:
+    """The roots in p of a sin p + b cos p + c (p nowhere else: a block pulled up a rough
+    incline, (μ cos α + sin α) M k² + … = 0), by t = tan(p/2): sin p = 2t/(1 + t²), cos p =
+    (1 − t²)/(1 + t²) give (c − b) t² + 2 a t + (b + c) = 0, so p = 2 atan(t) for each real t
+    (p = π itself where c = b, t's degree drops). sympy's solve took 12 s on it, mostly
+    checking its roots, which the samples after this check again. None for another form."""
+    trig = factor.atoms(*TRIG)
+    if any(f.has(p) and (f.func not in (sp.sin, sp.cos) or f.args[0] != p) for f in trig):
+        return None
+    plain = sp.expand(factor.xreplace({sp.cos(p): _COSINE, sp.sin(p): _SINE}))
+    if plain.has(p) or not plain.is_polynomial(_SINE, _COSINE) or sp.Poly(plain, _SINE, _COSINE).total_degree() != 1:
+        return None
+    a, b = plain.coeff(_SINE), plain.coeff(_COSINE)
+    c = sp.expand(plain - a * _SINE - b * _COSINE)
+    t = sp.Dummy("t")
+    quadratic = sp.Poly((c - b) * t**2 + 2 * a * t + (b + c), t)
+    found = sp.roots(quadratic)
+    if sum(found.values()) != quadratic.degree():
+        return None
+    return [2 * sp.atan(tidy(r)) for r in found] + ([sp.pi] if quadratic.degree() < 2 else [])
 
 
 def _factor_by_factor(polynomial: sp.Poly) -> list[sp.Expr]:
