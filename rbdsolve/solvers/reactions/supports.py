@@ -118,9 +118,13 @@ def contact_support(model: Model, rolling) -> Held:
                     (Component(sp.Symbol(f"T_{name}"), u, one_sided=True),), How.STRING)
     n = rolling.normal
     tangent = _Z.cross(n)
+    # on another body's edge (a cylinder on a plank), the same push and friction act back on
+    # that body: in its balance where it is held too (the plank on the floor), by Newton's third law
+    under = rolling.source.surface.body
+    back = (lambda d: ((under, rolling.point, -d),)) if under is not None else (lambda d: ())
     return Held(name, rolling.point, rolling.body, None,
-                (Component(sp.Symbol(f"N_{name}"), n, one_sided=True),
-                 Component(sp.Symbol(f"F_{name}"), tangent, friction=True)), How.ROLLING)
+                (Component(sp.Symbol(f"N_{name}"), n, one_sided=True, also=back(n)),
+                 Component(sp.Symbol(f"F_{name}"), tangent, friction=True, also=back(tangent))), How.ROLLING)
 
 
 def _hanging(model: Model, rolling) -> Held:
