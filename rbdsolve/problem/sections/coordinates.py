@@ -23,7 +23,7 @@ from rbdsolve.problem.readers import check_keys, describe, read_bool
 from rbdsolve.problem.schema import Coordinate, CoordinateKind
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq
 
-KINDS = [k.value for k in CoordinateKind if k is not CoordinateKind.AUTO]
+KINDS = [k.value for k in CoordinateKind]  # auto: decided from how it enters (docs/format.md)
 
 
 def coordinate(reading: Reading, name: str, key: Scalar, options: Node | None) -> tuple[Coordinate, Node | None]:
@@ -53,7 +53,7 @@ def _kind(node: Node) -> CoordinateKind:
     if not isinstance(node, Scalar) or node.text not in KINDS:
         text = node.text if isinstance(node, Scalar) else describe(node)
         hint = did_you_mean(text, KINDS) if isinstance(node, Scalar) else ""
-        raise InputError(f"unknown coordinate kind '{text}' (expected angle or length){hint}", node.loc)
+        raise InputError(f"unknown coordinate kind '{text}' (expected angle, length or auto){hint}", node.loc)
     return CoordinateKind(node.text)
 
 

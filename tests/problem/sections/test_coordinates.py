@@ -37,7 +37,7 @@ def test_a_declared_range_and_periodic_are_read() -> None:
     ("{kind: length, range: [2, 1]}", "coordinates.x.range: the range of 'x' is empty: its low end 2 is not below"),
     ("{kind: length, range: [0]}", "coordinates.x.range: a range is [low, high], two constants"),
     ("{kind: length, range: [0, x]}", "'x' cannot appear here: the range of 'x' must be constant"),
-    ("{kind: lenght}", "coordinates.x.kind: unknown coordinate kind 'lenght' (expected angle or length) (did you mean"),
+    ("{kind: lenght}", "coordinates.x.kind: unknown coordinate kind 'lenght' (expected angle, length or auto) (did you mean"),
     ("{kind: length, rang: [0, 1]}", "coordinates.x.rang: unknown key 'rang' in coordinate 'x' (did you mean 'range'?)"),
     ("{kind: angle, periodic: maybe}", "coordinates.x.periodic: expected true or false, found 'maybe'"),
 ])
@@ -58,3 +58,12 @@ def test_an_angle_a_spring_winds_up_is_refused_located(tmp_path) -> None:
     assert (f"{path}:15:3: coordinates.theta: 'theta' is declared an angle, which repeats after a turn, but "
             "spring 'pivot' holds it outside sin and cos") in result.output
     assert "declare 'theta: {kind: angle, periodic: false}', with a 'range' for the search" in result.output
+
+
+def test_auto_is_a_kind_as_the_manual_says() -> None:
+    """docs/format.md: "Without a kind (or with `auto`) rbdsolve decides" — `auto` was
+    refused as an unknown kind (a new user's `coordinates: {s: auto}`)."""
+    text = ("parameters: {m: mass, g: gravity}\ncoordinates: {s: auto}\ngravity: [0, -g]\n"
+            "bodies:\n  b: {shape: particle, mass: m, at: [s, 0]}\nquestions: [eom]\n")
+    (c,) = load_text(text, "c.yaml").coordinates
+    assert c.kind is CoordinateKind.AUTO
