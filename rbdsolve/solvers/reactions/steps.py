@@ -170,8 +170,8 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                 if h.condition is not sp.true:
                     named = critical_values(h.criticals)
                     steps += critical_steps(named, "where that point stops being reached")
-                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached (|c| ≤ 1, "
-                                           "and q̇² ≥ 0 there) only when:",
+                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached ({_bounded(eq)}"
+                                           "q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
         elif name in unsolved:
             steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (it is transcendental in "
@@ -187,3 +187,14 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
         steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
                                f"friction{where} is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
     return steps
+
+
+def _bounded(eq: sp.Relational) -> str:
+    """What must lie in [−1, 1] for the zero ``eq`` to be a place at all, as a clause: the
+    c of cos q = c (sin q = c) or of q = acos(c) ("|2/3 cos(θ₀)| ≤ 1, and "); nothing for
+    q = c (a pulley's turn, where a parameter named c read as "|c| ≤ 1")."""
+    if isinstance(eq.lhs, (sp.cos, sp.sin)):
+        inside = [eq.rhs]
+    else:
+        inside = list(dict.fromkeys(f.args[0] for f in eq.rhs.atoms(sp.acos, sp.asin)))
+    return "".join(f"|{to_unicode(c)}| ≤ 1, " for c in inside) + ("and " if inside else "")
