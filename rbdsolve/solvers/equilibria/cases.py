@@ -27,7 +27,8 @@ from rbdsolve.model.energies.energy import hessian, memoized, potential_energy
 from rbdsolve.model.energies.spring_length import crushed_sides, held_sides, without_deltas
 from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability, StabilityCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters
-from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, angle_sign, at_samples, changes,
+from rbdsolve.solvers.conditions.angle_signs import angle_sign
+from rbdsolve.solvers.conditions.conditions import (Critical, Existence, Piece, at_samples, changes,
                                                  existing, existing_within_bounds, exists_when, partition,
                                                  real_where)
 from rbdsolve.form.printers import to_unicode

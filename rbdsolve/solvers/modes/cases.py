@@ -20,7 +20,8 @@ from rbdsolve.solvers.equilibria.cases import existence_where
 from rbdsolve.solvers.equilibria.exact import decided_inertia
 from rbdsolve.solvers.modes.answers import Motion, MotionCase
 from rbdsolve.solvers.conditions.condition_roots import angle_parameters, parameter_roots
-from rbdsolve.solvers.conditions.conditions import (Piece, angle_sign, changes, existing_within_bounds, partition, sign_on,
+from rbdsolve.solvers.conditions.angle_signs import angle_sign
+from rbdsolve.solvers.conditions.conditions import (Piece, changes, existing_within_bounds, partition, sign_on,
                                                  what_decides)
 from rbdsolve.solvers.conditions.present_conditions import condition_text
 from rbdsolve.solvers.conditions.signs import (Inertia, Undecided, matrix_inertia, nonzero_where_defined, over_sines,
