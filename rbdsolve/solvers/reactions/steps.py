@@ -189,12 +189,20 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
     return steps
 
 
+SHORT = 24  # a bound written out up to this many characters; a longer one is said in words
+
+
 def _bounded(eq: sp.Relational) -> str:
     """What must lie in [−1, 1] for the zero ``eq`` to be a place at all, as a clause: the
-    c of cos q = c (sin q = c) or of q = acos(c) ("|2/3 cos(θ₀)| ≤ 1, and "); nothing for
-    q = c (a pulley's turn, where a parameter named c read as "|c| ≤ 1")."""
+    c of cos q = c (sin q = c) or of q = acos(c), written out where short ("|2/3 cos(θ₀)|
+    ≤ 1, and "), else in words ("the right side in [−1, 1], and "); nothing for q = c (a
+    pulley's turn, where a parameter named c read as "|c| ≤ 1")."""
     if isinstance(eq.lhs, (sp.cos, sp.sin)):
-        inside = [eq.rhs]
+        inside, words = [eq.rhs], "the right side in [−1, 1], "
     else:
         inside = list(dict.fromkeys(f.args[0] for f in eq.rhs.atoms(sp.acos, sp.asin)))
-    return "".join(f"|{to_unicode(c)}| ≤ 1, " for c in inside) + ("and " if inside else "")
+        words = "the argument of acos (asin) in [−1, 1], "
+    if not inside:
+        return ""
+    shown = [to_unicode(c) for c in inside]
+    return ("".join(f"|{c}| ≤ 1, " for c in shown) if all(len(c) <= SHORT for c in shown) else words) + "and "

@@ -15,3 +15,5 @@ def test_the_clause_names_what_must_lie_in_the_unit_interval() -> None:
     assert _bounded(sp.Eq(sp.cos(theta), 2 * sp.cos(theta0) / 3)) == "|2/3 cos(θ₀)| ≤ 1, and "
     assert _bounded(sp.Eq(theta, sp.acos(2 * sp.cos(theta0) / 3))) == "|2/3 cos(θ₀)| ≤ 1, and "
     assert _bounded(sp.Eq(theta, M * g * k**2 / (R * c))) == ""
+    long = (4 * g * M * sp.cos(theta0) - 3 * R * k - 3 * k * c) / (7 * g * M)
+    assert _bounded(sp.Eq(sp.cos(theta), long)) == "the right side in [−1, 1], and "
