@@ -268,6 +268,25 @@ questions:
 """
 
 
+# A rod OA (m, L) pinned at O on a plane inclined at α (gravity's part in it g sin α), θ
+# from up the slope, its end A held by a horizontal spring (k, zero length) to a slider
+# level with it on the up-slope line: stretch L sin θ, V = m g sin α (L/2) cos θ + ½ k L²
+# sin²θ. Tests add a load at A and the questions (``+ "questions: …"``).
+ROD_ON_INCLINE = """\
+parameters: {m: mass of the rod, L: length, k: stiffness, g: gravity, alpha: incline}
+coordinates: [theta]
+gravity: [0, -g*sin(alpha)]
+points:
+  A: L*[sin(theta), cos(theta)]
+  S: [0, L*cos(theta)]
+  G: L/2*[sin(theta), cos(theta)]
+bodies:
+  rod: {shape: rod, mass: m, length: L, at: G, angle: -theta, axis: y}
+springs:
+  s: {stiffness: k, between: [A, S]}
+"""
+
+
 def pytest_collection_modifyitems(config, items) -> None:
     """Each problem file's checks side by side (its golden answers, JSON read-back, audit
     and LaTeX compile, each in its own module), at the place of the first: pytest-xdist's worksteal

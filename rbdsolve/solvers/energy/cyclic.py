@@ -30,8 +30,8 @@ def speed_parts(model: Model, point: str, rates: dict[sp.Symbol, sp.Expr], kept:
     """a₂, a₁, a₀ of the point's v² with the cyclic ``rates`` put in, each one fraction
     factored for reading: (R − r)² (M² + m (2 M + m) sin²θ)/(M + m)²."""
     r = model.point(point)
-    v = sum((r.diff(q) * rates.get(qd, qd) for q, qd in zip(model.q, model.qd)), sp.zeros(*r.shape))
-    v2 = sp.expand(v.applyfunc(sp.expand).dot(v.applyfunc(sp.expand)))
+    v = sum((r.diff(q) * rates.get(qd, qd) for q, qd in zip(model.q, model.qd)), sp.zeros(*r.shape)).applyfunc(sp.expand)
+    v2 = sp.expand(v.dot(v))
     a2, a1, a0 = (_readable(v2.coeff(kept, n)) for n in (2, 1, 0))
     return a2, a1, a0
 

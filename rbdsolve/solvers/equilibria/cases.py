@@ -180,7 +180,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
         return found, criticals
     pieces = _stability_pieces(found.hessian, existence.condition, model, first)
     if pieces is None:
-        return _kept_sign(found, model, first, existence.condition is sp.true), criticals
+        return _kept_sign(found, model, existence.condition is sp.true), criticals
     cases = tuple(StabilityCase(piece.when(), stability) for piece, stability in pieces)
     changed = changes([piece for piece, _ in pieces])
     # with values for what decides it, the values decide (at the boundary itself: undetermined);
@@ -205,7 +205,7 @@ def with_cases(found: Equilibrium, model: Model, at: Mapping,
 _DECIDED = (Stability.STABLE, Stability.UNSTABLE, Stability.NEUTRAL)  # found with the values (``classify``)
 
 
-def _kept_sign(found: Equilibrium, model: Model, first: sp.Symbol | None, everywhere: bool) -> Equilibrium:
+def _kept_sign(found: Equilibrium, model: Model, everywhere: bool) -> Equilibrium:
     """An undetermined equilibrium whose K keeps one sign over every value the
     parameters' ranges allow, proved with each angle parameter in (0, π) (``angle_sign``:
     sin α > 0 there), decided by it: a diagonal entry negative

@@ -20,7 +20,7 @@ import random
 
 import sympy as sp
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, ROD_ON_INCLINE
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers import solve_problem
@@ -220,22 +220,9 @@ def test_a_parameter_left_open_comes_before_one_given_a_value() -> None:
              lambda v: "oscillation" if v["m"] * v["l"] / 2 - v["M"] * v["a"] > 0 else "growth")
 
 
-LOADED_ROD = """title: a rod with a load at its tip on an incline, held by a horizontal spring
-parameters: {m: mass of the rod, M: mass of the load, L: length, k: stiffness, g: gravity, alpha: incline}
-coordinates: [theta]
-gravity: [0, -g*sin(alpha)]
-points:
-  A: L*[sin(theta), cos(theta)]
-  S: [0, L*cos(theta)]
-  G: L/2*[sin(theta), cos(theta)]
-bodies:
-  rod: {shape: rod, mass: m, length: L, at: G, angle: -theta, axis: y}
-  load: {shape: particle, mass: M, at: A}
-springs:
-  s: {stiffness: k, between: [A, S]}
-questions:
-  - modes: {about: {theta: 0}, for: M}
-"""
+LOADED_ROD = (ROD_ON_INCLINE.replace("parameters: {", "parameters: {M: mass of the load, ")
+              .replace("springs:", "  load: {shape: particle, mass: M, at: A}\nsprings:")
+              + "questions:\n  - modes: {about: {theta: 0}, for: M}\n")
 
 
 def test_for_a_parameter_that_splits_nothing_is_said() -> None:

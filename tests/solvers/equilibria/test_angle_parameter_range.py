@@ -23,7 +23,7 @@ from click.testing import CliRunner
 
 from rbdsolve.cli import main
 
-from conftest import same
+from conftest import ROD_ON_INCLINE, same
 
 DISK = """title: a pinned disk on an incline, on a spring
 parameters: [m, r, g, k, alpha]
@@ -157,21 +157,7 @@ def test_the_modes_about_a_top_held_for_every_incline(tmp_path) -> None:
     V = m g sin α (L/2) cos θ + ½ k L² sin²θ; at θ = π, K = k L² + m g L sin α/2 and
     M = m L²/3, so λ = 3 (2 L k + g m sin α)/(2 L m) > 0 for every α in (0, π): an
     oscillation (it was refused: "the sign … depends on the parameters")."""
-    text = """title: a rod on an incline held by a horizontal spring
-parameters: {m: mass, L: length, k: stiffness, g: gravity, alpha: incline}
-coordinates: [theta]
-gravity: [0, -g*sin(alpha)]
-points:
-  A: L*[sin(theta), cos(theta)]
-  S: [0, L*cos(theta)]
-  G: L/2*[sin(theta), cos(theta)]
-bodies:
-  rod: {shape: rod, mass: m, length: L, at: G, angle: -theta, axis: y}
-springs:
-  s: {stiffness: k, between: [A, S]}
-questions:
-  - modes: {about: {theta: pi}}
-"""
+    text = ROD_ON_INCLINE + "questions:\n  - modes: {about: {theta: pi}}\n"
     path = tmp_path / "rod.yaml"
     path.write_text(text, encoding="utf-8")
     out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
