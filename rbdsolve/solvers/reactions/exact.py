@@ -234,7 +234,8 @@ def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, start: s
         for s in supports}
     answers = _replace(answers, to={model.coordinate_names()[0]: to}, there=there and
                        {k: _timeless(r, model) for k, r in there.items()}, there_reached=reached)
-    return answers, rs.there_steps(model, to, w2, supports, there)
+    stays = reached is False and simplifies_to_zero(rate_squared.diff(model.q[0]).xreplace({model.q[0]: start}))
+    return answers, rs.there_steps(model, to, w2, supports, there, at_equilibrium=stays)
 
 
 SAMPLES = 6  # parameter points at which, without values, whether the motion gets there is judged

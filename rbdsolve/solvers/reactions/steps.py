@@ -92,13 +92,18 @@ def instant_steps(model: Model, instant, supports: tuple[Held, ...], at: dict) -
     return [state_step(model, instant), st.result(f"{when}, the forces are:", *math)]
 
 
-def there_steps(model: Model, to: sp.Expr, w2: sp.Expr, supports: tuple[Held, ...], there: dict | None
-                ) -> list[st.Step]:
+def there_steps(model: Model, to: sp.Expr, w2: sp.Expr, supports: tuple[Held, ...], there: dict | None,
+                at_equilibrium: bool = False) -> list[st.Step]:
     """Where the motion gets to: q̇² there, then the forces along the motion there (or
-    that it does not get there, and why: q̇² < 0 there, or a turning back on the way)."""
+    that it does not get there, and why: released at an equilibrium it stays, q̇² < 0
+    there, or a turning back on the way)."""
     q, qd = model.to_time(model.q[0]), model.to_time(model.qd[0])
     steps = [st.given("Where the motion gets to:", Relation(q, to), Relation(qd**2, model.to_time(w2)))]
     if there is None:
+        if at_equilibrium:
+            return steps + [st.note("Released at rest at an equilibrium (q̈ = 0 there), it stays at rest, so no force "
+                                    "is given where it would get to (q̇² above is that of a start displaced ever so "
+                                    "slightly).")]
         negative = sign_of(w2, model.decided_by) == -1
         why = ("q̇² < 0 there" if negative else
                "q̇² reaches 0 on the way, or it sets off the other way: it turns back before")

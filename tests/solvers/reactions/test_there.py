@@ -85,3 +85,13 @@ def test_an_angle_a_whole_turn_on_is_the_same_place(tmp_path) -> None:
     _, found = _result(tmp_path, "from_rest: {phi: pi/2}, to: {phi: 2*pi}")
     assert found["answers"]["there_reached"] is True
     assert found["answers"]["there"]["O"]["components"] == {"R_Ox": "0", "R_Oy": "5*g*m/2"}
+
+
+def test_released_at_an_equilibrium_it_stays_and_says_so(tmp_path) -> None:
+    """Upright at φ = π the rod is at an equilibrium (φ̈ = −3 g sin φ/(2 l) = 0 there):
+    released at rest it stays, though φ̇² = 3 g (cos φ + 1)/l = 3 g/l > 0 at φ = π/2 (a
+    start displaced ever so slightly). Neither 'q̇² < 0 there' nor a turning back is why."""
+    _, found = _result(tmp_path, "from_rest: {phi: pi}, to: {phi: pi/2}")
+    assert found["answers"]["there_reached"] is False and found["answers"]["there"] is None
+    notes = [s["text"] for s in found["steps"] if "no force is given" in s["text"]]
+    assert len(notes) == 1 and notes[0].startswith("Released at rest at an equilibrium"), notes
