@@ -256,7 +256,7 @@ def _curved(c: Contact, e: Curved, s: _Surface, sigma, how: _Placing, names: Sym
     R = sp.rot_axis3(-phi)
     origin = s.point + rho * s.normal - R * e.centre
     a, b = _rates(origin, s.point, s.tangent, phi, {sigma: 1, phi: 0}, {sigma: 0, phi: 1})
-    ratio = _constant(c, sp.simplify(-a / b), (sigma, phi))  # φ̇ = ratio σ̇
+    ratio = _constant(c, _ratio(a, b), (sigma, phi))  # φ̇ = ratio σ̇
     w = how.w
     if c.measure is Measure.ALONG:
         at = {sigma: w, phi: ratio * w}
@@ -287,7 +287,7 @@ def _flat(c: Contact, e: Flat, s: _Surface, sigma, how: _Placing, names: Symbols
     point = s.point.subs(sigma, phi)
     tangent = s.tangent.subs(sigma, phi)
     a, b = _rates(origin, point, tangent, phi, {phi: 1, lam: 0}, {phi: 0, lam: 1})
-    ratio = _constant(c, sp.simplify(-a / b), (phi, lam))  # λ̇ = ratio φ̇
+    ratio = _constant(c, _ratio(a, b), (phi, lam))  # λ̇ = ratio φ̇
     at = {phi: how.w, lam: ratio * how.w}
     dependent = user_function(f"s_{c.name}")(t)
     span = (-e.half_length / ratio, e.half_length / ratio)  # |λ| ≤ half length, λ = ratio·w
@@ -305,6 +305,14 @@ def _rates(origin, point, tangent, phi, first: dict, second: dict) -> tuple[sp.E
         velocity += rate * weights.get(phi, 0) * _Z.cross(point - origin)
     along = sp.expand(sp.trigsimp(sp.expand(velocity.dot(tangent))))
     return along.coeff(rates[0]), along.coeff(rates[1])
+
+
+def _ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
+    """−a/b of the rolling relation a ẋ₁ + b ẋ₂ = 0, a ratio of the radii for a line or a
+    circle ((R − r)/r inside a circle): tidied (sin² + cos² = 1) and factored, not run
+    through ``simplify``, whose first call in a process costs ~0.1 s of imports (sympy
+    loads its physical units to see whether the expression holds one)."""
+    return sp.factor(tidy(-a / b))
 
 
 def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:

@@ -204,7 +204,9 @@ def _independent_rows(A: sp.Matrix, model: Model, wanted: int) -> list[int]:
 def _holds(residual: sp.Expr, model: Model) -> bool:
     """Zero at two generic samples, relative to the size of its terms."""
     for seed in (3, 17):
-        point = generic_point(model, seed)
+        # the point as 30-digit floats: the residual is then evaluated as it is built (exact
+        # rationals put in built the whole expression first, radicals and all: 4 times slower)
+        point = {s: sp.N(v, 30) for s, v in generic_point(model, seed).items()}
         value = abs(sp.N(residual.xreplace(point), 30))
         size = sum(abs(sp.N(t.xreplace(point), 30)) for t in sp.Add.make_args(sp.expand(residual))) or 1
         if value > 1e-15 * size:
