@@ -18,6 +18,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.core.evalf import PrecisionExhausted
 
+from rbdsolve.form.tidy import tidy
+
 # Generic values, one per symbol (in sorted order): unlikely to be a root or a pole of a
 # physical formula by chance, and a chance hit only costs the simplify it would have run.
 _VALUES = tuple(sp.Rational(p, q) for p, q in ((13, 7), (17, 11), (23, 13), (29, 17), (31, 19), (37, 23),
@@ -32,7 +34,7 @@ def simplifies_to_zero(expr: sp.Expr) -> bool:
         return True
     if surely_nonzero(expr):
         return False
-    return sp.simplify(expr) == 0
+    return tidy(expr) == 0 or sp.simplify(expr) == 0  # tidy is exact: its 0 is a proof
 
 
 def surely_nonzero(expr: sp.Expr) -> bool:

@@ -168,7 +168,7 @@ def _hanging(c: Contact, drum: Body, names: Symbols, values: dict) -> tuple[sp.M
     """A body on a string from a drum over a pulley, or straight from it (model/constraints/strings.py)."""
     e = _geometry(c, drum, c.pulley.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
     origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names, values)
-    return origin, Rolling(c.name, c.body, point.applyfunc(sp.simplify), lhs, rhs, dependent, integrated, False, c,
+    return origin, Rolling(c.name, c.body, point.applyfunc(tidy), lhs, rhs, dependent, integrated, False, c,
                            requires=_wound(c, drum, names))
 
 
@@ -385,11 +385,11 @@ def _arc_span(e: Curved, s: _Surface, angle: sp.Expr, travel: dict, q) -> tuple[
     middle, half = e.arc
     facing = (sp.rot_axis3(angle) * -s.normal.subs(travel)).applyfunc(tidy)
     d0 = facing.subs(q, 0).applyfunc(tidy)
-    kappa = sp.simplify(tidy(_turn(d0).dot(facing.diff(q).subs(q, 0))))
-    if kappa == 0:
+    kappa = sp.cancel(tidy(_turn(d0).dot(facing.diff(q).subs(q, 0))))
+    if simplifies_to_zero(kappa):
         return None
-    delta = sp.atan2(sp.simplify(middle.cross(d0)[2]), sp.simplify(middle.dot(d0)))
-    return (sp.simplify((-half - delta) / kappa), sp.simplify((half - delta) / kappa))
+    delta = sp.atan2(tidy(middle.cross(d0)[2]), tidy(middle.dot(d0)))
+    return (sp.cancel((-half - delta) / kappa), sp.cancel((half - delta) / kappa))
 
 
 def _negated(coefficient: sp.Expr, rate: sp.Expr) -> sp.Expr:

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rbdsolve.form.tidy import tidy
 from rbdsolve.errors import InputError
 from rbdsolve.model.constraints.edges import Curved
 from rbdsolve.model.state import t, user_function
@@ -53,7 +54,7 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None 
         C, top = _tangent_point(c, centre, e.radius, d, over, names), sp.zeros(3, 1)
     v_C = state.d_dt(centre) + state.d_dt(phi) * _Z.cross(C - centre)
     rate = sp.expand(sp.trigsimp(sp.expand((v_C - top).dot(d))))
-    coefficients = [sp.simplify(rate.coeff(qd)) for qd in state.qd]
+    coefficients = [sp.cancel(tidy(rate.coeff(qd))) for qd in state.qd]
     if any(a.has(*state.q) for a in coefficients) or rate.has(t):
         raise InputError(f"contact '{c.name}': the string's speed off '{drum.name}' ({sp.sstr(rate)}) does not "
                          "integrate to a length; the drum must roll or turn at constant rates' ratios", p.loc)
@@ -80,7 +81,7 @@ def _side_point(c: Contact, centre: sp.Matrix, rho, d: sp.Matrix, values: dict) 
     with n·e > 0 for that side's direction e (left: −e_x), a sign the values decide
     where the direction holds parameters."""
     side = c.pulley.side
-    across = sp.simplify(_Z.cross(d).dot(sp.Matrix(_SIDES[side])))
+    across = tidy(_Z.cross(d).dot(sp.Matrix(_SIDES[side])))
     if across == 0:
         raise InputError(f"contact '{c.name}': a string running along {sp.sstr(list(d[:2]))} leaves the drum on "
                          f"its {'left or right' if side in ('above', 'below') else 'top or bottom'}, not "
@@ -100,10 +101,10 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
     reference = {q: 0 for q in names.state.q}
     for sign in (1, -1):
         C = centre + sign * rho * n
-        across = sp.simplify((over - C).dot(n))
+        across = tidy((over - C).dot(n))
         if not simplifies_to_zero(across.xreplace(reference)):
             continue
-        if sp.simplify((over - C).dot(d).xreplace(reference)).is_negative:
+        if tidy((over - C).dot(d).xreplace(reference)).is_negative:
             continue
         if across != 0:
             raise InputError(f"contact '{c.name}': the string from '{c.pulley.drum}' to the pulley does not keep its "
@@ -118,7 +119,7 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
 def _distance(a: sp.Matrix, b: sp.Matrix, names: Symbols) -> sp.Expr:
     reference = {q: 0 for q in names.state.q}
     gap = (a - b).xreplace(reference)
-    return sp.sqrt(sp.simplify(gap.dot(gap)))
+    return sp.sqrt(tidy(gap.dot(gap)))
 
 
 def _unit(v: sp.Matrix) -> sp.Matrix:

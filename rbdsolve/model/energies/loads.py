@@ -134,7 +134,7 @@ def _levered(force: sp.Matrix, point: sp.Matrix, body, state) -> sp.Expr | None:
     """−F·r_G − τ α for a planar body whose lever τ = ((r_P − r_G) × F)·e_z holds no q."""
     if body.angle is None or body.turns_3d:
         return None
-    lever = sp.simplify((point - body.position).cross(force)[2])
+    lever = tidy((point - body.position).cross(force)[2])
     if lever.has(*state.q):
         return None
     return -force.dot(body.position) - lever * body.angle

@@ -26,6 +26,7 @@ from enum import Enum
 
 import sympy as sp
 
+from rbdsolve.form.tidy import tidy
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.errors import InputError, Location, UnsolvedError
 from rbdsolve.model.build import Model, RigidBody
@@ -142,7 +143,7 @@ def _hanging(model: Model, rolling) -> Held:
 
 
 def _unit(v: sp.Matrix) -> sp.Matrix:
-    return (v / sp.sqrt(v.dot(v))).applyfunc(sp.simplify)
+    return (v / sp.sqrt(tidy(v.dot(v)))).applyfunc(tidy)
 
 
 def _point(model: Model, support: Support) -> Held:
@@ -235,10 +236,10 @@ def _normal(model: Model, support: Support, column: sp.Matrix) -> sp.Matrix:
     across = _Z.cross(column)
     if toward is not None and simplifies_to_zero(across.cross(toward).dot(_Z)):
         return _unit(toward)
-    c = column.applyfunc(sp.simplify)
-    n = (_Z.cross(c) / sp.sqrt(sp.simplify(c.dot(c)))).applyfunc(lambda x: sp.simplify(sp.factor_terms(x)))
+    c = column.applyfunc(tidy)
+    n = (_Z.cross(c) / sp.sqrt(tidy(c.dot(c)))).applyfunc(lambda x: tidy(sp.factor_terms(x)))
     if toward is None:
         return n
     at_zero = {q: 0 for q in model.q}
-    sign = sp.sign(sp.simplify(n.dot(toward).xreplace(at_zero)).xreplace(model.decided_by or {}))
+    sign = sp.sign(tidy(n.dot(toward).xreplace(at_zero)).xreplace(model.decided_by or {}))
     return -n if sign == -1 else n
