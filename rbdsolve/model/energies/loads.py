@@ -181,7 +181,7 @@ def _leaves(f: Force, names: Symbols, centre: sp.Matrix, force: sp.Matrix, decid
     w = f.wound
     rho = names.scalar(w.radius)
     size = sp.sqrt(force.dot(force))
-    unit = (force / size).applyfunc(lambda x: sp.simplify(sp.factor_terms(x)))
+    unit = (force / size).applyfunc(lambda x: tidy(sp.factor_terms(x)))
     if unit.has(t, *names.state.q):
         raise InputError(f"force '{f.name}': a string wound on the body leaves it along the force, whose direction "
                          f"({to_unicode(unit.T)}) changes as the scene moves; a wound string's pull keeps one "

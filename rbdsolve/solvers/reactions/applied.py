@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from rbdsolve.form.tidy import tidy
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, SpringModel
@@ -137,7 +138,7 @@ def _light_rod(model: Model, s: SpringModel) -> Applied | None:
                 if all(abs(sp.diff(s.stretch - kappa * turn, q).xreplace(generic_point(model, seed)).evalf(30)) < 1e-20
                        for seed in (2, 5) for q in model.q):
                     force = -s.stiffness * s.stretch * kappa * _Z.cross(d) / (d[0] ** 2 + d[1] ** 2)
-                    return Applied(s.name, b.name, b.position, force.applyfunc(sp.simplify), sp.zeros(3, 1))
+                    return Applied(s.name, b.name, b.position, force.applyfunc(tidy), sp.zeros(3, 1))
     return None
 
 
