@@ -172,3 +172,35 @@ def test_a_string_wound_outside_the_rim_is_refused_at_its_radius() -> None:
     assert (caught.value.location.line, caught.value.location.column) == (9, 70)  # at 2*R
     with pytest.raises(InputError, match=r"break the assumption 'R ≥ b' \(implied by contact 'S'"):
         build_model(load_text(SPOOL.replace("questions", "values: {R: 1, b: 2}\nquestions"), "spool.yaml"))
+
+
+DISK_IN_TRACK = """\
+parameters: {m: mass, r: length, R: length, g: acceleration}
+assumptions: [R > r]
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+questions: [eom]
+"""
+
+
+def test_a_rolling_contact_is_placed_without_simplify(monkeypatch) -> None:
+    """The disk's place, angle and contact point by tidy alone (simplify's first call in a
+    process imports sympy's physical units, ~0.1 s); by hand: the centre at (R − r)
+    (sin θ, −cos θ), the disk turned by −(R − r) θ/r."""
+    def refuse(expr, *args, **kwargs):
+        if not sp.sympify(expr).args:  # a number or a symbol: simplify returns it before any import
+            return expr
+        raise AssertionError(f"simplify called on {expr}")
+
+    monkeypatch.setattr(sp, "simplify", refuse)
+    model = build_model(load_text(DISK_IN_TRACK, "disk-in-track.yaml"))
+    R, r = (model.symbols.parameters[n] for n in ("R", "r"))
+    theta = model.q[0]
+    disk = next(b for b in model.bodies if b.name == "disk")
+    assert sp.expand(disk.position[0] - (R - r) * sp.sin(theta)) == 0
+    assert sp.expand(disk.position[1] + (R - r) * sp.cos(theta)) == 0
+    assert sp.expand(disk.angle + (R - r) * theta / r) == 0
