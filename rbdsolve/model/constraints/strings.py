@@ -82,11 +82,13 @@ def _side_point(c: Contact, centre: sp.Matrix, rho, d: sp.Matrix, values: dict) 
     where the direction holds parameters."""
     side = c.pulley.side
     across = tidy(_Z.cross(d).dot(sp.Matrix(_SIDES[side])))
-    if across == 0:
+    if simplifies_to_zero(across):
         raise InputError(f"contact '{c.name}': a string running along {sp.sstr(list(d[:2]))} leaves the drum on "
                          f"its {'left or right' if side in ('above', 'below') else 'top or bottom'}, not "
                          f"{side} it: name the side across the string", c.pulley.loc)
     sign = sp.sign(across.xreplace(values)) if across.free_symbols else sp.sign(across)
+    if not sign.is_number:  # tidy's form does not say: simplify's may (slower, stronger)
+        sign = sp.sign(sp.simplify(across).xreplace(values))
     if not sign.is_number or sign == 0:
         raise InputError(f"contact '{c.name}': which side of the drum is '{side}' for a string along "
                          f"{sp.sstr(list(d[:2]))} depends on the sign of {sp.sstr(across)}: give the parameters in "
@@ -104,9 +106,9 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
         across = tidy((over - C).dot(n))
         if not simplifies_to_zero(across.xreplace(reference)):
             continue
-        if tidy((over - C).dot(d).xreplace(reference)).is_negative:
+        if _negative((over - C).dot(d).xreplace(reference)):
             continue
-        if across != 0:
+        if not simplifies_to_zero(across):
             raise InputError(f"contact '{c.name}': the string from '{c.pulley.drum}' to the pulley does not keep its "
                              f"direction as the scene moves ((P − C)·n = {sp.sstr(across)}, not 0): a straight "
                              "part that turns is not supported", c.pulley.loc)
@@ -114,6 +116,13 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
     raise InputError(f"contact '{c.name}': the string leaving '{c.pulley.drum}' along the direction given does not "
                      "pass through the pulley's point 'over' at the reference configuration (all coordinates 0): "
                      "it must leave the drum tangentially, straight towards that point", c.pulley.loc)
+
+
+def _negative(x: sp.Expr) -> bool:
+    """Whether x < 0 by its symbols' assumptions: read off its tidy form, or, where that
+    does not say, off simplify's (the slower, stronger one)."""
+    said = tidy(x).is_negative
+    return bool(said if said is not None else sp.simplify(x).is_negative)
 
 
 def _distance(a: sp.Matrix, b: sp.Matrix, names: Symbols) -> sp.Expr:

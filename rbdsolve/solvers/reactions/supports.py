@@ -241,5 +241,8 @@ def _normal(model: Model, support: Support, column: sp.Matrix) -> sp.Matrix:
     if toward is None:
         return n
     at_zero = {q: 0 for q in model.q}
-    sign = sp.sign(tidy(n.dot(toward).xreplace(at_zero)).xreplace(model.decided_by or {}))
+    facing = n.dot(toward).xreplace(at_zero)
+    sign = sp.sign(tidy(facing).xreplace(model.decided_by or {}))
+    if not sign.is_number:  # tidy's form does not say: simplify's may (slower, stronger)
+        sign = sp.sign(sp.simplify(facing).xreplace(model.decided_by or {}))
     return -n if sign == -1 else n
