@@ -316,6 +316,8 @@ def _ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
 
 
 def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
+    if ratio.has(*unknowns):  # what tidy left, simplify (slower, stronger) may still cancel
+        ratio = sp.simplify(ratio)
     if ratio.has(*unknowns) or ratio.has(sp.nan, sp.zoo):
         raise InputError(f"contact '{c.name}': this edge and surface give a rolling relation that does not "
                          "integrate (not a line or circle on a line or circle)", c.loc)

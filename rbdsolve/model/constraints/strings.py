@@ -54,7 +54,7 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None 
         C, top = _tangent_point(c, centre, e.radius, d, over, names), sp.zeros(3, 1)
     v_C = state.d_dt(centre) + state.d_dt(phi) * _Z.cross(C - centre)
     rate = sp.expand(sp.trigsimp(sp.expand((v_C - top).dot(d))))
-    coefficients = [sp.cancel(tidy(rate.coeff(qd))) for qd in state.qd]
+    coefficients = [_constant_part(rate.coeff(qd), state.q) for qd in state.qd]
     if any(a.has(*state.q) for a in coefficients) or rate.has(t):
         raise InputError(f"contact '{c.name}': the string's speed off '{drum.name}' ({sp.sstr(rate)}) does not "
                          "integrate to a length; the drum must roll or turn at constant rates' ratios", p.loc)
@@ -116,6 +116,13 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
     raise InputError(f"contact '{c.name}': the string leaving '{c.pulley.drum}' along the direction given does not "
                      "pass through the pulley's point 'over' at the reference configuration (all coordinates 0): "
                      "it must leave the drum tangentially, straight towards that point", c.pulley.loc)
+
+
+def _constant_part(x: sp.Expr, q) -> sp.Expr:
+    """x tidied and over one denominator; simplified (slower, stronger) where that still
+    holds a coordinate, before the caller refuses it as not constant."""
+    tidied = sp.cancel(tidy(x))
+    return sp.simplify(x) if tidied.has(*q) else tidied
 
 
 def _negative(x: sp.Expr) -> bool:

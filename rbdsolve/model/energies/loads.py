@@ -135,6 +135,8 @@ def _levered(force: sp.Matrix, point: sp.Matrix, body, state) -> sp.Expr | None:
     if body.angle is None or body.turns_3d:
         return None
     lever = tidy((point - body.position).cross(force)[2])
+    if lever.has(*state.q):  # what tidy left, simplify (slower, stronger) may still cancel
+        lever = sp.simplify(lever)
     if lever.has(*state.q):
         return None
     return -force.dot(body.position) - lever * body.angle
@@ -182,6 +184,8 @@ def _leaves(f: Force, names: Symbols, centre: sp.Matrix, force: sp.Matrix, decid
     rho = names.scalar(w.radius)
     size = sp.sqrt(force.dot(force))
     unit = (force / size).applyfunc(lambda x: tidy(sp.factor_terms(x)))
+    if unit.has(t, *names.state.q):  # what tidy left, simplify (slower, stronger) may still cancel
+        unit = unit.applyfunc(sp.simplify)
     if unit.has(t, *names.state.q):
         raise InputError(f"force '{f.name}': a string wound on the body leaves it along the force, whose direction "
                          f"({to_unicode(unit.T)}) changes as the scene moves; a wound string's pull keeps one "
