@@ -106,6 +106,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
             return _impulse(coordinates[key])
         if named[0] == "velocities":
             return rate_unit(coordinates[key], 1)
+    if kind == "energy" and len(named) >= 2 and named[-2] in ("speed", "speed_squared"):
+        return "m/s" if named[-2] == "speed" else "m²/s²"  # a point's speed, whatever q's unit was given in
     if kind == "energy" and len(named) >= 2 and key in coordinates and named[-2] in ("rate", "rate_squared"):
         return rate_unit(coordinates[key], 1, 2 if named[-2] == "rate_squared" else 1)
     if kind == "steady_motion" and (named[0] in ("rates", "angular_velocity")

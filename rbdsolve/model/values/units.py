@@ -114,7 +114,7 @@ def _kinematic(named: list[str]) -> bool:
 def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
     """Is the leaf a coordinate's value, rate or acceleration (an equilibrium's, the one
     modes are about, a state's, where a push first reaches zero along a motion)?"""
-    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent", "steady", "lost_at", "turns_at"):
+    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent", "steady", "lost_at", "turns_at", "to"):
         return False
     rate = _RATE_OF.fullmatch(named[-1])
     return (rate.group(2) if rate else named[-1]) in coordinates

@@ -53,3 +53,38 @@ def test_a_small_oscillation_frequency_is_in_radians_per_second_whatever_the_par
     bare number (a frame's rate Ω = 8.9 set on the command line), as the numeric route's."""
     assert fixed_unit("modes", ("about", 0, "frequencies", 0), {"theta": NUMBER}) == "rad/s"
     assert fixed_unit("modes", ("about", 0, "eigenvalues", 0), {"theta": NUMBER}) == "1/s²"
+
+
+BLOCK_ON_INCLINE = """\
+parameters: {m: mass, g: acceleration, alpha: angle of the incline}
+values: {m: 2 kg, g: 9.81 m/s^2, alpha: 30 deg}
+coordinates: {x: length}
+gravity: [0, -g]
+points:
+  P: x*[cos(alpha), -sin(alpha)]
+bodies:
+  block: {shape: particle, mass: m, at: P}
+questions:
+  - energy: {from_rest: {x: 0}, to: {x: 50 cm}, points: [block]}
+"""
+
+
+def test_a_speed_where_the_motion_gets_to_is_in_metres_per_second(tmp_path) -> None:
+    """A block slides 50 cm down a smooth 30° incline from rest: by hand v² = 2 g x sin α
+    = 4.905 m²/s², v = 2.21472 m/s. The 50 cm is put in as 1/2, a pure number, so the
+    expression alone read m^½/s (a new user's spool on an incline); a speed is in m/s by
+    what it is, and the place it gets to in the coordinate's unit."""
+    import json
+
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    path = tmp_path / "block.yaml"
+    path.write_text(BLOCK_ON_INCLINE, encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    found = json.loads(result.stdout)["results"][0]
+    assert found["units"]["to"] == {"x": "m"}
+    assert found["units"]["there"]["speed"] == {"block": "m/s"}
+    assert found["units"]["speed_squared"] == {"block": "m²/s²"}
+    assert abs(found["values"]["there"]["speed"]["block"] - 2.21472) < 1e-5
