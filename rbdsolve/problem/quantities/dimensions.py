@@ -54,8 +54,8 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
     for body in bodies:
         for part in body.parts:
             see(part.mass.tree, MASS, f"bodies.{body.name}.mass")
-            for key, value in part.dimensions:
-                see(value.tree, LENGTH, f"bodies.{body.name}.{key}")
+            for key, value in part.dimensions:  # a shape's sizes are lengths, its half_angle an angle
+                see(value.tree, NUMBER if key == "half_angle" else LENGTH, f"bodies.{body.name}.{key}")
     for spring in springs:
         if spring.natural_length is not None:
             see(spring.natural_length.tree, LENGTH, f"springs.{spring.name}.natural_length")
