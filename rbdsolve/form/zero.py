@@ -1,5 +1,9 @@
-"""Whether an expression is zero, as ``sp.simplify(expr) == 0`` says, without the
-simplify where one numeric value already says no.
+"""Decisions on an expression — is it zero, what is its sign, is it free of some
+symbols — as ``sp.simplify`` would make them, without the simplify where a cheaper exact
+look already says. (sympy's first simplify in a process also imports its physical units,
+~0.1 s: docs/performance.md.)
+
+Zero: simplify's verdict, without the simplify where one numeric value already says no.
 
 simplify returns 0 only for an expression that is zero at every value its symbols may
 take (their sympy assumptions: positive, real, integer). So if the expression is not
@@ -35,6 +39,21 @@ def simplifies_to_zero(expr: sp.Expr) -> bool:
     if surely_nonzero(expr):
         return False
     return tidy(expr) == 0 or sp.simplify(expr) == 0  # tidy is exact: its 0 is a proof
+
+
+def tidied_sign(expr: sp.Expr, values: dict | None = None) -> sp.Expr:
+    """sign(expr) with ``values`` put in, read off tidy's form (exact: sin² + cos² = 1,
+    common factors), or, where that form does not say, off simplify's (slower, stronger):
+    a number where either decides, else sympy's unevaluated sign."""
+    sign = sp.sign(tidy(expr).xreplace(values or {}))
+    return sign if sign.is_number else sp.sign(sp.simplify(expr).xreplace(values or {}))
+
+
+def settled(expr: sp.Expr, symbols) -> sp.Expr:
+    """expr (already tidied) as it is where it holds none of ``symbols``, else simplified:
+    what tidy left, simplify may still cancel (a rolling ratio, a lever that must hold no
+    coordinate), before a caller refuses it as not constant."""
+    return sp.simplify(expr) if expr.has(*symbols) else expr
 
 
 def surely_nonzero(expr: sp.Expr) -> bool:

@@ -48,7 +48,7 @@ from rbdsolve.problem.scene import Assumption, Contact
 from rbdsolve.problem.schema import Body, Problem
 from rbdsolve.problem.surfaces import Measure, SurfaceKind
 from rbdsolve.form.tidy import tidy
-from rbdsolve.form.zero import simplifies_to_zero
+from rbdsolve.form.zero import settled, simplifies_to_zero
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -316,8 +316,7 @@ def _ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
 
 
 def _constant(c: Contact, ratio: sp.Expr, unknowns) -> sp.Expr:
-    if ratio.has(*unknowns):  # what tidy left, simplify (slower, stronger) may still cancel
-        ratio = sp.simplify(ratio)
+    ratio = settled(ratio, unknowns)
     if ratio.has(*unknowns) or ratio.has(sp.nan, sp.zoo):
         raise InputError(f"contact '{c.name}': this edge and surface give a rolling relation that does not "
                          "integrate (not a line or circle on a line or circle)", c.loc)

@@ -32,7 +32,7 @@ from rbdsolve.model.state import t, user_function
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.scene import Contact
 from rbdsolve.problem.schema import Body
-from rbdsolve.form.zero import simplifies_to_zero
+from rbdsolve.form.zero import settled, simplifies_to_zero, tidied_sign
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -54,7 +54,7 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None 
         C, top = _tangent_point(c, centre, e.radius, d, over, names), sp.zeros(3, 1)
     v_C = state.d_dt(centre) + state.d_dt(phi) * _Z.cross(C - centre)
     rate = sp.expand(sp.trigsimp(sp.expand((v_C - top).dot(d))))
-    coefficients = [_constant_part(rate.coeff(qd), state.q) for qd in state.qd]
+    coefficients = [settled(sp.cancel(tidy(rate.coeff(qd))), state.q) for qd in state.qd]
     if any(a.has(*state.q) for a in coefficients) or rate.has(t):
         raise InputError(f"contact '{c.name}': the string's speed off '{drum.name}' ({sp.sstr(rate)}) does not "
                          "integrate to a length; the drum must roll or turn at constant rates' ratios", p.loc)
@@ -86,9 +86,7 @@ def _side_point(c: Contact, centre: sp.Matrix, rho, d: sp.Matrix, values: dict) 
         raise InputError(f"contact '{c.name}': a string running along {sp.sstr(list(d[:2]))} leaves the drum on "
                          f"its {'left or right' if side in ('above', 'below') else 'top or bottom'}, not "
                          f"{side} it: name the side across the string", c.pulley.loc)
-    sign = sp.sign(across.xreplace(values)) if across.free_symbols else sp.sign(across)
-    if not sign.is_number:  # tidy's form does not say: simplify's may (slower, stronger)
-        sign = sp.sign(sp.simplify(across).xreplace(values))
+    sign = tidied_sign(across, values)
     if not sign.is_number or sign == 0:
         raise InputError(f"contact '{c.name}': which side of the drum is '{side}' for a string along "
                          f"{sp.sstr(list(d[:2]))} depends on the sign of {sp.sstr(across)}: give the parameters in "
@@ -106,7 +104,7 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
         across = tidy((over - C).dot(n))
         if not simplifies_to_zero(across.xreplace(reference)):
             continue
-        if _negative((over - C).dot(d).xreplace(reference)):
+        if tidied_sign((over - C).dot(d).xreplace(reference)) == -1:
             continue
         if not simplifies_to_zero(across):
             raise InputError(f"contact '{c.name}': the string from '{c.pulley.drum}' to the pulley does not keep its "
@@ -116,20 +114,6 @@ def _tangent_point(c: Contact, centre, rho, d, over, names: Symbols) -> sp.Matri
     raise InputError(f"contact '{c.name}': the string leaving '{c.pulley.drum}' along the direction given does not "
                      "pass through the pulley's point 'over' at the reference configuration (all coordinates 0): "
                      "it must leave the drum tangentially, straight towards that point", c.pulley.loc)
-
-
-def _constant_part(x: sp.Expr, q) -> sp.Expr:
-    """x tidied and over one denominator; simplified (slower, stronger) where that still
-    holds a coordinate, before the caller refuses it as not constant."""
-    tidied = sp.cancel(tidy(x))
-    return sp.simplify(x) if tidied.has(*q) else tidied
-
-
-def _negative(x: sp.Expr) -> bool:
-    """Whether x < 0 by its symbols' assumptions: read off its tidy form, or, where that
-    does not say, off simplify's (the slower, stronger one)."""
-    said = tidy(x).is_negative
-    return bool(said if said is not None else sp.simplify(x).is_negative)
 
 
 def _distance(a: sp.Matrix, b: sp.Matrix, names: Symbols) -> sp.Expr:

@@ -36,6 +36,7 @@ import sympy as sp
 from rbdsolve.errors import InputError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy
+from rbdsolve.form.zero import settled
 from rbdsolve.model.state import t
 from rbdsolve.model.symbols import Symbols
 from rbdsolve.problem.expr import Kind
@@ -134,9 +135,7 @@ def _levered(force: sp.Matrix, point: sp.Matrix, body, state) -> sp.Expr | None:
     """−F·r_G − τ α for a planar body whose lever τ = ((r_P − r_G) × F)·e_z holds no q."""
     if body.angle is None or body.turns_3d:
         return None
-    lever = tidy((point - body.position).cross(force)[2])
-    if lever.has(*state.q):  # what tidy left, simplify (slower, stronger) may still cancel
-        lever = sp.simplify(lever)
+    lever = settled(tidy((point - body.position).cross(force)[2]), state.q)
     if lever.has(*state.q):
         return None
     return -force.dot(body.position) - lever * body.angle
@@ -183,9 +182,7 @@ def _leaves(f: Force, names: Symbols, centre: sp.Matrix, force: sp.Matrix, decid
     w = f.wound
     rho = names.scalar(w.radius)
     size = sp.sqrt(force.dot(force))
-    unit = (force / size).applyfunc(lambda x: tidy(sp.factor_terms(x)))
-    if unit.has(t, *names.state.q):  # what tidy left, simplify (slower, stronger) may still cancel
-        unit = unit.applyfunc(sp.simplify)
+    unit = (force / size).applyfunc(lambda x: settled(tidy(sp.factor_terms(x)), (t, *names.state.q)))
     if unit.has(t, *names.state.q):
         raise InputError(f"force '{f.name}': a string wound on the body leaves it along the force, whose direction "
                          f"({to_unicode(unit.T)}) changes as the scene moves; a wound string's pull keeps one "

@@ -34,7 +34,7 @@ from rbdsolve.model.state import t
 from rbdsolve.model.energies.energy import memoized
 from rbdsolve.problem.options import Support, SupportKind
 from rbdsolve.model.values.values import parameter_sample
-from rbdsolve.form.zero import simplifies_to_zero
+from rbdsolve.form.zero import simplifies_to_zero, tidied_sign
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -241,8 +241,5 @@ def _normal(model: Model, support: Support, column: sp.Matrix) -> sp.Matrix:
     if toward is None:
         return n
     at_zero = {q: 0 for q in model.q}
-    facing = n.dot(toward).xreplace(at_zero)
-    sign = sp.sign(tidy(facing).xreplace(model.decided_by or {}))
-    if not sign.is_number:  # tidy's form does not say: simplify's may (slower, stronger)
-        sign = sp.sign(sp.simplify(facing).xreplace(model.decided_by or {}))
+    sign = tidied_sign(n.dot(toward).xreplace(at_zero), model.decided_by)
     return -n if sign == -1 else n

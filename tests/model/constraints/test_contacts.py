@@ -14,7 +14,7 @@ import sympy as sp
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file, load_text
 
-from conftest import PROBLEMS
+from conftest import PROBLEMS, counted_calls
 
 CASES = sorted((PROBLEMS / "contacts").glob("*.yaml"))
 CASES = [p for p in CASES if not p.name.endswith(".expected.yaml")]
@@ -191,13 +191,10 @@ def test_a_rolling_contact_is_placed_without_simplify(monkeypatch) -> None:
     """The disk's place, angle and contact point by tidy alone (simplify's first call in a
     process imports sympy's physical units, ~0.1 s); by hand: the centre at (R − r)
     (sin θ, −cos θ), the disk turned by −(R − r) θ/r."""
-    def refuse(expr, *args, **kwargs):
-        if not sp.sympify(expr).args:  # a number or a symbol: simplify returns it before any import
-            return expr
-        raise AssertionError(f"simplify called on {expr}")
-
-    monkeypatch.setattr(sp, "simplify", refuse)
+    calls = counted_calls(monkeypatch, sp, "simplify")
     model = build_model(load_text(DISK_IN_TRACK, "disk-in-track.yaml"))
+    # a number or a symbol: simplify returns it before any import
+    assert [args[0] for args in calls if sp.sympify(args[0]).args] == []
     R, r = (model.symbols.parameters[n] for n in ("R", "r"))
     theta = model.q[0]
     disk = next(b for b in model.bodies if b.name == "disk")
