@@ -25,6 +25,7 @@ import sympy as sp
 
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.first_zero import reaches
@@ -136,7 +137,14 @@ def least_mu(F: sp.Expr, N: sp.Expr, model: Model) -> sp.Expr:
     """μ ≥ |F|/N: the friction a rolling contact needs, over the normal push; |…| kept
     where neither the parameters' signs nor their values decide the sign, nor the
     assumptions, nor where the contact holds at all (N ≥ 0: a cylinder on an incline
-    pushes only for α ≤ π/2, where tan α ≥ 0, so μ ≥ tan(α)/3)."""
+    pushes only for α ≤ π/2, where tan α ≥ 0, so μ ≥ tan(α)/3). Once per model and
+    pair: the condition that the contact holds at the state and the least μ there ask
+    for the same one (a slab released on a drum: 0.1 s each)."""
+    return _least_mu(model, F, N)
+
+
+@memoized
+def _least_mu(model: Model, F: sp.Expr, N: sp.Expr) -> sp.Expr:
     ratio = clean_fraction(F / N)
     if sp.count_ops(ratio) <= SIMPLIFY_OPS:  # a longer one (a slab rolling on a drum): minutes of trigsimp
         ratio = _simplified(ratio)
