@@ -383,7 +383,6 @@ def numeric_same_placement(model: Model, a: Mapping[sp.Symbol, float], b: Mappin
     directions ``free`` of a continuum b represents, to 1e-9 relative (least squares
     from starts across a turn in each t)."""
     import numpy as np
-    from scipy.optimize import least_squares
 
     phi = _compiled(model)
     target = phi(np.array([a[q] for q in model.q], dtype=float))
@@ -396,6 +395,9 @@ def numeric_same_placement(model: Model, a: Mapping[sp.Symbol, float], b: Mappin
 
     if not free:
         return bool(np.max(np.abs(residual(np.zeros(0))), initial=0.0) <= 1e-9)
+    # imported here, not above: ~0.27 s of a process, for a continuum only
+    from scipy.optimize import least_squares
+
     for start in np.linspace(-np.pi, np.pi, 9):
         fit = least_squares(residual, np.full(len(free), start), xtol=1e-14, ftol=1e-14, gtol=1e-14)
         if np.max(np.abs(fit.fun)) <= 1e-9:

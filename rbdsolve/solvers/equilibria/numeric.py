@@ -172,7 +172,7 @@ def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float
     """|H⁻¹ g| / max(|q|, 1) + cond(H) ε, with H and g restricted to the directions
     across a continuum (along it the position is exact: the representative)."""
     if free:
-        from scipy.linalg import null_space
+        from rbdsolve.solvers.numeric.dense import null_space
 
         P = null_space(np.array(free, dtype=float))  # orthonormal basis across the continuum
         hess, gradient = P.T @ hess @ P, P.T @ gradient

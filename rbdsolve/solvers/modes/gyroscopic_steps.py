@@ -153,7 +153,8 @@ def numeric_gyroscopic_steps(a, linear: Linear, model: Model) -> tuple[st.Step, 
                          Relation(labels.symbol("gyroscopic_matrix"), floats(a.G)),
                          Relation(labels.symbol("stiffness_matrix"), floats(a.K))),
              st.equation(f"{u} = {X} e^({s}t) gives ({s}²{M} + {s}{G} + {K}) {X} = 0, solved in its first-order form "
-                         f"by the QZ algorithm (scipy.linalg.eig); {s} = i{w} on the imaginary axis is an oscillation:",
+                         f"[[0, 1], [−{K}, −{G}]] z = {s} [[1, 0], [0, {M}]] z, z = ({X}, {s}{X}) (LAPACK's eigenvalues, "
+                         f"through numpy); {s} = i{w} on the imaginary axis is an oscillation:",
                          *[Relation(labels.symbol("exponent", i), sp.Float(re, 15) + sp.Symbol("i") * sp.Float(im, 15))
                            for i, (re, im) in enumerate(a.roots, 1)])]
     if a.frequencies:

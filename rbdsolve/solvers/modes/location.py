@@ -59,7 +59,7 @@ def location_bounds(model: Model, about: Mapping[str, sp.Expr], K: np.ndarray, l
 
 
 def _eigenvalues(pencil: PencilAt, about: Mapping[str, float]) -> np.ndarray:
-    from scipy.linalg import eigh
+    from rbdsolve.solvers.numeric.dense import symmetric_pencil_values
 
     M, K = pencil({n: sp.Float(v, 17) for n, v in about.items()})
-    return eigh(K, M, eigvals_only=True)
+    return symmetric_pencil_values(K, M)

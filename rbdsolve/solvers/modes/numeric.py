@@ -2,9 +2,9 @@
 
     K a = λ M a,   M = Mᵀ > 0,
 
-solved by scipy.linalg.eigh (Cholesky M = L Lᵀ, then the symmetric eigenproblem of
-L⁻¹ K L⁻ᵀ; Golub & Van Loan, Matrix Computations, §8.7), with M and K at the
-equilibrium as floats. The eigenvectors are scaled M-orthonormal (aᵀ M a = 1).
+solved as LAPACK's dsygv solves it (Cholesky M = L Lᵀ, then the symmetric eigenproblem
+of L⁻¹ K L⁻ᵀ; Golub & Van Loan, Matrix Computations, §8.7; numeric/dense.py), with M
+and K at the equilibrium as floats. The eigenvectors are scaled M-orthonormal (aᵀ M a = 1).
 
 Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three terms:
 
@@ -56,6 +56,7 @@ from rbdsolve.solvers.modes.location import location_bounds
 from rbdsolve.solvers.modes.spaces import analyse, warnings
 from rbdsolve.solvers.modes.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static
+from rbdsolve.solvers.numeric import dense
 from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
 from rbdsolve.solvers.numeric.numeric_model import as_floats, linearized
 from rbdsolve.solvers.routes.options import Options
@@ -166,17 +167,15 @@ def generalized_eigh(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
 def solve_pencil(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, Pencil]:
     """``generalized_eigh`` and the Pencil its bounds were computed from."""
-    from scipy.linalg import LinAlgError, cholesky, eigh, solve_triangular
-
     try:
-        L = cholesky(M, lower=True)
-    except LinAlgError:
+        L = dense.cholesky_lower(M)
+    except dense.LinAlgError:
         raise UnsolvedError("the mass matrix is not positive definite at this configuration: "
                             "a coordinate carries no inertia") from None
-    Linv = solve_triangular(L, np.eye(len(M)), lower=True)
+    Linv = dense.lower_inverse(L)
     norm_M = np.linalg.norm(M, 2)
     smallest, eta = _conditioning(M, Linv, norm_M)
-    lam, vectors = eigh(K, M)
+    lam, vectors = dense.symmetric_pencil(K, L)
     # eigh's vectors are M-orthonormal only to rounding (less so as M is ill-conditioned);
     # ‖Lᵀ a‖ is √(aᵀ M a) without the cancellation that could make it negative.
     vectors = vectors / np.linalg.norm(L.T @ vectors, axis=0)

@@ -158,7 +158,7 @@ def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.St
                     + (f"; {t['M']} and {t['K']} are {n}×{n}, in the JSON answers):" if n > MAX_SHOWN else "):"),
                     *matrices),
         st.equation(f"The generalized symmetric eigenproblem {t['K']} {t['a']} = {t['lam']} {t['M']} {t['a']}, "
-                    f"by Cholesky factorization of {t['M']} (scipy.linalg.eigh):",
+                    f"by Cholesky factorization of {t['M']} (LAPACK's, through numpy):",
                     *[Relation(labels.symbol("eigenvalue", i), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
         _conditioning_note(a),
     ]

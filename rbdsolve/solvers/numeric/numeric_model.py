@@ -17,11 +17,11 @@ along which ∂V/∂q is not 2π-periodic (``periodic_angles``: a torsional spri
 turns) is searched as a length.
 
 * One coordinate: a sign-change scan of g (``scan``: adaptive halving with a sampled
-  Lipschitz exclusion test, Brent's method for each root, extrema of g for roots of
+  Lipschitz exclusion test, bisection for each root, extrema of g for roots of
   even multiplicity). Complete, to round-off, under the assumption stated there (|g'|
   within twice its sampled size on each cell; roots more than the smallest cell, box
   width / 2**20, apart); intervals left when its evaluations run out are reported.
-* More coordinates: Newton's method (scipy.optimize.root, 'hybr' with the Jacobian H: newton.py)
+* More coordinates: Newton's method, damped where it would not lower |g| (newton.py),
   from every point of a grid over the box, GRID_POINTS per coordinate (fewer in higher
   dimension, at most MAX_STARTS starts; where even 2 per coordinate would exceed
   MAX_STARTS, a fixed pseudo-random sample of MAX_STARTS points instead). No

@@ -11,13 +11,14 @@ Moore, *Interval Analysis*, 1966, with a sampled instead of a proven Lipschitz b
    and |g(b)| ≤ L (b − r), whose sum is at most L (b − a). A cell not excluded (and
    every cell with a sign change, which may hold three roots) is halved, down to the
    width (high − low) / 2**DEPTH.
-3. In a smallest cell: a sign change of g is a root, found by Brent's method (brentq,
-   to round-off); without one, a sign change of g' is an extremum of g, found the same
-   way, and a root of even multiplicity (g touches zero) when |g| ≤ tol there.
+3. In a smallest cell: a sign change of g is a root, found by bisection and Newton's
+   steps from it (to round-off); without one, a sign change of g' is an extremum of g,
+   found by bisection, and a root of even multiplicity (g touches zero) when |g| ≤ tol
+   there.
 4. A cell of step 1 where g, at both ends and the midpoint, is within tol of zero is
    flat (a continuum of roots, or nearly): its midpoint is returned, not refined.
    Smaller cells are never taken as flat, so that near a multiple root (where |g| ≤ tol
-   over a stretch) only the root itself, by Brent's method, is returned.
+   over a stretch) only the root itself, by bisection, is returned.
 
 Completeness: every root is found, to round-off, provided (i) |g'| on each cell stays
 within SAFETY times its largest sampled value (an assumption, not a proof: a spike of
@@ -38,7 +39,7 @@ CELLS = 256
 DEPTH = 20
 SAFETY = 2.0
 MAX_EVALUATIONS = 20000
-RTOL = 4 * 2.0**-52  # the smallest relative tolerance brentq accepts
+RTOL = 4 * 2.0**-52  # a root's relative tolerance: four units of round-off
 
 
 @dataclass(frozen=True)
@@ -101,19 +102,55 @@ def _excluded(a: Sample, m: Sample, b: Sample) -> bool:
 
 
 def _leaf(a: Sample, b: Sample, f, tol: float) -> list[float]:
-    """A smallest cell: its root by Brent's method (a sign change of g, or g = 0 at an
-    end), else the extremum of g inside (a sign change of g') when |g| ≤ tol there."""
-    from scipy.optimize import brentq
-
+    """A smallest cell: its root by bisection (a sign change of g, or g = 0 at an end),
+    else the extremum of g inside (a sign change of g') when |g| ≤ tol there."""
     g = lambda x: float(f(x)[0])  # noqa: E731
     dg = lambda x: float(f(x)[1])  # noqa: E731
     xtol = RTOL * (b.x - a.x)  # rtol alone cannot stop at a root at 0
-    try:  # disp=False: where rounding blurs the sign of g, the last estimate is kept
+    try:
         if a.g == 0 or b.g == 0 or (a.g > 0) != (b.g > 0):
-            return [brentq(g, a.x, b.x, xtol=xtol, rtol=RTOL, disp=False)]
+            return [_polished(f, bisected(g, a.x, a.g, b.x, b.g, xtol), a.x, b.x)]
         if a.dg == 0 or b.dg == 0 or (a.dg > 0) != (b.dg > 0):
-            x = brentq(dg, a.x, b.x, xtol=xtol, rtol=RTOL, disp=False)
+            x = bisected(dg, a.x, a.dg, b.x, b.dg, xtol)
             return [x] if abs(g(x)) <= tol else []
-    except (UnsolvedError, ValueError):  # V has no value inside, or no bracket after all
+    except UnsolvedError:  # V has no value inside
         return []
     return []
+
+
+def _polished(f, x: float, low: float, high: float) -> float:
+    """Newton's steps x − g/g' from the bisection's point while they stay in the cell and
+    lower |g|: the bracket's last halving leaves x a few units of round-off from the
+    root, Newton's step takes it to the nearest float that rounding allows."""
+    for _ in range(3):
+        value, slope = (float(v) for v in f(x))
+        if value == 0 or slope == 0:
+            return x
+        nearer = x - value / slope
+        if not low <= nearer <= high or nearer == x or abs(float(f(nearer)[0])) >= abs(value):
+            return x
+        x = nearer
+    return x
+
+
+def bisected(h, a: float, ha: float, b: float, hb: float, xtol: float) -> float:
+    """A root of h in [a, b], h(a) and h(b) of opposite signs (or one 0), to within
+    xtol + RTOL |x|: the bracket halved, ~50 times from a smallest cell. Where rounding
+    blurs h's sign, a point of the last bracket. (Brent's method, which scipy's brentq
+    ran here, takes fewer steps but the same to round-off; importing scipy.optimize
+    was ~0.27 s of the process, the halvings are microseconds.)"""
+    if ha == 0:
+        return a
+    if hb == 0:
+        return b
+    while True:
+        m = (a + b) / 2
+        if (b - a) / 2 <= xtol + RTOL * abs(m) or m in (a, b):
+            return m
+        hm = h(m)
+        if hm == 0:
+            return m
+        if (hm > 0) == (ha > 0):
+            a, ha = m, hm
+        else:
+            b = m

@@ -76,3 +76,23 @@ def test_the_roots_are_each_start_s_own_runs() -> None:
     alone = _roots((newton(x, g, H) for x in GRID), g)
     pooled = _roots(from_starts(GRID, g, H, lambda x, y: x - y), g)
     assert pooled == alone and len(alone) > 4
+
+
+def test_a_run_onto_a_continuum_of_roots_lands_on_it_to_round_off() -> None:
+    """V = ½ k (x + 2y − 1)² (k = 5): ∇V = 0 on the whole line x + 2y = 1, where H is
+    singular; from a start off the line the run and its polish end on it to round-off
+    (the least-length Newton step moves straight across the line: its foot from the start)."""
+    k = 5.0
+
+    def g(q):
+        r = q[0] + 2 * q[1] - 1
+        return np.array([k * r, 2 * k * r])
+
+    def H(q):
+        return k * np.array([[1.0, 2.0], [2.0, 4.0]])
+
+    start = np.array([3.0, -5.0])
+    end = newton(start, g, H)
+    assert abs(end[0] + 2 * end[1] - 1) <= 4e-16 * 10
+    foot = start - (start[0] + 2 * start[1] - 1) / 5 * np.array([1.0, 2.0])
+    assert np.max(np.abs(end - foot)) <= 1e-12
