@@ -34,7 +34,7 @@ def check(ctx: Context, question, result: dict) -> None:
                     got = ctx.reader.value(acc[c], p, q, qd, t=t)
                     if not close(got, want[k], _acc_scale(s, q, k), tol * 10):
                         raise Mismatch(f"acceleration of {c} at q={fmt(q)}, q̇={fmt(qd)}: rbdsolve {fmt(got)}, oracle {fmt(want[k])}")
-        _frames(ctx, answers, s, p, tol)
+        _frames(ctx, answers, s, p, tol, i)
         at = answers.get("at")
         if at and question.options and s.static:
             q, qd, _ = ctx.state(question.options, i)
@@ -46,10 +46,12 @@ def check(ctx: Context, question, result: dict) -> None:
     _check_values(ctx, question, result)
 
 
-def _frames(ctx, answers, s, p, tol):
-    """The equations in each frame asked for: the same coordinates, so the same E_k."""
+def _frames(ctx, answers, s, p, tol, i):
+    """The equations in each frame asked for: the same coordinates, so the same E_k, at
+    a state drawn for parameter point i (the one they are evaluated at: point 0's state
+    may put a spring past zero length at point i's, where the equations do not hold)."""
     for frame in answers.get("frames") or []:
-        q, qd, qdd = random_state(ctx, 0)
+        q, qd, qdd = random_state(ctx, i)
         E, S = s.residual(q, qd, qdd, mpmath.mpf(0), sizes=True)
         for k, text in enumerate(frame.get("equations") or []):
             got = ctx.reader.value(text, p, q, qd, qdd, t=mpmath.mpf(0))
