@@ -12,7 +12,8 @@ coordinates are angles (``units.known_dimensions``). With q_i an angle in radian
 - a generalized impulse I_θ = Δ(∂T/∂θ̇) is an angular impulse, N·m·s (I_x: N·s);
 - q̇ and q̈ of an angle are rad/s and rad/s², q̇² rad²/s² (of a length m/s, m/s², m²/s²);
 - a moment (of gravity, of a support: M_C, M_O) is a torque, N·m; a support's force and
-  its other components (N_C, F_C, R_Ox) are forces, N;
+  its other components (N_C, F_C, R_Ox) are forces, N (the numeric route's numbers at a
+  state too, which have no expression to read a dimension from);
 - a growth rate γ = √(−λ) is in 1/s (e^(γt) grows; nothing turns), an eigenvalue λ = ω²
   of small oscillations in 1/s² (λ = 0 too, which has no dimension to read), and its
   frequency ω in rad/s (read from ω's expression, it has none where a parameter given
@@ -99,6 +100,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return "N·m"  # (steady_spin's 'moment' is a principal moment of inertia)
     if kind in ("steady_motion", "reactions") and (key == "force" or named[-2:-1] == ["components"]):
         return "N"  # at a given state too, whose rates put in as bare numbers (θ̇ = 8) carry no 1/s to read
+    if kind == "reactions" and len(named) == 3 and named[0] in ("at", "along"):
+        return "N·m" if key.startswith("M_") else "N"  # {support: {component: a number}}: the numeric route's
     if kind in ("eom", "reactions") and len(named) == 2 and named[0] in ("at", "accelerations"):
         return rate_unit(coordinates.get(key), 2) if key in coordinates else None
     if kind == "impact" and len(named) == 2 and key in coordinates:

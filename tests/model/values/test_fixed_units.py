@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import pytest
+
 from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.model.values.fixed_units import fixed_unit, pair_unit, per_radians, rate_unit
 
@@ -88,3 +90,40 @@ def test_a_speed_where_the_motion_gets_to_is_in_metres_per_second(tmp_path) -> N
     assert found["units"]["there"]["speed"] == {"block": "m/s"}
     assert found["units"]["speed_squared"] == {"block": "m²/s²"}
     assert abs(found["values"]["there"]["speed"]["block"] - 2.21472) < 1e-5
+
+
+PENDULUM_RELEASED = """\
+parameters: {m: mass, l: length, g: acceleration}
+values: {m: 2 kg, l: 50 cm, g: 9.81 m/s^2}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  P: l*[sin(theta), -cos(theta)]
+bodies:
+  bob: {shape: particle, mass: m, at: P}
+questions:
+  - reactions: {forces: [O], from_rest: {theta: 60 deg}}
+"""
+
+
+def test_the_numeric_route_s_forces_at_a_state_are_in_newtons(tmp_path) -> None:
+    """A bob on a light rod released from rest at 60°: by hand the rod pulls it towards O
+    with m g cos θ = 9.81 N (no speed yet, so no centripetal part), and no moment. The
+    numeric route's numbers at the state have no expression to read a dimension from:
+    a push is in N and a moment in N·m by what it is (it printed 'N_O = 9.81 N' on the
+    exact route and 'N_O = 9.81' on the numeric one)."""
+    import json
+
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    path = tmp_path / "pendulum.yaml"
+    path.write_text(PENDULUM_RELEASED, encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--format", "json", "--route", "numeric"])
+    found = json.loads(result.stdout)["results"][0]
+    assert found["route"] == "numeric"
+    assert found["units"]["at"]["O"] == {"N_O": "N", "M_O": "N·m"}
+    assert found["values"]["at"]["O"]["N_O"] == pytest.approx(9.81, rel=1e-12)
+    assert found["values"]["at"]["O"]["M_O"] == pytest.approx(0, abs=1e-12)
