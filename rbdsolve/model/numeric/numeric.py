@@ -133,17 +133,33 @@ class NumericScene:
         """V as a jet of the given order (or a number where V is constant)."""
         return self._energy(_Evaluator(self, q, order=order))
 
+    def term_curvatures(self, q: Sequence) -> np.ndarray:
+        """Σ |∂²(term)/∂q∂q| over V's terms (each body's weight, each spring), entry by
+        entry: the size of what ∂²V/∂q∂q sums, which its rounding is relative to (K ≈ 0
+        where the terms cancel, at a degenerate equilibrium)."""
+        with self.arithmetic.precision():
+            total = np.zeros((self.n, self.n))
+            for term in self._terms(_Evaluator(self, q, order=2)):
+                _, hess = full(term, self.n, self.arithmetic)
+                total += np.abs(np.asarray(hess, dtype=float))
+            return total
+
     def _energy(self, scene: _Evaluator):
         """V on the evaluator's jets (the formula of ``potential``)."""
         V = self.arithmetic.number(0)
+        for term in self._terms(scene):
+            V = V + term
+        return V
+
+    def _terms(self, scene: _Evaluator):
+        """V's terms, one by one: −m g·r_G per body, ½ k s² per spring."""
         if self.gravity is not None:
             g = scene.eval(self.gravity)
             for body in self.bodies:
-                V = V - body.mass * _dot(g, scene.position(body))
+                yield -(body.mass * _dot(g, scene.position(body)))
         for spring in self.springs:
             k = scene.eval(spring.stiffness.tree)
-            V = V + k / 2 * scene.stretch_squared(spring)
-        return V
+            yield k / 2 * scene.stretch_squared(spring)
 
 
 # --- what the numeric route covers ----------------------------------------------------

@@ -10,8 +10,9 @@ equilibria (V flat along a straight line, as a cart's x) is reported once, at it
 point nearest q = 0 along the free directions, which a warning names
 (``continua``); λ = 0 along them is neutral.
 
-Error estimate: one more Newton step, |H⁻¹ ∂V/∂q|, relative to max(|q|, 1), plus
-cond(H) ε for the rounding of the gradient itself; on a continuum H and ∂V/∂q are
+Error estimate: one more Newton step, |H⁻¹ ∂V/∂q|, and how far the rounding of
+∂V/∂q's terms moves the root, ‖H⁻¹‖ times a few n ε of ∂V/∂q's size over the box,
+relative to max(|q|, 1), plus cond(H) ε; on a continuum H and ∂V/∂q are
 taken across it only (along it the representative is exact by construction).
 """
 
@@ -37,10 +38,12 @@ from rbdsolve.solvers.equilibria.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.numeric.numeric_model import (
     CURVATURE_TOL,
+    ROUNDING_UNITS,
     compiled_gradient,
     continuum_text,
     find_numeric,
     periodic_angles,
+    slope_scale,
 )
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.routes.options import Options
@@ -58,6 +61,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if not found.equilibria:
         return _never_balanced(model, found)
     g, H = compiled_gradient(model)
+    slope = slope_scale(model)
     names = model.coordinate_names()
     kept, apart = numeric_listing(model, found.equilibria)
     equilibria, errors = [], []
@@ -65,7 +69,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        error = _error(x, np.asarray(g(x), dtype=float), hess, r.free)
+        error = _error(x, np.asarray(g(x), dtype=float), hess, r.free, slope)
         errors.append(error)
         at, recognized, bound = recognize(dict(zip(names, r.at)), error * max(float(np.max(np.abs(x))), 1.0))
         equilibria.append(NumericEquilibrium(at, Stability(r.kind), tuple(float(c) for c in curvatures), r.free,
@@ -168,9 +172,14 @@ def _never_balanced(model: Model, found) -> Solution:
                     error_estimate=0.0)  # (∂V/∂q is a number: nothing to estimate)
 
 
-def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float:
-    """|H⁻¹ g| / max(|q|, 1) + cond(H) ε, with H and g restricted to the directions
-    across a continuum (along it the position is exact: the representative)."""
+def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free, slope: float) -> float:
+    """(|H⁻¹ g| + ‖H⁻¹‖ δg) / max(|q|, 1) + cond(H) ε, with H and g restricted to the
+    directions across a continuum (along it the position is exact: the representative).
+    δg = ROUNDING_UNITS n ε × ``slope``, the size of ∂V/∂q over the search box: g in
+    floats sums terms that large whatever its own size, so at a root where H is small
+    (nearly degenerate: a rod on springs near its critical stiffness) the root moves by
+    δg/|H|; the g computed there may round to almost 0 and say nothing of it (roots
+    7e-12 off were said within 4e-16)."""
     if free:
         from rbdsolve.solvers.numeric.dense import null_space
 
@@ -179,6 +188,8 @@ def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free) -> float
     try:
         step = np.linalg.solve(hess, gradient) if hess.size else np.zeros(0)
         condition = np.linalg.cond(hess) if hess.size else 1.0
+        inverse = np.linalg.norm(np.linalg.inv(hess), 2) if hess.size else 0.0
     except np.linalg.LinAlgError:
         return float("inf")
-    return float(np.max(np.abs(step), initial=0.0) / max(np.max(np.abs(x)), 1.0) + condition * EPS)
+    rounding = inverse * ROUNDING_UNITS * len(x) * EPS * slope
+    return float((np.max(np.abs(step), initial=0.0) + rounding) / max(np.max(np.abs(x)), 1.0) + condition * EPS)

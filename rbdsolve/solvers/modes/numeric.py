@@ -26,7 +26,10 @@ Error bound, absolute, one per eigenvalue (``eigen_bounds``), the sum of three t
 
 To these, the equilibrium's own error (``location.py``): at the point used, ∂V/∂q in 50
 digits is not 0 where the equilibrium is known only to floating point, and each λ moves
-with the point, twice its first-order move Σ ∂λ/∂q_j δq_j.
+with the point, twice its first-order move Σ ∂λ/∂q_j δq_j. And the rounding of K's
+terms (``stiffness_rounding``): K by automatic differentiation sums the Hessians of
+V's terms, so its error is relative to them, not to K, which at a degenerate
+equilibrium is all rounding.
 
 An eigenvalue within its bound of zero is neutral (zero within rounding); its relative
 error is undefined (None). ``error_estimate`` is the largest relative bound of the
@@ -117,7 +120,8 @@ def modes_at(about: dict, model: Model):
     if singular := float_reason(M, model.coordinate_names(), "at this configuration"):
         raise UnsolvedError(singular)
     lam, vectors, absolute, pencil = solve_pencil(K, M)
-    absolute = absolute + location_bounds(model, about, K, lam, lambda at: linearized(model, at)[:2])
+    absolute = (absolute + location_bounds(model, about, K, lam, lambda at: linearized(model, at)[:2])
+                + stiffness_rounding(model, about, vectors))
     motions = tuple(classify(x, a) for x, a in zip(lam, absolute))
     relative = tuple(None if m is Motion.NEUTRAL else float(a / abs(x)) for x, a, m in zip(lam, absolute, motions))
     spaces = analyse(pencil, lam, vectors, absolute, tuple(m is Motion.NEUTRAL for m in motions))
@@ -132,6 +136,26 @@ def modes_at(about: dict, model: Model):
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
     return answers, numeric_steps(answers, model, how), warnings(spaces, lam, relative), estimate
+
+
+def stiffness_rounding(model: Model, about: dict, vectors: np.ndarray) -> np.ndarray:
+    """What rounding K's terms moves each λ by. K by automatic differentiation sums the
+    Hessians of V's terms (each weight, each spring), whatever its own size, so each
+    entry is within a few (ROUNDING_UNITS) n ε of Σ |the terms' entries|
+    (``NumericScene.term_curvatures``), and λ = aᵀ K a (aᵀ M a = 1) within that times
+    ‖a‖₂². Where the terms cancel to K ≈ 0 (a degenerate equilibrium: an inverted rod on
+    springs at exactly the critical stiffness) it is all of λ: λ = 2.7e-15 with a bound
+    of 2e-30 was printed as an oscillation of period 1.2·10⁸ s, beside the equilibria
+    question's "undetermined" for the same point. (K from the exact Hessian, rounded
+    once, has only its own rounding, which ``eigen_bounds`` counts.)"""
+    from rbdsolve.solvers.numeric.numeric_model import ROUNDING_UNITS, numeric_scene
+
+    scene = numeric_scene(model)
+    if scene is None:
+        return np.zeros(vectors.shape[1])
+    q0 = list(as_floats(model, about).values())
+    scale = float(np.max(scene.term_curvatures(q0), initial=0.0))
+    return ROUNDING_UNITS * len(vectors) * EPS * scale * np.sum(vectors * vectors, axis=0)
 
 
 def classify(lam: float, bound: float) -> Motion:

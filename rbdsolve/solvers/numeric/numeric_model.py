@@ -70,6 +70,7 @@ MERGE_TOL = 1e-6
 PERIODIC_SAMPLES = 3
 PERIODIC_TOL = 1e-8
 CURVATURE_TOL = 1e-7  # a Hessian eigenvalue this small relative to hessian_scale counts as zero
+ROUNDING_UNITS = 4  # a float ∂V/∂q or ∂²V/∂q² is within this many n ε of the terms it sums
 
 
 def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndarray:
@@ -421,6 +422,12 @@ def _kind(H: np.ndarray, curvature: float) -> str:
     if np.any(eig < -tol):
         return "unstable"
     return "singular"
+
+
+@memoized
+def slope_scale(model: Model) -> float:
+    """``gradient_scale`` with the model's own compiled gradient, once per model."""
+    return gradient_scale(model, compiled_gradient(model)[0])
 
 
 def hessian_scale(model: Model, H) -> float:
