@@ -87,16 +87,16 @@ def _run(start: np.ndarray, g, H, evaluations: int) -> tuple[np.ndarray, bool]:
             return x, False
         J = np.asarray(H(x), dtype=float) if J is None else J
         step = _step(J, f, mu)
-        if step is None:  # H singular: damped, the matrix is not
+        if step is None:  # H not a number here, or the damped matrix singular: damp more
             if mu > MU_GIVE_UP:
                 return x, False
             mu = max(mu * 10, MU_START)
             continue
-        trial = x + _bounded(step, x)
-        ft = _value_at(g, trial)
+        step = _bounded(step, x)
+        ft = _value_at(g, x + step)
         used += 1
         if ft is not None and _norm(ft) < size:
-            x, f, J, mu = trial, ft, None, (mu / 10 if mu > MU_START else 0.0)
+            x, f, J, mu = x + step, ft, None, (mu / 10 if mu > MU_START else 0.0)
             if _norm(step) <= XTOL * (_norm(x) + XTOL):
                 return x, False
         elif mu > MU_GIVE_UP:
