@@ -90,12 +90,13 @@ def quadratic_eigenvalues(M: np.ndarray, G: np.ndarray, K: np.ndarray, exact) ->
     n = len(M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -G]])
     B = np.block([[np.eye(n), np.zeros((n, n))], [np.zeros((n, n)), M]])
+    singular = "the mass matrix is singular at this configuration: a coordinate carries no inertia"
     try:
         s = pencil_eigenvalues(A, B)
     except LinAlgError:
-        s = np.array([np.inf])
+        raise UnsolvedError(singular) from None
     if not np.all(np.isfinite(s)):
-        raise UnsolvedError("the mass matrix is singular at this configuration: a coordinate carries no inertia")
+        raise UnsolvedError(singular)
     reference = _reference(*exact)
     bounds = np.array([SAFETY * min(abs(complex(x) - r) for r in reference) for x in s])
     scale = max(float(np.max(np.abs(s))), 1.0)

@@ -171,9 +171,11 @@ def continuum_text(free: tuple[tuple[float, ...], ...], names: list[str]) -> str
     return "; ".join(parts)
 
 
+@memoized  # the search, the equilibria's error estimates and a refined 'about' share them
 def compiled_gradient(model: Model):
     """g(q) = ∂V/∂q and H(q) = ∂²V/∂q∂q with the parameter values in, as numpy functions:
-    from the numeric scene where it applies, else compiled from the symbolic V."""
+    from the numeric scene where it applies, else compiled from the symbolic V (once per
+    model: lambdify is the costly part)."""
     scene = numeric_scene(model)
     if scene is not None:
         return finite(scene.gradient, model), finite(lambda x: scene.potential(x)[2], model)
@@ -232,8 +234,7 @@ def find_numeric(model: Model) -> NumericEquilibria:
     Once per model: the equilibria question and the modes about the stable one ask for
     the same search (a particle on a spring on an incline: 5 s each)."""
     g, H = compiled_gradient(model)
-    scale = gradient_scale(model, g)
-    tol, curvature = ROOT_TOL * scale, hessian_scale(model, H)
+    tol, curvature = ROOT_TOL * slope_scale(model), hessian_scale(model, H)
     if len(model.q) == 1:
         candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
     else:

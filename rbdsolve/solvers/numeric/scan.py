@@ -122,14 +122,17 @@ def _polished(f, x: float, low: float, high: float) -> float:
     """Newton's steps x − g/g' from the bisection's point while they stay in the cell and
     lower |g|: the bracket's last halving leaves x a few units of round-off from the
     root, Newton's step takes it to the nearest float that rounding allows."""
+    value, slope = (float(v) for v in f(x))
     for _ in range(3):
-        value, slope = (float(v) for v in f(x))
         if value == 0 or slope == 0:
             return x
         nearer = x - value / slope
-        if not low <= nearer <= high or nearer == x or abs(float(f(nearer)[0])) >= abs(value):
+        if not low <= nearer <= high or nearer == x:
             return x
-        x = nearer
+        there, slope_there = (float(v) for v in f(nearer))
+        if abs(there) >= abs(value):
+            return x
+        x, value, slope = nearer, there, slope_there
     return x
 
 
