@@ -36,6 +36,7 @@ from sympy.core.function import AppliedUndef
 
 from rbdsolve.errors import InputError, UnsolvedError
 from rbdsolve.model.build import Model, build_model
+from rbdsolve.model.numeric.compiled import numpy_function
 from rbdsolve.problem.schema import Problem, ValueRange
 from rbdsolve.problem.quantities.quantity import Value
 from rbdsolve.report.steps import ProblemReport
@@ -261,7 +262,7 @@ def _evaluate(exprs: list[sp.Expr], symbols: list[sp.Symbol], arrays: list[np.nd
         if not e.free_symbols:
             out[i] = _constant(e)
     if varying:
-        f = sp.lambdify(symbols, [exprs[i] for i in varying], "numpy", cse=True)
+        f = numpy_function(symbols, [exprs[i] for i in varying], cse=True)
         with np.errstate(all="ignore"):
             results = f(*arrays)
         for i, r in zip(varying, results):

@@ -36,6 +36,7 @@ import sympy as sp
 
 from rbdsolve.form.tidy import tidy, tidy_fraction
 from rbdsolve.model.build import Model
+from rbdsolve.model.numeric.compiled import numpy_function
 from rbdsolve.model.energies.energy import memoized, potential_energy
 from rbdsolve.model.state import t
 from rbdsolve.solvers.configuration.placement_screen import clearly_different, clearly_full_rank
@@ -411,5 +412,5 @@ def _compiled(model: Model):
     import numpy as np
 
     values = _sample(model)
-    f = sp.lambdify([model.q], placement(model).xreplace(values), "numpy")
+    f = numpy_function([model.q], placement(model).xreplace(values))
     return lambda x: np.asarray(f(x), dtype=float).ravel()

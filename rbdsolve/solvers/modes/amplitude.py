@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING, Callable, Mapping, Sequence
 import sympy as sp
 
 from rbdsolve.model.build import Model
+from rbdsolve.model.numeric.compiled import numpy_function
 from rbdsolve.model.energies.energy import mass_matrix, potential_energy
 from rbdsolve.report import steps as st
 from rbdsolve.report.steps import Solution
@@ -130,8 +131,8 @@ def compile_dynamics(model: Model) -> Dynamics:
     T2 = (qd.T * p)[0, 0]
     f = -sp.Matrix([V]).jacobian(q).T - p.jacobian(q) * qd + sp.Matrix([T2]).jacobian(q).T / 2
     args = (list(model.q), list(model.qd))
-    return Dynamics(sp.lambdify([args[0]], M, "numpy"), sp.lambdify(args, f, "numpy"),
-                    sp.lambdify(args, T2 / 2 + V, "numpy"))
+    return Dynamics(numpy_function([args[0]], M), numpy_function(args, f),
+                    numpy_function(args, T2 / 2 + V))
 
 
 def simulate(dyn: Dynamics, q0: np.ndarray, a: np.ndarray, omega: float, amplitude: float,

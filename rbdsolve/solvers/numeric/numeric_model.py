@@ -53,6 +53,7 @@ from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import hessian, mass_matrix, memoized, potential_energy, stiffness_matrix
+from rbdsolve.model.numeric.compiled import numpy_function
 from rbdsolve.model.numeric.numeric import FLOAT, NotNumeric, NumericScene, exact_fraction
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.configuration.continua import free_directions, is_axis, null_count, representative
@@ -186,7 +187,7 @@ def compiled_gradient(model: Model):
     # ∂²|u|/∂q² = 2 δ(u) (∂u/∂q)²: 0 wherever u ≠ 0, and where u = 0 (a spring through
     # zero length) V has a kink and no Hessian at all; numpy has no DiracDelta
     H = hessian(V, tuple(q)).applyfunc(lambda e: e.replace(sp.DiracDelta, lambda *_: sp.Integer(0)))
-    return finite(sp.lambdify([q], grad, "numpy"), model), finite(sp.lambdify([q], H.tolist(), "numpy"), model)
+    return finite(numpy_function([q], grad), model), finite(numpy_function([q], H.tolist()), model)
 
 
 def gradient_scale(model: Model, g) -> float:

@@ -37,6 +37,7 @@ import sympy as sp
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
+from rbdsolve.model.numeric.compiled import numpy_function
 from rbdsolve.problem.options import SteadyMotionOptions
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
@@ -130,8 +131,8 @@ def _compile(relations, unknowns, model: Model) -> _System:
     x = sp.Matrix(unknowns)
     F = sp.Matrix(filled)
     sizes = [sum((sp.Abs(term) for term in sp.Add.make_args(sp.expand(r))), sp.Integer(0)) for r in filled]
-    return _System(tuple(unknowns), tuple(relations), sp.lambdify([x], F, "numpy"),
-                   sp.lambdify([x], F.jacobian(x), "numpy"), sp.lambdify([x], sp.Matrix(sizes), "numpy"))
+    return _System(tuple(unknowns), tuple(relations), numpy_function([x], F),
+                   numpy_function([x], F.jacobian(x)), numpy_function([x], sp.Matrix(sizes)))
 
 
 def _scale(model: Model) -> float:
@@ -224,8 +225,8 @@ class _Quantities:
         sizes = [sum((sp.Abs(term) for term in sp.Add.make_args(sp.expand(e))), sp.Integer(0)) for e in exprs]
         needs = frozenset(i for i, u in enumerate(unknowns) if exprs.has(u))
         names = ("omega1", "omega2", "omega3", *(q.text for q in opts.solve_for))
-        return _Quantities(names, needs, sp.lambdify([x], exprs, "numpy"),
-                           sp.lambdify([x], exprs.jacobian(x), "numpy"), sp.lambdify([x], sp.Matrix(sizes), "numpy"))
+        return _Quantities(names, needs, numpy_function([x], exprs),
+                           numpy_function([x], exprs.jacobian(x)), numpy_function([x], sp.Matrix(sizes)))
 
 
 def _analyse(x: np.ndarray, system: _System, quantities: _Quantities) -> NumericSteadyMotion:
