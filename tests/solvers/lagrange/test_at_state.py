@@ -1,0 +1,48 @@
+"""at_state: a value at a state, simplified; sympy's simplify only where it has work."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import sympy as sp
+
+from rbdsolve.solvers.lagrange.accelerations import at_state
+
+ROOT = Path(__file__).resolve().parents[3]
+R, a, b, g, m, theta, theta0 = sp.symbols("R a b g m theta theta0", positive=True)
+
+
+def test_a_rational_function_of_the_parameters_is_one_cancelled_fraction() -> None:
+    """A slab on a drum at θ = 1/10 (by hand: the sum over 2(3R²/25 + 4a² + b²), times
+    25/25, is 5 g m (3 R a sin(1/10) + …)/(3R² + 100a² + 25b²))."""
+    force = m * (6 * R * a * g * sp.sin(theta) / 5 + 8 * a**2 * g * sp.cos(theta) + 2 * b**2 * g * sp.cos(theta)) \
+        / (2 * (3 * R**2 / 25 + 4 * a**2 + b**2))
+    value = at_state(force, {theta: sp.Rational(1, 10)})
+    s, c = sp.sin(sp.Rational(1, 10)), sp.cos(sp.Rational(1, 10))
+    expected = 5 * g * m * (3 * R * a * s + 20 * a**2 * c + 5 * b**2 * c) / (3 * R**2 + 100 * a**2 + 25 * b**2)
+    assert sp.expand(value - expected) == 0
+    assert sp.fraction(value)[1] == 3 * R**2 + 100 * a**2 + 25 * b**2  # one fraction, no 3/25 left inside
+
+
+def test_a_symbolic_angle_keeps_simplify_s_trigonometric_form() -> None:
+    """A ladder released at θ₀: m(3 g cos²θ₀ + g)/4 is g m (3 cos²θ₀ + 1)/4."""
+    value = at_state(m * (3 * g * sp.cos(theta) ** 2 + g) / 4, {theta: theta0})
+    assert value == g * m * (3 * sp.cos(theta0) ** 2 + 1) / 4
+
+
+def test_numbers_at_a_state_cost_no_import_of_physical_units() -> None:
+    """sympy's simplify imports sympy.physics.units on its first call (0.1 s of a
+    process); a value with no function of a symbol left does not need it."""
+    code = ("import sys, sympy as sp\n"
+            "from rbdsolve.solvers.lagrange.accelerations import at_state\n"
+            "m, g, L, th = sp.symbols('m g L theta', positive=True)\n"
+            "print(at_state(m*g*sp.cos(th)/2 + m*L*g/(2*L), {th: sp.pi/3}))\n"
+            "print('sympy.physics.units' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                          env={"PYTHONPATH": str(ROOT)}, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    value, imported = done.stdout.strip().splitlines()
+    assert value == "3*g*m/4"
+    assert imported == "False"
