@@ -6,6 +6,8 @@ import functools
 import os
 import re
 import shutil
+import subprocess
+import sys
 import time
 from fractions import Fraction
 from pathlib import Path
@@ -47,6 +49,15 @@ def counted_calls(monkeypatch, owner, name: str) -> list[tuple]:
 
     monkeypatch.setattr(owner, name, counted)
     return calls
+
+
+def fresh_process(code: str) -> list[str]:
+    """The lines a Python program printed, run in a process of its own with this
+    checkout on its path: what a run imports (``sys.modules``) is seen only there."""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                          env={"PYTHONPATH": str(ROOT)}, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    return done.stdout.strip().splitlines()
 
 
 def needs_tex() -> None:

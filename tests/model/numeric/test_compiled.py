@@ -3,16 +3,14 @@
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
-from pathlib import Path
 
 import numpy as np
 import sympy as sp
 
 from rbdsolve.model.numeric.compiled import numpy_function
 
-ROOT = Path(__file__).resolve().parents[3]
+from conftest import fresh_process
+
 x, y = sp.symbols("x y", real=True)
 
 
@@ -47,9 +45,6 @@ def test_numpy_s_submodules_are_not_imported() -> None:
             "x = sp.Symbol('x')\n"
             "print(numpy_function([x], sp.sin(x) + sp.sqrt(x))(0.25))\n"
             "print(sorted(m for m in ('numpy.testing', 'numpy.f2py', 'numpy.random', 'numpy.ma') if m in sys.modules))")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
-                          env={"PYTHONPATH": str(ROOT)}, timeout=300, check=False)
-    assert done.returncode == 0, done.stderr
-    value, loaded = done.stdout.strip().splitlines()
+    value, loaded = fresh_process(code)
     assert float(value) == math.sin(0.25) + 0.5
     assert loaded == "[]"

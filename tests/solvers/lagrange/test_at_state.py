@@ -2,15 +2,12 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
-from pathlib import Path
-
 import sympy as sp
 
 from rbdsolve.solvers.lagrange.accelerations import at_state
 
-ROOT = Path(__file__).resolve().parents[3]
+from conftest import fresh_process
+
 R, a, b, g, m, theta, theta0 = sp.symbols("R a b g m theta theta0", positive=True)
 
 
@@ -40,9 +37,6 @@ def test_numbers_at_a_state_cost_no_import_of_physical_units() -> None:
             "m, g, L, th = sp.symbols('m g L theta', positive=True)\n"
             "print(at_state(m*g*sp.cos(th)/2 + m*L*g/(2*L), {th: sp.pi/3}))\n"
             "print('sympy.physics.units' in sys.modules)")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
-                          env={"PYTHONPATH": str(ROOT)}, timeout=300, check=False)
-    assert done.returncode == 0, done.stderr
-    value, imported = done.stdout.strip().splitlines()
+    value, imported = fresh_process(code)
     assert value == "3*g*m/4"
     assert imported == "False"
