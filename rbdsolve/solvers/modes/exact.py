@@ -37,14 +37,13 @@ from rbdsolve.form.tidy import tidy
 from rbdsolve.model.assumptions import admissible_sample
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import mass_matrix, potential_energy, stiffness_matrix
-from rbdsolve.model.energies.spring_length import without_deltas
 from rbdsolve.problem.schema import Question
 from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.modes import gyroscopic_terms
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.cases import absent, existence, kinds
 from rbdsolve.report import steps as st
-from rbdsolve.solvers.equilibria.cases import necessary_where, stiffness_at, unsquared
+from rbdsolve.solvers.equilibria.cases import necessary_where, stiffness_at
 from rbdsolve.solvers.equilibria.exact import incomplete, listing
 from rbdsolve.solvers.equilibria.higher_order import degenerate_minimum_note
 from rbdsolve.solvers.conditions.present_conditions import condition_relations
@@ -220,14 +219,13 @@ def _unreadable(spectrum: _Spectrum) -> bool:
 
 def _stiffness(model: Model, at: dict) -> sp.ImmutableMatrix:
     """K = ∂²V/∂q∂q at the equilibrium, tidied, with √(d² + s²) at a root found by
-    squaring as the unsquared equations have it. At a root with acos or asin in it, the
-    equilibria's own K there (``stiffness_at``: made once per root, and not tidied before
-    it is factored; at θ₀ = acos(…) of six parameters, tidying first made 333 operations
-    18 848, six seconds to factor)."""
-    if any(sp.sympify(v).has(sp.acos, sp.asin) for v in at.values()):
-        return stiffness_at(model, at)
-    return sp.ImmutableMatrix(unsquared(without_deltas(stiffness_matrix(potential_energy(model).total, model.q, at)),
-                                        at, model))
+    squaring as the unsquared equations have it: the equilibria's own K there
+    (``stiffness_at``, made once per model and root). The equilibria question has
+    made it already where both are asked (a bead on an offset turning rod: 0.4 s of
+    its three equilibria's); and the Hessian is not tidied before the roots go in (at
+    θ₀ = acos(…) of six parameters, tidying first made 333 operations 18 848, six
+    seconds to factor)."""
+    return stiffness_at(model, at)
 
 
 def _rate(pair: _Pair, scale: sp.Expr, sign: int) -> sp.Expr:
