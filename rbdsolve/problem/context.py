@@ -142,6 +142,12 @@ class Reading:
             return None
         return self.expr(node, kind, what, self.positions)
 
+    def optional_measured(self, node: Node | None, what: str, kinds: tuple[Dimension, ...],
+                          example: str) -> ex.Expr | None:
+        if node is None or (isinstance(node, Scalar) and node.null):
+            return None
+        return self.measured(node, what, kinds, example)
+
     def optional_constant(self, node: Node | None, what: str) -> ex.Expr | None:
         if node is None or (isinstance(node, Scalar) and node.null):
             return None
@@ -235,6 +241,11 @@ class Reading:
             raise InputError(f"give a value for {every}; missing {', '.join(missing)}{hint}", table.loc)
         return tuple(StateValue(n, k, given[(k, n)]) for k, n in wanted if (k, n) in given)
 
+    def coordinate_value(self, node: Node, what: str) -> ex.Expr:
+        """A coordinate's value outside a state (an end of its search range), read as a
+        state's is: parameters and numbers, or ``-90 deg``, ``20 cm``."""
+        return self._state_value(node, 0, what)
+
     def _state_value(self, node: Node, order: int, what: str) -> ex.Expr:
         """A state's value: parameters and numbers, or a quantity with a unit of its
         order's kind, read in SI as exams write it: ``10 deg`` (π/18) or ``30 cm`` for a
@@ -309,6 +320,7 @@ def _unit_hint(error: InputError, node: Node) -> InputError:
         return error
     text = ex._clip(node.text.strip())
     return InputError(f"'{text}' has a unit, and units are read in 'values:', --set, a body's mass and sizes, "
-                      f"and a question's states (at:, from_rest:, about:, to:), not here: write the value here in "
+                      f"a spring's natural length and rest angle, a coordinate's range and a question's states "
+                      f"(at:, from_rest:, about:, to:), not here: write the value here in "
                       f"SI without one (an angle in radians: 30° is pi/6), or name it, with a parameter whose value "
                       f"is '{text}'", node.loc)

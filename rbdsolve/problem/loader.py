@@ -24,6 +24,7 @@ from rbdsolve.problem.sections.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.sections.orientation import OrientationReader
 from rbdsolve.problem.sections.questions import QuestionReader
 from rbdsolve.problem.quantities.dimensions import scene_dimensions
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER
 from rbdsolve.problem.quantities.quantity import Dimension, Value, parse_unit
 from rbdsolve.problem.quantities.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
@@ -347,9 +348,10 @@ class _Loader:
             name=name,
             stiffness=stiffness,
             ends=ends,
-            natural_length=self.reading.optional_constant(spec.get("natural_length"), "a natural length"),
+            natural_length=self.reading.optional_measured(spec.get("natural_length"), "a natural length",
+                                                          (LENGTH,), "a length such as 20 cm"),
             angle=self.reading.optional_expr(angle, ex.Kind.SCALAR, "an angle expression"),
-            rest=self.reading.optional_constant(spec.get("rest"), "a rest angle"),
+            rest=self.reading.optional_measured(spec.get("rest"), "a rest angle", (NUMBER,), "an angle such as 30 deg"),
             loc=spec.loc,
         )
 

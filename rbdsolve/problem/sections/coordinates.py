@@ -7,7 +7,8 @@ angle is periodic and the range a numeric search covers.
       x: {kind: length, range: [0, 2*l]}
       theta: {kind: angle, periodic: false, range: [-2*pi, 2*pi]}   # a spring counts turns
 
-A range is two constants (parameters and numbers), read once the names are declared
+A range is two constants (parameters and numbers, or values with units as a state's:
+``[-90 deg, 90 deg]``, ``[0, 50 cm]``), read once the names are declared
 (``declared_ranges``). A periodic angle is searched over one turn, so a range needs
 ``periodic: false``.
 """
@@ -65,9 +66,10 @@ def declared_ranges(reading: Reading, coordinates: tuple[Coordinate, ...], nodes
 
 def _range(reading: Reading, name: str, node: Node) -> tuple[ex.Expr, ex.Expr]:
     if not isinstance(node, Seq) or len(node.items) != 2:
-        raise InputError(f"a range is [low, high], two constants (parameters and numbers); found "
+        raise InputError(f"a range is [low, high], two constants (parameters and numbers, or values such as "
+                         f"30 deg or 20 cm); found "
                          f"{describe(node)}", node.loc)
-    low, high = (reading.constant(item, f"the range of '{name}'") for item in node.items)
+    low, high = (reading.coordinate_value(item, f"the range of '{name}'") for item in node.items)
     a, b = ex.constant_value(low.tree), ex.constant_value(high.tree)
     if a is not None and b is not None and a >= b:
         raise InputError(f"the range of '{name}' is empty: its low end {low.text} is not below its high "
