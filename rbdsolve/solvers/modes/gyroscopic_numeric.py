@@ -64,7 +64,9 @@ def _linearized(question: Question, model: Model):
     """M, G and K about the steady state: the one 'about' gives, as the exact route takes
     it; where it gives none, or a configuration that is steady only to its rounding
     (decimals typed from a listing), the numeric equilibria's, refined there — a
-    floating-point root, steady to its rounding (``linearize``'s ``rounded``)."""
+    floating-point root, steady to its rounding (``linearize``'s ``rounded``); with a
+    spin's rate given too, that configuration refined on the steady motion's own
+    equations (``refined_steady``)."""
     options = question.options
     values = model.values if radical_steady_state(question, model) else None
     if options.about is not None:
@@ -73,8 +75,13 @@ def _linearized(question: Question, model: Model):
         try:
             return linearize(question, model, at, values), ()
         except UnsolvedError:
-            if options.steady:  # a steady spin's rate: no equilibrium search finds it
-                raise
+            if options.steady:  # a steady spin's rate: no equilibrium search of V finds it
+                from rbdsolve.solvers.numeric.chosen import refined_steady
+
+                refined = refined_steady(question, model, at)
+                if refined is None:
+                    raise
+                return linearize(question, model, refined[0], values, rounded=True), (refined[1],)
     from rbdsolve.solvers.numeric.chosen import equilibrium_for_modes
 
     found, notes = equilibrium_for_modes(question, model)
