@@ -117,18 +117,7 @@ def state_values(model: Model, instant: Instant) -> dict[sp.Symbol, sp.Expr]:
 def at_state(expr: sp.Expr, table: dict) -> sp.Expr:
     """An expression of the state put at the state, simplified (a few terms: cheap), its
     roots of squares taken (a spring's length √(h² + 2 h l cos θ + l²) at θ = 0 is h + l)."""
-    return sp.radsimp(roots_as_absolute(_simplified(sp.sympify(expr).xreplace(table))))
-
-
-def _simplified(value: sp.Expr) -> sp.Expr:
-    """``simplify`` where a function of a symbol is left (sin θ₀ at a state θ = θ₀: its
-    trigonometric forms); else the value is a rational function of the parameters and of
-    numbers such as sin(1/10), and ``tidy``'s one cancelled fraction is simplify's form at
-    a tenth of the cost (simplify's first call alone imports sympy's physical units,
-    0.1 s)."""
-    if any(f.free_symbols for f in value.atoms(sp.Function)):
-        return sp.simplify(value)
-    return tidy(value)
+    return sp.radsimp(roots_as_absolute(sp.simplify(sp.sympify(expr).xreplace(table))))
 
 
 def state_relations(model: Model, instant: Instant) -> tuple[Relation, ...]:

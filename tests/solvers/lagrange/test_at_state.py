@@ -1,12 +1,10 @@
-"""at_state: a value at a state, simplified; sympy's simplify only where it has work."""
+"""at_state: a value at a state, simplified (sympy's simplify: one fraction, its trigonometric forms)."""
 
 from __future__ import annotations
 
 import sympy as sp
 
 from rbdsolve.solvers.lagrange.accelerations import at_state
-
-from conftest import fresh_process
 
 R, a, b, g, m, theta, theta0 = sp.symbols("R a b g m theta theta0", positive=True)
 
@@ -27,16 +25,3 @@ def test_a_symbolic_angle_keeps_simplify_s_trigonometric_form() -> None:
     """A ladder released at θ₀: m(3 g cos²θ₀ + g)/4 is g m (3 cos²θ₀ + 1)/4."""
     value = at_state(m * (3 * g * sp.cos(theta) ** 2 + g) / 4, {theta: theta0})
     assert value == g * m * (3 * sp.cos(theta0) ** 2 + 1) / 4
-
-
-def test_numbers_at_a_state_cost_no_import_of_physical_units() -> None:
-    """sympy's simplify imports sympy.physics.units on its first call (0.1 s of a
-    process); a value with no function of a symbol left does not need it."""
-    code = ("import sys, sympy as sp\n"
-            "from rbdsolve.solvers.lagrange.accelerations import at_state\n"
-            "m, g, L, th = sp.symbols('m g L theta', positive=True)\n"
-            "print(at_state(m*g*sp.cos(th)/2 + m*L*g/(2*L), {th: sp.pi/3}))\n"
-            "print('sympy.physics.units' in sys.modules)")
-    value, imported = fresh_process(code)
-    assert value == "3*g*m/4"
-    assert imported == "False"
