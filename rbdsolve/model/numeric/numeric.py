@@ -144,6 +144,17 @@ class NumericScene:
                 total += np.abs(np.asarray(hess, dtype=float))
             return total
 
+    def term_slopes(self, q: Sequence) -> np.ndarray:
+        """Σ |∂(term)/∂q| over V's terms, coordinate by coordinate: the size of what
+        ∂V/∂q sums, which its rounding is relative to (∂V/∂q ≈ 0 everywhere where the
+        terms cancel: a rod whose springs balance its weight at every angle)."""
+        with self.arithmetic.precision():
+            total = np.zeros(self.n)
+            for term in self._terms(_Evaluator(self, q, order=1)):
+                grad, _ = full(term, self.n, self.arithmetic, hessian=False)
+                total += np.abs(np.asarray(grad, dtype=float))
+            return total
+
     def _energy(self, scene: _Evaluator):
         """V on the evaluator's jets (the formula of ``potential``)."""
         V = self.arithmetic.number(0)

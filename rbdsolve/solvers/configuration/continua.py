@@ -5,7 +5,7 @@ list one point of that line per start. Each family is reported once instead.
 Strategy, at a root x of g = ∂V/∂q (g(x) ≈ 0):
 
 1. Candidate directions: the null space of the Hessian H(x), the eigenvectors whose
-   eigenvalue is at most NULL_TOL × max|eig| in size. A coordinate axis lying in it is
+   eigenvalue is at most NULL_TOL × max|eig| in size, or within H's rounding. A coordinate axis lying in it is
    tried first (exactly, so that a free coordinate is shown at exactly 0), then the
    null eigenvectors, each made orthogonal to the directions already accepted.
 2. A candidate v is free when g stays zero (within the root tolerance) all along the
@@ -38,18 +38,19 @@ AXIS_TOL = 1e-9
 Vector = tuple[float, ...]
 
 
-def null_count(hess: np.ndarray) -> int:
-    """How many eigenvalues of the symmetric part of H are zero within NULL_TOL."""
+def null_count(hess: np.ndarray, floor: float = 0.0) -> int:
+    """How many eigenvalues of the symmetric part of H are zero within NULL_TOL, or
+    within ``floor``, H's rounding (where its terms cancel every eigenvalue is noise)."""
     eig = np.linalg.eigvalsh((hess + hess.T) / 2)
-    return int(np.sum(np.abs(eig) <= NULL_TOL * np.max(np.abs(eig), initial=0.0)))
+    return int(np.sum(_zero(eig, floor)))
 
 
 def free_directions(x: np.ndarray, g: Callable, hess: np.ndarray, half_widths: Sequence[float],
-                    tol: float) -> tuple[Vector, ...]:
+                    tol: float, floor: float = 0.0) -> tuple[Vector, ...]:
     """Orthonormal directions along which every point through x is an equilibrium
     (|g| ≤ tol on the whole line): steps 1 and 2 of the module's strategy."""
     eig, vectors = np.linalg.eigh((hess + hess.T) / 2)
-    null = vectors[:, np.abs(eig) <= NULL_TOL * np.max(np.abs(eig), initial=0.0)]
+    null = vectors[:, _zero(eig, floor)]
     if null.shape[1] == 0:
         return ()
     accepted: list[np.ndarray] = []
@@ -62,6 +63,11 @@ def free_directions(x: np.ndarray, g: Callable, hess: np.ndarray, half_widths: S
         if _flat_line(x - v * (v @ x), v, g, half_widths, tol):
             accepted.append(v)
     return tuple(tuple(float(c) for c in v) for v in accepted)
+
+
+def _zero(eig: np.ndarray, floor: float) -> np.ndarray:
+    """Which eigenvalues count as zero: within NULL_TOL of the largest, or ``floor``."""
+    return np.abs(eig) <= max(NULL_TOL * np.max(np.abs(eig), initial=0.0), floor)
 
 
 def representative(x: np.ndarray, free: Sequence[Vector]) -> np.ndarray:

@@ -125,7 +125,7 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
     if singular:
         lines.append(f"the Hessian of V is singular at equilibri{'um' if len(singular) == 1 else 'a'} "
                      f"{', '.join(map(str, singular))} (an eigenvalue within {CURVATURE_TOL:g} × the Hessian's "
-                     "scale of zero, beyond any continuum found): undetermined, higher-order terms decide the "
+                     "scale of zero, or within its rounding, beyond any continuum found): undetermined, higher-order terms decide the "
                      "stability there, and a curved continuum of equilibria would be listed point by point")
     return lines
 

@@ -86,8 +86,9 @@ def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, .
 
     names = model.coordinate_names()
     steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),
-             st.accuracy(f"An eigenvalue of the Hessian within {CURVATURE_TOL:g} × its scale over the search box "
-                         "counts as zero (undetermined: higher-order terms decide); how the equilibria were "
+             st.accuracy(f"An eigenvalue of the Hessian within {CURVATURE_TOL:g} × its scale over the search box, "
+                         "or within its rounding (4 n ε of the terms it sums), counts as zero (undetermined: "
+                         "higher-order terms decide); how the equilibria were "
                          "searched for, and what that guarantees, is in the warning above.")]
     for i, eq in enumerate(a.equilibria, 1):
         where = configuration(model.state.functions(), [_shown(name, v, eq.recognized)

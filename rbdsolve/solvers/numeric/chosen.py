@@ -73,7 +73,7 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     import numpy as np
 
     from rbdsolve.solvers.numeric.newton import newton
-    from rbdsolve.solvers.numeric.numeric_model import ROOT_TOL, compiled_gradient, difference, slope_scale
+    from rbdsolve.solvers.numeric.numeric_model import compiled_gradient, difference, root_tolerance
 
     about = question.options.about
     contact_span.require_on_edges(question, model)
@@ -81,7 +81,7 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     g, H = compiled_gradient(model)
     residual = np.asarray(g(given), dtype=float)
     # ∂V/∂q exactly 0 is within any tolerance: V's scale over the box is then not needed
-    tol = ROOT_TOL * slope_scale(model) if np.any(residual) else 0.0
+    tol = root_tolerance(model) if np.any(residual) else 0.0
     if np.max(np.abs(residual)) <= tol:
         return {n: model.symbols.scalar(e) for n, e in about}, ()
     refined = newton(given, g, H)

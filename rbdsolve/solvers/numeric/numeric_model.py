@@ -36,7 +36,11 @@ eigenvalues of H against CURVATURE_TOL × the Hessian's scale over the box
 (``hessian_scale``): the tolerance covers the rounding of H and its change over the
 root's own error (up to √ε at a double root of g), so a degenerate Hessian is called
 singular (neutral along a continuum, else undetermined), never stable or unstable on
-round-off.
+round-off. Where V's terms cancel everywhere (springs that balance a rod's weight at
+any angle) ∂V/∂q and H are rounding noise over the whole box, and scales taken from
+them are noise too: the root tolerance and the eigenvalues' zero are then floored at
+their rounding, ROUNDING_UNITS n ε of the terms they sum (``root_tolerance``,
+``curvature_rounding``).
 """
 
 from __future__ import annotations
@@ -190,14 +194,20 @@ def compiled_gradient(model: Model):
     return finite(numpy_function([q], grad), model), finite(numpy_function([q], H.tolist()), model)
 
 
-def gradient_scale(model: Model, g) -> float:
-    """The size of ∂V/∂q over the search box: roots are judged relative to it."""
+def scale_points(model: Model) -> np.ndarray:
+    """The SCALE_SAMPLES fixed pseudo-random points of the search box at which the
+    sizes of ∂V/∂q, of its terms and of the Hessian are sampled."""
     box = _box(model)
     low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
+    return low + np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))) * (high - low)
+
+
+def gradient_scale(model: Model, g) -> float:
+    """The size of ∂V/∂q over the search box: roots are judged relative to it."""
     samples = []
-    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+    for x in scale_points(model):
         try:
-            samples.append(np.max(np.abs(g(low + p * (high - low))), initial=0.0))
+            samples.append(np.max(np.abs(g(x)), initial=0.0))
         except UnsolvedError:  # a sample where V has no value tells nothing of its scale
             continue
     return max(max(samples, default=1.0), 1e-300)
@@ -235,7 +245,7 @@ def find_numeric(model: Model) -> NumericEquilibria:
     Once per model: the equilibria question and the modes about the stable one ask for
     the same search (a particle on a spring on an incline: 5 s each)."""
     g, H = compiled_gradient(model)
-    tol, curvature = ROOT_TOL * slope_scale(model), hessian_scale(model, H)
+    tol, curvature = root_tolerance(model), hessian_scale(model, H)
     if len(model.q) == 1:
         candidates, starts, sampling, unresolved = _scanned(model, g, H, tol)
     else:
@@ -399,31 +409,73 @@ def _as_root(model: Model, x: np.ndarray, g, H, tol: float, curvature: float) ->
     """The root x classified, or its continuum's representative with the free directions."""
     hess = np.asarray(H(x), dtype=float)
     half_widths = [(hi - lo) / 2 for lo, hi in _box(model)]
-    free = free_directions(x, g, hess, half_widths, tol) if null_count(hess) else ()
+    floor = curvature_rounding(model, x)
+    free = free_directions(x, g, hess, half_widths, tol, floor) if null_count(hess, floor) else ()
     if free:
         rep = _wrapped(model, representative(x, free))
         if np.max(np.abs(g(rep))) <= tol:
             x, hess = rep, np.asarray(H(rep), dtype=float)
+            floor = curvature_rounding(model, x)
         else:
             free = ()
-    kind = _kind(hess, curvature)
-    across = bool(free) and kind == "singular" and null_count(hess) == len(free)
+    kind = _kind(hess, curvature, floor)
+    across = bool(free) and kind == "singular" and null_count(hess, floor) == len(free)
     if kind == "singular":
         kind = "neutral" if across else "undetermined"
     return Root(tuple(float(v) for v in x), kind, free, across)
 
 
-def _kind(H: np.ndarray, curvature: float) -> str:
-    """stable (every eigenvalue of H above CURVATURE_TOL × curvature), unstable (one
-    below −that), else singular: zero within the tolerance, which rounding cannot
-    decide (the caller makes it neutral along a continuum, else undetermined)."""
+def _kind(H: np.ndarray, curvature: float, floor: float = 0.0) -> str:
+    """stable (every eigenvalue of H above CURVATURE_TOL × curvature, and above H's
+    rounding ``floor``), unstable (one below −that), else singular: zero within the
+    tolerance, which rounding cannot decide (the caller makes it neutral along a
+    continuum, else undetermined)."""
     eig = np.linalg.eigvalsh((H + H.T) / 2)
-    tol = CURVATURE_TOL * max(curvature, np.max(np.abs(eig), initial=0.0))
+    tol = max(CURVATURE_TOL * max(curvature, np.max(np.abs(eig), initial=0.0)), floor)
     if np.all(eig > tol):
         return "stable"
     if np.any(eig < -tol):
         return "unstable"
     return "singular"
+
+
+def curvature_rounding(model: Model, x: np.ndarray) -> float:
+    """The rounding of the Hessian's eigenvalues at x: ROUNDING_UNITS n ε ‖Σ |∂²(term)/
+    ∂q∂q|‖₂ (each entry is within n ε of the terms it sums; 0 where there is no numeric
+    scene). Where the terms cancel (K = (2 a² k − ½ m g l) cos θ = 0 at the values) an
+    eigenvalue this small is noise, not a sign."""
+    scene = numeric_scene(model)
+    if scene is None:
+        return 0.0
+    with np.errstate(all="ignore"):
+        size = float(np.linalg.norm(scene.term_curvatures(x), 2))
+    return ROUNDING_UNITS * len(model.q) * float(np.finfo(float).eps) * size if math.isfinite(size) else 0.0
+
+
+@memoized
+def root_tolerance(model: Model) -> float:
+    """|∂V/∂q| that counts as zero: ROOT_TOL of its size over the box, and never less
+    than its rounding, ROUNDING_UNITS n ε of the terms it sums (``term_slopes``). Where
+    the terms cancel at every point (springs that balance a rod's weight at any angle:
+    ∂V/∂q = (2 a² k − ½ m g l) sin θ = 0 at the values given) its size is rounding
+    noise alone, and a tolerance relative to that took each noise's sign change for a
+    root: thousands of them, past any budget."""
+    return max(ROOT_TOL * slope_scale(model), _slope_rounding(model))
+
+
+def _slope_rounding(model: Model) -> float:
+    """ROUNDING_UNITS n ε times the largest Σ |∂(term)/∂q| at the sample points of
+    ``gradient_scale`` (0 where there is no numeric scene to split V into its terms)."""
+    scene = numeric_scene(model)
+    if scene is None:
+        return 0.0
+    sizes = [0.0]
+    for x in scale_points(model):
+        with np.errstate(all="ignore"):
+            size = float(np.max(scene.term_slopes(x)))
+        if math.isfinite(size):  # a sample where V has no value tells nothing of its rounding
+            sizes.append(size)
+    return ROUNDING_UNITS * len(model.q) * float(np.finfo(float).eps) * max(sizes)
 
 
 @memoized
@@ -435,12 +487,10 @@ def slope_scale(model: Model) -> float:
 def hessian_scale(model: Model, H) -> float:
     """The size of ∂²V/∂q∂q over the search box (the largest |eigenvalue| at the
     sample points of ``gradient_scale``): curvatures are judged zero relative to it."""
-    box = _box(model)
-    low, high = np.array([b[0] for b in box]), np.array([b[1] for b in box])
     sizes = []
-    for p in np.random.default_rng(SAMPLE_SEED).random((SCALE_SAMPLES, len(box))):
+    for x in scale_points(model):
         try:
-            hess = np.asarray(H(low + p * (high - low)), dtype=float)
+            hess = np.asarray(H(x), dtype=float)
         except UnsolvedError:
             continue
         sizes.append(np.max(np.abs(np.linalg.eigvalsh((hess + hess.T) / 2)), initial=0.0))
