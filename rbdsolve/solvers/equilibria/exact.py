@@ -490,7 +490,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     equilibria = tuple(eq for eq, _ in classified)
     critical = critical_values([c for _, cs in classified for c in cs])
     warnings = [*listed.warnings, *_coinciding([x.at for x in listed.equilibria], model), *spin_warnings(model),
-                *_pulling(model, [x.at for x in listed.equilibria])]
+                *_pulling(model, [x.at for x in listed.equilibria]), *_continuum_at_values(model, grad)]
     if listed.singular_points:
         warnings.append(f"{len(listed.singular_points)} solution(s) of ∂V/∂q = 0 lie at singular points of the "
                         "coordinates and are not equilibria of the scene (listed apart); " + SUGGESTION)
@@ -498,6 +498,20 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model,
                                                                 bool(periodic_angles(model) | repeating(model))),
                     warnings=tuple(warnings))
+
+
+def _continuum_at_values(model: Model, grad: tuple[sp.Expr, ...]) -> list[str]:
+    """Where ∂V/∂q vanishes identically at the values given (springs that balance a rod's
+    weight at any angle: (2 a² k − ½ m g l) sin θ with k = m g l/(4 a²)), every
+    configuration is an equilibrium there: the listing, made in the parameters, does not
+    say so by itself (its equilibria are 'undetermined' at these values)."""
+    values = dict(model.values)
+    if not values or all(g == 0 for g in grad) or any(g.xreplace(values).free_symbols - set(model.q) for g in grad):
+        return []  # V holds no coordinate whatever the values (said already), or a parameter has no value
+    if not all(tidy(g.xreplace(values)) == 0 for g in grad):
+        return []
+    return ["at the values given ∂V/∂q = 0 for every configuration: every configuration is an equilibrium "
+            "(a continuum), neutral; the equilibria above and their cases hold in the parameters, off these values"]
 
 
 def _pulling(model: Model, places: list[Mapping]) -> list[str]:

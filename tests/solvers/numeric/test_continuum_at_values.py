@@ -51,3 +51,16 @@ def test_every_angle_is_one_neutral_equilibrium(tmp_path) -> None:
     (about,) = modes.modes
     assert about.motions == (Motion.NEUTRAL,)
     assert abs(about.eigenvalues[0]) <= about.absolute_errors[0]
+
+
+def test_the_exact_route_says_every_angle_is_an_equilibrium_at_these_values(tmp_path) -> None:
+    """In the parameters the exact route lists θ = 0 and π with their cases in k; at the
+    values, k = k_c, it must say that every θ is an equilibrium too."""
+    path = tmp_path / "rod.yaml"
+    path.write_text(SCENE.replace("  - modes: {about: each}\n", ""), encoding="utf-8")
+    (equilibria,) = rbdsolve.solve(path, route="exact", budget=120.0)
+    assert any("every configuration is an equilibrium (a continuum)" in w for w in equilibria.warnings)
+    path.write_text(SCENE.replace("k: 3.83203125 N/m", "k: 4 N/m").replace("  - modes: {about: each}\n", ""),
+                    encoding="utf-8")
+    (off,) = rbdsolve.solve(path, route="exact", budget=120.0)
+    assert not any("a continuum" in w for w in off.warnings)
