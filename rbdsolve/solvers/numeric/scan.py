@@ -24,8 +24,9 @@ Completeness: every root is found, to round-off, provided (i) |g'| on each cell 
 within SAFETY times its largest sampled value (an assumption, not a proof: a spike of
 g' narrower than a cell can break it), and (ii) distinct roots are more than one
 smallest cell apart (closer ones are reported once, or missed if g between them
-exceeds tol). When the scan runs past MAX_EVALUATIONS points, the cells left are
-returned as unresolved, so the caller can say where the search is incomplete.
+exceeds tol). When the scan runs past MAX_EVALUATIONS points (each evaluation counted,
+the leaves' bisections too), the cells left are returned as unresolved, so the caller
+can say where the search is incomplete.
 """
 
 from __future__ import annotations
@@ -63,10 +64,15 @@ def scan(f: Callable[[float], tuple[float, float]], low: float, high: float, tol
     smallest = (high - low) / 2**DEPTH
     counter = [0]
 
-    def at(x: float) -> Sample | None:
+    def counted(x: float) -> tuple[float, float]:
+        """f, every evaluation counted: the cells' samples and the leaves' bisections
+        alike, so that MAX_EVALUATIONS bounds the work."""
         counter[0] += 1
+        return f(x)
+
+    def at(x: float) -> Sample | None:
         try:
-            value, slope = f(x)
+            value, slope = counted(x)
         except UnsolvedError:
             return None
         return Sample(x, float(value), float(slope))
@@ -81,7 +87,7 @@ def scan(f: Callable[[float], tuple[float, float]], low: float, high: float, tol
             unresolved.append((a.x, b.x))
             continue
         if b.x - a.x <= smallest * 1.5:
-            roots.extend(_leaf(a, b, f, tol))
+            roots.extend(_leaf(a, b, counted, tol))
             continue
         m = at((a.x + b.x) / 2)
         if m is None:
