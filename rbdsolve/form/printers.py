@@ -199,6 +199,9 @@ class UnicodePrinter(StrPrinter):
     def _print_Pi(self, expr):
         return "π"
 
+    def _print_ImaginaryUnit(self, expr):
+        return "i"
+
     def _print_Abs(self, expr):
         return f"|{self._print(expr.args[0])}|"
 

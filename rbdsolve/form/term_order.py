@@ -18,8 +18,17 @@ _NAME_NUMBER = re.compile(r"(?<=[A-Za-z_])\d+")  # a number in a name (th10), no
 
 
 def exam_order(terms: list) -> list:
-    """``natural_order``, then ``positive_first``."""
+    """``natural_order``, then ``positive_first``; a complex number a + b i as every
+    textbook writes it, its real part first (3.58 − 3.58 i, not −3.58 i + 3.58)."""
+    if _complex_number(terms):
+        return sorted(terms, key=lambda t: t.has(sp.I))
     return positive_first(natural_order(terms))
+
+
+def _complex_number(terms: list) -> bool:
+    """Two terms, a real number and a real number times i."""
+    return (len(terms) == 2 and all(t.is_number for t in terms)
+            and sorted(t.has(sp.I) for t in terms) == [False, True])
 
 
 def positive_first(terms: list) -> list:

@@ -52,3 +52,16 @@ def test_only_the_numbers_in_names_count() -> None:
     assert shown.index("√3 cos(th₁)") < shown.index("√2 cos(th₁₀)")
     assert to_unicode(l * sp.cos(th[0]) + l * sp.cos(th[9]) + l * sp.cos(th[1])) == \
         "l cos(th₁) + l cos(th₂) + l cos(th₁₀)"
+
+
+def test_a_complex_number_is_written_real_part_first() -> None:
+    """Gyroscopic roots as a textbook writes them: the real part, then ± the imaginary
+    (a new user's trial printed p₃ = 3.58118 i + 3.58404 beside p₄ = 3.58404 − 3.58118 i)."""
+    from rbdsolve.form.printers import to_unicode
+
+    assert to_unicode(sp.Float(3.58404, 15) + sp.I * sp.Float(3.58118, 15)) == "3.58404 + 3.58118 i"
+    assert to_unicode(sp.Float(3.58404, 15) - sp.I * sp.Float(3.58118, 15)) == "3.58404 − 3.58118 i"
+    assert to_unicode(sp.Float(-1.5, 15) + sp.I * 2) == "−1.5 + 2 i"
+    assert to_unicode(sp.I * sp.Float(32.2, 15)) == "32.2 i"
+    theta = sp.Symbol("theta")
+    assert to_unicode(1 - sp.cos(theta) ** 2) == "1 − cos(θ)²"  # a real sum keeps the exam's order

@@ -155,7 +155,7 @@ def numeric_gyroscopic_steps(a, linear: Linear, model: Model) -> tuple[st.Step, 
              st.equation(f"{u} = {X} e^({s}t) gives ({s}²{M} + {s}{G} + {K}) {X} = 0, solved in its first-order form "
                          f"[[0, 1], [−{K}, −{G}]] z = {s} [[1, 0], [0, {M}]] z, z = ({X}, {s}{X}) (LAPACK's eigenvalues, "
                          f"through numpy); {s} = i{w} on the imaginary axis is an oscillation:",
-                         *[Relation(labels.symbol("exponent", i), sp.Float(re, 15) + sp.Symbol("i") * sp.Float(im, 15))
+                         *[Relation(labels.symbol("exponent", i), sp.Float(re, 15) + sp.I * sp.Float(im, 15))
                            for i, (re, im) in enumerate(a.roots, 1)])]
     if a.frequencies:
         steps.append(st.result("Frequencies:", *[Relation(labels.symbol("frequency", i), sp.Float(x, 15))
