@@ -31,7 +31,7 @@ from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
-from rbdsolve.solvers.modes.routh import linearize, radical_steady_state
+from rbdsolve.solvers.modes.routh import lagrangian, linearize, radical_steady_state
 from rbdsolve.solvers.numeric.numeric_model import as_floats, to_floats
 
 DIGITS = 50
@@ -66,7 +66,7 @@ def _linearized(question: Question, model: Model):
     (decimals typed from a listing), the numeric equilibria's, refined there — a
     floating-point root, steady to its rounding (``linearize``'s ``rounded``); with a
     spin's rate given too, that configuration refined on the steady motion's own
-    equations (``refined_steady``)."""
+    equations (``_refined_steady``)."""
     options = question.options
     values = model.values if radical_steady_state(question, model) else None
     if options.about is not None:
@@ -76,9 +76,7 @@ def _linearized(question: Question, model: Model):
             return linearize(question, model, at, values), ()
         except UnsolvedError:
             if options.steady:  # a steady spin's rate: no equilibrium search of V finds it
-                from rbdsolve.solvers.numeric.chosen import refined_steady
-
-                refined = refined_steady(question, model, at)
+                refined = _refined_steady(question, model, at)
                 if refined is None:
                     raise
                 return linearize(question, model, refined[0], values, rounded=True), (refined[1],)
@@ -87,6 +85,39 @@ def _linearized(question: Question, model: Model):
     found, notes = equilibrium_for_modes(question, model)
     at = {q: found[n] for q, n in zip(model.q, model.coordinate_names())}
     return linearize(question, model, at, values, rounded=True), notes
+
+
+def _refined_steady(question: Question, model: Model, at: dict) -> tuple[dict, str] | None:
+    """A steady state given in decimals (a tilt typed from the equilibria's listing, the
+    spin at its rate): refined by Newton's method on the steady motion's equations for
+    the coordinates kept, ∂L/∂q_k = 0 with those at rest and each cyclic coordinate
+    turning at its rate (Routh's identity: the same as ∂R₀/∂q_k at that motion's
+    momenta, the steadiness ``routh.linearize`` checks), at the parameter values.
+    ``at``: the kept coordinates' values given. None where Newton's method does not
+    end within REFINE_TOL of them."""
+    from rbdsolve.model.derivative import derivative
+    from rbdsolve.model.numeric.compiled import numpy_function
+    from rbdsolve.solvers.numeric.chosen import REFINE_TOL
+    from rbdsolve.solvers.numeric.newton import newton
+
+    names = model.coordinate_names()
+    values = dict(model.values)
+    rates = {model.qd[names.index(n)]: model.symbols.scalar(e).xreplace(values) for n, e in question.options.steady}
+    kept = [q for q in model.q if q in at]
+    motion = {**{qd: sp.Integer(0) for qd in model.qd if qd not in rates}, **rates}
+    L = lagrangian(model).xreplace(motion).xreplace(values)
+    x = sp.symbols(f"x0:{len(kept)}", real=True)
+    slope = [derivative(L, q).xreplace(dict(zip(kept, x))) for q in kept]
+    jacobian = [[sp.diff(f, xj) for xj in x] for f in slope]
+    g, H = numpy_function([x], slope), numpy_function([x], jacobian)
+    given = np.array([float(sp.N(at[q].xreplace(values), 20)) for q in kept])
+    refined = newton(given, lambda v: np.asarray(g(v), dtype=float), lambda v: np.asarray(H(v), dtype=float))
+    if refined is None or np.max(np.abs(refined - given)) > REFINE_TOL:
+        return None
+    shown = ", ".join(f"{n} = {float(v):.9g}" for n, v in zip((names[model.q.index(q)] for q in kept), refined))
+    note = (f"about: the point given is {float(np.max(np.abs(refined - given))):.2g} from a steady state; refined "
+            f"by Newton's method on the steady motion's ∂L/∂q = 0 to {shown}")
+    return {q: sp.Float(float(v), 17) for q, v in zip(kept, refined)}, note
 
 
 def quadratic_eigenvalues(M: np.ndarray, G: np.ndarray, K: np.ndarray, exact) -> tuple[np.ndarray, np.ndarray]:

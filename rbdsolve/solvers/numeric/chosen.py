@@ -5,9 +5,9 @@
 the Hessian of V) and used when the refined point lies within REFINE_TOL of the one
 given in every coordinate (angles compared modulo 2π), so a root copied with 6 digits
 from the printed equilibria is taken as that root; farther away, it is refused with
-the residual as a number; a spinning body's steady state given with its spin's rate
-is refined on the steady motion's equations instead (``refined_steady``). ``about:
-{equilibrium: N}`` takes the N-th equilibrium as
+the residual as a number (a spinning body's steady state given with its spin's rate is
+refined on the steady motion's equations instead: modes/gyroscopic_numeric.py).
+``about: {equilibrium: N}`` takes the N-th equilibrium as
 the numeric ``equilibria`` lists it. Neither: the first stable one, and when there are
 several, a note names the others.
 """
@@ -93,41 +93,6 @@ def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tupl
     (name, expr), r = max(zip(about, residual), key=lambda x: abs(x[1]))
     raise UnsolvedError(f"{expr.loc}: not an equilibrium: ∂V/∂{unicode_name(name)} = {r:.6g} there, and no equilibrium lies "
                         f"within {REFINE_TOL:g} of it")
-
-
-def refined_steady(question: Question, model: Model, at: dict) -> tuple[dict, str] | None:
-    """A steady state given in decimals (a tilt typed from the equilibria's listing, the
-    spin at its rate): refined by Newton's method on the steady motion's equations for
-    the coordinates kept, ∂L/∂q_k = 0 with those at rest and each cyclic coordinate
-    turning at its rate (Routh's identity: the same as ∂R₀/∂q_k at that motion's
-    momenta, the steadiness ``routh.linearize`` checks), at the parameter values.
-    ``at``: the kept coordinates' values given. None where Newton's method does not
-    end within REFINE_TOL of them."""
-    import numpy as np
-
-    from rbdsolve.model.derivative import derivative
-    from rbdsolve.model.numeric.compiled import numpy_function
-    from rbdsolve.solvers.modes.routh import lagrangian
-    from rbdsolve.solvers.numeric.newton import newton
-
-    names = model.coordinate_names()
-    values = dict(model.values)
-    rates = {model.qd[names.index(n)]: model.symbols.scalar(e).xreplace(values) for n, e in question.options.steady}
-    kept = [q for q in model.q if q in at]
-    motion = {**{qd: sp.Integer(0) for qd in model.qd if qd not in rates}, **rates}
-    L = lagrangian(model).xreplace(motion).xreplace(values)
-    x = sp.symbols(f"x0:{len(kept)}", real=True)
-    slope = [derivative(L, q).xreplace(dict(zip(kept, x))) for q in kept]
-    jacobian = [[sp.diff(f, xj) for xj in x] for f in slope]
-    g, H = numpy_function([x], slope), numpy_function([x], jacobian)
-    given = np.array([float(sp.N(at[q].xreplace(values), 20)) for q in kept])
-    refined = newton(given, lambda v: np.asarray(g(v), dtype=float), lambda v: np.asarray(H(v), dtype=float))
-    if refined is None or np.max(np.abs(refined - given)) > REFINE_TOL:
-        return None
-    shown = ", ".join(f"{n} = {float(v):.9g}" for n, v in zip((names[model.q.index(q)] for q in kept), refined))
-    note = (f"about: the point given is {float(np.max(np.abs(refined - given))):.2g} from a steady state; refined "
-            f"by Newton's method on the steady motion's ∂L/∂q = 0 to {shown}")
-    return {q: sp.Float(float(v), 17) for q, v in zip(kept, refined)}, note
 
 
 def _real(value: sp.Expr, model: Model, expr, name: str) -> float:
