@@ -24,8 +24,7 @@ from rbdsolve.problem.sections.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.sections.orientation import OrientationReader
 from rbdsolve.problem.sections.questions import QuestionReader
 from rbdsolve.problem.quantities.dimensions import scene_dimensions
-from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER
-from rbdsolve.problem.quantities.quantity import Dimension, Value, parse_unit
+from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension, Value, parse_unit
 from rbdsolve.problem.quantities.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
 from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_bytes, read_text

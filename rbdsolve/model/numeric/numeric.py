@@ -137,23 +137,23 @@ class NumericScene:
         """Σ |∂²(term)/∂q∂q| over V's terms (each body's weight, each spring), entry by
         entry: the size of what ∂²V/∂q∂q sums, which its rounding is relative to (K ≈ 0
         where the terms cancel, at a degenerate equilibrium)."""
-        with self.arithmetic.precision():
-            total = np.zeros((self.n, self.n))
-            for term in self._terms(_Evaluator(self, q, order=2)):
-                _, hess = full(term, self.n, self.arithmetic)
-                total += np.abs(np.asarray(hess, dtype=float))
-            return total
+        return self._term_sizes(q, order=2)
 
     def term_slopes(self, q: Sequence) -> np.ndarray:
         """Σ |∂(term)/∂q| over V's terms, coordinate by coordinate: the size of what
         ∂V/∂q sums, which its rounding is relative to (∂V/∂q ≈ 0 everywhere where the
         terms cancel: a rod whose springs balance its weight at every angle)."""
+        return self._term_sizes(q, order=1)
+
+    def _term_sizes(self, q: Sequence, order: int) -> np.ndarray:
+        """Σ |the order-th derivative of each term of V| (the gradients' for order 1,
+        the Hessians' for order 2), in floats."""
         with self.arithmetic.precision():
-            total = np.zeros(self.n)
-            for term in self._terms(_Evaluator(self, q, order=1)):
-                grad, _ = full(term, self.n, self.arithmetic, hessian=False)
-                total += np.abs(np.asarray(grad, dtype=float))
-            return total
+            total = 0.0
+            for term in self._terms(_Evaluator(self, q, order=order)):
+                grad, hess = full(term, self.n, self.arithmetic, hessian=order == 2)
+                total = total + np.abs(np.asarray(grad if order == 1 else hess, dtype=float))
+            return np.broadcast_to(total, (self.n,) * order).copy()
 
     def _energy(self, scene: _Evaluator):
         """V on the evaluator's jets (the formula of ``potential``)."""

@@ -5,9 +5,10 @@ list one point of that line per start. Each family is reported once instead.
 Strategy, at a root x of g = ∂V/∂q (g(x) ≈ 0):
 
 1. Candidate directions: the null space of the Hessian H(x), the eigenvectors whose
-   eigenvalue is at most NULL_TOL × max|eig| in size, or within H's rounding. A coordinate axis lying in it is
-   tried first (exactly, so that a free coordinate is shown at exactly 0), then the
-   null eigenvectors, each made orthogonal to the directions already accepted.
+   eigenvalue is at most NULL_TOL × max|eig| in size, or within H's rounding. A
+   coordinate axis lying in it is tried first (exactly, so that a free coordinate is
+   shown at exactly 0), then the null eigenvectors, each made orthogonal to the
+   directions already accepted.
 2. A candidate v is free when g stays zero (within the root tolerance) all along the
    straight line through the point of it nearest q = 0, x − v (v·x), at the steps
    s = ±STEP_FRACTIONS × the box's half-width along v: every point of that line is an

@@ -505,11 +505,11 @@ def _continuum_at_values(model: Model, grad: tuple[sp.Expr, ...]) -> list[str]:
     weight at any angle: (2 a² k − ½ m g l) sin θ with k = m g l/(4 a²)), every
     configuration is an equilibrium there: the listing, made in the parameters, does not
     say so by itself (its equilibria are 'undetermined' at these values)."""
-    values = dict(model.values)
-    if not values or all(g == 0 for g in grad) or any(g.xreplace(values).free_symbols - set(model.q) for g in grad):
-        return []  # V holds no coordinate whatever the values (said already), or a parameter has no value
-    if not all(tidy(g.xreplace(values)) == 0 for g in grad):
-        return []
+    if not model.values or all(g == 0 for g in grad):
+        return []  # V holds no coordinate whatever the values: said already
+    valued = [g.xreplace(dict(model.values)) for g in grad]
+    if any(g.free_symbols - set(model.q) for g in valued) or not all(tidy(g) == 0 for g in valued):
+        return []  # a parameter without a value, or ∂V/∂q not identically 0 at the values
     return ["at the values given ∂V/∂q = 0 for every configuration: every configuration is an equilibrium "
             "(a continuum), neutral; the equilibria above and their cases hold in the parameters, off these values"]
 

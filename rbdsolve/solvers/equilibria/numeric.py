@@ -38,11 +38,11 @@ from rbdsolve.solvers.equilibria.steps import numeric_steps
 from rbdsolve.solvers.lagrange.frames import require_static, spin_warnings
 from rbdsolve.solvers.numeric.numeric_model import (
     CURVATURE_TOL,
-    ROUNDING_UNITS,
     compiled_gradient,
     continuum_text,
     find_numeric,
     periodic_angles,
+    rounding,
     slope_scale,
 )
 from rbdsolve.solvers.configuration import contact_span
@@ -125,8 +125,8 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
     if singular:
         lines.append(f"the Hessian of V is singular at equilibri{'um' if len(singular) == 1 else 'a'} "
                      f"{', '.join(map(str, singular))} (an eigenvalue within {CURVATURE_TOL:g} × the Hessian's "
-                     "scale of zero, or within its rounding, beyond any continuum found): undetermined, higher-order terms decide the "
-                     "stability there, and a curved continuum of equilibria would be listed point by point")
+                     "scale of zero, or within its rounding, beyond any continuum found): undetermined, "
+                     "higher-order terms decide the stability there, and a curved continuum of equilibria would be listed point by point")
     return lines
 
 
@@ -191,5 +191,5 @@ def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free, slope: f
         inverse = np.linalg.norm(np.linalg.inv(hess), 2) if hess.size else 0.0
     except np.linalg.LinAlgError:
         return float("inf")
-    rounding = inverse * ROUNDING_UNITS * len(x) * EPS * slope
-    return float((np.max(np.abs(step), initial=0.0) + rounding) / max(np.max(np.abs(x)), 1.0) + condition * EPS)
+    moved = inverse * rounding(len(x), slope)
+    return float((np.max(np.abs(step), initial=0.0) + moved) / max(np.max(np.abs(x)), 1.0) + condition * EPS)

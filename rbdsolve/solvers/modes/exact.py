@@ -176,7 +176,11 @@ def modes_at(at: dict, model: Model, where: sp.Basic = sp.true,
     the cases are written in where they can be (a question's ``for:``)."""
     chosen = {n: at[q] for n, q in zip(model.coordinate_names(), model.q)}
     M = sp.ImmutableMatrix(mass_matrix(model, at))
-    K = _stiffness(model, at)
+    # the equilibria's own K there, once per model and root (the equilibria question has
+    # made it where both are asked: 0.4 s of a bead on an offset turning rod's three), its
+    # Hessian not tidied before the root goes in (at θ₀ = acos(…) of six parameters that
+    # made 333 operations 18 848, six seconds to factor)
+    K = stiffness_at(model, at)
     singular = exact_reason(M, model.coordinate_names(), "at this configuration")
     if singular:
         raise UnsolvedError(singular)
@@ -215,17 +219,6 @@ def _unreadable(spectrum: _Spectrum) -> bool:
     with every value given, it is solved at the values: its shapes and kinds in the
     parameters cost seconds more for an answer nobody reads."""
     return any(sp.count_ops(pair.lam) > READABLE_OPS for pair in spectrum.pairs)
-
-
-def _stiffness(model: Model, at: dict) -> sp.ImmutableMatrix:
-    """K = ∂²V/∂q∂q at the equilibrium, tidied, with √(d² + s²) at a root found by
-    squaring as the unsquared equations have it: the equilibria's own K there
-    (``stiffness_at``, made once per model and root). The equilibria question has
-    made it already where both are asked (a bead on an offset turning rod: 0.4 s of
-    its three equilibria's); and the Hessian is not tidied before the roots go in (at
-    θ₀ = acos(…) of six parameters, tidying first made 333 operations 18 848, six
-    seconds to factor)."""
-    return stiffness_at(model, at)
 
 
 def _rate(pair: _Pair, scale: sp.Expr, sign: int) -> sp.Expr:

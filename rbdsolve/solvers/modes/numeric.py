@@ -148,14 +148,14 @@ def stiffness_rounding(model: Model, about: dict, vectors: np.ndarray) -> np.nda
     of 2e-30 was printed as an oscillation of period 1.2·10⁸ s, beside the equilibria
     question's "undetermined" for the same point. (K from the exact Hessian, rounded
     once, has only its own rounding, which ``eigen_bounds`` counts.)"""
-    from rbdsolve.solvers.numeric.numeric_model import ROUNDING_UNITS, numeric_scene
+    from rbdsolve.solvers.numeric.numeric_model import numeric_scene, rounding
 
     scene = numeric_scene(model)
     if scene is None:
         return np.zeros(vectors.shape[1])
     q0 = list(as_floats(model, about).values())
     scale = float(np.max(scene.term_curvatures(q0), initial=0.0))
-    return ROUNDING_UNITS * len(vectors) * EPS * scale * np.sum(vectors * vectors, axis=0)
+    return rounding(len(vectors), scale) * np.sum(vectors * vectors, axis=0)
 
 
 def classify(lam: float, bound: float) -> Motion:

@@ -78,6 +78,12 @@ CURVATURE_TOL = 1e-7  # a Hessian eigenvalue this small relative to hessian_scal
 ROUNDING_UNITS = 4  # a float ∂V/∂q or ∂²V/∂q² is within this many n ε of the terms it sums
 
 
+def rounding(n: int, size: float) -> float:
+    """How far a float quantity of n coordinates may be from its value: ROUNDING_UNITS
+    n ε times ``size``, the sum of the terms' sizes it adds up."""
+    return ROUNDING_UNITS * n * float(np.finfo(float).eps) * size
+
+
 def to_floats(matrix: sp.Matrix, values: Mapping[sp.Symbol, sp.Expr]) -> np.ndarray:
     """An exact matrix with the parameter values put in, rounded once to floats."""
     filled = matrix.xreplace(dict(values))
@@ -449,7 +455,7 @@ def curvature_rounding(model: Model, x: np.ndarray) -> float:
         return 0.0
     with np.errstate(all="ignore"):
         size = float(np.linalg.norm(scene.term_curvatures(x), 2))
-    return ROUNDING_UNITS * len(model.q) * float(np.finfo(float).eps) * size if math.isfinite(size) else 0.0
+    return rounding(len(model.q), size) if math.isfinite(size) else 0.0
 
 
 @memoized
@@ -475,7 +481,7 @@ def _slope_rounding(model: Model) -> float:
             size = float(np.max(scene.term_slopes(x)))
         if math.isfinite(size):  # a sample where V has no value tells nothing of its rounding
             sizes.append(size)
-    return ROUNDING_UNITS * len(model.q) * float(np.finfo(float).eps) * max(sizes)
+    return rounding(len(model.q), max(sizes))
 
 
 @memoized
