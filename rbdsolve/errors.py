@@ -133,16 +133,19 @@ NUMERIC_REMEDY = "give values for the parameters to solve it numerically"  # whe
 
 
 class UnsolvedError(RbdError):
-    """A well-formed question that rbdsolve could not answer. Exit code 1. A reason that
-    ends in ``; `` + NUMERIC_REMEDY is one the numeric route would not share: on auto
-    with the values given, the numeric route's note quotes the reason without it."""
+    """A well-formed question that rbdsolve could not answer. Exit code 1. ``remedy``:
+    what the user can do that only this route needs (NUMERIC_REMEDY; "give the rate
+    exactly"), said after the reason, ``reason; remedy``: on auto, where another route
+    answered, its note quotes the reason without it (``Solution.remedy``)."""
 
     exit_code = ExitCode.UNSOLVED
 
-    def __init__(self, message: str):
-        self.message = message
+    def __init__(self, message: str, remedy: str = ""):
+        self.reason = message
+        self.remedy = remedy
+        self.message = f"{message}; {remedy}" if remedy else message
         self.location = None
-        super().__init__(message)
+        super().__init__(self.message)
 
     def __str__(self) -> str:
         return printable(self.message)

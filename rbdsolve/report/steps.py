@@ -126,6 +126,7 @@ class Solution:
     warnings: tuple[str, ...] = ()
     seconds: float = 0.0
     error: str | None = None
+    remedy: str = ""  # the end of ``error`` that only this route needs (UnsolvedError.remedy)
     error_estimate: float | None = None  # numeric route: bound on the answers' relative error
     numbers: tuple[Number, ...] = ()  # the numeric block: values by their printed names (report/numbers.py)
 

@@ -32,15 +32,15 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     if degree and degree >= 5:
         raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}, whose "
                             "roots have no closed form (in radicals) in general: an exact list would leave solutions "
-                            f"out; {NUMERIC_REMEDY}")
+                            "out", NUMERIC_REMEDY)
     if degree:
         raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}: its roots "
-                            f"in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes; {NUMERIC_REMEDY}")
+                            "in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes", NUMERIC_REMEDY)
     try:
         found = solve_poly_system(system, *symbols, strict=True)
     except UnsolvableFactorError:
         raise UnsolvedError(f"{what} reduce to a polynomial with a factor whose roots have no closed form "
-                            f"(in radicals): an exact list would leave solutions out; {NUMERIC_REMEDY}") from None
+                            "(in radicals): an exact list would leave solutions out", NUMERIC_REMEDY) from None
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]

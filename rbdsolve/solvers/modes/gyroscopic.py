@@ -88,8 +88,8 @@ def _steady_state(question: Question, model: Model) -> tuple[dict, tuple[str, ..
     try:
         return exact_equilibrium(question, model)
     except UnsolvedError as exc:
-        raise UnsolvedError(f"{exc} (stable by K alone: with gyroscopic terms an equilibrium unstable by K may be "
-                            "held by the spin: name it, about: {…})") from None
+        raise UnsolvedError(f"{exc.reason} (stable by K alone: with gyroscopic terms an equilibrium unstable by K "
+                            "may be held by the spin: name it, about: {…})", exc.remedy) from None
 
 
 def gyroscopic_modes(linear: Linear, model: Model) -> GyroscopicModesAnswers:

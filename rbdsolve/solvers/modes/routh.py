@@ -179,8 +179,8 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
                                 "coordinates are singular there" + (_euler_hint({0: None}, names) if routh else ""))
         if residual != 0 and not simplifies_to_zero(residual):
             shown = to_unicode(model.readable(-residual)) if sp.count_ops(residual) <= 30 else "not zero"
-            raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there"
-                                + _rounded_hint(derivative(R0, qi), at, model))
+            said, remedy = _rounded_hint(derivative(R0, qi), at, model)
+            raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there{said}", remedy)
 
 
 def _relative_residual(slope: sp.Expr, at, model: Model) -> float:
@@ -205,20 +205,23 @@ def _residual_and_size(slope: sp.Expr, at, model: Model) -> tuple[float, float] 
     return residual, size
 
 
-def _rounded_hint(slope: sp.Expr, at, model: Model) -> str:
-    """At the parameter values, the residual's size against its terms', and what to do
-    where it is a rounding's (a steady rate pasted with six digits leaves ~1e-6)."""
+ROUNDED_REMEDY = ("a rate or an angle rounded? Give it exactly, as the root a steady_motion question prints "
+                  "(dot(psi): EXPRESSION under about:): a decimal, however many digits, is never exactly steady")
+
+
+def _rounded_hint(slope: sp.Expr, at, model: Model) -> tuple[str, str]:
+    """At the parameter values, the residual's size against its terms', and the remedy
+    where it is a rounding's (a steady rate pasted with six digits leaves ~1e-6): the
+    exact route's only, the numeric route refines such a point (gyroscopic_numeric)."""
     found = _residual_and_size(slope, at, model)
     if found is None:
-        return ""
+        return "", ""
     residual, size = found
     relative = abs(residual) / size if size else float("inf")
     text = f": {-residual:.3g} at the parameter values"
     if relative > 1e-4:
-        return text
-    return (f"{text}, {relative:.1g} of its terms — a rate or an angle rounded? Give it exactly, as the root a "
-            "steady_motion question prints (dot(psi): EXPRESSION under about:): a decimal, however many digits, "
-            "is never exactly steady")
+        return text, ""
+    return f"{text}, {relative:.1g} of its terms", ROUNDED_REMEDY
 
 
 def _euler_hint(rates: dict, names: list[str]) -> str:

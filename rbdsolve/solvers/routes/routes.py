@@ -197,7 +197,7 @@ def _route_choice(family: Family, question: Question, model: Model, options: Opt
                         " (numeric route)")
     if not solution.solved:
         return replace(solution, error=_both_failed(exact.error, solution.error))
-    reason = exact.error.removesuffix(f"; {NUMERIC_REMEDY}")  # the values are given: the numeric route has answered
+    reason = exact.error.removesuffix(f"; {exact.remedy}")  # the numeric route has answered: no remedy needed
     note = f"the exact route could not answer ({reason}); these are the numeric route's answers"
     return replace(solution, warnings=(note, *solution.warnings))
 
@@ -206,10 +206,10 @@ def _naming(exact: Solution, missing: tuple[str, ...]) -> Solution:
     """The exact route's failure, its remedy ("give values for the parameters to solve
     it numerically") naming the parameters that lack one: a rod on a side spring with
     only m open was told to give values for the parameters it had."""
-    if exact.solved or not missing or not (exact.error or "").endswith(NUMERIC_REMEDY):
+    if exact.solved or not missing or exact.remedy != NUMERIC_REMEDY:
         return exact
     named = f"give {', '.join(missing)} a value ('values:' in the file, or --set NAME=VALUE) to solve it numerically"
-    return replace(exact, error=exact.error.removesuffix(NUMERIC_REMEDY) + named)
+    return replace(exact, error=exact.error.removesuffix(NUMERIC_REMEDY) + named, remedy=named)
 
 
 def _numeric_first(family: Family, numeric_route: Solver, question: Question, model: Model, filled: Model,
@@ -263,12 +263,14 @@ def _attempt(route: Route, solver, question: Question, model: Model, options: Op
         return _run(solver, question, model, options, label)
     except CheckFailed as exc:
         raise CheckFailed(str(exc), route) from None
-    except (UnsolvedError, OutOfTime) as exc:
+    except UnsolvedError as exc:
+        return _failed(question, route, str(exc), exc.remedy)
+    except OutOfTime as exc:
         return _failed(question, route, str(exc))
 
 
-def _failed(question: Question, route: Route, error: str) -> Solution:
-    return Solution(question.kind.value, route, None, (), error=error)
+def _failed(question: Question, route: Route, error: str, remedy: str = "") -> Solution:
+    return Solution(question.kind.value, route, None, (), error=error, remedy=remedy)
 
 
 def _run(solver, question: Question, model: Model, options: Options, route: str = "") -> Solution:

@@ -283,7 +283,7 @@ def _require_low_degree(system: list[sp.Expr], symbols: list) -> None:
     eliminated = sp.Poly(sp.resultant(relation, circle, c), s)
     if eliminated.degree() > MAX_DEGREE and eliminated.free_symbols - {s}:
         raise UnsolvedError(f"the relation is a polynomial of degree {eliminated.degree()} in the sine of the "
-                            f"angle asked for, with symbolic coefficients: no compact closed form; {NUMERIC_REMEDY}")
+                            "angle asked for, with symbolic coefficients: no compact closed form", NUMERIC_REMEDY)
 
 
 def _on_unit_circle(relations, unknowns):

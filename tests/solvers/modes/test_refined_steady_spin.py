@@ -91,3 +91,18 @@ def test_a_point_far_from_any_steady_state_is_still_refused(tmp_path) -> None:
     path.write_text(SCENE.replace("b: 0.509376", "b: 0.7"), encoding="utf-8")
     (solution,) = rbdsolve.solve(path, route="numeric", budget=600.0)
     assert solution.error is not None and "not a steady state" in solution.error
+
+
+def test_the_exact_routes_remedy_is_not_quoted_where_the_numeric_route_refined(tmp_path) -> None:
+    """On auto the exact route refuses the six-digit tilt ("give it exactly …") and the
+    numeric route refines it: the note quoting the exact route's reason leaves that
+    remedy out (it read beside the refinement's note as advice to do what was done);
+    the exact route alone still gives it."""
+    path = tmp_path / "disk.yaml"
+    path.write_text(SCENE, encoding="utf-8")
+    (auto,) = rbdsolve.solve(path, budget=600.0)
+    (exact,) = rbdsolve.solve(path, route="exact", budget=600.0)
+    note = next(w for w in auto.warnings if w.startswith("the exact route could not answer"))
+    assert "not a steady state" in note and "Give it exactly" not in note
+    assert any("refined by Newton's method" in w for w in auto.warnings)
+    assert exact.error is not None and exact.error.endswith("is never exactly steady")
