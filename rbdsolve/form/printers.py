@@ -130,8 +130,15 @@ def prose_pieces(text: str) -> list[tuple[str, str, str]]:
 
 
 def point_text(values) -> str:
-    """'θ = −2.89055, φ = 0': coordinates' names and numbers, as a heading names a point."""
-    return ", ".join(f"{unicode_name(str(q))} = {float_text(v)}" for q, v in values.items())
+    """'θ = −2.89055, φ = 0': coordinates' names and numbers, as a heading names a point;
+    an exact value (π, recognized at a numeric equilibrium) as it is written."""
+    return ", ".join(f"{unicode_name(str(q))} = {_point_value(v)}" for q, v in values.items())
+
+
+def _point_value(v) -> str:
+    if isinstance(v, sp.Basic) and not v.is_Float:
+        return to_unicode(v)
+    return float_text(float(v))
 
 
 def _subscript(sub: str) -> str:

@@ -13,15 +13,13 @@ point nearest q = 0 along the free directions, which a warning names
 Error estimate: one more Newton step, |H⁻¹ ∂V/∂q|, and how far the rounding of
 ∂V/∂q's terms moves the root, ‖H⁻¹‖ times a few n ε of ∂V/∂q's size over the box,
 relative to max(|q|, 1), plus cond(H) ε; on a continuum H and ∂V/∂q are
-taken across it only (along it the representative is exact by construction).
+taken across it only (along it the representative is exact by construction). A
+coordinate within that bound of 0, ±π/2 or ±π is that value (numeric/recognized.py).
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
-import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import unicode_name
@@ -42,17 +40,14 @@ from rbdsolve.solvers.numeric.numeric_model import (
     continuum_text,
     find_numeric,
     periodic_angles,
-    rounding,
     slope_scale,
 )
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.routes.options import Options
+from rbdsolve.solvers.numeric.recognized import EXACT, recognize, root_error
 from rbdsolve.solvers.numeric.search_box import box_text
 from rbdsolve.solvers.configuration.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.routes.needed import require_values
-
-EPS = float(np.finfo(float).eps)
-
 
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
@@ -69,7 +64,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        error = _error(x, np.asarray(g(x), dtype=float), hess, r.free, slope)
+        error = root_error(x, np.asarray(g(x), dtype=float), hess, r.free, slope)
         errors.append(error)
         at, recognized, bound = recognize(dict(zip(names, r.at)), error * max(float(np.max(np.abs(x))), 1.0))
         equilibria.append(NumericEquilibrium(at, Stability(r.kind), tuple(float(c) for c in curvatures), r.free,
@@ -130,10 +125,6 @@ def _continuum_warnings(found, names: list[str]) -> list[str]:
     return lines
 
 
-EXACT = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
-SIMPLE = tuple((text, float(value)) for text, value in EXACT.items())
-
-
 def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str, ...]:
     """``contact_push.pulling`` at an equilibrium each of whose coordinates is recognized
     as a simple exact value (θ = π: the balances at rest then hold exactly); () else."""
@@ -141,19 +132,6 @@ def _pulling(model: Model, e: NumericEquilibrium, names: list[str]) -> tuple[str
         return ()
     from rbdsolve.solvers.equilibria.contact_push import pulling  # with contacts only: the reactions' balances
     return pulling(model, {q: EXACT[e.recognized[n]] for n, q in zip(names, model.q)})
-
-
-def recognize(at: dict[str, float], bound: float) -> tuple[dict[str, float], dict[str, str], float | None]:
-    """Each coordinate within ``bound`` (its error bound, absolute) of a simple exact value
-    (0, ±π/2, ±π) is that value: −3.08e-32 is printed 0, with the bound beside it. The
-    bound must be finite and small (below 1e-6): a value only near π is not recognized."""
-    if not math.isfinite(bound) or bound >= 1e-6:
-        return at, {}, None
-    recognized = {name: text for name, value in at.items() for text, exact in SIMPLE if abs(value - exact) <= bound}
-    if not recognized:
-        return at, {}, None
-    exact = dict(SIMPLE)
-    return {n: exact[recognized[n]] if n in recognized else v for n, v in at.items()}, recognized, bound
 
 
 def _never_balanced(model: Model, found) -> Solution:
@@ -170,26 +148,3 @@ def _never_balanced(model: Model, found) -> Solution:
     answers = NumericEquilibriaAnswers((), found.starts)
     return Solution("equilibria", Route.NUMERIC, answers, (*numeric_steps(answers, model), never),
                     error_estimate=0.0)  # (∂V/∂q is a number: nothing to estimate)
-
-
-def _error(x: np.ndarray, gradient: np.ndarray, hess: np.ndarray, free, slope: float) -> float:
-    """(|H⁻¹ g| + ‖H⁻¹‖ δg) / max(|q|, 1) + cond(H) ε, with H and g restricted to the
-    directions across a continuum (along it the position is exact: the representative).
-    δg = ROUNDING_UNITS n ε × ``slope``, the size of ∂V/∂q over the search box: g in
-    floats sums terms that large whatever its own size, so at a root where H is small
-    (nearly degenerate: a rod on springs near its critical stiffness) the root moves by
-    δg/|H|; the g computed there may round to almost 0 and say nothing of it (roots
-    7e-12 off were said within 4e-16)."""
-    if free:
-        from rbdsolve.solvers.numeric.dense import null_space
-
-        P = null_space(np.array(free, dtype=float))  # orthonormal basis across the continuum
-        hess, gradient = P.T @ hess @ P, P.T @ gradient
-    try:
-        step = np.linalg.solve(hess, gradient) if hess.size else np.zeros(0)
-        condition = np.linalg.cond(hess) if hess.size else 1.0
-        inverse = np.linalg.norm(np.linalg.inv(hess), 2) if hess.size else 0.0
-    except np.linalg.LinAlgError:
-        return float("inf")
-    moved = inverse * rounding(len(x), slope)
-    return float((np.max(np.abs(step), initial=0.0) + moved) / max(np.max(np.abs(x)), 1.0) + condition * EPS)

@@ -74,15 +74,10 @@ def singular_steps(points, model: Model) -> tuple[st.Step, ...]:
                             configuration(coordinates, [sp.sympify(v) for v in p.at.values()])) for p in points])
 
 
-def _shown(name: str, value: float, recognized) -> sp.Expr:
-    """A recognized value exactly (0, π/2, π), else 12 digits."""
-    exact = {"0": sp.Integer(0), "pi/2": sp.pi / 2, "-pi/2": -sp.pi / 2, "pi": sp.pi, "-pi": -sp.pi}
-    return exact[recognized[name]] if name in recognized else sp.Float(value, 15)
-
-
 def numeric_steps(a: NumericEquilibriaAnswers, model: Model) -> tuple[st.Step, ...]:
     # numpy's machinery only here: the exact route's steps load none of it
     from rbdsolve.solvers.numeric.numeric_model import CURVATURE_TOL, continuum_text
+    from rbdsolve.solvers.numeric.recognized import shown as _shown
 
     names = model.coordinate_names()
     steps = [st.equation("Equilibria solve ∂V/∂q = 0; stability from the eigenvalues of the Hessian of V:"),

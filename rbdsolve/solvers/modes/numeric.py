@@ -89,14 +89,14 @@ def _at_each(model: Model) -> Solution:
     """The modes at every equilibrium the numeric search lists (as 'equilibria' numbers
     them), each under its own heading; one that cannot be answered says why."""
     from rbdsolve.solvers.numeric.numeric_model import find_numeric
+    from rbdsolve.solvers.numeric.recognized import exactly
     from rbdsolve.solvers.configuration.placement import numeric_listing
 
     names = model.coordinate_names()
     found, skipped, steps, warned, estimates = [], [], [], [], []
     for k, (root, _) in enumerate(numeric_listing(model, find_numeric(model).equilibria)[0], 1):
-        about = {n: sp.Float(float(x), 17) for n, x in zip(names, root.at)}
-        steps.append(st.result(f"About equilibrium {k}:", configuration(model.state.functions(),
-                                                                        [sp.Float(float(x), 15) for x in root.at])))
+        about = exactly(model, root)  # π where the listing writes π
+        steps.append(st.result(f"About equilibrium {k}:", configuration(model.state.functions(), list(about.values()))))
         try:
             answers, more, w, estimate = modes_at(about, model)
         except UnsolvedError as exc:
@@ -135,7 +135,7 @@ def modes_at(about: dict, model: Model):
         spaces.condition_M, spaces.conditions, spaces.spread)
     # Only the modes that are not neutral have a relative error; with none, there is no estimate.
     estimate = max((e for e in relative if e is not None), default=None)
-    return answers, numeric_steps(answers, model, how), warnings(spaces, lam, relative), estimate
+    return answers, numeric_steps(answers, model, how, about), warnings(spaces, lam, relative), estimate
 
 
 def stiffness_rounding(model: Model, about: dict, vectors: np.ndarray) -> np.ndarray:

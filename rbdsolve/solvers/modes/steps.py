@@ -5,6 +5,7 @@ amplitudes; and the numeric route's matrices, eigenpairs and conditioning."""
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 import sympy as sp
 
@@ -144,7 +145,9 @@ EPS = 2.0**-52  # binary64's machine epsilon, in which the numeric route works
 MAX_SHOWN = 8  # larger matrices and mode shapes are left to the JSON answers
 
 
-def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.Step, ...]:
+def numeric_steps(a: NumericModesAnswers, model: Model, how: str, about: Mapping[str, sp.Expr]) -> tuple[st.Step, ...]:
+    """``about``: the equilibrium as the listing writes it (π where it recognized π; the
+    answers hold its floats)."""
     n = len(a.eigenvalues)
     labels = mode_labels(model)
     t = _texts(labels)
@@ -152,7 +155,8 @@ def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.St
                  Relation(labels.symbol("stiffness_matrix"), _floats(a.K))) if n <= MAX_SHOWN else ())
     steps = [
         st.given(f"Small motions q = q₀ + {t['u']} about the equilibrium",
-                 configuration(model.state.functions(), [sp.Float(v, 15) for v in a.about.values()])),
+                 configuration(model.state.functions(), [sp.Float(v, 15) if v.is_Float else v
+                                                         for v in map(sp.sympify, about.values())])),
         st.equation(f"Linearized equations {t['M']} {t['u']}\u0308 + {t['K']} {t['u']} = 0 at the equilibrium, "
                     f"in numbers ({how}"
                     + (f"; {t['M']} and {t['K']} are {n}×{n}, in the JSON answers):" if n > MAX_SHOWN else "):"),
@@ -160,7 +164,7 @@ def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.St
         st.equation(f"The generalized symmetric eigenproblem {t['K']} {t['a']} = {t['lam']} {t['M']} {t['a']}, "
                     f"by Cholesky factorization of {t['M']} (LAPACK's, through numpy):",
                     *[Relation(labels.symbol("eigenvalue", i), sp.Float(x, 15)) for i, x in enumerate(a.eigenvalues, 1)]),
-        _conditioning_note(a),
+        _conditioning_note(a, about),
     ]
     for i, (lam, w, motion, shape, err) in enumerate(
             zip(a.eigenvalues, a.frequencies, a.motions, a.shapes, a.absolute_errors), 1):
@@ -180,12 +184,12 @@ def numeric_steps(a: NumericModesAnswers, model: Model, how: str) -> tuple[st.St
     return tuple(steps)
 
 
-def _conditioning_note(a: NumericModesAnswers) -> st.Step:
+def _conditioning_note(a: NumericModesAnswers, about: Mapping[str, sp.Expr]) -> st.Step:
     """κ₂(M), the spread of λ, the largest κ(λ) and the clusters (modes_spaces), named by
     the equilibrium where it has at most three coordinates (a question about each of
     several prints one such note per equilibrium, in one accuracy block)."""
     kappas = [k for k in a.conditions if k is not None]
-    text = f"Conditioning{f' about {point_text(a.about)}' if len(a.about) <= 3 else ''}: κ₂(M) = {a.condition_M:.2g}"
+    text = f"Conditioning{f' about {point_text(about)}' if len(about) <= 3 else ''}: κ₂(M) = {a.condition_M:.2g}"
     if a.spread is not None:
         text += f", max |λ|/min |λ| = {a.spread:.2g}"
     if kappas:

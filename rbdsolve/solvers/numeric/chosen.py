@@ -30,6 +30,7 @@ def equilibrium_for_modes(question: Question, model: Model) -> tuple[dict[str, s
     how it was chosen."""
     # numpy's machinery only here: the exact route imports this module for its constants
     from rbdsolve.solvers.numeric.numeric_model import continuum_text, find_numeric
+    from rbdsolve.solvers.numeric.recognized import exactly
     from rbdsolve.solvers.configuration.placement import numeric_listing
 
     options = question.options
@@ -51,7 +52,7 @@ def equilibrium_for_modes(question: Question, model: Model) -> tuple[dict[str, s
     if len(stable) > 1:
         notes.append(several_stable(kept.index(chosen) + 1,
                                     [(kept.index(r) + 1, _shown(model, r.at)) for r in stable if r is not chosen]))
-    return _named(model, chosen.at), tuple(notes)
+    return exactly(model, chosen), tuple(notes)
 
 
 def several_stable(number: int, others: list[tuple[int, str]]) -> str:
@@ -65,7 +66,9 @@ def several_stable(number: int, others: list[tuple[int, str]]) -> str:
 def _numbered(model: Model, kept: list, number: int, loc) -> tuple[dict[str, sp.Expr], tuple[str, ...]]:
     if number > len(kept):
         raise UnsolvedError(f"{loc}: there is no equilibrium {number}: 'equilibria' finds {len(kept)} here")
-    return _named(model, kept[number - 1].at), ()
+    from rbdsolve.solvers.numeric.recognized import exactly
+
+    return exactly(model, kept[number - 1]), ()
 
 
 def _refined(question: Question, model: Model) -> tuple[dict[str, sp.Expr], tuple[str, ...]]:
