@@ -139,9 +139,9 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
     where = search_rule(model, angles)
     if not evident:
         raise UnsolvedError(f"{found.why_partial} ({shown}), and no evident root (0, π or ±π/2 in the angles, 0 in "
-                            f"the lengths) solves them: the exact route cannot solve them; with a value for every "
-                            f"parameter the numeric route searches {where}; for modes, give the equilibrium with "
-                            "'modes: {about: {...}}'")
+                            "the lengths) solves them: the exact route cannot solve them",
+                            f"with a value for every parameter the numeric route searches {where}; for modes, give "
+                            "the equilibrium with 'modes: {about: {...}}'")
     return evident, [f"{found.why_partial}: {shown}. The exact route lists only the evident roots, where every "
                      f"term vanishes: {_shown_roots(model, unknowns, evident)}. Other equilibria may exist; the "
                      f"numeric route (a value for every parameter, or --route numeric) searches for them {where}"]

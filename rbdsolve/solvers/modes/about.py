@@ -109,7 +109,9 @@ def _given(question: Question, model: Model) -> tuple[dict, tuple[str, ...]]:
     except UnsolvedError as exc:
         (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))
         raise UnsolvedError(f"{expr.loc}: not exactly an equilibrium (∂V/∂{unicode_name(name)} = {_number(r, model):.6g} there), "
-                            f"and the exact route cannot list the equilibria to find the one near it ({exc})") from None
+                            f"and the exact route cannot list the equilibria to find the one near it ({exc.reason})",
+                            "with a value for every parameter, the numeric route refines it to the equilibrium near "
+                            "it") from None
     near = _nearest_listed(model, at)
     if near is None and incomplete(model) is not None:  # only the evident roots are listed
         (name, expr), r = max(zip(about, residual), key=lambda x: abs(_number(x[1], model)))

@@ -179,7 +179,8 @@ def _require_steady(R0: sp.Expr, q: list, at, model: Model, names: list[str], ro
                                 "coordinates are singular there" + (_euler_hint({0: None}, names) if routh else ""))
         if residual != 0 and not simplifies_to_zero(residual):
             shown = to_unicode(model.readable(-residual)) if sp.count_ops(residual) <= 30 else "not zero"
-            said, remedy = _rounded_hint(derivative(R0, qi), at, model)
+            spun = [n for n in model.coordinate_names() if n not in names]  # the cyclic ones, at their rates
+            said, remedy = _rounded_hint(derivative(R0, qi), at, model, spun[0] if len(spun) == 1 else "NAME")
             raise UnsolvedError(f"not a steady state: ∂({what})/∂{unicode_name(name)} = {shown} there{said}", remedy)
 
 
@@ -206,13 +207,14 @@ def _residual_and_size(slope: sp.Expr, at, model: Model) -> tuple[float, float] 
 
 
 ROUNDED_REMEDY = ("a rate or an angle rounded? Give it exactly, as the root a steady_motion question prints "
-                  "(dot(psi): EXPRESSION under about:): a decimal, however many digits, is never exactly steady")
+                  "(dot({spun}): EXPRESSION under about:): a decimal, however many digits, is never exactly steady")
 
 
-def _rounded_hint(slope: sp.Expr, at, model: Model) -> tuple[str, str]:
+def _rounded_hint(slope: sp.Expr, at, model: Model, spun: str) -> tuple[str, str]:
     """At the parameter values, the residual's size against its terms', and the remedy
     where it is a rounding's (a steady rate pasted with six digits leaves ~1e-6): the
-    exact route's only, the numeric route refines such a point (gyroscopic_numeric)."""
+    exact route's only, the numeric route refines such a point (gyroscopic_numeric).
+    ``spun``: the coordinate whose rate the remedy names (the scene's own, not ψ)."""
     found = _residual_and_size(slope, at, model)
     if found is None:
         return "", ""
@@ -221,7 +223,7 @@ def _rounded_hint(slope: sp.Expr, at, model: Model) -> tuple[str, str]:
     text = f": {-residual:.3g} at the parameter values"
     if relative > 1e-4:
         return text, ""
-    return f"{text}, {relative:.1g} of its terms", ROUNDED_REMEDY
+    return f"{text}, {relative:.1g} of its terms", ROUNDED_REMEDY.format(spun=spun)
 
 
 def _euler_hint(rates: dict, names: list[str]) -> str:

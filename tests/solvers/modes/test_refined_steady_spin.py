@@ -97,7 +97,7 @@ def test_the_exact_routes_remedy_is_not_quoted_where_the_numeric_route_refined(t
     """On auto the exact route refuses the six-digit tilt ("give it exactly …") and the
     numeric route refines it: the note quoting the exact route's reason leaves that
     remedy out (it read beside the refinement's note as advice to do what was done);
-    the exact route alone still gives it."""
+    the exact route alone still gives it, naming the scene's own spin."""
     path = tmp_path / "disk.yaml"
     path.write_text(SCENE, encoding="utf-8")
     (auto,) = rbdsolve.solve(path, budget=600.0)
@@ -106,3 +106,4 @@ def test_the_exact_routes_remedy_is_not_quoted_where_the_numeric_route_refined(t
     assert "not a steady state" in note and "Give it exactly" not in note
     assert any("refined by Newton's method" in w for w in auto.warnings)
     assert exact.error is not None and exact.error.endswith("is never exactly steady")
+    assert "(dot(phi): EXPRESSION under about:)" in exact.error  # the scene's spin, not a ψ it has none of
