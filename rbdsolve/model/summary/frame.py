@@ -37,7 +37,9 @@ def frame_steps(seen: Model, motion: FrameMotion) -> list[st.Step]:
         st.given(f"In frame {frame.name} ({' and '.join(how) or 'the scene axes'}), positions are "
                  "r' = Rᵀ (r − r_O) and the inertial forces have potentials: −½ m |ω × r'|² "
                  "(centrifugal) and m a_O' · r' (the origin's acceleration)" + turning),
-        st.definition(f"Effective potential in frame {frame.name}; {legend}:", *rows, total),
+        # the solver's steps that follow write ∂V/∂q and ∂²V/∂q∂q: here V is V'
+        st.definition(f"Effective potential in frame {frame.name} (the V of the steps below); {legend}:",
+                      *rows, total),
     ]
 
 
