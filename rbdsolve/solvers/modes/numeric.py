@@ -96,7 +96,8 @@ def _at_each(model: Model) -> Solution:
     found, skipped, steps, warned, estimates = [], [], [], [], []
     for k, (root, _) in enumerate(numeric_listing(model, find_numeric(model).equilibria)[0], 1):
         about = exactly(model, root)  # π where the listing writes π
-        steps.append(st.result(f"About equilibrium {k}:", configuration(model.state.functions(), list(about.values()))))
+        steps.append(st.result(f"About equilibrium {k}:", configuration(
+            model.state.functions(), [sp.Float(v, 15) if v.is_Float else v for v in about.values()])))
         try:
             answers, more, w, estimate = modes_at(about, model)
         except UnsolvedError as exc:
