@@ -3,7 +3,8 @@ symbols — as ``sp.simplify`` would make them, without the simplify where a che
 look already says. (sympy's first simplify in a process also imports its physical units,
 ~0.1 s: docs/performance.md.)
 
-Zero: simplify's verdict, without the simplify where one numeric value already says no.
+Zero: simplify's verdict, without the simplify where one numeric value already says no,
+or where a rational function's numerator already expands to 0.
 
 simplify returns 0 only for an expression that is zero at every value its symbols may
 take (their sympy assumptions: positive, real, integer). So if the expression is not
@@ -38,7 +39,20 @@ def simplifies_to_zero(expr: sp.Expr) -> bool:
         return True
     if surely_nonzero(expr):
         return False
-    return tidy(expr) == 0 or sp.simplify(expr) == 0  # tidy is exact: its 0 is a proof
+    return rational_zero(expr) or tidy(expr) == 0 or sp.simplify(expr) == 0  # each 0 is a proof
+
+
+def rational_zero(expr: sp.Expr) -> bool:
+    """Whether expr, free of functions (a rational function of its symbols with numbers
+    and radicals of numbers for coefficients), is zero by the numerator of its one
+    fraction, expanded: n/d with n's expansion 0 is 0 wherever d ≠ 0. Sound, not complete
+    (radicals that cancel only when denested stay). A steady spin's residual at the
+    steady state, 300 terms over 118 denominators, is 0 so in half a second, where
+    simplify's powsimp ran past a minute (a new user's cone top)."""
+    if expr.atoms(sp.Function, sp.Derivative):
+        return False
+    numerator, _ = sp.fraction(sp.together(expr))
+    return sp.expand(numerator) == 0
 
 
 def tidied_sign(expr: sp.Expr, values: dict | None = None) -> sp.Expr:

@@ -86,3 +86,20 @@ def test_an_identity_tidy_reduces_is_proved_without_simplify(monkeypatch):
     assert simplifies_to_zero(sp.sin(q) ** 2 + sp.cos(q) ** 2 - 1)
     assert simplifies_to_zero(sp.cos(a) * sp.cos(x) + sp.sin(a) * sp.sin(x) - sp.cos(a - x))
     assert calls == []
+
+
+def test_a_rational_function_that_is_zero_is_proved_by_its_numerator_alone(monkeypatch):
+    """A sum of fractions over different denominators, with √3 in the coefficients, that
+    cancels to 0 by hand: (x + √3)/(x y) − 1/y − √3/(x y) = 0 and 1/(x − √3) −
+    1/(x + √3) = 2√3/(x² − 3), is reduced to one fraction whose numerator expands to 0, with neither
+    tidy nor simplify (sympy's powsimp took a minute on such a sum of 300 terms)."""
+    from rbdsolve.form import zero
+
+    r3 = sp.sqrt(3)
+    identity = ((x + r3) / (x * y) - 1 / y - r3 / (x * y)
+                + 1 / (x - r3) - 1 / (x + r3) - 2 * r3 / (x**2 - 3))
+    tidied, simplified = counted_calls(monkeypatch, zero, "tidy"), counted_calls(monkeypatch, sp, "simplify")
+    assert zero.rational_zero(identity) and simplifies_to_zero(identity)
+    assert tidied == [] and simplified == []
+    assert not zero.rational_zero(identity + 1 / (x + y))
+    assert not zero.rational_zero(sp.sin(q) ** 2 + sp.cos(q) ** 2 - 1)  # a function: left to tidy

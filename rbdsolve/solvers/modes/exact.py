@@ -107,10 +107,11 @@ def partial(question: Question, model: Model) -> str | None:
     partial; about a given point, why its eigenvalues would take minutes (``_slow_spectrum``).
     A scene with gyroscopic terms has its own exact route and no such check."""
     if gyroscopic_terms.applies(question, model):
-        # its own exact route (Routh, det(K − ω²M + iωG)), slow only about a steady state with roots in it
-        from rbdsolve.solvers.modes.routh import radical_steady_state  # (loaded where the scene spins)
+        # its own exact route (Routh, det(K − ω²M + iωG)), slow only about a steady state with roots in it,
+        # or a long one
+        from rbdsolve.solvers.modes.routh import slow_steady_state  # (loaded where the scene spins)
 
-        return RADICAL_STEADY if radical_steady_state(question, model) else None
+        return slow_steady_state(question, model)
     if question.options.about is None:
         return incomplete(model)
     given = dict(question.options.about)
@@ -121,7 +122,6 @@ def partial(question: Question, model: Model) -> str | None:
 
 
 SYMBOLIC_DEGREE = 3  # det(K − λM) over the parameters from this degree: Cardano's and Ferrari's forms
-RADICAL_STEADY = "the steady state given holds a root of the parameters, so its exact frequencies are nested radicals"
 
 
 def _slow_spectrum(at: dict, model: Model) -> str | None:

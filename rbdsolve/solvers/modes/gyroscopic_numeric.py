@@ -31,7 +31,7 @@ from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.answers import NumericGyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic import refuse_options
 from rbdsolve.solvers.modes.gyroscopic_steps import numeric_gyroscopic_steps
-from rbdsolve.solvers.modes.routh import lagrangian, linearize, radical_steady_state
+from rbdsolve.solvers.modes.routh import lagrangian, linearize, slow_steady_state
 from rbdsolve.solvers.numeric.numeric_model import as_floats, to_floats
 
 DIGITS = 50
@@ -68,7 +68,7 @@ def _linearized(question: Question, model: Model):
     spin's rate given too, that configuration refined on the steady motion's own
     equations (``_refined_steady``)."""
     options = question.options
-    values = model.values if radical_steady_state(question, model) else None
+    values = model.values if slow_steady_state(question, model) else None
     if options.about is not None:
         given = dict(options.about)
         at = {q: model.symbols.scalar(given[n]) for q, n in zip(model.q, model.coordinate_names()) if n in given}

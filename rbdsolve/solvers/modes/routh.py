@@ -68,7 +68,7 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr],
     """M, G and K about the configuration ``at`` of the coordinates kept, the cyclic
     coordinates at the steady rates the question gives (Routh's reduction); with
     ``values``, the parameters' values put in first (the floating-point route, where the
-    steady state holds a root of the parameters: ``radical_steady_state``). ``rounded``:
+    steady state holds a root of the parameters or is long: ``slow_steady_state``). ``rounded``:
     ``at`` is a floating-point root found at the values (the numeric equilibria's), steady
     where ∂R₀/∂q is zero to its rounding there (``STEADY_TO``), not exactly."""
     names = model.coordinate_names()
@@ -101,13 +101,26 @@ def linearize(question: Question, model: Model, at: Mapping[sp.Symbol, sp.Expr],
                   {names[k]: r for k, r in rates.items()}, momenta, M, G, K, steps)
 
 
-def radical_steady_state(question: Question, model: Model) -> bool:
-    """Does the steady state given hold a root of the parameters (a precession rate pasted
-    from steady_motion's quadratic, (r² s − √(r⁴ s² − …))/(…))? Then the check that it is
-    steady and det(K − ω²M + iωG)'s roots are nested radicals in the parameters: 30 s and
-    more each, where with the values put in first they are roots of numbers."""
+RADICAL_STEADY = "the steady state given holds a root of the parameters, so its exact frequencies are nested radicals"
+LONG_STEADY = ("the steady state given is a long expression of the parameters, so its exact frequencies are long "
+               "closed forms that take minutes")
+LONG_STEADY_OPS = 12  # more operations than a rate or an angle an exam gives as such (s, Ω cos α, π/3)
+
+
+def slow_steady_state(question: Question, model: Model) -> str | None:
+    """Why the exact route about the steady state given would take minutes, or None:
+    it holds a root of the parameters (a precession rate pasted from steady_motion's
+    quadratic, (r² s − √(r⁴ s² − …))/(…)), or it is a long expression of them (a spin
+    that makes a given precession steady, (3 g h/4 + (3a²/20 + 3h²/5) Ω² cos α)/(3a²Ω/10)
+    − Ω cos α: past 200 s for a cone top). The check that it is steady and det(K −
+    ω²M + iωG)'s roots then swell in the parameters, where with the values put in first
+    they are roots of numbers (the numeric route: a second)."""
     given = [model.symbols.scalar(e) for _, e in (*(question.options.about or ()), *question.options.steady)]
-    return any(has_root(x) for x in given)
+    if any(has_root(x) for x in given):
+        return RADICAL_STEADY
+    if any(sp.count_ops(x) > LONG_STEADY_OPS and x.free_symbols for x in given):
+        return LONG_STEADY
+    return None
 
 
 def _refuse_unknowns(model: Model) -> None:

@@ -7,8 +7,8 @@ from pathlib import Path
 
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file
-from rbdsolve.solvers.modes.exact import RADICAL_STEADY, partial
-from rbdsolve.solvers.modes.routh import radical_steady_state
+from rbdsolve.solvers.modes.exact import partial
+from rbdsolve.solvers.modes.routh import RADICAL_STEADY, slow_steady_state
 from rbdsolve.solvers import Options, RouteChoice, solve_question
 
 SPIN = Path(__file__).resolve().parents[3] / "problems" / "spin"
@@ -21,13 +21,13 @@ def _question_and_model(name: str):
 
 def test_a_steady_rate_with_a_root_of_the_parameters_sends_the_question_to_the_numeric_route():
     question, model = _question_and_model("disk-on-tilted-axle-nutation.yaml")
-    assert radical_steady_state(question, model)
+    assert slow_steady_state(question, model) == RADICAL_STEADY
     assert partial(question, model) == RADICAL_STEADY
 
 
 def test_a_steady_state_of_plain_parameters_keeps_the_exact_route():
     question, model = _question_and_model("sleeping-top.yaml")
-    assert not radical_steady_state(question, model)
+    assert slow_steady_state(question, model) is None
     assert partial(question, model) is None
 
 
