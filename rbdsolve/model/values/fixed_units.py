@@ -9,7 +9,8 @@ coordinates are angles (``units.known_dimensions``). With q_i an angle in radian
 - M_ij = ∂²T/∂q̇_i∂q̇_j: kg·m² over two angles (J·s²/rad²), kg·m over an angle and a
   length, kg over two lengths; G_ij (the gyroscopic matrix, of q̇_j in ∂L/∂q̇_i) is J·s
   over the same;
-- a generalized impulse I_θ = Δ(∂T/∂θ̇) is an angular impulse, N·m·s (I_x: N·s);
+- a generalized impulse I_θ = Δ(∂T/∂θ̇) is an angular impulse, N·m·s (I_x: N·s), and a
+  cyclic coordinate's momentum p = ∂L/∂q̇ in a steady motion kg·m²/s (p_x: kg·m/s);
 - q̇ and q̈ of an angle are rad/s and rad/s², q̇² rad²/s² (of a length m/s, m/s², m²/s²);
 - a moment (of gravity, of a support: M_C, M_O) is a torque, N·m; a support's force and
   its other components (N_C, F_C, R_Ox) are forces, N (the numeric route's numbers at a
@@ -91,6 +92,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return "1/s²"
     if kind == "modes" and key == "frequencies":  # ω = √λ, whatever units the parameters were given in
         return "rad/s"
+    if kind == "modes" and named[-2:-1] == ["momenta"] and key in coordinates:
+        return _momentum(coordinates[key])  # the values put in first: a number, no dimension to read
     if kind == "eom" and key == "total_derivative":
         return "J·s"
     if kind == "inertia" and named == ["about"]:
@@ -119,6 +122,13 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
     if kind == "steady_spin" and named[-2:-1] == ["precession"] and key in ("alpha", "nu", "gamma"):
         return "rad"  # the angles between ω, the axis and L
     return None
+
+
+def _momentum(dimension: Dimension | None) -> str | None:
+    """p = ∂L/∂q̇ of a coordinate of ``dimension``: kg·m²/s for an angle, kg·m/s for a length."""
+    if dimension is None:
+        return None
+    return (INERTIA / TIME).unit if dimension == NUMBER else (MASS * dimension / TIME).unit
 
 
 def _pair(key: str, indices: list[int], dims: list[Dimension | None]) -> str | None:

@@ -38,7 +38,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from rbdsolve.errors import UnsolvedError
+from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
@@ -47,7 +47,8 @@ from rbdsolve.solvers.equilibria.answers import Stability
 from rbdsolve.solvers.modes.about import exact_equilibrium
 from rbdsolve.solvers.modes.answers import GyroscopicCase, GyroscopicModesAnswers
 from rbdsolve.solvers.modes.gyroscopic_steps import gyroscopic_steps
-from rbdsolve.solvers.modes.routh import Linear, linearize
+from rbdsolve.solvers.modes.routh import Linear, linearize, slow_steady_state
+from rbdsolve.solvers.routes.needed import missing_for
 from rbdsolve.solvers.conditions.condition_roots import SAMPLES, admissible, angle_parameters
 from rbdsolve.solvers.conditions.conditions import Piece, changes, critical_values, partition, sign_on
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of, symbolic_sign
@@ -59,10 +60,17 @@ LAMBDA = sp.Symbol("lamda")
 
 
 def solve(question: Question, model: Model) -> Solution:
-    """The exact route's answer about the steady state the question names."""
+    """The exact route's answer about the steady state the question names. About one whose
+    closed forms would take minutes in the parameters (``slow_steady_state``: a root of
+    them, or a long expression), the values are put in first, so the answers are exact
+    numbers; without a value for each, that is said at once rather than after the
+    budget."""
     refuse_options(question)
     at, notes = _steady_state(question, model)
-    linear = linearize(question, model, at)
+    slow = slow_steady_state(question, model)
+    if slow and missing_for(model, question):
+        raise UnsolvedError(slow, NUMERIC_REMEDY)
+    linear = linearize(question, model, at, model.values if slow else None)
     answers = gyroscopic_modes(linear, model)
     return Solution("modes", Route.EXACT, answers, gyroscopic_steps(answers, linear, model), warnings=notes)
 
