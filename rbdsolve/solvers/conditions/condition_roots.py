@@ -408,11 +408,14 @@ def _turns_into(z: complex, low, high, periodic: bool) -> int | None:
 
 def _one_root(value: sp.Expr) -> sp.Expr:
     """√g/√R as √(g/R), the form an exam writes (kept unevaluated: sympy would split
-    the root of a quotient of positive symbols again)."""
+    the root of a quotient of positive symbols again); a root of numbers only stays as
+    it is (√2 a g m/2, not √(a² g² m²/2))."""
+    rooted = any(square_root(p) and p.base.free_symbols for p in value.atoms(sp.Pow))  # 5 g m/R stays
+    if not rooted:
+        return value
     square = sp.factor(value**2)
     if square.could_extract_minus_sign():  # −g (−2 + √2)/l: a sign taken into the sum, (2 − √2) g/l
         square = sp.factor_terms(sp.expand(value**2))
-    rooted = any(square_root(p) for p in value.atoms(sp.Pow))  # 5 g m/R stays
-    if rooted and not square.has(sp.sqrt) and not square.is_Pow:
+    if not square.has(sp.sqrt) and not square.is_Pow:
         return sp.Pow(square, sp.Rational(1, 2), evaluate=False)
     return value

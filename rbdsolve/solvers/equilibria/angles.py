@@ -70,8 +70,10 @@ def _by_its_sine(sin_value: sp.Expr, cos_value: sp.Expr, assumed: Mapping) -> sp
 
 
 def _radical(value: sp.Expr) -> bool:
-    """Whether a root (a power with a fractional exponent) is in ``value``."""
-    return any(not p.exp.is_integer for p in value.atoms(sp.Pow))
+    """Whether a root of the parameters (a power of them with a fractional exponent) is in
+    ``value``: √2 C/(m g a) has none (a plate hung from a corner, turned by a couple:
+    asin(√2 C/(a g m)), not acos(√(a² g² m² − 2C²)/(a g m)))."""
+    return any(not p.exp.is_integer and p.base.free_symbols for p in value.atoms(sp.Pow))
 
 
 def _decided_sign(value: sp.Expr, assumed: Mapping) -> int | None:

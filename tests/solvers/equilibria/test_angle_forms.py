@@ -59,3 +59,36 @@ def test_a_wheel_held_by_a_couple_lists_asin_first(tmp_path) -> None:
     found = [(e["at"]["theta"], e["stability"]) for e in result["answers"]["equilibria"]]
     assert found == [("asin(C/(R*g*m))", "stable"), ("pi - asin(C/(R*g*m))", "unstable")]
 
+
+
+PLATE = """title: a square plate hung from a corner, turned by a couple
+parameters: {m: mass, a: side, g: acceleration of gravity, C: moment}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: "a/sqrt(2)*[sin(theta), -cos(theta)]"
+bodies:
+  plate: {shape: plate, mass: m, width: a, height: a, at: G, angle: theta}
+couples:
+  turn: {on: plate, moment: C}
+questions:
+  - equilibria
+"""
+
+
+def test_a_numeric_root_in_the_sine_keeps_the_asin_form_and_the_critical_value_plain(tmp_path) -> None:
+    """A new user's plate: its centre a/√2 from the corner, so by hand V = −(m g a/√2) cos θ
+    − C θ and sin θ₀ = √2 C/(m g a): θ₀ = asin(√2 C/(a g m)) (stable) and π − asin(…),
+    where C ≤ C_c = m g a/√2. √2 is no root of the parameters: it read acos(√(a²g²m² −
+    2C²)/(a g m)) and C_c = √(a²g²m²/2)."""
+    path = tmp_path / "plate.yaml"
+    path.write_text(PLATE, encoding="utf-8")
+    out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    assert out.exit_code == 0, out.output
+    (result,) = json.loads(out.stdout)["results"]
+    found = [(e["at"]["theta"], e["stability"]) for e in result["answers"]["equilibria"]]
+    assert found == [("asin(sqrt(2)*C/(a*g*m))", "stable"), ("pi - asin(sqrt(2)*C/(a*g*m))", "unstable")]
+    assert result["answers"]["critical"] == [{"parameter": "C", "value": "sqrt(2)*a*g*m/2"}]
+    point = {"C": 1.1, "a": 0.4, "g": 9.81, "m": 2.0}  # the sine by hand at a point where C < C_c
+    theta = math.asin(math.sqrt(2) * point["C"] / (point["a"] * point["g"] * point["m"]))
+    assert math.isclose(math.sqrt(2) / 2 * point["a"] * point["g"] * point["m"] * math.sin(theta), point["C"])
