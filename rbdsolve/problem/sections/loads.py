@@ -25,7 +25,7 @@ from rbdsolve.problem.sections.bodies import refuse_negative
 from rbdsolve.problem.context import Reading
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar
 from rbdsolve.problem.scene import Couple, Force, Wound
-from rbdsolve.problem.schema import Body
+from rbdsolve.problem.schema import Body, Shape
 from rbdsolve.problem.yamlnodes import Node, Scalar
 
 SIDES = ("below", "above", "left", "right")
@@ -83,6 +83,10 @@ class LoadReader:
         else:
             value = self.reading.expr(moment, ex.Kind.VECTOR, "a moment: a scalar about z, or a vector",
                                       _without_rates(self.reading.positions))
+        if _a_point(self.bodies[on]):  # ('by' a particle: its half does no work, the other half does)
+            raise InputError(f"{what} acts on '{on}', a particle: a point has no orientation, so a couple on it "
+                             "does no work and the motion would ignore it; put it on a body that turns (a rod, a "
+                             "disk, a plate… with an angle)", (spec.get("on") or spec).loc)
         return Couple(name, on, by, value, spec.loc)
 
     def wound(self, node: Node | None, towards: Node | None):
@@ -128,6 +132,13 @@ class LoadReader:
 
 RATES = ("a load may hold the parameters, the coordinates, the points and t, not the velocities: a damper or "
          "a drag (c*dot(x)) is not in the format yet")
+
+
+def _a_point(body: Body) -> bool:
+    """A body that is one particle, given no angle or orientation: nothing of it turns
+    (a particle on an arm that turns with 'angle' is a body a couple works on)."""
+    return (len(body.parts) == 1 and body.parts[0].shape is Shape.PARTICLE and body.angle is None
+            and not body.orientation and body.angular_velocity is None)
 
 
 def _without_rates(scope: ex.Scope) -> ex.Scope:

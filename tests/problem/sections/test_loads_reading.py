@@ -156,3 +156,17 @@ def test_a_body_hanging_straight_from_a_drum() -> None:
 ])
 def test_a_hanging_string_s_keys_are_checked(hang: str, message: str) -> None:
     assert _refused(ATWOOD.replace("{drum: pulley, side: left}", hang)).startswith(message)
+
+
+def test_a_couple_on_a_particle_is_refused_and_on_a_particle_that_turns_with_an_angle_is_not() -> None:
+    """A point has no orientation: a couple on it does no work, and the motion would
+    ignore it without a word (a new user's plate written as a particle at its centroid:
+    ∂V/∂θ lost the couple). The same particle on an arm that turns ('angle') is a body a
+    couple works on."""
+    refused = _refused(_with("  push: {on: bob, moment: F*l}", "couples:"))
+    assert refused.startswith("p.yaml:10:14: couples.push.on: couple 'push' acts on 'bob', a particle: a point has no "
+                              "orientation, so a couple on it does no work")
+    turning = _with("  push: {on: bob, moment: F*l}", "couples:").replace(
+        "  bob: {shape: particle, mass: m, at: P}",
+        "  bob: {at: [0, 0], angle: theta, parts: {b: {shape: particle, mass: m, at: [0, -l]}}}")
+    assert [c.on for c in load_text(turning, "p.yaml").couples] == ["bob"]
