@@ -197,6 +197,9 @@ def principal(J: sp.Matrix, symbols: set, model: Model) -> Principal:
             raise UnsolvedError("the principal moments have no compact closed form at every configuration; ask at "
                                 f"one, 'at: {{{', '.join(f'{n}: …' for n in moving)}}}' (the tensor itself, and the "
                                 "moment about an 'axis', are exact at every configuration)")
+        in_plane = _decoupled_plane(J_hat, scale, model) if J_hat.free_symbols else None
+        if in_plane is not None:  # a flat body, its symbolic sizes: one axis and a quadratic
+            return replace(in_plane, steps=(*steps, *in_plane.steps))
         if J_hat.free_symbols:
             raise UnsolvedError("the principal moments have no compact closed form here; give "
                                 "parameter values for numeric ones")
@@ -236,10 +239,25 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     if k is None:
         return None
     i, j = (x for x in range(3) if x != k)
-    a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
-    root = sp.sqrt(tidy((a - b) ** 2 / 4 + c**2))
+    root = sp.sqrt(tidy((J_hat[i, i] - J_hat[j, j]) ** 2 / 4 + J_hat[i, j] ** 2))
     if not any(p.exp == sp.S.Half and p.base.free_symbols & set(model.q) for p in root.atoms(sp.Pow)):
         return None  # rational in the coordinates' sines: the null space gives short axes (OG and across)
+    return _decoupled_plane(J_hat, scale, model)
+
+
+def _decoupled_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal | None:
+    """``_turning_plane``'s formulas for any tensor with an axis no product couples (a flat
+    body: a T of two rods about the end of its crossbar, its sizes symbolic, whose cubic
+    has no compact roots but whose block's quadratic has); None where no axis decouples
+    or the block is already diagonal (its moments are its entries)."""
+    k = _decoupled_axis(J_hat)
+    if k is None:
+        return None
+    i, j = (x for x in range(3) if x != k)
+    a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
+    if c == 0:
+        return None
+    root = sp.sqrt(tidy((a - b) ** 2 / 4 + c**2))
     alpha = sp.atan2(tidy(2 * c), tidy(a - b)) / 2
     plus, minus = sp.zeros(3, 1), sp.zeros(3, 1)
     plus[i], plus[j], minus[i], minus[j] = sp.cos(alpha), sp.sin(alpha), -sp.sin(alpha), sp.cos(alpha)
@@ -249,11 +267,11 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     axes = [axis for _, axis in pairs]
     x, y, z = ("xyz"[n] for n in (i, j, k))
     shown = sp.Symbol("alpha")
+    xx, yy, xy = f"J_{x}{x}", f"J_{y}{y}", f"J_{x}{y}"  # (not a, b, c: a body's sizes are often named so)
     note = st.equation(f"No product of inertia couples the {z} axis (J_{x}{z} = J_{y}{z} = 0): it is a "
                        f"principal axis, with J_{z}{z}; the other two lie in the {x}{y}-plane, at the angle α "
-                       f"from the {x} axis, λ = (a + b)/2 ± √(((a − b)/2)² + c²) and α = ½ atan2(2c, a − b) "
-                       f"for its block [[a, c], [c, b]] = [[J_{x}{x}, J_{x}{y}], [J_{x}{y}, J_{y}{y}]]:",
-                       Relation(shown, alpha))
+                       f"from the {x} axis, λ = ({xx} + {yy})/2 ± √((({xx} − {yy})/2)² + {xy}²) and "
+                       f"α = ½ atan2(2 {xy}, {xx} − {yy}):", Relation(shown, alpha))
     steps = (note, *principal_steps(moments, [v.xreplace({alpha: shown}) for v in axes], []))
     return Principal(tuple(moments), tuple(tuple(x) for x in axes), (), steps, ())
 
