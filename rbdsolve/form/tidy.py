@@ -393,6 +393,16 @@ def has_root(expr: sp.Basic, of: tuple = ()) -> bool:
                for p in expr.atoms(sp.Pow))
 
 
+def tidied_roots(expr: sp.Expr) -> sp.Expr:
+    """Each square root's radicand expanded and tidied (sin² + cos² = 1), so that one
+    length written two ways is one: a spring's pull has |d| = √(x² cos²α + (x sin α −
+    l₀)²) from the positions, V and the energy's q̇² the tidied √(x² − 2 l₀ x sin α +
+    l₀²), and the force along the motion kept both, forty lines that never cancelled (a
+    hoop on an incline held by a spring: 15 s)."""
+    roots = [p for p in expr.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2 and p.base.free_symbols]
+    return expr.xreplace({p: sp.Pow(tidy(sp.expand(p.base)), p.exp) for p in roots}) if roots else expr
+
+
 def square_root(p: sp.Basic) -> bool:
     """Is p a power whose exponent is an odd number of halves (√X, 1/√X, X^(3/2))?"""
     return p.is_Pow and p.exp.is_Rational and p.exp.q == 2

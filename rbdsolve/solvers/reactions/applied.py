@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rbdsolve.form.tidy import tidy
+from rbdsolve.form.tidy import tidied_roots, tidy
 from rbdsolve.errors import UnsolvedError
 from rbdsolve.form.printers import to_unicode
 from rbdsolve.model.build import Model, SpringModel
@@ -68,6 +68,7 @@ def _linear(model: Model, s: SpringModel, held: list[str]) -> list[Applied]:
     a, b = (model.symbols.vector(e) for e in s.source.ends)
     d = a - b
     pull = -s.stiffness * d if not s.source.natural_length else -s.stiffness * s.stretch * _unit(s, d)
+    pull = pull.applyfunc(tidied_roots)  # |d| as V writes it (tidied), so that the two cancel
     out = []
     for end, force in ((a, pull), (b, -pull)):
         carrier = _carrier(model, s, end, held)

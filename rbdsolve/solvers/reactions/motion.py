@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rbdsolve.form.tidy import tidied_roots
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
@@ -42,4 +43,4 @@ def _along(model: Model, value: sp.Expr, e: EnergyIntegral) -> sp.Expr | None:
     replaced = sp.expand(value).subs(qd**2, w)
     if replaced.has(qd):
         return None
-    return clean_fraction(replaced.xreplace({w: e.rate_squared}))
+    return clean_fraction(tidied_roots(replaced.xreplace({w: e.rate_squared})))
