@@ -9,7 +9,10 @@ from rbdsolve.report.steps import ProblemReport, Step, StepKind, accuracy_steps,
 from rbdsolve.errors import printable
 
 
-_MARKUP = {"<": "&lt;", ">": "&gt;", "&": "&amp;"} | {c: "\\" + c for c in "\\`*_[]()#$|!~"}
+# Parentheses stay as they are: without a '[…]' before them they make no link, and a
+# backslashed one, \( … \), is where MathJax and KaTeX start inline math (the key's
+# statement "(below O)" was typeset as math in a viewer that shows its $$…$$).
+_MARKUP = {"<": "&lt;", ">": "&gt;", "&": "&amp;"} | {c: "\\" + c for c in "\\`*_[]#$|!~"}
 
 
 def md(text: str, lines: bool = False) -> str:
