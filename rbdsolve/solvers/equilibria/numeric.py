@@ -49,6 +49,7 @@ from rbdsolve.solvers.numeric.search_box import box_text
 from rbdsolve.solvers.configuration.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.routes.needed import require_values
 
+
 def solve(question: Question, model: Model, options: Options) -> Solution:
     require_values(model, "the numeric route")
     require_static(model, "the equilibria")
