@@ -40,11 +40,10 @@ from rbdsolve.solvers.numeric.numeric_model import (
     continuum_text,
     find_numeric,
     periodic_angles,
-    slope_scale,
 )
 from rbdsolve.solvers.configuration import contact_span
 from rbdsolve.solvers.routes.options import Options
-from rbdsolve.solvers.numeric.recognized import EXACT, recognize, root_error
+from rbdsolve.solvers.numeric.recognized import EXACT, recognized_root
 from rbdsolve.solvers.numeric.search_box import box_text
 from rbdsolve.solvers.configuration.placement import SUGGESTION, numeric_listing
 from rbdsolve.solvers.routes.needed import require_values
@@ -56,8 +55,7 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     found = find_numeric(model)
     if not found.equilibria:
         return _never_balanced(model, found)
-    g, H = compiled_gradient(model)
-    slope = slope_scale(model)
+    _, H = compiled_gradient(model)
     names = model.coordinate_names()
     kept, apart = numeric_listing(model, found.equilibria)
     equilibria, errors = [], []
@@ -65,9 +63,8 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
         x = np.array(r.at)
         hess = np.asarray(H(x), dtype=float)
         curvatures = np.linalg.eigvalsh((hess + hess.T) / 2)
-        error = root_error(x, np.asarray(g(x), dtype=float), hess, r.free, slope)
+        error, at, recognized, bound = recognized_root(model, r, hess)
         errors.append(error)
-        at, recognized, bound = recognize(dict(zip(names, r.at)), error * max(float(np.max(np.abs(x))), 1.0))
         equilibria.append(NumericEquilibrium(at, Stability(r.kind), tuple(float(c) for c in curvatures), r.free,
                                              tuple(dict(zip(names, e.at)) for e in equivalent), recognized, bound))
     singular = tuple(SingularPoint(dict(zip(names, r.at)), s.verdict.value, s.reason, s.kernel) for r, s in apart)

@@ -235,14 +235,11 @@ def _turning_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal 
     coordinates (a disk circling O: its axes along OG and across it, from the null space)."""
     if not J_hat.free_symbols & set(model.q):
         return None
-    k = _decoupled_axis(J_hat)
-    if k is None:
-        return None
-    i, j = (x for x in range(3) if x != k)
-    root = sp.sqrt(tidy((J_hat[i, i] - J_hat[j, j]) ** 2 / 4 + J_hat[i, j] ** 2))
-    if not any(p.exp == sp.S.Half and p.base.free_symbols & set(model.q) for p in root.atoms(sp.Pow)):
+    block = _plane_block(J_hat)
+    if block is None or not any(p.exp == sp.S.Half and p.base.free_symbols & set(model.q)
+                                for p in block[3].atoms(sp.Pow)):
         return None  # rational in the coordinates' sines: the null space gives short axes (OG and across)
-    return _decoupled_plane(J_hat, scale, model)
+    return _in_plane(J_hat, scale, model, block)
 
 
 def _decoupled_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principal | None:
@@ -250,14 +247,27 @@ def _decoupled_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model) -> Principa
     body: a T of two rods about the end of its crossbar, its sizes symbolic, whose cubic
     has no compact roots but whose block's quadratic has); None where no axis decouples
     or the block is already diagonal (its moments are its entries)."""
+    block = _plane_block(J_hat)
+    if block is None or J_hat[block[1], block[2]] == 0:
+        return None
+    return _in_plane(J_hat, scale, model, block)
+
+
+def _plane_block(J_hat: sp.Matrix) -> tuple[int, int, int, sp.Expr] | None:
+    """(k, i, j, √(((a − b)/2)² + c²)): the axis e_k no product couples, the other two,
+    and the root of their block [[a, c], [c, b]]; None where no axis decouples."""
     k = _decoupled_axis(J_hat)
     if k is None:
         return None
     i, j = (x for x in range(3) if x != k)
+    return k, i, j, sp.sqrt(tidy((J_hat[i, i] - J_hat[j, j]) ** 2 / 4 + J_hat[i, j] ** 2))
+
+
+def _in_plane(J_hat: sp.Matrix, scale: sp.Expr, model: Model, block: tuple) -> Principal:
+    """The moments J_kk and (a + b)/2 ± the block's root, ascending, with their axes e_k
+    and e± at α = ½ atan2(2c, a − b) (``_turning_plane``'s formulas), and their steps."""
+    k, i, j, root = block
     a, b, c = J_hat[i, i], J_hat[j, j], J_hat[i, j]
-    if c == 0:
-        return None
-    root = sp.sqrt(tidy((a - b) ** 2 / 4 + c**2))
     alpha = sp.atan2(tidy(2 * c), tidy(a - b)) / 2
     plus, minus = sp.zeros(3, 1), sp.zeros(3, 1)
     plus[i], plus[j], minus[i], minus[j] = sp.cos(alpha), sp.sin(alpha), -sp.sin(alpha), sp.cos(alpha)

@@ -1,7 +1,7 @@
 """A floating-point equilibrium's coordinates recognized as simple exact values: a
 coordinate within its error bound of 0, ±π/2 or ±π is that value (−3.08e-32 is 0,
-3.141592653589793 is π), so the equilibria, the modes about them and the reactions
-there write the one configuration the same way.
+3.141592653589793 is π), so the equilibria, the modes about them and the contacts'
+pushes there (equilibria/contact_push.py) take the one configuration the same way.
 
 The error bound of a root x of ∂V/∂q = 0 (g its value there, H the Hessian):
 
@@ -69,14 +69,23 @@ def shown(name: str, value: float, recognized: dict[str, str]) -> sp.Expr:
     return EXACT[recognized[name]] if name in recognized else sp.Float(value, 15)
 
 
-def exactly(model: Model, root) -> dict[str, sp.Expr]:
-    """A root the numeric search found (``.at``, ``.free``), name -> value, each
-    coordinate recognized as the equilibria's listing recognizes it exact (π), the
-    others as 17-digit floats: the modes about it name it as the listing does."""
-    g, H = compiled_gradient(model)
+def recognized_root(model: Model, root, hess: np.ndarray) -> tuple[float, dict, dict, float | None]:
+    """A root the numeric search found (``.at``, ``.free``; ``hess``, the Hessian there):
+    its relative error bound (``root_error``, with ∂V/∂q there and its scale over the
+    box) and ``recognize``'s values, recognized names and bound, with that error as an
+    absolute bound. The equilibria's listing and the modes about its roots both read it."""
+    g, _ = compiled_gradient(model)
     x = np.array(root.at, dtype=float)
-    error = root_error(x, np.asarray(g(x), dtype=float), np.asarray(H(x), dtype=float), root.free,
-                       slope_scale(model))
-    names = model.coordinate_names()
-    _, recognized, _ = recognize(dict(zip(names, root.at)), error * max(float(np.max(np.abs(x))), 1.0))
-    return {n: EXACT[recognized[n]] if n in recognized else sp.Float(float(v), 17) for n, v in zip(names, root.at)}
+    error = root_error(x, np.asarray(g(x), dtype=float), hess, root.free, slope_scale(model))
+    at = dict(zip(model.coordinate_names(), root.at))
+    return (error, *recognize(at, error * max(float(np.max(np.abs(x))), 1.0)))
+
+
+def exactly(model: Model, root) -> dict[str, sp.Expr]:
+    """A root the numeric search found, name -> value, each coordinate recognized as the
+    equilibria's listing recognizes it exact (π), the others as 17-digit floats: the
+    modes about it name it as the listing does."""
+    _, H = compiled_gradient(model)
+    _, _, recognized, _ = recognized_root(model, root, np.asarray(H(np.array(root.at, dtype=float)), dtype=float))
+    return {n: EXACT[recognized[n]] if n in recognized else sp.Float(float(v), 17)
+            for n, v in zip(model.coordinate_names(), root.at)}

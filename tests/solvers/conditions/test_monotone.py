@@ -10,7 +10,7 @@ import sympy as sp
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_file, load_text
 from rbdsolve.solvers.equilibria import numeric as equilibria_numeric
-from rbdsolve.solvers.equilibria.numeric import recognize
+from rbdsolve.solvers.numeric.recognized import recognize
 from rbdsolve.solvers import solve_problem
 from rbdsolve.solvers.equilibria import exact as equilibria_exact
 from rbdsolve.solvers.conditions.monotone import monotone_root

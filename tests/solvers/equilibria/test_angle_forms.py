@@ -51,14 +51,18 @@ questions:
 def test_a_wheel_held_by_a_couple_lists_asin_first(tmp_path) -> None:
     """V = −m g R cos θ − C θ, ∂V/∂θ = m g R sin θ − C: sin θ₀ = C/(m g R), the lower root
     (cos θ₀ > 0, K = m g R cos θ₀ > 0) stable and listed first, π − asin(…) unstable."""
-    path = tmp_path / "wheel.yaml"
-    path.write_text(WHEEL, encoding="utf-8")
-    out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
-    assert out.exit_code == 0, out.output
-    (result,) = json.loads(out.stdout)["results"]
+    result = _solved(tmp_path / "wheel.yaml", WHEEL)
     found = [(e["at"]["theta"], e["stability"]) for e in result["answers"]["equilibria"]]
     assert found == [("asin(C/(R*g*m))", "stable"), ("pi - asin(C/(R*g*m))", "unstable")]
 
+
+def _solved(path, scene: str) -> dict:
+    """The one question's result in the JSON of ``rbdsolve solve``, run as a user does."""
+    path.write_text(scene, encoding="utf-8")
+    out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    assert out.exit_code == 0, out.output
+    (result,) = json.loads(out.stdout)["results"]
+    return result
 
 
 PLATE = """title: a square plate hung from a corner, turned by a couple
@@ -81,11 +85,7 @@ def test_a_numeric_root_in_the_sine_keeps_the_asin_form_and_the_critical_value_p
     − C θ and sin θ₀ = √2 C/(m g a): θ₀ = asin(√2 C/(a g m)) (stable) and π − asin(…),
     where C ≤ C_c = m g a/√2. √2 is no root of the parameters: it read acos(√(a²g²m² −
     2C²)/(a g m)) and C_c = √(a²g²m²/2)."""
-    path = tmp_path / "plate.yaml"
-    path.write_text(PLATE, encoding="utf-8")
-    out = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
-    assert out.exit_code == 0, out.output
-    (result,) = json.loads(out.stdout)["results"]
+    result = _solved(tmp_path / "plate.yaml", PLATE)
     found = [(e["at"]["theta"], e["stability"]) for e in result["answers"]["equilibria"]]
     assert found == [("asin(sqrt(2)*C/(a*g*m))", "stable"), ("pi - asin(sqrt(2)*C/(a*g*m))", "unstable")]
     assert result["answers"]["critical"] == [{"parameter": "C", "value": "sqrt(2)*a*g*m/2"}]
