@@ -279,6 +279,23 @@ questions:
 """
 
 
+# A square plate (m, side a) hung from a corner O, its centre a/√2 from it, turned by a
+# couple C: V = −(m g a/√2) cos θ − C θ (a new user's trial).
+PLATE_ON_A_CORNER = """title: a square plate hung from a corner, turned by a couple
+parameters: {m: mass, a: side, g: acceleration of gravity, C: moment}
+coordinates: [theta]
+gravity: [0, -g]
+points:
+  G: "a/sqrt(2)*[sin(theta), -cos(theta)]"
+bodies:
+  plate: {shape: plate, mass: m, width: a, height: a, at: G, angle: theta}
+couples:
+  turn: {on: plate, moment: C}
+questions:
+  - equilibria
+"""
+
+
 # A rod OA (m, L) pinned at O on a plane inclined at α (gravity's part in it g sin α), θ
 # from up the slope, its end A held by a horizontal spring (k, zero length) to a slider
 # level with it on the up-slope line: stretch L sin θ, V = m g sin α (L/2) cos θ + ½ k L²

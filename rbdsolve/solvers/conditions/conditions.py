@@ -164,22 +164,51 @@ def _partition(model, f: sp.Expr, first: sp.Symbol | None) -> Partition | None:
     angles = angle_parameters(f)
     anywhere = None
     for p in candidates(f, model, angles, first):
-        roots = parameter_roots(f, p, angles, model)
-        if not roots:
-            continue
-        span = angles.get(p, (sp.Integer(0), sp.oo))
-        ends = [None, *roots, None]
-        pieces = [Piece(p, a, b, 0, span) for a, b in zip(ends, ends[1:])]
-        signs = [sign_on(f, piece, model, angles) for piece in pieces]
-        if None in signs:
-            continue
-        # a piece the assumptions rule out (r > R under R > r) splits nothing
-        allowed_ones = [(piece, sign) for piece, sign in zip(pieces, signs) if allowed(piece, model)]
-        found = _merged(p, allowed_ones)
+        found, split = _split_in(model, f, p, angles)
         if found is not None:
             return found
-        anywhere = anywhere or _merged(p, list(zip(pieces, signs)))
+        anywhere = anywhere or split
     return anywhere
+
+
+def _split_in(model, f: sp.Expr, p: sp.Symbol, angles: dict) -> tuple[Partition | None, Partition | None]:
+    """f's sign piece by piece in p: where the assumptions allow it, and anywhere (None,
+    None: p's roots do not split it, or a piece's sign is not known)."""
+    roots = parameter_roots(f, p, angles, model)
+    if not roots:
+        return None, None
+    span = angles.get(p, (sp.Integer(0), sp.oo))
+    ends = [None, *roots, None]
+    pieces = [Piece(p, a, b, 0, span) for a, b in zip(ends, ends[1:])]
+    signs = [sign_on(f, piece, model, angles) for piece in pieces]
+    if None in signs:
+        return None, None
+    # a piece the assumptions rule out (r > R under R > r) splits nothing
+    allowed_ones = [(piece, sign) for piece, sign in zip(pieces, signs) if allowed(piece, model)]
+    return _merged(p, allowed_ones), _merged(p, list(zip(pieces, signs)))
+
+
+def by_size(f: sp.Expr, model) -> tuple[Partition, dict[sp.Symbol, sp.Expr]] | None:
+    """f's sign piece by piece in the size |p| of a parameter of either sign that f
+    holds only in even powers (a couple C of either sign on a plate hung from a corner:
+    1 − 2 C²/(a² g² m²) ≥ 0 is |C| ≤ C_c, C_c = √2 a g m/2), where no positive parameter
+    splits it: f(p) = f(|p|), so |p| is split as a positive parameter of p's name, and
+    the pieces' conditions read |p| once that name is put back as Abs(p) (the second
+    value returned). None where no such parameter splits f."""
+    order = [model.symbols.parameters[x.name] for x in model.problem.parameters]
+    for p in order:
+        if p not in f.free_symbols or p.is_positive or p.is_negative or not _even_in(f, p):
+            continue
+        size = sp.Symbol(p.name, positive=True)
+        found, _ = _split_in(model, f.xreplace({p: size}), size, {})
+        if found is not None:
+            return found, {size: sp.Abs(p)}
+    return None
+
+
+def _even_in(f: sp.Expr, p: sp.Symbol) -> bool:
+    """f(−p) = f(p), term by term: p only in even powers."""
+    return simplifies_to_zero(f.xreplace({p: -p}) - f)
 
 
 def _merged(p: sp.Symbol, signed: list) -> Partition | None:
@@ -328,7 +357,10 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
-        found = partition(condition, model, first)
+        found, size, split = partition(condition, model, first), {}, condition
+        if found is None and (sized := by_size(condition, model)) is not None:
+            found, size = sized  # split in |C|: the condition with C as its size, then |C| put back
+            split = condition.xreplace({magnitude.args[0]: k for k, magnitude in size.items()})
         if found is None:
             # no change of sign in any parameter: where it keeps one, proved with each angle
             # parameter in (0, π) (an incline's g m sin α + 6 k r), that sign decides
@@ -338,8 +370,8 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
             if sign < 0 or (sign == 0 and condition in strict):
                 return Existence(sp.false, ())
             continue
-        closed = {c.value: condition not in strict and _finite_at(condition, c) for c in found.criticals}
-        held = [piece.when(closed.get(piece.low, False), closed.get(piece.high, False))
+        closed = {c.value: condition not in strict and _finite_at(split, c) for c in found.criticals}
+        held = [piece.when(closed.get(piece.low, False), closed.get(piece.high, False)).xreplace(size)
                 for piece in found.pieces if piece.sign > 0]
         exists = sp.And(exists, sp.Or(*held))
         criticals += found.criticals

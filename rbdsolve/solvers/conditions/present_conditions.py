@@ -87,8 +87,11 @@ def condition_relation(condition, critical: Sequence = (), lead: str = "") -> Re
 
 
 def _named_side(condition, critical: Sequence) -> sp.Expr:
-    """The right side of p < value, by name where it is a critical value of p."""
+    """The right side of p < value (or |p| < value, a parameter of either sign), by name
+    where it is a critical value of p."""
     lhs, rhs = condition.lhs, condition.rhs
+    if isinstance(lhs, sp.Abs):
+        lhs = lhs.args[0]
     for c, name in critical_names(critical):
         if isinstance(lhs, sp.Symbol) and lhs.name == c.parameter and simplifies_to_zero(rhs - c.value):
             return name

@@ -10,6 +10,7 @@ import math
 import sympy as sp
 from click.testing import CliRunner
 
+from conftest import PLATE_ON_A_CORNER
 from rbdsolve.cli import main
 from rbdsolve.solvers.equilibria.angles import angle_of
 
@@ -65,19 +66,7 @@ def _solved(path, scene: str) -> dict:
     return result
 
 
-PLATE = """title: a square plate hung from a corner, turned by a couple
-parameters: {m: mass, a: side, g: acceleration of gravity, C: moment}
-coordinates: [theta]
-gravity: [0, -g]
-points:
-  G: "a/sqrt(2)*[sin(theta), -cos(theta)]"
-bodies:
-  plate: {shape: plate, mass: m, width: a, height: a, at: G, angle: theta}
-couples:
-  turn: {on: plate, moment: C}
-questions:
-  - equilibria
-"""
+PLATE = PLATE_ON_A_CORNER
 
 
 def test_a_numeric_root_in_the_sine_keeps_the_asin_form_and_the_critical_value_plain(tmp_path) -> None:
