@@ -279,6 +279,27 @@ questions:
 """
 
 
+# A hoop (m, r) rolling on an incline at α, x up the slope, its centre tied by a spring
+# (k, natural length l₀) to W, l₀ straight above its start, released from rest at x = 0
+# (a new user's trial). Tests add values (``+ "values: …"``).
+HOOP_ON_INCLINE = """\
+title: a hoop on an incline held by a spring
+parameters: {m: mass, r: radius, k: stiffness, l0: natural length, alpha: angle, g: gravity}
+coordinates: [x]
+gravity: [0, -g]
+points:
+  W: "r*[-sin(alpha), cos(alpha)] + [0, l0]"
+bodies:
+  hoop: {shape: ring, mass: m, radius: r}
+contacts:
+  C: {body: hoop, rolls_on: {line: {through: [0, 0], angle: alpha}}, along: x}
+springs:
+  s: {stiffness: k, between: [hoop, W], natural_length: l0}
+questions:
+  - reactions: {forces: [C], from_rest: {x: 0}}
+"""
+
+
 # A square plate (m, side a) hung from a corner O, its centre a/√2 from it, turned by a
 # couple C: V = −(m g a/√2) cos θ − C θ (a new user's trial).
 PLATE_ON_A_CORNER = """title: a square plate hung from a corner, turned by a couple

@@ -99,6 +99,7 @@ _RATES = {  # a numeric route's answers whose unit is fixed by what they are
     "speed": LENGTH / TIME, "distance": LENGTH, "moment": INERTIA, "spin": TIME ** -1, "transverse": TIME ** -1,
     "omega": TIME ** -1, "body_rate": TIME ** -1, "space_rate": TIME ** -1, "angular_momentum": INERTIA / TIME,
     "roots": TIME ** -1, "root_errors": TIME ** -1,  # a gyroscopic system's s = iω and their bounds
+    "mu": NUMBER,  # a friction coefficient at its largest over a motion (reactions' least_friction_over)
 }
 _RATE_UNITS = {k: d.unit for k, d in _RATES.items()}
 _RATE_OF = re.compile(r"(d?dot)\((\w+)\)")  # dot(theta), ddot(theta): a state's rate or acceleration
@@ -114,7 +115,8 @@ def _kinematic(named: list[str]) -> bool:
 def _coordinate_value(named: list[str], coordinates: Mapping[str, Dimension | None]) -> bool:
     """Is the leaf a coordinate's value, rate or acceleration (an equilibrium's, the one
     modes are about, a state's, where a push first reaches zero along a motion)?"""
-    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent", "steady", "lost_at", "turns_at", "to"):
+    if len(named) < 2 or named[-2] not in ("at", "about", "equivalent", "steady", "lost_at", "turns_at", "to",
+                                                "until"):
         return False
     rate = _RATE_OF.fullmatch(named[-1])
     return (rate.group(2) if rate else named[-1]) in coordinates

@@ -10,6 +10,7 @@ import sympy as sp
 
 from rbdsolve.solvers.conditions.conditions import CriticalValue
 from rbdsolve.solvers.reactions.first_zero import FirstZero
+from rbdsolve.solvers.reactions.largest import LargestFriction
 
 
 @dataclass(frozen=True)
@@ -39,6 +40,8 @@ class ReactionsAnswers:
     critical: tuple[CriticalValue, ...] = ()  # the critical values these conditions use
     # with every parameter given a value: N or T -> where it first reaches 0 along the motion
     first_zero: dict[str, FirstZero] | None = None
+    # with every parameter given a value: rolling contact -> its least μ at its largest over the motion, and where
+    least_friction_over: dict[str, LargestFriction] | None = None
     to: dict[str, sp.Expr] | None = None  # the configuration asked ('to'), where the motion gets to
     there: dict[str, Reaction] | None = None  # the forces there (None where the motion does not get there)
     there_reached: bool | None = None  # q̇² ≥ 0 there: decided (True, False), or None where the parameters decide

@@ -20,7 +20,8 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.first_zero import FirstZero, first_zero, reaches
+from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, reaches
+from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
@@ -130,7 +131,8 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
     left open may only scale each push and q̇² (positive factors, ``sign_part``): their
     signs along the way, so the places, are then the same for every value of them (a
     ladder released at φ₀ = 60° leaves the wall at sin φ = ⅔ sin φ₀ whatever m, L, g)."""
-    if not _an_angle(model):
+    step = _step(model, table[model.q[0]])
+    if step is None:
         return None
     q = model.q[0]
     name = model.coordinate_names()[0]
@@ -140,7 +142,7 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
         pushes, rate_squared = {k: _unscaled(v, given, q) for k, v in pushes.items()}, _unscaled(rate_squared, given, q)
         if rate_squared is None or table[q].xreplace(given).free_symbols:
             return None
-    found = {k: first_zero(v, rate_squared, q, table[q], name, given) for k, v in pushes.items() if v is not None}
+    found = {k: first_zero(v, rate_squared, q, table[q], name, given, step) for k, v in pushes.items() if v is not None}
     found = {k: v for k, v in found.items() if v is not None}
     return _before_first_loss(found, name, float(table[q].xreplace(given))) or None
 
@@ -167,11 +169,45 @@ def _before_first_loss(found: dict[str, FirstZero], name: str, start: float) -> 
     return {k: z for k, z in found.items() if reached(z)}
 
 
-def _an_angle(model: Model) -> bool:
+def _step(model: Model, start: sp.Expr) -> float | None:
+    """first_zero's step along the coordinate: half a degree for an angle; for a length,
+    a whole turn of a wheel as large as the scene's largest length (the parameters'
+    values of a length, the release's place) in as many steps; None for anything else,
+    or a length without a value to scale by."""
     from rbdsolve.model.values.units import known_dimensions  # loaded where there are values
-    from rbdsolve.problem.quantities.quantity import NUMBER
+    from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER
 
-    return known_dimensions(model).get(model.q[0]) == NUMBER
+    dimensions = known_dimensions(model)
+    kind = dimensions.get(model.q[0])
+    if kind == NUMBER:
+        return ANGLE_STEP
+    if kind != LENGTH:
+        return None
+    given = [v for k, v in model.values.items() if dimensions.get(k) == LENGTH]
+    lengths = [float(v) for v in (*given, start.xreplace(dict(model.values))) if v.is_number and v.is_real]
+    return length_step(lengths)
+
+
+def _largest_frictions(model: Model, supports, values: dict, rate_squared: sp.Expr, table,
+                       first: dict[str, FirstZero] | None) -> dict[str, LargestFriction] | None:
+    """With every parameter given a value: each rolling contact's least μ at its largest
+    over the motion reached from rest, and where (largest.py), from its push's first
+    zero or the motion's turning back (``first``)."""
+    if not first or missing_values(model):
+        return None
+    given = dict(model.values)
+    q, name = model.q[0], model.coordinate_names()[0]
+    start, v2 = float(table[q].xreplace(given)), rate_squared.xreplace(given)
+    found = {}
+    for s in supports:
+        own = str(s.components[0].symbol)
+        if s.how is not How.ROLLING or own not in first:
+            continue
+        push, friction = (values[c.symbol].xreplace(given) for c in s.components[:2])
+        largest = largest_friction(push, friction, own, first, v2, q, start, name)
+        if largest is not None:
+            found[s.name] = largest
+    return found or None
 
 
 def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
@@ -208,7 +244,8 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
     answers = _replace(answers, rate_squared={name: model.to_time(e.rate_squared)}, along=by_support,
                        contact_lost=lost, least_friction=mu,
                        lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()},
-                       first_zero=_first_zeros(model, supports, values, e.rate_squared, table))
+                       first_zero=(first := _first_zeros(model, supports, values, e.rate_squared, table)),
+                       least_friction_over=_largest_frictions(model, supports, values, e.rate_squared, table, first))
     steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
     warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
                      f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "

@@ -14,10 +14,13 @@ N changes sign (a bracketing root finder, mpmath's Anderson–Björck); where q�
 negative first, the motion turns back at that point (q̇² = 0, refined the same way) and
 repeats between q₀ and it, so N never reaches zero.
 
-Only for an angle coordinate (a length has no natural span to step over), and only where
-the push holds at the release (N(q₀) > 0: ``holds`` says when it does not). A zero
-where N only touches 0 without changing sign between two steps (half a degree apart)
-is not seen: it is a double root, not a generic loss of contact.
+A length has no turn to step over: it takes, in its place, a whole turn of a wheel as
+large as the scene's largest length L (2π L in STEPS steps, ``length_step``: a hoop of
+radius 0.3 m held by a spring of natural length 0.5 m steps 4.4 mm at a time over 3.1 m),
+and a motion that meets neither a zero nor a turning back within it has no answer here.
+Only where the push holds at the release (N(q₀) > 0: ``holds`` says when it does not). A
+zero where N only touches 0 without changing sign between two steps (half a degree, or
+2π L/720, apart) is not seen: it is a double root, not a generic loss of contact.
 """
 
 from __future__ import annotations
@@ -40,10 +43,14 @@ class FirstZero:
     turns_at: dict[str, float] | None
 
 
+ANGLE_STEP = 2 * math.pi / STEPS
+
+
 def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, name: str,
-               values: dict) -> FirstZero | None:
+               values: dict, step: float = ANGLE_STEP) -> FirstZero | None:
     """``push`` N(q) and ``rate_squared`` q̇²(q) (plain symbols, the parameters' ``values``
-    put in here) from rest at q = ``start``; None where there is no answer to give (the
+    put in here) from rest at q = ``start``, in STEPS steps of ``step`` (half a degree for
+    an angle; for a length, ``length_step``); None where there is no answer to give (the
     push does not hold at the release, a value is not a number, or a motion that is not
     periodic in q goes a whole turn without either)."""
     push, rate_squared = push.xreplace(values), rate_squared.xreplace(values)
@@ -54,7 +61,7 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
         return None
     if direction == 0:
         return FirstZero(None, None)  # released at an equilibrium: it stays there
-    step = math.copysign(2 * math.pi / STEPS, direction)
+    step = math.copysign(step, direction)
     before = q0
     for i in range(1, STEPS + 1):
         x = q0 + i * step
@@ -72,6 +79,14 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
             return _lost(N, before, x, name)
         before = x
     return FirstZero(None, None) if _periodic(push, q) and _periodic(rate_squared, q) else None
+
+
+def length_step(lengths: list[float]) -> float | None:
+    """The step along a length coordinate: a whole turn of a wheel as large as the
+    scene's largest length L (2π L over STEPS steps), the span a length has in place of
+    an angle's turn; None without a length to scale by."""
+    largest = max((abs(x) for x in lengths), default=0.0)
+    return 2 * math.pi * largest / STEPS if largest > 0 else None
 
 
 def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, values: dict) -> bool | None:

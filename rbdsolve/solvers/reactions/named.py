@@ -32,6 +32,7 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
     out += [Named(("there", name, "components", c), sp.Symbol(c), "Where the motion gets to")
             for name, r in (getattr(answers, "there", None) or {}).items() for c in r.components]
     out += _first_zeros(getattr(answers, "first_zero", None) or {}, model)
+    out += _largest(getattr(answers, "least_friction_over", None) or {}, model)
     if hasattr(answers, "residual"):
         out.append(Named(("residual",), sp.Symbol("residual"), accuracy=True))
     return tuple(out + criticals(("critical",), getattr(answers, "critical", ())))
@@ -48,4 +49,18 @@ def _first_zeros(found: dict, model: Model) -> list[Named]:
         elif where.turns_at:
             out.append(Named(("first_zero", name, "turns_at"), state(model, where.turns_at),
                              f"Along the motion, {name} > 0 throughout: the motion turns back at"))
+    return out
+
+
+def _largest(found: dict, model: Model) -> list[Named]:
+    """Each rolling contact's least μ at its largest over the motion, and where, under a
+    heading that says where the motion reached ends (the first zero's line above gives
+    the place)."""
+    out = []
+    for contact, largest in found.items():
+        ends = (f"up to where {largest.lost} = 0" if largest.lost else
+                "up to where it turns back" if largest.until else "over a whole turn")
+        group = f"Over the motion ({ends}), the least friction at its largest, and where"
+        out += [Named(("least_friction_over", contact, "mu"), sp.Symbol(f"mu_{contact}"), group, Meaning.LEAST),
+                Named(("least_friction_over", contact, "at"), state(model, largest.at), group)]
     return out

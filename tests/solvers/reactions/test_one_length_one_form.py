@@ -17,23 +17,9 @@ import random
 import sympy as sp
 
 import rbdsolve
+from conftest import HOOP_ON_INCLINE
 
-SCENE = """\
-title: a hoop on an incline held by a spring
-parameters: {m: mass, r: radius, k: stiffness, l0: natural length, alpha: angle, g: gravity}
-coordinates: [x]
-gravity: [0, -g]
-points:
-  W: "r*[-sin(alpha), cos(alpha)] + [0, l0]"
-bodies:
-  hoop: {shape: ring, mass: m, radius: r}
-contacts:
-  C: {body: hoop, rolls_on: {line: {through: [0, 0], angle: alpha}}, along: x}
-springs:
-  s: {stiffness: k, between: [hoop, W], natural_length: l0}
-questions:
-  - reactions: {forces: [C], from_rest: {x: 0}}
-"""
+SCENE = HOOP_ON_INCLINE
 
 
 def _by_hand():
