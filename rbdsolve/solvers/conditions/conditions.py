@@ -192,12 +192,14 @@ def by_size(f: sp.Expr, model) -> tuple[Partition, dict[sp.Symbol, sp.Expr]] | N
     """f's sign piece by piece in the size |p| of a parameter of either sign that f
     holds only in even powers (a couple C of either sign on a plate hung from a corner:
     1 − 2 C²/(a² g² m²) ≥ 0 is |C| ≤ C_c, C_c = √2 a g m/2), where no positive parameter
-    splits it: f(p) = f(|p|), so |p| is split as a positive parameter of p's name, and
-    the pieces' conditions read |p| once that name is put back as Abs(p) (the second
-    value returned). None where no such parameter splits f."""
+    splits it (an angle of either sign is not one: ``partition`` splits it over its turn):
+    f(p) = f(|p|), so |p| is split as a positive parameter of p's name, and the pieces'
+    conditions read |p| once that name is put back as Abs(p) (the second value
+    returned). None where no such parameter splits f."""
     order = [model.symbols.parameters[x.name] for x in model.problem.parameters]
+    angles = angle_parameters(f)  # an angle of either sign is split in (−π, π) by ``partition`` already
     for p in order:
-        if p not in f.free_symbols or p.is_positive or p.is_negative or not _even_in(f, p):
+        if p not in f.free_symbols or p.is_positive or p.is_negative or p in angles or not _even_in(f, p):
             continue
         size = sp.Symbol(p.name, positive=True)
         found, _ = _split_in(model, f.xreplace({p: size}), size, {})
