@@ -45,7 +45,9 @@ class Pulley:
     """A string wound on the round ``edge`` of body ``drum`` (or at ``radius`` about its
     centre) leaves it along the constant ``direction`` to a light pulley at ``over``,
     and hangs from there along ``down`` with the contact's body at its end, ``length``
-    below ``over`` at the reference configuration (model/constraints/strings.py). Without a pulley
+    below ``over`` at the reference configuration (model/constraints/strings.py); a pulley
+    with mass is the body ``wheel``, centred on a fixed axle and turned by the string
+    without slipping (its angle the string's travel over its rim's radius). Without a pulley
     (``over`` None) it runs straight along ``direction`` from the drum's ``side`` to the
     body, ``length`` from the rim at the reference."""
 
@@ -59,6 +61,8 @@ class Pulley:
     loc: Location
     side: str | None = None  # without a pulley: left, right, above or below the drum's centre, as drawn
     part: str | None = None  # the drum's part the string is wound on (None: its only part)
+    wheel: str | None = None  # the pulley at ``over`` has mass: this body, turned by the string without slipping
+    wheel_loc: Location | None = None
 
 
 @dataclass(frozen=True)

@@ -40,7 +40,7 @@ from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.constraints.edges import Curved, Flat, NotInPlane, body_part, part_edge
 from rbdsolve.model.constraints.lengths import contact_lengths
 from rbdsolve.model.state import t, user_function
-from rbdsolve.model.constraints.strings import hang
+from rbdsolve.model.constraints.strings import hang, wheel_turn
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.sections.contacts import NOT_PLANAR
@@ -124,10 +124,14 @@ def place_contacts(problem: Problem, names: Symbols) -> tuple[Problem, tuple[Rol
         lengths = tuple(implied(contact, v, sp.Integer(0), names, why) for v, why in contact_lengths(contact, problem, names))
         body = bodies[contact.body]
         if contact.pulley is not None:  # the drum is placed already (problem/sections/contacts.py checks the order)
-            origin, rolling = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]), names,
-                                       values)
+            origin, rolling, paid = _hanging(contact, placed.get(contact.pulley.drum, bodies[contact.pulley.drum]),
+                                             names, values)
             placed[body.name] = replace(body, at=as_expr(origin, reverse, names, contact))
             rollings.append(replace(rolling, requires=lengths + rolling.requires))
+            if contact.pulley.wheel is not None:
+                wheel = placed.get(contact.pulley.wheel, bodies[contact.pulley.wheel])
+                turn = _wheel_angle(contact, wheel, paid, names, values)
+                placed[wheel.name] = replace(wheel, angle=as_expr(turn, reverse, names, contact))
             continue
         under = placed.get(contact.surface.body, bodies.get(contact.surface.body))  # the body rolled on, if any
         frame = _frame(contact, under, names)
@@ -164,12 +168,23 @@ def _own_coordinate(c: Contact, q: sp.Symbol, s: _Surface, sigma, frame: _Frame 
                          "give the contact a coordinate of its own", c.loc)
 
 
-def _hanging(c: Contact, drum: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, Rolling]:
-    """A body on a string from a drum over a pulley, or straight from it (model/constraints/strings.py)."""
+def _hanging(c: Contact, drum: Body, names: Symbols, values: dict) -> tuple[sp.Matrix, Rolling, sp.Expr]:
+    """A body on a string from a drum over a pulley, or straight from it
+    (model/constraints/strings.py), and ℓ, the string's travel, in the coordinates."""
     e = _geometry(c, drum, c.pulley.part, names, c.edge, names.scalar(c.radius) if c.radius is not None else None)
-    origin, (point, lhs, rhs, dependent, integrated) = hang(c, drum, e, names, values)
+    origin, (point, lhs, rhs, dependent, integrated), paid = hang(c, drum, e, names, values)
     return origin, Rolling(c.name, c.body, point.applyfunc(tidy), lhs, rhs, dependent, integrated, False, c,
-                           requires=_wound(c, drum, names))
+                           requires=_wound(c, drum, names)), paid
+
+
+def _wheel_angle(c: Contact, wheel: Body, paid: sp.Expr, names: Symbols, values: dict) -> sp.Expr:
+    """The angle of the pulley with mass the string turns (``wheel_turn``), from its rim;
+    its centre does not move (its axle is fixed)."""
+    if any(names.vector(wheel.at).has(q) for q in names.state.q):
+        raise InputError(f"contact '{c.name}': pulley '{wheel.name}' turns on a fixed axle, but its centre 'at' "
+                         "moves with the coordinates", c.pulley.wheel_loc)
+    rim = _geometry(c, wheel, None, names, "rim")
+    return wheel_turn(c, rim.radius, paid, names, values)
 
 
 def _geometry(c: Contact, body: Body, part: str | None, names: Symbols, edge_name: str, radius=None):

@@ -1,4 +1,4 @@
-"""A body hanging on a string from a drum, over a light pulley.
+"""A body hanging on a string from a drum, over a pulley (light, or with mass).
 
 The string is wound on the drum's round edge (centre E, radius ρ) and leaves it at the
 tangent point C along the constant unit direction d, straight to the pulley at P, over
@@ -14,6 +14,12 @@ string off its top: v_C = 2ẋ), so ℓ = Σ aᵢ qᵢ from the reference, and t
 P + (ℓ₀ + ℓ) h. C is the side of the drum from which the line along d passes through P;
 the string keeps its direction only if (P − C)·n stays 0 (n = e_z × d) as the scene
 moves, which is checked: a string whose straight part would turn is refused.
+
+A pulley with mass (a body of its own on a fixed axle at its centre) is turned by the
+string without slipping: its rim moves at the string's speed, so its angle is ψ = ±ℓ/R
+(R its rim's radius, the sign the way the string bends over it, ``wheel_turn``), and it
+adds ½ J ψ̇² to T; the string's geometry is the light pulley's (P the point where it
+reaches the rim, the body hanging along h from P).
 
 Without a pulley the body hangs straight from the drum's rim along d, from the tangent
 point C on the side the file names; C moves with the drum's centre (not with its
@@ -39,7 +45,7 @@ _Z = sp.Matrix([0, 0, 1])
 
 def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None = None):
     """(the hanging body's origin, the record for the report: the point C, ℓ̇ = v_C·d
-    and ℓ as the drum's coordinates give it)."""
+    and ℓ as the drum's coordinates give it, and ℓ in the coordinates)."""
     p = c.pulley
     origin = _vector3(names.vector(drum.at)) if drum.at is not None else sp.zeros(3, 1)
     phi = names.scalar(drum.angle) if drum.angle is not None else sp.Integer(0)
@@ -67,10 +73,33 @@ def hang(c: Contact, drum: Body, e: Curved, names: Symbols, values: dict | None 
     record = (C, sp.Derivative(lengthening, t), state.to_time(rate), lengthening, state.to_time(paid))
     if p.over is None:
         start = names.scalar(p.length) if p.length is not None else sp.Integer(0)
-        return C + (start + paid) * d, record
-    down = _unit(names.vector(p.down)) if p.down is not None else sp.Matrix([0, -1, 0])
+        return C + (start + paid) * d, record, paid
+    down = _down(p, names)
     start = names.scalar(p.length) if p.length is not None else _distance(over, C, names)
-    return over + (start + paid) * down, record
+    return over + (start + paid) * down, record, paid
+
+
+def wheel_turn(c: Contact, radius: sp.Expr, paid: sp.Expr, names: Symbols, values: dict) -> sp.Expr:
+    """The angle of a pulley with mass that the string turns without slipping: its rim
+    moves with the string, ℓ̇ = R ψ̇ in magnitude, turning the way the string bends
+    over it, from d (off the drum) towards h (down to the body): ψ = sign((d × h)_z) ℓ/R
+    (a string off a cylinder's top to the right, then down: clockwise, ψ = −ℓ/R)."""
+    d = _unit(names.vector(c.pulley.direction))
+    bend = tidy(d.cross(_down(c.pulley, names))[2])
+    if simplifies_to_zero(bend):
+        raise InputError(f"contact '{c.name}': the string does not bend over pulley '{c.pulley.wheel}' (it leaves the "
+                         f"drum along {sp.sstr(list(d[:2]))} and runs on along the same line): give 'down' across "
+                         "'direction'", c.pulley.wheel_loc)
+    sign = tidied_sign(bend, values)
+    if not sign.is_number or sign == 0:
+        raise InputError(f"contact '{c.name}': which way pulley '{c.pulley.wheel}' turns depends on the sign of "
+                         f"{sp.sstr(bend)}: give the parameters in it values", c.pulley.wheel_loc)
+    return sign * paid / radius
+
+
+def _down(p, names: Symbols) -> sp.Matrix:
+    """h, the way the string runs after the pulley (straight down by default)."""
+    return _unit(names.vector(p.down)) if p.down is not None else sp.Matrix([0, -1, 0])
 
 
 _SIDES = {"below": (0, -1, 0), "above": (0, 1, 0), "left": (-1, 0, 0), "right": (1, 0, 0)}

@@ -86,6 +86,18 @@ def _free_force_steps(model: Model) -> list[st.Step]:
                                       for n, Q in zip(model.coordinate_names(), free_forces(model))])]
 
 
+def _wheel_steps(model: Model, c) -> list[st.Step]:
+    """A pulley with mass turns with the string (its rim does not slip): its angle,
+    ψ = ±l/R (model/constraints/strings.py, ``wheel_turn``)."""
+    wheel = c.source.pulley.wheel
+    if wheel is None:
+        return []
+    spec = next(b for b in model.problem.bodies if b.name == wheel)
+    turn = model.to_time(model.symbols.scalar(spec.angle))
+    return [st.equation(f"Pulley {wheel} turns with the string, its rim not slipping: its radius times ψ̇ is ±l̇, "
+                        "the sign the way the string bends over it ⇒", Relation(sp.Symbol(f"psi_{wheel}"), turn))]
+
+
 def rolling_steps(model: Model) -> list[st.Step]:
     """Each contact's rolling condition, as a worked solution writes it: the contact
     point's velocity is zero (or the moving surface's there), which relates the rates,
@@ -95,12 +107,13 @@ def rolling_steps(model: Model) -> list[st.Step]:
         source = c.source
         if source.pulley is not None:
             pulley = source.pulley
-            how = "over a light pulley" if pulley.over is not None else f"straight from its {pulley.side} side"
+            how = (f"over pulley '{pulley.wheel}', which it turns" if pulley.wheel is not None else
+                   "over a light pulley" if pulley.over is not None else f"straight from its {pulley.side} side")
             out.append(st.equation(f"String at {c.name} ({pulley.drum} to {c.body}, {how}): "
                                    f"inextensible, so the hanging part lengthens as fast as the string leaves "
                                    f"{pulley.drum} at {c.name} (v_{c.name}·d, along the string) ⇒",
                                    Relation(c.lhs, c.rhs), Relation(c.dependent, c.integrated, lead="⇒")))
-            out += _implied_notes(c)
+            out += _wheel_steps(model, c) + _implied_notes(c)
             continue
         surface = source.surface
         on = ("its string" if source.string else _edge(surface, model) if surface.body else f"the {surface.kind.value}")

@@ -137,8 +137,8 @@ class ContactReader:
         if word.text not in bodies:
             raise InputError(f"no body '{word.text}'{did_you_mean(word.text, list(bodies))}", word.loc)
         hang = expect_mapping(spec.get("hangs_from"), "a string to a drum: {drum, side} or {drum, direction, over}")
-        check_keys(hang, ("drum",), ("over", "direction", "side", "radius", "edge", "down", "length", "part"),
-                   "a hanging string")
+        check_keys(hang, ("drum",), ("over", "direction", "side", "radius", "edge", "down", "length", "part",
+                                     "pulley"), "a hanging string")
         drum = _body(hang.get("drum"), bodies)
         if drum.name == word.text:
             raise InputError(f"{what}: body '{drum.name}' cannot hang from itself", hang.get("drum").loc)
@@ -148,8 +148,10 @@ class ContactReader:
         length = self.reading.optional_constant(hang.get("length"), "the hanging length at the reference")
         over, side, down = _hanging_keys(hang)
         direction = self.direction(hang) if over is not None or hang.get("direction") is not None else _down(hang)
+        wheel = _wheel(hang, bodies, drum.name, word.text)
         pulley = Pulley(drum.name, edge, radius, self.place(over, hang.loc) if over is not None else None, direction,
-                        self.reading.axis(down) if down is not None else None, length, hang.loc, side, part.name)
+                        self.reading.axis(down) if down is not None else None, length, hang.loc, side, part.name,
+                        wheel.name if wheel else None, hang.get("pulley").loc if wheel else None)
         line = Surface(SurfaceKind.LINE, pulley.over, pulley.direction, None, False, hang.loc)
         return Contact(name, word.text, edge, line, None, None, radius, True, spec.loc, pulley)
 
@@ -285,6 +287,32 @@ def _hanging_keys(hang: Map) -> tuple[Node | None, str | None, Node | None]:
         raise InputError("'down' is the way the string runs after a pulley; straight from the drum it runs along "
                          "'direction' (default [0, -1])", down.loc)
     return None, word, None
+
+
+def _wheel(hang: Map, bodies: dict[str, Body], drum: str, hanging: str) -> Body | None:
+    """The pulley with mass a string runs over (``pulley: NAME``, beside ``over``): a
+    round body of one shape (a disk, ring or cylinder) on a fixed axle, which the string
+    turns (so it has no 'angle' of its own), neither the drum nor the hanging body."""
+    node = hang.get("pulley")
+    if node is None:
+        return None
+    if hang.get("over") is None:
+        raise InputError("a pulley with mass ('pulley') is where the string turns down: give 'over: P', the point "
+                         "of its rim the string reaches, with 'direction'", node.loc)
+    body = _body(node, bodies)
+    if body.name in (drum, hanging):
+        raise InputError(f"body '{body.name}' is the {'drum' if body.name == drum else 'hanging body'}; the pulley "
+                         "is a body of its own", node.loc)
+    shape = body.parts[0].shape if len(body.parts) == 1 else None
+    if shape is None or not shape.edges or shape.edges[0] != "rim":
+        raise InputError(f"body '{body.name}' is not a round body of one shape: a pulley the string turns is a "
+                         "disk, ring or cylinder (its rim's radius turns it)", node.loc)
+    if body.angle is not None or body.orientation:
+        raise InputError(f"body '{body.name}' is turned by the string over it, which gives its angle: remove its "
+                         "'angle'", (body.angle.loc if body.angle is not None else node.loc))
+    if body.at is None:
+        raise InputError(f"body '{body.name}' turns on a fixed axle: give its centre, 'at: [x, y]'", node.loc)
+    return body
 
 
 def _down(where: Map) -> ex.Expr:

@@ -133,6 +133,10 @@ def _hanging(model: Model, rolling) -> Held:
     −h, h the way the hanging part runs) at the body's origin, where the string is tied,
     and the drum along d, the way the string leaves it, at the tangent point C."""
     p = rolling.source.pulley
+    if p.wheel is not None:
+        raise UnsolvedError(f"string '{rolling.name}' runs over pulley '{p.wheel}', which has mass: the tensions on "
+                            "its two sides differ by what turns it, and the forces are answered for a light pulley "
+                            "only (eom, energy, equilibria and modes take the pulley's mass)")
     names = model.symbols
     hanging = body(model, rolling.body)
     d = _unit(names.vector(p.direction))

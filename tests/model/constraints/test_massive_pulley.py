@@ -1,0 +1,108 @@
+"""A string from a rolling drum over a pulley with mass (``hangs_from: {…, over: P,
+pulley: W}``): a new user's cylinder on a table, its string off the top over a disk
+pulley to a hanging block, could be written only by turning the pulley by hand
+(``angle: -2*x/R``, a workaround nobody would find), and its reactions were refused with
+advice about a table the block does not touch.
+
+By hand (the string off a drum's top moves at twice its centre's speed, and turns the
+pulley of radius R at that speed over R; T = ½ m v² + ½ J ω² per body):
+
+- on a table, a solid cylinder (M₂), a disk pulley (M), a block (m):
+  T = ¾ M₂ ẋ² + ½ (½ M R²)(2ẋ/R)² + ½ m (2ẋ)² = (¾ M₂ + M + 2m) ẋ², V = −2 m g x,
+  so ẍ = 2 m g/(3/2 M₂ + 2M + 4m) = 4 g m/(3 M₂ + 4 M + 8 m);
+- up a 30° incline, the string off the cylinder's top parallel to the slope, over a
+  ring pulley (J = M R²): T = (¾ M₂ + 2M + 2m) ṡ², V = M₂ g s sin β − 2 m g s, so
+  s̈ = (2 m g − M₂ g sin β)/(3/2 M₂ + 4M + 4m).
+"""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+import rbdsolve
+from rbdsolve.errors import InputError
+
+TABLE = """\
+parameters: {M2: mass, r: radius, M: mass, R: radius, m: mass, d: distance, g: gravity}
+coordinates: [x]
+gravity: [0, -g]
+points:
+  P: [d, 2*r]
+bodies:
+  cylinder: {shape: cylinder, mass: M2, radius: r, height: 1}
+  wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}
+  block: {shape: particle, mass: m}
+contacts:
+  C: {body: cylinder, rolls_on: floor, along: x}
+  S: {body: block, hangs_from: {drum: cylinder, direction: [1, 0], over: P, pulley: wheel}}
+questions: [eom]
+"""
+
+INCLINE = """\
+parameters: {M2: mass, r: radius, M: mass, R: radius, m: mass, L: distance, beta: incline, g: gravity}
+values: {beta: 30 deg}
+coordinates: [s]
+gravity: [0, -g]
+points:
+  P: "2*r*[-sin(beta), cos(beta)] + L*[cos(beta), sin(beta)]"
+bodies:
+  cylinder: {shape: cylinder, mass: M2, radius: r, height: 1}
+  wheel: {shape: ring, mass: M, radius: R, at: "P - R*[-sin(beta), cos(beta)]"}
+  block: {shape: particle, mass: m}
+contacts:
+  C: {body: cylinder, rolls_on: {line: {through: [0, 0], angle: beta}}, along: s}
+  S: {body: block, hangs_from: {drum: cylinder, direction: "[cos(beta), sin(beta)]", over: P, pulley: wheel}}
+questions: [eom]
+"""
+
+
+def _acceleration(tmp_path, text: str) -> sp.Expr:
+    path = tmp_path / "scene.yaml"
+    path.write_text(text)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    (found,) = solution.answers.accelerations.values()
+    return found
+
+
+def test_a_cylinder_on_a_table_pulls_a_block_over_a_disk_pulley(tmp_path) -> None:
+    M2, M, m, g = sp.symbols("M2 M m g", positive=True)
+    assert sp.simplify(_acceleration(tmp_path, TABLE) - 4 * g * m / (3 * M2 + 4 * M + 8 * m)) == 0
+
+
+def test_a_cylinder_up_an_incline_in_degrees_over_a_ring_pulley(tmp_path) -> None:
+    """β stays a symbol in the answer (its 30° only in the numbers, and in which way the
+    pulley turns: the string bends over it clockwise, cos β > 0)."""
+    M2, M, m, g, beta = sp.symbols("M2 M m g beta", positive=True)
+    by_hand = (2 * m * g - M2 * g * sp.sin(beta)) / (sp.Rational(3, 2) * M2 + 4 * M + 4 * m)
+    assert sp.simplify(_acceleration(tmp_path, INCLINE) - by_hand) == 0
+
+
+def test_the_forces_are_refused_saying_why(tmp_path) -> None:
+    """The tensions on the two sides of a pulley with mass differ: not answered, and said."""
+    path = tmp_path / "scene.yaml"
+    path.write_text(TABLE.replace("questions: [eom]", "questions: [{reactions: {forces: [C, S]}}]"))
+    (solution,) = rbdsolve.solve(path, budget=1200.0)
+    assert solution.answers is None and "over pulley 'wheel', which has mass" in solution.error
+
+
+@pytest.mark.parametrize("change, said", [
+    ("over: P, pulley: wheel", "give 'over: P'", ),
+    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "remove its 'angle'"),
+    ("pulley: wheel}", "is the drum"),
+    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "not a round body"),
+    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "fixed axle"),
+])
+def test_a_pulley_that_cannot_be_turned_by_the_string_is_refused_at_its_key(tmp_path, change, said) -> None:
+    wrong = {
+        "give 'over: P'": TABLE.replace("over: P, pulley: wheel", "pulley: wheel, side: right"),
+        "remove its 'angle'": TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d, 2*r - R]", angle: x}'),
+        "is the drum": TABLE.replace("pulley: wheel}", "pulley: cylinder}"),
+        "not a round body": TABLE.replace("shape: disk, mass: M, radius: R,", "shape: rod, mass: M, length: R,"),
+        "fixed axle": TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d + x, 2*r - R]"}'),
+    }[said]
+    assert change in TABLE
+    path = tmp_path / "scene.yaml"
+    path.write_text(wrong)
+    with pytest.raises(InputError, match=said):
+        rbdsolve.solve(path, budget=1200.0)
