@@ -24,7 +24,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.applied import applied
+from rbdsolve.problem.options import Support, SupportKind
 from rbdsolve.solvers.reactions.supports import Held, body, contact_support, generic_point, planar
+from rbdsolve.solvers.reactions.supports import held as held_support
 
 _Z = sp.Matrix([0, 0, 1])
 
@@ -51,8 +53,23 @@ def with_strings(model: Model, supports: tuple[Held, ...], loc) -> tuple[Held, .
         more = [c for c in model.contacts if c.source.string and c.name not in named
                 and (c.body in held or (c.source.pulley is not None and c.source.pulley.drum in held))]
         if not more:
-            return tuple(out)
+            return tuple(out) + _axles(model, tuple(out), loc)
         out += [replace(contact_support(model, c), loc=loc, added=True) for c in more]
+
+
+def _axles(model: Model, supports: tuple[Held, ...], loc) -> tuple[Held, ...]:
+    """The axle of each pulley with mass that a string among the supports runs over,
+    where no support asked holds that pulley: its balance gives the tension off the drum
+    (its moment: R (T₁ − T₂) = J ψ̈), so it joins the free body diagrams."""
+    held, out = set(bodies_held(supports)), []
+    for s in supports:
+        contact = next((c for c in model.contacts if c.name == s.name and c.source.pulley is not None), None)
+        wheel = contact.source.pulley.wheel if contact is not None else None
+        if wheel is not None and wheel not in held:
+            axle = Support(SupportKind.POINT, wheel, wheel, None, None, loc or contact.source.pulley.wheel_loc)
+            out.append(replace(held_support(model, axle), added=True))
+            held.add(wheel)
+    return tuple(out)
 
 
 def bodies_held(supports: tuple[Held, ...]) -> list[str]:

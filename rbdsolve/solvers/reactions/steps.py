@@ -32,13 +32,17 @@ def _described(s: Held, model: Model) -> str:
     for c in s.components:
         if c.moment:
             parts.append(f"a moment {c.symbol} about e_z")
-        else:
+        elif any(x != 0 for x in c.direction) or not c.also:
             parts.append(f"{c.symbol} along {_vector(model.readable(c.direction))}")
+        else:  # the part of a string off its drum, over a pulley with mass: it acts on the drum and the pulley only
+            parts.append(f"{c.symbol} off the drum (not on body '{s.on}')")
         parts += [f"and {c.symbol} on body '{other}' at {_vector(model.readable(point))} along "
                   f"{_vector(model.readable(direction))}" for other, point, direction in c.also]
     holder = f"body '{s.by}'" if s.by else "the string" if s.how is How.STRING else "the support"
     kind = s.how.value.replace("_", " ") + (" (a joint)" if s.by else "")
-    added = "; not asked, but it pulls a body asked about, so its tension is found with the rest" if s.added else ""
+    added = ("" if not s.added else "; not asked, but it pulls a body asked about, so its tension is found with the "
+             "rest" if s.how is How.STRING else "; not asked, but a string turns the pulley on it, so its force is "
+             "found with the rest")
     return f"at {s.name} ({kind}{added}), {holder} on body '{s.on}': " + ", ".join(parts)
 
 

@@ -133,17 +133,38 @@ def _hanging(model: Model, rolling) -> Held:
     −h, h the way the hanging part runs) at the body's origin, where the string is tied,
     and the drum along d, the way the string leaves it, at the tangent point C."""
     p = rolling.source.pulley
-    if p.wheel is not None:
-        raise UnsolvedError(f"string '{rolling.name}' runs over pulley '{p.wheel}', which has mass: the tensions on "
-                            "its two sides differ by what turns it, and the forces are answered for a light pulley "
-                            "only (eom, energy, equilibria and modes take the pulley's mass)")
     names = model.symbols
     hanging = body(model, rolling.body)
     d = _unit(names.vector(p.direction))
     h = _unit(names.vector(p.down)) if p.over is not None and p.down is not None else (
         sp.Matrix([0, -1, 0]) if p.over is not None else d)
+    at = names.vector(hanging.source.at)
+    if p.wheel is not None:
+        return Held(rolling.name, at, hanging.name, None, _over_wheel(model, rolling, d, h), How.STRING)
     tension = Component(sp.Symbol(f"T_{rolling.name}"), -h, one_sided=True, also=((p.drum, rolling.point, d),))
-    return Held(rolling.name, names.vector(hanging.source.at), hanging.name, None, (tension,), How.STRING)
+    return Held(rolling.name, at, hanging.name, None, (tension,), How.STRING)
+
+
+def _over_wheel(model: Model, rolling, d: sp.Matrix, h: sp.Matrix) -> tuple[Component, Component]:
+    """A string over a pulley with mass W (centre c, rim radius R, turned the way the
+    string bends, s = sign((d × h)_z)) has a tension on each side, different by what
+    turns W: T_S1 off the drum, on the drum at C along d and on W where the string
+    reaches its rim, E = c − s R e_z × d, along −d; T_S2 down to the body, on the body up
+    the string (−h) and on W where the string leaves it, X = c − s R e_z × h, along h.
+    (T_S1 acts on the hanging body with no direction: the body's own balance holds only T_S2.)"""
+    p = rolling.source.pulley
+    wheel = body(model, p.wheel)
+    c = wheel.position
+    spec = next(b for b in model.problem.bodies if b.name == p.wheel)
+    from rbdsolve.model.constraints.edges import body_part, part_edge  # a scene with a pulley with mass only
+
+    R = part_edge(body_part(spec, None), "rim", model.symbols).radius
+    s = tidied_sign(d.cross(h)[2], model.decided_by)
+    entry, exit_ = c - s * R * _Z.cross(d), c - s * R * _Z.cross(h)
+    off = Component(sp.Symbol(f"T_{rolling.name}1"), sp.zeros(3, 1), one_sided=True,
+                    also=((p.drum, rolling.point, d), (p.wheel, entry, -d)))
+    down = Component(sp.Symbol(f"T_{rolling.name}2"), -h, one_sided=True, also=((p.wheel, exit_, h),))
+    return down, off
 
 
 def _unit(v: sp.Matrix) -> sp.Matrix:

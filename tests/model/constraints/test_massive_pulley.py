@@ -2,7 +2,8 @@
 pulley: W}``): a new user's cylinder on a table, its string off the top over a disk
 pulley to a hanging block, could be written only by turning the pulley by hand
 (``angle: -2*x/R``, a workaround nobody would find), and its reactions were refused with
-advice about a table the block does not touch.
+advice about a table the block does not touch; now the forces have a tension on each
+side of the pulley.
 
 By hand (the string off a drum's top moves at twice its centre's speed, and turns the
 pulley of radius R at that speed over R; T = ½ m v² + ½ J ω² per body):
@@ -78,12 +79,23 @@ def test_a_cylinder_up_an_incline_in_degrees_over_a_ring_pulley(tmp_path) -> Non
     assert sp.simplify(_acceleration(tmp_path, INCLINE) - by_hand) == 0
 
 
-def test_the_forces_are_refused_saying_why(tmp_path) -> None:
-    """The tensions on the two sides of a pulley with mass differ: not answered, and said."""
+def test_the_tensions_on_the_two_sides_differ_by_what_turns_the_pulley(tmp_path) -> None:
+    """On the table, by hand with a = ẍ = 4 g m/(3 M₂ + 4 M + 8 m): the block, m (2a) =
+    m g − T₂; the pulley, J ψ̈ = R (T₁ − T₂) with ψ = −2x/R, so T₁ = T₂ − M a; the
+    cylinder, M₂ a = T₁ − F_C (F_C counted along e_z × n = −e_x). Its axle, not asked, is
+    found with them."""
     path = tmp_path / "scene.yaml"
     path.write_text(TABLE.replace("questions: [eom]", "questions: [{reactions: {forces: [C, S]}}]"))
     (solution,) = rbdsolve.solve(path, budget=1200.0)
-    assert solution.answers is None and "over pulley 'wheel', which has mass" in solution.error
+    M2, M, m, g = sp.symbols("M2 M m g", positive=True)
+    a = 4 * g * m / (3 * M2 + 4 * M + 8 * m)
+    T2 = m * (g - 2 * a)
+    T1 = T2 - M * a
+    found = solution.answers.reactions
+    tensions = found["S"].components
+    assert sp.simplify(tensions["T_S2"] - T2) == 0 and sp.simplify(tensions["T_S1"] - T1) == 0
+    assert sp.simplify(found["C"].components["F_C"] - (T1 - M2 * a)) == 0
+    assert sp.simplify(found["wheel"].components["R_wheely"] - (M * g + T2)) == 0  # its axle: weight and T₂ down
 
 
 @pytest.mark.parametrize("change, said", [
