@@ -240,10 +240,11 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
     out: dict[object, Dimension] = {model.symbols.parameters[n]: d for n, d in model.problem.dimensions
                                     if n in model.symbols.parameters}
     turned = _turned_by_bodies(model) | _turned_in_point_trees(model)
+    along = _along_contacts(model)
     for c, q in zip(model.problem.coordinates, model.q):
         # model.angles after the bodies' angles and the points' trees: it reads every
         # position (model/deferred.py), which a chain of n links writes out in n² terms
-        found = (LENGTH if c.kind is CoordinateKind.LENGTH
+        found = (LENGTH if c.kind is CoordinateKind.LENGTH or (c.kind is not CoordinateKind.ANGLE and c.name in along)
                  else NUMBER if c.kind is CoordinateKind.ANGLE or q in turned or q in model.angles
                  or _turns_in_points(q, model)
                  else None)
@@ -273,6 +274,16 @@ def _number_times(expr: sp.Expr, q: sp.Symbol) -> bool:
     """Is ``expr`` a number times q (plus what does not hold q)? ∂expr/∂q a nonzero number."""
     rate = sp.diff(expr, q)
     return rate != 0 and rate.is_number
+
+
+def _along_contacts(model: Model) -> set[str]:
+    """The coordinates a rolling contact measures ``along`` a straight line: a distance,
+    whatever turns by it (a disk of radius 1/10 written as a number turns by −10 x,
+    which read x as an angle: ẍ in rad/s²). Along a circle the travel is an angle."""
+    from rbdsolve.problem.surfaces import Measure, SurfaceKind
+
+    return {c.source.coordinate for c in model.contacts if c.source.coordinate is not None
+            and c.source.measure is Measure.ALONG and c.source.surface.kind is SurfaceKind.LINE}
 
 
 def _turned_by_bodies(model: Model) -> set:
