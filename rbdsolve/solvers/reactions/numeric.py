@@ -32,8 +32,10 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     if question.options.to:  # the energy integral along the way is the exact route's (exact.py, _there)
         raise UnsolvedError("the forces where the motion gets to ('to') are answered on the exact route only")
     supports, solved, rows = setup(question, model)
-    # sp.N, not sp.Float: a value may be exact and irrational (30 deg is pi/6)
-    point = {**{k: sp.N(v, 17) for k, v in model.values.items()}, **state_values(model, instant)}
+    # sp.N, not sp.Float: a value may be exact and irrational (30 deg is pi/6); the state may
+    # name a parameter (from_rest: {x: x0}), its value put in too
+    given = {k: sp.N(v, 17) for k, v in model.values.items()}
+    point = {**given, **{k: sp.N(v.xreplace(given), 17) for k, v in state_values(model, instant).items()}}
     qdd = {a: sp.N(v.xreplace(point), 17) for a, v in zip(model.qdd, solved)}
     unknowns = [c.symbol for s in supports for c in s.components]
     exprs = [sp.expand((r.lhs - r.rhs).xreplace(point).xreplace(qdd)) for r in rows]
