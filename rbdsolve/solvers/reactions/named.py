@@ -58,9 +58,9 @@ def _largest(found: dict, model: Model) -> list[Named]:
     the place)."""
     out = []
     for contact, largest in found.items():
-        ends = (f"up to where {largest.lost} = 0" if largest.lost else
-                "up to where it turns back" if largest.until else "over a whole turn")
-        group = f"Over the motion ({ends}), the least friction at its largest, and where"
+        ends = (f"to where {largest.lost} = 0" if largest.lost else
+                "to where it turns back" if largest.until else "over a whole turn")
+        group = f"Most friction needed over the motion ({ends}), at"
         out += [Named(("least_friction_over", contact, "mu"), sp.Symbol(f"mu_{contact}"), group, Meaning.LEAST),
                 Named(("least_friction_over", contact, "at"), state(model, largest.at), group)]
     return out
