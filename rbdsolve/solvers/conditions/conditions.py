@@ -188,15 +188,28 @@ def _split_in(model, f: sp.Expr, p: sp.Symbol, angles: dict) -> tuple[Partition 
     return _merged(p, allowed_ones), _merged(p, list(zip(pieces, signs)))
 
 
-def by_size(f: sp.Expr, model) -> tuple[Partition, dict[sp.Symbol, sp.Expr]] | None:
+def _signed_first(f: sp.Expr, model, first: sp.Symbol | None) -> sp.Symbol | None:
+    """The parameter of either sign a condition is to be written in before the positive
+    ones (``candidates``' first two rules): the one a question's ``for:`` names, else
+    the problem's only parameter without a value — a bead on a hoop turning at Ω of
+    either sense, every other value given: |Ω| ≥ Ω_c, not R ≥ R_c in the radius given."""
+    open_ = [model.symbols.parameters[p.name] for p in model.problem.parameters
+             if model.symbols.parameters[p.name] not in model.values]
+    chosen = first if first is not None else open_[0] if len(open_) == 1 else None
+    if chosen is None or chosen.is_positive or chosen not in f.free_symbols:
+        return None
+    return chosen
+
+
+def by_size(f: sp.Expr, model, only: sp.Symbol | None = None) -> tuple[Partition, dict[sp.Symbol, sp.Expr]] | None:
     """f's sign piece by piece in the size |p| of a parameter of either sign that f
     holds only in even powers (a couple C of either sign on a plate hung from a corner:
     1 − 2 C²/(a² g² m²) ≥ 0 is |C| ≤ C_c, C_c = √2 a g m/2), where no positive parameter
     splits it (an angle of either sign is not one: ``partition`` splits it over its turn):
     f(p) = f(|p|), so |p| is split as a positive parameter of p's name, and the pieces'
     conditions read |p| once that name is put back as Abs(p) (the second value
-    returned). None where no such parameter splits f."""
-    order = [model.symbols.parameters[x.name] for x in model.problem.parameters]
+    returned); ``only`` tries that parameter alone. None where no such parameter splits f."""
+    order = [only] if only is not None else [model.symbols.parameters[x.name] for x in model.problem.parameters]
     angles = angle_parameters(f)  # an angle of either sign is split in (−π, π) by ``partition`` already
     for p in order:
         if p not in f.free_symbols or p.is_positive or p.is_negative or p in angles or not _even_in(f, p):
@@ -359,8 +372,10 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
-        found, size, split = partition(condition, model, first), {}, condition
-        if found is None and (sized := by_size(condition, model)) is not None:
+        preferred = _signed_first(condition, model, first)
+        sized = by_size(condition, model, preferred) if preferred is not None else None
+        found, size, split = (None, {}, condition) if sized else (partition(condition, model, first), {}, condition)
+        if found is None and (sized := sized or by_size(condition, model)) is not None:
             found, size = sized  # split in |C|: the condition with C as its size, then |C| put back
             split = condition.xreplace({magnitude.args[0]: k for k, magnitude in size.items()})
         if found is None:

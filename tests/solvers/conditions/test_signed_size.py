@@ -50,3 +50,45 @@ def test_the_condition_holds_exactly_where_the_equilibrium_is_a_place(solution, 
     (e, _) = solution.answers.equilibria
     point = {s: v for s in e.exists_when.free_symbols for v in [{"m": m, "a": a, "g": g, "C": c}[s.name]]}
     assert bool(e.exists_when.xreplace(point)) is real
+
+
+HOOP = """\
+parameters:
+  m: mass
+  R: radius
+  g: gravity
+  Omega: {description: rate of the hoop, positive: false}
+coordinates: [theta]
+gravity: [0, -g, 0]
+frames:
+  hoop: {axis: y, rate: Omega}
+points:
+  P: R * [sin(theta)*cos(Omega*t), -cos(theta), -sin(theta)*sin(Omega*t)]
+bodies:
+  bead: {shape: particle, mass: m, at: P}
+questions:
+  - equilibria: {frame: hoop, for: Omega}
+"""
+
+
+def test_a_hoop_turning_either_way_holds_the_bead_off_its_axis_where_the_rate_is_fast_enough(tmp_path) -> None:
+    """A bead on a hoop (R) turning at Ω of either sense about its vertical diameter, a
+    new user's: by hand V' = −m g R cos θ − ½ m Ω² R² sin²θ, ∂V'/∂θ = m R sin θ (g − Ω² R
+    cos θ), so cos θ = g/(Ω² R) off the axis, a place only where g/(Ω² R) ≤ 1: |Ω| ≥
+    √(g/R), written in Ω as the question's ``for:`` asks (it read R ≥ g/Ω²). Sampled on
+    each side of ±Ω_c."""
+    path = tmp_path / "hoop.yaml"
+    path.write_text(HOOP)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)
+    R, g = sp.symbols("R g", positive=True)
+    Omega = sp.Symbol("Omega", real=True)
+    off_axis = [e for e in solution.answers.equilibria if e.exists_when is not sp.true]
+    assert len(off_axis) == 2
+    for e in off_axis:
+        c = e.exists_when
+        assert isinstance(c, sp.GreaterThan) and c.lhs == sp.Abs(Omega)
+        assert sp.simplify(c.rhs - sp.sqrt(g) / sp.sqrt(R)) == 0
+        for factor in (-1.01, -0.99, 0.99, 1.01):
+            w = factor * math.sqrt(9.81 / 0.5)
+            point = {s: {"R": 0.5, "g": 9.81, "Omega": w}[s.name] for s in e.exists_when.free_symbols}
+            assert bool(e.exists_when.xreplace(point)) is (9.81 / (w * w * 0.5) <= 1)
