@@ -183,14 +183,22 @@ def repeating(model: Model) -> frozenset:
 def _repeats(model: Model, q: sp.Symbol) -> str:
     """The warning that equilibria in q repeat every 2π, and where a contact allows them."""
     name, zero = unicode_name(q.name), unicode_name(f"{q.name}_0")
-    why = (f"V is 2π-periodic in {name} though the scene is not ({name} also enters the positions outside "
-           f"sin and cos, as a rolling body's travel does): ")
+    why = f"∂V/∂{name} is 2π-periodic in {name} though the scene is not ({_not_repeating(model, q, name)}): "
     held = contact_span.held_for(model, q)
     if held:
         return why + (f"each equilibrium {zero} would repeat at {zero} + 2kπ, but the contact holds only for "
                       f"{held}; those in (−π, π] where it holds are listed")
     return why + (f"each equilibrium {zero} repeats at {zero} + 2kπ, k an integer, the body moved on by whole "
                   "turns; those in (−π, π] are listed")
+
+
+def _not_repeating(model: Model, q: sp.Symbol, name: str) -> str:
+    """Why a coordinate along which ∂V/∂q repeats is no angle of the scene: declared so,
+    or q bare in the positions (a rolling body's travel)."""
+    declared = next(c for c in model.problem.coordinates if c.name == q.name)
+    if declared.periodic is False:
+        return f"{name} is declared 'periodic: false'"
+    return f"{name} also enters the positions outside sin and cos, as a rolling body's travel does"
 
 
 def _vanishes(expr: sp.Expr) -> bool:

@@ -99,7 +99,8 @@ def test_a_rolling_coordinate_with_a_periodic_potential_is_solved_completely_and
     solutions, warnings = find_equilibria(model)
     assert sorted(s[theta] for s in solutions) == [0, sp.pi]
     assert not any("may miss solutions" in w for w in warnings)
-    assert any("V is 2π-periodic in θ though" in w and "repeats at θ₀ + 2kπ" in w for w in warnings)
+    assert any("∂V/∂θ is 2π-periodic in θ though" in w and "rolling body's travel" in w
+               and "repeats at θ₀ + 2kπ" in w for w in warnings)
 
 
 def test_a_spring_of_zero_length_at_an_equilibrium_is_no_internal_error() -> None:
@@ -138,3 +139,25 @@ questions: [equilibria]
     result = solve(scene).solutions[0]
     assert not result.solved
     assert "continuum" in result.error
+
+
+def test_an_angle_declared_not_periodic_is_said_so_where_its_equilibria_repeat() -> None:
+    """A rod on a pivot with θ declared 'periodic: false' (a new user's, turned by a
+    couple): ∂V/∂θ = ½ m g l sin θ − C repeats every 2π, so do its equilibria; the
+    warning gave a rolling body's travel as the reason, and said V repeats (it need not)."""
+    from rbdsolve.problem import load_text
+    from rbdsolve.solvers.equilibria.exact import find_equilibria
+
+    model = build_model(load_text("""
+parameters: [m, l, g, C]
+coordinates: {theta: {kind: angle, periodic: false}}
+gravity: [0, -g]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: "l/2*[sin(theta), -cos(theta)]", angle: theta, axis: y}
+couples:
+  turn: {on: rod, moment: C}
+questions: [equilibria]
+"""))
+    _, warnings = find_equilibria(model)
+    (said,) = [w for w in warnings if "2π-periodic" in w]
+    assert said.startswith("∂V/∂θ is 2π-periodic in θ") and "declared 'periodic: false'" in said
