@@ -113,7 +113,26 @@ def _measures(model: Model, at: Mapping[sp.Symbol, sp.Expr]):
         if isinstance(sign, Undecided):  # each side alone, by the ranges of the inverse functions in w₀
             sides = [_bounded_sign(tidy(value - end)) for end in (a, b)]
             sign = sign if None in sides else sides[0] * sides[1]
+        if isinstance(sign, Undecided):  # on the span or at an end (asin u against ±π/2): it holds
+            sides = [_bounded_sign(tidy(value - end), weak=True) for end in (a, b)]
+            sign = sign if None in sides or sides[0] * sides[1] != -1 else 0
+        if isinstance(sign, Undecided) and _left_of_the_axis(value, a, b):
+            sign = 1
         yield c, value, sign
+
+
+def _left_of_the_axis(value: sp.Expr, a: sp.Expr, b: sp.Expr) -> bool:
+    """w₀ = atan2(y, x) with x ≤ 0 wherever it is real (a negative number times positive
+    parameters and square roots), against the span −π/2 ≤ w ≤ π/2: cos w₀ ≤ 0, so w₀ is
+    off the span but at its ends, where x = 0 — a place another root, asin(±1), gives
+    already (a half disk on the floor turned by a couple: its second root, the formula's
+    with the flat side down, never on the curved edge)."""
+    if not isinstance(value, sp.atan2) or {tidy(a), tidy(b)} != {-sp.pi / 2, sp.pi / 2}:
+        return False
+    coefficient, rest = value.args[1].as_coeff_Mul()
+    return coefficient.is_negative and all(
+        f.is_positive or (f.is_Pow and (f.base.is_positive or f.exp == sp.Rational(1, 2)) and f.exp.is_real)
+        for f in sp.Mul.make_args(rest))
 
 
 # the ranges of the inverse functions an exact equilibrium is written with, and whether
@@ -122,11 +141,11 @@ _RANGES = {sp.atan: (-sp.pi / 2, sp.pi / 2, False), sp.asin: (-sp.pi / 2, sp.pi 
            sp.acos: (sp.Integer(0), sp.pi, True)}
 
 
-def _bounded_sign(x: sp.Expr) -> int | None:
+def _bounded_sign(x: sp.Expr, weak: bool = False) -> int | None:
     """The sign of c + Σ kᵢ fᵢ(uᵢ), c and kᵢ numbers and fᵢ atan, asin or acos, from
     the ranges of the fᵢ, halved where the sign of uᵢ is known (atan u ∈ (0, π/2) for
     u > 0, the middle not reached): π − atan(π m/(2M)) > π/2 for every m, M. None
-    where the range meets 0."""
+    where the range meets 0; ``weak``: where it crosses 0 (asin u + π/2 ≥ 0 is 1)."""
     low, high = (sp.Integer(0), True), (sp.Integer(0), True)  # (bound, reached)
     for term in sp.Add.make_args(sp.expand(x)):
         k, f = (term, sp.Integer(1)) if term.is_number else term.as_coeff_Mul()
@@ -146,9 +165,9 @@ def _bounded_sign(x: sp.Expr) -> int | None:
         (lo, lo_reached), (hi, hi_reached) = ends if k > 0 else ends[::-1]
         low = (low[0] + k * lo, low[1] and lo_reached)
         high = (high[0] + k * hi, high[1] and hi_reached)
-    if low[0].is_positive or (low[0] == 0 and not low[1]):
+    if low[0].is_positive or (low[0] == 0 and (weak or not low[1])):
         return 1
-    if high[0].is_negative or (high[0] == 0 and not high[1]):
+    if high[0].is_negative or (high[0] == 0 and (weak or not high[1])):
         return -1
     return None
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
+import rbdsolve
 from rbdsolve.model.build import build_model
 from rbdsolve.problem import load_text
 from rbdsolve.solvers.configuration import contact_span
@@ -137,3 +138,37 @@ def test_the_ranges_of_inverse_functions_decide_a_side_where_sampling_agrees() -
         for _ in range(20):
             at = {m: rng.uniform(1e-3, 1e3), M: rng.uniform(1e-3, 1e3)}
             assert sign * float(expr.xreplace(at)) > 0, (expr, at)
+
+
+HALF_DISK_TURNED = """\
+parameters:
+  m: mass
+  R: radius
+  g: gravity
+  C: {description: couple, positive: false}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  half: {shape: half_disk, mass: m, radius: R, axis: -y}
+contacts:
+  C1: {body: half, edge: curved, rolls_on: floor, angle: theta}
+couples:
+  turn: {on: half, moment: C}
+questions: [equilibria]
+"""
+
+
+def test_a_half_disk_turned_by_a_couple_rests_only_where_its_curved_edge_is_down(tmp_path) -> None:
+    """A new user's: by hand ∂V/∂θ = m g d sin θ − C (d = 4R/(3π) from the flat side's
+    middle to G), so sin θ₀ = C/(m g d): θ₀ = asin(…), in [−π/2, π/2], always on the curved
+    edge, and π − θ₀ (written atan2(…, −√(…))), with cos θ ≤ 0: off the edge but at its
+    ends, where it is the first one. It listed both, each 'the parameters leave that open'."""
+    path = tmp_path / "half.yaml"
+    path.write_text(HALF_DISK_TURNED)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    (only,) = solution.answers.equilibria
+    R, g, m = sp.symbols("R g m", positive=True)
+    C = sp.Symbol("C", real=True)
+    assert sp.simplify(only.at["theta"] - sp.asin(3 * sp.pi * C / (4 * R * g * m))) == 0
+    assert not any("leave that open" in w for w in solution.warnings)
+    assert any("not an equilibrium of the scene" in w and "atan2" in w for w in solution.warnings)
