@@ -249,12 +249,23 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
     steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
     warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
                      f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
-                     "reached, if it is, is not given" for k in unsolved)
+                     "reached, if it is, is not given" for k in unsolved) + _unbounded(supports, first, name)
     if to:
         answers, more = _there(model, supports, values, e.rate_squared, table[model.q[0]], to[name], answers)
         passed = _lost_before(model, answers.first_zero, table[model.q[0]], to[name])
         steps, warnings = steps + more, warnings + passed
     return answers, steps, criticals, warnings
+
+
+def _unbounded(supports, first: dict[str, FirstZero] | None, name: str) -> tuple[str, ...]:
+    """Where a rolling contact's own push reaches zero on the way (at the values), the
+    friction it needs grows without bound towards there: no largest is given, and this
+    says why (the steps promise "the largest of it over the places reached")."""
+    lost = {k: z.lost_at[name] for k, z in (first or {}).items() if z.lost_at}
+    return tuple(f"μ_{s.name} grows without bound as {s.components[0].symbol} → 0 at {unicode_name(name)} = "
+                 f"{lost[str(s.components[0].symbol)]:.6g}, where the contact is lost: the friction needed over the "
+                 "whole motion has no largest value" for s in supports
+                 if s.how is How.ROLLING and str(s.components[0].symbol) in lost)
 
 
 def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, start: sp.Expr, to: sp.Expr, answers):

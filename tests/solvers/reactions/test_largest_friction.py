@@ -107,3 +107,32 @@ def test_a_motion_that_goes_round_is_taken_over_one_turn() -> None:
 def test_released_at_an_equilibrium_it_stays() -> None:
     first = {"N": FirstZero(None, None)}
     assert largest_friction(sp.Integer(1), sp.sin(q), "N", first, sp.cos(q) - 1, q, 0.0, "q") is None
+
+
+DISK_ON_DRUM = """\
+parameters: [m, r, R, theta0, g]
+values: {m: 1.2 kg, r: 6 cm, R: 40 cm, theta0: 12 deg, g: 9.81 m/s^2}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: outside}}, along: theta}
+questions:
+  - reactions: {forces: [C], from_rest: {theta: theta0}}
+"""
+
+
+def test_where_the_contact_is_lost_on_the_way_no_largest_friction_is_given_and_that_is_said(tmp_path) -> None:
+    """A disk rolling off a drum (a new user's): by hand, with ρ = R + r, T = ¾ m ρ² θ̇²
+    (its spin ρ θ̇/r) and V = m g ρ cos θ, so ρ θ̇² = (4/3) g (cos θ₀ − cos θ), and along
+    the line of centres N = m g cos θ − m ρ θ̇² = m g (7 cos θ − 4 cos θ₀)/3, zero at
+    cos θ = 4 cos θ₀/7; F = m g sin θ/3 stays finite there, so |F|/N grows without bound."""
+    path = tmp_path / "disk.yaml"
+    path.write_text(DISK_ON_DRUM)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    lost = math.acos(4 * math.cos(math.radians(12)) / 7)
+    assert solution.answers.first_zero["N_C"].lost_at["theta"] == pytest.approx(lost, abs=1e-9)
+    assert solution.answers.least_friction_over is None
+    (said,) = [w for w in solution.warnings if "grows without bound" in w]
+    assert f"θ = {lost:.6g}" in said
