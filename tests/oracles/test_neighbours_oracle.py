@@ -39,7 +39,7 @@ UNMODELLED = {"heavy-top-precession-rates", "ball-struck-on-table", "heavy-top-e
               "spool-radius-of-gyration", "atwood-massive-pulley",
               "atwood-spring-below", "cylinder-on-plank-spring", "disk-on-incline-spring", "disk-spring-at-top",
               "incline-block-massive-pulley", "double-incline-massive-pulley", "stepped-pulley",
-              "table-block-massive-pulley",
+              "table-block-massive-pulley", "cylinder-massive-pulley-block",
               # a body's own points
               "inverted-rod-spring-at-point"}
 

@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 import sympy as sp
 
 from rbdsolve.solvers.reactions.first_zero import FirstZero
@@ -56,6 +55,8 @@ def largest_friction(push: sp.Expr, friction: sp.Expr, own: str, found: dict[str
     end, until, lost = span
     if lost == own:
         return None
+    import numpy as np  # with values only: the exact routes load no numpy (tests/test_architecture.py)
+
     mu = _mu(push, friction, q)
     places = np.linspace(start, end, SAMPLES + 1)
     with np.errstate(all="ignore"):
@@ -97,6 +98,8 @@ def _span(found: dict[str, FirstZero], rate_squared: sp.Expr, q: sp.Symbol, star
 
 def _mu(push: sp.Expr, friction: sp.Expr, q: sp.Symbol):
     """q ↦ |F|/N as floats (numpy, element by element: an array of places at once)."""
+    import numpy as np
+
     f = sp.lambdify(q, sp.Abs(friction) / push, modules="numpy")
 
     def mu(x):
@@ -110,6 +113,7 @@ def _mu(push: sp.Expr, friction: sp.Expr, q: sp.Symbol):
 
 def _refined(mu, low: float, high: float) -> tuple[float, float] | None:
     """μ's largest between ``low`` and ``high`` by Brent's bounded search, and where."""
+    import numpy as np
     from scipy.optimize import minimize_scalar
 
     if high <= low:
