@@ -20,7 +20,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, reaches
+from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, near_turn, reaches
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
@@ -142,9 +142,14 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
         pushes, rate_squared = {k: _unscaled(v, given, q) for k, v in pushes.items()}, _unscaled(rate_squared, given, q)
         if rate_squared is None or table[q].xreplace(given).free_symbols:
             return None
+    if step != ANGLE_STEP and (turn := near_turn(rate_squared.xreplace(given), q, float(table[q].xreplace(given)))):
+        step = min(step, turn / TURN_STEPS)  # a length: a quick turn is met in its first steps, not stepped over
     found = {k: first_zero(v, rate_squared, q, table[q], name, given, step) for k, v in pushes.items() if v is not None}
     found = {k: v for k, v in found.items() if v is not None}
     return _before_first_loss(found, name, float(table[q].xreplace(given))) or None
+
+
+TURN_STEPS = 16  # a length's steps at least this many to the turning point q̇²'s quadratic gives
 
 
 def _unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:

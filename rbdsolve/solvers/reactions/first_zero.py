@@ -67,7 +67,7 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
         x = q0 + i * step
         speed, force = v2(x), N(x)
         if speed is None or speed < 0:  # the motion turns back between ``before`` and x
-            turn = _root(v2, before, x)
+            turn = _turning(v2, q0, before, x)
             if turn is None:
                 return None
             if not _positive(N(turn)):
@@ -79,6 +79,32 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
             return _lost(N, before, x, name)
         before = x
     return FirstZero(None, None) if _periodic(push, q) and _periodic(rate_squared, q) else None
+
+
+def _turning(v2, q0: float, a: float, b: float) -> float | None:
+    """Where q̇² reaches 0 between a and b. From the release (a = q₀, where q̇² = 0
+    already) the root finder would return q₀ itself: there q̇²/(q − q₀) is taken, whose
+    value at q₀ is dq̇²/dq, of the motion's sign, and whose zero is the turning point (a
+    stiff spring that turns a hoop back 2.7 mm down the slope, within the first step)."""
+    if a != q0:
+        return _root(v2, a, b)
+
+    def divided(y: float) -> float | None:
+        v = v2(y)
+        return None if v is None or y == q0 else v / (y - q0)
+
+    return _root(divided, q0 + (b - q0) * 1e-9, b)
+
+
+def near_turn(rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
+    """How far from the release the motion turns back by q̇²'s quadratic about it,
+    q̇² ≈ a₁ δ + ½ a₂ δ² = 0 at |δ| = 2 |a₁/a₂| (a₁ a₂ < 0), the values put in: a
+    length's steps are kept well under it, so that a quick turn is met in its first
+    steps. None where the quadratic does not turn back."""
+    a1, a2 = (_real(sp.diff(rate_squared, q, k).xreplace({q: q0})) for k in (1, 2))
+    if a1 is None or a2 is None or a1 * a2 >= 0:
+        return None
+    return abs(2 * a1 / a2)
 
 
 def length_step(lengths: list[float]) -> float | None:

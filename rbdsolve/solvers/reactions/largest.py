@@ -53,7 +53,7 @@ def largest_friction(push: sp.Expr, friction: sp.Expr, own: str, found: dict[str
     if span is None:
         return None
     end, until, lost = span
-    if lost == own:
+    if lost == own or end == start:  # lost on the way (μ unbounded), or no span to take it over
         return None
     import numpy as np  # with values only: the exact routes load no numpy (tests/test_architecture.py)
 
