@@ -101,7 +101,9 @@ _EDGES = {
 SHAPE_ALIASES = {"point": Shape.PARTICLE, "hoop": Shape.RING, "slender_rod": Shape.ROD,
                  "rectangle": Shape.PLATE, "shell": Shape.CYLINDRICAL_SHELL,
                  "ball": Shape.SPHERE, "cuboid": Shape.BOX, "solid_hemisphere": Shape.HEMISPHERE,
-                 "semicircular_plate": Shape.HALF_DISK, "semicircular_wire": Shape.HALF_RING}  # fmt: skip
+                 "semicircular_plate": Shape.HALF_DISK, "semicircular_wire": Shape.HALF_RING,
+                 "solid_sphere": Shape.SPHERE, "solid_cylinder": Shape.CYLINDER, "solid_disk": Shape.DISK,
+                 "hollow_sphere": Shape.SPHERICAL_SHELL, "hollow_cylinder": Shape.CYLINDRICAL_SHELL}  # fmt: skip
 
 
 class CoordinateKind(Enum):

@@ -60,8 +60,6 @@ CASES = [
     ("mass: m,", "mass: M,", 8, 32, "bodies.bob.mass", "unknown symbol 'M' (did you mean 'm'?)"),
     ("at: P}", "at: Q}", 8, 39, "bodies.bob.at", "unknown point 'Q'"),
     ("shape: particle", "shape: partcle", 8, 16, "bodies.bob.shape", "unknown shape 'partcle' (did you mean 'particle'?)"),
-    ("shape: particle", "shape: solid_sphere", 8, 16, "bodies.bob.shape",
-     "unknown shape 'solid_sphere' (did you mean 'sphere'? a sphere is solid; its hollow form is 'spherical_shell')"),
     ("shape: particle, ", "", 8, 8, "bodies.bob", "needs a 'shape'"),
     ("mass: m, ", "", 8, 8, "bodies.bob", "missing required key 'mass'"),
     ("mass: m,", "mass: m, colour: red,", 8, 35, "bodies.bob.colour", "unknown key 'colour'"),

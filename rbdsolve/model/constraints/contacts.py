@@ -40,7 +40,7 @@ from rbdsolve.model.assumptions import Assumed
 from rbdsolve.model.constraints.edges import Curved, Flat, NotInPlane, body_part, part_edge
 from rbdsolve.model.constraints.lengths import contact_lengths
 from rbdsolve.model.state import t, user_function
-from rbdsolve.model.constraints.strings import hang, wheel_turn
+from rbdsolve.model.constraints.strings import hang, wheel_rim, wheel_turn
 from rbdsolve.model.symbols import Symbols, exact_number
 from rbdsolve.model.trees import as_expr, reverse_names
 from rbdsolve.problem.sections.contacts import NOT_PLANAR
@@ -183,8 +183,7 @@ def _wheel_angle(c: Contact, wheel: Body, paid: sp.Expr, names: Symbols, values:
     if any(names.vector(wheel.at).has(q) for q in names.state.q):
         raise InputError(f"contact '{c.name}': pulley '{wheel.name}' turns on a fixed axle, but its centre 'at' "
                          "moves with the coordinates", c.pulley.wheel_loc)
-    rim = _geometry(c, wheel, None, names, "rim")
-    return wheel_turn(c, rim.radius, paid, names, values)
+    return wheel_turn(c, wheel_rim(wheel, names), paid, names, values)
 
 
 def _geometry(c: Contact, body: Body, part: str | None, names: Symbols, edge_name: str, radius=None):

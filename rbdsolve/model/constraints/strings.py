@@ -84,6 +84,13 @@ def wheel_turn(c: Contact, radius: sp.Expr, paid: sp.Expr, names: Symbols, value
     moves with the string, ℓ̇ = R ψ̇ in magnitude, turning the way the string bends
     over it, from d (off the drum) towards h (down to the body): ψ = sign((d × h)_z) ℓ/R
     (a string off a cylinder's top to the right, then down: clockwise, ψ = −ℓ/R)."""
+    return wheel_bend(c, names, values) * paid / radius
+
+
+def wheel_bend(c: Contact, names: Symbols, values: dict) -> sp.Expr:
+    """The way the string bends over a pulley with mass, from d (off the drum) to h
+    (down to the body): sign((d × h)_z), 1 counterclockwise; refused where it does not
+    bend (d ∥ h) or the parameters' signs leave it open."""
     d = _unit(names.vector(c.pulley.direction))
     bend = tidy(d.cross(_down(c.pulley, names))[2])
     if simplifies_to_zero(bend):
@@ -94,7 +101,14 @@ def wheel_turn(c: Contact, radius: sp.Expr, paid: sp.Expr, names: Symbols, value
     if not sign.is_number or sign == 0:
         raise InputError(f"contact '{c.name}': which way pulley '{c.pulley.wheel}' turns depends on the sign of "
                          f"{sp.sstr(bend)}: give the parameters in it values", c.pulley.wheel_loc)
-    return sign * paid / radius
+    return sign
+
+
+def wheel_rim(wheel: Body, names: Symbols) -> sp.Expr:
+    """The radius of a pulley's rim (a disk, ring or cylinder of one shape)."""
+    from rbdsolve.model.constraints.edges import body_part, part_edge
+
+    return part_edge(body_part(wheel, None), "rim", names).radius
 
 
 def _down(p, names: Symbols) -> sp.Matrix:

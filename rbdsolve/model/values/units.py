@@ -277,13 +277,26 @@ def _number_times(expr: sp.Expr, q: sp.Symbol) -> bool:
 
 
 def _along_contacts(model: Model) -> set[str]:
-    """The coordinates a rolling contact measures ``along`` a straight line: a distance,
+    """The coordinates a rolling contact measures ``along`` a straight line (or a body's
+    straight edge, a plank's top): a distance,
     whatever turns by it (a disk of radius 1/10 written as a number turns by −10 x,
     which read x as an angle: ẍ in rad/s²). Along a circle the travel is an angle."""
     from rbdsolve.problem.surfaces import Measure, SurfaceKind
 
     return {c.source.coordinate for c in model.contacts if c.source.coordinate is not None
-            and c.source.measure is Measure.ALONG and c.source.surface.kind is SurfaceKind.LINE}
+            and c.source.measure is Measure.ALONG and (c.source.surface.kind is SurfaceKind.LINE
+                                                       or _flat_edge(model, c.source.surface))}
+
+
+def _flat_edge(model: Model, surface) -> bool:
+    """Whether a body's edge rolled on is straight (a plank's top), not round."""
+    from rbdsolve.model.constraints.edges import Flat, body_part, part_edge
+    from rbdsolve.problem.surfaces import SurfaceKind
+
+    if surface.kind is not SurfaceKind.BODY or surface.body is None or surface.edge is None:
+        return False
+    spec = next(b for b in model.problem.bodies if b.name == surface.body)
+    return isinstance(part_edge(body_part(spec, surface.part), surface.edge, model.symbols), Flat)
 
 
 def _turned_by_bodies(model: Model) -> set:

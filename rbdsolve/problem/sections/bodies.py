@@ -32,14 +32,8 @@ MOTION_KEYS = ("angle", "orientation", "velocity", "angular_velocity")
 # parameters, where the closest spelling would mislead ('half_cylinder': 'cylinder').
 _HALF_CYLINDER = (": a solid half-cylinder is shape: cylinder_segment with half_angle: pi/2 (and radius, "
                   "height); turning in its own plane only, a half_disk has the same moment about its axis")
-_SOLID = {f"solid_{s}": f" (did you mean '{s}'? a {s} is solid; its hollow form is '{h}')"
-          for s, h in (("sphere", "spherical_shell"), ("cylinder", "cylindrical_shell"), ("disk", "ring"),
-                       ("hemisphere", "hemispherical_shell"))}
 _SHAPE_HINTS = {"half_cylinder": _HALF_CYLINDER, "semicylinder": _HALF_CYLINDER, "semi_cylinder": _HALF_CYLINDER,
-                "half_sphere": " (did you mean 'hemisphere'?)", **_SOLID,
-                "hollow_sphere": " (did you mean 'spherical_shell'?)",
-                "hollow_cylinder": " (did you mean 'cylindrical_shell', or 'tube' for a thick wall?)",
-                "hoop": " (did you mean 'ring'?)"}
+                "half_sphere": " (did you mean 'hemisphere'?)"}
 
 class BodyReader:
     def __init__(self, reading: Reading, placed: dict[str, str] | None = None,

@@ -308,8 +308,9 @@ def _wheel(hang: Map, bodies: dict[str, Body], drum: str, hanging: str) -> Body 
         raise InputError(f"body '{body.name}' is not a round body of one shape: a pulley the string turns is a "
                          "disk, ring or cylinder (its rim's radius turns it)", node.loc)
     if body.angle is not None or body.orientation:
-        raise InputError(f"body '{body.name}' is turned by the string over it, which gives its angle: remove its "
-                         "'angle'", (body.angle.loc if body.angle is not None else node.loc))
+        key = "angle" if body.angle is not None else "orientation"
+        raise InputError(f"body '{body.name}' is turned by the string over it, in the plane, which gives its angle: "
+                         f"remove its '{key}'", (body.angle.loc if body.angle is not None else node.loc))
     if body.at is None:
         raise InputError(f"body '{body.name}' turns on a fixed axle: give its centre, 'at: [x, y]'", node.loc)
     return body
@@ -321,8 +322,9 @@ def _down(where: Map) -> ex.Expr:
 
 def _check_order(contacts: tuple[Contact, ...]) -> None:
     """A body rolled on or hung from is placed before the contact that uses it (by
-    'at'/'angle', or by an earlier contact); two contacts between the same two bodies
-    over-constrain them."""
+    'at'/'angle', or by an earlier contact; a pulley with mass, by the string that turns
+    it); two contacts between the same two bodies over-constrain them, and so do two
+    strings that turn one pulley with mass."""
     for k, c in enumerate(contacts):
         used = c.pulley.drum if c.pulley is not None else c.surface.body
         where = c.pulley.loc if c.pulley is not None else c.surface.loc
@@ -333,6 +335,15 @@ def _check_order(contacts: tuple[Contact, ...]) -> None:
             if d.body == used:
                 raise InputError(f"contact '{c.name}' uses '{used}', which contact '{d.name}' places later: "
                                  f"list '{d.name}' first", where)
+            if used is not None and d.pulley is not None and d.pulley.wheel == used:
+                raise InputError(f"contact '{c.name}' hangs from '{used}', which the string of contact '{d.name}' "
+                                 f"turns later: list '{d.name}' first", where)
+        wheel = c.pulley.wheel if c.pulley is not None else None
+        other = next((d for d in contacts[:k] if d.pulley is not None and d.pulley.wheel == wheel), None)
+        if wheel is not None and other is not None:
+            raise InputError(f"pulley '{wheel}' is turned by the string of contact '{other.name}' already: one "
+                             "string over a pulley with mass (two, one on each side, hang from it as a drum: "
+                             "'hangs_from: {drum: …, side: left}')", c.pulley.wheel_loc)
 
 
 def _on_plane(spec: Node) -> bool:

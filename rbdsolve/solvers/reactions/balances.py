@@ -44,14 +44,16 @@ class Balance:
 
 def with_strings(model: Model, supports: tuple[Held, ...], loc) -> tuple[Held, ...]:
     """The supports asked, and every string that pulls a body among them (a drum's or a
-    pulley's tension, the string of a hanging body): a string is inside the system, so
+    pulley's tension, the string of a hanging body, the strings over a pulley with mass
+    whose axle is asked): a string is inside the system, so
     its tension is found with the others, from the balance of the body at its other end
     (that body joins the free body diagrams). Added until no held body has a string left."""
     out = list(supports)
     while True:
         held, named = set(bodies_held(tuple(out))), {s.name for s in out}
         more = [c for c in model.contacts if c.source.string and c.name not in named
-                and (c.body in held or (c.source.pulley is not None and c.source.pulley.drum in held))]
+                and (c.body in held or (c.source.pulley is not None and held & {c.source.pulley.drum,
+                                                                               c.source.pulley.wheel}))]
         if not more:
             return tuple(out) + _axles(model, tuple(out), loc)
         out += [replace(contact_support(model, c), loc=loc, added=True) for c in more]

@@ -152,14 +152,12 @@ def _over_wheel(model: Model, rolling, d: sp.Matrix, h: sp.Matrix) -> tuple[Comp
     reaches its rim, E = c − s R e_z × d, along −d; T_S2 down to the body, on the body up
     the string (−h) and on W where the string leaves it, X = c − s R e_z × h, along h.
     (T_S1 acts on the hanging body with no direction: the body's own balance holds only T_S2.)"""
-    p = rolling.source.pulley
-    wheel = body(model, p.wheel)
-    c = wheel.position
-    spec = next(b for b in model.problem.bodies if b.name == p.wheel)
-    from rbdsolve.model.constraints.edges import body_part, part_edge  # a scene with a pulley with mass only
+    from rbdsolve.model.constraints.strings import wheel_bend, wheel_rim  # a scene with a pulley with mass only
 
-    R = part_edge(body_part(spec, None), "rim", model.symbols).radius
-    s = tidied_sign(d.cross(h)[2], model.decided_by)
+    p = rolling.source.pulley
+    c = body(model, p.wheel).position
+    R = wheel_rim(next(b for b in model.problem.bodies if b.name == p.wheel), model.symbols)
+    s = wheel_bend(rolling.source, model.symbols, dict(model.values))
     entry, exit_ = c - s * R * _Z.cross(d), c - s * R * _Z.cross(h)
     off = Component(sp.Symbol(f"T_{rolling.name}1"), sp.zeros(3, 1), one_sided=True,
                     also=((p.drum, rolling.point, d), (p.wheel, entry, -d)))

@@ -98,23 +98,63 @@ def test_the_tensions_on_the_two_sides_differ_by_what_turns_the_pulley(tmp_path)
     assert sp.simplify(found["wheel"].components["R_wheely"] - (M * g + T2)) == 0  # its axle: weight and T₂ down
 
 
-@pytest.mark.parametrize("change, said", [
-    ("over: P, pulley: wheel", "give 'over: P'", ),
-    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "remove its 'angle'"),
-    ("pulley: wheel}", "is the drum"),
-    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "not a round body"),
-    ('wheel: {shape: disk, mass: M, radius: R, at: "[d, 2*r - R]"}', "fixed axle"),
-])
-def test_a_pulley_that_cannot_be_turned_by_the_string_is_refused_at_its_key(tmp_path, change, said) -> None:
-    wrong = {
-        "give 'over: P'": TABLE.replace("over: P, pulley: wheel", "pulley: wheel, side: right"),
-        "remove its 'angle'": TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d, 2*r - R]", angle: x}'),
-        "is the drum": TABLE.replace("pulley: wheel}", "pulley: cylinder}"),
-        "not a round body": TABLE.replace("shape: disk, mass: M, radius: R,", "shape: rod, mass: M, length: R,"),
-        "fixed axle": TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d + x, 2*r - R]"}'),
-    }[said]
-    assert change in TABLE
+SECOND = """\
+  cyl2: {shape: cylinder, mass: M2, radius: r, height: 1}
+  block2: {shape: particle, mass: m}
+"""
+
+WRONG = {  # what is wrong -> (the scene, the words of the refusal)
+    "no over": (TABLE.replace("over: P, pulley: wheel", "pulley: wheel, side: right"), "give 'over: P'"),
+    "an angle": (TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d, 2*r - R]", angle: x}'), "remove its 'angle'"),
+    "the drum": (TABLE.replace("pulley: wheel}", "pulley: cylinder}"), "is the drum"),
+    "no rim": (TABLE.replace("shape: disk, mass: M, radius: R,", "shape: rod, mass: M, length: R,"),
+               "not a round body"),
+    "a moving axle": (TABLE.replace('at: "[d, 2*r - R]"}', 'at: "[d + x, 2*r - R]"}'), "but its centre 'at' moves"),
+    "no bend": (TABLE.replace("over: P, pulley: wheel", "over: P, down: [1, 0], pulley: wheel"),
+                "does not bend over pulley"),
+    "two strings": (TABLE.replace("  block: {", SECOND + "  block: {").replace("coordinates: [x]", "coordinates: [x, y]")
+                    .replace("questions", "  C2: {body: cyl2, rolls_on: floor, along: y}\n  S2: {body: block2, hangs_from: "
+                             "{drum: cyl2, direction: [1, 0], over: P, pulley: wheel}}\nquestions"),
+                    "is turned by the string of contact 'S' already"),
+    "turned later": (TABLE.replace("contacts:\n", "contacts:\n  H: {body: block2, hangs_from: {drum: wheel, side: left}}\n")
+                     .replace("  block: {", "  block2: {shape: particle, mass: m}\n  block: {"),
+                     "which the string of contact 'S' turns later: list 'S' first"),
+}
+
+
+@pytest.mark.parametrize("what", list(WRONG))
+def test_a_pulley_that_cannot_be_turned_by_the_string_is_refused(tmp_path, what) -> None:
+    text, said = WRONG[what]
+    assert text != TABLE
     path = tmp_path / "scene.yaml"
-    path.write_text(wrong)
+    path.write_text(text)
     with pytest.raises(InputError, match=said):
         rbdsolve.solve(path, budget=1200.0)
+
+
+def test_a_refusal_names_the_file_line_column_and_key_with_exit_code_2(tmp_path) -> None:
+    from click.testing import CliRunner
+
+    from rbdsolve.cli import main
+
+    path = tmp_path / "scene.yaml"
+    text = WRONG["the drum"][0]
+    path.write_text(text)
+    done = CliRunner().invoke(main, ["solve", str(path)])
+    (line,) = [k for k, row in enumerate(text.splitlines(), 1) if "pulley: cylinder" in row]
+    column = text.splitlines()[line - 1].index("pulley: cylinder") + len("pulley: ") + 1
+    assert done.exit_code == 2
+    assert done.output.startswith(f"{path}:{line}:{column}: contacts.S.hangs_from.pulley: body 'cylinder' is the drum")
+
+
+def test_the_axle_asked_alone_brings_the_strings_that_turn_the_pulley(tmp_path) -> None:
+    """The axle at the pulley's centre A: by hand (as above) R_Ax = T₁ and R_Ay = M g + T₂."""
+    path = tmp_path / "scene.yaml"
+    path.write_text(TABLE.replace("  P: [d, 2*r]", "  P: [d, 2*r]\n  A: [d, 2*r - R]")
+                    .replace("questions: [eom]", "questions: [{reactions: {forces: [{at: A, on: wheel}]}}]"))
+    (solution,) = rbdsolve.solve(path, budget=1200.0)
+    M2, M, m, g = sp.symbols("M2 M m g", positive=True)
+    a = 4 * g * m / (3 * M2 + 4 * M + 8 * m)
+    T2 = m * (g - 2 * a)
+    axle = solution.answers.reactions["A"].components
+    assert sp.simplify(axle["R_Ax"] - (T2 - M * a)) == 0 and sp.simplify(axle["R_Ay"] - (M * g + T2)) == 0

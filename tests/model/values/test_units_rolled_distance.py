@@ -32,3 +32,26 @@ def test_a_distance_rolled_along_a_line_is_in_metres(tmp_path, radius) -> None:
     assert solution.values["accelerations"]["x"] == pytest.approx(-9.81 / 3, rel=1e-12)
     assert solution.units["accelerations"]["x"] == "m/s²"
     assert solution.units["at"]["C"]["components"]["N_C"] == "N"
+
+
+def test_a_distance_rolled_along_a_planks_top_is_in_metres(tmp_path) -> None:
+    """A cylinder (m, radius 1/10, a number) pushed by m g along a plank's top edge (the
+    plank held: a review's scene, by hand): (3/2) m s̈ = m g, s̈ = 2 g/3 — in m/s²."""
+    path = tmp_path / "plank.yaml"
+    path.write_text("""\
+parameters: {m: mass, g: gravity}
+values: {m: 2 kg, g: 9.81 m/s^2}
+coordinates: [s]
+gravity: [0, -g]
+bodies:
+  plank: {shape: plate, mass: 5, width: 4, height: 1/10, at: [0, 0]}
+  cylinder: {shape: cylinder, mass: m, radius: 1/10, height: 1}
+contacts:
+  C: {body: cylinder, rolls_on: {body: plank, edge: top}, along: s}
+forces:
+  push: {on: cylinder, force: [m*g, 0]}
+questions: [eom]
+""")
+    (solution,) = rbdsolve.solve(path, budget=1200.0)
+    assert solution.values["accelerations"]["s"] == pytest.approx(2 * 9.81 / 3, rel=1e-12)
+    assert solution.units["accelerations"]["s"] == "m/s²"
