@@ -339,6 +339,9 @@ class Problem:
     def frame(self, name: str) -> Frame:
         return next(f for f in self.frames if f.name == name)
 
+    def body(self, name: str) -> Body:
+        return next(b for b in self.bodies if b.name == name)
+
     def dimension_map(self) -> dict[str, Dimension]:
         return dict(self.dimensions)
 

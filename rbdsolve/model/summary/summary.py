@@ -92,7 +92,7 @@ def _wheel_steps(model: Model, c) -> list[st.Step]:
     wheel = c.source.pulley.wheel
     if wheel is None:
         return []
-    spec = next(b for b in model.problem.bodies if b.name == wheel)
+    spec = model.problem.body(wheel)
     turn = model.to_time(model.symbols.scalar(spec.angle))
     return [st.equation(f"Pulley {wheel} turns with the string, its rim not slipping: its radius times ψ̇ is ±l̇, "
                         "the sign the way the string bends over it ⇒", Relation(sp.Symbol(f"psi_{wheel}"), turn))]

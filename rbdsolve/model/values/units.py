@@ -295,7 +295,7 @@ def _flat_edge(model: Model, surface) -> bool:
 
     if surface.kind is not SurfaceKind.BODY or surface.body is None or surface.edge is None:
         return False
-    spec = next(b for b in model.problem.bodies if b.name == surface.body)
+    spec = model.problem.body(surface.body)
     return isinstance(part_edge(body_part(spec, surface.part), surface.edge, model.symbols), Flat)
 
 

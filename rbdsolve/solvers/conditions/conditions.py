@@ -188,6 +188,24 @@ def _split_in(model, f: sp.Expr, p: sp.Symbol, angles: dict) -> tuple[Partition 
     return _merged(p, allowed_ones), _merged(p, list(zip(pieces, signs)))
 
 
+def _split(condition: sp.Expr, model, first: sp.Symbol | None) -> tuple[Partition | None, dict, sp.Expr]:
+    """The condition's pieces, the size they are in ({|C|'s symbol: Abs(C)}, or {} for a
+    positive parameter) and the condition in that symbol (C as its size): a parameter of
+    either sign the question is about first (``_signed_first``), then the positive ones
+    (``partition``), then any of either sign (``by_size``)."""
+    preferred = _signed_first(condition, model, first)
+    sized = by_size(condition, model, preferred) if preferred is not None else None
+    if sized is None:
+        found = partition(condition, model, first)
+        if found is not None:
+            return found, {}, condition
+        sized = by_size(condition, model)
+    if sized is None:
+        return None, {}, condition
+    found, size = sized
+    return found, size, condition.xreplace({magnitude.args[0]: k for k, magnitude in size.items()})
+
+
 def _signed_first(f: sp.Expr, model, first: sp.Symbol | None) -> sp.Symbol | None:
     """The parameter of either sign a condition is to be written in before the positive
     ones (``candidates``' first two rules): the one a question's ``for:`` names, else
@@ -372,12 +390,7 @@ def exists_when(values: Iterable[sp.Expr], model, nonnegative: Iterable[sp.Expr]
         condition = tidy(condition)
         if isinstance(sign_of(condition, model.assumed), int):
             continue
-        preferred = _signed_first(condition, model, first)
-        sized = by_size(condition, model, preferred) if preferred is not None else None
-        found, size, split = (None, {}, condition) if sized else (partition(condition, model, first), {}, condition)
-        if found is None and (sized := sized or by_size(condition, model)) is not None:
-            found, size = sized  # split in |C|: the condition with C as its size, then |C| put back
-            split = condition.xreplace({magnitude.args[0]: k for k, magnitude in size.items()})
+        found, size, split = _split(condition, model, first)
         if found is None:
             # no change of sign in any parameter: where it keeps one, proved with each angle
             # parameter in (0, π) (an incline's g m sin α + 6 k r), that sign decides

@@ -20,7 +20,7 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, near_turn, reaches
+from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, reaches
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
@@ -131,9 +131,6 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
     left open may only scale each push and q̇² (positive factors, ``sign_part``): their
     signs along the way, so the places, are then the same for every value of them (a
     ladder released at φ₀ = 60° leaves the wall at sin φ = ⅔ sin φ₀ whatever m, L, g)."""
-    step = _step(model, table[model.q[0]])
-    if step is None:
-        return None
     q = model.q[0]
     name = model.coordinate_names()[0]
     given = dict(model.values)
@@ -142,14 +139,12 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
         pushes, rate_squared = {k: _unscaled(v, given, q) for k, v in pushes.items()}, _unscaled(rate_squared, given, q)
         if rate_squared is None or table[q].xreplace(given).free_symbols:
             return None
-    if step != ANGLE_STEP and (turn := near_turn(rate_squared.xreplace(given), q, float(table[q].xreplace(given)))):
-        step = min(step, turn / TURN_STEPS)  # a length: a quick turn is met in its first steps, not stepped over
+    step = _step(model, float(table[q].xreplace(given)), rate_squared.xreplace(given))
+    if step is None:
+        return None
     found = {k: first_zero(v, rate_squared, q, table[q], name, given, step) for k, v in pushes.items() if v is not None}
     found = {k: v for k, v in found.items() if v is not None}
     return _before_first_loss(found, name, float(table[q].xreplace(given))) or None
-
-
-TURN_STEPS = 16  # a length's steps at least this many to the turning point q̇²'s quadratic gives
 
 
 def _unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:
@@ -174,11 +169,11 @@ def _before_first_loss(found: dict[str, FirstZero], name: str, start: float) -> 
     return {k: z for k, z in found.items() if reached(z)}
 
 
-def _step(model: Model, start: sp.Expr) -> float | None:
-    """first_zero's step along the coordinate: half a degree for an angle; for a length,
-    a whole turn of a wheel as large as the scene's largest length (the parameters'
-    values of a length, the release's place) in as many steps; None for anything else,
-    or a length without a value to scale by."""
+def _step(model: Model, start: float, rate_squared: sp.Expr) -> float | None:
+    """first_zero's step along the coordinate from ``start`` (q̇², ``rate_squared``, with
+    the values put in): half a degree for an angle; for a length, ``length_step`` from the
+    scene's lengths (the parameters' values of a length, the release's place); None for
+    anything else, or a length without a value to scale by."""
     from rbdsolve.model.values.units import known_dimensions  # loaded where there are values
     from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER
 
@@ -188,9 +183,8 @@ def _step(model: Model, start: sp.Expr) -> float | None:
         return ANGLE_STEP
     if kind != LENGTH:
         return None
-    given = [v for k, v in model.values.items() if dimensions.get(k) == LENGTH]
-    lengths = [float(v) for v in (*given, start.xreplace(dict(model.values))) if v.is_number and v.is_real]
-    return length_step(lengths)
+    lengths = [float(v) for k, v in model.values.items() if dimensions.get(k) == LENGTH and v.is_real]
+    return length_step([*lengths, start], rate_squared, model.q[0], start)
 
 
 def _largest_frictions(model: Model, supports, values: dict, rate_squared: sp.Expr, table,

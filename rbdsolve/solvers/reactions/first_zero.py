@@ -96,7 +96,7 @@ def _turning(v2, q0: float, a: float, b: float) -> float | None:
     return _root(divided, q0 + (b - q0) * 1e-9, b)
 
 
-def near_turn(rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
+def _near_turn(rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
     """How far from the release the motion turns back by q̇²'s quadratic about it,
     q̇² ≈ a₁ δ + ½ a₂ δ² = 0 at |δ| = 2 |a₁/a₂| (a₁ a₂ < 0), the values put in: a
     length's steps are kept well under it, so that a quick turn is met in its first
@@ -107,12 +107,20 @@ def near_turn(rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
     return abs(2 * a1 / a2)
 
 
-def length_step(lengths: list[float]) -> float | None:
-    """The step along a length coordinate: a whole turn of a wheel as large as the
-    scene's largest length L (2π L over STEPS steps), the span a length has in place of
-    an angle's turn; None without a length to scale by."""
+TURN_STEPS = 16  # a length's steps at least this many to the turning point q̇²'s quadratic gives
+
+
+def length_step(lengths: list[float], rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
+    """The step along a length coordinate from the release q₀: a whole turn of a wheel as
+    large as the scene's largest length L (2π L over STEPS steps), the span a length has
+    in place of an angle's turn, and at most 1/TURN_STEPS of the way to where q̇²'s
+    quadratic turns back (``_near_turn``: a quick turn is met in its first steps, not
+    stepped over); None without a length to scale by."""
     largest = max((abs(x) for x in lengths), default=0.0)
-    return 2 * math.pi * largest / STEPS if largest > 0 else None
+    if largest <= 0:
+        return None
+    step, turn = 2 * math.pi * largest / STEPS, _near_turn(rate_squared, q, q0)
+    return min(step, turn / TURN_STEPS) if turn else step
 
 
 def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, values: dict) -> bool | None:

@@ -156,7 +156,7 @@ def _over_wheel(model: Model, rolling, d: sp.Matrix, h: sp.Matrix) -> tuple[Comp
 
     p = rolling.source.pulley
     c = body(model, p.wheel).position
-    R = wheel_rim(next(b for b in model.problem.bodies if b.name == p.wheel), model.symbols)
+    R = wheel_rim(model.problem.body(p.wheel), model.symbols)
     s = wheel_bend(rolling.source, model.symbols, dict(model.values))
     entry, exit_ = c - s * R * _Z.cross(d), c - s * R * _Z.cross(h)
     off = Component(sp.Symbol(f"T_{rolling.name}1"), sp.zeros(3, 1), one_sided=True,

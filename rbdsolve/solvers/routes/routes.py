@@ -129,17 +129,17 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     found = valued(solution.answers, model, question.kind.value, named)
     swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
     warnings = (*solution.warnings, *swing, *unused_warnings(model), *found.warnings, *unsure,
-                *_not_for(question, solution.answers, _positive_for(question, model)))
+                *_not_for(question, solution.answers, model))
     return replace(solution, warnings=warnings, error_estimate=estimate, values=found.values, units=found.units,
                    numbers=found.lines, seconds=time.perf_counter() - start)
 
 
-def _not_for(question: Question, answers: object, positive: bool) -> tuple[str, ...]:
+def _not_for(question: Question, answers: object, model: Model) -> tuple[str, ...]:
     """A warning where the question names the parameter its conditions are to be written
     in (``for: M``) and none of its critical values is in it: that parameter splits none
     of them over its whole range (a critical value there not positive for every value of
     the others: M_c = k L/(g sin α) − m/2), so another was taken; never silently. One of
-    either sign (``positive`` False) is split only in its size where an answer exists
+    either sign is split only in its size where an answer exists
     (|Ω| ≥ Ω_c, conditions.by_size): a warning too where others split the rest."""
     name = getattr(question.options, "for_parameter", None)
     critical = getattr(answers, "critical", None)
@@ -147,19 +147,13 @@ def _not_for(question: Question, answers: object, positive: bool) -> tuple[str, 
     if name is None or not others:
         return ()
     if any(c.parameter == name for c in critical):  # some in it: one of either sign is split only as |Ω| ≥ Ω_c
-        return () if positive else (
+        return () if model.symbols.parameters[name].is_positive else (
             f"for: {name}: not every condition here is written in {name}: some are in {others} (of either sign, "
             f"{name} is split only where an answer exists, |{name}| ≥ its critical value, not yet where a stability "
             "or a mode changes)",)
     return (f"for: {name}: no condition here is written in {name} (it is not in them, or it splits none of them "
             f"over its whole range for every value of the others: an assumption that keeps its critical value "
             f"positive, or values for the others, may let it); they are written in {others}",)
-
-
-def _positive_for(question: Question, model: Model) -> bool:
-    """Whether the parameter a question's ``for:`` names is positive (True without one)."""
-    name = getattr(question.options, "for_parameter", None)
-    return name is None or model.symbols.parameters[name].is_positive is True
 
 
 USES_T = frozenset({QuestionKind.EOM, QuestionKind.MODES, QuestionKind.IMPACT, QuestionKind.ENERGY,
