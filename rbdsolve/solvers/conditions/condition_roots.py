@@ -22,7 +22,7 @@ from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.solvers.conditions.polynomial import plain_linear_root, trig_transcendental
+from rbdsolve.solvers.conditions.polynomial import plain_linear_root, trig_transcendental, under_long_radical
 from rbdsolve.solvers.conditions.signs import symbolic_sign
 
 SAMPLES = 8
@@ -55,6 +55,18 @@ def admissible(model, rng: random.Random, leave: tuple = (), angles: dict = {}) 
     return admissible_sample(kept, model.symbols, rng, fixed=given, symbols=symbols, tries=200, ranges=angles)
 
 
+# A root longer than this is no critical value: a disk on an incline held by a spring of
+# natural length to a point off its line has N linear in k, but its root k_c ran to 7 345
+# operations (the spring's radical at the state), and testing it at the eight samples
+# took 17 s of the exact route's share (a new user's file: 30 s, then the numeric route).
+LONG_ROOT_OPS = 400
+
+
+def _long(roots) -> bool:
+    """Is any root longer than LONG_ROOT_OPS operations (as solved, or tidied)?"""
+    return any(sp.count_ops(r) > LONG_ROOT_OPS for r in roots)
+
+
 def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Expr] | None:
     """The roots in p of f's numerator and denominator strictly inside p's range
     ((0, ∞), or an angle's, turned into it by whole turns), in increasing order; None
@@ -62,14 +74,19 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
     low, high = angles.get(p, (sp.Integer(0), sp.oo))
     numerator, denominator = quotient(f)
     factors = [factor for factor in (numerator, denominator) if factor.has(p)]
-    if any(_under_long_radical(factor, p) or _under_two_radicals(factor, p) or trig_transcendental(factor, p)
+    if any(under_long_radical(factor, p) or _under_two_radicals(factor, p) or trig_transcendental(factor, p)
            or _in_absolute_value(factor, p) or _under_an_inverse(factor, p) for factor in factors):
         # sympy's solve squares the radicals away, searches a transcendental one, or splits |…| into
         # cases: minutes (issue 37), and roots under conditions of their own; decided by the structure
         return None
     try:
-        found = {tidy(r): factor for factor in factors for r in _roots_in(factor, p)}
+        solved = [(r, factor) for factor in factors for r in _roots_in(factor, p)]
     except (NotImplementedError, ValueError):
+        return None
+    if _long(r for r, _ in solved):
+        return None  # no critical value a reader can use, and seconds to test at each sample
+    found = {tidy(r): factor for r, factor in solved}
+    if _long(found):
         return None
     points = [admissible(model, random.Random(21 + k), (p,), angles) for k in range(SAMPLES)]
     if None in points:
@@ -91,7 +108,7 @@ def parameter_roots(f: sp.Expr, p: sp.Symbol, angles: dict, model) -> list[sp.Ex
         if len(turns) != 1 or None in turns:
             return None
         terms = sp.Add.make_args(sp.expand(found[r]))
-        roots_of_it = {_vanishes_at(terms, p, r, point) for point in points}
+        roots_of_it = {vanishes_at(terms, p, r, point) for point in points}
         if roots_of_it == {False}:
             continue  # a root of the equation squared only (the radical's other sign)
         if roots_of_it != {True}:
@@ -154,7 +171,28 @@ def _roots_in(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, ...]:
     return tuple(_solved(factor, p))
 
 
-def _vanishes_at(terms: tuple[sp.Expr, ...], p: sp.Symbol, root: sp.Expr, point: dict) -> bool:
+def radical_roots(expr: sp.Expr, x: sp.Symbol, model) -> list[sp.Expr]:
+    """The roots in x of expr, where x stands under a radical: sympy's solve without its
+    checks, and those of the equation squared only (the radical's other sign) dropped: a
+    root is kept unless, at every sample point, it is a real number where expr is not
+    zero. sympy's checksol ran simplify on each root for 3–10 s (a hoop on an incline
+    held by a spring of natural length to a point above it: N ∝ g m √Q + k l₀² − k l₀ √Q,
+    Q quadratic in x), and kept the roots it could not decide, as this does. (solve's
+    own simplify of the roots stays: tidy wrote (g m − k l₀)² expanded.)"""
+    roots = sp.solve(expr, x, check=False)
+    points = [point for point in (admissible(model, random.Random(21 + k)) for k in range(SAMPLES))
+              if point is not None]
+    terms = sp.Add.make_args(sp.expand(expr))
+    return [r for r in roots
+            if not points or not all(_real_at(r, point) and not vanishes_at(terms, x, r, point) for point in points)]
+
+
+def _real_at(root: sp.Expr, point: dict) -> bool:
+    z = complex(sp.N(root.xreplace(point), 20))
+    return abs(z.imag) <= 1e-12 * max(1.0, abs(z.real))
+
+
+def vanishes_at(terms: tuple[sp.Expr, ...], p: sp.Symbol, root: sp.Expr, point: dict) -> bool:
     """Is the factor, the sum of ``terms`` (expanded), zero at the root, at one sample
     point, to 20 digits of its terms' size? Squaring keeps every root and adds the
     radical's other sign's."""
@@ -335,17 +373,6 @@ def _formula(polynomial: sp.Poly) -> list[sp.Expr]:
     if sum(found.values()) != polynomial.degree():
         raise NotImplementedError(f"no roots found of {polynomial.as_expr()}")
     return list(found)
-
-
-RADICAL_OPS = 40  # a longer expression with p under a radical is not given to sympy's solve
-
-
-def _under_long_radical(expr: sp.Expr, p: sp.Symbol) -> bool:
-    """Does p stand under a radical (a fractional power) in an expression longer than
-    RADICAL_OPS operations? Two springs of natural length on an inverted rod give
-    √(4a² + d²) beside a² k: solving that for a ran for minutes."""
-    radical = any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(p) for w in expr.atoms(sp.Pow))
-    return radical and sp.count_ops(expr) > RADICAL_OPS
 
 
 def _under_two_radicals(expr: sp.Expr, p: sp.Symbol) -> bool:

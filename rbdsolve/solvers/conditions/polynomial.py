@@ -162,6 +162,24 @@ def trig_transcendental(expr: sp.Expr, x: sp.Symbol) -> bool:
     return incommensurate or trig_mixed(expr, x)
 
 
+RADICAL_OPS = 40  # a longer expression with x under a radical is not given to sympy's solve
+
+
+def under_long_radical(expr: sp.Expr, x: sp.Symbol) -> bool:
+    """Does x stand under a radical (a fractional power) in an expression longer than
+    RADICAL_OPS operations? sympy's solve squares the radical away and checks each root
+    with simplify: minutes (issue 37). Two springs of natural length on an inverted rod
+    give √(4a² + d²) beside a² k (solving for a); a disk rolling on an incline held by a
+    spring of natural length to a point off its line gives N(x) with
+    √(x² − 2 a x cos α − 2 b x sin α + …) in it (solving N = 0 for x)."""
+    return under_radical(expr, x) and sp.count_ops(expr) > RADICAL_OPS
+
+
+def under_radical(expr: sp.Expr, x: sp.Symbol) -> bool:
+    """Does x stand under a radical (a fractional power) in expr?"""
+    return any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(x) for w in expr.atoms(sp.Pow))
+
+
 LONG_LINEAR_OPS = 200  # a longer linear polynomial over sympy's EX domain: its root is not simplified
 
 

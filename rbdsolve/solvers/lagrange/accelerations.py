@@ -114,10 +114,20 @@ def state_values(model: Model, instant: Instant) -> dict[sp.Symbol, sp.Expr]:
     return table
 
 
+# A longer expression at a state is tidied, not run through sympy's simplify: every
+# exam's force at a state is shorter (the longest in problems/ and the new users' files,
+# 119); a disk on an incline held by a spring of natural length to a point off its line
+# has 483 (the spring's radical at the state with every parameter open), 2 s of simplify.
+AT_STATE_SIMPLIFY_OPS = 150
+
+
 def at_state(expr: sp.Expr, table: dict) -> sp.Expr:
-    """An expression of the state put at the state, simplified (a few terms: cheap), its
-    roots of squares taken (a spring's length √(h² + 2 h l cos θ + l²) at θ = 0 is h + l)."""
-    return sp.radsimp(roots_as_absolute(sp.simplify(sp.sympify(expr).xreplace(table))))
+    """An expression of the state put at the state, simplified (a few terms: cheap; a
+    long one tidied, ``AT_STATE_SIMPLIFY_OPS``), its roots of squares taken (a spring's
+    length √(h² + 2 h l cos θ + l²) at θ = 0 is h + l)."""
+    at = sp.sympify(expr).xreplace(table)
+    shorter = sp.simplify(at) if sp.count_ops(at) <= AT_STATE_SIMPLIFY_OPS else tidy(at)
+    return sp.radsimp(roots_as_absolute(shorter))
 
 
 def state_relations(model: Model, instant: Instant) -> tuple[Relation, ...]:

@@ -31,7 +31,8 @@ from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.first_zero import reaches
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
-from rbdsolve.solvers.conditions.polynomial import trig_transcendental
+from rbdsolve.solvers.conditions.condition_roots import radical_roots
+from rbdsolve.solvers.conditions.polynomial import trig_transcendental, under_long_radical, under_radical
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 from rbdsolve.form.zero import simplifies_to_zero
 
@@ -48,13 +49,14 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
     each |u| is taken as u before the numerator is read, so that the ±1 cancels. A
     numerator that holds q both inside and outside sin and cos (a slab rolling on a
     drum: θ³ sin θ beside θ² cos θ), or sines of incommensurate multiples of q (a
-    half-disk on a drum: sin(r θ/(R + r)) beside cos θ) has no closed-form zeros: None,
-    not a search by sympy's solve (minutes, issue 37). Only real roots count."""
+    half-disk on a drum: sin(r θ/(R + r)) beside cos θ), or q under a radical in a long
+    one (a spring of natural length to a point off a disk's line) has no closed-form
+    zeros: None, not a search by sympy's solve (minutes, issue 37). Only real roots count."""
     q = model.q[0]
     top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
     if not top.has(q):
         return []
-    if trig_transcendental(top, q):
+    if trig_transcendental(top, q) or under_long_radical(top, q):
         return None
     read = [(f, _implicit(f, q, model)) for f, _ in sp.factor_list(top)[1] if f.has(q)]
     implicit = [w for _, w in read if w is not None]
@@ -72,9 +74,9 @@ def _closed_zeros(top: sp.Expr, q: sp.Symbol, model: Model) -> list[sp.Relationa
     for f in (sp.cos, sp.sin):
         swapped = top.xreplace({f(q): c})
         if not swapped.has(q):
-            roots = [r for r in _real_roots(swapped, c) if _within_one(r, model)]
+            roots = [r for r in _real_roots(swapped, c, model) if _within_one(r, model)]
             return [sp.Eq(f(model.to_time(q)), r) for r in roots]
-    return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q)]
+    return [sp.Eq(model.to_time(q), r) for r in _real_roots(top, q, model)]
 
 
 def _implicit(factor: sp.Expr, q: sp.Symbol, model: Model) -> sp.Relational | None:
@@ -110,10 +112,11 @@ def is_implicit(where: sp.Relational) -> bool:
     return where.rhs == 0 and not isinstance(where.lhs, (sp.sin, sp.cos)) and not where.lhs.is_Function
 
 
-def _real_roots(expr: sp.Expr, x: sp.Symbol) -> list[sp.Expr]:
-    """sympy's roots of expr in x, those that may be real (no Piecewise, no i, no NaN)."""
+def _real_roots(expr: sp.Expr, x: sp.Symbol, model: Model) -> list[sp.Expr]:
+    """sympy's roots of expr in x (``radical_roots`` where x stands under a radical),
+    those that may be real (no Piecewise, no i, no NaN)."""
     try:
-        roots = sp.solve(expr, x)
+        roots = radical_roots(expr, x, model) if under_radical(expr, x) else sp.solve(expr, x)
     except NotImplementedError:
         return []
     return [r for r in roots if not r.has(sp.Piecewise, sp.I, sp.nan, sp.zoo) and r.is_real is not False]

@@ -18,7 +18,7 @@ import pytest
 import sympy as sp
 
 from rbdsolve.solvers.conditions.condition_roots import (_in_sine_or_cosine, _roots_in, _squared_once,
-                                                          _under_two_radicals, _vanishes_at)
+                                                          _under_two_radicals, radical_roots, vanishes_at)
 
 from conftest import counted_calls
 
@@ -206,8 +206,8 @@ def test_one_radical_is_squared_away_and_its_other_sign_dropped(h, L0, k, m, has
     assert _squared_once(F, l) is not None
     roots = _roots_in(F, l)
     terms = sp.Add.make_args(sp.expand(F))
-    kept = sorted(float(r) for r in roots if _vanishes_at(terms, l, r, {}))
-    dropped = [r for r in roots if not _vanishes_at(terms, l, r, {})]
+    kept = sorted(float(r) for r in roots if vanishes_at(terms, l, r, {}))
+    dropped = [r for r in roots if not vanishes_at(terms, l, r, {})]
     f = sp.lambdify(l, F, "math")
     grid = np.linspace(1e-9, 50, 50001)
     values = [f(x) for x in grid]
@@ -323,3 +323,44 @@ def test_a_parameter_inside_an_atan2_is_left_undecided_without_solve(monkeypatch
     beta = sp.pi / 5
     f = sp.cos(beta - sp.atan2(a * c * sp.sin(beta), b + a * c * sp.cos(beta))) - sp.Rational(1, 2)
     assert condition_roots.parameter_roots(f, c, {}, model) is None
+
+
+def test_a_root_too_long_to_read_is_no_critical_value(monkeypatch) -> None:
+    """A disk on an incline held by a spring of natural length to a point off its line
+    had N linear in k, but with every parameter open its root k_c ran to 7 345
+    operations, tested at each sample for 2 s: a root of more than LONG_ROOT_OPS
+    operations leaves the parameter undecided at once (None: no condition printed);
+    a short one is still a critical value (control)."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+    from rbdsolve.solvers.conditions import condition_roots
+
+    model = build_model(load_text(SCENE))
+    a, b, c = (model.symbols.parameters[n] for n in "abc")
+    long_root = sum(a**k * b / (b + k * a) for k in range(1, 90))
+    assert sp.count_ops(long_root) > condition_roots.LONG_ROOT_OPS
+    monkeypatch.setattr(condition_roots, "_roots_in", lambda factor, p: (long_root,))
+    assert condition_roots.parameter_roots(c - long_root, c, {}, model) is None
+    monkeypatch.setattr(condition_roots, "_roots_in", lambda factor, p: (a,))
+    assert condition_roots.parameter_roots(c - a, c, {}, model) == [a]
+
+
+def test_radical_roots_drop_the_squares_own_roots_and_keep_the_undecided() -> None:
+    """Roots in x with x under a radical, without sympy's checks (which ran simplify for
+    seconds), each judged at the samples. By hand, a, b > 0:
+    √(x² + a²) + a is never 0 (both terms positive), but squared, x² + a² = a², gives
+    x = 0: dropped. √(x² + a²) − 2a = 0 at x² = 3a²: both ±√3 a kept. b √(x² + a²) − a²
+    = 0 at x² = a⁴/b² − a², real where a > b only: kept (undecided, as sympy keeps it)."""
+    from rbdsolve.model.build import build_model
+    from rbdsolve.problem import load_text
+
+    model = build_model(load_text(SCENE))
+    a, b = model.symbols.parameters["a"], model.symbols.parameters["b"]
+    x = sp.Dummy("x", real=True)
+    assert radical_roots(sp.sqrt(x**2 + a**2) + a, x, model) == []
+    found = radical_roots(sp.sqrt(x**2 + a**2) - 2 * a, x, model)
+    assert sorted(found, key=lambda r: float(r.subs(a, 1))) == [-sp.sqrt(3) * a, sp.sqrt(3) * a]
+    undecided = radical_roots(b * sp.sqrt(x**2 + a**2) - a**2, x, model)
+    assert len(undecided) == 2
+    for r in undecided:
+        assert sp.simplify(r**2 - (a**4 / b**2 - a**2)) == 0

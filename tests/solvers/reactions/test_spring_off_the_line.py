@@ -1,0 +1,90 @@
+"""A disk rolling on an incline, held by a spring of natural length to a point off its
+line (a new user's trial): the exact route ran out of its 30 s share — the condition
+N ≥ 0 solved for k gave a root of 7 345 operations, tested at eight samples for 17 s,
+and N = 0 along x went to sympy's solve with the spring's radical in it — and the
+numeric route then answered at the release only. Now the exact route answers, the
+friction over the whole motion with it.
+
+By hand, with e_t = (cos α, sin α), e_n = (−sin α, cos α), the contact point x e_t
+and the centre P = x e_t + r e_n, the spring's pull on the disk S = k (ℓ − l₀)(A − P)/ℓ,
+ℓ = |A − P|:
+
+    T = ½ m ẋ² + ½ (½ m r²)(ẋ/r)² = ¾ m ẋ²,   V = m g P_y + ½ k (ℓ − l₀)²
+    (3/2) m ẍ = −m g sin α + S·e_t            (Lagrange)
+    along e_t:  m ẍ = −m g sin α + S·e_t + F  ⇒  F = −½ m ẍ
+    along e_n:  0 = −m g cos α + S·e_n + N    ⇒  N = m g cos α − S·e_n
+
+μ(x) = |F|/N, largest over the way from the release x₀ to the turning point where
+V(x) = V(x₀): scipy's brentq and a dense sample, apart from rbdsolve.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import rbdsolve
+
+DISK = """\
+title: a disk on an incline tied by a spring to a point off the slope
+parameters: [m, r, k, l0, a, b, alpha, x0, g]
+values: {m: 2 kg, r: 10 cm, k: 40 N/m, l0: 30 cm, a: 1.5 m, b: 1 m, alpha: 25 deg, x0: 2.5 m,
+         g: 9.81 m/s^2}
+coordinates: [x]
+gravity: [0, -g]
+points:
+  A: [a, b]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {line: {through: [0, 0], angle: alpha}}, along: x}
+springs:
+  s: {stiffness: k, between: [disk, A], natural_length: l0}
+questions:
+  - reactions: {forces: [C], from_rest: {x: x0}}
+"""
+
+
+def _by_hand() -> tuple[float, float, float, float]:
+    """(μ at the release, the largest μ over the motion, where, the turning point)."""
+    m, r, k, l0, g, x0 = 2.0, 0.1, 40.0, 0.3, 9.81, 2.5
+    alpha, anchor = math.radians(25), np.array([1.5, 1.0])
+    e_t, e_n = np.array([math.cos(alpha), math.sin(alpha)]), np.array([-math.sin(alpha), math.cos(alpha)])
+
+    def centre(x):
+        return x * e_t + r * e_n
+
+    def pull(x):
+        d = anchor - centre(x)
+        length = math.hypot(*d)
+        return k * (length - l0) * d / length
+
+    def mu(x):
+        xdd = (-m * g * math.sin(alpha) + pull(x) @ e_t) / (1.5 * m)
+        return abs(-0.5 * m * xdd) / (m * g * math.cos(alpha) - pull(x) @ e_n)
+
+    def V(x):
+        return m * g * centre(x)[1] + 0.5 * k * (math.hypot(*(anchor - centre(x))) - l0) ** 2
+
+    turn = brentq(lambda x: V(x) - V(x0), -1.0, x0 - 1e-6)
+    xs = np.linspace(turn, x0, 20001)
+    assert all(V(x) < V(x0) for x in xs[1:-1])  # nothing turns it back sooner
+    mus = [mu(x) for x in xs]
+    i = int(np.argmax(mus))
+    return mu(x0), mus[i], xs[i], turn
+
+
+def test_the_exact_route_answers_with_the_friction_over_the_motion(tmp_path) -> None:
+    path = tmp_path / "disk.yaml"
+    path.write_text(DISK)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    at_release, largest, where, turn = _by_hand()
+    assert solution.route == "exact"
+    assert solution.values["least_friction_at"]["C"] == pytest.approx(at_release, rel=1e-9)
+    found = solution.answers.least_friction_over["C"]
+    assert found.mu == pytest.approx(largest, rel=1e-9)
+    assert found.at["x"] == pytest.approx(where, abs=1e-6)  # the turning point itself, here
+    assert found.until["x"] == pytest.approx(turn, abs=1e-9) and found.lost is None
