@@ -23,7 +23,7 @@ from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, reaches
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
-from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, zeros
+from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, no_closed_form, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
@@ -229,8 +229,9 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
         return answers, [energy_step(model, e, True)], [], said if to else ()
     name = model.coordinate_names()[0]
     by_support = {s.name: {str(c.symbol): model.to_time(values[c.symbol]) for c in s.components} for s in supports}
-    found = {str(c.symbol): zeros(values[c.symbol], model) for s in supports for c in s.components if c.one_sided}
-    unsolved = tuple(k for k, where in found.items() if where is None)
+    one_sided = {str(c.symbol): c.symbol for s in supports for c in s.components if c.one_sided}
+    found = {k: zeros(values[symbol], model) for k, symbol in one_sided.items()}
+    unsolved = {k: no_closed_form(values[one_sided[k]], model) for k, where in found.items() if where is None}
     lost = {k: tuple(where or ()) for k, where in found.items()}
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
@@ -246,9 +247,8 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
                        first_zero=(first := _first_zeros(model, supports, values, e.rate_squared, table)),
                        least_friction_over=_largest_frictions(model, supports, values, e.rate_squared, table, first))
     steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
-    warnings = tuple(f"{k} = 0 along the motion has no closed-form solution (transcendental in "
-                     f"{to_unicode(model.readable(model.q[0]))}: no substitution makes it a polynomial): where it is "
-                     "reached, if it is, is not given" for k in unsolved) + _unbounded(supports, first, name)
+    warnings = tuple(f"{k} = 0 along the motion has no closed-form solution ({why}): where it is reached, if "
+                     "it is, is not given" for k, why in unsolved.items()) + _unbounded(supports, first, name)
     if to:
         answers, more = _there(model, supports, values, e.rate_squared, table[model.q[0]], to[name], answers)
         passed = _lost_before(model, answers.first_zero, table[model.q[0]], to[name])

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
+from rbdsolve.form.printers import to_unicode
 from rbdsolve.form.tidy import tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import memoized
@@ -53,7 +54,7 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
     one (a spring of natural length to a point off a disk's line) has no closed-form
     zeros: None, not a search by sympy's solve (minutes, issue 37). Only real roots count."""
     q = model.q[0]
-    top = sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
+    top = _numerator(value)
     if not top.has(q):
         return []
     if trig_transcendental(top, q) or under_long_radical(top, q):
@@ -62,6 +63,20 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
     implicit = [w for _, w in read if w is not None]
     rest = sp.Mul(*(f for f, w in read if w is None))
     return [*_closed_zeros(rest, q, model), *implicit] if rest.has(q) else implicit
+
+
+def _numerator(value: sp.Expr) -> sp.Expr:
+    """The numerator of a force as zeros() reads it, each |u| taken as u."""
+    return sp.fraction(tidy_fraction(value.replace(sp.Abs, lambda u: u)))[0]
+
+
+def no_closed_form(value: sp.Expr, model: Model) -> str:
+    """Why zeros() gives no closed form for ``value`` = 0, in a reader's words."""
+    q = model.q[0]
+    x = to_unicode(model.readable(q))
+    if under_radical(_numerator(value), q):
+        return f"{x} under a radical: squared away, a polynomial of high degree"
+    return f"transcendental in {x}: no substitution makes it a polynomial"
 
 
 IMPLICIT_DEGREE = 3  # a factor of this degree in sin q (cos q) is left as its equation

@@ -5,6 +5,8 @@ constant, the forces along the motion, where a contact is lost and the least μ.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
@@ -160,7 +162,9 @@ def _implicit_note(where: sp.Relational, model: Model) -> str:
 
 
 def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict,
-                unsolved: tuple[str, ...] = ()) -> list[st.Step]:
+                unsolved: Mapping[str, str]) -> list[st.Step]:
+    """The forces along the motion, and for each push or tension where it is lost, or
+    why that is not given (``unsolved``: its name -> the reason, limits.no_closed_form)."""
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
@@ -183,9 +187,8 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                                            "q̇² ≥ 0 there) only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
         elif name in unsolved:
-            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion (it is transcendental in "
-                                 "the coordinate: no substitution makes it a polynomial): where it is reached, if it "
-                                 "is, is not given."))
+            steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion ({unsolved[name]}): "
+                                 "where it is reached, if it is, is not given."))
         else:
             holds = "the string stays taut" if name in strings else "the contact holds"
             steps.append(st.note(f"{name} does not reach zero along the motion: {holds} throughout."))

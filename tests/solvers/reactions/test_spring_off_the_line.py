@@ -88,3 +88,6 @@ def test_the_exact_route_answers_with_the_friction_over_the_motion(tmp_path) -> 
     assert found.mu == pytest.approx(largest, rel=1e-9)
     assert found.at["x"] == pytest.approx(where, abs=1e-6)  # the turning point itself, here
     assert found.until["x"] == pytest.approx(turn, abs=1e-9) and found.lost is None
+    # N = 0 along x is searched numerically; the warning says why it has no closed form
+    (said,) = [w for w in solution.warnings if "no closed-form solution" in w]
+    assert "x under a radical" in said and "transcendental" not in said
