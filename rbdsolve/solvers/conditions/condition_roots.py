@@ -183,13 +183,17 @@ def radical_roots(expr: sp.Expr, x: sp.Symbol, model) -> list[sp.Expr]:
     points = [point for point in (admissible(model, random.Random(21 + k)) for k in range(SAMPLES))
               if point is not None]
     terms = sp.Add.make_args(sp.expand(expr))
-    return [r for r in roots
-            if not points or not all(_real_at(r, point) and not vanishes_at(terms, x, r, point) for point in points)]
+    return [r for r in roots if not points or not all(_no_root_at(terms, x, r, point) for point in points)]
 
 
-def _real_at(root: sp.Expr, point: dict) -> bool:
-    z = complex(sp.N(root.xreplace(point), 20))
-    return abs(z.imag) <= 1e-12 * max(1.0, abs(z.real))
+def _no_root_at(terms: tuple[sp.Expr, ...], x: sp.Symbol, root: sp.Expr, point: dict) -> bool:
+    """Is the root, at one sample point, a real number where the sum of ``terms`` is not
+    zero? False where that cannot be said (no number there)."""
+    try:
+        z = complex(sp.N(root.xreplace(point), 20))
+        return abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) and not vanishes_at(terms, x, root, point)
+    except TypeError:
+        return False
 
 
 def vanishes_at(terms: tuple[sp.Expr, ...], p: sp.Symbol, root: sp.Expr, point: dict) -> bool:

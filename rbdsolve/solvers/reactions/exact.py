@@ -11,7 +11,7 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.form.printers import unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model

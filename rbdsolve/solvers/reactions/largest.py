@@ -10,10 +10,10 @@ The places reached run from the release q₀ the way the motion sets off (first_
     over a whole turn, where it goes round and repeats,
 
 and μ is sampled at SAMPLES + 1 evenly spaced places of that span, its largest sample
-refined by a golden-section search between the sample's neighbours. Where the contact's own N reaches zero on the way, μ grows without
-bound towards that place: no number is given (the first zero says where). A peak
-narrower than a sample's spacing (1/240 of the span) can be missed, as first_zero's
-zeros can (docs/failure-edges.md).
+refined by a golden-section search between the sample's neighbours. Where the
+contact's own N reaches zero on the way, μ grows without bound towards that place: no
+number is given (the first zero says where). A peak narrower than a sample's spacing
+(1/240 of the span) can be missed, as first_zero's zeros can (docs/failure-edges.md).
 """
 
 from __future__ import annotations
