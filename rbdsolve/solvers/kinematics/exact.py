@@ -17,6 +17,7 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
+from rbdsolve.form.roots import over_one_root
 from rbdsolve.form.tidy import has_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
@@ -96,7 +97,8 @@ def motion(name: str, model: Model) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
 
 
 def _vector(m: sp.Matrix, state: dict, model: Model) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
-    return tuple(model.to_time(tidy(sp.expand(x.xreplace(state)))) for x in m)  # type: ignore[return-value]
+    """Each component at the state, tidied, one square root's terms over one denominator."""
+    return tuple(model.to_time(over_one_root(tidy(sp.expand(x.xreplace(state))))) for x in m)  # type: ignore[return-value]
 
 
 def _norm(m: sp.Matrix, state: dict) -> sp.Expr:
@@ -107,7 +109,12 @@ def _norm(m: sp.Matrix, state: dict) -> sp.Expr:
 def _at_state(name: str, rva, state: dict, model: Model) -> PointMotion:
     r, v, a = rva
     return PointMotion(name, _vector(r, state, model), _vector(v, state, model), _vector(a, state, model),
-                       model.to_time(tidy(_norm(v, state))))
+                       model.to_time(_speed(v, state)))
+
+
+def _speed(v: sp.Matrix, state: dict) -> sp.Expr:
+    """|v| = √(v·v), the square tidied and, where it holds one root, over one denominator."""
+    return sp.sqrt(over_one_root(tidy(sp.expand(v.dot(v).xreplace(state)))))
 
 
 def _turning(name: str, state: dict, model: Model) -> BodyMotion:
