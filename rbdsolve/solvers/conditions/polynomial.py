@@ -180,6 +180,11 @@ def under_radical(expr: sp.Expr, x: sp.Symbol) -> bool:
     return any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(x) for w in expr.atoms(sp.Pow))
 
 
+def _has_radical(expr: sp.Expr) -> bool:
+    """Does expr hold a radical of a sum (a fractional power whose base is a sum)?"""
+    return any(w.exp.is_Rational and not w.exp.is_Integer and w.base.is_Add for w in expr.atoms(sp.Pow))
+
+
 LONG_LINEAR_OPS = 200  # a longer linear polynomial over sympy's EX domain: its root is not simplified
 
 
@@ -188,10 +193,15 @@ def plain_linear_root(polynomial: sp.Poly) -> sp.Expr | None:
     atan2 of the parameters), else None (sympy's roots then, whose form the answers keep).
     sympy's roots runs ``simplify`` on such a root, which did not end within a minute
     for a hoop rolling in a track on an elastic cord with m and k open, once for its λ
-    and once for a condition's root in r (a new user's trial); −b/a is no less exact."""
+    and once for a condition's root in r (a new user's trial); −b/a is no less exact.
+    Likewise a shorter one with a radical in it, past RADICAL_OPS: a cylinder on an
+    incline held by a spring of natural length to a point off its line, N ≥ 0 solved
+    for k (173 operations, the spring's length at the release), where simplify ran from
+    20 s to minutes as the hash seed ordered its terms (a new user's trial)."""
     if polynomial.degree() != 1 or not polynomial.get_domain().is_EX:
         return None
-    if sp.count_ops(polynomial.as_expr()) <= LONG_LINEAR_OPS:
+    size = sp.count_ops(polynomial.as_expr())
+    if size <= LONG_LINEAR_OPS and not (size > RADICAL_OPS and _has_radical(polynomial.as_expr())):
         return None
     a, b = polynomial.all_coeffs()
     return -b / a

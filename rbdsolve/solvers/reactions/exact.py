@@ -76,25 +76,71 @@ def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | N
     there = {x: at_state(v, table) for x, v in forces.items()}  # once, not once per support
     at = {s.name: _reaction(s, there, table) for s in supports}
     limits = {s.name: holds(s, at[s.name].components, model) for s in supports}
+    let_go = _let_go(model, supports, at)
     answers = _replace(answers, at={k: _timeless(r, model) for k, r in at.items()},
                        holds_when={k: model.to_time(h.condition) for k, h in limits.items()},
-                       least_friction_at=_least_friction_at(model, supports, at, limits))
+                       least_friction_at=_least_friction_at(model, supports, at, limits, let_go))
     criticals = [c for h in limits.values() for c in h.criticals]
     steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
     warnings: tuple[str, ...] = ()
     if instant.from_rest:
         answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers, to)
         steps, criticals = steps + more, criticals + found
-    return answers, steps, criticals, warnings
+        kept = {k: v for k, v in (answers.least_friction_over or {}).items() if k not in let_go}
+        answers = _replace(answers, least_friction_over=kept or None)
+    return answers, steps, criticals, _let_go_warnings(supports, let_go, instant.from_rest) + warnings
 
 
-def _least_friction_at(model: Model, supports, at: dict[str, Reaction], limits: dict) -> dict[str, sp.Expr] | None:
-    """μ ≥ |F|/N at the state asked, per rolling contact that pushes there (``least_mu``):
-    the number an exam asks for ("the least coefficient of friction at release"), which
-    ``holds_when`` holds only inside a condition."""
+def _let_go(model: Model, supports, at: dict[str, Reaction]) -> dict[str, tuple[str, float]]:
+    """With every value given, each support whose push or tension is negative at the
+    state asked: its name -> (that component, its value). It does not hold there, and
+    the body leaves it at once (a disk released inside a track above the level of its
+    centre: N = m g cos θ₀ < 0). Negative beyond rounding: 10⁻⁹ of the largest force
+    there."""
+    if missing_values(model):
+        return {}
+    given = dict(model.values)
     found = {}
     for s in supports:
-        if s.how is not How.ROLLING or limits[s.name].condition is sp.false:
+        numbers = {k: _real(v.xreplace(given)) for k, v in at[s.name].components.items()}
+        scale = max((abs(x) for x in numbers.values() if x is not None), default=0.0)
+        for c in s.components:
+            x = numbers.get(str(c.symbol))
+            if c.one_sided and x is not None and x < -1e-9 * scale:
+                found[s.name] = (str(c.symbol), x)
+    return found
+
+
+def _real(value: sp.Expr) -> float | None:
+    try:
+        z = complex(sp.N(value, 30))
+    except TypeError:
+        return None
+    return z.real if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) else None
+
+
+def _let_go_warnings(supports, let_go: dict[str, tuple[str, float]], from_rest: bool) -> tuple[str, ...]:
+    """A warning per support that does not hold at the state asked (``_let_go``)."""
+    how = {s.name: s.how for s in supports}
+    after = (", and the forces given along the motion and where it gets to are those of a support that holds, "
+             "not the motion's") if from_rest else ""
+    out = []
+    for k, (name, x) in let_go.items():
+        why = "the string is slack" if how[k] is How.STRING else f"the support at {k} cannot pull"
+        out.append(f"{name} = {x:.6g} < 0 at the state asked: {why}, so the body leaves it at once; no friction "
+                   f"is given for it{after}")
+    return tuple(out)
+
+
+def _least_friction_at(model: Model, supports, at: dict[str, Reaction], limits: dict,
+                       let_go: dict) -> dict[str, sp.Expr] | None:
+    """μ ≥ |F|/N at the state asked, per rolling contact that pushes there (``least_mu``):
+    the number an exam asks for ("the least coefficient of friction at release"), which
+    ``holds_when`` holds only inside a condition; none where, at the values, it does not
+    push there (``let_go``)."""
+    found = {}
+    for s in supports:
+        if s.how is not How.ROLLING or limits[s.name].condition is sp.false or s.name in let_go:
             continue
         N, F = (at[s.name].components[str(c.symbol)] for c in s.components)
         if not simplifies_to_zero(N):

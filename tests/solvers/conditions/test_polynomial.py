@@ -90,6 +90,32 @@ def test_a_long_linear_polynomial_over_ex_has_its_root_without_simplify(monkeypa
     assert plain_linear_root(sp.Poly(x**2 - g, x)) is None  # not linear
 
 
+def test_a_linear_root_with_a_radical_in_it_is_minus_b_over_a_without_simplify(monkeypatch):
+    """A cylinder on an incline held by a spring of natural length to a point off its
+    line: N ≥ 0 at the release solved for k is linear in k with the spring's length
+    √(a² + 2ar sin α − 2ax cos α + b² − …) in both coefficients, 173 operations; sympy's
+    roots ran simplify on −b/a for 20 s to minutes, as the hash seed ordered its terms
+    (a new user's trial). Past RADICAL_OPS with a radical of a sum: −b/a, by hand."""
+    import importlib
+
+    from rbdsolve.solvers.conditions.polynomial import RADICAL_OPS, plain_linear_root
+
+    from conftest import counted_calls
+
+    k, m, g, r, l0, a, b, alpha = sp.symbols("k m g r l0 a b alpha", positive=True)
+    ell = sp.sqrt(a**2 + 2 * a * r * sp.sin(alpha) + b**2 - 2 * b * r * sp.cos(alpha) + r**2)
+    A = (ell - l0) * (b * sp.cos(alpha) - a * sp.sin(alpha) - r) / ell
+    B = -g * m * sp.cos(alpha) * ell + l0 * g * m
+    polynomial = sp.Poly(sp.expand(A * k * ell + B), k)
+    size = sp.count_ops(polynomial.as_expr())
+    assert polynomial.get_domain().is_EX and RADICAL_OPS < size <= 200
+    calls = counted_calls(monkeypatch, importlib.import_module("sympy.simplify.simplify"), "simplify")
+    root = plain_linear_root(polynomial)
+    assert not calls
+    assert sp.expand(polynomial.as_expr().subs(k, root) * polynomial.LC()) == 0 or \
+        sp.simplify(polynomial.as_expr().subs(k, root)) == 0
+
+
 p_, q_ = sp.symbols("p q", positive=True)
 
 
