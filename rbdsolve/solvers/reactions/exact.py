@@ -127,8 +127,8 @@ def _let_go_warnings(supports, let_go: dict[str, tuple[str, float]], from_rest: 
     out = []
     for k, (name, x) in let_go.items():
         why = "the string is slack" if how[k] is How.STRING else f"the support at {k} cannot pull"
-        out.append(f"{name} = {x:.6g} < 0 at the state asked: {why}, so the body leaves it at once; no friction "
-                   f"is given for it{after}")
+        friction = "; no friction is given for it" if how[k] is How.ROLLING else ""
+        out.append(f"{name} = {x:.6g} < 0 at the state asked: {why}, so the body leaves it at once{friction}{after}")
     return tuple(out)
 
 
