@@ -237,19 +237,27 @@ def _largest_frictions(model: Model, supports, values: dict, rate_squared: sp.Ex
                        first: dict[str, FirstZero] | None) -> dict[str, LargestFriction] | None:
     """With every parameter given a value: each rolling contact's least μ at its largest
     over the motion reached from rest, and where (largest.py), from its push's first
-    zero or the motion's turning back (``first``)."""
-    if not first or missing_values(model):
+    zero or the motion's turning back (``first``). Parameters left open may scale the
+    push and q̇² (``_unscaled``, as for ``first``) where μ = |F|/N holds none of them: a
+    disk rolling inside a track with its mass m open needs |sin θ|/(7 cos θ − 4 cos θ₀)
+    whatever m."""
+    if not first:
         return None
     given = dict(model.values)
     q, name = model.q[0], model.coordinate_names()[0]
-    start, v2 = float(table[q].xreplace(given)), rate_squared.xreplace(given)
+    start, v2 = float(table[q].xreplace(given)), _unscaled(rate_squared, given, q)
+    if v2 is None:
+        return None
     found = {}
     for s in supports:
         own = str(s.components[0].symbol)
         if s.how is not How.ROLLING or own not in first:
             continue
         push, friction = (values[c.symbol].xreplace(given) for c in s.components[:2])
-        largest = largest_friction(push, friction, own, first, v2, q, start, name)
+        ratio, push = sp.cancel(friction / push), _unscaled(push, given, q)
+        if push is None or not ratio.free_symbols <= {q}:
+            continue
+        largest = largest_friction(push, ratio * push, own, first, v2, q, start, name)
         if largest is not None:
             found[s.name] = largest
     return found or None

@@ -149,3 +149,33 @@ def test_where_the_contact_is_lost_on_the_way_no_largest_friction_is_given_and_t
     assert solution.answers.least_friction_over is None
     (said,) = [w for w in solution.warnings if "grows without bound" in w]
     assert f"θ = {lost:.6g}" in said
+
+
+DISK_IN_TRACK = """\
+parameters: [m, r, R, g]
+values: {r: 8 cm, R: 50 cm, g: 9.81 m/s^2}
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+questions:
+  - reactions: {forces: [C], from_rest: {theta: 40 deg}}
+"""
+
+
+def test_a_mass_left_open_does_not_keep_the_largest_friction_back(tmp_path) -> None:
+    """A disk rolling inside a track, its mass m open (a new user's trial): by hand,
+    N = m g (7 cos θ − 4 cos θ₀)/3 and F = −m g sin θ/3 along the motion, so
+    μ(θ) = |sin θ|/(7 cos θ − 4 cos θ₀) whatever m; d/dθ of sin θ/(7 cos θ − 4 cos θ₀)
+    is (7 − 4 cos θ₀ cos θ)/(…)² > 0, so over [−θ₀, θ₀] it is largest at the ends:
+    tan θ₀/3 at θ₀ = 40° (and −θ₀, where it turns back)."""
+    path = tmp_path / "disk.yaml"
+    path.write_text(DISK_IN_TRACK)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    found = solution.answers.least_friction_over["C"]
+    theta0 = math.radians(40)
+    assert found.mu == pytest.approx(math.tan(theta0) / 3, rel=1e-9)
+    assert abs(found.at["theta"]) == pytest.approx(theta0, abs=1e-6)
+    assert found.until["theta"] == pytest.approx(-theta0, abs=1e-9)
