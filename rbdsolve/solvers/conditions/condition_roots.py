@@ -22,7 +22,7 @@ from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.solvers.conditions.polynomial import plain_linear_root, trig_transcendental, under_long_radical
+from rbdsolve.solvers.conditions.polynomial import radical_linear_root, trig_transcendental, under_long_radical
 from rbdsolve.solvers.conditions.signs import symbolic_sign
 
 SAMPLES = 8
@@ -220,7 +220,7 @@ def _solved(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
         return _solved(radicand, p)
     if factor.is_polynomial(p):
         polynomial = sp.Poly(factor, p)
-        plain = plain_linear_root(polynomial)
+        plain = radical_linear_root(polynomial)
         if plain is not None:
             return [plain]
         if polynomial.degree() > 2:

@@ -188,20 +188,33 @@ def _has_radical(expr: sp.Expr) -> bool:
 LONG_LINEAR_OPS = 200  # a longer linear polynomial over sympy's EX domain: its root is not simplified
 
 
+def radical_linear_root(polynomial: sp.Poly) -> sp.Expr | None:
+    """−b/a for a x + b = 0 over sympy's EX domain with a radical of a sum in it, past
+    RADICAL_OPS operations, else ``plain_linear_root``'s answer: a condition's critical
+    value. A cylinder on an incline held by a spring of natural length to a point off
+    its line has N ≥ 0 solved for k linear in k, the spring's length in both
+    coefficients (173 operations), where sympy's roots ran simplify on −b/a from 20 s to
+    minutes as the hash seed ordered its terms (a new user's trial). (Not for the
+    modes' λ, whose form sympy's simplify keeps shorter: g √X/(2R (π (M + m) − √X)).)"""
+    plain = plain_linear_root(polynomial)
+    if plain is not None or polynomial.degree() != 1 or not polynomial.get_domain().is_EX:
+        return plain
+    expr = polynomial.as_expr()
+    if sp.count_ops(expr) <= RADICAL_OPS or not _has_radical(expr):
+        return None
+    a, b = polynomial.all_coeffs()
+    return -b / a
+
+
 def plain_linear_root(polynomial: sp.Poly) -> sp.Expr | None:
     """−b/a for a x + b = 0 with long coefficients over sympy's EX domain (radicals,
     atan2 of the parameters), else None (sympy's roots then, whose form the answers keep).
     sympy's roots runs ``simplify`` on such a root, which did not end within a minute
     for a hoop rolling in a track on an elastic cord with m and k open, once for its λ
-    and once for a condition's root in r (a new user's trial); −b/a is no less exact.
-    Likewise a shorter one with a radical in it, past RADICAL_OPS: a cylinder on an
-    incline held by a spring of natural length to a point off its line, N ≥ 0 solved
-    for k (173 operations, the spring's length at the release), where simplify ran from
-    20 s to minutes as the hash seed ordered its terms (a new user's trial)."""
+    and once for a condition's root in r (a new user's trial); −b/a is no less exact."""
     if polynomial.degree() != 1 or not polynomial.get_domain().is_EX:
         return None
-    size = sp.count_ops(polynomial.as_expr())
-    if size <= LONG_LINEAR_OPS and not (size > RADICAL_OPS and _has_radical(polynomial.as_expr())):
+    if sp.count_ops(polynomial.as_expr()) <= LONG_LINEAR_OPS:
         return None
     a, b = polynomial.all_coeffs()
     return -b / a

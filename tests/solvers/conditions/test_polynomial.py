@@ -90,7 +90,7 @@ def test_a_long_linear_polynomial_over_ex_has_its_root_without_simplify(monkeypa
     assert plain_linear_root(sp.Poly(x**2 - g, x)) is None  # not linear
 
 
-def test_a_linear_root_with_a_radical_in_it_is_minus_b_over_a_without_simplify(monkeypatch):
+def test_a_condition_linear_root_with_a_radical_in_it_is_minus_b_over_a_without_simplify(monkeypatch):
     """A cylinder on an incline held by a spring of natural length to a point off its
     line: N ≥ 0 at the release solved for k is linear in k with the spring's length
     √(a² + 2ar sin α − 2ax cos α + b² − …) in both coefficients, 173 operations; sympy's
@@ -98,7 +98,7 @@ def test_a_linear_root_with_a_radical_in_it_is_minus_b_over_a_without_simplify(m
     (a new user's trial). Past RADICAL_OPS with a radical of a sum: −b/a, by hand."""
     import importlib
 
-    from rbdsolve.solvers.conditions.polynomial import RADICAL_OPS, plain_linear_root
+    from rbdsolve.solvers.conditions.polynomial import RADICAL_OPS, plain_linear_root, radical_linear_root
 
     from conftest import counted_calls
 
@@ -110,10 +110,11 @@ def test_a_linear_root_with_a_radical_in_it_is_minus_b_over_a_without_simplify(m
     size = sp.count_ops(polynomial.as_expr())
     assert polynomial.get_domain().is_EX and RADICAL_OPS < size <= 200
     calls = counted_calls(monkeypatch, importlib.import_module("sympy.simplify.simplify"), "simplify")
-    root = plain_linear_root(polynomial)
+    root = radical_linear_root(polynomial)
     assert not calls
-    assert sp.expand(polynomial.as_expr().subs(k, root) * polynomial.LC()) == 0 or \
-        sp.simplify(polynomial.as_expr().subs(k, root)) == 0
+    b, a = polynomial.nth(0), polynomial.nth(1)
+    assert root == -b / a  # −b/a as it stands
+    assert plain_linear_root(polynomial) is None  # a modes' λ of this length keeps sympy's roots' form
 
 
 p_, q_ = sp.symbols("p q", positive=True)
