@@ -300,6 +300,20 @@ questions:
 """
 
 
+# A disk (radius r) rolling inside a circular track (radius R) in a vertical plane, θ
+# from the downward vertical: N = m (R − r) θ̇² + m g cos θ, F = −m g sin θ/3. Values and
+# the question are the test's own.
+DISK_IN_TRACK = """\
+parameters: [m, r, R, g]
+coordinates: [theta]
+gravity: [0, -g]
+bodies:
+  disk: {shape: disk, mass: m, radius: r}
+contacts:
+  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
+"""
+
+
 # A square plate (m, side a) hung from a corner O, its centre a/√2 from it, turned by a
 # couple C: V = −(m g a/√2) cos θ − C θ (a new user's trial).
 PLATE_ON_A_CORNER = """title: a square plate hung from a corner, turned by a couple

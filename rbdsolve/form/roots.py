@@ -36,21 +36,17 @@ def over_one_root(expr: sp.Expr) -> sp.Expr:
     Y while the terms are put over one denominator (sympy's together); then each power
     of s and each factor X of a coefficient are gathered, s² = Y (``_gathered``). An
     expression with no such root, or two, is returned as it is."""
-    bases = {w.base for w in expr.atoms(sp.Pow) if _half_power(w) and w.base.is_Add}
+    bases = {w.base for w in expr.atoms(sp.Pow) if square_root(w) and w.base.is_Add}
     if len(bases) != 1:
         return expr
     (X,) = bases
     s, Y = sp.Dummy("s", positive=True), sp.Dummy("Y", positive=True)
-    swapped = expr.replace(lambda w: _half_power(w) and w.base == X, lambda w: s ** (2 * w.exp))
+    swapped = expr.replace(lambda w: square_root(w) and w.base == X, lambda w: s ** (2 * w.exp))
     if swapped.has(X):
         return expr  # X also stands outside the root: left as it is
     top, bottom = sp.fraction(sp.together(swapped))
     gathered = _gathered(top, X, s, Y) / _gathered(bottom, X, s, Y)
     return gathered.xreplace({Y: X, s: sp.sqrt(X)})  # rebuilt at once: X·√X is X^(3/2)
-
-
-def _half_power(w: sp.Basic) -> bool:
-    return w.is_Pow and w.exp.is_Rational and w.exp.q == 2
 
 
 def _gathered(p: sp.Expr, X: sp.Expr, s: sp.Dummy, Y: sp.Dummy) -> sp.Expr:

@@ -19,6 +19,7 @@ from sympy.polys.polyerrors import PolynomialError, UnsolvableFactorError
 from sympy.solvers.polysys import SolveFailed, solve_poly_system
 
 from rbdsolve.errors import NUMERIC_REMEDY, UnsolvedError
+from rbdsolve.form.tidy import has_root
 
 
 def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str) -> list[dict]:
@@ -172,12 +173,7 @@ def under_long_radical(expr: sp.Expr, x: sp.Symbol) -> bool:
     give √(4a² + d²) beside a² k (solving for a); a disk rolling on an incline held by a
     spring of natural length to a point off its line gives N(x) with
     √(x² − 2 a x cos α − 2 b x sin α + …) in it (solving N = 0 for x)."""
-    return under_radical(expr, x) and sp.count_ops(expr) > RADICAL_OPS
-
-
-def under_radical(expr: sp.Expr, x: sp.Symbol) -> bool:
-    """Does x stand under a radical (a fractional power) in expr?"""
-    return any(w.exp.is_Rational and not w.exp.is_Integer and w.base.has(x) for w in expr.atoms(sp.Pow))
+    return has_root(expr, (x,)) and sp.count_ops(expr) > RADICAL_OPS
 
 
 def _has_radical(expr: sp.Expr) -> bool:

@@ -101,9 +101,14 @@ def _vector(m: sp.Matrix, state: dict, model: Model) -> tuple[sp.Expr, sp.Expr, 
     return tuple(model.to_time(over_one_root(tidy(sp.expand(x.xreplace(state))))) for x in m)  # type: ignore[return-value]
 
 
+def _square(m: sp.Matrix, state: dict) -> sp.Expr:
+    """m·m at the state, tidied (sin² + cos² = 1) so that √(l²) is l."""
+    return tidy(sp.expand(m.dot(m).xreplace(state)))
+
+
 def _norm(m: sp.Matrix, state: dict) -> sp.Expr:
-    """√(m·m), the square tidied first (sin² + cos² = 1) so that √(l²) is l."""
-    return sp.sqrt(tidy(sp.expand(m.dot(m).xreplace(state))))
+    """√(m·m), the square tidied first."""
+    return sp.sqrt(_square(m, state))
 
 
 def _at_state(name: str, rva, state: dict, model: Model) -> PointMotion:
@@ -114,7 +119,7 @@ def _at_state(name: str, rva, state: dict, model: Model) -> PointMotion:
 
 def _speed(v: sp.Matrix, state: dict) -> sp.Expr:
     """|v| = √(v·v), the square tidied and, where it holds one root, over one denominator."""
-    return sp.sqrt(over_one_root(tidy(sp.expand(v.dot(v).xreplace(state)))))
+    return sp.sqrt(over_one_root(_square(v, state)))
 
 
 def _turning(name: str, state: dict, model: Model) -> BodyMotion:

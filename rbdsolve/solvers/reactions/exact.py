@@ -20,7 +20,8 @@ from rbdsolve.report.steps import Route, Solution
 from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
-from rbdsolve.solvers.reactions.first_zero import ANGLE_STEP, FirstZero, first_zero, length_step, reaches
+from rbdsolve.solvers.reactions.first_zero import (ANGLE_STEP, FirstZero, first_zero, length_step, reaches,
+                                                     real_number)
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, no_closed_form, zeros
@@ -102,21 +103,13 @@ def _let_go(model: Model, supports, at: dict[str, Reaction]) -> dict[str, tuple[
     given = dict(model.values)
     found = {}
     for s in supports:
-        numbers = {k: _real(v.xreplace(given)) for k, v in at[s.name].components.items()}
+        numbers = {k: real_number(v.xreplace(given)) for k, v in at[s.name].components.items()}
         scale = max((abs(x) for x in numbers.values() if x is not None), default=0.0)
         for c in s.components:
             x = numbers.get(str(c.symbol))
             if c.one_sided and x is not None and x < -1e-9 * scale:
                 found[s.name] = (str(c.symbol), x)
     return found
-
-
-def _real(value: sp.Expr) -> float | None:
-    try:
-        z = complex(sp.N(value, 30))
-    except TypeError:
-        return None
-    return z.real if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)) else None
 
 
 def _let_go_warnings(supports, let_go: dict[str, tuple[str, float]], from_rest: bool) -> tuple[str, ...]:

@@ -56,7 +56,7 @@ def first_zero(push: sp.Expr, rate_squared: sp.Expr, q: sp.Symbol, start: sp.Exp
     push, rate_squared = push.xreplace(values), rate_squared.xreplace(values)
     N, v2 = _numeric(push, q), _numeric(rate_squared, q)
     slope = sp.diff(rate_squared, q).xreplace({q: start.xreplace(values)})
-    q0, direction = _real(start.xreplace(values)), _real(slope)
+    q0, direction = real_number(start.xreplace(values)), real_number(slope)
     if q0 is None or direction is None or not _positive(N(q0)):
         return None
     if direction == 0:
@@ -101,7 +101,7 @@ def _near_turn(rate_squared: sp.Expr, q: sp.Symbol, q0: float) -> float | None:
     q̇² ≈ a₁ δ + ½ a₂ δ² = 0 at |δ| = 2 |a₁/a₂| (a₁ a₂ < 0), the values put in: a
     length's steps are kept well under it, so that a quick turn is met in its first
     steps. None where the quadratic does not turn back."""
-    a1, a2 = (_real(sp.diff(rate_squared, q, k).xreplace({q: q0})) for k in (1, 2))
+    a1, a2 = (real_number(sp.diff(rate_squared, q, k).xreplace({q: q0})) for k in (1, 2))
     if a1 is None or a2 is None or a1 * a2 >= 0:
         return None
     return abs(2 * a1 / a2)
@@ -133,8 +133,8 @@ def reaches(rate_squared: sp.Expr, q: sp.Symbol, start: sp.Expr, to: sp.Expr, va
     whole number of turns on, so it is met the first time the motion comes round to it
     (3π/2 reached going down from 2π/3 at −π/2). None where a value is not a number."""
     v2 = _numeric(rate_squared.xreplace(values), q)
-    slope = _real(sp.diff(rate_squared, q).xreplace(values).xreplace({q: start.xreplace(values)}))
-    q0, end = _real(start.xreplace(values)), _real(to.xreplace(values))
+    slope = real_number(sp.diff(rate_squared, q).xreplace(values).xreplace({q: start.xreplace(values)}))
+    q0, end = real_number(start.xreplace(values)), real_number(to.xreplace(values))
     if q0 is None or end is None or slope is None:
         return None
     if end == q0:
@@ -184,14 +184,15 @@ def _numeric(expr: sp.Expr, q: sp.Symbol):
 
     def value(x: float) -> float | None:
         try:
-            return _real(f(x))
+            return real_number(f(x))
         except (ZeroDivisionError, ValueError, TypeError, OverflowError):
             return None
 
     return value
 
 
-def _real(x: object) -> float | None:
+def real_number(x: object) -> float | None:
+    """x as a float where it is a finite real number (to rounding), else None."""
     try:
         z = complex(x)
     except (TypeError, ValueError):

@@ -24,7 +24,7 @@ import mpmath
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode
-from rbdsolve.form.tidy import tidy_fraction
+from rbdsolve.form.tidy import has_root, tidy_fraction
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.energy import memoized
 from rbdsolve.solvers.reactions.supports import Held, How
@@ -33,7 +33,7 @@ from rbdsolve.solvers.reactions.first_zero import reaches
 from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.condition_roots import radical_roots
-from rbdsolve.solvers.conditions.polynomial import trig_transcendental, under_long_radical, under_radical
+from rbdsolve.solvers.conditions.polynomial import trig_transcendental, under_long_radical
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 from rbdsolve.form.zero import simplifies_to_zero
 
@@ -74,7 +74,7 @@ def no_closed_form(value: sp.Expr, model: Model) -> str:
     """Why zeros() gives no closed form for ``value`` = 0, in a reader's words."""
     q = model.q[0]
     x = to_unicode(model.readable(q))
-    if under_radical(_numerator(value), q):
+    if has_root(_numerator(value), (q,)):
         return f"{x} under a radical: squared away, a polynomial of high degree"
     return f"transcendental in {x}: no substitution makes it a polynomial"
 
@@ -131,7 +131,7 @@ def _real_roots(expr: sp.Expr, x: sp.Symbol, model: Model) -> list[sp.Expr]:
     """sympy's roots of expr in x (``radical_roots`` where x stands under a radical),
     those that may be real (no Piecewise, no i, no NaN)."""
     try:
-        roots = radical_roots(expr, x, model) if under_radical(expr, x) else sp.solve(expr, x)
+        roots = radical_roots(expr, x, model) if has_root(expr, (x,)) else sp.solve(expr, x)
     except NotImplementedError:
         return []
     return [r for r in roots if not r.has(sp.Piecewise, sp.I, sp.nan, sp.zoo) and r.is_real is not False]

@@ -27,7 +27,7 @@ import sympy as sp
 from scipy.optimize import brentq, minimize_scalar
 
 import rbdsolve
-from conftest import HOOP_ON_INCLINE
+from conftest import DISK_IN_TRACK, HOOP_ON_INCLINE
 from rbdsolve.solvers.reactions.first_zero import FirstZero
 from rbdsolve.solvers.reactions.largest import largest_friction
 
@@ -151,15 +151,8 @@ def test_where_the_contact_is_lost_on_the_way_no_largest_friction_is_given_and_t
     assert f"θ = {lost:.6g}" in said
 
 
-DISK_IN_TRACK = """\
-parameters: [m, r, R, g]
+MASS_OPEN = DISK_IN_TRACK + """\
 values: {r: 8 cm, R: 50 cm, g: 9.81 m/s^2}
-coordinates: [theta]
-gravity: [0, -g]
-bodies:
-  disk: {shape: disk, mass: m, radius: r}
-contacts:
-  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
 questions:
   - reactions: {forces: [C], from_rest: {theta: 40 deg}}
 """
@@ -172,7 +165,7 @@ def test_a_mass_left_open_does_not_keep_the_largest_friction_back(tmp_path) -> N
     is (7 − 4 cos θ₀ cos θ)/(…)² > 0, so over [−θ₀, θ₀] it is largest at the ends:
     tan θ₀/3 at θ₀ = 40° (and −θ₀, where it turns back)."""
     path = tmp_path / "disk.yaml"
-    path.write_text(DISK_IN_TRACK)
+    path.write_text(MASS_OPEN)
     (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
     found = solution.answers.least_friction_over["C"]
     theta0 = math.radians(40)

@@ -15,16 +15,10 @@ import math
 import pytest
 
 import rbdsolve
+from conftest import DISK_IN_TRACK
 
-DISK = """\
-parameters: [m, r, R, g]
+DISK = DISK_IN_TRACK + """\
 values: {m: 1 kg, r: 8 cm, R: 50 cm, g: 9.81 m/s^2}
-coordinates: [theta]
-gravity: [0, -g]
-bodies:
-  disk: {shape: disk, mass: m, radius: r}
-contacts:
-  C: {body: disk, rolls_on: {circle: {centre: [0, 0], radius: R, side: inside}}, along: theta}
 questions:
   - reactions: {forces: [C], from_rest: {theta: THETA0 deg}, to: {theta: 0}}
 """
