@@ -52,6 +52,15 @@ def _without_contradicted(exists: sp.Basic, model) -> tuple[sp.Basic, frozenset]
     return (sp.And(*out), frozenset(ruled_out)) if ruled_out else (exists, frozenset())
 
 
+def leaves_no_room(exists: sp.Basic, model) -> bool:
+    """Whether a conjunction holds at one value at most: a lower bound on a parameter at or
+    above an upper bound on it (θ₀ ≥ π/2 and θ₀ ≤ π/2), for every value the assumptions allow."""
+    parts = list(sp.And.make_args(exists))
+    lower = [r for r in parts if isinstance(r, _LOWER) and r.lhs.is_Symbol]
+    upper = [r for r in parts if isinstance(r, _UPPER) and r.lhs.is_Symbol]
+    return any(a.lhs == b.lhs and _sign(a.rhs - b.rhs, model) in (0, 1) for a in lower for b in upper)
+
+
 def _contradicts(bound: sp.Relational, other: sp.Basic, model) -> bool:
     """Whether no value satisfies both: p > a beside p ≤ c with c < a (or the mirror),
     the order of a and c decided for every value the assumptions allow."""

@@ -24,7 +24,7 @@ from rbdsolve.solvers.reactions.first_zero import (ANGLE_STEP, FirstZero, first_
                                                      real_number)
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
-from rbdsolve.solvers.reactions.limits import exists, holds, least_mu, no_closed_form, zeros
+from rbdsolve.solvers.reactions.limits import Release, exists, holds, least_mu, no_closed_form, pushes_held, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
@@ -85,7 +85,9 @@ def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | N
     steps = [*rs.instant_steps(model, instant, supports, at), *rs.holds_steps(model, supports, limits, criticals)]
     warnings: tuple[str, ...] = ()
     if instant.from_rest:
-        answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers, to)
+        released = {str(c.symbol): Release(at[s.name].components[str(c.symbol)], pushes_held(limits[s.name], s.name))
+                    for s in supports for c in s.components if c.one_sided}
+        answers, more, found, warnings = _along_the_motion(model, supports, forces, table, answers, to, released)
         steps, criticals = steps + more, criticals + found
         kept = {k: v for k, v in (answers.least_friction_over or {}).items() if k not in let_go}
         answers = _replace(answers, least_friction_over=kept or None)
@@ -260,10 +262,12 @@ def _replace(answers: ReactionsAnswers, **changes) -> ReactionsAnswers:
     return replace(answers, **changes)
 
 
-def _along_the_motion(model: Model, supports, forces, table, answers, to: dict | None):
+def _along_the_motion(model: Model, supports, forces, table, answers, to: dict | None,
+                      released: dict[str, Release]):
     """q̇²(q) by energy, the forces along the motion, their zeros and the least μ, and
     the forces where the motion gets to (``to``); a warning for each push or tension
-    whose zeros have no closed form (not listed, and not said to hold throughout)."""
+    whose zeros have no closed form (not listed, and not said to hold throughout). A zero
+    is a loss only where its support held at the release (``released``, limits.exists)."""
     e = energy(model, table)
     if e is None:
         if to:
@@ -283,7 +287,8 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
     mu = {s.name: least_mu(values[s.components[1].symbol], values[s.components[0].symbol], model)
           for s in supports if s.how is How.ROLLING}
     mu = {k: model.to_time(v) for k, v in mu.items()}
-    reached = {k: tuple(exists(eq, model, e.rate_squared, table[model.q[0]]) for eq in where) for k, where in lost.items()}
+    reached = {k: tuple(exists(eq, model, e.rate_squared, table[model.q[0]], released[k]) for eq in where)
+               for k, where in lost.items()}
     lost = {k: tuple(eq for eq, h in zip(where, reached[k]) if h.condition is not sp.false)
             for k, where in lost.items()}
     reached = {k: tuple(h for h in found if h.condition is not sp.false) for k, found in reached.items()}
@@ -293,7 +298,9 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
                        lost_exists_when={k: tuple(h.condition for h in found) for k, found in reached.items()},
                        first_zero=(first := _first_zeros(model, supports, values, e.rate_squared, table)),
                        least_friction_over=_largest_frictions(model, supports, values, e.rate_squared, table, first))
-    steps = [energy_step(model, e, True), *rs.along_steps(model, supports, values, lost, mu, reached, unsolved)]
+    steps = [energy_step(model, e, True),
+             *rs.along_steps(model, supports, values, lost, mu, reached, unsolved,
+                           {k: r.held for k, r in released.items()})]
     warnings = tuple(f"{k} = 0 along the motion has no closed-form solution ({why}): where it is reached, if "
                      "it is, is not given" for k, why in unsolved.items()) + _unbounded(supports, first, name)
     if to:

@@ -31,6 +31,7 @@ from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.first_zero import reaches
 from rbdsolve.model.assumptions import implies
+from rbdsolve.solvers.conditions.bounds import leaves_no_room
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.condition_roots import radical_roots
 from rbdsolve.solvers.conditions.polynomial import trig_transcendental, under_long_radical
@@ -234,26 +235,64 @@ def _nonnegative(value: sp.Expr, model: Model) -> Holds:
     return Holds(found.condition, found.criticals)
 
 
-def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: sp.Expr | None = None) -> Holds:
-    """Where the motion from rest reaches a zero cos q = c (sin q = c, q = c): |c| ≤ 1, and
-    q̇² ≥ 0 there (the motion turns back before a zero where q̇² < 0 — a cylinder released
+@dataclass(frozen=True)
+class Release:
+    """A push or tension at the release from rest (q̇ = 0 there), and where each push and
+    tension of its support is ≥ 0 there (``held``, friction aside: ``pushes_held``)."""
+
+    push: sp.Expr
+    held: sp.Basic
+
+
+def pushes_held(found: Holds, name: str) -> sp.Basic:
+    """Where a support's pushes and tensions are ≥ 0 at the state: ``holds``' condition
+    without its friction's μ ≥ |F|/N."""
+    return sp.And(*(part for part in sp.And.make_args(found.condition) if not part.has(mu(name))))
+
+
+def exists(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: sp.Expr | None,
+           release: Release) -> Holds:
+    """Where the motion from rest reaches a zero cos q = c (sin q = c, q = c) as a loss: |c| ≤ 1,
+    and q̇² ≥ 0 there (the motion turns back before a zero where q̇² < 0 — a cylinder released
     inside a cylinder below the horizontal never leaves it); each solved for one parameter
     where the parameters' signs do not decide it. A zero left as its equation (``is_implicit``)
-    is reached where, at the values, one of its roots lies on the way from ``start``."""
-    parts = [_reached(where, model, rate_squared, start)]
+    is reached where, at the values, one of its roots lies on the way from ``start``.
+
+    A zero is where the support lets go only if it held at the release (``release``). A disk
+    released inside a track has N = m g cos θ₀ there and N = 0 at cos θ = 4/7 cos θ₀, where
+    q̇² = −4 g cos θ₀/(7 (R − r)): q̇² there and N at the release have opposite signs for
+    every value (``_opposed``), so the zero is reached only where the disk has left the track
+    at once, and rises back through zero there: no loss. Likewise where the two conditions
+    leave no room but a point (θ₀ ≥ π/2 and θ₀ ≤ π/2, ``leaves_no_room``). Elsewhere the
+    condition given is the zero's own; the release's is said at the release."""
+    rate = _rate_at(where, model, rate_squared)
+    if rate is not None and _opposed(rate, release.push, model):
+        return Holds(sp.false, ())
+    parts = [_reached(where, rate, model, rate_squared, start)]
     c = where.rhs
     if isinstance(where.lhs, (sp.cos, sp.sin)) and c.free_symbols and not _within(c):
         parts += [_nonnegative(1 - c, model), _nonnegative(1 + c, model)]
-    return Holds(sp.And(*(h.condition for h in parts)), tuple(c for h in parts for c in h.criticals))
+    condition = sp.And(*(h.condition for h in parts))
+    if leaves_no_room(sp.And(condition, release.held), model):
+        return Holds(sp.false, ())
+    return Holds(condition, tuple(c for h in parts for c in h.criticals))
 
 
-def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: sp.Expr | None) -> Holds:
-    """q̇² ≥ 0 at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
-    sin q = c), or q = c; kept (true) where q̇² holds q otherwise, or the zero is left as
-    its equation (``is_implicit``)."""
-    q = model.q[0]
+def _opposed(a: sp.Expr, b: sp.Expr, model: Model) -> bool:
+    """Whether a and b have opposite signs for every value the assumptions allow, so that
+    a ≥ 0 and b ≥ 0 hold together only where both vanish: a/b < 0, decided by signs."""
+    if simplifies_to_zero(b):
+        return False
+    return sign_of(sp.cancel(sp.together(a / b)), model.assumed) == -1
+
+
+def _rate_at(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> sp.Expr | None:
+    """q̇² at the zero: q̇²(q) with cos q = c put in (sin² q = 1 − c²; likewise for
+    sin q = c), or q = c; None where q̇² holds q otherwise, or the zero is left as its
+    equation (``is_implicit``)."""
     if is_implicit(where):
-        return Holds(sp.false if _never_reached(where.lhs, model, rate_squared, start) else sp.true, ())
+        return None
+    q = model.q[0]
     side = where.lhs.xreplace({model.to_time(q): q})
     c = where.rhs
     if side == q:
@@ -261,9 +300,17 @@ def _reached(where: sp.Relational, model: Model, rate_squared: sp.Expr, start: s
     else:
         other = sp.sin(q) if isinstance(side, sp.cos) else sp.cos(q)
         value = sp.expand(rate_squared).xreplace({side: c}).subs(other**2, 1 - c**2)
-    if value.has(q):
-        return Holds(sp.true, ())
-    return _nonnegative(clean_fraction(value), model)
+    return None if value.has(q) else clean_fraction(value)
+
+
+def _reached(where: sp.Relational, rate: sp.Expr | None, model: Model, rate_squared: sp.Expr,
+             start: sp.Expr | None) -> Holds:
+    """q̇² ≥ 0 at the zero (``rate``, ``_rate_at``); kept (true) where q̇² holds q there
+    otherwise. A zero left as its equation (``is_implicit``) is reached unless, at the
+    values, the motion gets to none of its roots (``_never_reached``)."""
+    if is_implicit(where):
+        return Holds(sp.false if _never_reached(where.lhs, model, rate_squared, start) else sp.true, ())
+    return Holds(sp.true, ()) if rate is None else _nonnegative(rate, model)
 
 
 def implicit_variable(where: sp.Relational, model: Model) -> sp.Expr:

@@ -162,9 +162,11 @@ def _implicit_note(where: sp.Relational, model: Model) -> str:
 
 
 def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reached: dict,
-                unsolved: Mapping[str, str]) -> list[st.Step]:
+                unsolved: Mapping[str, str], released: Mapping[str, sp.Basic]) -> list[st.Step]:
     """The forces along the motion, and for each push or tension where it is lost, or
-    why that is not given (``unsolved``: its name -> the reason, limits.no_closed_form)."""
+    why that is not given (``unsolved``: its name -> the reason, limits.no_closed_form).
+    A push or tension that does not reach zero holds throughout only where it holds at
+    the release (``released``: its support's condition there)."""
     steps = [st.result("Along the motion, q̇² from the energy put in, the forces are:",
                        *[Relation(c.symbol, model.to_time(values[c.symbol]))
                          for s in supports for c in s.components])]
@@ -190,8 +192,7 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
             steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion ({unsolved[name]}): "
                                  "where it is reached, if it is, is not given."))
         else:
-            holds = "the string stays taut" if name in strings else "the contact holds"
-            steps.append(st.note(f"{name} does not reach zero along the motion: {holds} throughout."))
+            steps.append(st.note(_never_zero(name, name in strings, released[name])))
     q = model.to_time(model.q[0])
     for name, value in mu.items():
         where = (f" at each {to_unicode(q)} (for the whole motion, the largest of it over the {to_unicode(q)} "
@@ -199,6 +200,17 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
         steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
                                f"friction{where} is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
     return steps
+
+
+def _never_zero(name: str, string: bool, at_release: sp.Basic) -> str:
+    """No zero along the motion: the support holds throughout, where it holds when let go."""
+    if at_release is sp.false:
+        return (f"{name} < 0 at the release for every value allowed: "
+                + ("a string cannot push, so it is slack from the start." if string else
+                   "the support cannot pull, so the body leaves it at once."))
+    holds = "the string stays taut" if string else "the contact holds"
+    where = "" if at_release is sp.true else ", where it holds at the release (above)"
+    return f"{name} does not reach zero along the motion: {holds} throughout{where}."
 
 
 SHORT = 24  # a bound written out up to this many characters; a longer one is said in words
