@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 
 from rbdsolve.problem import expr as ex
+from rbdsolve.problem.instants import Instant
 from rbdsolve.problem.schema import Parameter, Problem, QuestionKind
 
 NOT_USES = frozenset({"parameters", "values", "ranges", "assumptions", "dimensions"})
@@ -46,3 +47,84 @@ def _collect(value: object, used: set[str]) -> None:
     elif dataclasses.is_dataclass(value) and not isinstance(value, type):
         for field in dataclasses.fields(value):
             _collect(getattr(value, field.name), used)
+
+
+TRIG = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
+ANGLE_FIELDS = frozenset({"angle", "half_angle", "rest"})  # a body's or line's turn, a shape's, a spring's rest
+
+
+def angle_terms(problem: Problem) -> frozenset[str]:
+    """The parameters that are angles by how the scene writes them: a term of a sine's
+    (cosine's, tangent's) argument, up to a number (an incline's sin(alpha),
+    cos(theta - alpha), sin(2*beta); not Omega in sin(Omega*t)), or of an ``angle``,
+    ``half_angle`` or ``rest``."""
+    found: set[str] = set()
+    for field in dataclasses.fields(problem):
+        if field.name not in NOT_USES:
+            _angles_in(getattr(problem, field.name), found, False)
+    return frozenset(found & {p.name for p in problem.parameters})
+
+
+def state_parameters(problem: Problem) -> dict[str, frozenset[str]]:
+    """The parameters that stand alone as a coordinate's value in a question's state
+    (``from_rest: {theta: theta0}``): each -> those coordinates."""
+    found: dict[str, set[str]] = {}
+    for question in problem.questions:
+        for instant in question_states(question.options):
+            for name, expr in instant.coordinates:
+                if isinstance(expr.tree, ex.Name):
+                    found.setdefault(expr.tree.id, set()).add(name)
+    names = {p.name for p in problem.parameters}
+    return {k: frozenset(v) for k, v in found.items() if k in names}
+
+
+def question_states(options: object) -> list[Instant]:
+    """A question's states as given (``at:``, ``from_rest:``)."""
+    return [getattr(options, f.name) for f in dataclasses.fields(options)
+            if isinstance(getattr(options, f.name), Instant)]
+
+
+def _angles_in(value: object, found: set[str], angle: bool) -> None:
+    """The angle parameters in ``value`` (``angle``: ``value`` is itself an angle)."""
+    if isinstance(value, ex.Expr):
+        _angle_terms(value.tree, found, angle)
+    elif isinstance(value, (tuple, list)):
+        for item in value:
+            _angles_in(item, found, angle)
+    elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
+        for field in dataclasses.fields(value):
+            _angles_in(getattr(value, field.name), found, field.name in ANGLE_FIELDS)
+
+
+def _angle_terms(tree: ex.Tree, found: set[str], angle: bool) -> None:
+    """``angle``: the names that are terms of ``tree`` up to a number; and, anywhere in
+    it, those of each trigonometric call's argument."""
+    if angle:
+        found.update(_plain_terms(tree))
+    if isinstance(tree, ex.Call):
+        for item in tree.args:
+            _angle_terms(item, found, tree.func in TRIG)
+    elif isinstance(tree, ex.BinOp):
+        _angle_terms(tree.left, found, False)
+        _angle_terms(tree.right, found, False)
+    elif isinstance(tree, ex.Neg):
+        _angle_terms(tree.operand, found, False)
+    elif isinstance(tree, ex.Vec):
+        for item in tree.items:
+            _angle_terms(item, found, False)
+
+
+def _plain_terms(tree: ex.Tree):
+    """The names that are terms of a sum, each alone or times (over) a number."""
+    if isinstance(tree, ex.Name):
+        yield tree.id
+    elif isinstance(tree, ex.Neg):
+        yield from _plain_terms(tree.operand)
+    elif isinstance(tree, ex.BinOp) and tree.op in "+-":
+        yield from _plain_terms(tree.left)
+        yield from _plain_terms(tree.right)
+    elif isinstance(tree, ex.BinOp) and tree.op in "*/":
+        number = ex.constant_value(tree.right if tree.op == "/" or isinstance(tree.left, ex.Name) else tree.left)
+        named = tree.left if tree.op == "/" or isinstance(tree.left, ex.Name) else tree.right
+        if number is not None and isinstance(named, ex.Name):
+            yield named.id

@@ -36,7 +36,7 @@ from rbdsolve.solvers.routes.budget import Allowance, OutOfTime, within
 from rbdsolve.solvers.routes.checks import CheckFailed, Residuals, verify
 from rbdsolve.solvers.lagrange.frames import frame_of, model_in_frame, solve_in_frame
 from rbdsolve.solvers.routes.options import Options, RouteChoice
-from rbdsolve.model.summary.scene import swing_warnings, unused_warnings
+from rbdsolve.model.summary.scene import radian_warnings, swing_warnings, unused_warnings
 from rbdsolve.model.summary.summary import coordinates_only, summarize_model
 from rbdsolve.model.values.answers import valued
 from rbdsolve.solvers.routes.needed import missing_for, missing_values, with_irrelevant_filled
@@ -128,7 +128,8 @@ def answer(family: Family, question: Question, model: Model, options: Options) -
     named = None if family.named is None else lambda: family.named(question, solution.answers, model)
     found = valued(solution.answers, model, question.kind.value, named)
     swing = swing_warnings(model) if question.kind in USES_T and not model.instant else ()
-    warnings = (*solution.warnings, *swing, *unused_warnings(model), *found.warnings, *unsure,
+    warnings = (*solution.warnings, *swing, *unused_warnings(model), *radian_warnings(model), *found.warnings,
+                *unsure,
                 *_not_for(question, solution.answers, model))
     return replace(solution, warnings=warnings, error_estimate=estimate, values=found.values, units=found.units,
                    numbers=found.lines, seconds=time.perf_counter() - start)
