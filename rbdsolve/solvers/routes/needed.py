@@ -61,7 +61,8 @@ def with_irrelevant_filled(model, question):
 
 
 def relevant_parameters(model, question) -> frozenset[sp.Symbol]:
-    """The parameters T, V, the given velocities and the question itself can depend on.
+    """The parameters T, V, the applied loads, the given velocities and the question
+    itself can depend on.
 
     Per body: its mass, r_G, rotation and the entries (R J_G Rᵀ)_ij that ω·(R J_G Rᵀ)ω
     can reach, i, j over the axes ω may have a component on (a planar angle: J_zz only,
@@ -73,6 +74,8 @@ def relevant_parameters(model, question) -> frozenset[sp.Symbol]:
                    *(x.value for x in model.inertial), *(x.value for x in model.gyroscopic),
                    *model.velocities.values()]
     parts += [model.gravity] if model.gravity is not None else []
+    for load in model.loads:  # an applied force's or couple's size and place (a couple M₀ filled with 1 was silent)
+        parts += [load.force, load.moment, load.point, *load.generalized]
     for body in model.bodies:
         parts += _body_ingredients(body)
     parts += _named_by(question, model)
