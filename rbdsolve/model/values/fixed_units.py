@@ -116,6 +116,8 @@ def fixed_unit(kind: str, path: tuple, coordinates: Mapping[str, Dimension | Non
         return "m/s" if named[-2] == "speed" else "m²/s²"  # a point's speed, whatever q's unit was given in
     if kind == "energy" and len(named) >= 2 and key in coordinates and named[-2] in ("rate", "rate_squared"):
         return rate_unit(coordinates[key], 1, 2 if named[-2] == "rate_squared" else 1)
+    if kind == "reactions" and named[:1] in (["rate_squared"], ["there_rate_squared"]) and key in coordinates:
+        return rate_unit(coordinates[key], 1, 2)
     if kind == "steady_motion" and (named[0] in ("rates", "angular_velocity")
                                     or named[0] == "at_solutions" and "values" not in named):
         return "rad/s"

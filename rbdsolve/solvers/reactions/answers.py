@@ -44,6 +44,7 @@ class ReactionsAnswers:
     least_friction_over: dict[str, LargestFriction] | None = None
     to: dict[str, sp.Expr] | None = None  # the configuration asked ('to'), where the motion gets to
     there: dict[str, Reaction] | None = None  # the forces there (None where the motion does not get there)
+    there_rate_squared: dict[str, sp.Expr] | None = None  # q̇² there, from the energy integral ('to')
     there_reached: bool | None = None  # q̇² ≥ 0 there: decided (True, False), or None where the parameters decide
 
 

@@ -333,8 +333,9 @@ def _there(model: Model, supports, values: dict, rate_squared: sp.Expr, start: s
     there = None if reached is False else {
         s.name: _reaction(s, {c.symbol: tidy(at_state(values[c.symbol], table)) for c in s.components}, table)
         for s in supports}
-    answers = _replace(answers, to={model.coordinate_names()[0]: to}, there=there and
-                       {k: _timeless(r, model) for k, r in there.items()}, there_reached=reached)
+    name = model.coordinate_names()[0]
+    answers = _replace(answers, to={name: to}, there=there and {k: _timeless(r, model) for k, r in there.items()},
+                       there_rate_squared={name: w2}, there_reached=reached)
     stays = reached is False and simplifies_to_zero(rate_squared.diff(model.q[0]).xreplace({model.q[0]: start}))
     return answers, rs.there_steps(model, to, w2, supports, there, at_equilibrium=stays)
 

@@ -29,6 +29,8 @@ def named(question, answers, model: Model) -> tuple[Named, ...]:
     out += [Named(("least_friction_at", c), sp.Symbol(f"mu_{c}"), "At the state asked", Meaning.LEAST)
             for c in (getattr(answers, "least_friction_at", None) or {}) if c not in same]
     out += [Named(("least_friction", c), sp.Symbol(f"mu_{c}"), meaning=Meaning.LEAST) for c in along]
+    out += [Named(("there_rate_squared", k), coordinate(model, f"dot({k})") ** 2, "Where the motion gets to")
+            for k in (getattr(answers, "there_rate_squared", None) or {})]
     out += [Named(("there", name, "components", c), sp.Symbol(c), "Where the motion gets to")
             for name, r in (getattr(answers, "there", None) or {}).items() for c in r.components]
     out += _first_zeros(getattr(answers, "first_zero", None) or {}, model)

@@ -41,6 +41,20 @@ def test_from_the_horizontal_the_hinge_carries_five_halves_of_the_weight_at_the_
     assert found["answers"]["there_reached"] is True
 
 
+def test_the_rate_where_it_gets_to_has_its_number_and_unit(tmp_path) -> None:
+    """φ̇² = 3 g (cos φ − cos φ₀)/l = 3 g/l at the vertical from the horizontal: with
+    g = 9.81 m/s² and l = 0.6 m, 49.05 rad²/s² (a new user's trial: the number was
+    missing, the expression alone printed)."""
+    ROD_VALUES = ROD.replace("questions:", "values: {m: 2 kg, l: 60 cm, g: 9.81 m/s^2}\nquestions:")
+    path = tmp_path / "rod.yaml"
+    path.write_text(ROD_VALUES % "from_rest: {phi: pi/2}, to: {phi: 0}", encoding="utf-8")
+    result = CliRunner().invoke(main, ["solve", str(path), "--format", "json"])
+    found = json.loads(result.stdout)["results"][0]
+    assert found["answers"]["there_rate_squared"] == {"phi": "3*g/l"}
+    assert found["values"]["there_rate_squared"]["phi"] == pytest.approx(3 * 9.81 / 0.6, rel=1e-12)
+    assert found["units"]["there_rate_squared"]["phi"] == "rad²/s²"
+
+
 def test_a_configuration_the_motion_does_not_get_to_has_no_forces(tmp_path) -> None:
     # from rest at 30°: φ̇² = 3 g (cos φ − cos φ₀)/l < 0 at 60°
     _, found = _result(tmp_path, "from_rest: {phi: pi/6}, to: {phi: pi/3}")
