@@ -163,6 +163,28 @@ def trig_transcendental(expr: sp.Expr, x: sp.Symbol) -> bool:
     return incommensurate or trig_mixed(expr, x)
 
 
+def sine_cosine_quartic(expr: sp.Expr, x: sp.Symbol) -> bool:
+    """Is expr a polynomial in sin x and cos x (x nowhere else, sin 2x and cos 2x
+    expanded) that none of the closed forms takes: not in one of them alone (the other
+    in even powers), not linear in both (t = tan(x/2): a quadratic), not a quadratic form
+    plus a constant (t = tan x: a quadratic)? With t = tan(x/2) it is a quartic, whose
+    roots by Ferrari's formula no reader uses, and sympy's solve spent minutes on one (a
+    ladder pushed at its foot: −18 P sin φ cos φ + 12 P sin φ cos φ₀ + 9 g m cos² φ + …)."""
+    s, c = sp.Dummy("s"), sp.Dummy("c")
+    expanded = sp.expand_trig(expr)
+    if any(f.has(x) and (f.func not in (sp.sin, sp.cos) or f.args[0] != x)
+           for f in expanded.atoms(sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)):
+        return False
+    plain = sp.expand(expanded.xreplace({sp.sin(x): s, sp.cos(x): c}))
+    if plain.has(x) or not plain.is_polynomial(s, c) or not plain.has(s) or not plain.has(c):
+        return False
+    form = sp.Poly(plain, s, c)
+    if all(k % 2 == 0 for k, _ in form.monoms()) or all(k % 2 == 0 for _, k in form.monoms()):
+        return False  # one of them in even powers only: a polynomial in the other
+    degrees = {k + j for k, j in form.monoms()}
+    return form.total_degree() > 2 or (form.total_degree() == 2 and bool(degrees & {1}))
+
+
 RADICAL_OPS = 40  # a longer expression with x under a radical is not given to sympy's solve
 
 

@@ -34,7 +34,7 @@ from rbdsolve.model.assumptions import implies
 from rbdsolve.solvers.conditions.bounds import leaves_no_room
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.condition_roots import radical_roots
-from rbdsolve.solvers.conditions.polynomial import trig_transcendental, under_long_radical
+from rbdsolve.solvers.conditions.polynomial import sine_cosine_quartic, trig_transcendental, under_long_radical
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 from rbdsolve.form.zero import simplifies_to_zero
 
@@ -62,6 +62,8 @@ def zeros(value: sp.Expr, model: Model) -> list[sp.Relational] | None:
         return None
     read = [(f, _implicit(f, q, model)) for f, _ in sp.factor_list(top)[1] if f.has(q)]
     implicit = [w for _, w in read if w is not None]
+    if any(w is None and sine_cosine_quartic(f, q) for f, w in read):
+        return None  # a quartic in tan(q/2): the numeric search finds where it is reached
     rest = sp.Mul(*(f for f, w in read if w is None))
     return [*_closed_zeros(rest, q, model), *implicit] if rest.has(q) else implicit
 
@@ -75,8 +77,11 @@ def no_closed_form(value: sp.Expr, model: Model) -> str:
     """Why zeros() gives no closed form for ``value`` = 0, in a reader's words."""
     q = model.q[0]
     x = to_unicode(model.readable(q))
-    if has_root(_numerator(value), (q,)):
+    top = _numerator(value)
+    if has_root(top, (q,)):
         return f"{x} under a radical: squared away, a polynomial of high degree"
+    if any(sine_cosine_quartic(f, q) for f, _ in sp.factor_list(top)[1]):
+        return f"sin {x} and cos {x} mixed: a quartic in tan({x}/2), whose closed forms no reader uses"
     return f"transcendental in {x}: no substitution makes it a polynomial"
 
 
