@@ -22,7 +22,8 @@ from rbdsolve.form.quotient import quotient
 from rbdsolve.form.tidy import square_root, tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.energies.energy import memoized
-from rbdsolve.solvers.conditions.polynomial import radical_linear_root, trig_transcendental, under_long_radical
+from rbdsolve.solvers.conditions.polynomial import (in_sine_and_cosine, radical_linear_root, trig_transcendental,
+                                                   under_long_radical)
 from rbdsolve.solvers.conditions.signs import symbolic_sign
 
 SAMPLES = 8
@@ -292,11 +293,8 @@ def _in_sine_or_cosine(factor: sp.Expr, p: sp.Symbol) -> tuple[sp.Expr, sp.Dummy
     1 − c², p = ±acos c); whole turns are the caller's. The roots sympy's solve finds
     after trying its rewrites for a second or more, in its forms. None where p stands
     elsewhere, in a multiple angle, or in an odd power of sin p beside cos p."""
-    trig = factor.atoms(*TRIG)
-    if any(f.has(p) and (f.func not in (sp.sin, sp.cos) or f.args[0] != p) for f in trig):
-        return None
-    plain = sp.expand(factor.xreplace({sp.cos(p): _COSINE, sp.sin(p): _SINE}))
-    if plain.has(p) or not plain.is_polynomial(_SINE, _COSINE):
+    plain = in_sine_and_cosine(factor, p, _SINE, _COSINE)
+    if plain is None:
         return None
     if not plain.has(_COSINE):
         return plain, _SINE
@@ -312,11 +310,8 @@ def _half_angle(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr] | None:
     (1 − t²)/(1 + t²) give (c − b) t² + 2 a t + (b + c) = 0, so p = 2 atan(t) for each real t
     (p = π itself where c = b, t's degree drops). sympy's solve took 12 s on it, mostly
     checking its roots, which the samples after this check again. None for another form."""
-    trig = factor.atoms(*TRIG)
-    if any(f.has(p) and (f.func not in (sp.sin, sp.cos) or f.args[0] != p) for f in trig):
-        return None
-    plain = sp.expand(factor.xreplace({sp.cos(p): _COSINE, sp.sin(p): _SINE}))
-    if plain.has(p) or not plain.is_polynomial(_SINE, _COSINE) or sp.Poly(plain, _SINE, _COSINE).total_degree() != 1:
+    plain = in_sine_and_cosine(factor, p, _SINE, _COSINE)
+    if plain is None or sp.Poly(plain, _SINE, _COSINE).total_degree() != 1:
         return None
     a, b = plain.coeff(_SINE), plain.coeff(_COSINE)
     c = sp.expand(plain - a * _SINE - b * _COSINE)
@@ -335,12 +330,8 @@ def _double_angle(factor: sp.Expr, p: sp.Symbol) -> list[sp.Expr] | None:
     sin 2p/2 make it a sin 2p + b cos 2p + c, whose half angle is p: with t = tan p,
     (c − b) t² + 2 a t + (b + c) = 0, and p = atan t or atan t + π for each real t (p = ±π/2
     where c = b). sympy's solve took 7 s on the ladder's. None for another form."""
-    expanded = sp.expand_trig(factor)
-    trig = expanded.atoms(*TRIG)
-    if any(f.has(p) and (f.func not in (sp.sin, sp.cos) or f.args[0] != p) for f in trig):
-        return None
-    plain = sp.expand(expanded.xreplace({sp.cos(p): _COSINE, sp.sin(p): _SINE}))
-    if plain.has(p) or not plain.is_polynomial(_SINE, _COSINE):
+    plain = in_sine_and_cosine(sp.expand_trig(factor), p, _SINE, _COSINE)
+    if plain is None:
         return None
     form = sp.Poly(plain, _SINE, _COSINE)
     if form.total_degree() != 2 or any(sum(m) % 2 for m in form.monoms()):

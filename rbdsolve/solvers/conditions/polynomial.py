@@ -163,6 +163,16 @@ def trig_transcendental(expr: sp.Expr, x: sp.Symbol) -> bool:
     return incommensurate or trig_mixed(expr, x)
 
 
+def in_sine_and_cosine(expr: sp.Expr, x: sp.Symbol, s: sp.Symbol, c: sp.Symbol) -> sp.Expr | None:
+    """expr as a polynomial in s = sin x and c = cos x, expanded; None where x stands
+    elsewhere (outside them, or in a multiple angle: sin 2x is the caller's to expand)."""
+    if any(f.has(x) and (f.func not in (sp.sin, sp.cos) or f.args[0] != x)
+           for f in expr.atoms(sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)):
+        return None
+    plain = sp.expand(expr.xreplace({sp.sin(x): s, sp.cos(x): c}))
+    return None if plain.has(x) or not plain.is_polynomial(s, c) else plain
+
+
 def sine_cosine_quartic(expr: sp.Expr, x: sp.Symbol) -> bool:
     """Is expr a polynomial in sin x and cos x (x nowhere else, sin 2x and cos 2x
     expanded) that none of the closed forms takes: not in one of them alone (the other
@@ -171,12 +181,8 @@ def sine_cosine_quartic(expr: sp.Expr, x: sp.Symbol) -> bool:
     roots by Ferrari's formula no reader uses, and sympy's solve spent minutes on one (a
     ladder pushed at its foot: −18 P sin φ cos φ + 12 P sin φ cos φ₀ + 9 g m cos² φ + …)."""
     s, c = sp.Dummy("s"), sp.Dummy("c")
-    expanded = sp.expand_trig(expr)
-    if any(f.has(x) and (f.func not in (sp.sin, sp.cos) or f.args[0] != x)
-           for f in expanded.atoms(sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)):
-        return False
-    plain = sp.expand(expanded.xreplace({sp.sin(x): s, sp.cos(x): c}))
-    if plain.has(x) or not plain.is_polynomial(s, c) or not plain.has(s) or not plain.has(c):
+    plain = in_sine_and_cosine(sp.expand_trig(expr), x, s, c)
+    if plain is None or not plain.has(s) or not plain.has(c):
         return False
     form = sp.Poly(plain, s, c)
     if all(k % 2 == 0 for k, _ in form.monoms()) or all(k % 2 == 0 for _, k in form.monoms()):
