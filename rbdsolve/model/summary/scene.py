@@ -15,13 +15,14 @@ import sympy as sp
 
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
+from rbdsolve.model.angles import angle_coordinates, angle_parameters
 from rbdsolve.model.build import Model
 from rbdsolve.model.energies.spring_length import polar_distances
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import ACCELERATION
 from rbdsolve.problem.schema import CoordinateKind
-from rbdsolve.problem.usage import angle_terms, question_states, state_parameters, unused_parameters
+from rbdsolve.problem.usage import question_states, unused_parameters
 from rbdsolve.report import steps as st
 
 
@@ -41,11 +42,10 @@ def unused_warnings(model: Model) -> tuple[str, ...]:
 def radian_warnings(model: Model) -> tuple[str, ...]:
     """A warning for each angle given a bare number past a full turn, 2π: read in
     radians, as every bare angle is, though an exam's ``alpha: 30`` most likely means
-    degrees (30 rad is 1719°). A parameter is an angle by how the scene writes it
-    (``problem.usage.angle_terms``) or as an angle coordinate's value in a state; a
-    state's own bare number too. Which coordinates are angles is asked only where a
-    value or a state calls for it (it makes the bodies' positions, which the numeric
-    route does without)."""
+    degrees (30 rad is 1719°). A parameter is an angle by how the scene writes it or as
+    an angle coordinate's value in a state (``model.angles``); a state's own bare number
+    too. Which coordinates are angles is asked only where a value or a state calls for
+    it (it makes the bodies' positions, which the numeric route does without)."""
     problem = model.problem
     past = {name: v for name, v in problem.values
             if v.dimension is None and not v.angle and abs(v.approx) > 2 * math.pi}
@@ -54,10 +54,8 @@ def radian_warnings(model: Model) -> tuple[str, ...]:
               if isinstance(expr.tree, ex.Num) and abs(expr.tree.value) > 2 * math.pi]
     if not past and not states:
         return ()  # most files: nothing to look for
-    angles = set(angle_terms(problem) & past.keys())
-    by_state = {p: qs for p, qs in state_parameters(problem).items() if p in past and p not in angles}
-    coordinates = _angle_coordinates(model) if states or by_state else frozenset()
-    angles |= {p for p, qs in by_state.items() if qs & coordinates}
+    angles = angle_parameters(model, frozenset(past))
+    coordinates = angle_coordinates(model) if states else frozenset()
     said = [_in_radians(f"parameter '{name}', an angle,", past[name].text, past[name].approx)
             for name in sorted(angles)]
     said += [_in_radians(f"{expr.loc}: the angle", expr.text, float(expr.tree.value)) for expr in states
@@ -68,16 +66,6 @@ def radian_warnings(model: Model) -> tuple[str, ...]:
 def _in_radians(what: str, text: str, value: float) -> str:
     return (f"{what} is given as {text}, read in radians ({text} rad is {math.degrees(value):.0f}°); "
             f"for degrees write '{text} deg'")
-
-
-def _angle_coordinates(model: Model) -> frozenset[str]:
-    """The coordinates that are angles: declared so, or inside a sine or cosine of a
-    position (a disk in a track, placed by its contact at (R − r)(sin θ, −cos θ))."""
-    positions = [*model.points.values(), *(b.position for b in model.bodies if b.position is not None)]
-    trig = set().union(*(sp.Matrix(p).atoms(sp.sin, sp.cos) for p in positions))
-    declared = {c.name for c in model.problem.coordinates if c.kind is CoordinateKind.ANGLE}
-    return frozenset(declared | {name for q, name in zip(model.q, model.coordinate_names())
-                                 if any(f.has(q) for f in trig)})
 
 
 def _unused_text(parameter, model: Model) -> str:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Iterable
 
+from rbdsolve.model.angles import angle_parameters
 from rbdsolve.model.build import Model
 from rbdsolve.model.values.values import not_finite, not_real, numbers
 
@@ -55,8 +56,14 @@ def valued(answers: object, model: Model, kind: str, named: Callable[[], Iterabl
 
 def _open(model: Model, units: dict[str, str]) -> dict:
     """The parameters left without a value (an unknown a question solves for is not one),
-    each with its SI unit ('' for a pure number, None where its dimension is not known)."""
+    each with its SI unit ('' for a pure number, None where its dimension is not known;
+    rad for an angle: an incline's β in sin β, a release angle θ₀, ``model.angles``)."""
     given = set(model.values)
     unknowns = set(model.problem.unknowns)
-    return {s: units.get(name) for name, s in model.symbols.parameters.items()
+    left = {s: units.get(name) for name, s in model.symbols.parameters.items()
             if s not in given and name not in unknowns}
+    unknown = frozenset(s.name for s, unit in left.items() if unit is None)
+    if unknown:
+        angles = angle_parameters(model, unknown)
+        left = {s: "rad" if s.name in angles else unit for s, unit in left.items()}
+    return left
