@@ -9,14 +9,17 @@ from __future__ import annotations
 import sympy as sp
 
 from rbdsolve.model.build import Model
+from rbdsolve.model.energies.energy import memoized
 from rbdsolve.problem.schema import CoordinateKind
 from rbdsolve.problem.usage import angle_terms, state_parameters
 
 
+@memoized
 def angle_coordinates(model: Model) -> frozenset[str]:
     """The names of the coordinates that are angles: declared so, or inside a sine or
     cosine of a position (a disk in a track, placed by its contact at
-    (R − r)(sin θ, −cos θ)), periodic or not. It reads every position."""
+    (R − r)(sin θ, −cos θ)), periodic or not. It reads every position: once per model,
+    though each question's warnings and open units ask."""
     positions = [*model.points.values(), *(b.position for b in model.bodies if b.position is not None)]
     trig = set().union(*(sp.Matrix(p).atoms(sp.sin, sp.cos) for p in positions))
     declared = {c.name for c in model.problem.coordinates if c.kind is CoordinateKind.ANGLE}

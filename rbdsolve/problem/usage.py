@@ -16,6 +16,7 @@ import dataclasses
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.instants import Instant
+from rbdsolve.problem.quantities.dimensions import lone_parameter, sum_terms
 from rbdsolve.problem.schema import Parameter, Problem, QuestionKind
 
 NOT_USES = frozenset({"parameters", "values", "ranges", "assumptions", "dimensions"})
@@ -50,6 +51,7 @@ def _collect(value: object, used: set[str]) -> None:
 
 
 TRIG = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
+
 ANGLE_FIELDS = frozenset({"angle", "half_angle", "rest"})  # a body's or line's turn, a shape's, a spring's rest
 
 
@@ -59,10 +61,11 @@ def angle_terms(problem: Problem) -> frozenset[str]:
     cos(theta - alpha), sin(2*beta); not Omega in sin(Omega*t)), or of an ``angle``,
     ``half_angle`` or ``rest``."""
     found: set[str] = set()
+    names = frozenset(p.name for p in problem.parameters)
     for field in dataclasses.fields(problem):
         if field.name not in NOT_USES:
-            _angles_in(getattr(problem, field.name), found, False)
-    return frozenset(found & {p.name for p in problem.parameters})
+            _angles_in(getattr(problem, field.name), found, names, False)
+    return frozenset(found)
 
 
 def state_parameters(problem: Problem) -> dict[str, frozenset[str]]:
@@ -84,47 +87,32 @@ def question_states(options: object) -> list[Instant]:
             if isinstance(getattr(options, f.name), Instant)]
 
 
-def _angles_in(value: object, found: set[str], angle: bool) -> None:
-    """The angle parameters in ``value`` (``angle``: ``value`` is itself an angle)."""
+def _angles_in(value: object, found: set[str], names: frozenset[str], angle: bool) -> None:
+    """The angle parameters (of ``names``) in ``value`` (``angle``: ``value`` is itself an angle)."""
     if isinstance(value, ex.Expr):
-        _angle_terms(value.tree, found, angle)
+        _angle_terms(value.tree, found, names, angle)
     elif isinstance(value, (tuple, list)):
         for item in value:
-            _angles_in(item, found, angle)
+            _angles_in(item, found, names, angle)
     elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
         for field in dataclasses.fields(value):
-            _angles_in(getattr(value, field.name), found, field.name in ANGLE_FIELDS)
+            _angles_in(getattr(value, field.name), found, names, field.name in ANGLE_FIELDS)
 
 
-def _angle_terms(tree: ex.Tree, found: set[str], angle: bool) -> None:
-    """``angle``: the names that are terms of ``tree`` up to a number; and, anywhere in
-    it, those of each trigonometric call's argument."""
+def _angle_terms(tree: ex.Tree, found: set[str], names: frozenset[str], angle: bool) -> None:
+    """``angle``: the parameters that are terms of ``tree``, each alone or times (over) a
+    number (2*beta, alpha/2; not Omega*t); and, anywhere in it, those of each
+    trigonometric call's argument."""
     if angle:
-        found.update(_plain_terms(tree))
+        found.update(p for term in sum_terms(tree) if (p := lone_parameter(term, names, False)) is not None)
     if isinstance(tree, ex.Call):
         for item in tree.args:
-            _angle_terms(item, found, tree.func in TRIG)
+            _angle_terms(item, found, names, tree.func in TRIG)
     elif isinstance(tree, ex.BinOp):
-        _angle_terms(tree.left, found, False)
-        _angle_terms(tree.right, found, False)
+        _angle_terms(tree.left, found, names, False)
+        _angle_terms(tree.right, found, names, False)
     elif isinstance(tree, ex.Neg):
-        _angle_terms(tree.operand, found, False)
+        _angle_terms(tree.operand, found, names, False)
     elif isinstance(tree, ex.Vec):
         for item in tree.items:
-            _angle_terms(item, found, False)
-
-
-def _plain_terms(tree: ex.Tree):
-    """The names that are terms of a sum, each alone or times (over) a number."""
-    if isinstance(tree, ex.Name):
-        yield tree.id
-    elif isinstance(tree, ex.Neg):
-        yield from _plain_terms(tree.operand)
-    elif isinstance(tree, ex.BinOp) and tree.op in "+-":
-        yield from _plain_terms(tree.left)
-        yield from _plain_terms(tree.right)
-    elif isinstance(tree, ex.BinOp) and tree.op in "*/":
-        number = ex.constant_value(tree.right if tree.op == "/" or isinstance(tree.left, ex.Name) else tree.left)
-        named = tree.left if tree.op == "/" or isinstance(tree.left, ex.Name) else tree.right
-        if number is not None and isinstance(named, ex.Name):
-            yield named.id
+            _angle_terms(item, found, names, False)

@@ -47,7 +47,7 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
     found: dict[str, set[tuple[Dimension, str]]] = {}
 
     def see(tree: ex.Tree, dimension: Dimension, where: str, calls: bool = False) -> None:
-        name = _alone(tree, parameters, calls)
+        name = lone_parameter(tree, parameters, calls)
         if name is not None:
             found.setdefault(name, set()).add((dimension, where))
 
@@ -99,7 +99,7 @@ def scene_dimensions(parameters: frozenset[str], bodies: tuple[Body, ...], sprin
             if len({d for d, _ in seen}) == 1}
 
 
-def _alone(tree: ex.Tree, parameters: frozenset[str], calls: bool) -> str | None:
+def lone_parameter(tree: ex.Tree, parameters: frozenset[str], calls: bool) -> str | None:
     """The one parameter of a product such as 3*m, m/2, sqrt(3)*r (or l*sin(theta)
     with ``calls``: a function's value is a pure number), else None."""
     names = _factors(tree, calls)
@@ -131,10 +131,10 @@ def _factors(tree: ex.Tree, calls: bool) -> list[str] | None:
 def _vector_terms(tree: ex.Tree):
     """The additive terms of each component of a vector expression: l*[sin(q), -cos(q)]
     gives l*sin(q) and l*cos(q); a point's name or a bare coordinate gives nothing
-    that :func:`_alone` accepts."""
+    that :func:`lone_parameter` accepts."""
     if isinstance(tree, ex.Vec):
         for item in tree.items:
-            yield from _terms(item)
+            yield from sum_terms(item)
     elif isinstance(tree, ex.BinOp) and tree.op in "+-":
         yield from _vector_terms(tree.left)
         yield from _vector_terms(tree.right)
@@ -142,19 +142,20 @@ def _vector_terms(tree: ex.Tree):
         yield from _vector_terms(tree.operand)
     elif isinstance(tree, ex.BinOp) and tree.op == "*" and isinstance(tree.right, ex.Vec):
         for item in tree.right.items:
-            for term in _terms(item):
+            for term in sum_terms(item):
                 yield ex.BinOp("*", tree.left, term)
     elif isinstance(tree, ex.BinOp) and tree.op in "*/" and isinstance(tree.left, ex.Vec):
         for item in tree.left.items:
-            for term in _terms(item):
+            for term in sum_terms(item):
                 yield ex.BinOp(tree.op, term, tree.right)
 
 
-def _terms(tree: ex.Tree):
+def sum_terms(tree: ex.Tree):
+    """The additive terms of a scalar expression: a + b − c gives a, b and c."""
     if isinstance(tree, ex.BinOp) and tree.op in "+-":
-        yield from _terms(tree.left)
-        yield from _terms(tree.right)
+        yield from sum_terms(tree.left)
+        yield from sum_terms(tree.right)
     elif isinstance(tree, ex.Neg):
-        yield from _terms(tree.operand)
+        yield from sum_terms(tree.operand)
     else:
         yield tree

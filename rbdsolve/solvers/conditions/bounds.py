@@ -58,7 +58,7 @@ def leaves_no_room(exists: sp.Basic, model) -> bool:
     parts = list(sp.And.make_args(exists))
     lower = [r for r in parts if isinstance(r, _LOWER) and r.lhs.is_Symbol]
     upper = [r for r in parts if isinstance(r, _UPPER) and r.lhs.is_Symbol]
-    return any(a.lhs == b.lhs and _sign(a.rhs - b.rhs, model) in (0, 1) for a in lower for b in upper)
+    return any(a.lhs == b.lhs and sign_for_every_value(a.rhs - b.rhs, model) in (0, 1) for a in lower for b in upper)
 
 
 def _contradicts(bound: sp.Relational, other: sp.Basic, model) -> bool:
@@ -79,13 +79,13 @@ def _compared(a: sp.Expr, b: sp.Expr, model) -> int | None:
     """The sign of a − b for every value the assumptions allow, where it is decided (two
     bounds that are not negative compared by their squares, √(k/m) against
     √(k (L + d)/(d m))); None where it is not, or where they are equal."""
-    sign = _sign(a - b, model)
-    if sign is None and all(_sign(x, model) in (0, 1) for x in (a, b)):
-        sign = _sign(a**2 - b**2, model)
+    sign = sign_for_every_value(a - b, model)
+    if sign is None and all(sign_for_every_value(x, model) in (0, 1) for x in (a, b)):
+        sign = sign_for_every_value(a**2 - b**2, model)
     return sign or None
 
 
-def _sign(x: sp.Expr, model) -> int | None:
+def sign_for_every_value(x: sp.Expr, model) -> int | None:
     """x's sign under the assumptions alone, x over one denominator (``symbolic_sign``
     factors it where it is short enough)."""
     found = sign_of(sp.cancel(sp.together(x)), model.assumed)

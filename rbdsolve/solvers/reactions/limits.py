@@ -31,7 +31,7 @@ from rbdsolve.solvers.reactions.supports import Held, How
 from rbdsolve.solvers.lagrange.accelerations import clean_fraction
 from rbdsolve.solvers.reactions.first_zero import reaches
 from rbdsolve.model.assumptions import implies
-from rbdsolve.solvers.conditions.bounds import leaves_no_room
+from rbdsolve.solvers.conditions.bounds import leaves_no_room, sign_for_every_value
 from rbdsolve.solvers.conditions.conditions import Critical, nonnegative_where
 from rbdsolve.solvers.conditions.condition_roots import radical_roots
 from rbdsolve.solvers.conditions.polynomial import sine_cosine_quartic, trig_transcendental, under_long_radical
@@ -288,7 +288,7 @@ def _opposed(a: sp.Expr, b: sp.Expr, model: Model) -> bool:
     a ≥ 0 and b ≥ 0 hold together only where both vanish: a/b < 0, decided by signs."""
     if simplifies_to_zero(b):
         return False
-    return sign_of(sp.cancel(sp.together(a / b)), model.assumed) == -1
+    return sign_for_every_value(a / b, model) == -1
 
 
 def _rate_at(where: sp.Relational, model: Model, rate_squared: sp.Expr) -> sp.Expr | None:
