@@ -11,7 +11,7 @@ from dataclasses import replace
 import sympy as sp
 
 from rbdsolve.errors import UnsolvedError
-from rbdsolve.form.printers import unicode_name
+from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.form.zero import simplifies_to_zero
 from rbdsolve.model.build import Model
@@ -94,27 +94,47 @@ def _at_the_state(model: Model, instant, supports, forces, answers, to: dict | N
     return answers, steps, criticals, _let_go_warnings(supports, let_go, instant.from_rest) + warnings
 
 
-def _let_go(model: Model, supports, at: dict[str, Reaction]) -> dict[str, tuple[str, float]]:
-    """With every value given, each support whose push or tension is negative at the
-    state asked: its name -> (that component, its value). It does not hold there, and
-    the body leaves it at once (a disk released inside a track above the level of its
-    centre: N = m g cos θ₀ < 0). Negative beyond rounding: 10⁻⁹ of the largest force
-    there."""
-    if missing_values(model):
-        return {}
+def _let_go(model: Model, supports, at: dict[str, Reaction]) -> dict[str, tuple[str, str]]:
+    """With the values given, each support whose push or tension is negative at the
+    state asked: its name -> (that component, its value written out). It does not hold
+    there, and the body leaves it at once (a disk released inside a track above the level
+    of its centre: N = m g cos θ₀ < 0). Negative beyond rounding: 10⁻⁹ of the largest
+    force there. Parameters left open may only scale it by positive factors (a ball
+    released on a drum at θ₀ = 100°, m and g open: N = g m cos θ₀ = −0.173648 g m)."""
     given = dict(model.values)
+    complete = not missing_values(model)
     found = {}
     for s in supports:
         numbers = {k: real_number(v.xreplace(given)) for k, v in at[s.name].components.items()}
         scale = max((abs(x) for x in numbers.values() if x is not None), default=0.0)
         for c in s.components:
             x = numbers.get(str(c.symbol))
-            if c.one_sided and x is not None and x < -1e-9 * scale:
-                found[s.name] = (str(c.symbol), x)
+            if not c.one_sided:
+                continue
+            if x is not None and x < -1e-9 * scale:
+                found[s.name] = (str(c.symbol), f"{x:.6g}")
+            elif x is None and not complete:
+                shown = _negative_scaled(at[s.name].components[str(c.symbol)], given)
+                if shown is not None:
+                    found[s.name] = (str(c.symbol), shown)
     return found
 
 
-def _let_go_warnings(supports, let_go: dict[str, tuple[str, float]], from_rest: bool) -> tuple[str, ...]:
+def _negative_scaled(value: sp.Expr, given: dict) -> str | None:
+    """``value`` at the values, written out, where the parameters left open only scale it
+    by positive factors and what is left is a negative number (beyond rounding: 10⁻⁹ of
+    its terms' size); else None."""
+    at_values = sp.factor_terms(value.xreplace(given))
+    scale = [x for x in sp.Mul.make_args(at_values) if x.free_symbols and x.is_positive is True]
+    rest = sp.Mul(*(x for x in sp.Mul.make_args(at_values) if x not in scale))
+    x = real_number(rest)
+    sizes = [real_number(t) for t in sp.Add.make_args(sp.expand(rest))]
+    if x is None or None in sizes or x >= -1e-9 * sum(abs(t) for t in sizes):
+        return None
+    return to_unicode(sp.Float(x, 6) * sp.Mul(*scale))
+
+
+def _let_go_warnings(supports, let_go: dict[str, tuple[str, str]], from_rest: bool) -> tuple[str, ...]:
     """A warning per support that does not hold at the state asked (``_let_go``)."""
     how = {s.name: s.how for s in supports}
     after = (", and the forces given along the motion and where it gets to are those of a support that holds, "
@@ -123,7 +143,7 @@ def _let_go_warnings(supports, let_go: dict[str, tuple[str, float]], from_rest: 
     for k, (name, x) in let_go.items():
         why = "the string is slack" if how[k] is How.STRING else f"the support at {k} cannot pull"
         friction = "; no friction is given for it" if how[k] is How.ROLLING else ""
-        out.append(f"{name} = {x:.6g} < 0 at the state asked: {why}, so the body leaves it at once{friction}{after}")
+        out.append(f"{name} = {x} < 0 at the state asked: {why}, so the body leaves it at once{friction}{after}")
     return tuple(out)
 
 
@@ -189,8 +209,12 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
 
 
 def _unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:
-    """expr at the values, without its positive factors, where that leaves q alone."""
+    """expr at the values, without its positive factors, where that leaves q alone: the
+    powers of positive parameters (``sign_part``) and the other factors free of q that
+    sympy finds positive from the parameters' signs, a sum of them among them (a ball
+    rolling off a drum, q̇² = 10 g (cos θ₀ − cos θ)/(7 (R + r)): 1/(R + r))."""
     found = sign_part(sp.factor_terms(expr.xreplace(given)))
+    found = sp.Mul(*(x for x in sp.Mul.make_args(found) if x.has(q) or x.is_positive is not True))
     return found if found.free_symbols <= {q} else None
 
 
