@@ -12,6 +12,7 @@ returns the family with some symbols free.
 
 from __future__ import annotations
 
+import functools
 import random
 
 import sympy as sp
@@ -26,17 +27,14 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     """Every root {symbol: value} of the polynomial ``system``; UnsolvedError naming
     ``what`` where some root has no closed form, or none an exam writes
     (``_unreadable_degree``)."""
-    degree = _eliminant_degree(system, symbols)
-    other = _readable_order(system, symbols) if degree else None
+    other = _readable_order(system, symbols) if _eliminant_degree(system, symbols) else None
     if other is not None:
-        symbols, degree = other, None
-    if degree and degree >= 5:
-        raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}, whose "
-                            "roots have no closed form (in radicals) in general: an exact list would leave solutions "
-                            "out", NUMERIC_REMEDY)
-    if degree:
-        raise UnsolvedError(f"{what} reduce to a polynomial with an irreducible factor of degree {degree}: its roots "
-                            "in radicals (Cardano's, Ferrari's formulas) are no answer an exam writes", NUMERIC_REMEDY)
+        symbols = other
+    else:
+        degree = unreadable_degree(system, symbols)
+        if degree:
+            raise UnsolvedError(unreadable_reason(what, degree) + ": an exact list would leave solutions out",
+                                NUMERIC_REMEDY)
     try:
         found = solve_poly_system(system, *symbols, strict=True)
     except UnsolvableFactorError:
@@ -45,6 +43,29 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     except (NotImplementedError, PolynomialError, SolveFailed):
         return sp.solve(system, symbols, dict=True, check=False)  # a family, or not polynomial after all
     return [dict(zip(symbols, root)) for root in found or []]
+
+
+def unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
+    """The degree of the eliminant's irreducible factor whose roots no exam writes (3 or
+    more), in the order of ``symbols`` and in every other with another symbol last
+    (``_readable_order``); None where some order's eliminant is readable. Decided before
+    any solving: polynomial_roots refuses exactly these, and the equilibria's structure
+    reads it to list the evident roots instead (an inverted rod held at its top by a
+    spring of natural length: θ = 0 for every k, beside an irreducible quintic)."""
+    degree = _eliminant_degree(system, symbols)
+    if not degree or _readable_order(system, symbols) is not None:
+        return None
+    return degree
+
+
+def unreadable_reason(what: str, degree: int) -> str:
+    """Why ``what`` (the equilibrium equations) has no exact list: its eliminant's
+    irreducible factor of ``degree`` (``unreadable_degree``)."""
+    if degree >= 5:
+        return (f"{what} reduce to a polynomial with an irreducible factor of degree {degree}, whose roots have no "
+                "closed form (in radicals) in general")
+    return (f"{what} reduce to a polynomial with an irreducible factor of degree {degree}, whose roots in radicals "
+            "(Cardano's, Ferrari's formulas) are no answer an exam writes")
 
 
 def _eliminant_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:
@@ -82,7 +103,14 @@ def _unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int |
 def _eliminant_factors(system: list[sp.Expr], symbols: list[sp.Symbol]) -> list[sp.Expr] | None:
     """The irreducible factors (``_factors``) of the last polynomial of the system's
     lexicographic Gröbner basis, where that is univariate in the last symbol; None where
-    the system is not zero-dimensional, or there is nothing to eliminate (solve decides)."""
+    the system is not zero-dimensional, or there is nothing to eliminate (solve decides).
+    Once per system and order: the equilibria's structure asks first, then the solving."""
+    found = _eliminant_factors_of(tuple(system), tuple(symbols))
+    return None if found is None else list(found)
+
+
+@functools.lru_cache(maxsize=64)
+def _eliminant_factors_of(system: tuple[sp.Expr, ...], symbols: tuple[sp.Symbol, ...]) -> tuple[sp.Expr, ...] | None:
     if not symbols:
         return None
     try:
@@ -93,7 +121,7 @@ def _eliminant_factors(system: list[sp.Expr], symbols: list[sp.Symbol]) -> list[
     eliminant = basis.exprs[-1] if basis.exprs else sp.Integer(0)
     if eliminant.free_symbols & set(symbols) != {last}:
         return None
-    return _factors(eliminant, last)
+    return tuple(_factors(eliminant, last))
 
 
 def _specialized_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | None:

@@ -140,11 +140,20 @@ def _roots(model: Model, equations, unknowns, angles) -> tuple[list[dict], list[
     if not evident:
         raise UnsolvedError(f"{found.why_partial} ({shown}), and no evident root (0, π or ±π/2 in the angles, 0 in "
                             "the lengths) solves them: the exact route cannot solve them",
-                            f"with a value for every parameter the numeric route searches {where}; for modes, give "
-                            "the equilibrium with 'modes: {about: {...}}'")
+                            f"with a value for {_lacking(model)} the numeric route searches {where}; for modes, "
+                            "give the equilibrium with 'modes: {about: {...}}'")
     return evident, [f"{found.why_partial}: {shown}. The exact route lists only the evident roots, where every "
                      f"term vanishes: {_shown_roots(model, unknowns, evident)}. Other equilibria may exist; the "
                      f"numeric route (a value for every parameter, or --route numeric) searches for them {where}"]
+
+
+def _lacking(model: Model) -> str:
+    """The parameters the numeric route would need a value for, named (a rod on a turning
+    arm with only m open: "with a value for m"), or "every parameter" where all have one
+    (--route exact)."""
+    from rbdsolve.solvers.routes.needed import missing_values
+
+    return ", ".join(missing_values(model)) or "every parameter"
 
 
 def _shown_roots(model: Model, unknowns, roots: list[dict]) -> str:

@@ -39,6 +39,8 @@ from enum import Enum
 
 import sympy as sp
 
+from rbdsolve.solvers.conditions.polynomial import unreadable_degree, unreadable_reason
+
 
 BEZOUT_LIMIT = 8  # the largest Bézout number of a block the Gröbner route starts
 ALGEBRAIC_UNKNOWNS = 2
@@ -177,6 +179,14 @@ def algebraic_small(equations, unknowns) -> bool:
     return len(unknowns) <= ALGEBRAIC_UNKNOWNS and sum(sp.count_ops(e) for e in equations) <= ALGEBRAIC_OPS
 
 
+def _unreadable(system: PolySystem) -> str | None:
+    """Why the exact list would be partial where the eliminant has an irreducible factor
+    of degree 3 or more in every order (polynomial.unreadable_degree): only the evident
+    roots are listed, with the rest left to the numeric route."""
+    degree = unreadable_degree(list(system.polynomials), list(system.symbols)) if system.symbols else None
+    return unreadable_reason("the equilibrium equations", degree) if degree else None
+
+
 def decide(shape: Shape, system: PolySystem | None, equations, unknowns, monotone: bool) -> Structure:
     """The structure, with why the exact route's list would be partial (None: complete);
     ``monotone``: one transcendental equation proved monotone (one root)."""
@@ -186,7 +196,7 @@ def decide(shape: Shape, system: PolySystem | None, equations, unknowns, monoton
             f"the equilibrium equations are polynomial in {len(system.symbols)} unknowns (sines, cosines and "
             f"coordinates) with a Bézout number of {size}, past the {BEZOUT_LIMIT} for which a Gröbner basis takes "
             "seconds")
-        return Structure(shape, system, size, why)
+        return Structure(shape, system, size, why or _unreadable(system))
     if shape is Shape.ALGEBRAIC:
         why = None if algebraic_small(equations, unknowns) else (
             f"the equilibrium equations hold radicals of {len(unknowns)} coordinates: too large for the exact route")

@@ -480,10 +480,10 @@ def test_one_reason_both_routes_give_is_said_once(monkeypatch) -> None:
 
 
 # A rod hinged to a turning arm (problems/frames/rod-on-turning-arm.yaml): its equilibria
-# reduce to an irreducible quartic, which the exact route refuses with the remedy "give
-# values … numerically". On auto with the values given, the numeric route answers, and
-# its note quotes the exact route's reason without that remedy (it would read as if the
-# values were missing); on the exact route alone the remedy stays.
+# reduce to an irreducible quartic, and no evident root (0, π, ±π/2) solves them. The
+# structure says so before any solving: on auto with the values given, the numeric route
+# answers first, and its note quotes the reason without asking for values it was given;
+# on the exact route alone the refusal says what the numeric route would do.
 def test_the_numeric_routes_note_does_not_ask_for_values_it_was_given() -> None:
     from rbdsolve.errors import NUMERIC_REMEDY
 
@@ -491,11 +491,12 @@ def test_the_numeric_routes_note_does_not_ask_for_values_it_was_given() -> None:
     auto = solve_file(load_file(path))
     (equilibria,) = [s for s in auto.solutions if s.question == "equilibria"]
     assert equilibria.solved and equilibria.route.value == "numeric"
-    (note,) = [w for w in equilibria.warnings if w.startswith("the exact route could not answer")]
+    (note,) = [w for w in equilibria.warnings if w.startswith("the exact route would answer only in part")]
     assert "degree 4" in note and NUMERIC_REMEDY not in note
     exact = solve_file(load_file(path), Options(route=RouteChoice.EXACT))
     (refused,) = [s for s in exact.solutions if s.question == "equilibria"]
-    assert not refused.solved and refused.error.endswith(f"; {NUMERIC_REMEDY}")
+    assert not refused.solved and "no evident root" in refused.error
+    assert "with a value for every parameter the numeric route searches" in refused.error
 
 
 def test_the_exact_routes_refusal_names_the_parameter_without_a_value() -> None:
@@ -511,4 +512,4 @@ def test_the_exact_routes_refusal_names_the_parameter_without_a_value() -> None:
     (refused,) = [s for s in report.solutions if s.question == "equilibria"]
     assert not refused.solved and NUMERIC_REMEDY not in refused.error
     assert "degree 4" in refused.error
-    assert refused.error.endswith("give m a value ('values:' in the file, or --set NAME=VALUE) to solve it numerically")
+    assert "with a value for m the numeric route searches" in refused.error
