@@ -27,7 +27,7 @@ from rbdsolve.solvers.equilibria.answers import Equilibrium, Stability
 from rbdsolve.solvers.equilibria.cases import with_cases
 from rbdsolve.solvers.equilibria.exact import Listed, classify_listed, gradient, incomplete, listing
 from rbdsolve.solvers.configuration import contact_span
-from rbdsolve.solvers.numeric.chosen import REFINE_TOL, several_stable
+from rbdsolve.solvers.numeric.chosen import NO_EQUILIBRIUM, REFINE_TOL, several_stable
 from rbdsolve.solvers.routes.needed import missing_for
 from rbdsolve.form.zero import simplifies_to_zero
 
@@ -72,6 +72,8 @@ def _none_stable(verdicts: list[Equilibrium], model: Model) -> str:
     or given)."""
     depends = [(k, found) for k, found in enumerate(verdicts, 1) if found.stability is Stability.DEPENDS]
     choose = "choose one with 'modes: {about: {...}}'"
+    if not verdicts:
+        return NO_EQUILIBRIUM
     if not depends:
         return f"no stable equilibrium found; {choose}"
     which = ", ".join(str(k) for k, _ in depends)

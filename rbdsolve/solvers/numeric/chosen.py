@@ -22,6 +22,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.problem.schema import Question
 from rbdsolve.solvers.configuration import contact_span
 
+# no equilibrium at all (a rod driven by a couple past m g l/4): nothing to choose either
+NO_EQUILIBRIUM = ("there is no equilibrium ('equilibria' says why), so no small oscillations about "
+                  "one")
 REFINE_TOL = 1e-3  # how far (per coordinate) a given point may lie from the equilibrium it names
 
 
@@ -39,6 +42,8 @@ def equilibrium_for_modes(question: Question, model: Model) -> tuple[dict[str, s
     kept = [r for r, _ in numeric_listing(model, find_numeric(model).equilibria)[0]]
     if options.equilibrium is not None:
         return _numbered(model, kept, options.equilibrium, options.loc)
+    if not kept:
+        raise UnsolvedError(NO_EQUILIBRIUM)
     stable = [r for r in kept if r.kind == "stable"]
     across = [r for r in kept if r.kind == "neutral" and r.free and r.stable_across]
     if not stable and not across:
