@@ -24,6 +24,7 @@ from rbdsolve.problem.sections.coordinates import coordinate, declared_ranges
 from rbdsolve.problem.sections.orientation import OrientationReader
 from rbdsolve.problem.sections.questions import QuestionReader
 from rbdsolve.problem.quantities.dimensions import scene_dimensions
+from rbdsolve.problem.usage import time_rates
 from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension, Value, parse_unit
 from rbdsolve.problem.quantities.ranges import parameter_value, value_range
 from rbdsolve.problem.readers import check_keys, describe, expect_mapping, expect_scalar, read_bool
@@ -31,6 +32,8 @@ from rbdsolve.problem.yamlnodes import Map, Node, Scalar, Seq, parse_yaml, read_
 
 if TYPE_CHECKING:
     from rbdsolve.problem.scene import Assumption, Contact, Couple, Force, Frame, Prescribed, Spring
+
+RATE = Dimension(time=Fraction(-1))  # a rate, 1/s
 
 TOP_KEYS = ("title", "source", "statement", "parameters", "prescribed", "unknowns", "coordinates", "triads",
             "points", "frames",
@@ -113,6 +116,9 @@ class _Loader:
                                    contacts)
         collisions = tuple(c for q in questions if q.kind is QuestionKind.IMPACT for c in q.options.collisions)
         known = _known_dimensions(parameters, bodies, springs, gravity, points, forces, couples, contacts, collisions)
+        for name, where in time_rates((triads, frames, points, bodies, prescribed, forces, couples, contacts),
+                                      frozenset(p.name for p in parameters)).items():
+            known.setdefault(name, (RATE, where))  # Ω in a turn Ω t: 1/s (rad/s), as its unit would say
         values, ranges = self.values(get("values"), parameters, known)
         return Problem(
             file=self.reading.file,

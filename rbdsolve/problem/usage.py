@@ -16,7 +16,7 @@ import dataclasses
 
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.instants import Instant
-from rbdsolve.problem.quantities.dimensions import lone_parameter, sum_terms
+from rbdsolve.problem.quantities.dimensions import lone_parameter, product_names, sum_terms
 from rbdsolve.problem.schema import Parameter, Problem, QuestionKind
 
 NOT_USES = frozenset({"parameters", "values", "ranges", "assumptions", "dimensions"})
@@ -116,3 +116,55 @@ def _angle_terms(tree: ex.Tree, found: set[str], names: frozenset[str], angle: b
     elif isinstance(tree, ex.Vec):
         for item in tree.items:
             _angle_terms(item, found, names, False)
+
+
+def time_rates(pieces: object, names: frozenset[str]) -> dict[str, str]:
+    """The parameters (of ``names``) that are rates by how the scene writes them: a
+    frame's ``rate: Omega``, or a term ``Omega*t`` (times a number) of an angle — a
+    turn's, a body's, a sine's argument (a triad turned by [z, Omega*t], a disk spun by
+    [z, s*t], a pivot driven as a*sin(w*t)); not v0*t in a position, a length. Each ->
+    where it was seen. ``pieces``: the scene's sections (dataclasses, tuples of them)."""
+    found: dict[str, str] = {}
+    _rates_in(pieces, found, names, False, "")
+    return found
+
+
+def _rates_in(value: object, found: dict[str, str], names: frozenset[str], angle: bool, where: str) -> None:
+    if isinstance(value, ex.Expr):
+        _rate_terms(value.tree, found, names, angle, where)
+    elif isinstance(value, (tuple, list)):
+        for item in value:
+            _rates_in(item, found, names, angle, where)
+    elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
+        for field in dataclasses.fields(value):
+            item = getattr(value, field.name)
+            if field.name == "rate" and isinstance(item, ex.Expr):
+                name = lone_parameter(item.tree, names, False)
+                if name is not None:
+                    found.setdefault(name, f"{where or 'frames'}.rate")
+                continue
+            _rates_in(item, found, names, field.name in ANGLE_FIELDS or field.name == "turns",
+                      getattr(value, "name", None) or where)
+
+
+def _rate_terms(tree: ex.Tree, found: dict[str, str], names: frozenset[str], angle: bool, where: str) -> None:
+    """``angle``: each term of ``tree`` that is one parameter times t (and numbers); and,
+    anywhere in it, those of each trigonometric call's argument."""
+    if angle:
+        for term in sum_terms(tree):
+            factors = product_names(term)
+            if factors is not None and sorted(factors).count("t") == 1 and len(factors) == 2:
+                (name,) = [f for f in factors if f != "t"]
+                if name in names:
+                    found.setdefault(name, f"{where}: {name}*t, an angle" if where else f"{name}*t, an angle")
+    if isinstance(tree, ex.Call):
+        for item in tree.args:
+            _rate_terms(item, found, names, tree.func in TRIG, where)
+    elif isinstance(tree, ex.BinOp):
+        _rate_terms(tree.left, found, names, False, where)
+        _rate_terms(tree.right, found, names, False, where)
+    elif isinstance(tree, ex.Neg):
+        _rate_terms(tree.operand, found, names, False, where)
+    elif isinstance(tree, ex.Vec):
+        for item in tree.items:
+            _rate_terms(item, found, names, False, where)

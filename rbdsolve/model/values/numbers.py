@@ -68,7 +68,9 @@ def _lines(n: Named, answer: object, value: object, unit: object, given: Mapping
         return [_scalar(n, n.name, float(value), unit)]
     if _complex(answer, value):
         return [_line(n, n.name, sp.Float(value[0]) + sp.Float(value[1]) * sp.I, _text(unit))]
-    if not isinstance(value, list) or not value or not _known(value):
+    if isinstance(value, list) and value and not _known(value):
+        return _partial_vector(n, answer, value, unit, given, open_units)
+    if not isinstance(value, list) or not value:
         return []
     if all(_number(v) for v in value):  # a vector
         return _vector(n, [float(v) for v in value], _as_list(unit, len(value)))
@@ -97,6 +99,31 @@ def _partial(n: Named, answer: object, unit: object, given: Mapping, open_units:
     number = sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float,  # √, not ^0.5
                                     lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
     return [_line(n, n.name, number, _text(unit), Note(Beside.OPEN, open=(p.name, open_units[p])))]
+
+
+def _partial_vector(n: Named, answer: object, value: list, unit: object, given: Mapping,
+                    open_units: Mapping) -> list[Number]:
+    """A vector answer whose entries are numbers or hold, once the values are put in, the
+    same one parameter left without a value (``_partial``'s scalars, side by side): a ball's
+    velocity after it strikes a hanging rod at a depth b left open, u_B = (2.43 b/(0.6 b² +
+    1.215) − 1.84, −2, 0) (in m/s, b in m). Only where every entry's unit is the same."""
+    entries = list(answer) if isinstance(answer, (tuple, list, sp.MatrixBase)) else None
+    units = _as_list(unit, len(value))
+    if not given or not entries or len(entries) != len(value) or not all(v is None or _number(v) for v in value):
+        return []  # (a matrix's rows are lists: not written so)
+    if not all(isinstance(u, str) for u in units) or len(set(units)) != 1:
+        return []  # every entry's unit known, and the same
+    shared = units[0]
+    if not all(isinstance(e, sp.Expr) for e in entries) or any(e.atoms(AppliedUndef) for e in entries):
+        return []
+    put = [e.xreplace(dict(given)) for e in entries]
+    free = set().union(*(e.free_symbols for e in put))
+    if len(free) != 1 or next(iter(free)) not in open_units:
+        return []
+    (p,) = free
+    numbers = [sp.N(e, 15).replace(lambda x: x.is_Pow and x.exp.is_Float, lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
+               for e in put]
+    return [_line(n, n.name, sp.ImmutableMatrix([numbers]), shared, Note(Beside.OPEN, open=(p.name, open_units[p])))]
 
 
 def _number(value: object) -> bool:

@@ -108,6 +108,12 @@ def lone_parameter(tree: ex.Tree, parameters: frozenset[str], calls: bool) -> st
     return names[0]
 
 
+def product_names(tree: ex.Tree) -> list[str] | None:
+    """The names multiplied in a product such as 2*Omega*t (each to the first power, in
+    the numerator), or None where ``tree`` is not such a product."""
+    return _factors(tree, False)
+
+
 def _factors(tree: ex.Tree, calls: bool) -> list[str] | None:
     """The names multiplied in ``tree`` (each to the first power, in the numerator), or
     None when it is not such a product."""
