@@ -36,8 +36,7 @@ def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
     assumptions' substitutions), or else over the declared range of the one coordinate
     u holds (``_sign_over``), and what was done to each |u|."""
     found = sorted(length.atoms(sp.Abs), key=sp.default_sort_key)
-    lengths = tuple(Length(a.args[0], _sign_at(a.args[0], reference, assumed)
-                           or _sign_over(a.args[0], ranges or {}, assumed)) for a in found)
+    lengths = tuple(Length(a.args[0], _sign(a.args[0], reference, assumed, ranges or {})) for a in found)
     signed = {a: x.sign * x.inside for a, x in zip(found, lengths) if x.sign is not None}
     return length.xreplace(signed), lengths
 
@@ -58,6 +57,36 @@ def as_square_root(length: sp.Expr) -> sp.Expr:
 
 
 _SMALL = 80  # operations in a radicand worth joining (two springs on a slope have ~30)
+
+
+def _sign(u: sp.Expr, reference: Mapping, assumed: Mapping, ranges: Mapping) -> int | None:
+    """u's sign over the declared range of its coordinate first (``_sign_over``), else at
+    the reference configuration where that lies inside the range (or none is declared):
+    a rod sliding in a turning tube, x in [l/2, 10], tied to the axis at its inner end x −
+    l/2, has that length positive over the range, though −l/2 at x = 0, outside it; a
+    block hung by its top face at a/2 above its centre, depth y in [0, 5], has a/2 − y
+    at the range's end y = 0, the spring drawn upside down there: neither decides, and
+    |u| stays."""
+    over = _sign_over(u, ranges, assumed)
+    if over is not None:
+        return over
+    if reference_outside(u, reference, ranges):
+        return None
+    return _sign_at(u, reference, assumed)
+
+
+def reference_outside(u: sp.Expr, reference: Mapping, ranges: Mapping) -> bool:
+    """Does the reference configuration lie at an end of, or outside, the declared range
+    of a coordinate u holds (decided by the parameters' signs)?"""
+    for q in u.free_symbols & set(ranges):
+        at = reference.get(q)
+        if at is None:
+            continue
+        lo, hi = ranges[q]
+        inside = sp.And(sp.StrictLessThan(lo, at), sp.StrictLessThan(at, hi))
+        if inside is sp.false:
+            return True
+    return False
 
 
 def _sign_at(u: sp.Expr, reference: Mapping, assumed: Mapping) -> int | None:

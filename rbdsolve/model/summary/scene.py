@@ -17,7 +17,7 @@ from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.angles import angle_coordinates, angle_parameters
 from rbdsolve.model.build import Model
-from rbdsolve.model.energies.spring_length import polar_distances
+from rbdsolve.model.energies.spring_length import polar_distances, reference_outside
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import ACCELERATION
@@ -121,7 +121,11 @@ def _two_sided(model: Model) -> list[st.Step]:
             term = _term_of(model.readable(spring.stretch), sp.Abs(u))  # 4 a |sin(u)|, not |sin(u)| alone
             whole, plus, minus = (to_unicode(tidy(term.xreplace({sp.Abs(u): x}))) for x in (sp.Abs(u), u, -u))
             here = tidy(length.inside.xreplace({q: sp.Integer(0) for q in model.q}))
-            why = (f"it is zero at {at}, where the spring passes through zero length{_one_side(length.inside, model)}"
+            outside = _outside_range(length.inside, model)
+            why = (f"{outside} lies at an end of the range declared for it or outside, and over that range the "
+                   f"parameters do not decide the sign of {shown}: give a range on one side of its zero"
+                   f"{_zero_of(u, model)}, or assumptions that decide its sign at the range's ends" if outside else
+                   f"it is zero at {at}, where the spring passes through zero length{_one_side(length.inside, model)}"
                    if here == 0 else
                    f"its sign at {at} ({to_unicode(here)}) is not decided by the parameters (state it under "
                    f"'assumptions:', such as {_positive(here)}, to take one side)")
@@ -129,6 +133,26 @@ def _two_sided(model: Model) -> list[st.Step]:
                                f"and {minus} where {shown} < 0; {why}, so V, its derivatives and the answers "
                                "keep |…| and sign(…)"))
     return out
+
+
+def _outside_range(u: sp.Expr, model: Model) -> str:
+    """'y = 0' where the reference configuration lies at an end of, or outside, the range
+    declared for a coordinate u holds (spring_length.reference_outside), else ''."""
+    ranges = {q: (model.symbols.scalar(c.range[0]), model.symbols.scalar(c.range[1]))
+              for c, q in zip(model.problem.coordinates, model.q) if c.range is not None}
+    for q, c in zip(model.q, model.problem.coordinates):
+        if q in ranges and reference_outside(u, {q: sp.Integer(0)}, {q: ranges[q]}):
+            return f"{unicode_name(c.name)} = 0"
+    return ""
+
+
+def _zero_of(u: sp.Expr, model: Model) -> str:
+    """' (y = a/2)': where u, linear in one coordinate, is zero; '' otherwise."""
+    found = [q for q in u.free_symbols if q in {model.readable(x) for x in model.q}]
+    if len(found) != 1 or sp.diff(u, found[0], 2) != 0 or sp.diff(u, found[0]) == 0:
+        return ""
+    (q,) = found
+    return f" ({to_unicode(q)} = {to_unicode(tidy(sp.solve(u, q)[0]))})"
 
 
 def _one_side(u: sp.Expr, model: Model) -> str:

@@ -1,0 +1,71 @@
+"""A spring's length |u| is written ±u by u's sign over the coordinate's declared range
+first, and at the reference configuration (every coordinate 0) only where that lies
+inside the range (a new user's trial: two springs drawn upside down at q = 0 gave
+equilibria outside the range, printed as if right).
+
+By hand:
+- a block (mass m, its top face a/2 above its centre) hangs by that face from a ceiling
+  point on a spring (k, natural length L0), y the centre's depth, range [0, 5]: the
+  length is y − a/2, and m g = k (y − a/2 − L0) at rest, y = a/2 + L0 + m g/k = 0.6481
+  m at a = 0.1, L0 = 0.5, m = 1, k = 100, g = 9.81 (rbdsolve took a/2 − y, positive at
+  y = 0, and printed y = −0.3519 m);
+- a rod (m, l) sliding in a tube turning at Ω, its inner end x − l/2 from the axis
+  tied there by a spring (k, L0), x in [l/2, 10]: in the turning frame k (x − l/2 − L0)
+  = m Ω² x, so x = k (l/2 + L0)/(k − m Ω²) = 0.416667 m at m = 0.2, l = 0.1, k = 50,
+  L0 = 0.2, Ω = 10 (rbdsolve took l/2 − x, its sign at x = 0, outside the range, and
+  printed x = −0.25 m)."""
+
+from __future__ import annotations
+
+import pytest
+
+import rbdsolve
+
+HUNG = """\
+parameters: [m, a, k, L0, g]
+values: {m: 1 kg, a: 10 cm, k: 100 N/m, L0: 50 cm, g: 9.81 m/s^2}
+coordinates:
+  y: {kind: length, range: [0, 5]}
+gravity: [0, -g]
+points:
+  O: [0, 0]
+  G: [0, -y]
+  A: G + [0, a/2]
+bodies:
+  block: {shape: particle, mass: m, at: G}
+springs:
+  s: {stiffness: k, between: [O, A], natural_length: L0}
+questions:
+  - equilibria
+"""
+
+TUBE = """\
+parameters: [m, l, k, L0, Omega]
+values: {m: 0.2 kg, l: 10 cm, k: 50 N/m, L0: 20 cm, Omega: 10 rad/s}
+coordinates:
+  x: {kind: length, range: [l/2, 10]}
+frames:
+  table: {axis: z, rate: Omega}
+points:
+  O: [0, 0, 0]
+  G: x*[cos(Omega*t), sin(Omega*t), 0]
+  A: (x - l/2)*[cos(Omega*t), sin(Omega*t), 0]
+bodies:
+  rod: {shape: rod, mass: m, length: l, at: G, angle: Omega*t}
+springs:
+  s: {stiffness: k, between: [O, A], natural_length: L0}
+questions:
+  - equilibria: {frame: table}
+"""
+
+
+@pytest.mark.parametrize("text, name, expected", [(HUNG, "y", 0.05 + 0.5 + 9.81 / 100),
+                                                  (TUBE, "x", 50 * (0.05 + 0.2) / (50 - 0.2 * 100))])
+def test_the_equilibrium_is_the_one_on_the_spring_s_drawn_side(tmp_path, text: str, name: str,
+                                                                 expected: float) -> None:
+    path = tmp_path / "scene.yaml"
+    path.write_text(text)
+    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    assert solution.solved
+    places = [e["at"][name] for e in solution.values["equilibria"]]
+    assert places == [pytest.approx(expected, rel=1e-9)]
