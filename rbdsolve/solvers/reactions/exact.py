@@ -21,14 +21,14 @@ from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.reactions import steps as rs
 from rbdsolve.solvers.reactions.answers import ReactionsAnswers, Reaction
 from rbdsolve.solvers.reactions.first_zero import (ANGLE_STEP, FirstZero, first_zero, length_step, reaches,
-                                                     real_number)
+                                                     real_number, unscaled)
 from rbdsolve.solvers.reactions.largest import LargestFriction, largest_friction
 from rbdsolve.solvers.reactions.balances import balances, solve_forces, with_strings
 from rbdsolve.solvers.reactions.limits import Release, exists, holds, least_mu, no_closed_form, pushes_held, zeros
 from rbdsolve.solvers.reactions.motion import along, energy
 from rbdsolve.solvers.reactions.supports import Held, How, held, planar
 from rbdsolve.solvers.lagrange.accelerations import at_state, clean_fraction, state_values
-from rbdsolve.solvers.conditions.conditions import critical_values, sign_part
+from rbdsolve.solvers.conditions.conditions import critical_values
 from rbdsolve.solvers.conditions.condition_roots import admissible
 from rbdsolve.solvers.conditions.signs import sign_of
 from rbdsolve.solvers.lagrange.energy_integral import energy_step
@@ -197,7 +197,7 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
     given = dict(model.values)
     pushes = {str(c.symbol): values[c.symbol] for s in supports for c in s.components if c.one_sided}
     if missing_values(model):
-        pushes, rate_squared = {k: _unscaled(v, given, q) for k, v in pushes.items()}, _unscaled(rate_squared, given, q)
+        pushes, rate_squared = {k: unscaled(v, given, q) for k, v in pushes.items()}, unscaled(rate_squared, given, q)
         if rate_squared is None or table[q].xreplace(given).free_symbols:
             return None
     step = _step(model, float(table[q].xreplace(given)), rate_squared.xreplace(given))
@@ -206,16 +206,6 @@ def _first_zeros(model: Model, supports, values, rate_squared: sp.Expr, table) -
     found = {k: first_zero(v, rate_squared, q, table[q], name, given, step) for k, v in pushes.items() if v is not None}
     found = {k: v for k, v in found.items() if v is not None}
     return _before_first_loss(found, name, float(table[q].xreplace(given))) or None
-
-
-def _unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:
-    """expr at the values, without its positive factors, where that leaves q alone: the
-    powers of positive parameters (``sign_part``) and the other factors free of q that
-    sympy finds positive from the parameters' signs, a sum of them among them (a ball
-    rolling off a drum, q̇² = 10 g (cos θ₀ − cos θ)/(7 (R + r)): 1/(R + r))."""
-    found = sign_part(sp.factor_terms(expr.xreplace(given)))
-    found = sp.Mul(*(x for x in sp.Mul.make_args(found) if x.has(q) or x.is_positive is not True))
-    return found if found.free_symbols <= {q} else None
 
 
 def _before_first_loss(found: dict[str, FirstZero], name: str, start: float) -> dict[str, FirstZero]:
@@ -257,14 +247,14 @@ def _largest_frictions(model: Model, supports, values: dict, rate_squared: sp.Ex
     """With every parameter given a value: each rolling contact's least μ at its largest
     over the motion reached from rest, and where (largest.py), from its push's first
     zero or the motion's turning back (``first``). Parameters left open may scale the
-    push and q̇² (``_unscaled``, as for ``first``) where μ = |F|/N holds none of them: a
+    push and q̇² (``unscaled``, as for ``first``) where μ = |F|/N holds none of them: a
     disk rolling inside a track with its mass m open needs |sin θ|/(7 cos θ − 4 cos θ₀)
     whatever m."""
     if not first:
         return None
     given = dict(model.values)
     q, name = model.q[0], model.coordinate_names()[0]
-    start, v2 = float(table[q].xreplace(given)), _unscaled(rate_squared, given, q)
+    start, v2 = float(table[q].xreplace(given)), unscaled(rate_squared, given, q)
     if v2 is None:
         return None
     found = {}
@@ -273,7 +263,7 @@ def _largest_frictions(model: Model, supports, values: dict, rate_squared: sp.Ex
         if s.how is not How.ROLLING or own not in first:
             continue
         push, friction = (values[c.symbol].xreplace(given) for c in s.components[:2])
-        ratio, push = sp.cancel(friction / push), _unscaled(push, given, q)
+        ratio, push = sp.cancel(friction / push), unscaled(push, given, q)
         if push is None or not ratio.free_symbols <= {q}:
             continue
         largest = largest_friction(push, ratio * push, own, first, v2, q, start, name)

@@ -191,6 +191,19 @@ def _numeric(expr: sp.Expr, q: sp.Symbol):
     return value
 
 
+def unscaled(expr: sp.Expr, given: dict, q: sp.Symbol) -> sp.Expr | None:
+    """expr at the values, without its positive factors, where that leaves q alone: the
+    powers of positive parameters (``sign_part``) and the other factors free of q that
+    sympy finds positive from the parameters' signs, a sum of them among them (a ball
+    rolling off a drum, q̇² = 10 g (cos θ₀ − cos θ)/(7 (R + r)): 1/(R + r)). Parameters
+    left open that only scale a push and q̇² so leave its zeros where they are."""
+    from rbdsolve.solvers.conditions.conditions import sign_part  # the open scales' case only
+
+    found = sign_part(sp.factor_terms(expr.xreplace(given)))
+    found = sp.Mul(*(x for x in sp.Mul.make_args(found) if x.has(q) or x.is_positive is not True))
+    return found if found.free_symbols <= {q} else None
+
+
 def real_number(x: object) -> float | None:
     """x as a float where it is a finite real number (to rounding), else None."""
     try:

@@ -13,7 +13,7 @@ them as the only supports (balances.py, the accelerations from Lagrange's equati
 a function of q alone through the energy integral (motion.py); at the parameter values,
 its first zero between the start and ``to`` (first_zero.first_loss) gives a warning.
 Where those supports do not hold the bodies by themselves (a pivot too, not a contact),
-or a value is missing, nothing is said.
+or a value is missing that does more than scale a push (a mass), nothing is said.
 """
 
 from __future__ import annotations
@@ -28,10 +28,9 @@ from rbdsolve.model.build import Model
 from rbdsolve.solvers.eom.exact import general_accelerations
 from rbdsolve.solvers.lagrange.energy_integral import EnergyIntegral
 from rbdsolve.solvers.reactions.balances import contact_forces
-from rbdsolve.solvers.reactions.first_zero import first_loss
+from rbdsolve.solvers.reactions.first_zero import first_loss, unscaled
 from rbdsolve.solvers.reactions.motion import along
 from rbdsolve.solvers.reactions.supports import How
-from rbdsolve.solvers.routes.needed import missing_values
 
 
 def lost_on_the_way(model: Model, start: Mapping[sp.Symbol, sp.Expr], to: sp.Expr, e: EnergyIntegral
@@ -49,7 +48,10 @@ def lost_on_the_way(model: Model, start: Mapping[sp.Symbol, sp.Expr], to: sp.Exp
         return ()
     out = []
     for symbol, (push, held_as) in forces.items():
-        where = first_loss(push.xreplace(values), q, a, b)
+        push = unscaled(push, values, q)  # a mass left open scales N: its zeros are where they are
+        if push is None:
+            continue
+        where = first_loss(push, q, a, b)
         if where is None:
             continue
         lost, kept = (("the string goes slack", "keeps it taut") if held_as is How.STRING
@@ -63,7 +65,7 @@ def lost_on_the_way(model: Model, start: Mapping[sp.Symbol, sp.Expr], to: sp.Exp
 def _pushes(model: Model, e: EnergyIntegral) -> dict[sp.Symbol, tuple[sp.Expr, How]]:
     """Each contact's push and each string's tension as a function of q alone; empty
     where the scene has none, a value is missing, or they do not hold it by themselves."""
-    if not model.contacts or len(model.q) != 1 or missing_values(model):
+    if not model.contacts or len(model.q) != 1:
         return {}
     try:
         found = general_accelerations(model)

@@ -70,6 +70,16 @@ def test_a_disk_leaving_a_drum_on_the_way(tmp_path) -> None:
     assert _result(tmp_path, DISK_ON_DRUM.replace("TO", "5*pi/18"))["warnings"] == []
 
 
+def test_the_disk_leaves_the_drum_whatever_its_mass_left_open(tmp_path) -> None:
+    """The same disk with m left open (a new user's sheet: m cancels from every answer),
+    exact route: N = m g (7 cos θ − 4 cos θ₀)/3 vanishes where it did, and the rate at 70°
+    was printed with no warning, since a value was missing."""
+    open_mass = DISK_ON_DRUM.replace("values: {m: 2, ", "values: {")
+    (warning,) = _result(tmp_path, open_mass.replace("TO", "7*pi/18"))["warnings"]
+    assert abs(_place(warning) - math.acos(4 / 7 * math.cos(math.pi / 36))) < 1e-5 and "N_C = 0" in warning
+    assert _result(tmp_path, open_mass.replace("TO", "5*pi/18"))["warnings"] == []
+
+
 def test_a_ring_falling_off_the_top_of_a_loop(tmp_path) -> None:
     """Inside the track, ρ = R − r: T = m ρ² θ̇² (a ring: ½ m v² + ½ m r² ω², v = r ω),
     V = −m g ρ cos θ, so ρ θ̇² = ρ w₀² − g (1 − cos θ); along the radius N − m g cos θ =
