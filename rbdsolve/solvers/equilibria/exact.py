@@ -41,7 +41,7 @@ from rbdsolve.solvers.equilibria.higher_order import higher_order
 from rbdsolve.solvers.equilibria.structure import PolySystem, Shape, Structure, decide, shape_of
 from rbdsolve.solvers.conditions.polynomial import polynomial_roots, trig_mixed
 from rbdsolve.solvers.equilibria.uniform import never_balanced, uniform_equilibrium
-from rbdsolve.solvers.equilibria import zero_length
+from rbdsolve.solvers.equilibria import declared_range, zero_length
 from rbdsolve.solvers.conditions.conditions import CriticalValue, critical_values, what_decides
 from rbdsolve.solvers.conditions.parameter_order import asked
 from rbdsolve.solvers.equilibria.steps import exact_steps
@@ -421,12 +421,15 @@ def listing(model: Model) -> Listing:
     (solvers/configuration/placement.py), and solutions that are one configuration (the same
     orientation, or the same up to a coordinate V does not depend on) merged into the
     first, the others named as equivalent. Solutions where a contact point would be off
-    its edge (solvers/configuration/contact_span.py), or where a spring with a natural
-    length would be at zero length (zero_length.py), are dropped, a warning saying why."""
+    its edge (solvers/configuration/contact_span.py), where a spring with a natural
+    length would be at zero length (zero_length.py), or outside a coordinate's declared
+    range (declared_range.py), are dropped, a warning saying why."""
     solutions, warnings = find_equilibria(model)
     solutions, off = contact_span.split(model, solutions)
     solutions, crushed = zero_length.split(model, solutions)
-    warnings = [*warnings, *contact_span.warnings(off), *crushed, *contact_span.undecided(model, solutions)]
+    solutions, outside = declared_range.split(model, solutions)
+    warnings = [*warnings, *contact_span.warnings(off), *crushed, *outside,
+                *contact_span.undecided(model, solutions)]
     free = tuple(q for q in model.q if all(not e.has(q) for e in gradient(model)))
     kept: list[Listed] = []
     apart: list[tuple[dict, Singularity]] = []
@@ -501,6 +504,10 @@ def solve(question: Question, model: Model, options: Options) -> Solution:
     grad = gradient(model)
     listed = listing(model)
     if not listed.equilibria and not listed.singular_points:
+        if find_equilibria(model)[0]:  # roots, each set aside for a reason its warning gives (outside a range)
+            answers = EquilibriaAnswers(())
+            return Solution("equilibria", Route.EXACT, answers, exact_steps(answers, grad, model, False),
+                            warnings=listed.warnings)
         return _uniform(model, grad, asked(model, question))
     first = asked(model, question)
     classified = [with_cases(classify_listed(model, x), model, x.at, first) for x in listed.equilibria]

@@ -1,0 +1,51 @@
+"""Solutions of ∂V/∂q = 0 outside a coordinate's declared ``range``: not listed. A range
+says where the coordinate lives (a bead on a rod of length 2 l: x in [0, 2 l]); the
+numeric route searches only there, and a spring's length takes its sign over it
+(model/energies/spring_length.py), so the exact route's list keeps to it too. A block
+on a spring of natural length 0.5 m, y its depth in [0.7, 5], has y = L₀ + m g/k =
+0.5981 m: outside, said in a warning. Decided by the parameters' signs or values (or the
+assumptions); a solution whose place the parameters left open do not decide is kept."""
+
+from __future__ import annotations
+
+from typing import Mapping
+
+import sympy as sp
+
+from rbdsolve.form.printers import to_unicode, unicode_name
+from rbdsolve.model.build import Model
+from rbdsolve.solvers.conditions.signs import Undecided, sign_of
+
+
+def split(model: Model, solutions) -> tuple[list, list[str]]:
+    """The solutions kept, and a warning for each dropped (``_outside``)."""
+    ranges = {q: c for q, c in zip(model.q, model.problem.coordinates) if c.range is not None}
+    if not ranges:
+        return list(solutions), []
+    kept, warnings = [], []
+    for sol in solutions:
+        outside = _outside(model, sol, ranges)
+        if outside is None:
+            kept.append(sol)
+            continue
+        q, low, high = outside
+        shown = ", ".join(f"{unicode_name(ranges[x].name if x in ranges else str(x))} = {to_unicode(v)}"
+                          for x, v in sol.items())
+        warnings.append(f"{shown} solves ∂V/∂q = 0 outside the range declared for {unicode_name(ranges[q].name)}, "
+                        f"[{to_unicode(low)}, {to_unicode(high)}]: not listed")
+    return kept, warnings
+
+
+def _outside(model: Model, sol: Mapping, ranges: Mapping) -> tuple | None:
+    """(q, low, high) for the first coordinate whose value in ``sol`` is decided below its
+    range's low end or above its high end; None where none is."""
+    for q, c in ranges.items():
+        if q not in sol:
+            continue
+        low, high = (model.symbols.scalar(e) for e in c.range)
+        value = sp.sympify(sol[q])
+        for gap in (value - low, high - value):
+            sign = sign_of(gap, model.decided_by)
+            if not isinstance(sign, Undecided) and sign < 0:
+                return q, low, high
+    return None
