@@ -37,6 +37,17 @@ def solved_file(path: Path):
     return model, solve_problem(model)
 
 
+def solved_scene(folder: Path, text: str, name: str = "scene.yaml"):
+    """The one question's answer of a scene written to ``folder`` as a user's file, through
+    the Python API, with a budget far from the work (no test depends on the clock)."""
+    import rbdsolve
+
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    (solution,) = rbdsolve.solve(path, budget=1200.0)
+    return solution
+
+
 def counted_calls(monkeypatch, owner, name: str) -> list[tuple]:
     """The arguments of every call of ``owner.name`` from here on (it still does its
     work): a test that some work is done once counts its calls."""

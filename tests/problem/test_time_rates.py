@@ -15,9 +15,10 @@ import math
 
 import pytest
 
-import rbdsolve
 from rbdsolve.problem import load_text
 from rbdsolve.problem.quantities.quantity import Dimension
+
+from conftest import solved_scene
 
 RATE = Dimension(time=-1)
 
@@ -50,9 +51,7 @@ def test_a_turn_by_a_parameter_times_t_makes_it_a_rate() -> None:
 
 
 def test_the_precession_rates_are_printed_in_rad_per_s(tmp_path) -> None:
-    path = tmp_path / "top.yaml"
-    path.write_text(TOP)
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    solution = solved_scene(tmp_path, TOP, "top.yaml")
     found = sorted(b["solved"]["Omega"] for b in solution.values["branches"])
     assert found == pytest.approx(_precession_roots(), rel=1e-9)
     assert [b["solved"]["Omega"] for b in solution.units["branches"]] == ["rad/s", "rad/s"]

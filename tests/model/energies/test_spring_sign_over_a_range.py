@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import pytest
 
-import rbdsolve
+from conftest import solved_scene
 
 HUNG = """\
 parameters: [m, a, k, L0, g]
@@ -63,9 +63,7 @@ questions:
                                                   (TUBE, "x", 50 * (0.05 + 0.2) / (50 - 0.2 * 100))])
 def test_the_equilibrium_is_the_one_on_the_spring_s_drawn_side(tmp_path, text: str, name: str,
                                                                  expected: float) -> None:
-    path = tmp_path / "scene.yaml"
-    path.write_text(text)
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    solution = solved_scene(tmp_path, text)
     assert solution.solved
     places = [e["at"][name] for e in solution.values["equilibria"]]
     assert places == [pytest.approx(expected, rel=1e-9)]

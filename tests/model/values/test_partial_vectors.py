@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-import rbdsolve
+from conftest import solved_scene
 
 ROD = """\
 parameters: [M, l, m, v0, e, b]
@@ -51,10 +51,7 @@ def _line(solution, name: str):
 
 @pytest.fixture(scope="module")
 def solution(tmp_path_factory):
-    path = tmp_path_factory.mktemp("rod") / "rod.yaml"
-    path.write_text(ROD)
-    (solved,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
-    return solved
+    return solved_scene(tmp_path_factory.mktemp("rod"), ROD, "rod.yaml")
 
 
 @pytest.mark.parametrize("name", ["u_B", "v_B", "P_supports"])

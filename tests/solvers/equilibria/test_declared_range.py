@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-import rbdsolve
+from conftest import solved_scene
 
 HUNG = """\
 parameters: [m, k, L0, g]
@@ -30,9 +30,7 @@ questions:
 
 @pytest.mark.parametrize("low, listed", [("0.5", [0.5 + 9.81 / 100]), ("0.7", [])])
 def test_an_equilibrium_outside_the_range_is_said_and_not_listed(tmp_path, low: str, listed: list) -> None:
-    path = tmp_path / "hung.yaml"
-    path.write_text(HUNG.replace("LOW", low))
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
+    solution = solved_scene(tmp_path, HUNG.replace("LOW", low), "hung.yaml")
     assert solution.solved and solution.route == "exact"
     assert [e["at"]["y"] for e in solution.values.get("equilibria", [])] == pytest.approx(listed, rel=1e-12)
     said = [w for w in solution.warnings if "outside the range declared for y" in w]

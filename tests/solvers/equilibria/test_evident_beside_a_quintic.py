@@ -16,8 +16,9 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-import rbdsolve
 from rbdsolve.solvers.equilibria.answers import Stability
+
+from conftest import solved_scene
 
 ROD = """\
 parameters: [m, l, c, k, g]
@@ -38,10 +39,7 @@ questions:
 
 
 def _solved(tmp_path, values: str = ""):
-    path = tmp_path / "rod.yaml"
-    path.write_text(ROD.replace("VALUES", values))
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
-    return solution
+    return solved_scene(tmp_path, ROD.replace("VALUES", values), "rod.yaml")
 
 
 def test_the_upright_position_is_listed_with_its_least_stiffness(tmp_path) -> None:

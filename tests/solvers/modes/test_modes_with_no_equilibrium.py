@@ -11,7 +11,7 @@ import math
 
 import pytest
 
-import rbdsolve
+from conftest import solved_scene
 
 ROD = """\
 parameters: [m, l, M0, g]
@@ -31,10 +31,7 @@ questions:
 
 
 def _solved(tmp_path, moment: int):
-    path = tmp_path / "rod.yaml"
-    path.write_text(ROD.replace("MOMENT", str(moment)))
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
-    return solution
+    return solved_scene(tmp_path, ROD.replace("MOMENT", str(moment)), "rod.yaml")
 
 
 def test_past_the_largest_couple_there_is_nothing_to_oscillate_about(tmp_path) -> None:

@@ -19,7 +19,7 @@ import math
 
 import pytest
 
-import rbdsolve
+from conftest import solved_scene
 
 BALL = """\
 parameters: [m, r, R, theta0, g]
@@ -38,10 +38,7 @@ questions:
 
 
 def _solved(tmp_path, degrees: int):
-    path = tmp_path / "ball.yaml"
-    path.write_text(BALL.replace("THETA0", str(degrees)))
-    (solution,) = rbdsolve.solve(path, budget=1200.0)  # a budget far from the work
-    return solution
+    return solved_scene(tmp_path, BALL.replace("THETA0", str(degrees)), "ball.yaml")
 
 
 def test_the_ball_leaves_the_drum_at_a_number_when_only_the_release_is_given(tmp_path) -> None:
