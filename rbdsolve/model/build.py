@@ -290,7 +290,7 @@ def build_model(problem: Problem) -> Model:
     stated = assumed(problem, names)
     contacts, planes = _implied(contacts, stated, names), _implied(planes, stated, names)
     assumptions = stated + tuple(a for c in contacts + planes for a in c.requires)
-    springs = signed_springs(springs, names, assumptions, problem.coordinates)
+    springs = signed_springs(springs, names, assumptions, problem.coordinates, values)
     model = Model(problem, names, Later(lambda: _angles(model)), points, bodies, springs, gravity, values,
                   velocities, triads=triads, assumptions=assumptions, contacts=contacts, plane_contacts=planes,
                   loads=_loads(problem, names, bodies, assumptions, values), body_points=own)
@@ -646,10 +646,11 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
 
 
 def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple,
-                   coordinates: tuple = ()) -> tuple[SpringModel, ...]:
+                   coordinates: tuple = (), values: dict | None = None) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
-    configuration (q = 0), or over a coordinate's declared range, or a polar distance's
-    r ≥ 0, is known (model/energies/spring_length.py)."""
+    configuration (q = 0), or over a coordinate's declared range (its ends at the
+    parameters' ``values`` too), or a polar distance's r ≥ 0, is known
+    (model/energies/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}
     assumed = substitutions(assumptions, names) if assumptions else {}
     by_name = dict(zip(names.state.names, names.state.q))
@@ -662,7 +663,7 @@ def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions
         if s.source.ends is not None and sp.expand(s.stretch**2).has(sp.Abs):  # |x|² = x²: nothing to say
             a, b = (names.vector(e) for e in s.source.ends)
             stretch, lengths = signed_length(s.stretch, reference, assumed,
-                                             polar_distances(a - b, names.state.q) | ranges)
+                                             polar_distances(a - b, names.state.q) | ranges, values)
             s = replace(s, stretch=stretch, lengths=lengths)
         out.append(s)
     return tuple(out)

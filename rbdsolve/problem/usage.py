@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 
 from rbdsolve.problem import expr as ex
-from rbdsolve.problem.instants import Instant
+from rbdsolve.problem.instants import Instant, StateValue
 from rbdsolve.problem.quantities.dimensions import lone_parameter, product_names, sum_terms
 from rbdsolve.problem.schema import Parameter, Problem, QuestionKind
 
@@ -79,6 +79,34 @@ def state_parameters(problem: Problem) -> dict[str, frozenset[str]]:
                     found.setdefault(expr.tree.id, set()).add(name)
     names = {p.name for p in problem.parameters}
     return {k: frozenset(v) for k, v in found.items() if k in names}
+
+
+def state_rate_parameters(problem: Problem) -> dict[str, frozenset[tuple[str, int]]]:
+    """The parameters that stand alone as a rate (1) or an acceleration (2) of a
+    coordinate in a question's state (``at: {dot(x): v}``, an impact's ``before: {x: v0}``):
+    each -> those (coordinate, order) pairs. Such a parameter has the coordinate's rate's
+    dimension (m/s for a length, rad/s for an angle)."""
+    found: dict[str, set[tuple[str, int]]] = {}
+    names = {p.name for p in problem.parameters}
+
+    def see(coordinate: str, order: int, expr: ex.Expr) -> None:
+        if isinstance(expr.tree, ex.Name) and expr.tree.id in names:
+            found.setdefault(expr.tree.id, set()).add((coordinate, order))
+
+    for question in problem.questions:
+        for field in dataclasses.fields(question.options):
+            value = getattr(question.options, field.name)
+            if isinstance(value, Instant):
+                for name, expr in value.rates:
+                    see(name, 1, expr)
+            elif field.name == "before" and isinstance(value, tuple):
+                for name, expr in value:
+                    see(name, 1, expr)
+            elif isinstance(value, tuple) and value and all(isinstance(v, StateValue) for v in value):
+                for v in value:
+                    if v.order:
+                        see(v.coordinate, v.order, v.value)
+    return {k: frozenset(v) for k, v in found.items()}
 
 
 def question_states(options: object) -> list[Instant]:

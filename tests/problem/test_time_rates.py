@@ -74,3 +74,24 @@ questions: [eom]
 """
     dimensions = dict(load_text(text, "s.yaml").dimensions)
     assert {name for name, d in dimensions.items() if d == RATE} == rates
+
+
+STRUCK = """\
+parameters: [m, r, v0]
+values: {m: 2 kg, r: 10 cm}
+coordinates: [x]
+points:
+  C: [x, r]
+bodies:
+  disk: {shape: particle, mass: m, at: C}
+questions:
+  - kinematics: {points: [C], at: {x: 0, dot(x): v0}}
+"""
+
+
+def test_a_parameter_alone_as_a_state_s_rate_is_that_rate(tmp_path) -> None:
+    """A point moving with x at ẋ = v0 (v0 left open): its velocity (v0, 0, 0) is
+    written "(in m/s, v₀ in m/s)", the rate of a length, not "v₀ in SI units"."""
+    solution = solved_scene(tmp_path, STRUCK, "struck.yaml")
+    (line,) = [x for x in solution.solution.numbers if str(x.relation.lhs) == "v_C"]
+    assert line.unit == "m/s" and line.note.open == ("v0", "m/s")

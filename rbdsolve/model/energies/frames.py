@@ -286,4 +286,5 @@ def _relative_spring(spring: SpringModel, model: Model, motion: FrameMotion) -> 
     a, b = (motion.relative(names.vector(e)) for e in spring.source.ends)
     rest = names.scalar(spring.source.natural_length) if spring.source.natural_length else sp.Integer(0)
     relative = replace(spring, stretch=sp.sqrt(tidy((a - b).dot(a - b))) - rest, lengths=())
-    return signed_springs((relative,), model.symbols, model.assumptions, model.problem.coordinates)[0]
+    return signed_springs((relative,), model.symbols, model.assumptions, model.problem.coordinates,
+                          dict(model.values))[0]

@@ -30,13 +30,15 @@ class Length:
 
 def signed_length(length: sp.Expr, reference: Mapping[sp.Symbol, sp.Expr],
                   assumed: Mapping[sp.Symbol, sp.Expr],
-                  ranges: Mapping[sp.Symbol, tuple[sp.Expr, sp.Expr]] | None = None) -> tuple[sp.Expr, tuple[Length, ...]]:
+                  ranges: Mapping[sp.Symbol, tuple[sp.Expr, sp.Expr]] | None = None,
+                  values: Mapping[sp.Symbol, sp.Expr] | None = None) -> tuple[sp.Expr, tuple[Length, ...]]:
     """``length`` with each |u| written ±u where u's sign at ``reference`` (the
     coordinates at 0) is decided by the parameters' signs or ``assumed`` (the
     assumptions' substitutions), or else over the declared range of the one coordinate
     u holds (``_sign_over``), and what was done to each |u|."""
     found = sorted(length.atoms(sp.Abs), key=sp.default_sort_key)
-    lengths = tuple(Length(a.args[0], _sign(a.args[0], reference, assumed, ranges or {})) for a in found)
+    lengths = tuple(Length(a.args[0], _sign(a.args[0], reference, assumed, ranges or {}, values or {}))
+                    for a in found)
     signed = {a: x.sign * x.inside for a, x in zip(found, lengths) if x.sign is not None}
     return length.xreplace(signed), lengths
 
@@ -59,15 +61,16 @@ def as_square_root(length: sp.Expr) -> sp.Expr:
 _SMALL = 80  # operations in a radicand worth joining (two springs on a slope have ~30)
 
 
-def _sign(u: sp.Expr, reference: Mapping, assumed: Mapping, ranges: Mapping) -> int | None:
+def _sign(u: sp.Expr, reference: Mapping, assumed: Mapping, ranges: Mapping, values: Mapping) -> int | None:
     """u's sign over the declared range of its coordinate first (``_sign_over``), else at
     the reference configuration where that lies inside the range (or none is declared):
     a rod sliding in a turning tube, x in [l/2, 10], tied to the axis at its inner end x −
     l/2, has that length positive over the range, though −l/2 at x = 0, outside it; a
     block hung by its top face at a/2 above its centre, depth y in [0, 5], has a/2 − y
     at the range's end y = 0, the spring drawn upside down there: neither decides, and
-    |u| stays."""
-    over = _sign_over(u, ranges, assumed)
+    |u| stays. The range's ends are read at the parameters' values too (x in [l/2, 10]
+    with l = 10 cm: x − l/2 from 0 to 9.95, whatever the rate left open)."""
+    over = _sign_over(u, ranges, assumed, values)
     if over is not None:
         return over
     if reference_outside(u, reference, ranges):
@@ -102,7 +105,7 @@ def _sign_at(u: sp.Expr, reference: Mapping, assumed: Mapping) -> int | None:
     return None
 
 
-def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping) -> int | None:
+def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping, values: Mapping | None = None) -> int | None:
     """u's sign over the declared range [lo, hi] of the one coordinate q it holds, where u
     is linear in q: a linear u keeps one sign between its values at the ends, so u ≥ 0 at
     both and > 0 at one makes it positive inside the range (zero at most at an end: a
@@ -115,7 +118,10 @@ def _sign_over(u: sp.Expr, ranges: Mapping, assumed: Mapping) -> int | None:
     if sp.diff(u, q, 2) != 0:
         return None
     ends = [u.xreplace({q: end}) for end in ranges[q]]
-    for form in (ends, [e.xreplace(dict(assumed)) for e in ends]):  # as _sign_at: as written, then assumed
+    forms = [ends, [e.xreplace(dict(assumed)) for e in ends]]  # as _sign_at: as written, then assumed
+    if values:
+        forms.append([e.xreplace(dict(values)) for e in ends])  # then at the values given (a box's ends)
+    for form in forms:
         if all(e.is_extended_nonnegative for e in form) and any(e.is_extended_positive for e in form):
             return 1  # (extended: an end may be ∞, a polar distance's)
         if all(e.is_extended_nonpositive for e in form) and any(e.is_extended_negative for e in form):

@@ -64,6 +64,8 @@ def _open(model: Model, units: dict[str, str]) -> dict:
             if s not in given and name not in unknowns}
     unknown = frozenset(s.name for s, unit in left.items() if unit is None)
     if unknown:
-        angles = angle_parameters(model, unknown)
-        left = {s: "rad" if s.name in angles else unit for s, unit in left.items()}
+        from rbdsolve.model.values.units import rate_parameter_units
+
+        angles, rates = angle_parameters(model, unknown), rate_parameter_units(model, unknown)
+        left = {s: "rad" if s.name in angles else rates.get(s.name, unit) for s, unit in left.items()}
     return left

@@ -37,6 +37,7 @@ from rbdsolve.model.symbols import to_sympy
 from rbdsolve.problem import expr as ex
 from rbdsolve.problem.quantities.quantity import LENGTH, NUMBER, Dimension
 from rbdsolve.problem.schema import CoordinateKind
+from rbdsolve.problem.usage import state_rate_parameters
 from rbdsolve.report.numbers import Path
 from rbdsolve.model.values.tree import map_paths
 from rbdsolve.model.values.fixed_units import (TORSIONAL, couple_moments, fixed_unit,
@@ -254,7 +255,32 @@ def known_dimensions(model: Model) -> dict[object, Dimension]:
         if q not in out and _travels_in_points(q, model, out):
             out[q] = out[c.name] = LENGTH
     out[t] = TIME
+    for name, dimension in _state_rates(model, out).items():
+        out.setdefault(model.symbols.parameters[name], dimension)
     return out
+
+
+def _state_rates(model: Model, known: Mapping[object, Dimension]) -> dict[str, Dimension]:
+    """The parameters alone as a coordinate's rate in a state (``dot(x): v``, an impact's
+    ``before``): the rate's dimension (m/s for a length x), where the coordinate's is known
+    and every such place agrees."""
+    out = {}
+    for name, places in state_rate_parameters(model.problem).items():
+        if any(known.get(c) is None for c, _ in places):
+            continue
+        found = {known[c] / TIME ** order for c, order in places}
+        if len(found) == 1:
+            out[name] = found.pop()
+    return out
+
+
+def rate_parameter_units(model: Model, among: frozenset[str]) -> dict[str, str]:
+    """The units of those parameters ``among`` that are a state's rate (``_state_rates``):
+    an open speed v beside an answer that holds it is "v in m/s", not "in SI units"."""
+    if not among or not state_rate_parameters(model.problem).keys() & among:
+        return {}
+    known = known_dimensions(model)
+    return {n: "rad/s" if d == TIME ** -1 else d.unit for n, d in _state_rates(model, known).items() if n in among}
 
 
 def _travels_in_points(q: sp.Symbol, model: Model, dims: Mapping[object, Dimension]) -> bool:

@@ -59,11 +59,32 @@ questions:
 """
 
 
-@pytest.mark.parametrize("text, name, expected", [(HUNG, "y", 0.05 + 0.5 + 9.81 / 100),
-                                                  (TUBE, "x", 50 * (0.05 + 0.2) / (50 - 0.2 * 100))])
-def test_the_equilibrium_is_the_one_on_the_spring_s_drawn_side(tmp_path, text: str, name: str,
-                                                                 expected: float) -> None:
+@pytest.mark.parametrize("text, name, expected, route", [
+    (HUNG, "y", 0.05 + 0.5 + 9.81 / 100, "numeric"),  # |y − a/2| kept: y = a/2 lies inside [0, 5]
+    (TUBE, "x", 50 * (0.05 + 0.2) / (50 - 0.2 * 100), "exact"),  # x − l/2 ≥ 0 over [l/2, 10] at l = 10 cm
+])
+def test_the_equilibrium_is_the_one_on_the_spring_s_drawn_side(tmp_path, text: str, name: str, expected: float,
+                                                                 route: str) -> None:
     solution = solved_scene(tmp_path, text)
-    assert solution.solved
+    assert solution.solved and solution.route == route
     places = [e["at"][name] for e in solution.values["equilibria"]]
     assert places == [pytest.approx(expected, rel=1e-9)]
+
+
+@pytest.mark.parametrize("rate", [3.0, 12.0, 20.0])
+def test_with_the_rate_open_the_tube_s_equilibrium_is_exact(tmp_path, rate: float) -> None:
+    """x = k (l/2 + L0)/(k − m Ω²), which exists (x ≥ l/2) only where Ω < √(k/m) = 15.8
+    rad/s: its condition sampled on both sides of that Ω_c, the place below it."""
+    solution = solved_scene(tmp_path, TUBE.replace(", Omega: 10 rad/s", ""))
+    assert solution.solved and solution.route == "exact"
+    (equilibrium,) = solution.answers.equilibria
+    (x,) = equilibrium.at.values()
+    given = {"m": 0.2, "l": 0.1, "k": 50, "L0": 0.2, "Omega": rate}
+    at = {s: given[s.name] for s in x.free_symbols}
+    exists = bool(equilibrium.exists_when.subs({s: given[s.name] for s in equilibrium.exists_when.free_symbols}))
+    assert exists is (rate < (50 / 0.2) ** 0.5)
+    if exists:
+        assert float(x.subs(at)) == pytest.approx(50 * (0.05 + 0.2) / (50 - 0.2 * rate**2), rel=1e-12)
+    (critical,) = solution.answers.critical
+    assert float(critical.value.subs({s: given[s.name] for s in critical.value.free_symbols})) == pytest.approx(
+        (50 / 0.2) ** 0.5, rel=1e-12)
