@@ -37,8 +37,11 @@ def test_an_open_release_angle_is_noted_in_rad(tmp_path) -> None:
     assert "N_C = 9.81 cos(θ₀) (in N, θ₀ in rad)" in text and "in SI units" not in text
 
 
-def test_an_open_incline_angle_is_noted_in_rad_and_a_speed_in_si_units(tmp_path) -> None:
+def test_an_open_incline_angle_is_noted_in_rad_and_a_state_s_speed_in_m_per_s(tmp_path) -> None:
+    """The disk's speed v is the state's dot(x), x a length: m/s (it read "SI units" before
+    a state's rate took its coordinate's rate's unit)."""
     half = (PROBLEMS / "contacts" / "half-disk-on-incline.yaml").read_text(encoding="utf-8")
     assert "(in 1/s², β in rad)" in _text(tmp_path, half)
     spring = (PROBLEMS / "forces" / "disk-on-incline-spring.yaml").read_text(encoding="utf-8")
-    assert "(in m/s, v in SI units)" in _text(tmp_path, spring)
+    text = _text(tmp_path, spring)
+    assert "(in m/s, v in m/s)" in text and "in SI units" not in text
