@@ -4,10 +4,12 @@ numeric route searches only there, and a spring's length takes its sign over it
 (model/energies/spring_length.py), so the exact route's list keeps to it too. A block
 on a spring of natural length 0.5 m, y its depth in [0.7, 5], has y = L₀ + m g/k =
 0.5981 m: outside, said in a warning. Decided by the parameters' signs or values (or the
-assumptions); a solution whose place the parameters left open do not decide is kept."""
+assumptions), else by samples of the parameters left open where the solution is real; a
+solution inside the range for some of them is kept."""
 
 from __future__ import annotations
 
+import random
 from typing import Mapping
 
 import sympy as sp
@@ -38,14 +40,37 @@ def split(model: Model, solutions) -> tuple[list, list[str]]:
 
 def _outside(model: Model, sol: Mapping, ranges: Mapping) -> tuple | None:
     """(q, low, high) for the first coordinate whose value in ``sol`` is decided below its
-    range's low end or above its high end; None where none is."""
+    range's low end or above its high end (``_below``); None where none is."""
     for q, c in ranges.items():
         if q not in sol:
             continue
         low, high = (model.symbols.scalar(e) for e in c.range)
         value = sp.sympify(sol[q])
-        for gap in (value - low, high - value):
-            sign = sign_of(gap, model.decided_by)
-            if not isinstance(sign, Undecided) and sign < 0:
-                return q, low, high
+        if _below(value - low, model) or _below(high - value, model):
+            return q, low, high
     return None
+
+
+SAMPLES = 12  # parameter points where a gap's sign is read when the signs do not decide it
+
+
+def _below(gap: sp.Expr, model: Model) -> bool:
+    """gap < 0: by the parameters' signs or values, else at every one of SAMPLES admissible
+    points of the parameters left open where the solution is real (at least three of
+    them). A collar at s = −√(L₀² − d²) on a rod whose stop is at s = 0, d open: below
+    the range wherever the equilibrium exists (d < L₀), though no sign rule sees it, the
+    radicand's sign being the equilibrium's own condition."""
+    sign = sign_of(gap, model.decided_by)
+    if not isinstance(sign, Undecided):
+        return sign < 0
+    from rbdsolve.solvers.conditions.condition_roots import admissible  # only for a gap the signs leave open
+
+    seen = []
+    for k in range(SAMPLES):
+        point = admissible(model, random.Random(53 + k))
+        if point is None:
+            continue
+        z = complex(sp.N(gap.xreplace(point), 20))
+        if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)):
+            seen.append(z.real)
+    return len(seen) >= 3 and all(x < 0 for x in seen)

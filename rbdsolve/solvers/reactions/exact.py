@@ -286,7 +286,9 @@ def _along_the_motion(model: Model, supports, forces, table, answers, to: dict |
     if e is None:
         if to:
             raise UnsolvedError("'to' needs q̇ where the motion gets to, from the energy integral, and there is "
-                                "none here (more than one coordinate, or a force without a potential)")
+                                "none here (more than one coordinate, a force without a potential, or time in the "
+                                "scene, as a driven support: a support at a constant acceleration a₀ written at rest, "
+                                "with −a₀ added to 'gravity', keeps one)")
         return answers, [rs.no_energy_note(model)], [], ()
     values = {x: along(v, model, e) for x, v in forces.items()}
     if any(v is None for v in values.values()):
