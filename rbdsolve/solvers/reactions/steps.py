@@ -185,8 +185,12 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
                 if h.condition is not sp.true:
                     named = critical_values(h.criticals)
                     steps += critical_steps(named, "where that point stops being reached")
-                    steps.append(st.result(f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached ({_bounded(eq)}"
-                                           "q̇² ≥ 0 there) only when:",
+                    lead = f"{to_unicode(eq.lhs)} = {to_unicode(eq.rhs)} is reached ({_bounded(eq)}q̇² ≥ 0 there)"
+                    decided = _decided_long(h, model)
+                    steps.append(st.note(f"{lead} only where a condition on the parameters holds, too long to read "
+                                         f"here (JSON 'lost_exists_when'); at the values given it "
+                                         f"{'holds' if decided else 'does not'}.") if decided is not None else
+                                 st.result(f"{lead} only when:",
                                            *condition_relations(model.to_time(h.condition), named)))
         elif name in unsolved:
             steps.append(st.note(f"{name} = 0 has no closed-form solution along the motion ({unsolved[name]}): "
@@ -200,6 +204,26 @@ def along_steps(model: Model, supports, values: dict, lost: dict, mu: dict, reac
         steps.append(st.result(f"Rolling without slipping at {name} needs |F| ≤ μ N: the least coefficient of "
                                f"friction{where} is", Relation(sp.Symbol(f"mu_{name}"), value, op="≥")))
     return steps
+
+
+LONG_CONDITION = 400  # characters: a condition longer, in no parameter, is said at the values
+
+
+def _decided_long(found, model: Model) -> bool | None:
+    """Whether a zero's condition of being reached holds at the values given, where it is
+    written in no parameter (no critical value: nothing split it), runs past
+    LONG_CONDITION characters, and every parameter has a value; else None (written out).
+    A disk on an incline held by a spring of natural length to a point off its line had
+    twenty lines of radicals for a condition that, with every value given, is a yes."""
+    if found.criticals or not model.values or len(to_unicode(found.condition)) <= LONG_CONDITION:
+        return None
+    at = found.condition.xreplace(dict(model.values))
+    if at.free_symbols:
+        return None
+    try:
+        return bool(at.doit()) if isinstance(at, sp.Basic) and at in (sp.true, sp.false) else bool(at)
+    except TypeError:
+        return None
 
 
 def _never_zero(name: str, string: bool, at_release: sp.Basic) -> str:
