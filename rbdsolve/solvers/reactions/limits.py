@@ -74,10 +74,15 @@ def _numerator(value: sp.Expr) -> sp.Expr:
 
 
 def no_closed_form(value: sp.Expr, model: Model) -> str:
-    """Why zeros() gives no closed form for ``value`` = 0, in a reader's words."""
+    """Why zeros() gives no closed form for ``value`` = 0, in a reader's words, read in
+    zeros()' own order: a numerator transcendental in q is said so before anything is
+    factored (a slab rolling on a drum: θ³ sin θ beside θ² cos θ, whose factor_list ran
+    for minutes under some of sympy's random evaluation points, and a test run hung)."""
     q = model.q[0]
     x = to_unicode(model.readable(q))
     top = _numerator(value)
+    if trig_transcendental(top, q):
+        return f"transcendental in {x}: no substitution makes it a polynomial"
     if has_root(top, (q,)):
         return f"{x} under a radical: squared away, a polynomial of high degree"
     if any(sine_cosine_quartic(f, q) for f, _ in sp.factor_list(top)[1]):
