@@ -167,9 +167,9 @@ def _rates_in(value: object, found: dict[str, str], names: frozenset[str], angle
         for field in dataclasses.fields(value):
             item = getattr(value, field.name)
             if field.name == "rate" and isinstance(item, ex.Expr):
-                name = lone_parameter(item.tree, names, False)
+                name, frame = lone_parameter(item.tree, names, False), getattr(value, "name", None)
                 if name is not None:
-                    found.setdefault(name, f"{where or 'frames'}.rate")
+                    found.setdefault(name, f"frames.{frame}.rate" if frame else "frames.rate")
                 continue
             _rates_in(item, found, names, field.name in ANGLE_FIELDS or field.name == "turns",
                       getattr(value, "name", None) or where)

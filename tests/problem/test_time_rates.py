@@ -18,7 +18,7 @@ import pytest
 from rbdsolve.problem import load_text
 from rbdsolve.problem.quantities.quantity import Dimension
 
-from conftest import solved_scene
+from conftest import PROBLEMS, solved_scene
 
 RATE = Dimension(time=-1)
 
@@ -95,3 +95,12 @@ def test_a_parameter_alone_as_a_state_s_rate_is_that_rate(tmp_path) -> None:
     solution = solved_scene(tmp_path, STRUCK, "struck.yaml")
     (line,) = [x for x in solution.solution.numbers if str(x.relation.lhs) == "v_C"]
     assert line.unit == "m/s" and line.note.open == ("v0", "m/s")
+
+
+def test_a_rate_given_a_length_is_bad_input_that_names_where_it_is_a_rate() -> None:
+    """A frame's rate is a rate: `Omega: 3 m` is refused at its place, saying why."""
+    from rbdsolve.errors import InputError
+
+    text = (PROBLEMS / "edges" / "rotating-hoop-critical.yaml").read_text(encoding="utf-8")
+    with pytest.raises(InputError, match=r"'Omega' is a rate \(1/s\) \(frames\.hoop\.rate\), found '3 m', a length"):
+        load_text(text.replace("Omega: 3}", "Omega: 3 m}"), "hoop.yaml")
