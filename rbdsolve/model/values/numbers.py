@@ -96,17 +96,22 @@ def _partial(n: Named, answer: object, unit: object, given: Mapping, open_units:
     if len(free) != 1 or next(iter(free)) not in open_units:
         return []
     (p,) = free
-    number = sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float,  # √, not ^0.5
-                                    lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
-    return [_line(n, n.name, number, _text(unit), Note(Beside.OPEN, open=(p.name, open_units[p])))]
+    return [_line(n, n.name, _in_numbers(expr), _text(unit), Note(Beside.OPEN, open=(p.name, open_units[p])))]
+
+
+def _in_numbers(expr: sp.Expr) -> sp.Expr:
+    """An answer with the values put in, its numbers to 15 digits; roots keep their
+    exponent (√, not ^0.5)."""
+    return sp.N(expr, 15).replace(lambda x: x.is_Pow and x.exp.is_Float, lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
 
 
 def _partial_vector(n: Named, answer: object, value: list, unit: object, given: Mapping,
                     open_units: Mapping) -> list[Number]:
     """A vector answer whose entries are numbers or hold, once the values are put in, the
     same one parameter left without a value (``_partial``'s scalars, side by side): a ball's
-    velocity after it strikes a hanging rod at a depth b left open, u_B = (2.43 b/(0.6 b² +
-    1.215) − 1.84, −2, 0) (in m/s, b in m). Only where every entry's unit is the same."""
+    velocity after it strikes a hanging rod at a depth b left open, u_B = (3.4641 (0.6 b²
+    − 0.729)/(0.6 b² + 1.215), −2, 0) (in m/s, b in m). Only where every entry's unit is
+    the same."""
     entries = list(answer) if isinstance(answer, (tuple, list, sp.MatrixBase)) else None
     units = _as_list(unit, len(value))
     if not given or not entries or len(entries) != len(value) or not all(v is None or _number(v) for v in value):
@@ -121,9 +126,8 @@ def _partial_vector(n: Named, answer: object, value: list, unit: object, given: 
     if len(free) != 1 or next(iter(free)) not in open_units:
         return []
     (p,) = free
-    numbers = [sp.N(e, 15).replace(lambda x: x.is_Pow and x.exp.is_Float, lambda x: sp.Pow(x.base, sp.nsimplify(x.exp)))
-               for e in put]
-    return [_line(n, n.name, sp.ImmutableMatrix([numbers]), shared, Note(Beside.OPEN, open=(p.name, open_units[p])))]
+    numbers = sp.ImmutableMatrix([[_in_numbers(e) for e in put]])
+    return [_line(n, n.name, numbers, shared, Note(Beside.OPEN, open=(p.name, open_units[p])))]
 
 
 def _number(value: object) -> bool:
