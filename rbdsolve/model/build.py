@@ -645,6 +645,15 @@ def _spring(spring: Spring, names: Symbols) -> SpringModel:
     return SpringModel(spring.name, k, stretch, spring)
 
 
+def declared_ranges(coordinates: tuple, names: Symbols) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]:
+    """Each coordinate's declared ``range`` [low, high], by its symbol (q), the ends as
+    expressions of the parameters: where it lives, for a spring's sign, the equilibria
+    listed and the model's notes."""
+    by_name = dict(zip(names.state.names, names.state.q))
+    return {by_name[c.name]: (names.scalar(c.range[0]), names.scalar(c.range[1]))
+            for c in coordinates if c.range is not None and c.name in by_name}
+
+
 def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions: tuple,
                    coordinates: tuple = (), values: dict | None = None) -> tuple[SpringModel, ...]:
     """Each linear spring's length with |u| written ±u where u's sign at the reference
@@ -653,9 +662,7 @@ def signed_springs(springs: tuple[SpringModel, ...], names: Symbols, assumptions
     (model/energies/spring_length.py)."""
     reference = {q: sp.Integer(0) for q in names.state.q}
     assumed = substitutions(assumptions, names) if assumptions else {}
-    by_name = dict(zip(names.state.names, names.state.q))
-    ranges = {by_name[c.name]: (names.scalar(c.range[0]), names.scalar(c.range[1]))
-              for c in coordinates if c.range is not None and c.name in by_name}
+    ranges = declared_ranges(coordinates, names)
     out = []
     for s in springs:
         if s.source.ends is not None and not s.stretch.has(sp.Abs):  # along a slope: √(u²) = |u| once joined

@@ -60,12 +60,10 @@ def angle_terms(problem: Problem) -> frozenset[str]:
     (cosine's, tangent's) argument, up to a number (an incline's sin(alpha),
     cos(theta - alpha), sin(2*beta); not Omega in sin(Omega*t)), or of an ``angle``,
     ``half_angle`` or ``rest``."""
-    found: set[str] = set()
     names = frozenset(p.name for p in problem.parameters)
-    for field in dataclasses.fields(problem):
-        if field.name not in NOT_USES:
-            _angles_in(getattr(problem, field.name), found, names, False)
-    return frozenset(found)
+    sections = [getattr(problem, f.name) for f in dataclasses.fields(problem) if f.name not in NOT_USES]
+    return frozenset(p for kind, tree, _ in _angles(sections) if kind == "angle" for term in sum_terms(tree)
+                     if (p := lone_parameter(term, names, False)) is not None)
 
 
 def state_parameters(problem: Problem) -> dict[str, frozenset[str]]:
@@ -115,37 +113,6 @@ def question_states(options: object) -> list[Instant]:
             if isinstance(getattr(options, f.name), Instant)]
 
 
-def _angles_in(value: object, found: set[str], names: frozenset[str], angle: bool) -> None:
-    """The angle parameters (of ``names``) in ``value`` (``angle``: ``value`` is itself an angle)."""
-    if isinstance(value, ex.Expr):
-        _angle_terms(value.tree, found, names, angle)
-    elif isinstance(value, (tuple, list)):
-        for item in value:
-            _angles_in(item, found, names, angle)
-    elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
-        for field in dataclasses.fields(value):
-            _angles_in(getattr(value, field.name), found, names, field.name in ANGLE_FIELDS)
-
-
-def _angle_terms(tree: ex.Tree, found: set[str], names: frozenset[str], angle: bool) -> None:
-    """``angle``: the parameters that are terms of ``tree``, each alone or times (over) a
-    number (2*beta, alpha/2; not Omega*t); and, anywhere in it, those of each
-    trigonometric call's argument."""
-    if angle:
-        found.update(p for term in sum_terms(tree) if (p := lone_parameter(term, names, False)) is not None)
-    if isinstance(tree, ex.Call):
-        for item in tree.args:
-            _angle_terms(item, found, names, tree.func in TRIG)
-    elif isinstance(tree, ex.BinOp):
-        _angle_terms(tree.left, found, names, False)
-        _angle_terms(tree.right, found, names, False)
-    elif isinstance(tree, ex.Neg):
-        _angle_terms(tree.operand, found, names, False)
-    elif isinstance(tree, ex.Vec):
-        for item in tree.items:
-            _angle_terms(item, found, names, False)
-
-
 def time_rates(pieces: object, names: frozenset[str]) -> dict[str, str]:
     """The parameters (of ``names``) that are rates by how the scene writes them: a
     frame's ``rate: Omega``, or a term ``Omega*t`` (times a number) of an angle — a
@@ -153,46 +120,57 @@ def time_rates(pieces: object, names: frozenset[str]) -> dict[str, str]:
     [z, s*t], a pivot driven as a*sin(w*t)); not v0*t in a position, a length. Each ->
     where it was seen. ``pieces``: the scene's sections (dataclasses, tuples of them)."""
     found: dict[str, str] = {}
-    _rates_in(pieces, found, names, False, "")
-    return found
-
-
-def _rates_in(value: object, found: dict[str, str], names: frozenset[str], angle: bool, where: str) -> None:
-    if isinstance(value, ex.Expr):
-        _rate_terms(value.tree, found, names, angle, where)
-    elif isinstance(value, (tuple, list)):
-        for item in value:
-            _rates_in(item, found, names, angle, where)
-    elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
-        for field in dataclasses.fields(value):
-            item = getattr(value, field.name)
-            if field.name == "rate" and isinstance(item, ex.Expr):
-                name, frame = lone_parameter(item.tree, names, False), getattr(value, "name", None)
-                if name is not None:
-                    found.setdefault(name, f"frames.{frame}.rate" if frame else "frames.rate")
-                continue
-            _rates_in(item, found, names, field.name in ANGLE_FIELDS or field.name == "turns",
-                      getattr(value, "name", None) or where)
-
-
-def _rate_terms(tree: ex.Tree, found: dict[str, str], names: frozenset[str], angle: bool, where: str) -> None:
-    """``angle``: each term of ``tree`` that is one parameter times t (and numbers); and,
-    anywhere in it, those of each trigonometric call's argument."""
-    if angle:
+    for kind, tree, where in _angles(pieces):
+        if kind == "rate":
+            name = lone_parameter(tree, names, False)
+            if name is not None:
+                found.setdefault(name, f"frames.{where}.rate" if where else "frames.rate")
+            continue
         for term in sum_terms(tree):
             factors = product_names(term)
-            if factors is not None and sorted(factors).count("t") == 1 and len(factors) == 2:
+            if factors is not None and len(factors) == 2 and factors.count("t") == 1:
                 (name,) = [f for f in factors if f != "t"]
                 if name in names:
                     found.setdefault(name, f"{where}: {name}*t, an angle" if where else f"{name}*t, an angle")
+    return found
+
+
+def _angles(value: object, angle: bool = False, where: str = ""):
+    """Each angle the scene writes in ``value`` (its sections: dataclasses, tuples of them,
+    expressions): ("angle", tree, where) for an ``angle``, ``half_angle`` or ``rest``
+    (a body's, a turn's, a line's, a shape's, a spring's) and for a trigonometric call's
+    argument anywhere, and ("rate", tree, where) for a frame's ``rate``; ``where``: the
+    name of the nearest named piece (a triad, a body, a frame), '' at the top. A question's
+    state is not walked (its values are read by ``state_parameters``)."""
+    if isinstance(value, ex.Expr):
+        yield from _angle_trees(value.tree, angle, where)
+    elif isinstance(value, (tuple, list)):
+        for item in value:
+            yield from _angles(item, angle, where)
+    elif dataclasses.is_dataclass(value) and not isinstance(value, type) and not isinstance(value, Instant):
+        named = getattr(value, "name", None) or where
+        for field in dataclasses.fields(value):
+            item = getattr(value, field.name)
+            if field.name == "rate" and isinstance(item, ex.Expr):
+                yield "rate", item.tree, named
+            yield from _angles(item, field.name in ANGLE_FIELDS, named)
+
+
+def _angle_trees(tree: ex.Tree, angle: bool, where: str):
+    """``tree`` itself where it is an angle (``angle``), and each trigonometric call's
+    argument anywhere in it."""
+    if angle:
+        yield "angle", tree, where
     if isinstance(tree, ex.Call):
         for item in tree.args:
-            _rate_terms(item, found, names, tree.func in TRIG, where)
+            yield from _angle_trees(item, tree.func in TRIG, where)
     elif isinstance(tree, ex.BinOp):
-        _rate_terms(tree.left, found, names, False, where)
-        _rate_terms(tree.right, found, names, False, where)
+        yield from _angle_trees(tree.left, False, where)
+        yield from _angle_trees(tree.right, False, where)
     elif isinstance(tree, ex.Neg):
-        _rate_terms(tree.operand, found, names, False, where)
+        yield from _angle_trees(tree.operand, False, where)
     elif isinstance(tree, ex.Vec):
         for item in tree.items:
-            _rate_terms(item, found, names, False, where)
+            yield from _angle_trees(item, False, where)
+
+

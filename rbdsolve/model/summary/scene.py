@@ -16,7 +16,7 @@ import sympy as sp
 from rbdsolve.form.printers import to_unicode, unicode_name
 from rbdsolve.form.tidy import tidy
 from rbdsolve.model.angles import angle_coordinates, angle_parameters
-from rbdsolve.model.build import Model
+from rbdsolve.model.build import Model, declared_ranges
 from rbdsolve.model.energies.spring_length import polar_distances, reference_outside
 from rbdsolve.model.values.values import parameter_sample
 from rbdsolve.problem import expr as ex
@@ -138,11 +138,10 @@ def _two_sided(model: Model) -> list[st.Step]:
 def _outside_range(u: sp.Expr, model: Model) -> str:
     """'y = 0' where the reference configuration lies at an end of, or outside, the range
     declared for a coordinate u holds (spring_length.reference_outside), else ''."""
-    ranges = {q: (model.symbols.scalar(c.range[0]), model.symbols.scalar(c.range[1]))
-              for c, q in zip(model.problem.coordinates, model.q) if c.range is not None}
-    for q, c in zip(model.q, model.problem.coordinates):
+    ranges = declared_ranges(model.problem.coordinates, model.symbols)
+    for q, name in zip(model.q, model.coordinate_names()):
         if q in ranges and reference_outside(u, {q: sp.Integer(0)}, {q: ranges[q]}):
-            return f"{unicode_name(c.name)} = 0"
+            return f"{unicode_name(name)} = 0"
     return ""
 
 

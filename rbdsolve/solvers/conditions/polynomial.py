@@ -27,14 +27,10 @@ def polynomial_roots(system: list[sp.Expr], symbols: list[sp.Symbol], what: str)
     """Every root {symbol: value} of the polynomial ``system``; UnsolvedError naming
     ``what`` where some root has no closed form, or none an exam writes
     (``_unreadable_degree``)."""
-    other = _readable_order(system, symbols) if _eliminant_degree(system, symbols) else None
-    if other is not None:
-        symbols = other
-    else:
-        degree = unreadable_degree(system, symbols)
-        if degree:
-            raise UnsolvedError(unreadable_reason(what, degree) + ": an exact list would leave solutions out",
-                                NUMERIC_REMEDY)
+    symbols, degree = _order_or_degree(system, symbols)
+    if degree:
+        raise UnsolvedError(unreadable_reason(what, degree) + ": an exact list would leave solutions out",
+                            NUMERIC_REMEDY)
     try:
         found = solve_poly_system(system, *symbols, strict=True)
     except UnsolvableFactorError:
@@ -52,10 +48,18 @@ def unreadable_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> int | 
     any solving: polynomial_roots refuses exactly these, and the equilibria's structure
     reads it to list the evident roots instead (an inverted rod held at its top by a
     spring of natural length: θ = 0 for every k, beside an irreducible quintic)."""
+    return _order_or_degree(system, symbols)[1]
+
+
+def _order_or_degree(system: list[sp.Expr], symbols: list[sp.Symbol]) -> tuple[list[sp.Symbol], int | None]:
+    """The order of ``symbols`` to solve in (as given, or another whose eliminant is
+    readable: ``_readable_order``), and None; or, where no order's eliminant is readable,
+    the symbols as given and the degree of their eliminant's unreadable factor."""
     degree = _eliminant_degree(system, symbols)
-    if not degree or _readable_order(system, symbols) is not None:
-        return None
-    return degree
+    if not degree:
+        return symbols, None
+    other = _readable_order(system, symbols)
+    return (other, None) if other is not None else (symbols, degree)
 
 
 def unreadable_reason(what: str, degree: int) -> str:

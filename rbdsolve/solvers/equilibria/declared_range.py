@@ -15,39 +15,38 @@ from typing import Mapping
 import sympy as sp
 
 from rbdsolve.form.printers import to_unicode, unicode_name
-from rbdsolve.model.build import Model
+from rbdsolve.model.build import Model, declared_ranges
 from rbdsolve.solvers.conditions.signs import Undecided, sign_of
 
 
 def split(model: Model, solutions) -> tuple[list, list[str]]:
     """The solutions kept, and a warning for each dropped (``_outside``)."""
-    ranges = {q: c for q, c in zip(model.q, model.problem.coordinates) if c.range is not None}
+    ranges = declared_ranges(model.problem.coordinates, model.symbols)
     if not ranges:
         return list(solutions), []
+    names = dict(zip(model.q, model.coordinate_names()))
     kept, warnings = [], []
     for sol in solutions:
-        outside = _outside(model, sol, ranges)
-        if outside is None:
+        q = _outside(model, sol, ranges)
+        if q is None:
             kept.append(sol)
             continue
-        q, low, high = outside
-        shown = ", ".join(f"{unicode_name(ranges[x].name if x in ranges else str(x))} = {to_unicode(v)}"
-                          for x, v in sol.items())
-        warnings.append(f"{shown} solves ∂V/∂q = 0 outside the range declared for {unicode_name(ranges[q].name)}, "
+        low, high = ranges[q]
+        shown = ", ".join(f"{unicode_name(names.get(x, str(x)))} = {to_unicode(v)}" for x, v in sol.items())
+        warnings.append(f"{shown} solves ∂V/∂q = 0 outside the range declared for {unicode_name(names[q])}, "
                         f"[{to_unicode(low)}, {to_unicode(high)}]: not listed")
     return kept, warnings
 
 
-def _outside(model: Model, sol: Mapping, ranges: Mapping) -> tuple | None:
-    """(q, low, high) for the first coordinate whose value in ``sol`` is decided below its
-    range's low end or above its high end (``_below``); None where none is."""
-    for q, c in ranges.items():
+def _outside(model: Model, sol: Mapping, ranges: Mapping) -> sp.Symbol | None:
+    """The first coordinate whose value in ``sol`` is decided below its range's low end or
+    above its high end (``_below``); None where none is."""
+    for q, (low, high) in ranges.items():
         if q not in sol:
             continue
-        low, high = (model.symbols.scalar(e) for e in c.range)
         value = sp.sympify(sol[q])
         if _below(value - low, model) or _below(high - value, model):
-            return q, low, high
+            return q
     return None
 
 

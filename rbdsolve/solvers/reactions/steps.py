@@ -221,8 +221,8 @@ def _decided_long(found, model: Model) -> bool | None:
     if at.free_symbols:
         return None
     try:
-        return bool(at.doit()) if isinstance(at, sp.Basic) and at in (sp.true, sp.false) else bool(at)
-    except TypeError:
+        return bool(at)
+    except TypeError:  # a comparison sympy cannot decide at the numbers
         return None
 
 
